@@ -1,0 +1,62 @@
+# raildyn: one command per job. Every target installs what it needs from nothing.
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed-stamp
+BOOK_HTML := book/_build/html
+
+.PHONY: book test test-fast lab app bench figures lint clean chromium install
+
+# A fresh virtual environment with the pinned ranges, raildyn installed editable
+# so that the notebooks import the working tree.
+$(STAMP): requirements.txt pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -r requirements.txt
+	$(PY) -m pip install --quiet --no-deps --no-build-isolation -e .
+	touch $@
+
+install: $(STAMP)
+
+## book: execute every notebook and build the HTML book (the README's main command)
+book: $(STAMP)
+	$(VENV)/bin/jupyter-book build . --config book/_config.yml --toc book/_toc.yml --path-output book
+	@echo "The book is at $(abspath $(BOOK_HTML))/index.html"
+
+## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
+test: $(STAMP) chromium
+	$(PY) -m pytest
+
+# Debian's chromium for the browser tests; Playwright drives it, nothing is downloaded.
+chromium:
+	@if [ ! -x /usr/bin/chromium ]; then \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq chromium >/dev/null; \
+	fi
+
+## test-fast: the unit and property tests only
+test-fast: $(STAMP)
+	$(PY) -m pytest -m "not slow"
+
+## lab: JupyterLab on the notebooks
+lab: $(STAMP)
+	$(VENV)/bin/jupyter lab notebooks
+
+## app: the notebooks as a web app (widgets only, code hidden) for a lecture room
+app: $(STAMP)
+	$(VENV)/bin/voila notebooks --no-browser --Voila.ip=127.0.0.1 --port=8866
+
+## bench: widget and model timings against their baselines, same run
+bench: $(STAMP)
+	$(PY) benchmarks/run.py
+
+## figures: write every registered book figure
+figures: $(STAMP)
+	$(PY) -m raildyn figures --out figures
+
+lint: $(STAMP)
+	$(VENV)/bin/ruff check raildyn tests benchmarks notebooks
+	$(VENV)/bin/ruff format --check raildyn tests benchmarks notebooks
+
+clean:
+	rm -rf $(VENV) book/_build .pytest_cache figures

@@ -1,0 +1,196 @@
+"""Input checks shared by every raildyn model.
+
+Each check either returns the cleaned value or raises a ``ValueError`` whose
+message names the parameter, the value received and what is allowed, so that a
+bad number never travels on to become a silent NaN.
+"""
+
+from __future__ import annotations
+
+import numbers
+
+import numpy as np
+
+
+def _show(value) -> str:
+    """Short text for a value inside an error message."""
+    arr = np.asarray(value)
+    if arr.ndim == 0:
+        return repr(value)
+    text = np.array2string(arr, threshold=6, precision=4)
+    return f"{text} (shape {arr.shape})"
+
+
+def scalar(name: str, value, *, low=None, high=None, low_open=False, high_open=False) -> float:
+    """Return ``value`` as a finite float within ``[low, high]``.
+
+    ``low_open`` / ``high_open`` make the matching bound strict.
+    """
+    if isinstance(value, bool) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
+        if not (isinstance(value, np.ndarray) and value.ndim == 0):
+            raise TypeError(f"{name} must be a real number, got {value!r} of type {type(value).__name__}")
+    x = float(value)
+    lo = "(" if low_open else "["
+    hi = ")" if high_open else "]"
+    allowed = f"{lo}{'-inf' if low is None else low}, {'inf' if high is None else high}{hi}"
+    if not np.isfinite(x):
+        raise ValueError(f"{name} must be a finite number in {allowed}, got {value!r}")
+    if low is not None and (x < low or (low_open and x == low)):
+        raise ValueError(f"{name} must be in {allowed}, got {value!r}")
+    if high is not None and (x > high or (high_open and x == high)):
+        raise ValueError(f"{name} must be in {allowed}, got {value!r}")
+    return x
+
+
+def positive(name: str, value) -> float:
+    """A finite float > 0 (a mass, a stiffness, a time step)."""
+    return scalar(name, value, low=0.0, low_open=True)
+
+
+def nonnegative(name: str, value) -> float:
+    """A finite float >= 0 (a damping coefficient, an amplitude)."""
+    return scalar(name, value, low=0.0)
+
+
+def array(name: str, value, *, ndim=None, shape=None, low=None, low_open=False, dtype=float) -> np.ndarray:
+    """Return ``value`` as a finite numpy array, checking its rank, shape and lower bound.
+
+    ``shape`` may hold ``None`` for a free axis.
+    """
+    arr = np.asarray(value, dtype=dtype)
+    if ndim is not None and arr.ndim != ndim:
+        raise ValueError(
+            f"{name} must be a {ndim}-dimensional array, got {arr.ndim} dimensions: {_show(value)}"
+        )
+    if shape is not None:
+        fits = arr.ndim == len(shape)
+        fits = fits and all(s is None or s == a for s, a in zip(shape, arr.shape, strict=True))
+        if not fits:
+            want = "(" + ", ".join("any" if s is None else str(s) for s in shape) + ")"
+            raise ValueError(f"{name} must have shape {want}, got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must contain only finite numbers, got {_show(value)}")
+    if low is not None:
+        bad = arr <= low if low_open else arr < low
+        if np.any(bad):
+            op = ">" if low_open else ">="
+            first = arr[bad].flat[0]
+            raise ValueError(f"{name} must be {op} {low} everywhere, got {first!r} in {_show(value)}")
+    return arr
+
+
+def square_matrix(
+    name: str, value, *, size=None, symmetric=True, positive_definite=False, positive_semidefinite=False
+) -> np.ndarray:
+    """Return a finite square matrix, optionally checked for symmetry and definiteness.
+
+    The symmetry tolerance is relative to the largest entry (1e-10), loose enough
+    for matrices assembled in floating point and tight enough to catch a typo.
+    """
+    arr = np.atleast_2d(np.asarray(value, dtype=float))
+    if arr.ndim != 2 or arr.shape[0] != arr.shape[1]:
+        raise ValueError(f"{name} must be a square matrix, got shape {np.shape(value)}")
+    if size is not None and arr.shape[0] != size:
+        raise ValueError(f"{name} must be {size}x{size} to match the other matrices, got {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must contain only finite numbers, got {_show(value)}")
+    scale = max(np.abs(arr).max(), np.finfo(float).tiny)
+    if symmetric and np.abs(arr - arr.T).max() > 1e-10 * scale:
+        i, j = np.unravel_index(np.argmax(np.abs(arr - arr.T)), arr.shape)
+        raise ValueError(
+            f"{name} must be symmetric; {name}[{i},{j}] = {arr[i, j]!r} but {name}[{j},{i}] = {arr[j, i]!r}"
+        )
+    if positive_definite or positive_semidefinite:
+        eig = np.linalg.eigvalsh(0.5 * (arr + arr.T))
+        limit = 1e-12 * scale
+        if positive_definite and eig.min() <= limit:
+            raise ValueError(f"{name} must be positive definite, got smallest eigenvalue {eig.min():.4g}")
+        if positive_semidefinite and eig.min() < -limit:
+            raise ValueError(
+                f"{name} must be positive semi-definite, got smallest eigenvalue {eig.min():.4g}"
+            )
+    return arr
+
+
+def generator(rng) -> np.random.Generator:
+    """Accept a ``numpy.random.Generator``, an int seed or None, and return a Generator."""
+    if isinstance(rng, np.random.Generator):
+        return rng
+    if rng is None or (
+        isinstance(rng, (numbers.Integral, np.integer)) and not isinstance(rng, bool) and rng >= 0
+    ):
+        return np.random.default_rng(rng)
+    raise ValueError(f"rng must be a numpy.random.Generator, a non-negative int seed or None, got {rng!r}")
+
+
+def integer(name: str, value, *, low=None, high=None) -> int:
+    """Return ``value`` as an int within ``[low, high]`` (a count: samples, segments, records).
+
+    Floats, even integral ones, and bools are refused so that a count is never
+    silently truncated.
+    """
+    if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {value!r} of type {type(value).__name__}")
+    k = int(value)
+    allowed = f"[{'-inf' if low is None else low}, {'inf' if high is None else high}]"
+    if (low is not None and k < low) or (high is not None and k > high):
+        raise ValueError(f"{name} must be an integer in {allowed}, got {value!r}")
+    return k
+
+
+def hermitian(name: str, value, *, size=None) -> np.ndarray:
+    """Return a finite complex array of square matrices ``(..., q, q)``, each Hermitian.
+
+    The tolerance (1e-10) is relative to the largest entry of each matrix on its
+    own, so a matrix whose entries are small (a spectrum far down its slope) is
+    held to the same relative standard as a large one.
+    """
+    arr = np.asarray(value, dtype=complex)
+    if arr.ndim < 2 or arr.shape[-1] != arr.shape[-2]:
+        raise ValueError(f"{name} must be an array of square matrices (..., q, q), got shape {arr.shape}")
+    if size is not None and arr.shape[-1] != size:
+        raise ValueError(f"{name} must hold {size}x{size} matrices, got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must contain only finite numbers, got {_show(value)}")
+    if arr.size == 0:
+        return arr
+    scale = np.maximum(np.abs(arr).max(axis=(-2, -1), keepdims=True), np.finfo(float).tiny)
+    misfit = np.abs(arr - np.conj(np.swapaxes(arr, -1, -2))) / scale
+    if misfit.max() > 1e-10:
+        idx = np.unravel_index(np.argmax(misfit), arr.shape)
+        j, k = idx[-2], idx[-1]
+        swap = (*idx[:-2], k, j)
+        where = ", ".join(str(i) for i in idx)
+        raise ValueError(
+            f"{name} must be Hermitian (equal to its conjugate transpose); {name}[{where}] = {arr[idx]!r} "
+            f"but the conjugate of its mirror entry is {np.conj(arr[swap])!r}"
+        )
+    return arr
+
+
+def time_grid(name: str, value, *, uniform: bool = False) -> np.ndarray:
+    """Return ``value`` as a 1-D finite array of strictly increasing times (s).
+
+    With ``uniform=True`` every step must also equal the mean step, to within
+    1e-9 of it plus a few roundings of the largest time, so that grids made by
+    ``np.linspace`` or ``np.arange`` pass and a grid with a missing sample does not.
+    """
+    t = array(name, value, ndim=1)
+    if t.size == 0:
+        raise ValueError(f"{name} must hold at least one time, got an empty array")
+    steps = np.diff(t)
+    if np.any(steps <= 0):
+        i = int(np.argmax(steps <= 0))
+        raise ValueError(
+            f"{name} must be strictly increasing; {name}[{i + 1}] = {t[i + 1]!r} "
+            f"follows {name}[{i}] = {t[i]!r}"
+        )
+    if uniform and t.size > 2:
+        h = (t[-1] - t[0]) / (t.size - 1)
+        misfit = np.abs(steps - h)
+        if misfit.max() > 1e-9 * h + 8 * np.finfo(float).eps * np.abs(t).max():
+            i = int(np.argmax(misfit))
+            raise ValueError(
+                f"{name} must be uniformly spaced (mean step {h:.6g} s); step {i} is {steps[i]:.6g} s"
+            )
+    return t

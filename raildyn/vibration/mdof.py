@@ -1,0 +1,505 @@
+"""Several degrees of freedom: M x'' + C x' + K x = F(t) (book chapter 1).
+
+The undamped eigenproblem with mass-normalised modes, modal superposition,
+Rayleigh (proportional) damping, complex modes of the first-order form when the
+damping is not proportional, state-space matrices for python-control, and the
+frequency-response matrix. SI units: m, kg, s, N, rad/s.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+import scipy.linalg
+
+from raildyn._checks import array, nonnegative, positive, scalar, square_matrix, time_grid
+from raildyn.vibration.sdof import SDOF
+
+# The outputs that state_space can give.
+_OUTPUTS = ("displacement", "velocity", "acceleration", "state")
+
+# ---------------------------------------------------------------------------
+# Several degrees of freedom
+
+
+class ModalResult(NamedTuple):
+    """Undamped modes of ``M x'' + K x = 0``.
+
+    Attributes
+    ----------
+    natural_frequencies : ndarray, shape (n,)
+        ω_j in rad/s, ascending (0.0 for a rigid-body mode).
+    mode_shapes : ndarray, shape (n, n)
+        Column j is mode j, scaled so that Φᵀ M Φ = I (units kg^(−1/2)) and its
+        largest-magnitude entry is positive.
+    """
+
+    natural_frequencies: np.ndarray
+    mode_shapes: np.ndarray
+
+
+class ComplexModes(NamedTuple):
+    """Modes of ``M x'' + C x' + K x = 0`` from its first-order form.
+
+    Attributes
+    ----------
+    eigenvalues : complex ndarray, shape (2n,)
+        λ in rad/s, ascending in |λ|; each conjugate pair adjacent, Im λ >= 0 first.
+    mode_shapes : complex ndarray, shape (n, 2n)
+        Displacement part of each eigenvector, scaled so its largest-magnitude
+        entry is 1 + 0j (dimensionless).
+    natural_frequencies : ndarray, shape (2n,)
+        |λ|, rad/s (the undamped ω_j when damping is proportional).
+    damping_ratios : ndarray, shape (2n,)
+        −Re λ/|λ| (1 for a real, overdamped eigenvalue; 0 for λ = 0).
+    """
+
+    eigenvalues: np.ndarray
+    mode_shapes: np.ndarray
+    natural_frequencies: np.ndarray
+    damping_ratios: np.ndarray
+
+
+def _pivots(vectors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Index arrays (rows, columns) of the entry of largest magnitude in each column.
+
+    Ties within a relative 1e-8 (a symmetric chain has entries ±a) go to the
+    first such row, so the sign or phase convention does not hang on rounding.
+    """
+    mag = np.abs(vectors)
+    rows = np.argmax(mag >= (1.0 - 1e-8) * mag.max(axis=0), axis=0)
+    return rows, np.arange(vectors.shape[1])
+
+
+def _mass_and_stiffness(M, K):
+    M = square_matrix("M", M, positive_definite=True)
+    K = square_matrix("K", K, size=M.shape[0], positive_semidefinite=True)
+    return M, K
+
+
+def _modes(M: np.ndarray, K: np.ndarray) -> ModalResult:
+    lam, phi = scipy.linalg.eigh(K, M)  # eigh scales the vectors so that Φᵀ M Φ = I
+    # Eigenvalues within rounding of zero are rigid-body modes: the computed value carries no correct
+    # digit below about n ε ‖K‖/λ_min(M), so it is set to exactly zero (negatives included).
+    noise = 1e3 * lam.size * np.finfo(float).eps * np.abs(K).max() / np.linalg.eigvalsh(M)[0]
+    lam = np.where(lam > noise, lam, 0.0)
+    phi = phi * np.sign(phi[_pivots(phi)])
+    return ModalResult(np.sqrt(lam), phi)
+
+
+def modal_analysis(M, K) -> ModalResult:
+    """Natural frequencies and mass-normalised mode shapes of ``M x'' + K x = 0``.
+
+    Solves the generalised eigenproblem K φ = ω² M φ (scipy.linalg.eigh), with
+    Φᵀ M Φ = I and Φᵀ K Φ = diag(ω²). An eigenvalue ω² smaller than the
+    rounding error of the solve (about 1e3 n ε ‖K‖/λ_min(M)) has no correct
+    digit and is reported as exactly 0: a rigid-body mode.
+
+    Parameters
+    ----------
+    M : array_like, shape (n, n)
+        Mass matrix, kg (or kg·m² for rotations); symmetric positive definite.
+    K : array_like, shape (n, n)
+        Stiffness matrix, N/m; symmetric positive semi-definite (a free-free
+        system has zero-frequency rigid-body modes).
+
+    Returns
+    -------
+    ModalResult
+
+    Examples
+    --------
+    >>> M, K = chain_matrices([1.0, 1.0], [1.0, 1.0])
+    >>> np.round(modal_analysis(M, K).natural_frequencies ** 2, 6)  # (3 ∓ √5)/2
+    array([0.381966, 2.618034])
+    """
+    return _modes(*_mass_and_stiffness(M, K))
+
+
+def chain_matrices(masses, stiffnesses, grounded: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    """Mass and stiffness matrices of masses in a line joined by springs.
+
+    Springs join neighbouring masses in order. With ``grounded=True`` there is
+    one more spring, listed first, tying mass 0 to the ground, and the last
+    mass is free (fixed-free); otherwise both ends are free (free-free, with one
+    rigid-body mode). A chain of dampers gives its damping matrix the same way.
+
+    Parameters
+    ----------
+    masses : array_like, shape (n,)
+        kg, > 0.
+    stiffnesses : array_like, shape (n,) if grounded else (n − 1,)
+        N/m, > 0.
+    grounded : bool
+
+    Returns
+    -------
+    M, K : ndarray, shape (n, n)
+
+    Examples
+    --------
+    >>> chain_matrices([1.0, 2.0], [3.0, 4.0])[1]
+    array([[ 7., -4.],
+           [-4.,  4.]])
+    """
+    m = array("masses", masses, ndim=1, low=0.0, low_open=True)
+    if m.size == 0:
+        raise ValueError("masses must hold at least one mass, got an empty array")
+    if not isinstance(grounded, (bool, np.bool_)):
+        raise TypeError(f"grounded must be True or False, got {grounded!r}")
+    want = m.size if grounded else m.size - 1
+    k = array("stiffnesses", stiffnesses, ndim=1, low=0.0, low_open=True)
+    if k.size != want:
+        kind = "grounded (fixed-free)" if grounded else "free-free"
+        raise ValueError(
+            f"stiffnesses must have {want} entries for a {kind} chain of {m.size} masses, got {k.size}"
+        )
+    right = np.arange(m.size - want, m.size)  # the mass at the far end of each spring
+    left = right - 1  # −1 is the ground
+    K = np.zeros((m.size, m.size))
+    np.add.at(K, (right, right), k)
+    inner = left >= 0
+    np.add.at(K, (left[inner], left[inner]), k[inner])
+    np.add.at(K, (left[inner], right[inner]), -k[inner])
+    np.add.at(K, (right[inner], left[inner]), -k[inner])
+    return np.diag(m), K
+
+
+def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) -> tuple[float, float]:
+    """Coefficients (α, β) of C = αM + βK that give damping ratios ξ₁ at ω₁ and ξ₂ at ω₂.
+
+    Mode j then has ξ_j = α/(2ω_j) + βω_j/2 (Rayleigh damping; see Clough &
+    Penzien, *Dynamics of Structures*, 2nd ed., 1993). Very unequal ratios can
+    make α or β negative, which damps some other frequencies negatively; check
+    the result.
+
+    Parameters
+    ----------
+    omega1, omega2 : float
+        Distinct circular frequencies, rad/s, > 0.
+    xi1, xi2 : float
+        Damping ratios wanted there, >= 0.
+
+    Returns
+    -------
+    alpha : float
+        1/s.
+    beta : float
+        s.
+
+    Examples
+    --------
+    >>> a, b = rayleigh_coefficients(1.0, 3.0, 0.05, 0.05)
+    >>> round(a, 6), round(b, 6)
+    (0.075, 0.025)
+    """
+    w1, w2 = positive("omega1", omega1), positive("omega2", omega2)
+    if w1 == w2:
+        raise ValueError(f"omega2 must differ from omega1 to fix two coefficients, both are {w1!r}")
+    x1, x2 = nonnegative("xi1", xi1), nonnegative("xi2", xi2)
+    span = w2**2 - w1**2
+    return 2.0 * w1 * w2 * (x1 * w2 - x2 * w1) / span, 2.0 * (x2 * w2 - x1 * w1) / span
+
+
+def rayleigh_damping(M, K, alpha: float, beta: float) -> np.ndarray:
+    """Proportional damping matrix C = αM + βK, N·s/m (α in 1/s, β in s; any finite values)."""
+    M, K = _mass_and_stiffness(M, K)
+    return scalar("alpha", alpha) * M + scalar("beta", beta) * K
+
+
+def modal_damping_ratios(M, C, K) -> np.ndarray:
+    """Damping ratio of each undamped mode, ξ_j = (Φᵀ C Φ)_jj / (2ω_j), for proportional damping.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n)
+        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        In the order of :func:`modal_analysis`. A rigid-body mode (ω_j = 0)
+        gets inf if it is damped and 0 if not.
+
+    Raises
+    ------
+    ValueError
+        If Φᵀ C Φ is not diagonal to 1e-8 of its largest entry: the modes
+        are then coupled by damping, and :func:`complex_modes` applies.
+
+    Examples
+    --------
+    >>> M, K = chain_matrices([1.0, 1.0], [1.0, 1.0])
+    >>> np.round(modal_damping_ratios(M, 0.1 * K, K), 6)  # ξ_j = 0.1 ω_j / 2
+    array([0.030902, 0.080902])
+    """
+    M, K = _mass_and_stiffness(M, K)
+    C = square_matrix("C", C, size=M.shape[0], symmetric=False)
+    modes = _modes(M, K)
+    phi = modes.mode_shapes
+    modal = phi.T @ C @ phi
+    scale = max(np.abs(modal).max(), np.finfo(float).tiny)
+    coupling = np.abs(modal - np.diag(np.diag(modal))).max() / scale
+    if coupling > 1e-8:
+        raise ValueError(
+            f"C is not proportional damping: Φᵀ C Φ has off-diagonal terms up to {coupling:.3g} of its "
+            "largest entry; use complex_modes for non-proportional damping"
+        )
+    c, w = np.diag(modal), modes.natural_frequencies
+    rigid = np.where(c > 1e-8 * scale, np.inf, 0.0)
+    return np.divide(c, 2.0 * w, out=rigid, where=w > 0)
+
+
+def _rigid_body_response(h: float, f: np.ndarray, q0: float, v0: float) -> np.ndarray:
+    """Exact q(t) of q'' = f for f linear between samples h apart (a zero-frequency mode)."""
+    v = v0 + np.concatenate([[0.0], np.cumsum(0.5 * h * (f[:-1] + f[1:]))])
+    step = h * v[:-1] + h**2 * (2.0 * f[:-1] + f[1:]) / 6.0
+    return q0 + np.concatenate([[0.0], np.cumsum(step)])
+
+
+def modal_superposition(M, K, t, x0=None, v0=None, force=None, damping_ratios=None) -> np.ndarray:
+    """Response of ``M x'' + C x' + K x = F(t)`` as a sum of uncoupled modal responses.
+
+    With x = Φ q, each modal coordinate obeys q_j'' + 2ξ_jω_j q_j' + ω_j² q_j = φ_jᵀ F,
+    solved exactly by :meth:`SDOF.free_response` or :meth:`SDOF.forced_response`
+    (force linear between samples). Damping is modal: C never appears, only ξ_j.
+    A rigid-body mode (ω_j = 0) is integrated exactly and undamped, whatever
+    its ξ_j (its modal damping 2ξ_jω_j is zero).
+
+    Parameters
+    ----------
+    M, K : array_like, shape (n, n)
+        Mass (kg) and stiffness (N/m) matrices, as in :func:`modal_analysis`.
+    t : array_like, shape (n_t,)
+        Strictly increasing times, s; t[0] is the initial instant. Uniformly
+        spaced when ``force`` is given.
+    x0, v0 : array_like, shape (n,), optional
+        Initial displacements (m) and velocities (m/s); zero by default.
+    force : array_like, shape (n, n_t), optional
+        Force on each coordinate (N) at the times ``t``.
+    damping_ratios : float or array_like, shape (n,), optional
+        ξ for every mode or for each, >= 0; zero by default.
+
+    Returns
+    -------
+    ndarray, shape (n, n_t)
+        Displacements, m.
+
+    Examples
+    --------
+    >>> M, K = chain_matrices([1.0], [4.0])
+    >>> np.round(modal_superposition(M, K, [0.0, np.pi / 2], x0=[1.0]), 12)
+    array([[ 1., -1.]])
+    """
+    M, K = _mass_and_stiffness(M, K)
+    n = M.shape[0]
+    t = time_grid("t", t, uniform=force is not None)
+    x0 = np.zeros(n) if x0 is None else array("x0", x0, shape=(n,))
+    v0 = np.zeros(n) if v0 is None else array("v0", v0, shape=(n,))
+    xi = np.zeros(n) if damping_ratios is None else array("damping_ratios", damping_ratios, low=0.0)
+    if xi.ndim != 0 and xi.shape != (n,):
+        raise ValueError(f"damping_ratios must be a number or have shape ({n},), got shape {xi.shape}")
+    xi = np.broadcast_to(xi, (n,))
+    modes = _modes(M, K)
+    phi = modes.mode_shapes
+    q0, qd0 = phi.T @ M @ x0, phi.T @ M @ v0  # Φᵀ M Φ = I inverts x = Φ q
+    tau = t - t[0]
+    fq = None if force is None else phi.T @ array("force", force, shape=(n, t.size))
+    q = np.empty((n, t.size))
+    for j, w in enumerate(modes.natural_frequencies):
+        if w == 0.0:
+            h = tau[-1] / (t.size - 1) if t.size > 1 else 0.0
+            q[j] = q0[j] + qd0[j] * tau if fq is None else _rigid_body_response(h, fq[j], q0[j], qd0[j])
+        else:
+            mode = SDOF.from_modal(w, xi[j])
+            q[j] = (
+                mode.free_response(tau, q0[j], qd0[j])
+                if fq is None
+                else mode.forced_response(t, fq[j], q0[j], qd0[j])
+            )
+    return phi @ q
+
+
+def _damped_matrices(M, C, K) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Checked M, C, K of a damped system.
+
+    C and K may be non-symmetric (creep forces make them so in the wheelset
+    models of later chapters); M must be symmetric positive definite.
+    """
+    M = square_matrix("M", M, positive_definite=True)
+    C = square_matrix("C", C, size=M.shape[0], symmetric=False)
+    K = square_matrix("K", K, size=M.shape[0], symmetric=False)
+    return M, C, K
+
+
+def _first_order(M, C, K) -> tuple[np.ndarray, np.ndarray]:
+    """Checked M and the matrix A of z' = A z, z = [x; x'], for M x'' + C x' + K x = 0."""
+    M, C, K = _damped_matrices(M, C, K)
+    n = M.shape[0]
+    A = np.zeros((2 * n, 2 * n))
+    A[:n, n:] = np.eye(n)
+    A[n:] = -np.linalg.solve(M, np.hstack([K, C]))
+    return M, A
+
+
+def complex_modes(M, C, K) -> ComplexModes:
+    """Eigenvalues and complex mode shapes of ``M x'' + C x' + K x = 0``, any damping.
+
+    Writes the system in first-order form z' = A z with
+    A = [[0, I], [−M⁻¹K, −M⁻¹C]] and solves A z = λ z (scipy.linalg.eig). For
+    an underdamped mode λ = −ξω ± iω√(1 − ξ²), the multi-degree-of-freedom
+    counterpart of eq. (1.9).
+
+    Parameters
+    ----------
+    M : array_like, shape (n, n)
+        Mass matrix, kg; symmetric positive definite.
+    C, K : array_like, shape (n, n)
+        Damping (N·s/m) and stiffness (N/m) matrices; need not be symmetric.
+
+    Returns
+    -------
+    ComplexModes
+
+    Notes
+    -----
+    An undamped rigid-body mode has a defective double eigenvalue 0; rounding
+    splits it into a pair of size about √ε times the other eigenvalues.
+
+    Examples
+    --------
+    >>> modes = complex_modes([[1.0]], [[0.2]], [[1.0]])
+    >>> np.round(modes.eigenvalues, 6), np.round(modes.damping_ratios, 6)
+    (array([-0.1+0.994987j, -0.1-0.994987j]), array([0.1, 0.1]))
+    """
+    M, A = _first_order(M, C, K)
+    n = M.shape[0]
+    lam, vec = scipy.linalg.eig(A)
+    # LAPACK returns real eigenvalues of a real matrix with Im exactly 0 and complex ones in exact
+    # conjugate pairs; keep the upper member of each pair and rebuild the lower as its conjugate.
+    keep = np.flatnonzero(lam.imag >= 0.0)
+    keep = keep[np.argsort(np.abs(lam[keep]), kind="stable")]
+    shapes = vec[:n, keep]
+    pivots = _pivots(shapes)
+    shapes = shapes / shapes[pivots]
+    shapes[pivots] = 1.0  # exactly, rather than z/z rounded
+    values, columns = [], []
+    for i, j in enumerate(keep):
+        values.append(lam[j])
+        columns.append(shapes[:, i])
+        if lam[j].imag > 0.0:
+            values.append(np.conj(lam[j]))
+            columns.append(np.conj(shapes[:, i]))
+    values = np.array(values)
+    freq = np.abs(values)
+    ratio = np.divide(-values.real, freq, out=np.zeros(freq.shape), where=freq > 0)
+    return ComplexModes(values, np.stack(columns, axis=1), freq, ratio)
+
+
+def state_space(M, C, K, B, output: str = "displacement"):
+    """State-space matrices of ``M x'' + C x' + K x = B u`` with state z = [x; x'].
+
+    z' = A z + B_s u, y = C_s z + D u, with A = [[0, I], [−M⁻¹K, −M⁻¹C]] and
+    B_s = [[0], [M⁻¹B]].
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n)
+        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices; C and K need
+        not be symmetric.
+    B : array_like, shape (n, m) or (n,)
+        How each of the m inputs (N, or whatever unit makes B u a force)
+        loads each coordinate.
+    output : {"displacement", "velocity", "acceleration", "state"}
+        y = x (m), x' (m/s), x'' (m/s², with D = M⁻¹B) or the whole state z.
+
+    Returns
+    -------
+    A, B_s, C_s, D : ndarray
+        Shapes (2n, 2n), (2n, m), (p, 2n), (p, m), with p = 2n for "state"
+        and n otherwise.
+
+    Examples
+    --------
+    >>> A, Bs, Cs, D = state_space([[2.0]], [[0.0]], [[8.0]], [[1.0]])
+    >>> A
+    array([[ 0.,  1.],
+           [-4., -0.]])
+    """
+    M, A = _first_order(M, C, K)
+    n = M.shape[0]
+    Bm = array("B", B)
+    Bm = array("B", Bm[:, None] if Bm.ndim == 1 else Bm, shape=(n, None))
+    if output not in _OUTPUTS:
+        raise ValueError(f"output must be one of {', '.join(map(repr, _OUTPUTS))}; got {output!r}")
+    m = Bm.shape[1]
+    accel_input = np.linalg.solve(M, Bm)
+    Bs = np.vstack([np.zeros((n, m)), accel_input])
+    zeros = np.zeros((n, m))
+    if output == "displacement":
+        return A, Bs, np.hstack([np.eye(n), np.zeros((n, n))]), zeros
+    if output == "velocity":
+        return A, Bs, np.hstack([np.zeros((n, n)), np.eye(n)]), zeros
+    if output == "acceleration":
+        return A, Bs, A[n:].copy(), accel_input
+    return A, Bs, np.eye(2 * n), np.zeros((2 * n, m))
+
+
+def to_control(M, C, K, B, output: str = "displacement"):
+    """The system of :func:`state_space` as a ``control.StateSpace`` (python-control).
+
+    Examples
+    --------
+    >>> import control
+    >>> sys = to_control([[1.0]], [[0.4]], [[4.0]], [[1.0]])
+    >>> np.round(np.sort_complex(control.poles(sys)), 6)
+    array([-0.2-1.989975j, -0.2+1.989975j])
+    """
+    import control  # imported here so that importing raildyn does not pull in python-control
+
+    return control.ss(*state_space(M, C, K, B, output))
+
+
+def frf_matrix(M, C, K, omega) -> np.ndarray:
+    """Receptance matrix H(ω) = (K − ω²M + iωC)⁻¹, m/N, at each circular frequency.
+
+    The MDOF counterpart of :meth:`SDOF.receptance`: X = H(ω) F for a
+    harmonic force F e^(iωt). All frequencies are solved in one batched call.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n)
+        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices.
+    omega : array_like, shape (n_omega,)
+        rad/s, >= 0.
+
+    Returns
+    -------
+    complex ndarray, shape (n_omega, n, n)
+
+    Raises
+    ------
+    ValueError
+        If K − ω²M + iωC is singular, as for an undamped system exactly at a
+        natural frequency.
+
+    Examples
+    --------
+    >>> frf_matrix([[1.0]], [[0.0]], [[4.0]], [0.0, 1.0])[:, 0, 0]
+    array([0.25      +0.j, 0.33333333+0.j])
+    """
+    M, C, K = _damped_matrices(M, C, K)
+    n = M.shape[0]
+    w = np.atleast_1d(array("omega", omega, low=0.0))
+    if w.ndim != 1:
+        raise ValueError(f"omega must be a number or a 1-dimensional array, got shape {w.shape}")
+    Z = K - w[:, None, None] ** 2 * M + 1j * w[:, None, None] * C
+    try:
+        return np.linalg.solve(Z, np.broadcast_to(np.eye(n, dtype=complex), Z.shape))
+    except np.linalg.LinAlgError:
+        bad = [float(x) for x, z in zip(w, Z, strict=True) if np.linalg.matrix_rank(z) < n]
+        raise ValueError(
+            f"K − ω²M + iωC is singular at omega = {bad} rad/s (an undamped natural frequency?); "
+            "the response there is unbounded"
+        ) from None

@@ -1,0 +1,239 @@
+"""The one mechanism every chapter's widgets share: a figure drawn once and a set of controls.
+
+A :class:`LiveFigure` owns a matplotlib ``Figure`` on an Agg canvas (no pyplot, so
+no global state and no auto-display) and an ``ipywidgets.Image`` that shows it.
+:func:`assemble` wires named controls to a redraw function and adds a reset
+button. The redraw function updates the existing artists (``set_data``,
+``set_ydata``...) and never builds a new figure.
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+import ipywidgets as widgets
+import matplotlib
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from raildyn.plots import STYLE
+
+
+class LiveFigure:
+    """A figure that is built once and re-rendered to PNG after each change.
+
+    Parameters
+    ----------
+    nrows, ncols : int
+        Grid of axes, as in ``Figure.subplots``.
+    figsize : tuple of float
+        Size in inches.
+    dpi : int
+        Resolution of the PNG frames; 80 keeps a frame near 30 kB and fast to encode.
+    """
+
+    def __init__(self, nrows: int = 1, ncols: int = 1, *, figsize=(8.0, 3.6), dpi: int = 80, **subplot_kw):
+        self.dpi = dpi
+        with matplotlib.rc_context(STYLE):
+            self.figure = Figure(figsize=figsize, dpi=dpi, layout="constrained")
+            FigureCanvasAgg(self.figure)
+            self.axes = self.figure.subplots(nrows, ncols, squeeze=False, **subplot_kw)
+        self.image = widgets.Image(format="png", layout=widgets.Layout(width=f"{figsize[0] * dpi:.0f}px"))
+        self._layout_frozen = False
+
+    def render(self) -> bytes:
+        """Draw the figure and return it as PNG bytes."""
+        buffer = io.BytesIO()
+        with matplotlib.rc_context(STYLE):
+            self.figure.savefig(buffer, format="png", dpi=self.dpi)
+        if not self._layout_frozen:
+            # The constrained layout is solved on the first draw and then kept:
+            # solving it again on every slider move would cost more than the plot.
+            self.figure.set_layout_engine("none")
+            self._layout_frozen = True
+        return buffer.getvalue()
+
+    def refresh(self) -> bytes:
+        """Render and show the new frame in the image widget; return its PNG bytes."""
+        frame = self.render()
+        self.image.value = frame
+        return frame
+
+
+class LiveBox(widgets.VBox):
+    """The container of a live widget, which also knows how to show itself without a kernel.
+
+    In Jupyter and Voilà the widget view is shown. Pages rendered without a
+    kernel (the book) pick the ``text/html`` or ``image/png`` part of the same
+    display bundle: precomputed frames behind HTML range inputs when a
+    ``static`` source is set, else the current frame as a picture.
+    """
+
+    static: Callable[[], str] | None = None
+
+    def _repr_mimebundle_(self, **kwargs):
+        data = super()._repr_mimebundle_(**kwargs)
+        if data is None:
+            return None
+        if self.static is not None:
+            data["text/html"] = self.static()
+        else:
+            data["image/png"] = base64.b64encode(self.children[-1].value).decode("ascii")
+        return data
+
+
+def assemble(
+    controls: Mapping[str, widgets.ValueWidget],
+    live: LiveFigure,
+    redraw: Callable[[dict], None],
+    *,
+    status: widgets.HTML | None = None,
+    columns: int = 2,
+) -> tuple[widgets.Box, Callable[..., bytes]]:
+    """Wire controls to a redraw function; return ``(container, update)``.
+
+    Parameters
+    ----------
+    controls : mapping of name to ipywidgets control
+        The names are the keyword arguments that ``update`` accepts.
+    live : LiveFigure
+        The figure that ``redraw`` draws into.
+    redraw : callable
+        ``redraw(values)`` with ``values`` a dict of the current control values;
+        it computes the model and updates the artists of ``live`` in place.
+    status : ipywidgets.HTML, optional
+        A text line (numbers such as the RMS) that ``redraw`` may update.
+    columns : int
+        Controls per row.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+    update : callable
+        ``update(**values)`` sets the named controls, redraws once and returns
+        the PNG bytes of the new frame. Unknown names raise ``ValueError``.
+    """
+    defaults = {name: control.value for name, control in controls.items()}
+    state = {"quiet": False}
+
+    def current() -> dict:
+        return {name: control.value for name, control in controls.items()}
+
+    def draw() -> bytes:
+        redraw(current())
+        return live.refresh()
+
+    def on_change(_change) -> None:
+        if not state["quiet"]:
+            draw()
+
+    def update(**values) -> bytes:
+        unknown = sorted(set(values) - set(controls))
+        if unknown:
+            raise ValueError(f"unknown control(s) {unknown}; this widget has {sorted(controls)}")
+        # Set every value first and draw once, instead of once per control.
+        state["quiet"] = True
+        try:
+            for name, value in values.items():
+                controls[name].value = value
+        finally:
+            state["quiet"] = False
+        return draw()
+
+    for control in controls.values():
+        control.observe(on_change, names="value")
+
+    reset = widgets.Button(description="Reset", icon="undo", tooltip="Back to the starting values")
+    reset.on_click(lambda _button: update(**defaults))
+
+    items = list(controls.values())
+    rows = [widgets.HBox(items[i : i + columns]) for i in range(0, len(items), columns)]
+    rows.append(widgets.HBox([reset] + ([status] if status is not None else [])))
+    container = LiveBox([*rows, live.image])
+    container.add_class("raildyn-widget")  # the browser tests find a widget's controls and picture by it
+    draw()
+    return container, update
+
+
+def slider(
+    description: str,
+    value: float,
+    low: float,
+    high: float,
+    step: float,
+    *,
+    fmt: str = ".2f",
+    continuous: bool = True,
+) -> widgets.FloatSlider:
+    """A float slider with its unit in the description and a readable width."""
+    return widgets.FloatSlider(
+        value=value,
+        min=low,
+        max=high,
+        step=step,
+        description=description,
+        readout_format=fmt,
+        continuous_update=continuous,
+        style={"description_width": "initial"},
+        layout=widgets.Layout(width="360px"),
+    )
+
+
+@dataclass(frozen=True)
+class Recipe:
+    """How to make one widget: its controls, its figure, and the set-up of its artists.
+
+    ``setup(live, status)`` draws the fixed parts of the figure once, creates the
+    artists that move, and returns ``redraw(values)``. Keeping the three apart
+    lets :meth:`build` make the live widget and :meth:`fresh_frame` draw one
+    frame from nothing (the way ``interact`` redraws), with the same code.
+    """
+
+    controls: Callable[[], dict]
+    setup: Callable[[LiveFigure, widgets.HTML], Callable[[dict], None]]
+    figure: dict = field(default_factory=dict)
+    static: dict = field(default_factory=dict)
+    """Control name to the values precomputed for the page without a kernel (one or two controls)."""
+    title: str = "interactive figure"
+
+    def build(self) -> tuple[widgets.Box, Callable[..., bytes]]:
+        """The live widget: ``(container, update)``."""
+        live = LiveFigure(**self.figure)
+        status = widgets.HTML()
+        container, update = assemble(self.controls(), live, self.setup(live, status), status=status)
+        if self.static:
+            container.static = self.static_html
+        return container, update
+
+    def static_html(self) -> str:
+        """The kernel-free counterpart: frames over :attr:`static` behind HTML range inputs."""
+        from raildyn.widgets._static import frames_html
+
+        controls = self.controls()
+        labels = {name: controls[name].description for name in self.static}
+        start = {name: _nearest(values, controls[name].value) for name, values in self.static.items()}
+        live = LiveFigure(**self.figure)
+        _, update = assemble(controls, live, self.setup(live, widgets.HTML()))
+        return frames_html(update, self.static, labels, alt=self.title, start=start)
+
+    def defaults(self) -> dict:
+        """The starting value of every control."""
+        return {name: control.value for name, control in self.controls().items()}
+
+    def fresh_frame(self, **values) -> bytes:
+        """One frame drawn on a brand-new figure: the naive baseline of the benchmarks."""
+        live = LiveFigure(**self.figure)
+        redraw = self.setup(live, widgets.HTML())
+        redraw({**self.defaults(), **values})
+        return live.render()
+
+
+def _nearest(values, value) -> int:
+    """Index of the grid value closest to ``value`` (equal, for values that are not numbers)."""
+    try:
+        return min(range(len(values)), key=lambda i: abs(values[i] - value))
+    except TypeError:
+        return list(values).index(value) if value in values else 0

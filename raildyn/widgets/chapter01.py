@@ -1,0 +1,289 @@
+"""Chapter 1 widgets: free vibration and the root locus, forced response, modes, random response.
+
+Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
+models are :mod:`raildyn.vibration` and :mod:`raildyn.random_vibration`; this
+module only turns control values into model calls and moves artists.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import numpy as np
+
+from raildyn import plots, random_vibration, vibration
+from raildyn.widgets._core import Recipe, slider
+
+# Damping factors of the grey reference curves behind the live one.
+_REFERENCE_XI = (0.05, 0.1, 0.2, 0.5, 1.0)
+
+
+def _free_vibration_controls():
+    return {
+        "damping_ratio": slider("damping factor ξ", 0.1, 0.0, 2.0, 0.01),
+        "natural_frequency": slider("ω_n (rad/s)", 2 * np.pi, 1.0, 30.0, 0.1),
+        "x0": slider("x₀ (mm)", 10.0, -20.0, 20.0, 0.5, fmt=".1f"),
+        "v0": slider("v₀ (mm/s)", 0.0, -200.0, 200.0, 5.0, fmt=".0f"),
+    }
+
+
+def _free_vibration_setup(live, status):
+    ax_t, ax_s = live.axes[0]
+    t = np.linspace(0.0, 1.0, 600)  # rescaled to five undamped periods on every update
+    hist = plots.time_history(t, np.zeros_like(t), ax=ax_t, envelope=np.zeros_like(t))
+    (peak_marks,) = ax_t.plot([], [], "s", color=plots.COLORS[1], ms=6, label="$x_1, x_2$ one period apart")
+    ax_t.set_ylabel("displacement $x$ (mm)")
+    ax_t.legend(loc="upper right")
+    ax_t.set_ylim(-21, 21)
+    locus = vibration.root_locus(1.0, np.linspace(0.0, 2.0, 401))
+    art = plots.root_locus(locus, np.zeros(2, complex), ax=ax_s)
+    ax_s.set_xlabel(r"Re $s/\omega_n$")
+    ax_s.set_ylabel(r"Im $s/\omega_n$")
+    ax_s.set_xlim(-4.0, 0.5)
+    ax_s.set_ylim(-1.3, 1.3)
+
+    def redraw(v):
+        system = vibration.SDOF.from_modal(v["natural_frequency"], v["damping_ratio"])
+        time = t * 5 * 2 * np.pi / system.natural_frequency
+        x = system.free_response(time, v["x0"], v["v0"])
+        hist["line"].set_data(time, x)
+        env = system.envelope(time, v["x0"], v["v0"])
+        hist["upper"].set_data(time, env)
+        hist["lower"].set_data(time, -env)
+        ax_t.set_xlim(0, time[-1])
+        roots = system.roots() / system.natural_frequency
+        art["roots"].set_data(roots.real, roots.imag)
+        art["roots"].set_visible(True)
+        text = f"<b>{system.regime}</b>"
+        if 0 < system.damping_ratio < 1:
+            peaks_t, peaks_x = system.decay_peaks(v["x0"], v["v0"], count=2)
+            peak_marks.set_data(peaks_t, peaks_x)
+            measured = np.log(peaks_x[0] / peaks_x[1]) if peaks_x[1] > 0 else np.inf
+            text += (
+                f" · ω_d = {system.damped_frequency:.3f} rad/s · δ = 2πξ/√(1−ξ²) = "
+                f"{system.log_decrement:.4f} · ln(x₁/x₂) = {measured:.4f}"
+            )
+        else:
+            peak_marks.set_data([], [])
+        status.value = text
+
+    return redraw
+
+
+FREE_VIBRATION = Recipe(
+    _free_vibration_controls,
+    _free_vibration_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (9.0, 3.6), "gridspec_kw": {"width_ratios": [1.6, 1]}},
+    static={"damping_ratio": [0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.3, 2.0]},
+    title="Free response of an SDOF system and the locus of its roots",
+)
+
+
+def free_vibration():
+    """Free response x(t) of an SDOF system beside the locus of its roots (book Figs. 1.4 and 1.5).
+
+    Controls: damping factor ξ, natural frequency ω_n (rad/s), initial
+    displacement x₀ (mm) and velocity v₀ (mm/s). The status line gives the
+    regime, ω_d, the logarithmic decrement δ and ln(x₁/x₂) read off the curve.
+    """
+    return FREE_VIBRATION.build()
+
+
+def _forced_response_setup(live, status):
+    ax_m, ax_p, ax_tr = live.axes[0]
+    r = np.linspace(0.0, 3.0, 601)
+    for xi in _REFERENCE_XI:
+        ax_m.plot(r, vibration.magnification_factor(r, xi), color="0.8", lw=0.8)
+        ax_p.plot(r, np.degrees(vibration.phase_angle(r, xi)), color="0.8", lw=0.8)
+        ax_tr.plot(r, vibration.transmissibility_ratio(r, xi), color="0.8", lw=0.8)
+    mag = plots.frequency_curves(r, {"magnification": r * 0 + 1}, ax=ax_m)["magnification"]
+    pha = plots.frequency_curves(r, {"phase": r * 0}, ax=ax_p)["phase"]
+    tra = plots.frequency_curves(r, {"transmissibility": r * 0 + 1}, ax=ax_tr, logy=True)["transmissibility"]
+    ax_m.set_ylim(0, 8)
+    ax_m.set_ylabel(r"magnification $|X|k/F_0$")
+    ax_p.set_ylim(0, 180)
+    ax_p.set_yticks([0, 45, 90, 135, 180])
+    ax_p.set_ylabel(r"phase lag $\phi$ (deg)")
+    ax_tr.set_ylim(0.05, 30)
+    ax_tr.set_ylabel("transmissibility $|X/Y|$")
+    ax_tr.axvline(np.sqrt(2), ls=":", color="k", lw=1)
+
+    def redraw(v):
+        xi = v["damping_ratio"]
+        m = vibration.magnification_factor(r, xi)
+        mag.set_ydata(m)
+        pha.set_ydata(np.degrees(vibration.phase_angle(r, xi)))
+        tra.set_ydata(vibration.transmissibility_ratio(r, xi))
+        status.value = (
+            f"largest magnification on the plot {m.max():.3f} at r = {r[np.argmax(m)]:.3f}; "
+            f"at r = 1 it is 1/(2ξ) = {1 / (2 * xi):.3f}"
+        )
+
+    return redraw
+
+
+FORCED_RESPONSE = Recipe(
+    lambda: {"damping_ratio": slider("damping factor ξ", 0.1, 0.02, 1.0, 0.01)},
+    _forced_response_setup,
+    {"nrows": 1, "ncols": 3, "figsize": (10.0, 3.4)},
+    static={"damping_ratio": [0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.7, 1.0]},
+    title="Magnification factor, phase lag and transmissibility against frequency ratio",
+)
+
+
+def forced_response():
+    """Magnification factor, phase and transmissibility against r = ω/ω_n for a chosen ξ.
+
+    Grey curves show ξ = 0.05, 0.1, 0.2, 0.5 and 1 for reference; the dotted line
+    marks r = √2, where the transmissibility is 1 whatever the damping.
+    """
+    return FORCED_RESPONSE.build()
+
+
+def _chain_modes_controls():
+    return {
+        "dof": widgets.Dropdown(options=[2, 3], value=3, description="masses"),
+        "initial": widgets.Dropdown(
+            options=["mass 1 displaced", "last mass displaced", "mode 1 shape", "mode 2 shape"],
+            value="last mass displaced",
+            description="start",
+        ),
+        "mass_ratio": slider("m_i/m₁", 1.0, 0.2, 3.0, 0.05),
+        "stiffness_ratio": slider("k_i/k₁", 1.0, 0.2, 3.0, 0.05),
+        "damping_ratio": slider("modal ξ", 0.02, 0.0, 0.2, 0.005, fmt=".3f"),
+    }
+
+
+def _chain_modes_setup(live, status):
+    ax_m, ax_x = live.axes[0]
+    t = np.linspace(0.0, 2.0, 800)
+    shape_lines = [ax_m.plot([], [], "o-", color=plots.COLORS[i])[0] for i in range(3)]
+    resp_lines = [ax_x.plot(t, 0 * t, color=plots.COLORS[i], label=f"mass {i + 1}")[0] for i in range(3)]
+    ax_m.axhline(0, color="0.4", lw=0.8)
+    ax_m.set_xlabel("mass number (0 = ground)")
+    ax_m.set_ylabel(r"mode shape $\phi$ (kg$^{-1/2}$)")
+    ax_x.set_xlabel("time $t$ (s)")
+    ax_x.set_ylabel("displacement (mm)")
+    ax_x.set_xlim(0, t[-1])
+    ax_x.legend(loc="upper right")
+
+    def redraw(v):
+        n = v["dof"]
+        masses = 1000.0 * np.r_[1.0, np.full(n - 1, v["mass_ratio"])]
+        springs = 1.0e6 * np.r_[1.0, np.full(n - 1, v["stiffness_ratio"])]
+        M, K = vibration.chain_matrices(masses, springs, grounded=True)
+        modes = vibration.modal_analysis(M, K)
+        x0 = np.zeros(n)
+        if v["initial"] == "mass 1 displaced":
+            x0[0] = 10.0
+        elif v["initial"] == "last mass displaced":
+            x0[-1] = 10.0
+        else:
+            shape = modes.mode_shapes[:, int(v["initial"][5]) - 1]
+            x0 = 10.0 * shape / np.abs(shape).max()
+        x = vibration.modal_superposition(M, K, t, x0=x0, damping_ratios=v["damping_ratio"])
+        scale = max(np.abs(modes.mode_shapes).max(), 1e-12)
+        for j in range(3):
+            visible = j < n
+            shape_lines[j].set_visible(visible)
+            resp_lines[j].set_visible(visible)
+            if visible:
+                freq = modes.natural_frequencies[j] / (2 * np.pi)
+                shape_lines[j].set_data(np.arange(n + 1), np.r_[0.0, modes.mode_shapes[:, j]])
+                shape_lines[j].set_label(f"mode {j + 1}: {freq:.2f} Hz")
+                resp_lines[j].set_ydata(x[j])
+        ax_m.set_xlim(-0.2, n + 0.2)
+        ax_m.set_ylim(-1.15 * scale, 1.15 * scale)
+        ax_m.legend(handles=shape_lines[:n], loc="lower left")
+        ax_x.set_ylim(-1.3 * np.abs(x).max(), 1.3 * np.abs(x).max())
+        freqs = ", ".join(f"{w / (2 * np.pi):.2f}" for w in modes.natural_frequencies)
+        status.value = f"natural frequencies: {freqs} Hz"
+
+    return redraw
+
+
+CHAIN_MODES = Recipe(
+    _chain_modes_controls,
+    _chain_modes_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (9.5, 3.6)},
+    static={"stiffness_ratio": [0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0]},
+    title="Mode shapes of a spring-mass chain and the motion of each mass",
+)
+
+
+def chain_modes():
+    """Modes of a fixed–free spring–mass chain of two or three masses and their superposition.
+
+    Controls: number of masses, the ratio of every later mass and spring to the
+    first (m₁ = 1000 kg, k₁ = 1 MN/m), a modal damping factor and the starting
+    shape. Left: mass-normalised mode shapes; right: each mass's displacement
+    from modal superposition.
+    """
+    return CHAIN_MODES.build()
+
+
+def _random_response_setup(live, status):
+    mass, level, f_max, dt, n = 1000.0, 1.0e4, 20.0, 0.01, 40_000  # kg, N²/(rad/s), Hz, s, samples
+    omega = np.linspace(0.0, 2 * np.pi * f_max, 4000)
+    band = (0.0, 2 * np.pi * f_max)
+    t = np.arange(n) * dt
+    ax_f, ax_t = live.axes[0]
+    exact = plots.spectrum(omega[1:], np.ones(omega.size - 1), ax=ax_f, label="analytic $|H|^2 G_0$")["line"]
+    (welch,) = ax_f.loglog([1, 2], [1, 1], color=plots.COLORS[1], lw=1, label="Welch estimate of the sample")
+    ax_f.set_ylabel(r"response PSD (m$^2$ s/rad)")
+    ax_f.set_xlim(0.3, omega[-1])
+    ax_f.legend(loc="lower left")
+    shown = t < 10.0
+    sample = plots.time_history(t[shown], 0 * t[shown], ax=ax_t)
+    sample["upper"].set_xdata(t[shown])
+    sample["lower"].set_xdata(t[shown])
+    ax_t.set_ylabel("displacement (mm)")
+    ax_t.set_xlim(0, 10)
+
+    def redraw(v):
+        system = vibration.SDOF.from_modal(2 * np.pi * v["frequency_hz"], v["damping_ratio"], mass=mass)
+        response = random_vibration.response_psd(system.receptance(omega), np.full(omega.size, level))
+        force = random_vibration.synthesize(lambda w: np.full_like(w, level), dt, n, v["seed"], band=band)
+        x = system.forced_response(t, force)
+        x = x[t > 20 / (system.damping_ratio * system.natural_frequency)]  # drop the start-up transient
+        w_est, s_est = random_vibration.welch_psd(x, dt, nperseg=2048)
+        sigma = random_vibration.rms(response, omega)
+        exact.set_ydata(response[1:])
+        welch.set_data(w_est[1:], s_est[1:])
+        ax_f.set_ylim(response[1:].min() * 0.5, response.max() * 5)
+        sample["line"].set_ydata(1e3 * x[: shown.sum()])
+        sample["upper"].set_ydata(np.full(shown.sum(), 1e3 * sigma))
+        sample["lower"].set_ydata(np.full(shown.sum(), -1e3 * sigma))
+        ax_t.set_ylim(-4.5e3 * sigma, 4.5e3 * sigma)
+        white = np.sqrt(
+            random_vibration.sdof_white_noise_mean_square(mass, system.damping, system.stiffness, level)
+        )
+        status.value = (
+            f"RMS: analytic (band-limited) {1e3 * sigma:.3f} mm · white-noise closed form "
+            f"{1e3 * white:.3f} mm · sample {1e3 * x.std():.3f} mm"
+        )
+
+    return redraw
+
+
+RANDOM_RESPONSE = Recipe(
+    lambda: {
+        "frequency_hz": slider("f_n (Hz)", 1.5, 0.5, 5.0, 0.1, fmt=".1f"),
+        "damping_ratio": slider("damping factor ξ", 0.1, 0.02, 0.5, 0.01),
+        "seed": widgets.IntSlider(value=1, min=0, max=20, description="seed"),
+    },
+    _random_response_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (9.5, 3.6)},
+    static={"damping_ratio": [0.02, 0.04, 0.06, 0.1, 0.15, 0.2, 0.3, 0.5]},
+    title="Response spectrum and a sample of an SDOF system under random force",
+)
+
+
+def random_response():
+    """A band-limited white force through an SDOF system: analytic RMS beside a seeded sample.
+
+    The force has a flat one-sided PSD G₀ up to 20 Hz. Left: the response PSD
+    |H|²G₀ with the Welch estimate of one 400 s sample; right: 10 s of the sample
+    with ±σ from the analytic mean square. Controls: natural frequency (Hz),
+    damping factor ξ, and the random seed.
+    """
+    return RANDOM_RESPONSE.build()

@@ -1,0 +1,23 @@
+"""The Jupyter Book builds from the repository root with zero warnings (-W -n --keep-going)."""
+
+import pytest
+
+
+@pytest.mark.slow
+def test_book_builds_without_warnings(built_book):
+    proc, html = built_book
+    log = proc.stdout + proc.stderr
+    assert proc.returncode == 0, log[-6000:]
+    assert "WARNING" not in log, log[-6000:]
+    assert (html / "index.html").exists()
+
+
+@pytest.mark.slow
+def test_book_has_chapter_one_with_offline_mathjax(built_book):
+    _, html = built_book
+    page = (html / "notebooks" / "01_analysis_of_dynamic_systems.html").read_text(encoding="utf-8")
+    assert "_static/mathjax/tex-chtml.js" in page, "MathJax is not the bundled copy"
+    assert (html / "_static" / "mathjax" / "tex-chtml.js").exists()
+    assert "cdn.jsdelivr" not in page and "unpkg.com" not in page, "the page loads a script from the network"
+    assert "Logarithmic decrement" in page or "logarithmic decrement" in page
+    assert page.count("<img") >= 4, "the executed notebook's figures are missing"
