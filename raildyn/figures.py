@@ -1,13 +1,16 @@
 """Registry of the reproducible figures: each has an id, a caption and the book's figure number.
 
 ``python -m raildyn figures --out DIR`` writes every registered figure; a
-notebook shows the same figure with ``raildyn.figures.make(id)``. A figure
+notebook shows the same figure, captioned, with ``raildyn.figures.show(id)``. A figure
 function builds a new ``matplotlib.figure.Figure`` (no pyplot, so the command
 line needs no display) from the raildyn models and plot helpers.
 """
 
 from __future__ import annotations
 
+import base64
+import html
+import io
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -47,7 +50,7 @@ REGISTRY: dict[str, FigureSpec] = {}
 
 
 def register(id: str, caption: str, *, chapter: int, book_figure: str | None = None):
-    """Decorator adding a figure function to :data:`REGISTRY` under ``id``."""
+    """Decorator adding a figure function to ``REGISTRY`` under ``id``."""
 
     def add(draw: Callable[[], Figure]) -> Callable[[], Figure]:
         if id in REGISTRY:
@@ -64,6 +67,40 @@ def make(id: str) -> Figure:
         raise ValueError(f"unknown figure id {id!r}; registered: {sorted(REGISTRY)}")
     with matplotlib.rc_context(plots.STYLE):
         return REGISTRY[id].draw()
+
+
+class FigureView:
+    """A registered figure ready for display in a notebook, with its caption.
+
+    Jupyter shows the ``text/html`` part (picture and caption); the book prefers
+    it too. The ``image/png`` part serves front ends without HTML.
+    """
+
+    def __init__(self, spec: FigureSpec, figure: Figure):
+        self.spec = spec
+        self.figure = figure
+
+    def _png(self) -> bytes:
+        buffer = io.BytesIO()
+        self.figure.savefig(buffer, format="png", dpi=100)
+        return buffer.getvalue()
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        png = base64.b64encode(self._png()).decode("ascii")
+        book = f" (book Fig. {self.spec.book_figure})" if self.spec.book_figure else ""
+        caption = f"Figure {self.spec.id}{book}. {self.spec.caption}"
+        html_text = (
+            f'<figure class="raildyn-figure"><img src="data:image/png;base64,{png}" '
+            f'alt="{html.escape(caption)}" style="max-width:100%">'
+            f"<figcaption>{html.escape(caption)}</figcaption></figure>"
+        )
+        return {"text/html": html_text, "image/png": png, "text/plain": caption}
+
+
+def show(id: str) -> FigureView:
+    """The registered figure ``id`` with its caption, for display in a notebook."""
+    figure = make(id)
+    return FigureView(REGISTRY[id], figure)
 
 
 def save_all(

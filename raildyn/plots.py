@@ -68,7 +68,7 @@ def root_locus(locus: np.ndarray, roots: np.ndarray | None = None, *, ax=None) -
         pts.set_visible(roots is not None)
         ax.axhline(0, color="0.4", lw=0.8)
         ax.axvline(0, color="0.4", lw=0.8)
-        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_aspect("equal", adjustable="box")
         ax.set_xlabel("real part")
         ax.set_ylabel("imaginary part")
         ax.legend(loc="upper left")

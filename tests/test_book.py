@@ -1,5 +1,7 @@
 """The Jupyter Book builds from the repository root with zero warnings (-W -n --keep-going)."""
 
+import re
+
 import pytest
 
 
@@ -8,7 +10,10 @@ def test_book_builds_without_warnings(built_book):
     proc, html = built_book
     log = proc.stdout + proc.stderr
     assert proc.returncode == 0, log[-6000:]
-    assert "WARNING" not in log, log[-6000:]
+    # -W already turns Sphinx warnings into a failed build; this also catches ones printed without it.
+    # The executing kernel's own start-up notice (transport encryption) is not the book's.
+    warnings = [line for line in log.splitlines() if "WARNING" in line and "[IPKernelApp]" not in line]
+    assert not warnings, "\n".join(warnings)
     assert (html / "index.html").exists()
 
 
@@ -18,6 +23,7 @@ def test_book_has_chapter_one_with_offline_mathjax(built_book):
     page = (html / "notebooks" / "01_analysis_of_dynamic_systems.html").read_text(encoding="utf-8")
     assert "_static/mathjax/tex-chtml.js" in page, "MathJax is not the bundled copy"
     assert (html / "_static" / "mathjax" / "tex-chtml.js").exists()
-    assert "cdn.jsdelivr" not in page and "unpkg.com" not in page, "the page loads a script from the network"
+    remote = re.findall(r'<(?:script|link|img)[^>]*(?:src|href)="(https?://[^"]+)"', page)
+    assert not remote, f"the page loads from the network: {remote}"
     assert "Logarithmic decrement" in page or "logarithmic decrement" in page
     assert page.count("<img") >= 4, "the executed notebook's figures are missing"

@@ -43,3 +43,9 @@ def test_command_line_writes_every_figure(tmp_path, capsys):
 def test_command_line_lists(capsys):
     assert main(["figures", "--list"]) == 0
     assert "fig1.4 (book Fig. 1.4)" in capsys.readouterr().out
+
+
+def test_show_gives_a_captioned_picture_for_notebooks():
+    bundle = figures.show("fig1.4")._repr_mimebundle_()
+    assert bundle["image/png"] and "book Fig. 1.4" in bundle["text/html"]
+    assert bundle["text/html"].count("<img") == 1

@@ -65,3 +65,34 @@ def test_free_vibration_status_reports_the_decrement():
     status = container.children[-2].children[-1].value
     # δ read off the curve and 2πξ/√(1−ξ²) = 0.6315 for ξ = 0.1 must both be printed.
     assert "0.6315" in status and "underdamped" in status
+
+
+@pytest.mark.parametrize(
+    "recipe", [chapter01.FREE_VIBRATION, chapter01.FORCED_RESPONSE], ids=["free_vibration", "forced_response"]
+)
+def test_static_counterpart_holds_one_distinct_frame_per_grid_value(recipe):
+    import re
+
+    page = recipe.static_html()
+    frames = re.search(r"var frames = (\[.*?\]), sizes", page).group(1).split(",")
+    ((name, values),) = recipe.static.items()
+    assert len(frames) == len(values), "one frame per grid value"
+    assert len(set(frames)) == len(values), "every grid value gives a different picture"
+    assert 8 <= len(values) <= 16
+    # The range input starts at the control's default value.
+    start = values.index(recipe.defaults()[name])
+    assert f'value="{start}"' in page
+
+
+def test_display_bundle_carries_the_kernel_free_html():
+    container, _ = chapter01.forced_response()
+    bundle = container._repr_mimebundle_()
+    assert "application/vnd.jupyter.widget-view+json" in bundle
+    assert 'class="raildyn-static"' in bundle["text/html"]
+
+
+def test_static_grid_must_name_one_or_two_controls():
+    from raildyn.widgets._static import frames_html
+
+    with pytest.raises(ValueError, match="one or two controls"):
+        frames_html(lambda **v: b"", {}, {}, alt="x")

@@ -146,7 +146,7 @@ def assemble(
     for control in controls.values():
         control.observe(on_change, names="value")
 
-    reset = widgets.Button(description="Reset", icon="undo", tooltip="Back to the starting values")
+    reset = widgets.Button(description="Reset", tooltip="Back to the starting values")
     reset.on_click(lambda _button: update(**defaults))
 
     items = list(controls.values())
