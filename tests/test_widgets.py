@@ -96,3 +96,20 @@ def test_static_grid_must_name_one_or_two_controls():
 
     with pytest.raises(ValueError, match="one or two controls"):
         frames_html(lambda **v: b"", {}, {}, alt="x")
+
+
+@pytest.mark.parametrize("factory", list(CASES), ids=lambda f: f.__name__)
+def test_blitted_frame_equals_a_full_redraw(factory):
+    """After several moves, the frame drawn on the cached background equals a full redraw, pixel for pixel."""
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    container, update = factory()
+    for name, value in CASES[factory].items():
+        blitted = update(**{name: value})
+    container.live.invalidate()
+    full = container.live.render()
+    pixels = [np.asarray(Image.open(io.BytesIO(png))) for png in (blitted, full)]
+    assert np.array_equal(*pixels)

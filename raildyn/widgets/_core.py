@@ -18,12 +18,20 @@ import ipywidgets as widgets
 import matplotlib
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from PIL import Image
 
 from raildyn.plots import STYLE
 
 
 class LiveFigure:
     """A figure that is built once and re-rendered to PNG after each change.
+
+    The artists that move on a slider are registered with :meth:`animate`. The
+    rest of the figure (axes, ticks, labels, fixed curves) is drawn once and kept
+    as a bitmap; a new frame restores that bitmap and draws only the moving
+    artists on it (blitting). The bitmap is drawn again only when the view
+    changes: an axis limit moves, or :meth:`invalidate` is called after another
+    change to the fixed parts.
 
     Parameters
     ----------
@@ -39,21 +47,47 @@ class LiveFigure:
         self.dpi = dpi
         with matplotlib.rc_context(STYLE):
             self.figure = Figure(figsize=figsize, dpi=dpi, layout="constrained")
-            FigureCanvasAgg(self.figure)
+            self.canvas = FigureCanvasAgg(self.figure)
             self.axes = self.figure.subplots(nrows, ncols, squeeze=False, **subplot_kw)
         self.image = widgets.Image(format="png", layout=widgets.Layout(width=f"{figsize[0] * dpi:.0f}px"))
-        self._layout_frozen = False
+        self._moving: list = []
+        self._background = None
+        self._view = None
+
+    def animate(self, *artists):
+        """Register artists that change on every update; return the first, for chaining."""
+        for artist in artists:
+            artist.set_animated(True)
+            self._moving.append(artist)
+        return artists[0] if artists else None
+
+    def invalidate(self) -> None:
+        """Draw the fixed parts again on the next render (after a change that is not a limit)."""
+        self._background = None
+
+    def _current_view(self) -> tuple:
+        return tuple(ax.get_xlim() + ax.get_ylim() for ax in self.figure.axes)
 
     def render(self) -> bytes:
-        """Draw the figure and return it as PNG bytes."""
-        buffer = io.BytesIO()
+        """Draw what changed and return the frame as PNG bytes."""
         with matplotlib.rc_context(STYLE):
-            self.figure.savefig(buffer, format="png", dpi=self.dpi)
-        if not self._layout_frozen:
-            # The constrained layout is solved on the first draw and then kept:
-            # solving it again on every slider move would cost more than the plot.
-            self.figure.set_layout_engine("none")
-            self._layout_frozen = True
+            view = self._current_view()
+            if self._background is None or view != self._view:
+                self.canvas.draw()  # animated artists are left out of this bitmap
+                if self.figure.get_layout_engine() is not None:
+                    # The constrained layout is solved on the first draw and then kept:
+                    # solving it on every slider move would cost more than the plot.
+                    self.figure.set_layout_engine("none")
+                self._background = self.canvas.copy_from_bbox(self.figure.bbox)
+                self._view = self._current_view()
+            else:
+                self.canvas.restore_region(self._background)
+            for artist in self._moving:
+                self.figure.draw_artist(artist)
+        width, height = self.canvas.get_width_height()
+        picture = Image.frombuffer("RGBA", (width, height), self.canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+        buffer = io.BytesIO()
+        picture.save(buffer, format="PNG", compress_level=1)  # fast; the static frames are recompressed
         return buffer.getvalue()
 
     def refresh(self) -> bytes:
@@ -73,6 +107,7 @@ class LiveBox(widgets.VBox):
     """
 
     static: Callable[[], str] | None = None
+    live: LiveFigure | None = None
 
     def _repr_mimebundle_(self, **kwargs):
         data = super()._repr_mimebundle_(**kwargs)
@@ -153,6 +188,7 @@ def assemble(
     rows = [widgets.HBox(items[i : i + columns]) for i in range(0, len(items), columns)]
     rows.append(widgets.HBox([reset] + ([status] if status is not None else [])))
     container = LiveBox([*rows, live.image])
+    container.live = live
     container.add_class("raildyn-widget")  # the browser tests find a widget's controls and picture by it
     draw()
     return container, update

@@ -40,6 +40,7 @@ def _free_vibration_setup(live, status):
     ax_s.set_ylabel(r"Im $s/\omega_n$")
     ax_s.set_xlim(-4.0, 0.5)
     ax_s.set_ylim(-1.3, 1.3)
+    live.animate(hist["line"], hist["upper"], hist["lower"], peak_marks, art["roots"])
 
     def redraw(v):
         system = vibration.SDOF.from_modal(v["natural_frequency"], v["damping_ratio"])
@@ -106,6 +107,7 @@ def _forced_response_setup(live, status):
     ax_tr.set_ylim(0.05, 30)
     ax_tr.set_ylabel("transmissibility $|X/Y|$")
     ax_tr.axvline(np.sqrt(2), ls=":", color="k", lw=1)
+    live.animate(mag, pha, tra)
 
     def redraw(v):
         xi = v["damping_ratio"]
@@ -160,11 +162,14 @@ def _chain_modes_setup(live, status):
     resp_lines = [ax_x.plot(t, 0 * t, color=plots.COLORS[i], label=f"mass {i + 1}")[0] for i in range(3)]
     ax_m.axhline(0, color="0.4", lw=0.8)
     ax_m.set_xlabel("mass number (0 = ground)")
-    ax_m.set_ylabel(r"mode shape $\phi$ (kg$^{-1/2}$)")
+    ax_m.set_ylabel("mode shape (largest entry 1)")
+    ax_m.set_ylim(-1.15, 1.15)
     ax_x.set_xlabel("time $t$ (s)")
     ax_x.set_ylabel("displacement (mm)")
     ax_x.set_xlim(0, t[-1])
     ax_x.legend(loc="upper right")
+    live.animate(*shape_lines, *resp_lines)
+    shown = {"dof": None}
 
     def redraw(v):
         n = v["dof"]
@@ -181,20 +186,22 @@ def _chain_modes_setup(live, status):
             shape = modes.mode_shapes[:, int(v["initial"][5]) - 1]
             x0 = 10.0 * shape / np.abs(shape).max()
         x = vibration.modal_superposition(M, K, t, x0=x0, damping_ratios=v["damping_ratio"])
-        scale = max(np.abs(modes.mode_shapes).max(), 1e-12)
+        shapes = modes.mode_shapes / np.abs(modes.mode_shapes).max(axis=0)  # each drawn with largest entry 1
         for j in range(3):
             visible = j < n
             shape_lines[j].set_visible(visible)
             resp_lines[j].set_visible(visible)
             if visible:
-                freq = modes.natural_frequencies[j] / (2 * np.pi)
-                shape_lines[j].set_data(np.arange(n + 1), np.r_[0.0, modes.mode_shapes[:, j]])
-                shape_lines[j].set_label(f"mode {j + 1}: {freq:.2f} Hz")
+                shape_lines[j].set_data(np.arange(n + 1), np.r_[0.0, shapes[:, j]])
                 resp_lines[j].set_ydata(x[j])
-        ax_m.set_xlim(-0.2, n + 0.2)
-        ax_m.set_ylim(-1.15 * scale, 1.15 * scale)
-        ax_m.legend(handles=shape_lines[:n], loc="lower left")
-        ax_x.set_ylim(-1.3 * np.abs(x).max(), 1.3 * np.abs(x).max())
+        if shown["dof"] != n:  # the legend and the mass axis change only with the number of masses
+            shown["dof"] = n
+            ax_m.set_xlim(-0.2, n + 0.2)
+            ax_m.legend(shape_lines[:n], [f"mode {j + 1}" for j in range(n)], loc="lower left")
+            live.invalidate()
+        # Limits in steps of 5 mm, so that most moves keep the axes (and the cached picture).
+        limit = 5.0 * np.ceil(1.15 * np.abs(x).max() / 5.0)
+        ax_x.set_ylim(-limit, limit)
         freqs = ", ".join(f"{w / (2 * np.pi):.2f}" for w in modes.natural_frequencies)
         status.value = f"natural frequencies: {freqs} Hz"
 
@@ -215,8 +222,8 @@ def chain_modes():
 
     Controls: number of masses, the ratio of every later mass and spring to the
     first (m₁ = 1000 kg, k₁ = 1 MN/m), a modal damping factor and the starting
-    shape. Left: mass-normalised mode shapes; right: each mass's displacement
-    from modal superposition.
+    shape. Left: the mode shapes, each scaled to a largest entry of 1; right:
+    each mass's displacement from modal superposition.
     """
     return CHAIN_MODES.build()
 
@@ -231,13 +238,15 @@ def _random_response_setup(live, status):
     (welch,) = ax_f.loglog([1, 2], [1, 1], color=plots.COLORS[1], lw=1, label="Welch estimate of the sample")
     ax_f.set_ylabel(r"response PSD (m$^2$ s/rad)")
     ax_f.set_xlim(0.3, omega[-1])
+    ax_f.set_ylim(1e-12, 1.0)  # spans every spectrum the sliders can reach
     ax_f.legend(loc="lower left")
     shown = t < 10.0
-    sample = plots.time_history(t[shown], 0 * t[shown], ax=ax_t)
-    sample["upper"].set_xdata(t[shown])
-    sample["lower"].set_xdata(t[shown])
-    ax_t.set_ylabel("displacement (mm)")
+    # The sample is drawn in units of its analytic RMS σ, so the axes never move.
+    sample = plots.time_history(t[shown], 0 * t[shown], ax=ax_t, envelope=np.ones(shown.sum()))
+    ax_t.set_ylabel(r"$x/\sigma$ ($\sigma$: analytic RMS)")
     ax_t.set_xlim(0, 10)
+    ax_t.set_ylim(-4.5, 4.5)
+    live.animate(exact, welch, sample["line"])
 
     def redraw(v):
         system = vibration.SDOF.from_modal(2 * np.pi * v["frequency_hz"], v["damping_ratio"], mass=mass)
@@ -249,11 +258,7 @@ def _random_response_setup(live, status):
         sigma = random_vibration.rms(response, omega)
         exact.set_ydata(response[1:])
         welch.set_data(w_est[1:], s_est[1:])
-        ax_f.set_ylim(response[1:].min() * 0.5, response.max() * 5)
-        sample["line"].set_ydata(1e3 * x[: shown.sum()])
-        sample["upper"].set_ydata(np.full(shown.sum(), 1e3 * sigma))
-        sample["lower"].set_ydata(np.full(shown.sum(), -1e3 * sigma))
-        ax_t.set_ylim(-4.5e3 * sigma, 4.5e3 * sigma)
+        sample["line"].set_ydata(x[: shown.sum()] / sigma)
         white = np.sqrt(
             random_vibration.sdof_white_noise_mean_square(mass, system.damping, system.stiffness, level)
         )
@@ -283,7 +288,7 @@ def random_response():
 
     The force has a flat one-sided PSD G₀ up to 20 Hz. Left: the response PSD
     |H|²G₀ with the Welch estimate of one 400 s sample; right: 10 s of the sample
-    with ±σ from the analytic mean square. Controls: natural frequency (Hz),
+    in units of the analytic RMS σ, with the ±σ lines. Controls: natural frequency (Hz),
     damping factor ξ, and the random seed.
     """
     return RANDOM_RESPONSE.build()
