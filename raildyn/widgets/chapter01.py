@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib.legend import Legend
 
 from raildyn import plots, random_vibration, vibration
 from raildyn.widgets._core import Recipe, slider
@@ -20,7 +21,7 @@ _REFERENCE_XI = (0.05, 0.1, 0.2, 0.5, 1.0)
 def _free_vibration_controls():
     return {
         "damping_ratio": slider("damping factor ξ", 0.1, 0.0, 2.0, 0.01),
-        "natural_frequency": slider("ω_n (rad/s)", 2 * np.pi, 1.0, 30.0, 0.1),
+        "natural_frequency": slider("ω_n (rad/s)", 2 * np.pi, 2.0, 20.0, 0.1),
         "x0": slider("x₀ (mm)", 10.0, -20.0, 20.0, 0.5, fmt=".1f"),
         "v0": slider("v₀ (mm/s)", 0.0, -200.0, 200.0, 5.0, fmt=".0f"),
     }
@@ -28,12 +29,13 @@ def _free_vibration_controls():
 
 def _free_vibration_setup(live, status):
     ax_t, ax_s = live.axes[0]
-    t = np.linspace(0.0, 1.0, 600)  # rescaled to five undamped periods on every update
+    t = np.linspace(0.0, 5.0, 1000)  # s; a fixed axis keeps the cached picture valid on every move
     hist = plots.time_history(t, np.zeros_like(t), ax=ax_t, envelope=np.zeros_like(t))
     (peak_marks,) = ax_t.plot([], [], "s", color=plots.COLORS[1], ms=6, label="$x_1, x_2$ one period apart")
     ax_t.set_ylabel("displacement $x$ (mm)")
     ax_t.legend(loc="upper right")
     ax_t.set_ylim(-21, 21)
+    ax_t.set_xlim(0, t[-1])
     locus = vibration.root_locus(1.0, np.linspace(0.0, 2.0, 401))
     art = plots.root_locus(locus, np.zeros(2, complex), ax=ax_s)
     ax_s.set_xlabel(r"Re $s/\omega_n$")
@@ -44,13 +46,10 @@ def _free_vibration_setup(live, status):
 
     def redraw(v):
         system = vibration.SDOF.from_modal(v["natural_frequency"], v["damping_ratio"])
-        time = t * 5 * 2 * np.pi / system.natural_frequency
-        x = system.free_response(time, v["x0"], v["v0"])
-        hist["line"].set_data(time, x)
-        env = system.envelope(time, v["x0"], v["v0"])
-        hist["upper"].set_data(time, env)
-        hist["lower"].set_data(time, -env)
-        ax_t.set_xlim(0, time[-1])
+        hist["line"].set_ydata(system.free_response(t, v["x0"], v["v0"]))
+        env = system.envelope(t, v["x0"], v["v0"])
+        hist["upper"].set_ydata(env)
+        hist["lower"].set_ydata(-env)
         roots = system.roots() / system.natural_frequency
         art["roots"].set_data(roots.real, roots.imag)
         art["roots"].set_visible(True)
@@ -168,8 +167,14 @@ def _chain_modes_setup(live, status):
     ax_x.set_ylabel("displacement (mm)")
     ax_x.set_xlim(0, t[-1])
     ax_x.legend(loc="upper right")
-    live.animate(*shape_lines, *resp_lines)
-    shown = {"dof": None}
+    ax_m.set_xlim(-0.2, 3.2)
+    # One legend per chain length, both kept on the axes and shown in turn, so that a change
+    # of the number of masses does not redraw the fixed parts of the figure.
+    names = [f"mode {j + 1}" for j in range(3)]
+    legends = {n: Legend(ax_m, shape_lines[:n], names[:n], loc="lower left") for n in (2, 3)}
+    for legend in legends.values():
+        ax_m.add_artist(legend)
+    live.animate(*shape_lines, *resp_lines, *legends.values())
 
     def redraw(v):
         n = v["dof"]
@@ -194,11 +199,8 @@ def _chain_modes_setup(live, status):
             if visible:
                 shape_lines[j].set_data(np.arange(n + 1), np.r_[0.0, shapes[:, j]])
                 resp_lines[j].set_ydata(x[j])
-        if shown["dof"] != n:  # the legend and the mass axis change only with the number of masses
-            shown["dof"] = n
-            ax_m.set_xlim(-0.2, n + 0.2)
-            ax_m.legend(shape_lines[:n], [f"mode {j + 1}" for j in range(n)], loc="lower left")
-            live.invalidate()
+        for count, legend in legends.items():
+            legend.set_visible(count == n)
         # Limits in steps of 5 mm, so that most moves keep the axes (and the cached picture).
         limit = 5.0 * np.ceil(1.15 * np.abs(x).max() / 5.0)
         ax_x.set_ylim(-limit, limit)
