@@ -54,9 +54,10 @@ bench: $(STAMP)
 figures: $(STAMP)
 	$(PY) -m raildyn figures --out figures
 
+## lint: ruff over the code (also part of make test)
 lint: $(STAMP)
-	$(VENV)/bin/ruff check raildyn tests benchmarks notebooks
-	$(VENV)/bin/ruff format --check raildyn tests benchmarks notebooks
+	$(VENV)/bin/ruff check raildyn tests benchmarks book/_ext
+	$(VENV)/bin/ruff format --check raildyn tests benchmarks book/_ext
 
 clean:
 	rm -rf $(VENV) book/_build .pytest_cache figures

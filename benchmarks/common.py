@@ -1,0 +1,53 @@
+"""What every benchmark file shares: the result of one case, a timer, and a generic widget case.
+
+A benchmark file is ``benchmarks/bench_<topic>.py`` with a function
+``cases(repeats) -> list[Case]``; ``run.py`` finds and runs them all.
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+
+@dataclass
+class Case:
+    """One timed task beside its baseline, both measured in the same run (seconds per repeat)."""
+
+    name: str
+    raildyn: list[float]
+    baseline: list[float]
+    goal: str
+    baseline_name: str = "baseline"
+
+    @property
+    def ratio(self) -> float:
+        return statistics.median(self.baseline) / statistics.median(self.raildyn)
+
+
+def timed(fn: Callable[[int], object], repeats: int) -> list[float]:
+    """Wall times of ``fn(i)`` for i = 0 … repeats−1."""
+    times = []
+    for i in range(repeats):
+        start = time.perf_counter()
+        fn(i)
+        times.append(time.perf_counter() - start)
+    return times
+
+
+def widget_case(
+    label: str, recipe, control: str, values: list, repeats: int, goal: str = "median ≤ 50 ms, ≥ 3× faster"
+) -> Case:
+    """A widget's update (model + redraw of the same figure) against a new figure per change.
+
+    The baseline is ``Recipe.fresh_frame``: the same model and plot code on a
+    brand-new figure each time, the way ``interact`` redraws.
+    """
+    _, update = recipe.build()
+    moves = [{control: v} for v in values]
+    update(**moves[-1])  # warm the caches before timing
+    live = timed(lambda i: update(**moves[i % len(moves)]), repeats)
+    naive = timed(lambda i: recipe.fresh_frame(**moves[i % len(moves)]), repeats)
+    return Case(f"widget {label}", live, naive, goal, "new figure per change")
