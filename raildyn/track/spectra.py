@@ -1,0 +1,385 @@
+"""Random track irregularity spectra: the US FRA six classes and the German low/high-disturbance spectra.
+
+Every function here returns a spectrum in the raildyn convention: **one-sided,
+per rad/m**, so that the variance of the irregularity is σ² = ∫₀^∞ S(Ω) dΩ with
+the spatial circular frequency (wavenumber) Ω = 2π/λ in rad/m. Irregularities
+are in metres, spectra in m²/(rad/m).
+
+FRA classes 1–6 (Hamid & Yang 1981)
+-----------------------------------
+With k = 0.25, the class parameters A_v, A_a (cm²·rad/m), the corner Ω_c and
+Ω_s (rad/m):
+
+* vertical profile   S_v(Ω) = k A_v Ω_c² / [Ω² (Ω² + Ω_c²)]
+* alignment          S_a(Ω) = k A_a Ω_c² / [Ω² (Ω² + Ω_c²)]
+* cross-level        S_c(Ω) = 4 k A_v Ω_c² / [(Ω² + Ω_c²)(Ω² + Ω_s²)]
+* gauge              S_g(Ω) = 4 k A_v Ω_c² / [(Ω² + Ω_c²)(Ω² + Ω_s²)]
+
+in cm²/(rad/m). This is the form and table in which Garg & Dukkipati (1984,
+ch. 3) and most later texts (e.g. Zhai 2020, ch. 2) quote the FRA spectra of
+Hamid & Yang (1981); TTB-2D (Cantero 2022, ``A04_Options.m``, citing Berawi
+2013) codes the same k, A_v and Ω_c. Where sources differ:
+
+* **units** — the table is in cm² (A in cm²·rad/m); raildyn converts to m²
+  (× 10⁻⁴). Tables in in²/(cycle/ft) with wavenumbers in cycles/ft also
+  circulate; they are not used here.
+* **one- or two-sided** — the cm²/(rad/m) table is used, as its sources use it,
+  as a one-sided density over Ω ≥ 0 (TTB-2D halves it to build a two-sided
+  spectrum before its inverse FFT, which confirms its one-sided reading). The
+  values are passed through :func:`raildyn.random_vibration.convert_psd` from
+  that declared form, so a source in another form is one argument away.
+* **the factor k** — texts call k a "safety factor" between 0.25 and 1; the
+  tabulated A values are meant with k = 0.25, which raildyn uses by default
+  (keyword ``k`` to change it).
+
+German spectra (ORE B176 / DB)
+------------------------------
+With Ω_c, Ω_r, Ω_s in rad/m and A_v, A_a in m·rad (= m²·rad/m):
+
+* vertical profile   S_v(Ω) = A_v Ω_c² / [(Ω² + Ω_r²)(Ω² + Ω_c²)]
+* alignment          S_a(Ω) = A_a Ω_c² / [(Ω² + Ω_r²)(Ω² + Ω_c²)]
+* cross-level        S_c(Ω) = (A_v/b²) Ω_c² Ω² / [(Ω² + Ω_r²)(Ω² + Ω_c²)(Ω² + Ω_s²)]
+
+in m²/(rad/m) for S_v, S_a and rad²/(rad/m) for the cross-level *angle* S_c, b
+being half the distance between the rails' contact points (0.75 m). raildyn
+returns the cross-level as the height difference between the rails, 2b × the
+angle, so its spectrum is (2b)² S_c = 4 A_v Ω_c² Ω²/[…] and b drops out. The
+low/high-disturbance values are those quoted by Zhai (2020, ch. 2) and by Guo et
+al. (2012; A_v, Ω_c, Ω_r also coded in TTB-2D); they are used one-sided per
+rad/m as those sources use them. A German gauge spectrum is not provided: no
+source at hand gave its parameter with enough confidence to cite.
+
+References
+----------
+* A. Hamid and T.-L. Yang, "Analytical descriptions of track geometry
+  variations", *Transportation Research Record* 838, 19–26, 1981.
+* V. K. Garg and R. V. Dukkipati, *Dynamics of Railway Vehicle Systems*,
+  Academic Press, 1984, ch. 3.
+* W. Zhai, *Vehicle–Track Coupled Dynamics: Theory and Applications*,
+  Springer, 2020, ch. 2.
+* W. W. Guo, H. Xia, G. De Roeck and K. Liu, "Integral model for
+  train-track-bridge interaction on the Sesia viaduct", *Computers & Structures*
+  112–113, 205–216, 2012.
+* D. Cantero, "TTB-2D: Train–Track–Bridge interaction simulation tool for
+  Matlab", *SoftwareX* 20, 101253, 2022 (code: ``A04_Options.m``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn import random_vibration as rv
+
+__all__ = [
+    "COMPONENTS",
+    "FRA_CLASSES",
+    "GERMAN_LEVELS",
+    "FRA_PARAMETERS",
+    "GERMAN_PARAMETERS",
+    "fra_psd",
+    "german_psd",
+    "track_psd",
+    "band_variance",
+    "wavelength_band",
+]
+
+COMPONENTS = ("vertical", "alignment", "cross_level", "gauge")
+FRA_CLASSES = (1, 2, 3, 4, 5, 6)
+GERMAN_LEVELS = ("low", "high")
+
+_CM2 = 1.0e-4  # m² per cm²
+FRA_K = 0.25  # Hamid & Yang (1981) as quoted by Garg & Dukkipati (1984) and coded by TTB-2D (Cantero 2022)
+# The form in which the sources give the spectra (module docstring): one-sided, per rad/m.
+_SOURCE_FORM = {"from_sided": "one", "from_unit": "rad/m"}
+
+
+@dataclass(frozen=True)
+class FRAParameters:
+    """Parameters of one FRA track class (Hamid & Yang 1981).
+
+    Attributes
+    ----------
+    A_v, A_a : float
+        Roughness parameters of profile and alignment, cm²·rad/m (as tabulated).
+    omega_c, omega_s : float
+        Corner wavenumbers, rad/m.
+    """
+
+    A_v: float
+    A_a: float
+    omega_c: float
+    omega_s: float
+
+
+# fmt: off
+# Hamid & Yang (1981), table as quoted by Garg & Dukkipati (1984, ch. 3) and Zhai (2020, ch. 2).
+# A_v for every class and Ω_c = 0.8245 rad/m also in TTB-2D, A04_Options.m (Cantero 2022, citing Berawi 2013).
+FRA_PARAMETERS = {
+    #        A_v (cm²·rad/m)  A_a (cm²·rad/m)  Ω_c (rad/m)  Ω_s (rad/m)
+    1: FRAParameters(1.2107, 3.3634, 0.8245, 0.6046),
+    2: FRAParameters(1.0181, 1.2107, 0.8245, 0.9308),
+    3: FRAParameters(0.6816, 0.4128, 0.8245, 0.8520),
+    4: FRAParameters(0.5376, 0.3027, 0.8245, 1.1312),
+    5: FRAParameters(0.2095, 0.0762, 0.8245, 0.8209),
+    6: FRAParameters(0.0339, 0.0339, 0.8245, 0.4380),
+}
+# fmt: on
+
+
+@dataclass(frozen=True)
+class GermanParameters:
+    """Parameters of a German track spectrum.
+
+    Attributes
+    ----------
+    A_v, A_a : float
+        Roughness parameters of profile and alignment, m·rad (= m²·rad/m).
+    omega_c, omega_r, omega_s : float
+        Corner wavenumbers, rad/m.
+    b : float
+        Half the distance between the contact points of the two rails, m.
+    """
+
+    A_v: float
+    A_a: float
+    omega_c: float
+    omega_r: float
+    omega_s: float
+    b: float
+
+
+# fmt: off
+# Zhai (2020, ch. 2); A_v (low), Ω_c and Ω_r also in Guo et al. (2012) as coded in TTB-2D (Cantero 2022).
+GERMAN_PARAMETERS = {
+    #                  A_v (m·rad) A_a (m·rad) Ω_c     Ω_r     Ω_s (rad/m)  b (m)
+    "low": GermanParameters(4.032e-7, 2.119e-7, 0.8246, 0.0206, 0.4380, 0.75),
+    "high": GermanParameters(1.080e-6, 6.125e-7, 0.8246, 0.0206, 0.4380, 0.75),
+}
+# fmt: on
+
+
+def _component(value, allowed=COMPONENTS) -> str:
+    if not isinstance(value, str) or value not in allowed:
+        raise ValueError(f"component must be one of {', '.join(map(repr, allowed))}; got {value!r}")
+    return value
+
+
+def _wavenumber(value) -> np.ndarray:
+    """Wavenumbers Ω > 0 in rad/m (every spectrum here is unbounded or undefined at Ω = 0)."""
+    arr = _checks.array("wavenumber", value)
+    if np.any(arr <= 0):
+        bad = arr[arr <= 0].flat[0]
+        raise ValueError(
+            f"wavenumber must be > 0 rad/m everywhere (the spectra grow without bound as Ω → 0), got {bad!r}"
+        )
+    return arr
+
+
+def _fra_class(value) -> FRAParameters:
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, np.integer))
+        or int(value) not in FRA_PARAMETERS
+    ):
+        raise ValueError(f"track_class must be an FRA class 1, 2, 3, 4, 5 or 6; got {value!r}")
+    return FRA_PARAMETERS[int(value)]
+
+
+def _german_level(value) -> GermanParameters:
+    if not isinstance(value, str) or value not in GERMAN_PARAMETERS:
+        raise ValueError(f"level must be 'low' or 'high' (disturbance); got {value!r}")
+    return GERMAN_PARAMETERS[value]
+
+
+def fra_psd(component: str, track_class: int, wavenumber, *, k: float = FRA_K) -> np.ndarray:
+    """One-sided PSD of an FRA track class (Hamid & Yang 1981), per rad/m.
+
+    Parameters
+    ----------
+    component : {"vertical", "alignment", "cross_level", "gauge"}
+        Vertical profile, alignment (lateral), cross-level (height difference
+        between the rails) or gauge (lateral distance between the rails, minus
+        its nominal value).
+    track_class : int
+        FRA class 1 (worst) to 6 (best).
+    wavenumber : array_like
+        Spatial circular frequency Ω = 2π/λ, rad/m, > 0.
+    k : float
+        Scale factor of the sources (module docstring), default 0.25.
+
+    Returns
+    -------
+    ndarray
+        S(Ω) in m²/(rad/m), one-sided: σ² = ∫₀^∞ S dΩ. Same shape as ``wavenumber``.
+
+    Examples
+    --------
+    >>> s = fra_psd("vertical", 4, [0.8245])  # at Ω = Ω_c: k A_v / (2 Ω_c²) cm²/(rad/m)
+    >>> bool(np.isclose(s[0], 0.25 * 0.5376e-4 / (2 * 0.8245**2)))
+    True
+    """
+    component = _component(component)
+    p = _fra_class(track_class)
+    k = _checks.positive("k", k)
+    w2 = _wavenumber(wavenumber) ** 2
+    wc2 = p.omega_c**2
+    if component in ("vertical", "alignment"):
+        A = p.A_v if component == "vertical" else p.A_a
+        s_cm2 = k * A * wc2 / (w2 * (w2 + wc2))
+    else:
+        s_cm2 = 4.0 * k * p.A_v * wc2 / ((w2 + wc2) * (w2 + p.omega_s**2))
+    return rv.convert_psd(_CM2 * s_cm2, **_SOURCE_FORM, to_unit="rad/m")
+
+
+def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
+    """One-sided PSD of the German low- or high-disturbance track spectrum, per rad/m.
+
+    Parameters
+    ----------
+    component : {"vertical", "alignment", "cross_level"}
+        Vertical profile, alignment, or cross-level as the height difference
+        between the rails (2b × the cross-level angle of the source).
+    level : {"low", "high"}
+        Low or high disturbance.
+    wavenumber : array_like
+        Ω = 2π/λ, rad/m, > 0.
+
+    Returns
+    -------
+    ndarray
+        S(Ω) in m²/(rad/m), one-sided.
+
+    Examples
+    --------
+    Far below Ω_r the profile spectrum is flat at A_v Ω_c²/(Ω_r² Ω_c²) = A_v/Ω_r²:
+
+    >>> s = german_psd("vertical", "low", [1e-5])
+    >>> bool(np.isclose(s[0], 4.032e-7 / 0.0206**2, rtol=1e-6))
+    True
+    """
+    component = _component(component, ("vertical", "alignment", "cross_level"))
+    p = _german_level(level)
+    w2 = _wavenumber(wavenumber) ** 2
+    wc2, wr2 = p.omega_c**2, p.omega_r**2
+    base = wc2 / ((w2 + wr2) * (w2 + wc2))
+    if component == "vertical":
+        s = p.A_v * base
+    elif component == "alignment":
+        s = p.A_a * base
+    else:
+        angle = (p.A_v / p.b**2) * base * w2 / (w2 + p.omega_s**2)
+        s = (2.0 * p.b) ** 2 * angle
+    return rv.convert_psd(s, **_SOURCE_FORM, to_unit="rad/m")
+
+
+def track_psd(spectrum: str, component: str, grade) -> Callable[[np.ndarray], np.ndarray]:
+    """The spectrum S(Ω) as a callable, for the synthesis and the widgets.
+
+    ``spectrum`` is ``"fra"`` (``grade`` a class 1–6) or ``"german"`` (``grade``
+    ``"low"`` or ``"high"``). The arguments are checked now, not at the first call.
+    """
+    if spectrum == "fra":
+        _component(component)
+        _fra_class(grade)
+        return lambda w: fra_psd(component, grade, w)
+    if spectrum == "german":
+        _component(component, ("vertical", "alignment", "cross_level"))
+        _german_level(grade)
+        return lambda w: german_psd(component, grade, w)
+    raise ValueError(f"spectrum must be 'fra' or 'german'; got {spectrum!r}")
+
+
+def wavelength_band(band) -> tuple[float, float]:
+    """Check a wavelength band (λ_min, λ_max) in m and return the wavenumber band (2π/λ_max, 2π/λ_min)."""
+    try:
+        lo, hi = (float(b) for b in band)
+    except (TypeError, ValueError):
+        raise ValueError(f"wavelength_band must be a pair (shortest, longest) in m, got {band!r}") from None
+    if not (np.isfinite(lo) and np.isfinite(hi) and 0.0 < lo < hi):
+        raise ValueError(
+            f"wavelength_band must satisfy 0 < shortest < longest (m), finite; got {band!r} (an empty band)"
+        )
+    return 2.0 * np.pi / hi, 2.0 * np.pi / lo
+
+
+def _int_inv_w2(w):  # ∫ dΩ/Ω²
+    return -1.0 / w
+
+
+def _int_lorentz(w, a):  # ∫ dΩ/(Ω² + a²)
+    return np.arctan(w / a) / a
+
+
+def _int_two_lorentz(w, a, b):
+    """∫ dΩ/((Ω² + a²)(Ω² + b²)), by partial fractions; the double pole a = b by its limit."""
+    if abs(b - a) <= 1e-6 * max(a, b):
+        return w / (2 * a**2 * (w**2 + a**2)) + np.arctan(w / a) / (2 * a**3)
+    return (_int_lorentz(w, a) - _int_lorentz(w, b)) / (b**2 - a**2)
+
+
+def _int_three(w, a, b, c):
+    """∫ Ω² dΩ/((Ω² + a²)(Ω² + b²)(Ω² + c²)) for distinct a, b, c, by partial fractions in Ω²."""
+    total = 0.0
+    for p, q, r in ((a, b, c), (b, a, c), (c, a, b)):
+        # residue of u/((u+p²)(u+q²)(u+r²)) at u = −p²
+        total = total + (-(p**2)) / ((q**2 - p**2) * (r**2 - p**2)) * _int_lorentz(w, p)
+    return total
+
+
+def band_variance(spectrum: str, component: str, grade, band, *, k: float = FRA_K) -> float:
+    """Variance ∫ S(Ω) dΩ over a wavenumber band, in closed form (m²).
+
+    Parameters
+    ----------
+    spectrum : {"fra", "german"}
+    component : str
+        As for :func:`fra_psd` / :func:`german_psd`.
+    grade : int or str
+        FRA class 1–6, or German level "low"/"high".
+    band : (omega_lo, omega_hi)
+        Wavenumbers in rad/m, 0 < omega_lo < omega_hi (use :func:`wavelength_band`
+        to convert from wavelengths).
+    k : float
+        The FRA scale factor, as for :func:`fra_psd` (ignored for the German spectra).
+
+    Returns
+    -------
+    float
+        σ² over the band, m². The antiderivatives follow from partial fractions
+        of the rational spectra (module docstring).
+
+    Examples
+    --------
+    >>> var = band_variance("fra", "vertical", 4, wavelength_band((1.524, 304.8)))
+    >>> round(1e3 * var**0.5, 1)  # RMS in mm
+    25.0
+    """
+    track_psd(spectrum, component, grade)  # checks the names
+    k = _checks.positive("k", k)
+    try:
+        lo, hi = (float(b) for b in band)
+    except (TypeError, ValueError):
+        raise ValueError(f"band must be a pair (omega_lo, omega_hi) in rad/m, got {band!r}") from None
+    if not (np.isfinite(lo) and np.isfinite(hi) and 0.0 < lo < hi):
+        raise ValueError(f"band must satisfy 0 < omega_lo < omega_hi (rad/m), finite; got {band!r}")
+
+    def F(w):  # antiderivative of S in m²
+        if spectrum == "fra":
+            p = FRA_PARAMETERS[int(grade)]
+            wc = p.omega_c
+            if component in ("vertical", "alignment"):
+                A = p.A_v if component == "vertical" else p.A_a
+                # Ω_c²/(Ω²(Ω²+Ω_c²)) = 1/Ω² − 1/(Ω²+Ω_c²)
+                return k * A * _CM2 * (_int_inv_w2(w) - _int_lorentz(w, wc))
+            return 4 * k * p.A_v * _CM2 * wc**2 * _int_two_lorentz(w, wc, p.omega_s)
+        p = GERMAN_PARAMETERS[grade]
+        if component in ("vertical", "alignment"):
+            A = p.A_v if component == "vertical" else p.A_a
+            return A * p.omega_c**2 * _int_two_lorentz(w, p.omega_r, p.omega_c)
+        return 4 * p.A_v * p.omega_c**2 * _int_three(w, p.omega_r, p.omega_c, p.omega_s)
+
+    return float(F(hi) - F(lo))

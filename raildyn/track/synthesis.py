@@ -1,0 +1,372 @@
+"""Sample tracks from a spectrum, and the track seen in time by a vehicle at speed V.
+
+Samples are built on :func:`raildyn.random_vibration.synthesize` (random phases,
+deterministic amplitudes, one inverse FFT; Shinozuka & Jan 1972), with one
+change for the spatial case: each spectral line carries the integral of the
+spectrum over its own cell [Ω_k − ΔΩ/2, Ω_k + ΔΩ/2] clipped to the requested
+band, instead of S(Ω_k)ΔΩ. Track spectra fall as Ω⁻² to Ω⁻⁴ and the band
+usually starts a few lines above zero, where S(Ω_k)ΔΩ misjudges the area by
+several per cent; with cell integrals the mean square of every sample equals
+∫_band S dΩ to the accuracy of an 8-point Gauss–Legendre rule per cell.
+
+A vehicle running at speed V meets the wavenumber Ω at the circular frequency
+ω = VΩ, and keeps the variance: S_t(ω) dω = S(Ω) dΩ, so S_t(ω) = S(ω/V)/V. An
+axle a distance d behind the first meets the same track a time d/V later
+(:func:`axle_delays`, :func:`excitation_csd`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import matplotlib
+import numpy as np
+
+from raildyn import _checks, plots
+from raildyn import random_vibration as rv
+from raildyn.track.spectra import COMPONENTS, track_psd, wavelength_band
+
+__all__ = [
+    "IrregularitySample",
+    "TwoRailIrregularity",
+    "synthesize_irregularity",
+    "synthesize_track",
+    "temporal_psd",
+    "spatial_to_temporal",
+    "axle_delays",
+    "excitation_csd",
+]
+
+# Gauss–Legendre nodes and weights on [−1/2, 1/2], for the integral of S over each line's cell.
+_GL_NODES, _GL_WEIGHTS = np.polynomial.legendre.leggauss(8)
+_GL_NODES, _GL_WEIGHTS = 0.5 * _GL_NODES, 0.5 * _GL_WEIGHTS
+
+
+@dataclass(frozen=True)
+class IrregularitySample:
+    """A sampled irregularity along the track.
+
+    Attributes
+    ----------
+    x : ndarray
+        Distance along the track, m (``arange(n) * dx``).
+    z : ndarray
+        Irregularity, m: shape ``(n,)``, or ``(n_samples, n)``.
+    band : (float, float)
+        Wavenumber band kept, rad/m (the top is lowered to the cell edge of the
+        highest line when the band reaches the Nyquist wavenumber π/dx).
+    variance : float
+        ∫_band S dΩ, m²; the mean square of every sample over its length.
+    """
+
+    x: np.ndarray
+    z: np.ndarray
+    band: tuple[float, float]
+    variance: float
+
+    @property
+    def rms(self) -> float:
+        """√variance, m."""
+        return float(np.sqrt(self.variance))
+
+    def plot(self, ax=None) -> dict:
+        """Draw the (first) sample in mm against distance, with the ±RMS lines; return the artists."""
+        ax = plots._axes(ax)
+        z = self.z if self.z.ndim == 1 else self.z[0]
+        with matplotlib.rc_context(plots.STYLE):
+            (line,) = ax.plot(self.x, 1e3 * z, color=plots.COLORS[0], lw=0.8)
+            upper = ax.axhline(1e3 * self.rms, color="0.5", ls="--", lw=1)
+            lower = ax.axhline(-1e3 * self.rms, color="0.5", ls="--", lw=1)
+            ax.set_xlabel("distance $x$ (m)")
+            ax.set_ylabel("irregularity (mm)")
+        return {"line": line, "upper": upper, "lower": lower}
+
+
+def _cell_psd(psd: Callable, lo: float, hi: float, d_omega: float) -> Callable:
+    """A callable giving, at each line Ω_k, the mean of S over the part of its cell inside [lo, hi]."""
+
+    def averaged(w):
+        a = np.clip(w - 0.5 * d_omega, lo, hi)
+        b = np.clip(w + 0.5 * d_omega, lo, hi)
+        width = b - a
+        inside = width > 0
+        out = np.zeros_like(w)
+        if np.any(inside):
+            ai, wi = a[inside], width[inside]
+            nodes = (ai + 0.5 * wi)[:, None] + wi[:, None] * _GL_NODES[None, :]
+            values = np.asarray(psd(nodes.ravel()), dtype=float).reshape(nodes.shape)
+            out[inside] = (values @ _GL_WEIGHTS) * wi / d_omega
+        return out
+
+    return averaged
+
+
+def synthesize_irregularity(
+    psd: Callable,
+    length: float,
+    dx: float,
+    wavelength_band: tuple[float, float],
+    rng=None,
+    *,
+    n_samples: int = 1,
+) -> IrregularitySample:
+    """Seeded sample(s) of a stationary Gaussian irregularity with a given spatial spectrum.
+
+    z(x) = Σ_k √(2 G_k ΔΩ) cos(Ω_k x + φ_k), Ω_k = kΔΩ, ΔΩ = 2π/length, φ_k
+    uniform and independent, G_k the mean of S over line k's cell inside the band
+    (module docstring); evaluated by one inverse FFT through
+    :func:`raildyn.random_vibration.synthesize`.
+
+    Parameters
+    ----------
+    psd : callable
+        One-sided S(Ω) in m²/(rad/m), Ω in rad/m (e.g. ``lambda w: fra_psd("vertical", 4, w)``).
+    length : float
+        Length of track, m; the sample has period ``length``.
+    dx : float
+        Spacing, m, > 0; ``length/dx`` is rounded to the number of points n >= 4.
+    wavelength_band : (shortest, longest)
+        Wavelengths kept, m: needs 2·dx <= shortest < longest <= length.
+    rng : numpy.random.Generator, int or None
+        Source of the phases; the same seed gives the same sample.
+    n_samples : int
+        Independent samples, >= 1.
+
+    Returns
+    -------
+    IrregularitySample
+        ``z`` has mean square ``variance`` = ∫_band S dΩ over its length.
+
+    Examples
+    --------
+    >>> from raildyn.track import fra_psd
+    >>> s = synthesize_irregularity(lambda w: fra_psd("vertical", 5, w), 1000.0, 0.25, (2.0, 200.0), rng=1)
+    >>> bool(np.isclose(np.mean(s.z**2), s.variance, rtol=1e-12))
+    True
+    """
+    length = _checks.positive("length", length)
+    dx = _checks.positive("dx", dx)
+    n = int(round(length / dx))
+    if n < 4:
+        raise ValueError(f"length/dx must give at least 4 points, got length={length!r}, dx={dx!r}")
+    lo, hi = wavelength_band_checked(wavelength_band, n * dx, dx)
+    d_omega = 2.0 * np.pi / (n * dx)
+    # The highest line is k = ⌈n/2⌉ − 1; its cell ends half a spacing above it, just under the Nyquist
+    # wavenumber π/dx. The band kept (and reported) stops there.
+    hi = min(hi, ((n - 1) // 2 + 0.5) * d_omega)
+    if not callable(psd):
+        raise TypeError(f"psd must be a callable S(Omega) in m^2/(rad/m), got {type(psd).__name__}")
+    averaged = _cell_psd(psd, lo, hi, d_omega)
+    seen = {}
+
+    def recorded(w):  # keep the line values that synthesize uses, to sum them without a second evaluation
+        seen["values"] = averaged(w)
+        return seen["values"]
+
+    z = rv.synthesize(recorded, dx, n, rng, n_samples=n_samples)
+    variance = float(np.sum(seen["values"]) * d_omega)
+    return IrregularitySample(np.arange(n) * dx, z, (lo, hi), variance)
+
+
+def wavelength_band_checked(band, length: float, dx: float) -> tuple[float, float]:
+    """Wavenumber band of a wavelength band, checked against the record: 2·dx <= λ_min, λ_max <= length."""
+    lo, hi = wavelength_band(band)
+    shortest, longest = 2 * np.pi / hi, 2 * np.pi / lo
+    if shortest < 2.0 * dx * (1 - 1e-12):
+        raise ValueError(
+            f"wavelength_band shortest wavelength {shortest!r} m is below 2*dx = {2 * dx!r} m "
+            "(the Nyquist limit of the spacing)"
+        )
+    if longest > length * (1 + 1e-12):
+        raise ValueError(
+            f"wavelength_band longest wavelength {longest!r} m exceeds the record length {length!r} m"
+        )
+    return lo, hi
+
+
+@dataclass(frozen=True)
+class TwoRailIrregularity:
+    """A two-rail track sample: four irregularities along distance, consistent by construction.
+
+    The vertical profile and alignment are those of the track centreline, the
+    cross-level and gauge the differences between the rails, all in m:
+
+        z_left = vertical + cross_level/2,   z_right = vertical − cross_level/2,
+        y_left = alignment + gauge/2,        y_right = alignment − gauge/2
+
+    (left minus right for the cross-level, and gauge growing as the rails part,
+    with y positive to the left), so the cross-level and gauge computed from the
+    rails are exactly the sampled ones.
+
+    Attributes
+    ----------
+    x : ndarray
+        Distance, m.
+    vertical, alignment, cross_level, gauge : ndarray
+        Irregularities, m.
+    variances : dict
+        ∫_band S dΩ of each component, m².
+    """
+
+    x: np.ndarray
+    vertical: np.ndarray
+    alignment: np.ndarray
+    cross_level: np.ndarray
+    gauge: np.ndarray
+    variances: dict
+
+    @property
+    def left_vertical(self) -> np.ndarray:
+        return self.vertical + 0.5 * self.cross_level
+
+    @property
+    def right_vertical(self) -> np.ndarray:
+        return self.vertical - 0.5 * self.cross_level
+
+    @property
+    def left_lateral(self) -> np.ndarray:
+        return self.alignment + 0.5 * self.gauge
+
+    @property
+    def right_lateral(self) -> np.ndarray:
+        return self.alignment - 0.5 * self.gauge
+
+    def plot(self, axes=None) -> dict:
+        """Draw both rails, vertical and lateral, in mm on two axes (new if not given); return the lines."""
+        if axes is None:
+            import matplotlib.pyplot as plt
+
+            with matplotlib.rc_context(plots.STYLE):
+                _, axes = plt.subplots(2, 1, sharex=True, figsize=(8.0, 4.0), layout="constrained")
+        lines = {}
+        with matplotlib.rc_context(plots.STYLE):
+            for ax, kind in zip(axes, ("vertical", "lateral"), strict=True):
+                for i, side in enumerate(("left", "right")):
+                    values = getattr(self, f"{side}_{kind}")
+                    (lines[f"{side}_{kind}"],) = ax.plot(
+                        self.x, 1e3 * values, color=plots.COLORS[i], lw=0.8, label=f"{side} rail"
+                    )
+                ax.set_ylabel(f"{kind} (mm)")
+            axes[0].legend(loc="upper right", ncols=2)
+            axes[-1].set_xlabel("distance $x$ (m)")
+        return lines
+
+
+def synthesize_track(
+    spectrum: str,
+    grade,
+    length: float,
+    dx: float,
+    wavelength_band: tuple[float, float],
+    rng=None,
+) -> TwoRailIrregularity:
+    """A two-rail sample: vertical, alignment, cross-level and gauge drawn independently.
+
+    The sources give no cross-spectra between the four components, so they are
+    sampled as independent processes (from one generator, in the order of
+    ``raildyn.track.spectra.COMPONENTS``). The German spectra have no gauge component in raildyn;
+    its gauge is returned as zeros with variance 0.
+
+    Parameters
+    ----------
+    spectrum : {"fra", "german"}
+    grade : int or str
+        FRA class 1–6 or German level "low"/"high".
+    length, dx, wavelength_band, rng
+        As for :func:`synthesize_irregularity`.
+
+    Returns
+    -------
+    TwoRailIrregularity
+    """
+    generator = _checks.generator(rng)
+    parts, variances = {}, {}
+    for component in COMPONENTS:
+        if spectrum == "german" and component == "gauge":
+            continue
+        sample = synthesize_irregularity(
+            track_psd(spectrum, component, grade), length, dx, wavelength_band, generator
+        )
+        parts[component], variances[component] = sample.z, sample.variance
+    x = sample.x
+    if "gauge" not in parts:
+        parts["gauge"], variances["gauge"] = np.zeros_like(x), 0.0
+    return TwoRailIrregularity(x, variances=variances, **parts)
+
+
+def temporal_psd(psd: Callable, speed: float) -> Callable:
+    """S_t(ω) = S(ω/V)/V: the spectrum in time, per rad/s, of a track spectrum met at speed V (m/s)."""
+    V = _checks.positive("speed", speed)
+    if not callable(psd):
+        raise TypeError(f"psd must be a callable S(Omega), got {type(psd).__name__}")
+    return lambda omega: np.asarray(psd(np.asarray(omega, dtype=float) / V)) / V
+
+
+def spatial_to_temporal(psd_values, wavenumber, speed) -> tuple[np.ndarray, np.ndarray]:
+    """Convert a spatial spectrum on a grid to time: ω = VΩ and S_t = S/V.
+
+    Parameters
+    ----------
+    psd_values : array_like
+        One-sided S(Ω) >= 0, m²/(rad/m).
+    wavenumber : array_like
+        Ω >= 0, rad/m, same shape.
+    speed : float
+        V > 0, m/s.
+
+    Returns
+    -------
+    omega : ndarray
+        Circular frequencies, rad/s.
+    psd : ndarray
+        One-sided S_t(ω), m²/(rad/s); ∫ S_t dω = ∫ S dΩ over matching bands.
+
+    Examples
+    --------
+    >>> w, s = spatial_to_temporal([2.0, 2.0], [0.0, 1.0], 10.0)
+    >>> w.tolist(), s.tolist()
+    ([0.0, 10.0], [0.2, 0.2])
+    """
+    V = _checks.positive("speed", speed)
+    S = _checks.array("psd_values", psd_values, low=0.0)
+    W = _checks.array("wavenumber", wavenumber, low=0.0)
+    if S.shape != W.shape:
+        raise ValueError(f"psd_values and wavenumber must have the same shape, got {S.shape} and {W.shape}")
+    return V * W, S / V
+
+
+def axle_delays(axle_positions, speed) -> np.ndarray:
+    """Time delays τ_j = d_j/V (s) of axles at distances d_j (m) behind the first, at speed V (m/s)."""
+    V = _checks.positive("speed", speed)
+    d = _checks.array("axle_positions", axle_positions, ndim=1)
+    if d.size == 0:
+        raise ValueError("axle_positions must hold at least one axle, got an empty array")
+    return (d - d[0]) / V
+
+
+def excitation_csd(psd: Callable, omega, axle_positions, speed) -> np.ndarray:
+    """Cross-spectral matrix in time of the track met by several axles (m²/(rad/s)).
+
+    S_jk(ω) = S_t(ω) exp(−iω(τ_j − τ_k)), S_t(ω) = S(ω/V)/V and τ_j = d_j/V, built by
+    :func:`raildyn.random_vibration.delayed_input_csd`; ready for
+    :func:`raildyn.random_vibration.response_psd`.
+
+    Parameters
+    ----------
+    psd : callable
+        Spatial one-sided S(Ω), m²/(rad/m).
+    omega : array_like
+        Circular frequencies > 0, rad/s.
+    axle_positions : array_like
+        Distances of the axles behind the first, m.
+    speed : float
+        V > 0, m/s.
+
+    Returns
+    -------
+    ndarray, complex, shape (n, q, q)
+    """
+    w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=True)
+    delays = axle_delays(axle_positions, speed)
+    return rv.delayed_input_csd(temporal_psd(psd, speed)(w), w, delays)

@@ -1,0 +1,230 @@
+"""Chapter 3 widgets: random track (spectrum, sample, excitation in time) and jointed rail.
+
+Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
+models are :mod:`raildyn.track` and :mod:`raildyn.random_vibration`; this module
+only turns control values into model calls and moves artists. Units at the
+edge: speeds in km/h, irregularities in mm.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import numpy as np
+
+from raildyn import plots, random_vibration, track
+from raildyn.widgets._core import Recipe, slider
+
+# The eight track qualities the widget offers, by label: (spectrum family, class or level).
+TRACKS = {f"FRA class {c}": ("fra", c) for c in track.FRA_CLASSES} | {
+    "German low": ("german", "low"),
+    "German high": ("german", "high"),
+}
+_SAMPLE_LENGTH, _DX = 1000.0, 0.25  # m: the seeded sample shown, and its spacing
+_OMEGA_SPACE = np.geomspace(0.01, np.pi / _DX, 400)  # rad/m, up to the Nyquist wavenumber of the sample
+_OMEGA_TIME = np.geomspace(0.5, 500.0, 400)  # rad/s
+
+
+def _nice_ceiling(value: float) -> float:
+    """The next number of the 1–2–5 sequence at or above ``value`` (> 0)."""
+    exponent = np.floor(np.log10(value))
+    for step in (1.0, 2.0, 5.0, 10.0):
+        if step * 10**exponent >= value:
+            return float(step * 10**exponent)
+    return float(10 ** (exponent + 1))
+
+
+def _random_track_controls():
+    return {
+        "track": widgets.Dropdown(options=list(TRACKS), value="FRA class 4", description="track"),
+        "component": widgets.Dropdown(
+            options=[
+                ("vertical profile", "vertical"),
+                ("alignment", "alignment"),
+                ("cross-level", "cross_level"),
+                ("gauge", "gauge"),
+            ],
+            value="vertical",
+            description="component",
+        ),
+        "speed_kmh": slider("V (km/h)", 80.0, 20.0, 300.0, 5.0, fmt=".0f"),
+        "shortest": slider("shortest λ (m)", 1.5, 0.5, 10.0, 0.5, fmt=".1f"),
+        "longest": slider("longest λ (m)", 300.0, 20.0, 1000.0, 10.0, fmt=".0f"),
+        "seed": widgets.IntSlider(value=1, min=0, max=20, description="seed"),
+    }
+
+
+def _random_track_setup(live, status):
+    ax_s, ax_x, ax_t = live.axes[0]
+    x_shown = np.arange(int(_SAMPLE_LENGTH / _DX)) * _DX
+    # Spatial spectrum: every track quality in grey behind the chosen one, and the sample's Welch estimate.
+    others = [ax_s.loglog(_OMEGA_SPACE, _OMEGA_SPACE, color="0.82", lw=0.8)[0] for _ in TRACKS]
+    (chosen,) = ax_s.loglog(_OMEGA_SPACE, _OMEGA_SPACE, color=plots.COLORS[0], label="spectrum $S(\\Omega)$")
+    (welch,) = ax_s.loglog([1, 2], [1, 1], color=plots.COLORS[1], lw=0.9, label="Welch, 1 km sample")
+    edges = [ax_s.axvline(1.0, color="k", ls=":", lw=1) for _ in range(2)]
+    ax_s.set_xlim(_OMEGA_SPACE[0], _OMEGA_SPACE[-1])
+    ax_s.set_ylim(1e-12, 10.0)  # spans every spectrum offered over these wavenumbers
+    ax_s.set_xlabel(r"wavenumber $\Omega$ (rad/m)")
+    ax_s.set_ylabel(r"$S(\Omega)$ (m$^2$/(rad/m))")
+    ax_s.legend(loc="lower left")
+    # The sample along the first kilometre, in mm.
+    (sample_line,) = ax_x.plot(x_shown, 0 * x_shown, color=plots.COLORS[0], lw=0.8)
+    ax_x.set_xlim(0, _SAMPLE_LENGTH)
+    ax_x.set_xlabel("distance $x$ (m)")
+    ax_x.set_ylabel("irregularity (mm)")
+    # The same spectrum in time at speed V.
+    (temporal,) = ax_t.loglog(_OMEGA_TIME, _OMEGA_TIME, color=plots.COLORS[2], label=r"$S(\omega/V)/V$")
+    band_t = [ax_t.axvline(1.0, color="k", ls=":", lw=1) for _ in range(2)]
+    ax_t.set_xlim(_OMEGA_TIME[0], _OMEGA_TIME[-1])
+    ax_t.set_ylim(1e-14, 1.0)
+    ax_t.set_xlabel(r"circular frequency $\omega = V\Omega$ (rad/s)")
+    ax_t.set_ylabel(r"$S_t(\omega)$ (m$^2$ s/rad)")
+    ax_t.legend(loc="lower left")
+    live.animate(*others, chosen, welch, *edges, sample_line, temporal, *band_t)
+
+    def redraw(v):
+        spectrum, grade = TRACKS[v["track"]]
+        component = v["component"]
+        available = not (spectrum == "german" and component == "gauge")
+        for line, (fam, g) in zip(others, TRACKS.values(), strict=True):
+            ok = not (fam == "german" and component == "gauge")
+            line.set_visible(ok)
+            if ok:
+                line.set_ydata(track.track_psd(fam, component, g)(_OMEGA_SPACE))
+        for artist in (chosen, welch, sample_line, temporal):
+            artist.set_visible(available)
+        shortest, longest = v["shortest"], max(v["longest"], 2.0 * v["shortest"])
+        lo, hi = track.wavelength_band((shortest, longest))
+        V = v["speed_kmh"] / 3.6
+        for line, value in zip(edges, (lo, hi), strict=True):
+            line.set_xdata([value, value])
+        for line, value in zip(band_t, (V * lo, V * hi), strict=True):
+            line.set_xdata([value, value])
+        if not available:
+            status.value = (
+                "raildyn has no German gauge spectrum (no citable parameter); pick another component"
+            )
+            return
+        psd = track.track_psd(spectrum, component, grade)
+        chosen.set_ydata(psd(_OMEGA_SPACE))
+        sample = track.synthesize_irregularity(psd, _SAMPLE_LENGTH, _DX, (shortest, longest), v["seed"])
+        w_est, s_est = random_vibration.welch_psd(sample.z, _DX, nperseg=1024)
+        inside = (w_est >= sample.band[0]) & (w_est <= sample.band[1])
+        welch.set_data(w_est[inside], np.where(s_est[inside] > 0, s_est[inside], np.nan))
+        sample_line.set_ydata(1e3 * sample.z)
+        # Limits in 1–2–5 steps of 4σ: they move with the track and band, not with the seed or the speed.
+        limit = _nice_ceiling(4e3 * sample.rms)
+        ax_x.set_ylim(-limit, limit)
+        temporal.set_ydata(track.temporal_psd(psd, V)(_OMEGA_TIME))
+        analytic = track.band_variance(spectrum, component, grade, sample.band)
+        f_lo, f_hi = V * lo / (2 * np.pi), V * hi / (2 * np.pi)
+        status.value = (
+            f"RMS over λ ∈ [{shortest:g}, {longest:g}] m: analytic {1e3 * np.sqrt(analytic):.2f} mm · "
+            f"1 km sample {1e3 * np.sqrt(np.mean(sample.z**2)):.2f} mm · at {v['speed_kmh']:.0f} km/h "
+            f"this band excites {f_lo:.2f}–{f_hi:.1f} Hz"
+        )
+
+    return redraw
+
+
+RANDOM_TRACK = Recipe(
+    _random_track_controls,
+    _random_track_setup,
+    {"nrows": 1, "ncols": 3, "figsize": (11.0, 3.6)},
+    static={"track": list(TRACKS)},
+    title="Track spectrum, a seeded 1 km sample and the spectrum in time at speed V",
+)
+
+
+def random_track():
+    """Random track: pick a track quality and component, see its spectrum, a sample and its excitation.
+
+    Controls: track (FRA class 1–6, German low/high disturbance), component,
+    speed V (km/h), the wavelength band kept (m) and the seed. Left: S(Ω) with
+    every other track quality in grey, the band edges dotted and the Welch
+    estimate of the sample; middle: the seeded 1 km sample (mm); right: the
+    spectrum met in time at V, S(ω/V)/V. The status line gives the band RMS,
+    analytic beside the sample's.
+    """
+    return RANDOM_TRACK.build()
+
+
+def _jointed_rail_controls():
+    return {
+        "half_width": slider("dip half-width a (m)", 2.0, 0.5, 5.9, 0.1, fmt=".1f"),
+        "depth_mm": slider("dip depth δ (mm)", 8.0, 0.0, 20.0, 0.5, fmt=".1f"),
+        "arrangement": widgets.Dropdown(
+            options=[("staggered", "staggered"), ("in phase", "in_phase")],
+            value="staggered",
+            description="joints",
+        ),
+        "speed_kmh": slider("V (km/h)", 60.0, 10.0, 160.0, 5.0, fmt=".0f"),
+    }
+
+
+def _jointed_rail_setup(live, status):
+    ax_p, ax_h = live.axes[0]
+    L = track.RAIL_LENGTH
+    x = np.linspace(0.0, 3 * L, 1200)
+    (left,) = ax_p.plot(x, 0 * x, color=plots.COLORS[0], label="left rail")
+    (right,) = ax_p.plot(x, 0 * x, color=plots.COLORS[1], ls="--", label="right rail")
+    (cross,) = ax_p.plot(x, 0 * x, color=plots.COLORS[2], lw=1.2, ls=":", label="cross-level")
+    ax_p.set_xlim(0, x[-1])
+    ax_p.set_ylim(-21, 21)
+    ax_p.set_xlabel("distance $x$ (m)")
+    ax_p.set_ylabel("profile (mm)")
+    ax_p.legend(loc="lower right", ncols=3)
+    # Harmonics of the periodic inputs seen at speed V, at the frequencies nV/L: bounce (mean of the
+    # rails) and roll (cross-level). The frequency axis is fixed; the bars move along it with the speed.
+    n_harm, width = 12, 0.3  # harmonics shown; bar width in Hz
+    f_axis = np.arange(1, n_harm + 1, dtype=float)
+    bounce = ax_h.bar(f_axis, 0 * f_axis, width=width, color=plots.COLORS[0], label="bounce (mean)")
+    roll = ax_h.bar(f_axis, 0 * f_axis, width=width, color=plots.COLORS[2], label="cross-level")
+    ax_h.set_xlim(0, 25)
+    ax_h.set_ylim(0, 12)
+    ax_h.set_xlabel("frequency $nV/L$ (Hz)")
+    ax_h.set_ylabel("amplitude (mm)")
+    ax_h.legend(loc="upper right")
+    live.animate(left, right, cross, *bounce.patches, *roll.patches)
+    period = np.linspace(0.0, L, 2048, endpoint=False)
+
+    def redraw(v):
+        depth, a = 1e-3 * v["depth_mm"], min(v["half_width"], L / 2)
+        t = track.jointed_track(x, depth, a, arrangement=v["arrangement"])
+        left.set_ydata(1e3 * t.left)
+        right.set_ydata(1e3 * t.right)
+        cross.set_ydata(1e3 * t.cross_level)
+        one = track.jointed_track(period, depth, a, arrangement=v["arrangement"])
+        for bars, signal in ((bounce, one.vertical), (roll, one.cross_level)):
+            amplitudes = 2 * np.abs(np.fft.rfft(signal))[1 : n_harm + 1] / period.size
+            for bar, h in zip(bars.patches, 1e3 * amplitudes, strict=True):
+                bar.set_height(h)
+        f1 = track.passing_frequency(v["speed_kmh"] / 3.6)
+        for n, (b, r) in enumerate(zip(bounce.patches, roll.patches, strict=True), start=1):
+            b.set_x(n * f1 - width)
+            r.set_x(n * f1)
+        status.value = (
+            f"first harmonic nV/L = {f1:.2f} Hz at {v['speed_kmh']:.0f} km/h (L = {L} m); "
+            f"slope jump at each joint 4δ/a = {4e3 * depth / a:.1f} mm/m"
+        )
+
+    return redraw
+
+
+JOINTED_RAIL = Recipe(
+    _jointed_rail_controls,
+    _jointed_rail_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (10.0, 3.6), "gridspec_kw": {"width_ratios": [1.6, 1]}},
+    static={"half_width": [0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 5.9]},
+    title="Jointed rail with dipped joints and the harmonics of its bounce and roll inputs",
+)
+
+
+def jointed_rail():
+    """Jointed rail with cusp-shaped dipped joints, staggered or in phase, and its harmonics.
+
+    Controls: half-width a and depth δ of each dip, joint arrangement, speed
+    (km/h). Left: both rails and the cross-level over three rail lengths; right:
+    the Fourier amplitudes of the bounce (mean) and roll (cross-level) inputs,
+    placed at their frequencies nV/L in Hz.
+    """
+    return JOINTED_RAIL.build()
