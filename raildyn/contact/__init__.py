@@ -1,0 +1,76 @@
+"""Chapter 4: wheel–rail rolling contact.
+
+* :mod:`~raildyn.contact.hertz` — Hertz's normal contact: ellipse, m and n, pressure, approach, stiffness.
+* :mod:`~raildyn.contact.creep` — creepages of a wheelset, Kalker's coefficients and linear theory,
+  Carter, Johnson–Vermeulen, Shen–Hedrick–Elkins and Polach.
+* :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), vectorized over states.
+* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles; contact points, Δr(y),
+  contact angles and equivalent conicity.
+"""
+
+from raildyn.contact.creep import (
+    KALKER_NU,
+    CreepCoefficients,
+    CreepForces,
+    KalkerCoefficients,
+    WheelsetCreepages,
+    carter,
+    carter_coefficient,
+    creep_coefficients,
+    johnson_vermeulen,
+    kalker_coefficients,
+    kalker_linear,
+    polach,
+    shen_hedrick_elkins,
+    wheelset_creepages,
+)
+from raildyn.contact.fastsim import FastsimResult, fastsim, fastsim_reference, flexibilities
+from raildyn.contact.hertz import HertzContact, hertz_coefficients, hertz_contact
+from raildyn.contact.profiles import (
+    ContactGeometry,
+    RailProfile,
+    WheelProfile,
+    conical_wheel,
+    contact_angles,
+    contact_geometry,
+    equivalent_conicity,
+    harmonic_conicity,
+    rolling_radius_difference,
+    s1002_wheel,
+    uic60_rail,
+)
+
+__all__ = [
+    "KALKER_NU",
+    "ContactGeometry",
+    "CreepCoefficients",
+    "CreepForces",
+    "FastsimResult",
+    "HertzContact",
+    "KalkerCoefficients",
+    "RailProfile",
+    "WheelProfile",
+    "WheelsetCreepages",
+    "carter",
+    "carter_coefficient",
+    "conical_wheel",
+    "contact_angles",
+    "contact_geometry",
+    "creep_coefficients",
+    "equivalent_conicity",
+    "fastsim",
+    "fastsim_reference",
+    "flexibilities",
+    "harmonic_conicity",
+    "hertz_coefficients",
+    "hertz_contact",
+    "johnson_vermeulen",
+    "kalker_coefficients",
+    "kalker_linear",
+    "polach",
+    "rolling_radius_difference",
+    "s1002_wheel",
+    "shen_hedrick_elkins",
+    "uic60_rail",
+    "wheelset_creepages",
+]

@@ -1,0 +1,495 @@
+"""Creepages and the creep-force laws of chapter 4: Kalker linear, Carter, Johnson–Vermeulen, SHE, Polach.
+
+Sign convention (Kalker; Garg & Dukkipati ch. 4): the creepages ξ (longitudinal),
+η (lateral) and φ (spin, 1/m) are the rigid slip of the wheel over the rail
+divided by the rolling speed; the forces are those of the rail on the wheel, so
+at small creepage
+
+    Fx = −f₁₁ ξ,   Fy = −f₂₂ η − f₂₃ φ,   Mz = f₂₃ η − f₃₃ φ.
+
+Every law here takes numbers or numpy arrays (broadcast together) and returns a
+:class:`CreepForces`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+
+# fmt: off
+# Kalker's coefficients C_ij of the linear theory for an elliptical contact,
+# Kalker (1967) as tabulated in Kalker (1990), Table E.3, reproduced in Garg &
+# Dukkipati (1984) ch. 4 and Iwnicki (2006) ch. 7. Rows: g = a/b (first block,
+# a ≤ b) or g = b/a (second block, a ≥ b) = 0.1, 0.2, …, 1.0; within each row
+# C11, C22, C23, C33, each for ν = 0, 0.25, 0.5. The C11, C22 and C23 columns
+# were checked digit by digit against the transcription in Vollebregt's CONTACT
+# code (m_hertz.f90, routine linrol, "Table E.3 of Kalker 1990").
+_G = np.arange(1, 11) / 10.0
+_KALKER_A_LE_B = np.array([
+    # C11 ν=0,.25,.5      C22                  C23                    C33
+    [2.51, 3.31, 4.85,   2.51, 2.52, 2.53,   0.334, 0.473, 0.731,   6.42, 8.28, 11.7],   # a/b = 0.1
+    [2.59, 3.37, 4.81,   2.59, 2.63, 2.66,   0.483, 0.603, 0.809,   3.46, 4.27, 5.66],   # 0.2
+    [2.68, 3.44, 4.80,   2.68, 2.75, 2.81,   0.607, 0.715, 0.889,   2.49, 2.96, 3.72],   # 0.3
+    [2.78, 3.53, 4.82,   2.78, 2.88, 2.98,   0.720, 0.823, 0.977,   2.02, 2.32, 2.77],   # 0.4
+    [2.88, 3.62, 4.83,   2.88, 3.01, 3.14,   0.827, 0.929, 1.07,    1.74, 1.93, 2.22],   # 0.5
+    [2.98, 3.72, 4.91,   2.98, 3.14, 3.31,   0.930, 1.03, 1.18,     1.56, 1.68, 1.86],   # 0.6
+    [3.09, 3.81, 4.97,   3.09, 3.28, 3.48,   1.03, 1.14, 1.29,      1.43, 1.50, 1.60],   # 0.7
+    [3.19, 3.91, 5.05,   3.19, 3.41, 3.65,   1.13, 1.25, 1.40,      1.34, 1.37, 1.42],   # 0.8
+    [3.29, 4.01, 5.12,   3.29, 3.54, 3.82,   1.23, 1.36, 1.51,      1.27, 1.27, 1.27],   # 0.9
+    [3.40, 4.12, 5.20,   3.40, 3.67, 3.98,   1.33, 1.47, 1.63,      1.21, 1.19, 1.16],   # 1.0
+])
+_KALKER_A_GE_B = np.array([
+    [10.7, 11.7, 12.9,   10.7, 12.8, 16.0,   12.2, 14.6, 18.0,      0.795, 0.526, 0.228],  # b/a = 0.1
+    [6.96, 7.78, 8.82,   6.96, 8.14, 9.79,   5.72, 6.63, 7.89,      0.828, 0.601, 0.341],  # 0.2
+    [5.57, 6.34, 7.34,   5.57, 6.40, 7.51,   3.79, 4.32, 5.01,      0.868, 0.674, 0.446],  # 0.3
+    [4.84, 5.57, 6.57,   4.84, 5.48, 6.31,   2.88, 3.24, 3.70,      0.912, 0.747, 0.549],  # 0.4
+    [4.37, 5.10, 6.11,   4.37, 4.90, 5.56,   2.35, 2.62, 2.96,      0.958, 0.819, 0.650],  # 0.5
+    [4.06, 4.78, 5.80,   4.06, 4.50, 5.04,   2.01, 2.23, 2.50,      1.01, 0.892, 0.751],   # 0.6
+    [3.82, 4.54, 5.58,   3.82, 4.21, 4.67,   1.76, 1.95, 2.18,      1.05, 0.965, 0.852],   # 0.7
+    [3.65, 4.36, 5.42,   3.65, 3.99, 4.39,   1.58, 1.75, 1.94,      1.10, 1.04, 0.954],    # 0.8
+    [3.51, 4.22, 5.30,   3.51, 3.81, 4.16,   1.44, 1.59, 1.77,      1.16, 1.11, 1.06],     # 0.9
+    [3.40, 4.12, 5.20,   3.40, 3.67, 3.98,   1.33, 1.47, 1.63,      1.21, 1.19, 1.16],     # 1.0
+])
+# fmt: on
+KALKER_NU = (0.0, 0.25, 0.5)
+"""The Poisson ratios of the columns of Kalker's table."""
+
+
+@dataclass(frozen=True)
+class KalkerCoefficients:
+    """Kalker's dimensionless coefficients C₁₁, C₂₂, C₂₃, C₃₃ (floats or arrays)."""
+
+    c11: np.ndarray | float
+    c22: np.ndarray | float
+    c23: np.ndarray | float
+    c33: np.ndarray | float
+
+
+@dataclass(frozen=True)
+class CreepCoefficients:
+    """Kalker's creep coefficients of one contact.
+
+    Attributes
+    ----------
+    f11 : longitudinal, G a b C₁₁ (N)
+    f22 : lateral, G a b C₂₂ (N)
+    f23 : lateral/spin, G (ab)^{3/2} C₂₃ (N m)
+    f33 : spin, G (ab)² C₃₃ (N m²)
+    """
+
+    f11: np.ndarray | float
+    f22: np.ndarray | float
+    f23: np.ndarray | float
+    f33: np.ndarray | float
+
+
+@dataclass(frozen=True)
+class CreepForces:
+    """Creep forces of the rail on the wheel in the contact plane.
+
+    Attributes
+    ----------
+    fx : longitudinal force (N)
+    fy : lateral force (N)
+    mz : spin moment about the contact normal (N m); ``None`` for laws that give none
+    """
+
+    fx: np.ndarray | float
+    fy: np.ndarray | float
+    mz: np.ndarray | float | None = None
+
+    @property
+    def resultant(self):
+        """√(Fx² + Fy²) (N)."""
+        return np.hypot(self.fx, self.fy)
+
+
+def _out(value):
+    """A 0-d array back to a float, so scalar calls give scalars."""
+    arr = np.asarray(value)
+    return float(arr) if arr.ndim == 0 else arr
+
+
+def _poisson(poisson_ratio) -> float:
+    return _checks.scalar("poisson_ratio", poisson_ratio, low=0.0, high=0.5)
+
+
+def _friction(friction) -> float:
+    return _checks.scalar("friction", friction, low=0.0, low_open=True)
+
+
+def kalker_coefficients(a_over_b, poisson_ratio) -> KalkerCoefficients:
+    """Kalker's C₁₁, C₂₂, C₂₃, C₃₃ for an ellipse ratio a/b and Poisson ratio ν.
+
+    Linear interpolation in g = a/b (a ≤ b) or g = b/a (a ≥ b) between the rows of
+    Kalker's table, then quadratic (Lagrange) interpolation through ν = 0, 0.25,
+    0.5. At the table points the table values are returned exactly.
+
+    Parameters
+    ----------
+    a_over_b : float or array_like
+        a/b, with a the semi-axis in the rolling direction; 0.1 ≤ a/b ≤ 10.
+    poisson_ratio : float
+        ν in [0, 0.5].
+
+    Returns
+    -------
+    KalkerCoefficients
+
+    Examples
+    --------
+    >>> c = kalker_coefficients(1.0, 0.25)
+    >>> c.c11, c.c22, c.c23, c.c33
+    (4.12, 3.67, 1.47, 1.19)
+    """
+    ratio = _checks.array("a_over_b", a_over_b)
+    if np.any(ratio < 0.1 - 1e-12) or np.any(ratio > 10.0 + 1e-9):
+        bad = ratio[(ratio < 0.1 - 1e-12) | (ratio > 10.0 + 1e-9)].flat[0]
+        raise ValueError(f"a_over_b must be in [0.1, 10] (the range of Kalker's table), got {bad!r}")
+    nu = _poisson(poisson_ratio)
+    ratio = np.clip(ratio, 0.1, 10.0)
+    g = np.where(ratio <= 1.0, ratio, 1.0 / ratio)
+    # Interpolate every column along g in the right block of the table.
+    low = np.stack([np.interp(g, _G, _KALKER_A_LE_B[:, j]) for j in range(12)], axis=-1)
+    high = np.stack([np.interp(g, _G, _KALKER_A_GE_B[:, j]) for j in range(12)], axis=-1)
+    rows = np.where((ratio <= 1.0)[..., None], low, high).reshape(*ratio.shape, 4, 3)
+    weights = np.array(
+        [
+            (nu - 0.25) * (nu - 0.5) / ((0.0 - 0.25) * (0.0 - 0.5)),
+            (nu - 0.0) * (nu - 0.5) / ((0.25 - 0.0) * (0.25 - 0.5)),
+            (nu - 0.0) * (nu - 0.25) / ((0.5 - 0.0) * (0.5 - 0.25)),
+        ]
+    )
+    c = np.round(rows @ weights, 12)
+    return KalkerCoefficients(*(_out(c[..., i]) for i in range(4)))
+
+
+def creep_coefficients(a, b, shear_modulus=8.1e10, poisson_ratio=0.3) -> CreepCoefficients:
+    """Kalker's creep coefficients f₁₁, f₂₂, f₂₃, f₃₃ of a contact ellipse.
+
+    f₁₁ = G a b C₁₁, f₂₂ = G a b C₂₂, f₂₃ = G (ab)^{3/2} C₂₃, f₃₃ = G (ab)² C₃₃
+    (Kalker 1967; Garg & Dukkipati 1984, ch. 4).
+
+    Parameters
+    ----------
+    a, b : float or array_like
+        Semi-axes (m) in the rolling and lateral directions, > 0, with
+        0.1 ≤ a/b ≤ 10. Arrays broadcast together.
+    shear_modulus : float
+        G (Pa); default 81 GPa for steel (E = 210 GPa, ν = 0.3).
+    poisson_ratio : float
+        ν in [0, 0.5]; default 0.3.
+
+    Returns
+    -------
+    CreepCoefficients
+        Floats for scalar input, arrays of the broadcast shape otherwise.
+
+    Examples
+    --------
+    >>> f = creep_coefficients(6e-3, 6e-3, 8.1e10, 0.25)
+    >>> round(f.f11 / 1e6, 3)  # MN
+    12.014
+    """
+    a_arr = _checks.array("a", a, low=0.0, low_open=True)
+    b_arr = _checks.array("b", b, low=0.0, low_open=True)
+    g_mod = _checks.positive("shear_modulus", shear_modulus)
+    a_arr, b_arr = np.broadcast_arrays(a_arr, b_arr)
+    c = kalker_coefficients(a_arr / b_arr, poisson_ratio)
+    ab = a_arr * b_arr
+    return CreepCoefficients(
+        f11=_out(g_mod * ab * c.c11),
+        f22=_out(g_mod * ab * c.c22),
+        f23=_out(g_mod * ab**1.5 * c.c23),
+        f33=_out(g_mod * ab**2 * c.c33),
+    )
+
+
+def kalker_linear(longitudinal, lateral, spin, coefficients: CreepCoefficients) -> CreepForces:
+    """Kalker's linear theory: Fx = −f₁₁ξ, Fy = −f₂₂η − f₂₃φ, Mz = f₂₃η − f₃₃φ.
+
+    Parameters
+    ----------
+    longitudinal, lateral : float or array_like
+        Creepages ξ and η (dimensionless).
+    spin : float or array_like
+        Spin creepage φ (1/m).
+    coefficients : CreepCoefficients
+
+    Returns
+    -------
+    CreepForces
+        Unbounded: valid only while the creepages are small (no sliding).
+    """
+    xi = _checks.array("longitudinal", longitudinal)
+    eta = _checks.array("lateral", lateral)
+    phi = _checks.array("spin", spin)
+    f = coefficients
+    return CreepForces(
+        fx=_out(-f.f11 * xi + 0.0 * (eta + phi)),
+        fy=_out(-f.f22 * eta - f.f23 * phi + 0.0 * xi),
+        mz=_out(f.f23 * eta - f.f33 * phi + 0.0 * xi),
+    )
+
+
+def carter_coefficient(normal_load, wheel_radius, semi_axis):
+    """Carter's longitudinal creep coefficient 2NR/a of a cylinder rolling on a plane (N).
+
+    Parameters
+    ----------
+    normal_load : float
+        N (N).
+    wheel_radius : float
+        R (m).
+    semi_axis : float
+        Half-length a of the contact strip in the rolling direction (m).
+    """
+    n = _checks.positive("normal_load", normal_load)
+    r = _checks.positive("wheel_radius", wheel_radius)
+    a = _checks.positive("semi_axis", semi_axis)
+    return 2.0 * n * r / a
+
+
+def carter(longitudinal, normal_load, friction, creep_coefficient):
+    """Carter's two-dimensional theory: longitudinal creep force of a rolling cylinder.
+
+    With u = f ξ/(2μN) and f the initial slope (Carter's 2NR/a, or Kalker's
+    f₁₁ to compare shapes), F = −μN(2u − u|u|) while |u| < 1 and −μN sign(u)
+    beyond: the adhesion zone at the leading edge shrinks to nothing at |u| = 1
+    (Carter 1926; Garg & Dukkipati 1984, ch. 4; Johnson 1985, §8.2).
+
+    Parameters
+    ----------
+    longitudinal : float or array_like
+        Creepage ξ.
+    normal_load : float
+        N (N), > 0.
+    friction : float
+        Coefficient of friction μ, > 0.
+    creep_coefficient : float
+        Initial slope dF/dξ (N), > 0.
+
+    Returns
+    -------
+    float or ndarray
+        Fx (N).
+    """
+    xi = _checks.array("longitudinal", longitudinal)
+    n = _checks.positive("normal_load", normal_load)
+    mu = _friction(friction)
+    f = _checks.positive("creep_coefficient", creep_coefficient)
+    u = f * xi / (2 * mu * n)
+    mag = np.where(np.abs(u) < 1.0, 2 * np.abs(u) - u**2, 1.0)
+    return _out(-mu * n * np.sign(u) * mag)
+
+
+def johnson_vermeulen(longitudinal, lateral, normal_load, friction, coefficients: CreepCoefficients):
+    """Johnson and Vermeulen's cubic law for an elliptical contact without spin.
+
+    With ψ = √((f₁₁ξ)² + (f₂₂η)²)/(3μN) the resultant is F = μN[1 − (1 − ψ)³]
+    for ψ < 1 and μN beyond, directed along the linear-theory force (Johnson &
+    Vermeulen 1964). The initial slopes are Kalker's f₁₁ and f₂₂ so the curve
+    starts on the linear theory; Johnson and Vermeulen's own coefficients differ
+    by up to about 20 % (Garg & Dukkipati 1984, ch. 4).
+
+    Returns
+    -------
+    CreepForces
+        ``mz`` is None.
+    """
+    xi = _checks.array("longitudinal", longitudinal)
+    eta = _checks.array("lateral", lateral)
+    n = _checks.positive("normal_load", normal_load)
+    mu = _friction(friction)
+    lin_x = coefficients.f11 * xi
+    lin_y = coefficients.f22 * eta
+    psi = np.hypot(lin_x, lin_y) / (3 * mu * n)
+    sat = np.where(psi < 1.0, 1.0 - (1.0 - np.minimum(psi, 1.0)) ** 3, 1.0)
+    safe = np.where(psi > 0, psi, 1.0)
+    scale = np.where(psi > 0, sat / (3 * safe), 1.0)  # F/(3μNψ) → 1 as ψ → 0
+    return CreepForces(fx=_out(-scale * lin_x), fy=_out(-scale * lin_y))
+
+
+def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coefficients: CreepCoefficients):
+    """Kalker's linear forces bounded by the heuristic saturation of Shen, Hedrick and Elkins (1983).
+
+    With β = |F_lin|/(μN) the resultant becomes μN(β − β²/3 + β³/27) for β ≤ 3 and
+    μN beyond; Fx, Fy and Mz are all scaled by the same factor.
+
+    Returns
+    -------
+    CreepForces
+    """
+    n = _checks.positive("normal_load", normal_load)
+    mu = _friction(friction)
+    lin = kalker_linear(longitudinal, lateral, spin, coefficients)
+    beta = np.asarray(lin.resultant) / (mu * n)
+    sat = np.where(beta <= 3.0, beta - beta**2 / 3 + beta**3 / 27, 1.0)
+    scale = np.where(beta > 0, sat / np.where(beta > 0, beta, 1.0), 1.0)
+    return CreepForces(
+        fx=_out(scale * lin.fx),
+        fy=_out(scale * lin.fy),
+        mz=_out(scale * lin.mz),
+    )
+
+
+def polach(
+    longitudinal,
+    lateral,
+    spin,
+    normal_load,
+    friction,
+    a,
+    b,
+    shear_modulus=8.1e10,
+    poisson_ratio=0.3,
+    *,
+    k_a: float = 1.0,
+    k_s: float = 1.0,
+) -> CreepForces:
+    """Polach's fast creep-force method with spin (Polach 1999, 2000).
+
+    The creep force from ξ and η is
+
+        F = (2Qμ/π) [k_A ε/(1 + (k_A ε)²) + arctan(k_S ε)],
+        ε = G π a b C_jj s_C /(4 Q μ),  C_jj = √((C₁₁ ξ/s)² + (C₂₂ η/s)²),
+
+    shared as Fx = −F ξ/s_C, Fy = −F η/s_C, where s_C = √(ξ² + η_C²) and
+    η_C = η + φa when that is larger in magnitude than η (else η). Spin adds a
+    lateral force F_yS = (9/16) a Q μ K_M [1 + 6.3(1 − e^{−a/b})] φ/s_C with
+    K_M = |ε_M|(δ³/3 − δ²/2 + 1/6) − √((1 − δ²)³)/3, δ = (ε_M² − 1)/(ε_M² + 1),
+    ε_M = (8/3) G b √(ab) C₂₃ s_C /(Q μ [1 + 6.3(1 − e^{−a/b})]).
+    k_A = k_S = 1 is the original method; k_A, k_S < 1 reduce the initial slope
+    as in Polach (2005).
+
+    Parameters
+    ----------
+    longitudinal, lateral : float or array_like
+        ξ, η.
+    spin : float or array_like
+        φ (1/m).
+    normal_load : float
+        Q (N), > 0.
+    friction : float
+        μ > 0.
+    a, b : float
+        Semi-axes of the contact ellipse (m).
+    shear_modulus, poisson_ratio : float
+        G (Pa) and ν for Kalker's coefficients.
+    k_a, k_s : float, keyword
+        Reduction factors in (0, 1].
+
+    Returns
+    -------
+    CreepForces
+        ``mz`` is None (the method gives no spin moment).
+    """
+    xi = _checks.array("longitudinal", longitudinal)
+    eta = _checks.array("lateral", lateral)
+    phi = _checks.array("spin", spin)
+    q = _checks.positive("normal_load", normal_load)
+    mu = _friction(friction)
+    a = _checks.positive("a", a)
+    b = _checks.positive("b", b)
+    g_mod = _checks.positive("shear_modulus", shear_modulus)
+    k_a = _checks.scalar("k_a", k_a, low=0.0, high=1.0, low_open=True)
+    k_s = _checks.scalar("k_s", k_s, low=0.0, high=1.0, low_open=True)
+    c = kalker_coefficients(a / b, poisson_ratio)
+    xi, eta, phi = np.broadcast_arrays(xi, eta, phi)
+    eta_c = np.where(np.abs(eta + phi * a) > np.abs(eta), eta + phi * a, eta)
+    s_c = np.hypot(xi, eta_c)
+    s = np.hypot(xi, eta)
+    safe_s = np.where(s > 0, s, 1.0)
+    c_jj = np.where(s > 0, np.hypot(c.c11 * xi / safe_s, c.c22 * eta / safe_s), c.c22)
+    eps = g_mod * np.pi * a * b * c_jj * s_c / (4 * q * mu)
+    force = 2 * q * mu / np.pi * (k_a * eps / (1 + (k_a * eps) ** 2) + np.arctan(k_s * eps))
+    safe_sc = np.where(s_c > 0, s_c, 1.0)
+    k_m_factor = 1 + 6.3 * (1 - np.exp(-a / b))
+    eps_m = 8.0 / 3.0 * g_mod * b * np.sqrt(a * b) * c.c23 * s_c / (q * mu * k_m_factor)
+    delta = (eps_m**2 - 1) / (eps_m**2 + 1)
+    k_m = np.abs(eps_m) * (delta**3 / 3 - delta**2 / 2 + 1 / 6) - np.sqrt((1 - delta**2) ** 3) / 3
+    fy_spin = 9 / 16 * a * q * mu * k_m * k_m_factor * phi / safe_sc
+    fx = np.where(s_c > 0, -force * xi / safe_sc, 0.0)
+    fy = np.where(s_c > 0, -force * eta / safe_sc + fy_spin, 0.0)
+    return CreepForces(fx=_out(fx), fy=_out(fy))
+
+
+@dataclass(frozen=True)
+class WheelsetCreepages:
+    """Creepages at the two contacts of a wheelset; index 0 is the left wheel, 1 the right.
+
+    Attributes
+    ----------
+    longitudinal : ndarray, shape (2, ...)
+        ξ at the left and right contacts.
+    lateral : ndarray, shape (2, ...)
+        η (the same at both wheels in this kinematic form).
+    spin : ndarray, shape (2, ...)
+        φ (1/m).
+    """
+
+    longitudinal: np.ndarray
+    lateral: np.ndarray
+    spin: np.ndarray
+
+
+def wheelset_creepages(
+    speed,
+    lateral_velocity,
+    yaw_angle,
+    yaw_rate,
+    rolling_radius_left,
+    rolling_radius_right,
+    nominal_radius,
+    half_gauge,
+    contact_angle_left=0.0,
+    contact_angle_right=0.0,
+) -> WheelsetCreepages:
+    """Creepages of a wheelset on straight track (Garg & Dukkipati 1984, ch. 4–5).
+
+    The wheelset runs at ``speed`` V with the angular speed V/r₀ of its nominal
+    rolling radius; y is positive to the left, the yaw ψ positive anticlockwise
+    seen from above, the contact angles δ positive when the contact moves
+    towards the flange. Then, with l the half distance between the contacts,
+
+        ξ_L = (r₀ − r_L)/r₀ − l ψ̇/V,        ξ_R = (r₀ − r_R)/r₀ + l ψ̇/V,
+        η   = ẏ/V − ψ,
+        φ_L = ψ̇/V − sin δ_L / r_L,          φ_R = ψ̇/V + sin δ_R / r_R.
+
+    Parameters
+    ----------
+    speed : float
+        V (m/s), > 0.
+    lateral_velocity, yaw_angle, yaw_rate : float or array_like
+        ẏ (m/s), ψ (rad), ψ̇ (rad/s).
+    rolling_radius_left, rolling_radius_right : float or array_like
+        r_L, r_R at the current contacts (m), e.g. r₀ ± Δr(y)/2.
+    nominal_radius : float
+        r₀ (m).
+    half_gauge : float
+        l (m), half the lateral distance between the contact points.
+    contact_angle_left, contact_angle_right : float or array_like
+        δ_L, δ_R (rad).
+
+    Returns
+    -------
+    WheelsetCreepages
+    """
+    v = _checks.positive("speed", speed)
+    r0 = _checks.positive("nominal_radius", nominal_radius)
+    l_half = _checks.positive("half_gauge", half_gauge)
+    y_dot = _checks.array("lateral_velocity", lateral_velocity)
+    psi = _checks.array("yaw_angle", yaw_angle)
+    psi_dot = _checks.array("yaw_rate", yaw_rate)
+    r_l = _checks.array("rolling_radius_left", rolling_radius_left, low=0.0, low_open=True)
+    r_r = _checks.array("rolling_radius_right", rolling_radius_right, low=0.0, low_open=True)
+    d_l = _checks.array("contact_angle_left", contact_angle_left)
+    d_r = _checks.array("contact_angle_right", contact_angle_right)
+    y_dot, psi, psi_dot, r_l, r_r, d_l, d_r = np.broadcast_arrays(y_dot, psi, psi_dot, r_l, r_r, d_l, d_r)
+    xi = np.stack([(r0 - r_l) / r0 - l_half * psi_dot / v, (r0 - r_r) / r0 + l_half * psi_dot / v])
+    eta = np.stack([y_dot / v - psi] * 2)
+    phi = np.stack([psi_dot / v - np.sin(d_l) / r_l, psi_dot / v + np.sin(d_r) / r_r])
+    return WheelsetCreepages(longitudinal=xi, lateral=eta, spin=phi)

@@ -1,0 +1,241 @@
+"""Hertz's normal contact between a wheel and a rail: ellipse, pressure, approach and stiffness.
+
+The two bodies are described near the contact point by their principal radii
+of curvature; the gap between them is ``A x² + B y²`` with x the rolling
+direction. Hertz showed that the contact area is an ellipse whose shape depends
+only on ``B/A`` and whose size grows as the cube root of the load. The shape
+factors m and n are computed here from the complete elliptic integrals
+(``scipy.special.ellipk``/``ellipe``), not read from a table.
+
+Book: Garg & Dukkipati (1984), chapter 4 (Hertz theory, Table of m and n);
+the elliptic-integral forms follow Johnson, *Contact Mechanics* (1985), §4.2.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import special
+
+from raildyn import _checks
+
+_BISECTION_STEPS = 60  # halves a bracket of width 15 in log(b/a) to ~1e-17: below double precision
+
+
+def _ratio_from_cos_theta(cos_theta: np.ndarray) -> np.ndarray:
+    """Axis ratio k = b/a ≤ 1 of the ellipse whose curvature angle has the given cos θ.
+
+    Solves ``(B−A)/(B+A) = [(1+k²)E(e) − 2k²K(e)] / (e² E(e))`` with e² = 1 − k²
+    (Johnson 1985, eqs. 4.39) by bisection on log k, vectorized over θ.
+    """
+    lo = np.full(cos_theta.shape, -15.0)  # log k = −15 (a/b ≈ 3e6): cos θ = 1 − 1e-12
+    hi = np.zeros(cos_theta.shape)  # log k = 0: circle, cos θ = 0
+    for _ in range(_BISECTION_STEPS):
+        mid = 0.5 * (lo + hi)
+        k2 = np.exp(2 * mid)
+        m = 1.0 - k2
+        big_k, big_e = special.ellipkm1(k2), special.ellipe(m)  # K via its complement: accurate as e → 1
+        with np.errstate(invalid="ignore", divide="ignore"):
+            direct = ((1 + k2) * big_e - 2 * k2 * big_k) / (m * big_e)
+        # Near the circle the direct form cancels (its numerator is O(e⁴)); use its series there.
+        series = m * (3 / 8 + m * (3 / 16 + m * (111 / 1024 + m * 141 / 2048)))
+        value = np.where(m > 1e-3, direct, series)
+        # value falls from 1 to 0 as log k rises from −∞ to 0
+        too_flat = value > cos_theta
+        lo = np.where(too_flat, mid, lo)
+        hi = np.where(too_flat, hi, mid)
+    return np.exp(0.5 * (lo + hi))
+
+
+def _shape_factors(k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Hertz's m and n for the axis ratio k = b/a (Johnson 1985, eq. 4.36 rearranged).
+
+    m³ = 2E(e)/(π k²), n = k m, with e² = 1 − k².
+    """
+    m3 = 2.0 * special.ellipe(1.0 - k**2) / (np.pi * k**2)
+    m = np.cbrt(m3)
+    return m, k * m
+
+
+def hertz_coefficients(theta):
+    """Hertz's coefficients m and n for the angle θ with cos θ = |B − A|/(A + B).
+
+    Parameters
+    ----------
+    theta : float or array_like
+        Angle θ in radians, in (0, π/2]. θ = π/2 is a circular contact (m = n = 1).
+
+    Returns
+    -------
+    m, n : float or ndarray
+        The semi-axes are ``m c`` (along the direction of smaller relative
+        curvature) and ``n c``, with ``c = ∛(3 N (1−ν²) / (2 E (A+B)))`` for two
+        bodies of the same material (book ch. 4; Timoshenko & Goodier 1970 §140).
+
+    Examples
+    --------
+    >>> m, n = hertz_coefficients(math.radians(60))
+    >>> round(float(m), 3), round(float(n), 3)
+    (1.486, 0.717)
+    """
+    th = np.asarray(theta, dtype=float)
+    if not np.all(np.isfinite(th)) or np.any(th <= 0) or np.any(th > np.pi / 2 + 1e-12):
+        raise ValueError(f"theta must be in (0, π/2] radians, got {theta!r}")
+    k = _ratio_from_cos_theta(np.abs(np.cos(th)))
+    m, n = _shape_factors(k)
+    if np.ndim(theta) == 0:
+        return float(m), float(n)
+    return m, n
+
+
+@dataclass(frozen=True)
+class HertzContact:
+    """Hertz's solution for one wheel–rail contact (SI units).
+
+    Attributes
+    ----------
+    a : float
+        Semi-axis in the rolling direction (m).
+    b : float
+        Semi-axis across the rail (m).
+    peak_pressure : float
+        p₀ = 3N/(2πab) at the centre of the ellipse (Pa).
+    approach : float
+        Mutual approach δ of distant points of the two bodies (m).
+    stiffness : float
+        Linearized normal stiffness dN/dδ = 3N/(2δ) at this load (N/m).
+    theta : float
+        Hertz's angle θ (rad), cos θ = |B − A|/(A + B).
+    m, n : float
+        Hertz's coefficients for θ.
+    curvature_sum : float
+        A + B (1/m).
+    normal_load : float
+        N (N).
+    """
+
+    a: float
+    b: float
+    peak_pressure: float
+    approach: float
+    stiffness: float
+    theta: float
+    m: float
+    n: float
+    curvature_sum: float
+    normal_load: float
+
+    @property
+    def a_over_b(self) -> float:
+        """Ellipse ratio a/b, the argument of Kalker's coefficient table."""
+        return self.a / self.b
+
+    def pressure(self, x, y):
+        """Hertz pressure p₀√(1 − x²/a² − y²/b²) at (x, y) in m; zero outside the ellipse (Pa)."""
+        r2 = (np.asarray(x) / self.a) ** 2 + (np.asarray(y) / self.b) ** 2
+        return self.peak_pressure * np.sqrt(np.clip(1.0 - r2, 0.0, None))
+
+
+def _curvature(name: str, radius) -> float:
+    """1/R for a signed radius (m); ``math.inf`` gives a flat direction (0)."""
+    if isinstance(radius, bool) or not isinstance(radius, (int, float, np.floating, np.integer)):
+        raise TypeError(f"{name} must be a real number, got {radius!r}")
+    r = float(radius)
+    if math.isnan(r) or r == 0.0:
+        raise ValueError(f"{name} must be a non-zero radius in m (math.inf if straight), got {radius!r}")
+    return 0.0 if math.isinf(r) else 1.0 / r
+
+
+def hertz_contact(
+    normal_load,
+    wheel_rolling_radius,
+    wheel_transverse_radius,
+    rail_transverse_radius,
+    youngs_modulus=2.1e11,
+    poisson_ratio=0.3,
+    *,
+    rail_rolling_radius=math.inf,
+) -> HertzContact:
+    """Contact ellipse, peak pressure and approach for a wheel on a rail of the same steel.
+
+    Parameters
+    ----------
+    normal_load : float
+        Normal force N (N), > 0.
+    wheel_rolling_radius : float
+        Rolling radius of the wheel R₁ (m), > 0.
+    wheel_transverse_radius : float
+        Radius of the wheel profile across the rail R₁′ (m): positive when convex,
+        negative when concave (a hollow tread or the flange root), ``math.inf``
+        for a conical tread.
+    rail_transverse_radius : float
+        Radius of the rail head across the rail R₂′ (m), positive convex,
+        ``math.inf`` for a flat rail.
+    youngs_modulus : float
+        E (Pa), for both bodies; default 210 GPa for steel.
+    poisson_ratio : float
+        ν in [0, 0.5); default 0.3.
+    rail_rolling_radius : float, keyword
+        Radius of the rail along the track (m); ``math.inf`` for straight track.
+
+    Returns
+    -------
+    HertzContact
+
+    Notes
+    -----
+    With A = ½(1/R₁ + 1/R₂), B = ½(1/R₁′ + 1/R₂′) (book ch. 4) and two bodies of
+    the same material, c = ∛(3N(1−ν²)/(2E(A+B))); the semi-axis along the
+    direction of smaller curvature is m c and the other n c. The peak pressure
+    is p₀ = 3N/(2πab) and the approach δ = 2 K(e) p₀ b (1−ν²)/E with b the
+    smaller semi-axis (Johnson 1985, eq. 4.38).
+
+    Examples
+    --------
+    >>> c = hertz_contact(100e3, 0.46, math.inf, 0.3)
+    >>> round(c.a * 1e3, 2), round(c.b * 1e3, 2)  # mm
+    (7.16, 5.39)
+    """
+    load = _checks.positive("normal_load", normal_load)
+    _checks.positive("wheel_rolling_radius", wheel_rolling_radius)
+    young = _checks.positive("youngs_modulus", youngs_modulus)
+    nu = _checks.scalar("poisson_ratio", poisson_ratio, low=0.0, high=0.5, high_open=True)
+    big_a = 0.5 * (
+        _curvature("wheel_rolling_radius", wheel_rolling_radius)
+        + _curvature("rail_rolling_radius", rail_rolling_radius)
+    )
+    big_b = 0.5 * (
+        _curvature("wheel_transverse_radius", wheel_transverse_radius)
+        + _curvature("rail_transverse_radius", rail_transverse_radius)
+    )
+    if big_a <= 0 or big_b <= 0:
+        raise ValueError(
+            "the relative curvatures A (rolling) and B (transverse) must both be positive for an "
+            f"elliptical contact, got A = {big_a:.4g} 1/m and B = {big_b:.4g} 1/m; check the radii's signs"
+        )
+    total = big_a + big_b
+    cos_theta = abs(big_b - big_a) / total
+    k = _ratio_from_cos_theta(np.array(cos_theta))
+    m, n = (float(v) for v in _shape_factors(k))
+    k = float(k)
+    e_star = young / (1.0 - nu**2)  # plane-strain modulus of one body; the pair has E*/2
+    c = (3.0 * load / (2.0 * e_star * total)) ** (1.0 / 3.0)
+    major, minor = m * c, n * c
+    # The longer axis lies along the direction of smaller relative curvature.
+    a, b = (major, minor) if big_a <= big_b else (minor, major)
+    p0 = 3.0 * load / (2.0 * np.pi * a * b)
+    approach = 2.0 * float(special.ellipkm1(k**2)) * p0 * minor / e_star
+    return HertzContact(
+        a=a,
+        b=b,
+        peak_pressure=p0,
+        approach=approach,
+        stiffness=1.5 * load / approach,
+        theta=math.acos(min(cos_theta, 1.0)),
+        m=m,
+        n=n,
+        curvature_sum=total,
+        normal_load=load,
+    )

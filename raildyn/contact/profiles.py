@@ -1,0 +1,380 @@
+"""Wheel and rail profiles and the rigid contact geometry of a wheelset on straight track.
+
+Coordinates (SI, m) in the plane of the wheelset axle, one profile per side:
+``u`` runs across the rail and is positive towards the track centre (the
+flange side of the wheel, the gauge side of the rail). A wheel profile gives
+its rolling radius r(u) (the tape circle is u = 0, radius r₀); a rail profile
+gives the height z(u) of the head (the crown at u = 0, z = 0), already tilted
+by the rail inclination.
+
+For a lateral shift y of the wheelset (positive to the left) the left wheel's
+point u_w sits above the left rail's point u_r = u_w − y − d, where d is the
+offset of the tape circle from the rail centre line in the centred position.
+The contact is where the vertical gap between the two surfaces is least; the
+right side is the mirror image with −y. The wheelset rolls so that both wheels
+touch (first order in the roll angle; optional). The wheelset's yaw is not
+considered (no contact-point lead or lag): the geometry is that of a wheelset
+square to the track.
+
+Sources: S1002 wheel, EN 13715 (the piecewise polynomial definition as
+distributed by H. Netter, DLR); 60E1 (UIC60) rail head, EN 13674-1 (arcs R300
+to x = ±10.228 mm, R80 to ±26.027 mm, R13, then a 1:20 flank).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+
+_MM = 1e-3
+_STEP = 0.05e-3  # m; sampling of the profiles and of the contact search, refined by a parabola
+
+
+@dataclass(frozen=True)
+class WheelProfile:
+    """A wheel profile sampled on a fine lateral grid.
+
+    Attributes
+    ----------
+    name : str
+    lateral : ndarray
+        u (m), increasing, positive towards the flange.
+    radius : ndarray
+        Rolling radius r(u) (m).
+    nominal_radius : float
+        r₀ = r(0) (m).
+    """
+
+    name: str
+    lateral: np.ndarray
+    radius: np.ndarray
+    nominal_radius: float
+
+    def radius_at(self, u):
+        """r(u) by linear interpolation (m)."""
+        return np.interp(u, self.lateral, self.radius)
+
+
+@dataclass(frozen=True)
+class RailProfile:
+    """A rail head profile, tilted by its inclination, sampled on a fine lateral grid.
+
+    Attributes
+    ----------
+    name : str
+    lateral : ndarray
+        u (m), increasing, positive towards the track centre (gauge side).
+    height : ndarray
+        z(u) (m), 0 at the crown.
+    inclination : float
+        Rail cant (rad), e.g. atan(1/40).
+    gauge_face : float
+        u of the gauge face 14 mm below the top (m), used to place the rails.
+    """
+
+    name: str
+    lateral: np.ndarray
+    height: np.ndarray
+    inclination: float
+    gauge_face: float
+
+
+def conical_wheel(slope, nominal_radius=0.46, *, width=0.13) -> WheelProfile:
+    """A conical tread r(u) = r₀ + λu with no flange (book ch. 4, the coned wheel).
+
+    Parameters
+    ----------
+    slope : float
+        Conicity λ (e.g. 1/20 or 1/40), ≥ 0.
+    nominal_radius : float
+        r₀ (m).
+    width : float, keyword
+        Lateral extent of the tread, centred on the tape circle (m).
+    """
+    lam = _checks.nonnegative("slope", slope)
+    r0 = _checks.positive("nominal_radius", nominal_radius)
+    w = _checks.positive("width", width)
+    u = np.arange(-w / 2, w / 2 + _STEP / 2, _STEP)
+    return WheelProfile(f"cone 1:{1 / lam:.0f}" if lam > 0 else "cylinder", u, r0 + lam * u, r0)
+
+
+def _s1002_height_mm(s: np.ndarray) -> np.ndarray:
+    """S1002 profile height F(s) (mm) above the tape circle, s (mm) positive towards the field side.
+
+    Piecewise definition of EN 13715 (sections A–H), coefficients as distributed
+    by H. Netter (DLR); valid for −70 ≤ s ≤ 60.
+    """
+    # fmt: off
+    sec_b = [0.0, -3.358537058e-02, 1.565681624e-03, -2.810427944e-05, 5.844240864e-08,
+             -1.562379023e-08, 5.309217349e-15, -5.957839843e-12, 2.646656573e-13]
+    sec_c = [-4.320221063e+03, -1.038384026e+03, -1.065501873e+02, -6.051367875,
+             -2.054332446e-01, -4.169739389e-03, -4.687195829e-05, -2.252755540e-07]
+    # fmt: on
+    with np.errstate(invalid="ignore"):
+        f_a = 1.364323640 - 0.066666667 * s
+        f_b = np.polynomial.polynomial.polyval(s, sec_b)
+        f_c = np.polynomial.polynomial.polyval(s, sec_c)
+        f_d = 16.446 - np.sqrt(13.0**2 - (s + 26.210665) ** 2)
+        f_e = -93.576667419 - 2.747477419 * s
+        f_f = 8.834924130 + np.sqrt(20.0**2 - (s + 58.558326413) ** 2)
+        f_g = 16.0 + np.sqrt(12.0**2 - (s + 55.0) ** 2)
+        f_h = 9.519259302 + np.sqrt(20.5**2 - (s + 49.5) ** 2)
+    bounds = [-62.764705882, -49.662510381, -39.764473993, -38.426669071, -35.0, -26.0, 32.15796]
+    return np.select(
+        [s < bound for bound in bounds],
+        [f_h, f_g, f_f, f_e, f_d, f_c, f_b],
+        default=f_a,
+    )
+
+
+def s1002_wheel(nominal_radius=0.46) -> WheelProfile:
+    """The S1002 wheel profile of EN 13715 (a worn-shape profile), u from −60 to 68 mm.
+
+    The flange tip lies about 28 mm above the tape circle at u ≈ 55 mm; the
+    back of the flange is 70 mm from the tape circle.
+    """
+    r0 = _checks.positive("nominal_radius", nominal_radius)
+    u = np.arange(-60.0 * _MM, 68.0 * _MM + _STEP / 2, _STEP)
+    return WheelProfile("S1002", u, r0 + _s1002_height_mm(-u / _MM) * _MM, r0)
+
+
+def _uic60_head_mm(x: np.ndarray) -> np.ndarray:
+    """Untilted 60E1 head height (mm, crown at 0) at |x| (mm) from the centre line."""
+    x = np.abs(x)
+    x1, x2 = 20.456 / 2, 52.053 / 2  # ends of the R300 and R80 arcs, EN 13674-1 (60E1)
+    a1 = np.arcsin(x1 / 300.0)
+    c2 = np.array([220.0 * np.sin(a1), -300.0 + 220.0 * np.cos(a1)])  # R80 centre, tangent to R300
+    a2 = np.arcsin((x2 - c2[0]) / 80.0)
+    p2 = c2 + 80.0 * np.array([np.sin(a2), np.cos(a2)])
+    c3 = p2 - 13.0 * np.array([np.sin(a2), np.cos(a2)])  # R13 centre, tangent to R80
+    a3 = np.arctan(20.0)  # the R13 arc ends where the flank's 1:20 line begins
+    p3 = c3 + 13.0 * np.array([np.sin(a3), np.cos(a3)])
+    with np.errstate(invalid="ignore"):
+        z1 = -300.0 + np.sqrt(300.0**2 - x**2)
+        z2 = c2[1] + np.sqrt(80.0**2 - (x - c2[0]) ** 2)
+        z3 = c3[1] + np.sqrt(13.0**2 - (x - c3[0]) ** 2)
+        z4 = p3[1] - 20.0 * (x - p3[0])
+    return np.select([x <= x1, x <= x2, x <= p3[0]], [z1, z2, z3], default=z4)
+
+
+def uic60_rail(inclination=1 / 40) -> RailProfile:
+    """The 60E1 (UIC60) rail head, tilted towards the track centre by ``inclination`` (a slope, e.g. 1/40)."""
+    cant = np.arctan(_checks.nonnegative("inclination", inclination))
+    x = np.linspace(-36.5, 36.5, 7301)  # mm, the head and its 1:20 flanks
+    z = _uic60_head_mm(x)
+    keep = z > -25.0  # the running surface and the upper flanks
+    x, z = x[keep], z[keep]
+    # Tilt: rotate the section so that the gauge side (+u) goes down.
+    u_t = x * np.cos(cant) + z * np.sin(cant)
+    z_t = -x * np.sin(cant) + z * np.cos(cant)
+    top = z_t.max()
+    u = np.arange(u_t.min(), u_t.max(), _STEP / _MM)
+    z_u = np.interp(u, u_t, z_t) - top
+    gauge_side = u > u[np.argmax(z_u)]
+    face = u[gauge_side][np.argmin(np.abs(z_u[gauge_side] + 14.0))]  # gauge point 14 mm below the top
+    name = "60E1" + (f" 1:{1 / np.tan(cant):.0f}" if cant > 0 else " upright")
+    return RailProfile(name, u * _MM, z_u * _MM, float(cant), float(face * _MM))
+
+
+@dataclass(frozen=True)
+class ContactGeometry:
+    """Rigid contact points of a wheelset against its lateral shift y (arrays over y).
+
+    Every field but ``shift`` stacks the left and the right contact: shape (2, n).
+
+    Attributes
+    ----------
+    shift : ndarray
+        y (m), positive to the left.
+    wheel_position : ndarray, shape (2, n)
+        u of the contact point on each wheel (m, positive towards the flange).
+    rail_position : ndarray, shape (2, n)
+        u of the contact point on each rail (m, positive towards the gauge side).
+    rolling_radius : ndarray, shape (2, n)
+        r_L, r_R (m).
+    contact_angle : ndarray, shape (2, n)
+        δ_L, δ_R (rad) in the track frame, positive when the contact normal leans towards the
+        track centre.
+    roll : ndarray, shape (n,)
+        Roll angle φ of the wheelset (rad), positive when the left wheel rises; zeros when the
+        roll is left out.
+    """
+
+    shift: np.ndarray
+    wheel_position: np.ndarray
+    rail_position: np.ndarray
+    rolling_radius: np.ndarray
+    contact_angle: np.ndarray
+    roll: np.ndarray
+
+    @property
+    def rolling_radius_difference(self) -> np.ndarray:
+        """Δr(y) = r_L − r_R (m)."""
+        return self.rolling_radius[0] - self.rolling_radius[1]
+
+    @property
+    def contact_angle_difference(self) -> np.ndarray:
+        """δ_L − δ_R (rad)."""
+        return self.contact_angle[0] - self.contact_angle[1]
+
+
+def _offset(rail: RailProfile, gauge: float, tape_distance: float) -> float:
+    """d: tape circle minus rail centre line, lateral, in the centred position (m)."""
+    rail_centre = gauge / 2 + rail.gauge_face
+    return tape_distance / 2 - rail_centre
+
+
+def _gap(wheel: WheelProfile, rail: RailProfile, shifts: np.ndarray, offset: float):
+    """Vertical gap wheel − rail over the rail grid for each shift (left side), and the wheel's u there."""
+    u_w = rail.lateral[None, :] + shifts[:, None] + offset
+    inside = (u_w >= wheel.lateral[0]) & (u_w <= wheel.lateral[-1])
+    # Wheel surface height relative to the tape circle: a larger radius reaches lower.
+    z_w = wheel.nominal_radius - np.interp(u_w, wheel.lateral, wheel.radius)
+    return np.where(inside, z_w - rail.height[None, :], np.inf), u_w
+
+
+def _contact_on(gap: np.ndarray, wheel: WheelProfile, rail: RailProfile, shifts: np.ndarray, offset: float):
+    """Contact at the least gap of each row, refined by a parabola through its neighbours."""
+    u_r = rail.lateral
+    i = np.clip(np.argmin(gap, axis=1), 1, u_r.size - 2)
+    rows = np.arange(shifts.size)
+    g0, g1, g2 = gap[rows, i - 1], gap[rows, i], gap[rows, i + 1]
+    curv = g0 - 2 * g1 + g2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        frac = np.where(np.isfinite(curv) & (curv > 0), 0.5 * (g0 - g2) / curv, 0.0)
+    frac = np.clip(frac, -0.5, 0.5)
+    step = u_r[1] - u_r[0]
+    ur = u_r[i] + frac * step
+    uw = ur + shifts + offset
+    slope = np.interp(ur, 0.5 * (u_r[1:] + u_r[:-1]), np.diff(rail.height) / step)
+    return uw, ur, wheel.radius_at(uw), -np.arctan(slope)
+
+
+_ROLL_ITERATIONS = 8  # the fixed point contracts by about 2|u_w|/T ≈ 0.05 per step: 0.05⁸ ≈ 4e-11 of φ
+
+
+def contact_geometry(
+    wheel: WheelProfile, rail: RailProfile, shifts, *, gauge=1.435, tape_distance=1.5, roll: bool = True
+) -> ContactGeometry:
+    """Contact points, rolling radii and contact angles of a wheelset for each lateral shift.
+
+    Each wheel touches its rail where the vertical gap is least. With
+    ``roll=True`` the wheelset also rolls by the angle φ that lets both wheels
+    touch at once: raising the left wheel by e_L(φ) and the right by e_R(φ)
+    needs φ = (e_L − e_R)/T (T the tape-circle distance), solved by fixed-point
+    iteration with the roll applied to first order (each wheel point rises by
+    φ times its lateral distance from the wheelset centre). With
+    ``roll=False`` each wheel is lowered on to its rail on its own; a cone then
+    gives Δr = 2λy exactly. The shift y is that of the wheels at rail level: a
+    rolled wheelset's axle centre sits r₀φ further to the right.
+
+    Parameters
+    ----------
+    wheel, rail : WheelProfile, RailProfile
+        The same profiles on both sides (mirror images).
+    shifts : float or array_like
+        Lateral shifts y (m), positive to the left.
+    gauge : float, keyword
+        Track gauge, between the gauge points 14 mm below the top (m); 1.435.
+    tape_distance : float, keyword
+        Distance between the tape circles of the wheelset (m); 1.5 for standard gauge.
+    roll : bool, keyword
+        Include the wheelset roll angle (default True).
+
+    Returns
+    -------
+    ContactGeometry
+    """
+    y = np.atleast_1d(_checks.array("shifts", shifts)).astype(float)
+    g = _checks.positive("gauge", gauge)
+    t = _checks.positive("tape_distance", tape_distance)
+    d = _offset(rail, g, t)
+    gap_l, u_l = _gap(wheel, rail, y, d)
+    gap_r, u_r = _gap(wheel, rail, -y, d)
+    phi = np.zeros_like(y)
+    if roll:
+        # A roll φ (left side up) lifts a left-wheel point at u_w by φ(T/2 − u_w) and lowers a
+        # right-wheel point by φ(T/2 − u_w); the T/2 parts are the rigid tilt of the axle.
+        for _ in range(_ROLL_ITERATIONS):
+            e_l = -np.min(gap_l - phi[:, None] * u_l, axis=1)
+            e_r = -np.min(gap_r + phi[:, None] * u_r, axis=1)
+            phi = (e_l - e_r) / t
+    left = _contact_on(gap_l - phi[:, None] * u_l, wheel, rail, y, d)
+    right = _contact_on(gap_r + phi[:, None] * u_r, wheel, rail, -y, d)
+    wheel_pos, rail_pos, radius, angle = (np.stack([lv, rv]) for lv, rv in zip(left, right, strict=True))
+    return ContactGeometry(y, wheel_pos, rail_pos, radius, angle, phi)
+
+
+def rolling_radius_difference(wheel: WheelProfile, rail: RailProfile, shifts, **kwargs) -> np.ndarray:
+    """Δr(y) = r_L − r_R (m) for each lateral shift y (m); keywords as :func:`contact_geometry`."""
+    return contact_geometry(wheel, rail, shifts, **kwargs).rolling_radius_difference
+
+
+def contact_angles(wheel: WheelProfile, rail: RailProfile, shifts, **kwargs) -> np.ndarray:
+    """Contact angles (δ_L, δ_R) (rad), shape (2, n), for each lateral shift y (m)."""
+    return contact_geometry(wheel, rail, shifts, **kwargs).contact_angle
+
+
+def equivalent_conicity(
+    wheel: WheelProfile, rail: RailProfile, amplitudes, *, samples: int = 256, **kwargs
+) -> np.ndarray:
+    """Equivalent conicity λ_e(A) by harmonic linearization of Δr(y).
+
+    For a sinusoidal lateral motion y = A sin θ the first Fourier component of
+    Δr(y)/2 defines the cone that would give the same wavelength:
+
+        λ_e(A) = (1/(2πA)) ∫₀^{2π} Δr(A sin θ) sin θ dθ,
+
+    so a cone of slope λ gives λ_e = λ for every A (the describing-function
+    method; cf. EN 15302, which fits the same quantity from the kinematic
+    wavelength).
+
+    Parameters
+    ----------
+    wheel, rail : WheelProfile, RailProfile
+    amplitudes : float or array_like
+        A (m), > 0.
+    samples : int, keyword
+        Points in θ of the quadrature (the rectangle rule, spectrally accurate
+        for a periodic integrand apart from the kinks of flange contact).
+    **kwargs
+        ``gauge``, ``tape_distance`` as :func:`contact_geometry`.
+
+    Returns
+    -------
+    ndarray
+        λ_e for each amplitude (dimensionless).
+    """
+    amp = np.atleast_1d(_checks.array("amplitudes", amplitudes, low=0.0, low_open=True))
+    table_y = np.linspace(-amp.max(), amp.max(), 801)
+    dr = rolling_radius_difference(wheel, rail, table_y, **kwargs)
+    return harmonic_conicity(table_y, dr, amp, samples=samples)
+
+
+def harmonic_conicity(shifts, delta_r, amplitudes, *, samples: int = 256) -> np.ndarray:
+    """Equivalent conicity from a tabulated Δr(y), by the harmonic linearization of
+    :func:`equivalent_conicity` (Δr interpolated linearly; the table must cover ±max(A)).
+
+    Parameters
+    ----------
+    shifts : array_like
+        y (m), increasing.
+    delta_r : array_like
+        Δr(y) (m), same length.
+    amplitudes : float or array_like
+        A (m), > 0, within the table.
+    samples : int, keyword
+        Points in θ of the quadrature.
+    """
+    y = _checks.array("shifts", shifts, ndim=1)
+    dr = _checks.array("delta_r", delta_r, shape=(y.size,))
+    amp = np.atleast_1d(_checks.array("amplitudes", amplitudes, low=0.0, low_open=True))
+    if amp.max() > max(-y[0], y[-1]) * (1 + 1e-12):
+        raise ValueError(f"amplitudes must lie within the table of shifts (±{max(-y[0], y[-1]):.4g} m)")
+    n = _checks.integer("samples", samples, low=8)
+    theta = 2 * np.pi * np.arange(n) / n
+    values = np.interp(amp[:, None] * np.sin(theta)[None, :], y, dr)
+    return (values * np.sin(theta)).mean(axis=1) / amp

@@ -1,0 +1,123 @@
+"""Chapter 4 figures: Hertz's m and n, the creep laws side by side, FASTSIM zones, profile geometry."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from raildyn import contact, plots
+from raildyn.figures import new_figure, register
+
+_G, _NU = 8.1e10, 0.3  # steel shear modulus (Pa) and Poisson ratio
+
+
+@register(
+    "fig4.hertz",
+    "Hertz's coefficients m and n against the angle θ, computed from the complete elliptic integrals, "
+    "with the points of the classic table (Timoshenko & Goodier; Garg & Dukkipati ch. 4).",
+    chapter=4,
+)
+def hertz_coefficients_figure() -> Figure:
+    fig = new_figure(figsize=(5.5, 3.8))
+    ax = fig.subplots()
+    theta = np.linspace(5.0, 90.0, 341)
+    m, n = contact.hertz_coefficients(np.radians(theta))
+    ax.plot(theta, m, color=plots.COLORS[0], label="m")
+    ax.plot(theta, n, color=plots.COLORS[1], label="n")
+    table = {30: (2.731, 0.493), 45: (1.926, 0.604), 60: (1.486, 0.717), 75: (1.202, 0.846), 90: (1.0, 1.0)}
+    ax.plot(
+        list(table), [v[0] for v in table.values()], "o", color=plots.COLORS[0], mfc="none", label="table"
+    )
+    ax.plot(list(table), [v[1] for v in table.values()], "o", color=plots.COLORS[1], mfc="none")
+    ax.set_yscale("log")
+    ax.set_xlabel("θ (deg), cos θ = |B − A|/(A + B)")
+    ax.set_ylabel("m, n")
+    ax.legend()
+    return fig
+
+
+@register(
+    "fig4.creep",
+    "Lateral creep force against lateral creepage for a = 6 mm, b = 4 mm, N = 100 kN, μ = 0.3, no spin: "
+    "Kalker's linear theory, Carter's 2-D law and Johnson–Vermeulen with the same initial slope, the "
+    "saturation of Shen, Hedrick and Elkins, Polach's method and FASTSIM.",
+    chapter=4,
+)
+def creep_laws_figure() -> Figure:
+    a, b, load, mu = 6e-3, 4e-3, 100e3, 0.3
+    f = contact.creep_coefficients(a, b, _G, _NU)
+    eta = np.linspace(0, 0.01, 201)
+    curves = {
+        "Kalker linear": contact.kalker_linear(0.0, eta, 0.0, f).fy,
+        "Carter (2-D)": contact.carter(eta, load, mu, f.f22),
+        "Johnson–Vermeulen": contact.johnson_vermeulen(0.0, eta, load, mu, f).fy,
+        "Shen–Hedrick–Elkins": contact.shen_hedrick_elkins(0.0, eta, 0.0, load, mu, f).fy,
+        "Polach": contact.polach(0.0, eta, 0.0, load, mu, a, b, _G, _NU).fy,
+        "FASTSIM": contact.fastsim(0.0, eta, 0.0, load, mu, a, b, _G, _NU, fields=False).fy,
+    }
+    fig = new_figure(figsize=(6.0, 4.0))
+    ax = fig.subplots()
+    for i, (name, force) in enumerate(curves.items()):
+        style = ":" if name == "Kalker linear" else "-"
+        ax.plot(100 * eta, -np.asarray(force) / (mu * load), style, color=plots.COLORS[i % 5], label=name)
+    ax.axhline(1.0, color="0.5", lw=0.8)
+    ax.set_ylim(0, 1.4)
+    ax.set_xlabel("lateral creepage η (%)")
+    ax.set_ylabel("−F_y/(μN)")
+    ax.legend(loc="lower right")
+    return fig
+
+
+@register(
+    "fig4.fastsim",
+    "FASTSIM traction over the contact ellipse (a = 6 mm, b = 4 mm, N = 100 kN, μ = 0.3) for ξ = 1 ‰, "
+    "η = 0.5 ‰: adhesion at the leading edge (right), slip at the trailing edge.",
+    chapter=4,
+)
+def fastsim_figure() -> Figure:
+    r = contact.fastsim(1e-3, 0.5e-3, 0.0, 100e3, 0.3, 6e-3, 4e-3, _G, _NU, n_x=24, n_y=24)
+    fig = new_figure(figsize=(6.0, 3.8))
+    ax = fig.subplots()
+    x, y = 1e3 * r.x.ravel(), 1e3 * r.y.ravel()
+    stick = r.adhesion.ravel()
+    ax.scatter(x[stick], y[stick], s=12, color=plots.COLORS[0], label="adhesion")
+    ax.scatter(x[~stick], y[~stick], s=12, color=plots.COLORS[1], label="slip")
+    k = 4.0 / 3 / (0.3 * r.pz.max())
+    ax.quiver(x, y, k * r.px.ravel(), k * r.py.ravel(), angles="xy", scale_units="xy", scale=1.0, width=0.003)
+    t = np.linspace(0, 2 * math.pi, 200)
+    ax.plot(6 * np.cos(t), 4 * np.sin(t), color="0.4", lw=1)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, rolling direction (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.legend(loc="upper left", ncol=2)
+    ax.set_title(f"F_x = {r.fx / 1e3:.1f} kN, F_y = {r.fy / 1e3:.1f} kN")
+    return fig
+
+
+@register(
+    "fig4.profiles",
+    "Rolling-radius difference Δr(y) and equivalent conicity λ_e(A) of the 1:20 and 1:40 cones and of "
+    "S1002 on 60E1 rails inclined at 1:40 (gauge 1435 mm, tape circles 1500 mm apart).",
+    chapter=4,
+)
+def profiles_figure() -> Figure:
+    rail = contact.uic60_rail(1 / 40)
+    wheels = [contact.conical_wheel(1 / 20), contact.conical_wheel(1 / 40), contact.s1002_wheel()]
+    y = np.linspace(-10e-3, 10e-3, 401)
+    amp = np.linspace(0.5e-3, 10e-3, 39)
+    fig = new_figure(figsize=(8.0, 3.4))
+    ax_r, ax_l = fig.subplots(1, 2)
+    for i, wheel in enumerate(wheels):
+        dr = contact.rolling_radius_difference(wheel, rail, y)
+        ax_r.plot(1e3 * y, 1e3 * dr, color=plots.COLORS[i], label=wheel.name)
+        ax_l.plot(
+            1e3 * amp, contact.equivalent_conicity(wheel, rail, amp), color=plots.COLORS[i], label=wheel.name
+        )
+    ax_r.set_xlabel("lateral shift y (mm)")
+    ax_r.set_ylabel("Δr (mm)")
+    ax_r.legend()
+    ax_l.set_xlabel("amplitude A (mm)")
+    ax_l.set_ylabel("equivalent conicity λ_e")
+    return fig

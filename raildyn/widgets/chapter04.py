@@ -1,0 +1,356 @@
+"""Chapter 4 widgets: the Hertz ellipse, creep laws side by side, the FASTSIM patch, profile geometry.
+
+Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
+models are in :mod:`raildyn.contact`; this module turns control values (kN, mm,
+‰) into SI model calls and moves the artists.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import ipywidgets as widgets
+import numpy as np
+
+from raildyn import contact, plots
+from raildyn.widgets._core import Recipe, slider
+
+_YOUNG, _NU = 2.1e11, 0.3  # steel (Pa, –)
+_SHEAR = _YOUNG / (2 * (1 + _NU))
+
+
+# ---------------------------------------------------------------- Hertz ellipse and pressure
+
+
+def _hertz_controls():
+    return {
+        "load_kn": slider("wheel load N (kN)", 100.0, 10.0, 200.0, 5.0, fmt=".0f"),
+        "wheel_radius_mm": slider("wheel rolling radius (mm)", 460.0, 300.0, 600.0, 10.0, fmt=".0f"),
+        "rail_radius_mm": slider("rail crown radius (mm)", 300.0, 80.0, 600.0, 10.0, fmt=".0f"),
+    }
+
+
+def _hertz_setup(live, status):
+    ax_e, ax_p = live.axes[0]
+    t = np.linspace(0, 2 * np.pi, 200)
+    (ellipse,) = ax_e.plot(np.cos(t), np.sin(t), color=plots.COLORS[0])
+    ax_e.set_xlim(-12, 12)
+    ax_e.set_ylim(-9, 9)
+    ax_e.set_aspect("equal")
+    ax_e.set_xlabel("x, rolling direction (mm)")
+    ax_e.set_ylabel("y, across the rail (mm)")
+    s = np.linspace(-1, 1, 201)
+    (p_x,) = ax_p.plot(s, s, color=plots.COLORS[0], label="along x (y = 0)")
+    (p_y,) = ax_p.plot(s, s, color=plots.COLORS[1], ls="--", label="along y (x = 0)")
+    ax_p.set_xlim(-12, 12)
+    ax_p.set_ylim(0, 2000)
+    ax_p.set_xlabel("distance from the centre (mm)")
+    ax_p.set_ylabel("pressure p (MPa)")
+    ax_p.legend(loc="upper right")
+    live.animate(ellipse, p_x, p_y)
+
+    def redraw(v):
+        c = contact.hertz_contact(
+            v["load_kn"] * 1e3, v["wheel_radius_mm"] * 1e-3, math.inf, v["rail_radius_mm"] * 1e-3, _YOUNG, _NU
+        )
+        ellipse.set_data(1e3 * c.a * np.cos(t), 1e3 * c.b * np.sin(t))
+        p_x.set_data(1e3 * c.a * s, 1e-6 * c.pressure(c.a * s, 0.0))
+        p_y.set_data(1e3 * c.b * s, 1e-6 * c.pressure(0.0, c.b * s))
+        status.value = (
+            f"a = {1e3 * c.a:.2f} mm, b = {1e3 * c.b:.2f} mm, a/b = {c.a_over_b:.3f} · θ = "
+            f"{math.degrees(c.theta):.1f}°, m = {c.m:.3f}, n = {c.n:.3f} · "
+            f"p₀ = {1e-6 * c.peak_pressure:.0f} MPa"
+            f" · δ = {1e6 * c.approach:.1f} µm · k = {1e-9 * c.stiffness:.2f} kN/µm"
+        )
+
+    return redraw
+
+
+HERTZ = Recipe(
+    _hertz_controls,
+    _hertz_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (9.0, 3.4)},
+    static={"rail_radius_mm": [80.0, 120.0, 160.0, 200.0, 250.0, 300.0, 400.0, 500.0, 600.0]},
+    title="Hertz contact ellipse and pressure of a conical wheel on a rail head",
+)
+
+
+def hertz():
+    """Hertz ellipse (left) and the pressure along its axes (right) for a conical tread on a rail.
+
+    Controls: wheel load (kN), wheel rolling radius and rail crown radius (mm).
+    The status line gives a, b, θ, Hertz's m and n, p₀, the approach and the
+    linearized normal stiffness.
+    """
+    return HERTZ.build()
+
+
+# ---------------------------------------------------------------- creep laws side by side
+
+
+def _creep_controls():
+    return {
+        "a_over_b": slider("a/b", 1.0, 0.2, 5.0, 0.05),
+        "spin": slider("spin φ (1/m)", 0.0, 0.0, 2.0, 0.05),
+        "friction": slider("friction μ", 0.3, 0.1, 0.6, 0.01),
+        "load_kn": slider("wheel load N (kN)", 100.0, 20.0, 200.0, 5.0, fmt=".0f"),
+    }
+
+
+def _ellipse(load, a_over_b):
+    """Semi-axes with ratio a/b and the area of the circular Hertz contact of radius-460-mm bodies."""
+    c = contact.hertz_contact(load, 0.46, 0.46, math.inf, _YOUNG, _NU)  # circle: a = b
+    size = math.sqrt(c.a * c.b)
+    return size * math.sqrt(a_over_b), size / math.sqrt(a_over_b)
+
+
+_CREEP_LAWS = (
+    "Kalker linear",
+    "Carter (2-D)",
+    "Johnson–Vermeulen",
+    "Shen–Hedrick–Elkins",
+    "Polach",
+    "FASTSIM",
+)
+
+
+def _creep_setup(live, status):
+    (ax,) = live.axes[0]
+    eta = np.linspace(0.0, 0.01, 81)
+    lines = {}
+    styles = dict(zip(_CREEP_LAWS, (":", "-", "-", "--", "-.", "o"), strict=True))
+    for i, name in enumerate(_CREEP_LAWS):
+        colour = "k" if name == "Kalker linear" else plots.COLORS[(i - 1) % len(plots.COLORS)]
+        style = styles[name]
+        kw = {"ms": 3} if style == "o" else {}
+        (lines[name],) = ax.plot(eta * 100, eta, style, color=colour, label=name, **kw)
+    ax.axhline(1.0, color="0.5", lw=0.8)
+    ax.set_xlim(0, 1.0)
+    ax.set_ylim(0, 1.4)
+    ax.set_xlabel("lateral creepage η (%)")
+    ax.set_ylabel("lateral creep force −F_y/(μN)")
+    ax.legend(loc="lower right", ncol=2)
+    live.animate(*lines.values())
+
+    def redraw(v):
+        load, mu, phi = v["load_kn"] * 1e3, v["friction"], v["spin"]
+        a, b = _ellipse(load, v["a_over_b"])
+        f = contact.creep_coefficients(a, b, _SHEAR, _NU)
+        scale = -1.0 / (mu * load)
+        curves = {
+            "Kalker linear": contact.kalker_linear(0.0, eta, phi, f).fy,
+            "Carter (2-D)": contact.carter(eta, load, mu, f.f22),
+            "Johnson–Vermeulen": contact.johnson_vermeulen(0.0, eta, load, mu, f).fy,
+            "Shen–Hedrick–Elkins": contact.shen_hedrick_elkins(0.0, eta, phi, load, mu, f).fy,
+            "Polach": contact.polach(0.0, eta, phi, load, mu, a, b, _SHEAR, _NU).fy,
+            "FASTSIM": contact.fastsim(0.0, eta, phi, load, mu, a, b, _SHEAR, _NU, fields=False).fy,
+        }
+        for name, force in curves.items():
+            lines[name].set_ydata(scale * np.asarray(force))
+        status.value = (
+            f"a = {1e3 * a:.2f} mm, b = {1e3 * b:.2f} mm · f₂₂ = {f.f22 / 1e6:.2f} MN, "
+            f"f₂₃ = {f.f23 / 1e3:.2f} kN m · μN = {mu * load / 1e3:.1f} kN "
+            "(Carter and Johnson–Vermeulen take no spin)"
+        )
+
+    return redraw
+
+
+CREEP_LAWS = Recipe(
+    _creep_controls,
+    _creep_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (7.5, 4.2)},
+    static={"spin": [0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0], "a_over_b": [0.3, 1.0, 3.0]},
+    title="Lateral creep force against lateral creepage for six theories",
+)
+
+
+def creep_laws():
+    """Lateral creep force against creepage for Kalker linear, Carter, JV, SHE, Polach and FASTSIM.
+
+    Controls: a/b, spin φ (1/m), friction μ and wheel load (kN); the ellipse
+    area is that of Hertz's circular contact for 460 mm radii in both directions. Forces are
+    shown as −F_y/(μN), so the saturation level is 1.
+    """
+    return CREEP_LAWS.build()
+
+
+# ---------------------------------------------------------------- FASTSIM traction over the patch
+
+
+def _patch_controls():
+    return {
+        "xi_permille": slider("ξ (‰)", 1.0, -5.0, 5.0, 0.1, fmt=".1f"),
+        "eta_permille": slider("η (‰)", 0.5, -5.0, 5.0, 0.1, fmt=".1f"),
+        "spin": slider("spin φ (1/m)", 0.0, -2.0, 2.0, 0.05),
+        "friction": slider("friction μ", 0.3, 0.1, 0.6, 0.01),
+    }
+
+
+_PATCH = {"load": 100e3, "a": 6e-3, "b": 4e-3, "n": 16}
+
+
+def _patch_setup(live, status):
+    ax_f, ax_s = live.axes[0]
+    n = _PATCH["n"]
+    t = np.linspace(0, 2 * np.pi, 200)
+    a_mm, b_mm = 1e3 * _PATCH["a"], 1e3 * _PATCH["b"]
+    ax_f.plot(a_mm * np.cos(t), b_mm * np.sin(t), color="0.4", lw=1)
+    stick = ax_f.scatter([], [], s=14, color=plots.COLORS[0], label="adhesion")
+    slip = ax_f.scatter([], [], s=14, color=plots.COLORS[1], label="slip")
+    zeros = np.zeros(n * n)
+    arrows = ax_f.quiver(zeros, zeros, zeros, zeros, angles="xy", scale_units="xy", scale=1.0, width=0.004)
+    ax_f.set_xlim(-1.15 * a_mm, 1.15 * a_mm)
+    ax_f.set_ylim(-1.3 * b_mm, 1.3 * b_mm)
+    ax_f.set_aspect("equal")
+    ax_f.set_xlabel("x, rolling direction (mm) — leading edge at right")
+    ax_f.set_ylabel("y (mm)")
+    ax_f.legend(loc="upper left", ncol=2)
+    x_line = np.linspace(-a_mm, a_mm, n)
+    (bound_up,) = ax_s.plot(x_line, x_line, color="0.5", lw=1, label="±μp_z")
+    (bound_dn,) = ax_s.plot(x_line, x_line, color="0.5", lw=1)
+    (trac_x,) = ax_s.plot(x_line, x_line, "o-", ms=3, color=plots.COLORS[0], label="p_x")
+    (trac_y,) = ax_s.plot(x_line, x_line, "s-", ms=3, color=plots.COLORS[2], label="p_y")
+    ax_s.set_xlim(-a_mm, a_mm)
+    ax_s.set_ylim(-800, 800)
+    ax_s.set_xlabel("x along the centre strip (mm)")
+    ax_s.set_ylabel("traction (MPa)")
+    ax_s.legend(loc="lower left", ncol=3)
+    live.animate(stick, slip, arrows, bound_up, bound_dn, trac_x, trac_y)
+
+    def redraw(v):
+        r = contact.fastsim(
+            v["xi_permille"] * 1e-3,
+            v["eta_permille"] * 1e-3,
+            v["spin"],
+            _PATCH["load"],
+            v["friction"],
+            _PATCH["a"],
+            _PATCH["b"],
+            _SHEAR,
+            _NU,
+            n_x=n,
+            n_y=n,
+        )
+        xy = np.c_[1e3 * r.x.ravel(), 1e3 * r.y.ravel()]
+        sticks = r.adhesion.ravel()
+        stick.set_offsets(xy[sticks] if sticks.any() else np.empty((0, 2)))
+        slip.set_offsets(xy[~sticks] if (~sticks).any() else np.empty((0, 2)))
+        # Arrows: traction scaled so that μ p₀ spans a third of the semi-axis b.
+        peak = max(v["friction"] * r.pz.max(), 1.0)
+        k = b_mm / 3 / peak
+        arrows.set_offsets(xy)
+        arrows.set_UVC(k * r.px.ravel(), k * r.py.ravel())
+        mid = n // 2
+        xs = 1e3 * r.x[mid]
+        bound = 1e-6 * v["friction"] * r.pz[mid]
+        bound_up.set_data(xs, bound)
+        bound_dn.set_data(xs, -bound)
+        trac_x.set_data(xs, 1e-6 * r.px[mid])
+        trac_y.set_data(xs, 1e-6 * r.py[mid])
+        status.value = (
+            f"F_x = {r.fx / 1e3:.1f} kN, F_y = {r.fy / 1e3:.1f} kN, M_z = {r.mz:.1f} N m · "
+            f"|F|/μN = {math.hypot(r.fx, r.fy) / (v['friction'] * _PATCH['load']):.3f} · adhesion on "
+            f"{100 * r.adhesion_fraction:.0f} % of the area"
+        )
+
+    return redraw
+
+
+FASTSIM_PATCH = Recipe(
+    _patch_controls,
+    _patch_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (9.5, 3.6)},
+    static={"xi_permille": [-3.0, -1.0, 0.0, 0.3, 0.6, 1.0, 1.5, 2.0, 3.0, 5.0]},
+    title="FASTSIM traction over the contact ellipse, with the adhesion and slip zones",
+)
+
+
+def fastsim_patch():
+    """Traction over the contact ellipse by FASTSIM with its adhesion (blue) and slip (red) cells.
+
+    N = 100 kN, a = 6 mm, b = 4 mm. Controls: ξ and η (‰), spin φ (1/m),
+    friction μ. Right: the traction along the centre strip against the
+    traction bound ±μp_z; the adhesion zone is where the traction stays inside.
+    """
+    return FASTSIM_PATCH.build()
+
+
+# ---------------------------------------------------------------- profile geometry
+
+_WHEELS = {
+    "cone 1:20": lambda: contact.conical_wheel(1 / 20),
+    "cone 1:40": lambda: contact.conical_wheel(1 / 40),
+}
+_WHEELS["S1002"] = contact.s1002_wheel
+_RAILS = {"60E1 at 1:40": 1 / 40, "60E1 at 1:20": 1 / 20}
+_SHIFTS = np.linspace(-10e-3, 10e-3, 121)  # 1/6 mm steps: fine for Δr, fast for a slider
+_AMPLITUDES = np.linspace(0.5e-3, 10e-3, 39)
+
+
+@functools.lru_cache(maxsize=16)
+def _geometry(wheel_name: str, rail_name: str, gauge_mm: float):
+    wheel = _WHEELS[wheel_name]()
+    rail = contact.uic60_rail(_RAILS[rail_name])
+    g = contact.contact_geometry(wheel, rail, _SHIFTS, gauge=gauge_mm * 1e-3)
+    lam = contact.harmonic_conicity(_SHIFTS, g.rolling_radius_difference, _AMPLITUDES)
+    return g.rolling_radius_difference, g.contact_angle[0], lam
+
+
+def _profile_controls():
+    return {
+        "wheel": widgets.Dropdown(options=list(_WHEELS), value="S1002", description="wheel"),
+        "rail": widgets.Dropdown(options=list(_RAILS), value="60E1 at 1:40", description="rail"),
+        "gauge_mm": widgets.Dropdown(
+            options=[1432.0, 1435.0, 1437.0, 1440.0], value=1435.0, description="gauge"
+        ),
+    }
+
+
+def _profile_setup(live, status):
+    ax_r, ax_d, ax_l = live.axes[0]
+    y_mm = 1e3 * _SHIFTS
+    (dr,) = ax_r.plot(y_mm, y_mm, color=plots.COLORS[0])
+    ax_r.set_xlim(-10, 10)
+    ax_r.set_ylim(-20, 20)
+    ax_r.set_xlabel("lateral shift y (mm)")
+    ax_r.set_ylabel("Δr = r_L − r_R (mm)")
+    (ang,) = ax_d.plot(y_mm, y_mm, color=plots.COLORS[1])
+    ax_d.set_xlim(-10, 10)
+    ax_d.set_ylim(0, 75)
+    ax_d.set_xlabel("lateral shift y (mm)")
+    ax_d.set_ylabel("left contact angle δ_L (deg)")
+    amp_mm = 1e3 * _AMPLITUDES
+    (lam,) = ax_l.plot(amp_mm, amp_mm, color=plots.COLORS[2])
+    ax_l.set_xlim(0, 10)
+    ax_l.set_ylim(0, 0.6)
+    ax_l.set_xlabel("amplitude A (mm)")
+    ax_l.set_ylabel("equivalent conicity λ_e")
+    live.animate(dr, ang, lam)
+
+    def redraw(v):
+        delta_r, angle, conicity = _geometry(v["wheel"], v["rail"], float(v["gauge_mm"]))
+        dr.set_ydata(1e3 * delta_r)
+        ang.set_ydata(np.degrees(angle))
+        lam.set_ydata(conicity)
+        i3 = int(np.argmin(np.abs(_AMPLITUDES - 3e-3)))
+        status.value = (
+            f"λ_e(3 mm) = {conicity[i3]:.3f} · largest contact angle {np.degrees(angle).max():.1f}°"
+        )
+
+    return redraw
+
+
+PROFILES = Recipe(
+    _profile_controls,
+    _profile_setup,
+    {"nrows": 1, "ncols": 3, "figsize": (10.0, 3.3)},
+    static={"wheel": list(_WHEELS), "rail": list(_RAILS)},
+    title="Rolling-radius difference, contact angle and equivalent conicity of wheel–rail pairs",
+)
+
+
+def profiles():
+    """Δr(y), the left contact angle and the equivalent conicity for a chosen wheel, rail and gauge."""
+    return PROFILES.build()

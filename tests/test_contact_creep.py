@@ -1,0 +1,218 @@
+"""Tests of raildyn.contact.creep (book chapter 4): Kalker's table and the creep-force laws.
+
+Tiers: Kalker's table at its own points (Kalker 1990 Table E.3, as in Garg &
+Dukkipati 1984 ch. 4) and its known asymptotes; closed forms (Carter, the
+small-creepage limits); properties (saturation at μN, monotonicity); bad input.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from raildyn.contact import (
+    KALKER_NU,
+    carter,
+    carter_coefficient,
+    creep_coefficients,
+    johnson_vermeulen,
+    kalker_coefficients,
+    kalker_linear,
+    polach,
+    shen_hedrick_elkins,
+    wheelset_creepages,
+)
+
+PROPERTY = settings(max_examples=50, deadline=None)
+
+# A few rows of Kalker's table as printed (Kalker 1990 Table E.3; Garg & Dukkipati 1984 ch. 4),
+# typed again here from the source, independently of the module: (a/b, ν) → (C11, C22, C23, C33).
+TABLE_POINTS = {
+    (0.1, 0.0): (2.51, 2.51, 0.334, 6.42),
+    (0.1, 0.5): (4.85, 2.53, 0.731, 11.7),
+    (0.5, 0.25): (3.62, 3.01, 0.929, 1.93),
+    (0.8, 0.25): (3.91, 3.41, 1.25, 1.37),
+    (1.0, 0.0): (3.40, 3.40, 1.33, 1.21),
+    (1.0, 0.25): (4.12, 3.67, 1.47, 1.19),
+    (1.0, 0.5): (5.20, 3.98, 1.63, 1.16),
+    (1 / 0.6, 0.5): (5.80, 5.04, 2.50, 0.751),
+    (2.0, 0.25): (5.10, 4.90, 2.62, 0.819),
+    (1 / 0.3, 0.0): (5.57, 5.57, 3.79, 0.868),
+    (10.0, 0.25): (11.7, 12.8, 14.6, 0.526),
+    (10.0, 0.5): (12.9, 16.0, 18.0, 0.228),
+}
+
+
+@pytest.mark.parametrize("point", sorted(TABLE_POINTS), ids=str)
+def test_kalker_coefficients_reproduce_the_table(point):
+    c = kalker_coefficients(*point)
+    # The interpolation passes through the table: only rounding differs (1e-12).
+    assert (c.c11, c.c22, c.c23, c.c33) == pytest.approx(TABLE_POINTS[point], rel=1e-12)
+
+
+def test_every_table_row_is_reproduced_vectorized():
+    g = np.arange(1, 11) / 10
+    ratios = np.r_[g, 1 / g[::-1]]
+    for nu in KALKER_NU:
+        c = kalker_coefficients(ratios, nu)
+        assert c.c11.shape == ratios.shape
+        # Symmetry of the table at ν = 0: C11 = C22 for every a/b (Kalker 1967).
+        if nu == 0.0:
+            np.testing.assert_allclose(c.c11, c.c22, rtol=1e-12)
+
+
+def test_kalker_table_near_its_thin_ellipse_asymptote():
+    # Kalker's asymptote for a/b → 0: C11 → π²/(4(1−ν)), C22 → π²/4 (Kalker 1990 App. E;
+    # the same limits are coded in CONTACT's linrol). At a/b = 0.1 the table is within 3 %.
+    for nu in KALKER_NU:
+        c = kalker_coefficients(0.1, nu)
+        assert c.c11 == pytest.approx(math.pi**2 / (4 * (1 - nu)), rel=0.03)
+        assert c.c22 == pytest.approx(math.pi**2 / 4, rel=0.03)
+
+
+@given(st.floats(0.1, 10.0), st.floats(0.0, 0.5))
+@PROPERTY
+def test_coefficients_are_positive_and_continuous(ratio, nu):
+    c = kalker_coefficients(ratio, nu)
+    near = kalker_coefficients(min(ratio * (1 + 1e-6), 10.0), nu)
+    for name in ("c11", "c22", "c23", "c33"):
+        value = getattr(c, name)
+        assert value > 0
+        # Piecewise linear in a/b with slopes below 100 per unit: a 1e-6 step moves < 1e-3.
+        assert abs(getattr(near, name) - value) < 1e-3
+
+
+def test_creep_coefficients_scale_with_the_ellipse():
+    a, b, g, nu = 6e-3, 4e-3, 8.1e10, 0.3
+    f = creep_coefficients(a, b, g, nu)
+    c = kalker_coefficients(a / b, nu)
+    # Definitions f11 = Gab C11 ... (Kalker 1967): equal up to rounding.
+    assert f.f11 == pytest.approx(g * a * b * c.c11, rel=1e-14)
+    assert f.f22 == pytest.approx(g * a * b * c.c22, rel=1e-14)
+    assert f.f23 == pytest.approx(g * (a * b) ** 1.5 * c.c23, rel=1e-14)
+    assert f.f33 == pytest.approx(g * (a * b) ** 2 * c.c33, rel=1e-14)
+    arr = creep_coefficients(np.array([a, 2 * a]), b, g, nu)
+    assert arr.f11.shape == (2,) and arr.f11[0] == pytest.approx(f.f11)
+
+
+def test_linear_theory_signs_follow_kalker():
+    f = creep_coefficients(6e-3, 4e-3)
+    r = kalker_linear(1e-3, 2e-3, 0.1, f)
+    assert r.fx == pytest.approx(-f.f11 * 1e-3)
+    assert r.fy == pytest.approx(-f.f22 * 2e-3 - f.f23 * 0.1)
+    assert r.mz == pytest.approx(f.f23 * 2e-3 - f.f33 * 0.1)
+
+
+def test_carter_closed_form_and_its_saturation():
+    n, mu, r, a = 1e5, 0.3, 0.46, 6e-3
+    f = carter_coefficient(n, r, a)
+    assert f == pytest.approx(2 * n * r / a)
+    xi = np.linspace(-0.01, 0.01, 2001)
+    force = carter(xi, n, mu, f)
+    u = r * xi / (mu * a)
+    inside = np.abs(u) < 1
+    # Carter (1926): F/μN = −sign(u)(1 − (1 − |u|)²) inside, full sliding beyond; exact algebra.
+    np.testing.assert_allclose(
+        force[inside], -mu * n * np.sign(u[inside]) * (1 - (1 - np.abs(u[inside])) ** 2)
+    )
+    np.testing.assert_allclose(force[~inside], -mu * n * np.sign(u[~inside]))
+    assert np.all(np.diff(force) <= 1e-9)  # non-increasing in ξ
+
+
+@given(st.floats(0.0, 0.05), st.floats(0.0, 0.05), st.floats(0.05, 0.6))
+@PROPERTY
+def test_johnson_vermeulen_and_she_are_bounded_and_start_on_the_linear_theory(xi, eta, mu):
+    n = 1e5
+    f = creep_coefficients(6e-3, 4e-3)
+    jv = johnson_vermeulen(xi, eta, n, mu, f)
+    she = shen_hedrick_elkins(xi, eta, 0.0, n, mu, f)
+    # Bounded by μN up to rounding.
+    assert math.hypot(jv.fx, jv.fy) <= mu * n * (1 + 1e-12)
+    assert math.hypot(she.fx, she.fy) <= mu * n * (1 + 1e-12)
+    # Monotone: more creepage in the same direction never lowers the resultant.
+    jv2 = johnson_vermeulen(xi * 1.1 + 1e-7, eta * 1.1, n, mu, f)
+    she2 = shen_hedrick_elkins(xi * 1.1 + 1e-7, eta * 1.1, 0.0, n, mu, f)
+    assert jv2.resultant >= jv.resultant - 1e-9 * n
+    assert she2.resultant >= she.resultant - 1e-9 * n
+
+
+def test_saturated_laws_tend_to_the_linear_theory_and_to_mu_n():
+    n, mu = 1e5, 0.3
+    f = creep_coefficients(6e-3, 4e-3)
+    small = 1e-7
+    lin = kalker_linear(small, 0.0, 0.0, f)
+    # At β = f11 ξ/(μN) ≈ 3e-5 the saturation factors differ from 1 by O(β): 1e-4.
+    assert johnson_vermeulen(small, 0.0, n, mu, f).fx == pytest.approx(lin.fx, rel=1e-4)
+    assert shen_hedrick_elkins(small, 0.0, 0.0, n, mu, f).fx == pytest.approx(lin.fx, rel=1e-4)
+    assert polach(small, 0.0, 0.0, n, mu, 6e-3, 4e-3).fx == pytest.approx(lin.fx, rel=1e-4)
+    big = 0.5
+    assert johnson_vermeulen(big, 0.0, n, mu, f).fx == pytest.approx(-mu * n, rel=1e-12)
+    assert shen_hedrick_elkins(big, 0.0, 0.0, n, mu, f).fx == pytest.approx(-mu * n, rel=1e-12)
+    # Polach's arctan approaches μQ like 1 − 4/(πε): at ε ≈ 5e3 within 3e-4.
+    assert polach(big, 0.0, 0.0, n, mu, 6e-3, 4e-3).fx == pytest.approx(-mu * n, rel=3e-4)
+
+
+def test_polach_spin_term_matches_the_linear_theory_at_small_spin():
+    # Polach (2000) built ε_M so that the spin force starts with Kalker's f23 φ.
+    a, b, n, mu = 6e-3, 4e-3, 1e5, 0.3
+    f = creep_coefficients(a, b)
+    phi = 1e-4
+    r = polach(0.0, 0.0, phi, n, mu, a, b)
+    # K_M = −(2/3)ε_M + O(ε_M³) with ε_M ≈ 1e-4 here: 1e-6 relative is generous.
+    assert r.fy == pytest.approx(-f.f23 * phi, rel=1e-6)
+    assert r.mz is None
+
+
+def test_polach_closed_form_for_pure_longitudinal_creepage():
+    # Pure ξ: F = (2Qμ/π)(ε/(1+ε²) + arctan ε), ε = GπabC11ξ/(4Qμ) (Polach 1999, eq. 7).
+    a, b, q, mu, g = 6e-3, 4e-3, 1e5, 0.3, 8.1e10
+    c11 = kalker_coefficients(a / b, 0.3).c11
+    for xi in (1e-4, 1e-3, 1e-2):
+        eps = g * math.pi * a * b * c11 * xi / (4 * q * mu)
+        expected = -2 * q * mu / math.pi * (eps / (1 + eps**2) + math.atan(eps))
+        assert polach(xi, 0.0, 0.0, q, mu, a, b, g).fx == pytest.approx(expected, rel=1e-12)
+
+
+@given(st.floats(1e-5, 0.05), st.floats(0.05, 0.6))
+@PROPERTY
+def test_polach_is_bounded_by_mu_q(xi, mu):
+    r = polach(xi, xi / 2, 0.0, 1e5, mu, 6e-3, 4e-3)
+    # The bracket ε/(1+ε²) + arctan ε never exceeds π/2.
+    assert r.resultant <= mu * 1e5 * (1 + 1e-12)
+
+
+def test_wheelset_creepages_of_a_shifted_coned_wheelset():
+    # A cone of slope λ shifted by y: r_L,R = r0 ± λy, so ξ_L,R = ∓λy/r0 (book ch. 5), η = −ψ.
+    lam, y, r0, v = 0.05, 2e-3, 0.46, 30.0
+    c = wheelset_creepages(v, 0.0, 1e-3, 0.0, r0 + lam * y, r0 - lam * y, r0, 0.75, lam, lam)
+    assert c.longitudinal[0] == pytest.approx(-lam * y / r0)
+    assert c.longitudinal[1] == pytest.approx(lam * y / r0)
+    assert c.lateral[0] == pytest.approx(-1e-3)
+    assert c.spin[0] == pytest.approx(-math.sin(lam) / (r0 + lam * y))
+    assert c.spin[1] == pytest.approx(math.sin(lam) / (r0 - lam * y))
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="a_over_b"):
+        kalker_coefficients(0.05, 0.3)
+    with pytest.raises(ValueError, match="a_over_b"):
+        kalker_coefficients(12.0, 0.3)
+    with pytest.raises(ValueError, match="poisson_ratio"):
+        kalker_coefficients(1.0, 0.6)
+    with pytest.raises(ValueError, match="poisson_ratio"):
+        kalker_coefficients(1.0, -0.1)
+    f = creep_coefficients(6e-3, 4e-3)
+    with pytest.raises(ValueError, match="friction"):
+        johnson_vermeulen(0.01, 0.0, 1e5, 0.0, f)
+    with pytest.raises(ValueError, match="friction"):
+        shen_hedrick_elkins(0.01, 0.0, 0.0, 1e5, -0.1, f)
+    with pytest.raises(ValueError, match="normal_load"):
+        polach(0.01, 0.0, 0.0, -1e5, 0.3, 6e-3, 4e-3)
+    with pytest.raises(ValueError, match="normal_load"):
+        carter(0.01, -5.0, 0.3, 1e7)
+    with pytest.raises(ValueError, match="a"):
+        creep_coefficients(-1e-3, 4e-3)
+    with pytest.raises(ValueError, match="speed"):
+        wheelset_creepages(0.0, 0, 0, 0, 0.46, 0.46, 0.46, 0.75)
