@@ -1,0 +1,164 @@
+"""Chapter 5 widgets: Klingel's kinematic oscillation, and the suspended wheelset's roots against speed.
+
+Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
+models are :mod:`raildyn.wheelset` and :mod:`raildyn.stability`; this module only
+turns control values into model calls and moves artists.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from raildyn import plots, stability, wheelset
+from raildyn.widgets._core import Recipe, slider
+
+_DISTANCE = np.linspace(0.0, 120.0, 1200)  # m of track: a fixed axis keeps the cached picture valid
+
+
+def _klingel_controls():
+    return {
+        "conicity": slider("conicity λ", 0.15, 0.02, 0.5, 0.01),
+        "rolling_radius_mm": slider("r₀ (mm)", 460.0, 300.0, 600.0, 5.0, fmt=".0f"),
+        "semi_wheelbase": slider("bogie b (m)", 1.28, 0.5, 2.0, 0.02),
+    }
+
+
+def _klingel_setup(live, status):
+    (ax,) = live.axes[0]
+    a = 0.75  # m, half the distance between the contact points
+    (free,) = ax.plot(_DISTANCE, 0 * _DISTANCE, color=plots.COLORS[0], label="free wheelset (Klingel)")
+    (bogie,) = ax.plot(_DISTANCE, 0 * _DISTANCE, color=plots.COLORS[1], ls="--", label="rigid bogie")
+    ax.set_xlim(0, _DISTANCE[-1])
+    ax.set_ylim(-6.5, 6.5)
+    ax.set_xlabel("distance along the track $x$ (m)")
+    ax.set_ylabel("lateral displacement $y$ (mm)")
+    ax.legend(loc="upper right")
+    live.animate(free, bogie)
+
+    def redraw(v):
+        r0 = v["rolling_radius_mm"] / 1000.0
+        L = wheelset.kinematic_wavelength(r0, a, v["conicity"])
+        Lb = wheelset.rigid_bogie_wavelength(r0, a, v["conicity"], v["semi_wheelbase"])
+        free.set_ydata(5.0 * np.sin(2 * np.pi * _DISTANCE / L))
+        bogie.set_ydata(5.0 * np.sin(2 * np.pi * _DISTANCE / Lb))
+        status.value = (
+            f"Klingel wavelength 2π√(r₀a/λ) = {L:.2f} m · rigid bogie 2π√(r₀a/λ·(1+b²/a²)) = {Lb:.2f} m "
+            f"· at 100 km/h the wheelset sways at {100 / 3.6 / L:.2f} Hz"
+        )
+
+    return redraw
+
+
+KLINGEL = Recipe(
+    _klingel_controls,
+    _klingel_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (8.0, 3.2)},
+    static={"conicity": [0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5]},
+    title="Kinematic oscillation of a free wheelset and of a rigid bogie",
+)
+
+
+def klingel():
+    """The kinematic (Klingel) path of a coned wheelset and of a rigid two-axle bogie.
+
+    Controls: conicity λ, rolling radius r₀ (mm) and the bogie's half wheelbase
+    b (m); the contact points are 2a = 1.5 m apart. The status line gives both
+    wavelengths and the sway frequency at 100 km/h.
+    """
+    return KLINGEL.build()
+
+
+_SPEEDS = np.linspace(2.0, 120.0, 240)  # m/s
+
+
+def _wheelset_roots_controls():
+    return {
+        "conicity": slider("conicity λ", 0.15, 0.02, 0.5, 0.01),
+        "yaw_stiffness": slider("primary k_ψ (MN·m/rad)", 4.0, 0.0, 20.0, 0.25),
+        "lateral_stiffness": slider("primary k_y (MN/m)", 1.0, 0.0, 8.0, 0.1),
+    }
+
+
+def _wheelset_roots_setup(live, status):
+    ax_s, ax_d = live.axes[0]
+    roots = ax_s.scatter(
+        np.zeros(4 * _SPEEDS.size),
+        np.zeros(4 * _SPEEDS.size),
+        s=3,
+        c=np.zeros(4 * _SPEEDS.size),
+        cmap="viridis",
+        vmin=0,
+        vmax=_SPEEDS[-1] * 3.6,
+    )
+    ax_s.axvline(0.0, color="k", lw=0.8)
+    ax_s.set_xlim(-100, 10)
+    ax_s.set_ylim(0, 80)
+    ax_s.set_xlabel("Re λ (1/s)")
+    ax_s.set_ylabel("Im λ (rad/s)")
+    live.figure.colorbar(roots, ax=ax_s, label="speed (km/h)")
+    lines = [
+        ax_d.plot(_SPEEDS * 3.6, 0 * _SPEEDS, color=plots.COLORS[j], label=f"mode {j + 1}")[0]
+        for j in range(2)
+    ]
+    (mark,) = ax_d.plot([], [], "v", color="k", ms=8, label="critical speed")
+    ax_d.axhline(0.0, color="k", lw=0.8)
+    ax_d.set_xlim(0, _SPEEDS[-1] * 3.6)
+    ax_d.set_ylim(-0.3, 1.05)
+    ax_d.set_xlabel("speed (km/h)")
+    ax_d.set_ylabel("damping factor ξ")
+    ax_d.legend(loc="upper right")
+    live.animate(roots, *lines, mark)
+
+    def redraw(v):
+        ws = wheelset.Wheelset(
+            conicity=v["conicity"],
+            yaw_stiffness=1e6 * v["yaw_stiffness"],
+            lateral_stiffness=1e6 * v["lateral_stiffness"],
+        )
+        sweep = stability.mode_sweep(ws, _SPEEDS)
+        lam = stability.eigenvalues_against_speed(ws, _SPEEDS)
+        roots.set_offsets(np.column_stack([lam.real.ravel(), lam.imag.ravel()]))
+        roots.set_array(np.repeat(_SPEEDS * 3.6, lam.shape[1]))
+        # Each line follows one mode across speed (MAC tracking), labelled by its main coordinate.
+        for j, line in enumerate(lines):
+            line.set_ydata(sweep.damping_ratios[:, j])
+        cs = stability.critical_speed(ws, (_SPEEDS[0], _SPEEDS[-1]), tol=0.05)
+        if cs.found:
+            mark.set_data([cs.speed * 3.6], [0.0])
+            text = f"critical speed {cs.speed:.1f} m/s = {cs.speed * 3.6:.0f} km/h at {cs.frequency:.2f} Hz"
+        else:
+            mark.set_data([], [])
+            text = "critical speed: " + cs.status
+        if v["yaw_stiffness"] + v["lateral_stiffness"] > 0:
+            text += f" · Wickens' high-creep limit {wheelset.wickens_critical_speed(ws) * 3.6:.0f} km/h"
+        status.value = text
+
+    return redraw
+
+
+WHEELSET_ROOTS = Recipe(
+    _wheelset_roots_controls,
+    _wheelset_roots_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (10.0, 3.8)},
+    static={"yaw_stiffness": [0.0, 0.5, 1.0, 2.0, 4.0, 6.0, 8.0, 12.0, 16.0, 20.0]},
+    title="Roots of the suspended wheelset against speed, and their damping",
+)
+
+
+def wheelset_roots():
+    """Eigenvalues of a wheelset on a primary suspension to a frame at speed V, from 7 to 430 km/h.
+
+    Left: the roots in the complex plane coloured by speed; right: the damping
+    factor of the two oscillatory modes against speed, with the critical speed
+    marked. Controls: conicity λ, primary yaw stiffness k_ψ (MN·m/rad) and
+    lateral stiffness k_y (MN/m). With both stiffnesses at 0 the free wheelset
+    is unstable at every speed.
+    """
+    return WHEELSET_ROOTS.build()
+
+
+BENCH_MOVES = [
+    ("ch05 klingel λ", KLINGEL, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
+    ("ch05 wheelset_roots k_ψ", WHEELSET_ROOTS, "yaw_stiffness", [1.0, 2.0, 4.0, 8.0, 12.0, 3.0]),
+    ("ch05 wheelset_roots λ", WHEELSET_ROOTS, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
+]

@@ -1,0 +1,233 @@
+"""raildyn.stability: batched eigenvalues, mode tracking, critical speed, maps and nonlinear hunting."""
+
+import control
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from raildyn import stability, vibration
+from raildyn.vehicles_lateral import Bogie, Car
+from raildyn.wheelset import LateralSystem, NonlinearWheelset, Wheelset
+
+SOFT = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # a wheelset that hunts below 60 m/s
+
+
+def _negative_damping_oscillator(c0, c1, k=4.0):
+    """m q̈ + (c₁/V − c₀) q̇ + k q = 0: unstable exactly for V > c₁/c₀."""
+    one = np.array([[1.0]])
+    return LateralSystem(one, -c0 * one, c1 * one, k * one, labels=("q",))
+
+
+# ---------------------------------------------------------------------------
+# Eigenvalues
+
+
+@pytest.mark.parametrize("model", [SOFT, Bogie(), Car()], ids=["wheelset", "bogie", "car"])
+def test_batched_eigenvalues_agree_with_python_control_poles(model):
+    # The same state space through python-control (to_control from raildyn.vibration): the sorted
+    # poles agree to 1e-8 of the largest, the accuracy of a balanced nonsymmetric eigen-solver.
+    speeds = [5.0, 40.0, 90.0]
+    batched = stability.eigenvalues_against_speed(model, speeds)
+    system = stability.as_system(model)
+    for V, lam in zip(speeds, batched, strict=True):
+        M, C, K = system.matrices(V)
+        poles = control.poles(vibration.to_control(M, C, K, np.ones((system.size, 1))))
+        scale = np.abs(poles).max()
+        np.testing.assert_allclose(np.sort_complex(lam), np.sort_complex(poles), atol=1e-8 * scale)
+
+
+@settings(deadline=None, max_examples=50)
+@given(speed=st.floats(0.5, 200.0), conicity=st.floats(0.01, 0.5))
+def test_batched_eigenvalues_agree_with_complex_modes(speed, conicity):
+    # raildyn.vibration.complex_modes solves each speed on its own (scipy.linalg.eig).
+    ws = SOFT.replace(conicity=conicity)
+    lam = stability.eigenvalues_against_speed(ws, [speed])[0]
+    M, C, K = stability.as_system(ws).matrices(speed)
+    ref = vibration.complex_modes(M, C, K).eigenvalues
+    np.testing.assert_allclose(np.sort_complex(lam), np.sort_complex(ref), atol=1e-9 * np.abs(ref).max())
+
+
+# ---------------------------------------------------------------------------
+# Mode tracking
+
+
+def test_mode_tracking_keeps_labels_through_a_crossing():
+    # Two uncoupled modes: q₁ with k = 4 and damping 3/V, whose damped frequency
+    # √(4 − 2.25/V²) rises through that of q₂ (√3, undamped) at V = 1.5 m/s. Sorting by
+    # frequency swaps them there; MAC tracking must not.
+    M = np.eye(2)
+    system = LateralSystem(M, np.zeros((2, 2)), np.diag([3.0, 0.0]), np.diag([4.0, 3.0]), labels=("q1", "q2"))
+    speeds = np.linspace(1.2, 3.0, 60)
+    sweep = stability.mode_sweep(system, speeds)
+    j1 = sweep.labels.index("q1")
+    j2 = sweep.labels.index("q2")
+    expected1 = np.sqrt(4.0 - 2.25 / speeds**2) / (2 * np.pi)
+    # Each column stays on its own coordinate and follows its own closed-form frequency (1e-10 Hz).
+    np.testing.assert_allclose(sweep.frequencies[:, j1], expected1, atol=1e-10)
+    np.testing.assert_allclose(sweep.frequencies[:, j2], np.sqrt(3.0) / (2 * np.pi), atol=1e-10)
+    assert np.all(np.abs(sweep.shapes[:, 1, j1]) < 1e-12)
+    # The naive order by frequency does swap at the crossing, so the test has teeth.
+    naive = np.sort(sweep.frequencies, axis=1)
+    assert not np.allclose(naive[:, 0], sweep.frequencies[:, j1])
+
+
+def test_mode_sweep_damping_ratio_crosses_zero_at_the_critical_speed():
+    # The hunting mode's damping ratio changes sign between the two sweep speeds around V_c.
+    cs = stability.critical_speed(SOFT, (5.0, 120.0))
+    speeds = np.linspace(5.0, 120.0, 300)
+    sweep = stability.mode_sweep(SOFT, speeds, progress=False)
+    below, above = speeds < cs.speed, speeds > cs.speed
+    unstable = sweep.damping_ratios < 0
+    assert not unstable[below].any()
+    assert unstable[above].any(axis=0).sum() == 1, "one mode loses stability"
+
+
+# ---------------------------------------------------------------------------
+# Critical speed
+
+
+@settings(deadline=None, max_examples=50)
+@given(c0=st.floats(0.05, 2.0), c1=st.floats(5.0, 200.0))
+def test_critical_speed_of_negative_damping_oscillator(c0, c1):
+    # Closed form: damping c₁/V − c₀ vanishes at V = c₁/c₀; the root is found to tol = 0.01 m/s.
+    expected = c1 / c0
+    cs = stability.critical_speed(_negative_damping_oscillator(c0, c1), (1.0, 2.0 * expected + 10.0))
+    assert cs.found
+    assert abs(cs.speed - expected) <= 0.01
+    assert cs.frequency == pytest.approx(2.0 / (2 * np.pi), rel=1e-3)
+
+
+def test_critical_speed_brackets_the_sign_change():
+    cs = stability.critical_speed(Car(), (1.0, 200.0))
+    g = stability.largest_real_part(Car(), [cs.speed - 0.05, cs.speed + 0.05])
+    assert g[0] < 0.0 < g[1]
+
+
+def test_critical_speed_statuses():
+    # c₁/c₀ = 1000 m/s: found in (1, 1500), not in (1, 900).
+    crossing = stability.critical_speed(_negative_damping_oscillator(0.1, 100.0), (1.0, 1500.0))
+    assert crossing.found and crossing.speed == pytest.approx(1000.0, abs=0.01)
+    never = stability.critical_speed(_negative_damping_oscillator(0.1, 100.0), (1.0, 900.0))
+    assert never.status == "stable over the range" and never.speed == np.inf
+    always = stability.critical_speed(Wheelset().free(), (1.0, 100.0))
+    assert always.status == "unstable at the lowest speed" and always.speed == 1.0
+
+
+def test_critical_speed_falls_with_conicity():
+    # Klingel frequency rises with √λ, so the hunting speed of a bogie falls as λ grows.
+    speeds = [
+        stability.critical_speed(Bogie().with_(conicity=lam), (1.0, 300.0)).speed for lam in (0.05, 0.2, 0.4)
+    ]
+    assert speeds[0] > speeds[1] > speeds[2]
+
+
+def test_critical_speed_map_matches_single_calls():
+    bogie = Bogie()
+
+    def factory(lam, k):
+        return bogie.with_(conicity=lam, yaw_stiffness=k)
+
+    result = stability.critical_speed_map(
+        factory, [0.1, 0.3], [5e6, 5e7], (1.0, 300.0), x_name="λ", y_name="k_ψ", progress=False
+    )
+    assert result.speeds.shape == (2, 2)
+    single = stability.critical_speed(factory(0.3, 5e7), (1.0, 300.0)).speed
+    assert result.speeds[1, 1] == pytest.approx(single, abs=0.1)
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="speeds"):
+        stability.eigenvalues_against_speed(SOFT, [])
+    with pytest.raises(ValueError, match="speeds"):
+        stability.eigenvalues_against_speed(SOFT, [10.0, -1.0])
+    with pytest.raises(ValueError, match="speed_range"):
+        stability.critical_speed(SOFT, (50.0, 50.0))
+    with pytest.raises(ValueError, match="speed_range"):
+        stability.critical_speed(SOFT, (0.0, 50.0))
+    with pytest.raises(ValueError, match="speed_range"):
+        stability.critical_speed(SOFT, [])
+    with pytest.raises(ValueError, match="increasing"):
+        stability.mode_sweep(SOFT, [30.0, 20.0])
+    with pytest.raises(TypeError, match="model"):
+        stability.critical_speed("car", (1.0, 50.0))
+    with pytest.raises(ValueError, match="speed"):
+        stability.limit_cycle_amplitude(NonlinearWheelset(SOFT), 0.0)
+
+
+# ---------------------------------------------------------------------------
+# Nonlinear hunting
+
+
+def test_limit_cycle_amplitude_converged_in_step_size():
+    # Halving the largest step changes the limit-cycle amplitude by less than 0.5 %: the cycle
+    # (≈ 5 Hz) is resolved by > 100 steps, and RK45 at rtol 1e-6 adds less than that.
+    model = NonlinearWheelset(SOFT)
+    coarse = stability.limit_cycle_amplitude(model, 60.0, max_step=2e-3)
+    fine = stability.limit_cycle_amplitude(model, 60.0, max_step=1e-3)
+    assert coarse.hunting() and fine.hunting()
+    assert fine.amplitude == pytest.approx(coarse.amplitude, rel=5e-3)
+    assert fine.frequency == pytest.approx(coarse.frequency, rel=5e-3)
+
+
+def test_limit_cycle_decays_well_below_the_critical_speed():
+    cycle = stability.limit_cycle_amplitude(NonlinearWheelset(SOFT), 30.0, initial_displacement=2e-3)
+    assert not cycle.hunting()
+
+
+def test_nonlinear_critical_speed_of_the_wheelset_not_above_the_linear_one():
+    # This wheelset's bifurcation is close to supercritical, so the two speeds nearly meet. Near a
+    # supercritical Hopf point the cycle shrinks to zero and the time to settle on it diverges, so a
+    # 6 s run resolves the end of the branch to about 1 m/s only: that is the allowed excess.
+    linear = stability.critical_speed(SOFT, (5.0, 120.0)).speed
+    diagram = stability.bifurcation_diagram(
+        NonlinearWheelset(SOFT), np.linspace(40.0, 70.0, 7), duration=6.0, refine=4, progress=False
+    )
+    assert np.isfinite(diagram.nonlinear_critical_speed)
+    assert diagram.nonlinear_critical_speed <= linear + 1.0
+    assert diagram.hunting[0], "the highest speed hunts"
+
+
+def test_nonlinear_critical_speed_of_the_default_car_not_above_the_linear_one():
+    # The default car (Manchester vehicle, cone λ = 0.15, flange at 9.1 mm) hunts on its flanges
+    # at 75 m/s, well below its linear critical speed of about 84 m/s (a subcritical bifurcation).
+    car = Car()
+    linear = stability.critical_speed(car, (1.0, 200.0)).speed
+    cycle = stability.limit_cycle_amplitude(car.nonlinear(), 0.9 * linear)
+    assert cycle.hunting()
+    assert cycle.amplitude > car.nonlinear().contact.flange_clearance
+
+
+def test_shooting_finds_the_cycle_that_direct_integration_settles_on():
+    # Two independent computations of the same limit cycle: 8 s of RK45 from a flange-touching
+    # start, and Newton shooting with DOP853 at rtol 1e-10. The run's amplitude still carries the
+    # decay of its transient (about 1e-4 relative here), its frequency the step of its zero
+    # crossings (2 ms in 0.17 s); 1e-3 covers both.
+    model = NonlinearWheelset(SOFT)
+    run = stability.limit_cycle_amplitude(model, 60.0)
+    orbit = stability.periodic_orbit(model, 60.0, run.state, 1.0 / run.frequency)
+    assert orbit.amplitude == pytest.approx(run.amplitude, rel=1e-3)
+    assert orbit.period == pytest.approx(1.0 / run.frequency, rel=1e-3)
+    assert orbit.residual < 1e-8
+    # An autonomous system always has the multiplier 1 (a shift along the orbit); finite
+    # differences with steps of 1e-5 relative give it to about 1e-3.
+    assert np.min(np.abs(orbit.multipliers - 1.0)) < 1e-3
+    assert orbit.stable, "the cycle that a simulation settles on is stable"
+
+
+@settings(deadline=None, max_examples=50)
+@given(seed=st.integers(0, 2**31 - 1), factor=st.complex_numbers(min_magnitude=0.1, max_magnitude=10.0))
+def test_mac_is_one_for_scaled_vectors_and_symmetric(seed, factor):
+    # MAC is invariant to complex scaling, lies in [0, 1] (Cauchy–Schwarz) and is symmetric.
+    rng = np.random.default_rng(seed)
+    a = rng.normal(size=(5, 3)) + 1j * rng.normal(size=(5, 3))
+    b = rng.normal(size=(5, 3)) + 1j * rng.normal(size=(5, 3))
+    np.testing.assert_allclose(np.diag(stability.mac(a, factor * a)), 1.0, rtol=1e-12)
+    m = stability.mac(a, b)
+    assert np.all((m >= 0) & (m <= 1 + 1e-12))
+    np.testing.assert_allclose(m, stability.mac(b, a).T, rtol=1e-12)
+
+
+def test_critical_speed_map_rejects_an_empty_grid():
+    with pytest.raises(ValueError, match="at least one value"):
+        stability.critical_speed_map(lambda x, y: SOFT, [], [1.0], progress=False)

@@ -1,0 +1,120 @@
+"""raildyn.vehicles_lateral: the bogie and the car against independent assemblies and limits."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from raildyn import stability
+from raildyn.vehicles_lateral import MANCHESTER_CAR, Bogie, Car
+from raildyn.wheelset import GRAVITY, Wheelset, suspended_wheelset
+
+
+def test_manchester_parameters_as_published():
+    # Iwnicki (1998), Manchester benchmark vehicle 1: masses and inertias as tabulated.
+    car = MANCHESTER_CAR
+    assert (car.body_mass, car.body_yaw_inertia, car.body_roll_inertia) == (32000.0, 1.97e6, 5.68e4)
+    assert (car.bogie.frame_mass, car.bogie.frame_yaw_inertia) == (2615.0, 3067.0)
+    assert (car.wheelset.mass, car.wheelset.yaw_inertia) == (1813.0, 1120.0)
+    assert 2 * car.bogie.semi_wheelbase == pytest.approx(2.56)
+    assert 2 * car.semi_bogie_spacing == pytest.approx(19.0)
+
+
+def test_car_has_fifteen_coordinates_and_symmetric_suspension():
+    system = Car().linear_system()
+    assert system.size == 15
+    # Springs and dampers are symmetric; only creep and gravity terms break the symmetry of K.
+    np.testing.assert_allclose(system.C0, system.C0.T, atol=1e-9)
+    K_s = system.K.copy()
+    for iy, ipsi, _ in system.wheelsets:
+        K_s[iy, ipsi] = K_s[ipsi, iy] = 0.0
+    np.testing.assert_allclose(K_s, K_s.T, rtol=1e-12, atol=1e-6)
+    assert np.trace(system.M) == pytest.approx(
+        32000 + 1.97e6 + 5.68e4 + 2 * (2615 + 3067) + 4 * (1813 + 1120)
+    )
+
+
+def test_bogie_with_locked_frame_is_two_suspended_wheelsets():
+    # An enormous frame (10¹² kg) does not move: each wheelset then sees a fixed frame, and the
+    # bogie's wheelset eigenvalues are those of the suspended wheelset (twice). Frame modes aside,
+    # they agree to 1e-6 relative (the frame's motion is of order 1e-12 of the wheelset's).
+    bogie = Bogie(frame_mass=1e12, frame_yaw_inertia=1e12)
+    V = 50.0
+    lam_bogie = stability.eigenvalues_against_speed(bogie, [V])[0]
+    lam_ws = stability.eigenvalues_against_speed(suspended_wheelset(bogie.wheelset), [V])[0]
+    for lam in lam_ws:
+        close = np.sort(np.abs(lam_bogie - lam))[:2]
+        assert np.all(close < 1e-6 * abs(lam)), "each wheelset eigenvalue appears twice"
+
+
+def test_car_without_body_mass_effects_matches_bogie():
+    # A car body 10¹² heavier than usual stands still: each bogie then behaves as a bogie under a
+    # straight-running body, so the car's critical speed equals the bogie's (to the 0.01 m/s tol).
+    # The body's height is set to 0, or its enormous weight would overturn it in roll.
+    car = Car(
+        body_mass=1e12 * 32000,
+        body_yaw_inertia=1e12 * 1.97e6,
+        body_roll_inertia=1e12 * 5.68e4,
+        body_height=0.0,
+    )
+    v_car = stability.critical_speed(car, (1.0, 200.0)).speed
+    v_bogie = stability.critical_speed(car.bogie, (1.0, 200.0)).speed
+    assert v_car == pytest.approx(v_bogie, abs=0.02)
+
+
+def test_body_roll_terms_by_hand():
+    # Roll stiffness on the body: two bogies' springs and bars, less the weight's overturning
+    # moment m g h, plus the lateral springs acting at h below the centre: 2 k_y2 h².
+    car = Car()
+    system = car.linear_system()
+    i = system.labels.index("body φ")
+    expected = (
+        2 * car.roll_stiffness
+        - car.body_mass * GRAVITY * car.body_height
+        + 2 * car.bogie.secondary_lateral_stiffness * car.body_height**2
+    )
+    assert system.K[i, i] == pytest.approx(expected, rel=1e-12)
+
+
+@settings(deadline=None, max_examples=30)
+@given(conicity=st.floats(0.03, 0.5))
+def test_bogie_critical_speed_scales_as_inverse_root_conicity_in_the_high_creep_limit(conicity):
+    # With creep forces dominant, the kinematic frequency is V√(λ/(a r₀ (1 + b²/a²))): all
+    # frequencies scale with V√λ, so V_c √λ is the same for every λ when gravity and spin are off.
+    # Real creep coefficients make this approximate; with 10³ × the default it holds to 1 %.
+    def bogie(lam):
+        ws = Wheelset(
+            conicity=lam,
+            f11=1.2e10,
+            f22=1.06e10,
+            f23=0.0,
+            f33=0.0,
+            contact_angle=0.0,
+            contact_angle_parameter=0.0,
+            lateral_damping=0.0,
+            yaw_damping=0.0,
+        )
+        return Bogie(wheelset=ws, secondary_lateral_damping=0.0)
+
+    reference = stability.critical_speed(bogie(0.1), (1.0, 2000.0)).speed * np.sqrt(0.1)
+    value = stability.critical_speed(bogie(conicity), (1.0, 4000.0)).speed * np.sqrt(conicity)
+    assert value == pytest.approx(reference, rel=1e-2)
+
+
+def test_with_reaches_every_level():
+    car = Car().with_(conicity=0.3, frame_mass=3000.0, body_mass=30000.0)
+    assert car.wheelset.conicity == 0.3 and car.wheelset.contact_angle == 0.3
+    assert car.bogie.frame_mass == 3000.0 and car.body_mass == 30000.0
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="frame_mass"):
+        Bogie(frame_mass=-1.0)
+    with pytest.raises(ValueError, match="body_mass"):
+        Car(body_mass=0.0)
+    with pytest.raises(ValueError, match="conicity"):
+        Car().with_(conicity=-0.1)
+    with pytest.raises(TypeError, match="Wheelset"):
+        Bogie(wheelset=3)
+    with pytest.raises(ValueError, match="speed"):
+        Car().nonlinear(speed=0.0)

@@ -1,0 +1,279 @@
+"""raildyn.wheelset: Klingel kinematics, the linear wheelset against closed forms, the nonlinear wheelset."""
+
+import numpy as np
+import pytest
+import scipy.integrate
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from raildyn import stability
+from raildyn.vehicles_lateral import Bogie
+from raildyn.wheelset import (
+    LateralSystem,
+    NonlinearLateral,
+    NonlinearWheelset,
+    WheelRailContact,
+    Wheelset,
+    contact_forces,
+    creep_terms,
+    kalker_creep_coefficients,
+    kinematic_wavelength,
+    rigid_bogie_wavelength,
+    saturation_factor,
+    suspended_wheelset,
+    wheelset_matrices,
+    wickens_critical_speed,
+)
+
+# ---------------------------------------------------------------------------
+# Closed forms
+
+
+def test_klingel_wavelength_matches_the_integrated_kinematic_motion():
+    # Rolling without slip: ẏ = Vψ, ψ̇ = −Vλy/(a r₀). Integrate and measure the distance between
+    # upward zero crossings; the solver runs at rtol 1e-10, so 1e-6 relative is ample.
+    r0, a, lam, V = 0.46, 0.75, 0.05, 20.0
+    sol = scipy.integrate.solve_ivp(
+        lambda t, z: [V * z[1], -V * lam * z[0] / (a * r0)],
+        (0, 10.0),
+        [0.0, 1e-3],
+        rtol=1e-10,
+        atol=1e-14,
+        dense_output=True,
+    )
+    t = np.linspace(0, 10.0, 200001)
+    y = sol.sol(t)[0]
+    up = np.flatnonzero((y[:-1] < 0) & (y[1:] >= 0))
+    # Linear interpolation of the crossing times.
+    tc = t[up] - y[up] * (t[up + 1] - t[up]) / (y[up + 1] - y[up])
+    wavelength = V * np.mean(np.diff(tc))
+    assert wavelength == pytest.approx(kinematic_wavelength(r0, a, lam), rel=1e-6)
+
+
+def test_klingel_wavelength_closed_form():
+    # 2π√(r₀a/λ) by hand for r₀ = 0.5, a = 0.75, λ = 0.1: 2π√3.75 = 12.1673 m.
+    assert kinematic_wavelength(0.5, 0.75, 0.1) == pytest.approx(2 * np.pi * np.sqrt(3.75), rel=1e-14)
+
+
+def test_free_wheelset_tends_to_klingel_at_high_creep():
+    # With creep coefficients 10⁴ times the default and no spin or gravity, the free wheelset's
+    # oscillation is Klingel's; the error scales as 1/f, so 1e-3 relative is generous.
+    ws = Wheelset(f11=1e11, f22=1e11, f23=0.0, f33=0.0, contact_angle=0.0, contact_angle_parameter=0.0).free()
+    V = 10.0
+    lam = stability.eigenvalues_against_speed(ws, [V])[0]
+    omega = lam.imag[np.argmin(np.abs(lam.real))]
+    expected = 2 * np.pi * V / kinematic_wavelength(ws.rolling_radius, ws.half_gauge, ws.conicity)
+    assert abs(omega) == pytest.approx(expected, rel=1e-3)
+
+
+def test_rigid_bogie_wavelength_from_a_stiff_bogie_at_low_speed():
+    # Wickens' rigid-bogie wavelength assumes equal longitudinal and lateral creep coefficients,
+    # a rigid frame and negligible inertia. A bogie with primary springs 10³ times the default at
+    # 0.5 m/s (inertia forces ~ (ωV)² tiny) and no spin or gravity reproduces it; the residual comes
+    # from the frame's inertia and elasticity, below 0.5 %.
+    ws = Wheelset(f22=Wheelset().f11, f23=0.0, f33=0.0, contact_angle=0.0, contact_angle_parameter=0.0)
+    ws = ws.replace(lateral_stiffness=1e3 * ws.lateral_stiffness, yaw_stiffness=1e3 * ws.yaw_stiffness)
+    bogie = Bogie(
+        wheelset=ws,
+        secondary_lateral_stiffness=0.0,
+        secondary_yaw_stiffness=0.0,
+        secondary_lateral_damping=0.0,
+    )
+    V = 0.5
+    lam = stability.eigenvalues_against_speed(bogie, [V])[0]
+    oscillatory = lam[(np.abs(lam.imag) > 1e-3) & (np.abs(lam) < 10.0)]
+    omega = np.abs(oscillatory.imag).min()
+    L = rigid_bogie_wavelength(ws.rolling_radius, ws.half_gauge, ws.conicity, bogie.semi_wheelbase)
+    assert 2 * np.pi * V / omega == pytest.approx(L, rel=5e-3)
+
+
+def test_wheelset_matrices_by_hand():
+    # The entries written out from the equations of motion in the docstring of creep_terms.
+    ws = Wheelset()
+    V = 25.0
+    M, C, K = wheelset_matrices(ws, V)
+    a, r0, lam, W = ws.half_gauge, ws.rolling_radius, ws.conicity, ws.axle_load
+    np.testing.assert_allclose(M, np.diag([ws.mass, ws.yaw_inertia]))
+    C_hand = np.array(
+        [
+            [2 * ws.f22 / V + ws.lateral_damping, 2 * ws.f23 / V],
+            [-2 * ws.f23 / V, 2 * a**2 * ws.f11 / V + 2 * ws.f33 / V + ws.yaw_damping],
+        ]
+    )
+    K_hand = np.array(
+        [
+            [ws.lateral_stiffness + W * ws.contact_angle_parameter / a, -2 * ws.f22],
+            [2 * a * ws.f11 * lam / r0, ws.yaw_stiffness + 2 * ws.f23 - W * a * ws.contact_angle],
+        ]
+    )
+    np.testing.assert_allclose(C, C_hand, rtol=1e-14)
+    np.testing.assert_allclose(K, K_hand, rtol=1e-14)
+
+
+def test_kalker_coefficients_scale_with_the_patch():
+    # f₁₁ ∝ c², f₂₃ ∝ c³, f₃₃ ∝ c⁴: doubling both semi-axes multiplies them by 4, 8 and 16.
+    small = np.array(kalker_creep_coefficients(8e10, 3e-3, 4e-3, 4.0, 3.5, 1.5, 1.2))
+    large = np.array(kalker_creep_coefficients(8e10, 6e-3, 8e-3, 4.0, 3.5, 1.5, 1.2))
+    np.testing.assert_allclose(large / small, [4, 4, 8, 16], rtol=1e-14)
+
+
+# ---------------------------------------------------------------------------
+# Suspended wheelset: Wickens' high-creep critical speed
+
+
+def test_suspended_wheelset_critical_speed_tends_to_wickens_high_creep_limit():
+    # Wickens (1965; 2003, ch. 3): as f₁₁ = f₂₂ = f → ∞ with no spin, gravity or suspension
+    # damping, V_c² = (a r₀/λ)(k_ψ + a²k_y)/(I + m a²). The expansion in 1/f leaves an error that
+    # must fall at least tenfold per tenfold f (it falls about a hundredfold: the O(1/f) term
+    # vanishes on the stability boundary) and be below 1e-5 relative at 10³ × the default f.
+    base = Wheelset(
+        yaw_stiffness=4.0e6,
+        lateral_stiffness=1.0e6,
+        f22=Wheelset().f11,
+        f23=0.0,
+        f33=0.0,
+        contact_angle=0.0,
+        contact_angle_parameter=0.0,
+        lateral_damping=0.0,
+        yaw_damping=0.0,
+    )
+    target = wickens_critical_speed(base)
+    errors = []
+    for scale in (1.0, 10.0, 100.0, 1000.0):
+        ws = base.replace(f11=scale * base.f11, f22=scale * base.f22)
+        cs = stability.critical_speed(ws, (0.5 * target, 2.0 * target), tol=1e-7)
+        assert cs.found
+        errors.append(abs(cs.speed - target) / target)
+    assert errors[-1] < 1e-5
+    assert all(later < 0.1 * earlier for earlier, later in zip(errors[:-1], errors[1:], strict=False))
+
+
+def test_wickens_closed_form_by_hand():
+    # (a r₀/λ)(k_ψ + a²k_y)/(I + m a²) with a = 0.75, r₀ = 0.46, λ = 0.15, k_ψ = 4e6, k_y = 1e6,
+    # I = 1120, m = 1813: 2.3 · 4.5625e6 / 2139.8 = 4904.1 → V_c = 70.03 m/s.
+    ws = Wheelset(yaw_stiffness=4.0e6, lateral_stiffness=1.0e6)
+    expected = np.sqrt(0.75 * 0.46 / 0.15 * (4.0e6 + 0.5625e6) / (1120 + 1813 * 0.5625))
+    assert wickens_critical_speed(ws) == pytest.approx(expected, rel=1e-14)
+
+
+@settings(deadline=None, max_examples=50)
+@given(
+    conicity=st.floats(0.02, 0.5),
+    creep_scale=st.floats(0.2, 5.0),
+    speed=st.floats(1.0, 150.0),
+)
+def test_unsuspended_wheelset_is_unstable_at_every_speed(conicity, creep_scale, speed):
+    # Wickens: without suspension the kinematic oscillation is always negatively damped.
+    # Gravitational stiffness and spin are off (the classical result is for creep alone).
+    ws = Wheelset(
+        conicity=conicity,
+        f11=creep_scale * 1.2e7,
+        f22=creep_scale * 1.06e7,
+        f23=0.0,
+        f33=0.0,
+        contact_angle=0.0,
+        contact_angle_parameter=0.0,
+    ).free()
+    assert stability.largest_real_part(ws, [speed])[0] > 0.0
+
+
+def test_default_unsuspended_wheelset_is_unstable_over_the_whole_range():
+    # With the default gravitational stiffness and spin as well.
+    g = stability.largest_real_part(Wheelset().free(), np.linspace(1.0, 150.0, 300))
+    assert np.all(g > 0.0)
+
+
+# ---------------------------------------------------------------------------
+# Nonlinear wheelset
+
+
+def _jacobian(rhs, x0, h=1e-9):
+    f0 = rhs(0.0, x0)
+    J = np.empty((x0.size, x0.size))
+    for j in range(x0.size):
+        dx = np.zeros_like(x0)
+        dx[j] = h
+        J[:, j] = (rhs(0.0, x0 + dx) - rhs(0.0, x0 - dx)) / (2 * h)
+    return J, f0
+
+
+def test_nonlinear_wheelset_linearises_to_the_linear_model():
+    # The Jacobian at the centred state (central differences, h = 1 nm) equals A(V) of the linear
+    # model; the saturation's slope is 1 − O(u) and the flange is inactive, so 1e-5 relative.
+    ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
+    model = NonlinearWheelset(ws, WheelRailContact(), 40.0)
+    J, f0 = _jacobian(model.rhs, np.zeros(4))
+    A = suspended_wheelset(ws).state_matrices([40.0])[0]
+    np.testing.assert_allclose(f0, 0.0, atol=1e-12)
+    np.testing.assert_allclose(J, A, rtol=1e-5, atol=1e-5 * np.abs(A).max())
+
+
+def test_generic_nonlinear_model_equals_the_wheelset_one():
+    # NonlinearLateral over the suspended wheelset is the same model as NonlinearWheelset.
+    ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
+    contact = WheelRailContact()
+    a = NonlinearWheelset(ws, contact, 55.0)
+    b = NonlinearLateral(suspended_wheelset(ws), contact, 55.0)
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        x = rng.normal(size=4) * np.array([8e-3, 5e-3, 0.3, 0.2])
+        np.testing.assert_allclose(b.rhs(0.0, x), a.rhs(0.0, x), rtol=1e-12, atol=1e-9)
+
+
+@settings(deadline=None, max_examples=50)
+@given(force=st.floats(0.0, 1e7), limit=st.floats(1e3, 1e5))
+def test_saturated_force_never_exceeds_friction_limit(force, limit):
+    # Shen–Hedrick–Elkins: F_sat ≤ μN, F_sat ≤ F (it never amplifies).
+    sat = force * saturation_factor(force, limit)
+    assert sat <= limit * (1 + 1e-12)
+    assert sat <= force * (1 + 1e-12)
+
+
+def test_flange_force_acts_only_beyond_the_clearance():
+    ws, contact = Wheelset(), WheelRailContact()
+    d = contact.flange_clearance
+    inside, _ = contact_forces(ws, contact, 0.99 * d, 0.0, 0.0, 0.0, 30.0)
+    outside, _ = contact_forces(ws, contact, d + 1e-3, 0.0, 0.0, 0.0, 30.0)
+    gravity = -ws.axle_load * ws.contact_angle_parameter / ws.half_gauge
+    # Inside: only gravity (creep saturates the −2f22(−ψ) term, zero here as ψ = 0) — exact.
+    assert inside == pytest.approx(gravity * 0.99 * d, rel=1e-12)
+    assert outside == pytest.approx(gravity * (d + 1e-3) - contact.flange_stiffness * 1e-3, rel=1e-12)
+
+
+# ---------------------------------------------------------------------------
+# Bad input
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="conicity"):
+        Wheelset(conicity=-0.1)
+    with pytest.raises(ValueError, match="conicity"):
+        kinematic_wavelength(0.46, 0.75, 0.0)
+    with pytest.raises(ValueError, match="rolling_radius"):
+        kinematic_wavelength(-0.46, 0.75, 0.1)
+    with pytest.raises(ValueError, match="speed"):
+        wheelset_matrices(Wheelset(), 0.0)
+    with pytest.raises(ValueError, match="speed"):
+        wheelset_matrices(Wheelset(), -3.0)
+    with pytest.raises(ValueError, match="mass"):
+        Wheelset(mass=0.0)
+    with pytest.raises(ValueError, match="friction"):
+        WheelRailContact(friction=0.0)
+    with pytest.raises(TypeError, match="rolling_radius_difference"):
+        WheelRailContact(rolling_radius_difference=0.3)
+    with pytest.raises(ValueError, match="speed"):
+        NonlinearWheelset(speed=0.0)
+    with pytest.raises(TypeError, match="Wheelset"):
+        suspended_wheelset("wheelset")
+
+
+def test_lateral_system_speeds_must_be_positive():
+    system = suspended_wheelset(Wheelset())
+    assert isinstance(system, LateralSystem)
+    with pytest.raises(ValueError, match="speeds"):
+        system.state_matrices([10.0, 0.0])
+
+
+def test_creep_terms_vanish_with_the_creep_coefficients():
+    C1, K_creep, _ = creep_terms(Wheelset(f11=0.0, f22=0.0, f23=0.0, f33=0.0))
+    assert not C1.any() and not K_creep.any()
