@@ -1,0 +1,49 @@
+"""Train dynamics (chapter 9): consists, couplers and draft gear, train forces, longitudinal runs.
+
+* :mod:`~raildyn.train.vehicles` — default vehicles, ``make_consist("2 SD40-2 + 100 loaded hopper")``;
+* :mod:`~raildyn.train.resistance` — ``davis_resistance`` (original and modified), grade, curve, routes;
+* :mod:`~raildyn.train.couplers` — slack and friction draft gear with loading/unloading branches;
+* :mod:`~raildyn.train.forces` — tractive effort by notch, dynamic brake, travelling air-brake signal;
+* :mod:`~raildyn.train.longitudinal` — the whole-train equations, ``simulate`` and quasi-static forces;
+* :mod:`~raildyn.train.lateral` — lateral and vertical components of coupler forces: L/V, wheel unloading.
+
+SI units throughout (m, kg, s, N); ``davis_resistance(..., units="US")`` speaks lbf, tons, mph, ft².
+"""
+
+from raildyn.train.couplers import DraftGear
+from raildyn.train.forces import NOTCHES, AirBrake, dynamic_brake_force, tractive_effort
+from raildyn.train.lateral import CouplerEffects, coupler_angles, coupler_effects
+from raildyn.train.longitudinal import QuasiStatic, TrainModel, TrainRun, braking_model, simulate
+from raildyn.train.resistance import (
+    MODIFIED_DAVIS_K,
+    Route,
+    curve_resistance,
+    davis_resistance,
+    grade_force,
+)
+from raildyn.train.vehicles import VEHICLES, Consist, Vehicle, make_consist
+
+__all__ = [
+    "MODIFIED_DAVIS_K",
+    "NOTCHES",
+    "VEHICLES",
+    "AirBrake",
+    "Consist",
+    "CouplerEffects",
+    "DraftGear",
+    "QuasiStatic",
+    "Route",
+    "TrainModel",
+    "TrainRun",
+    "Vehicle",
+    "braking_model",
+    "coupler_angles",
+    "coupler_effects",
+    "curve_resistance",
+    "davis_resistance",
+    "dynamic_brake_force",
+    "grade_force",
+    "make_consist",
+    "simulate",
+    "tractive_effort",
+]

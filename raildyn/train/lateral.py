@@ -1,0 +1,119 @@
+"""Lateral and vertical effects of coupler forces: string-lining, jack-knifing and wheel unloading.
+
+On a curve the coupler between two vehicles is not in line with either body:
+it follows the track tangent at the joint while each body follows the chord
+through its truck centres. For vehicles centred on the track, the angle between
+coupler and body is the angle the track turns between the vehicle centre and the
+joint, ``θ ≈ κ (L_i + L_{i+1})/4`` for curvature ``κ`` and lengths ``L`` (exact for
+two equal vehicles on a circle, with a relative error of order (κL)² otherwise).
+A tension ``F`` then pulls each body end toward the inside of the curve with
+``F sin θ`` (string-lining); a compression pushes it outward (jack-knifing)
+{cole2006}. The same geometry in the vertical plane, with the vertical curvature
+of a sag or crest, gives the vertical force that unloads the trucks.
+
+Each body carries the end forces to its two trucks as a beam on two supports;
+the truck-side ``L/V`` is the truck's lateral force over the vertical load on
+one rail under the truck, ``m g/4``. The steady curving forces of the trucks
+themselves (chapter 8) are not included.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn.train.vehicles import Consist, G
+
+
+def coupler_angles(consist: Consist, curvature) -> np.ndarray:
+    """Angle between each coupler and the bodies it joins, rad (shape (n−1,)).
+
+    ``curvature`` (1/m): a number, or one value per coupler (its sign gives the
+    sign of the angle).
+    """
+    if not isinstance(consist, Consist):
+        raise TypeError(f"consist must be a Consist, got {type(consist).__name__}")
+    k = _checks.array("curvature", curvature)
+    if k.ndim not in (0, 1) or (k.ndim == 1 and k.size != consist.couplers):
+        raise ValueError(f"curvature must be a number or hold {consist.couplers} values, got shape {k.shape}")
+    length = consist.length
+    return k * 0.25 * (length[:-1] + length[1:])
+
+
+def _truck_loads(consist: Consist, end_force: np.ndarray) -> np.ndarray:
+    """Loads (n, 2) on the front and rear trucks from forces at the coupler ends (n−1,) of every body."""
+    n = len(consist)
+    front = np.zeros(n)
+    rear = np.zeros(n)
+    front[1:] = end_force  # coupler j acts at the front end of vehicle j+1
+    rear[:-1] = end_force  # ... and at the rear end of vehicle j
+    lever = consist.length / consist.truck_centres
+    mean = 0.5 * (front + rear)
+    moment = 0.5 * (front - rear) * lever
+    return np.stack([mean + moment, mean - moment], axis=1)
+
+
+@dataclass(frozen=True)
+class CouplerEffects:
+    """Lateral and vertical effects of coupler forces on each vehicle.
+
+    Attributes
+    ----------
+    lateral_force : ndarray (n, 2)
+        Lateral force on the front and rear truck, N (+ toward the outside of the curve).
+    l_over_v : ndarray (n, 2)
+        Truck-side L/V: ``|lateral force| / (m g/4)``.
+    vertical_force : ndarray (n, 2)
+        Upward force on each truck from the couplers, N (+ unloads the truck).
+    unloading : ndarray (n, 2)
+        Fraction of the static truck load ``m g/2`` removed (+) or added (−).
+    mode : ndarray of str (n−1,)
+        For each coupler: "string-lining" (tension on a curve), "jack-knifing"
+        (compression on a curve) or "" (straight or no force).
+    """
+
+    lateral_force: np.ndarray
+    l_over_v: np.ndarray
+    vertical_force: np.ndarray
+    unloading: np.ndarray
+    mode: np.ndarray
+
+
+def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=0.0) -> CouplerEffects:
+    """Lateral (L/V) and vertical (unloading) effects of the coupler forces ``forces`` (N, + tension).
+
+    Parameters
+    ----------
+    consist : Consist
+    forces : array (n−1,)
+        Coupler forces, N.
+    curvature : float or array (n−1,)
+        Horizontal curvature at each coupler, 1/m (magnitude used; the result is
+        given relative to the outside of the curve).
+    vertical_curvature : float or array (n−1,)
+        1/m, + in a sag, − on a crest.
+
+    Examples
+    --------
+    >>> from raildyn.train import make_consist
+    >>> c = make_consist("3 loaded hopper")
+    >>> e = coupler_effects(c, [200e3, 200e3], curvature=1 / 200)
+    >>> bool(e.lateral_force[1, 0] < 0)  # tension pulls the middle car toward the inside
+    True
+    """
+    f = _checks.array("forces", forces, shape=(consist.couplers,))
+    theta = np.abs(coupler_angles(consist, curvature))
+    phi = coupler_angles(consist, vertical_curvature)
+    lateral_end = -f * np.sin(theta)  # tension (f > 0) pulls inward
+    lateral = _truck_loads(consist, lateral_end)
+    # In a sag (φ > 0) the coupler line lies below the bodies, so tension lifts the car ends.
+    vertical = _truck_loads(consist, f * np.sin(phi))
+    weight = consist.mass * G
+    l_over_v = np.abs(lateral) / (weight[:, None] / 4)
+    unloading = vertical / (weight[:, None] / 2)
+    mode = np.where(
+        (theta > 0) & (f > 0), "string-lining", np.where((theta > 0) & (f < 0), "jack-knifing", "")
+    )
+    return CouplerEffects(lateral, l_over_v, vertical, unloading, mode)

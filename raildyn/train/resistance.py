@@ -1,0 +1,189 @@
+"""Train resistance: the Davis formula (original and modified), grade and curve resistance, routes.
+
+The Davis formula gives the rolling and air resistance of a rail vehicle per ton
+of weight in US customary units (lbf per short ton, mph, short tons, ft²)
+{davis1926}; :func:`davis_resistance` evaluates either form and converts to and
+from SI at the edge. A :class:`Route` is grade and curvature against position.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn.train.vehicles import FT, LB, LBF, G
+
+SHORT_TON = 2000 * LB  # kg
+MPH = 1609.344 / 3600  # m/s per mph (exact)
+
+# Original Davis coefficients by vehicle kind {davis1926}: b in lb/ton per mph, C in lb/ton per
+# (ft²·mph²/(ton-per-axle·axles)). Freight cars b = 0.045, C = 0.0005; locomotives and passenger
+# cars b = 0.03 with C = 0.0024 for a locomotive at the head and 0.00034 for a trailing car.
+_DAVIS_ORIGINAL = {"freight": (0.045, 0.0005), "locomotive": (0.03, 0.0024), "passenger": (0.03, 0.00034)}
+# Modified (AREA Committee 16) form: R = 0.6 + 20/w + 0.01 V + K V²/(w n), with K = 0.07 for
+# conventional equipment, 0.0935 for containers and 0.16 for trailers on flat cars {hay1982}.
+MODIFIED_DAVIS_K = {"conventional": 0.07, "container": 0.0935, "trailer on flat car": 0.16}
+
+# AREA curve resistance: 0.8 lb per ton per degree of curve {hay1982}. A degree of curve (arc
+# definition, 100 ft of arc) is D = 18000/(π R_ft), so per unit curvature in SI:
+CURVE_RESISTANCE = 0.8 * LBF / SHORT_TON * 18000 / np.pi * FT  # N per kg per (1/m)
+
+
+def davis_resistance(
+    speed,
+    mass,
+    axles,
+    frontal_area,
+    *,
+    kind: str = "freight",
+    form: str = "original",
+    units: str = "SI",
+    drag_coefficient: float | None = None,
+):
+    """Rolling and air resistance of a rail vehicle on level tangent track, by the Davis formula.
+
+    Original form {davis1926}, per short ton of weight:
+
+    .. math:: R = 1.3 + 29/w + b V + C A V^2/(w n) \\quad \\text{lb/ton}
+
+    modified (AREA) form {hay1982}:
+
+    .. math:: R = 0.6 + 20/w + 0.01 V + K V^2/(w n) \\quad \\text{lb/ton}
+
+    with ``w`` the weight per axle in short tons, ``n`` the axles, ``V`` in mph
+    and ``A`` in ft². The resistance of the vehicle is ``R`` times its weight in tons.
+
+    Parameters
+    ----------
+    speed : float or array
+        Speed, m/s (``units="SI"``) or mph (``units="US"``); its sign is ignored.
+    mass : float or array
+        Mass, kg (SI) or weight in short tons (US); > 0.
+    axles : int or array
+        Number of axles, >= 1.
+    frontal_area : float or array
+        m² (SI) or ft² (US), > 0; used by the original form only.
+    kind : {"freight", "locomotive", "passenger"}
+        Original-form coefficients.
+    form : {"original", "modified"}
+    units : {"SI", "US"}
+    drag_coefficient : float, optional
+        Overrides C (original) or K (modified; default 0.07, conventional equipment).
+
+    Returns
+    -------
+    float or ndarray
+        Resistance, N (SI) or lbf (US).
+
+    Examples
+    --------
+    >>> round(davis_resistance(50.0, 143.0, 4, 88.0, units="US"), 1)  # one 143-ton car at 50 mph
+    733.6
+    """
+    if form not in ("original", "modified"):
+        raise ValueError(f"form must be 'original' or 'modified', got {form!r}")
+    if units not in ("SI", "US"):
+        raise ValueError(f"units must be 'SI' or 'US', got {units!r}")
+    if kind not in _DAVIS_ORIGINAL:
+        raise ValueError(f"kind must be one of {sorted(_DAVIS_ORIGINAL)}, got {kind!r}")
+    v = np.abs(_checks.array("speed", speed))
+    m = _checks.array("mass", mass, low=0.0, low_open=True)
+    n = _checks.array("axles", axles, low=1.0)
+    a = _checks.array("frontal_area", frontal_area, low=0.0, low_open=True)
+    if drag_coefficient is not None:
+        _checks.nonnegative("drag_coefficient", drag_coefficient)
+    if units == "SI":
+        v, tons, area = v / MPH, m / SHORT_TON, a / FT**2
+    else:
+        tons, area = m, a
+    w = tons / n
+    if form == "original":
+        b, c = _DAVIS_ORIGINAL[kind]
+        c = c if drag_coefficient is None else drag_coefficient
+        per_ton = 1.3 + 29.0 / w + b * v + c * area * v**2 / (w * n)
+    else:
+        k = MODIFIED_DAVIS_K["conventional"] if drag_coefficient is None else drag_coefficient
+        per_ton = 0.6 + 20.0 / w + 0.01 * v + k * v**2 / (w * n)
+    force = per_ton * tons
+    if units == "SI":
+        force = force * LBF
+    return force if force.ndim else float(force)
+
+
+def grade_force(mass, grade):
+    """Gravity component along the track, N, positive resisting an uphill climb.
+
+    ``F = m g sin(arctan(grade))`` with ``grade`` the rise over run (0.01 = 1 %).
+    """
+    m = _checks.array("mass", mass, low=0.0, low_open=True)
+    gr = _checks.array("grade", grade)
+    return m * G * gr / np.sqrt(1.0 + gr**2)
+
+
+def curve_resistance(mass, curvature):
+    """Curve resistance, N: the AREA 0.8 lb/ton per degree of curve {hay1982} written per 1/m.
+
+    ``curvature`` is 1/R in 1/m (its sign, the direction of the curve, is ignored).
+    """
+    m = _checks.array("mass", mass, low=0.0, low_open=True)
+    k = np.abs(_checks.array("curvature", curvature))
+    return CURVE_RESISTANCE * m * k
+
+
+@dataclass(frozen=True)
+class Route:
+    """Grade and curvature against position along the line.
+
+    Segment ``k`` runs from ``positions[k]`` to ``positions[k+1]`` (the last one
+    without end, and the first one also backwards) with constant ``grade[k]``
+    (rise over run, + uphill in the direction of travel), horizontal curvature
+    ``curvature[k]`` (1/m, + to the left) and vertical curvature
+    ``vertical_curvature[k]`` (1/m, + for a sag, − for a crest).
+    """
+
+    positions: tuple
+    grade: tuple
+    curvature: tuple | None = None
+    vertical_curvature: tuple | None = None
+
+    def __post_init__(self):
+        x = _checks.array("positions", self.positions, ndim=1)
+        if x.size < 1 or np.any(np.diff(x) <= 0):
+            raise ValueError(
+                f"positions must be a non-empty strictly increasing sequence, got {self.positions!r}"
+            )
+        for name in ("grade", "curvature", "vertical_curvature"):
+            value = getattr(self, name)
+            arr = np.zeros(x.size) if value is None else _checks.array(name, value, shape=(x.size,))
+            object.__setattr__(self, name, tuple(float(a) for a in arr))
+        object.__setattr__(self, "positions", tuple(float(a) for a in x))
+        object.__setattr__(self, "_x", x)
+        object.__setattr__(self, "_table", np.array([self.grade, self.curvature, self.vertical_curvature]))
+        object.__setattr__(self, "_level", not np.any(self._table[:2]))
+
+    @property
+    def is_level(self) -> bool:
+        """True when the route is level tangent track everywhere."""
+        return self._level
+
+    @classmethod
+    def level(cls) -> Route:
+        """Level tangent track everywhere."""
+        return cls((0.0,), (0.0,))
+
+    def _segment(self, position):
+        return np.clip(np.searchsorted(self._x, position, side="right") - 1, 0, self._x.size - 1)
+
+    def grade_at(self, position) -> np.ndarray:
+        """Grade at ``position`` (m; any shape)."""
+        return self._table[0][self._segment(position)]
+
+    def curvature_at(self, position) -> np.ndarray:
+        """Horizontal curvature at ``position``, 1/m."""
+        return self._table[1][self._segment(position)]
+
+    def vertical_curvature_at(self, position) -> np.ndarray:
+        """Vertical curvature at ``position``, 1/m (+ sag)."""
+        return self._table[2][self._segment(position)]

@@ -1,0 +1,244 @@
+"""Rail vehicles and consists: the bodies that a longitudinal train model moves.
+
+A :class:`Vehicle` holds what train dynamics needs of one car or locomotive (mass,
+length over the coupler pulling faces, axles, frontal area, truck-centre spacing,
+traction and brake capability). :func:`make_consist` builds a :class:`Consist`
+from a short description such as ``"2 SD40-2 + 100 loaded hopper"``, using the
+published default vehicles in :data:`VEHICLES`.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from raildyn import _checks
+
+LB = 0.45359237  # kg per pound (exact)
+FT = 0.3048  # m per foot (exact)
+LBF = 4.4482216152605  # N per pound-force (exact)
+HP = 745.69987158227  # W per mechanical horsepower
+G = 9.80665  # m/s², standard gravity
+
+
+@dataclass(frozen=True)
+class Vehicle:
+    """One rail vehicle as seen by longitudinal train dynamics.
+
+    Parameters
+    ----------
+    name : str
+    mass : float
+        Mass on the rails, kg (> 0).
+    length : float
+        Length over the coupler pulling faces, m (> 0).
+    axles : int
+        Number of axles (>= 1).
+    frontal_area : float
+        Cross-section used by the Davis air-resistance term, m² (> 0).
+    truck_centres : float
+        Distance between the truck (bogie) centres, m; > 0 and < ``length``.
+    kind : {"locomotive", "freight", "passenger"}
+        Selects the Davis coefficients of the original form.
+    max_tractive_effort : float
+        Adhesion-limited starting tractive effort at full notch, N (0 for a wagon).
+    rail_power : float
+        Power at the rail at full notch, W (0 for a wagon).
+    max_dynamic_brake : float
+        Largest dynamic-brake retarding force, N (0 for a wagon).
+    brake_force : float
+        Retarding force of a full emergency air-brake application, N (>= 0).
+    """
+
+    name: str
+    mass: float
+    length: float
+    axles: int
+    frontal_area: float
+    truck_centres: float
+    kind: str = "freight"
+    max_tractive_effort: float = 0.0
+    rail_power: float = 0.0
+    max_dynamic_brake: float = 0.0
+    brake_force: float = 0.0
+
+    def __post_init__(self):
+        _checks.positive("mass", self.mass)
+        _checks.positive("length", self.length)
+        _checks.integer("axles", self.axles, low=1)
+        _checks.positive("frontal_area", self.frontal_area)
+        _checks.scalar(
+            "truck_centres", self.truck_centres, low=0.0, high=self.length, low_open=True, high_open=True
+        )
+        if self.kind not in DAVIS_KINDS:
+            raise ValueError(f"kind must be one of {DAVIS_KINDS}, got {self.kind!r}")
+        for name in ("max_tractive_effort", "rail_power", "max_dynamic_brake", "brake_force"):
+            _checks.nonnegative(name, getattr(self, name))
+
+    @property
+    def weight(self) -> float:
+        """Weight m·g, N."""
+        return self.mass * G
+
+
+DAVIS_KINDS = ("locomotive", "freight", "passenger")
+
+# Emergency brake retarding force of a wagon: a net braking ratio (shoe force over
+# weight) of 10 % at the AAR loaded-car level times a composition-shoe friction
+# coefficient of 0.35 gives 3.5 % of the weight; an assumed, typical value.
+_BRAKE_FRACTION = 0.10 * 0.35
+
+# Rail power of a diesel-electric locomotive: 82 % of the engine's rated power
+# reaches the rail (Hay's suggested transmission efficiency) {hay1982}.
+_TRANSMISSION_EFFICIENCY = 0.82
+
+#: Published default vehicles, SI units.
+VEHICLES: dict[str, Vehicle] = {
+    # EMD SD40-2, a 6-axle 3000 hp road locomotive: 368,000 lb, 68 ft 10 in over the coupler
+    # pulling faces, truck centres 43 ft 6 in, starting tractive effort 115,000 lbf {emd_sd40_2}.
+    # Frontal area 120 ft², the upper end of Davis's 105–120 ft² for locomotives {davis1926}.
+    # Dynamic brake of 360 kN (about 80,000 lbf): an assumed extended-range value.
+    "SD40-2": Vehicle(
+        "SD40-2",
+        mass=368_000 * LB,
+        length=(68 + 10 / 12) * FT,
+        axles=6,
+        frontal_area=120 * FT**2,
+        truck_centres=(43 + 6 / 12) * FT,
+        kind="locomotive",
+        max_tractive_effort=115_000 * LBF,
+        rail_power=_TRANSMISSION_EFFICIENCY * 3000 * HP,
+        max_dynamic_brake=360e3,
+        brake_force=_BRAKE_FRACTION * 368_000 * LB * G,
+    ),
+    # Loaded 4-axle coal hopper at the AAR 286,000 lb gross rail load {railroadnet_286k}; length over the
+    # pulling faces 53 ft and truck centres 40 ft 8 in are assumed typical values; frontal area
+    # 90 ft², Davis's figure for freight cars {davis1926}.
+    "loaded hopper": Vehicle(
+        "loaded hopper",
+        mass=286_000 * LB,
+        length=53 * FT,
+        axles=4,
+        frontal_area=90 * FT**2,
+        truck_centres=(40 + 8 / 12) * FT,
+        brake_force=_BRAKE_FRACTION * 286_000 * LB * G,
+    ),
+    # The same hopper empty: 63,000 lb light weight (assumed typical); the brake rigging is
+    # the same, so the empty car keeps a lower absolute brake force (AAR empty-car ratio
+    # would be higher; an empty/load device is not modelled).
+    "empty hopper": Vehicle(
+        "empty hopper",
+        mass=63_000 * LB,
+        length=53 * FT,
+        axles=4,
+        frontal_area=90 * FT**2,
+        truck_centres=(40 + 8 / 12) * FT,
+        brake_force=0.25 * 0.35 * 63_000 * LB * G,
+    ),
+}
+
+
+@dataclass(frozen=True)
+class Consist:
+    """An ordered train of vehicles, front (index 0) to rear.
+
+    Attributes are numpy arrays over the vehicles (shape ``(n,)``), SI units.
+    """
+
+    vehicles: tuple[Vehicle, ...]
+    description: str = ""
+    _arrays: dict = field(default_factory=dict, repr=False, compare=False)
+
+    def __post_init__(self):
+        if len(self.vehicles) < 1:
+            raise ValueError("a consist needs at least one vehicle, got 0")
+        for i, v in enumerate(self.vehicles):
+            if not isinstance(v, Vehicle):
+                raise TypeError(f"vehicles[{i}] must be a Vehicle, got {type(v).__name__}")
+        names = ("mass", "length", "axles", "frontal_area", "truck_centres", "max_tractive_effort")
+        names += ("rail_power", "max_dynamic_brake", "brake_force")
+        for name in names:
+            self._arrays[name] = np.array([getattr(v, name) for v in self.vehicles], dtype=float)
+        self._arrays["locomotive"] = np.array([v.kind == "locomotive" for v in self.vehicles])
+
+    def __len__(self) -> int:
+        return len(self.vehicles)
+
+    def __getattr__(self, name):
+        arrays = self.__dict__.get("_arrays", {})
+        if name in arrays:
+            return arrays[name]
+        raise AttributeError(name)
+
+    @property
+    def total_mass(self) -> float:
+        """Mass of the train, kg."""
+        return float(self.mass.sum())
+
+    @property
+    def train_length(self) -> float:
+        """Length over the pulling faces, m."""
+        return float(self.length.sum())
+
+    @property
+    def centre_offsets(self) -> np.ndarray:
+        """Distance of each vehicle's centre behind the front coupler face, m (shape ``(n,)``)."""
+        ends = np.cumsum(self.length)
+        return ends - 0.5 * self.length
+
+    @property
+    def couplers(self) -> int:
+        """Number of couplers between vehicles (n − 1)."""
+        return len(self.vehicles) - 1
+
+    def with_vehicle(self, index: int, **changes) -> Consist:
+        """A copy with vehicle ``index`` changed (``dataclasses.replace`` keywords)."""
+        vehicles = list(self.vehicles)
+        vehicles[index] = replace(vehicles[index], **changes)
+        return Consist(tuple(vehicles), self.description)
+
+
+_TERM = re.compile(r"^\s*(\d+)\s*[x×*]?\s*(.+?)\s*$")
+
+
+def make_consist(description: str, vehicles: dict[str, Vehicle] | None = None) -> Consist:
+    """Build a consist from a description such as ``"2 SD40-2 + 100 loaded hopper"``.
+
+    Parameters
+    ----------
+    description : str
+        Terms joined by ``+``, front first; each is ``count name`` (count >= 1; a
+        missing count means 1). Plural names ending in ``s`` are accepted.
+    vehicles : dict, optional
+        Name to :class:`Vehicle`; defaults to :data:`VEHICLES`.
+
+    Returns
+    -------
+    Consist
+
+    Examples
+    --------
+    >>> len(make_consist("2 SD40-2 + 100 loaded hoppers"))
+    102
+    """
+    if not isinstance(description, str) or not description.strip():
+        raise ValueError(
+            f"description must be a non-empty text such as '2 SD40-2 + 50 loaded hopper', got {description!r}"
+        )
+    table = VEHICLES if vehicles is None else vehicles
+    lookup = {k.lower(): v for k, v in table.items()}
+    out: list[Vehicle] = []
+    for term in description.split("+"):
+        match = _TERM.match(term)
+        count, name = (int(match.group(1)), match.group(2)) if match else (1, term.strip())
+        if count < 1:
+            raise ValueError(f"vehicle count must be >= 1, got {count} in {term.strip()!r}")
+        key = name.lower()
+        if key not in lookup and key.endswith("s") and key[:-1] in lookup:
+            key = key[:-1]
+        if key not in lookup:
+            raise ValueError(f"unknown vehicle type {name!r}; known types: {sorted(table)}")
+        out.extend([lookup[key]] * count)
+    return Consist(tuple(out), description)

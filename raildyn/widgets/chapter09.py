@@ -1,0 +1,179 @@
+"""Chapter 9 widgets: an emergency braking run of a freight train, and string-lining L/V on a curve.
+
+Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
+models are in :mod:`raildyn.train`; this module turns control values into model
+calls, caches the braking runs (each is a whole-train integration, about half a
+second) and moves artists.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import ipywidgets as widgets
+import numpy as np
+
+from raildyn import plots, train
+from raildyn.widgets._core import Recipe, slider
+
+DURATION = 40.0  # s of the braking run shown: the application, the run-in and the settling
+SLACK_GRID = [0, 10, 20, 30, 40, 50, 60, 75]  # mm, precomputed for the page without a kernel
+
+
+@lru_cache(maxsize=64)
+def braking_run(cars: int, slack_mm: float, signal_speed: float, speed_kmh: float) -> train.TrainRun:
+    """The emergency braking run of 2 SD40-2 + ``cars`` loaded hoppers, stretched at the start (cached)."""
+    model = train.braking_model(cars, 2, slack=slack_mm / 1000, propagation_speed=signal_speed)
+    return train.simulate(model, DURATION, speed_kmh / 3.6, initial_extension=slack_mm / 2000, samples=401)
+
+
+def _braking_controls():
+    return {
+        "cars": widgets.IntSlider(
+            value=50,
+            min=10,
+            max=100,
+            step=10,
+            description="wagons",
+            continuous_update=False,
+            style={"description_width": "initial"},
+            layout=widgets.Layout(width="360px"),
+        ),  # fmt: skip
+        "slack_mm": slider("slack per coupler (mm)", 25.0, 0.0, 75.0, 5.0, fmt=".0f", continuous=False),
+        "signal_speed": slider(
+            "brake signal speed (m/s)", 250.0, 100.0, 300.0, 10.0, fmt=".0f", continuous=False
+        ),
+        "speed_kmh": slider("initial speed (km/h)", 72.0, 20.0, 100.0, 4.0, fmt=".0f", continuous=False),
+    }
+
+
+def _braking_setup(live, status):
+    ax_env, ax_t = live.axes[0]
+    for value in SLACK_GRID:  # precompute the grid of the static page and of a quick drag
+        braking_run(50, float(value), 250.0, 72.0)
+    (draft,) = ax_env.plot([], [], color=plots.COLORS[0], label="largest draft (tension)")
+    (buff,) = ax_env.plot([], [], color=plots.COLORS[1], label="largest buff (compression)")
+    (peak_mark,) = ax_env.plot([], [], "o", color="k", mfc="w", mew=2, ms=7, label="peak")
+    ax_env.axhline(0, color="0.4", lw=0.8)
+    ax_env.set_xlim(0, 1800)
+    ax_env.set_ylim(-1600, 700)
+    ax_env.set_xlabel("coupler position behind the front (m)")
+    ax_env.set_ylabel("coupler force envelope (kN)")
+    ax_env.legend(loc="lower right")
+    (front,) = ax_t.plot([], [], color=plots.COLORS[2], lw=1.0, label="coupler 1 (behind the locomotives)")
+    (worst,) = ax_t.plot([], [], color="k", label="coupler with the peak")
+    (rear,) = ax_t.plot([], [], color=plots.COLORS[3], lw=1.0, label="last coupler")
+    ax_t.axhline(0, color="0.4", lw=0.8)
+    ax_t.set_xlim(0, DURATION)
+    ax_t.set_ylim(-1600, 700)
+    ax_t.set_xlabel("time after the emergency application (s)")
+    ax_t.set_ylabel("coupler force (kN)")
+    ax_t.legend(loc="lower right")
+    live.animate(draft, buff, peak_mark, front, worst, rear)
+
+    def redraw(v):
+        run = braking_run(
+            int(v["cars"]), float(v["slack_mm"]), float(v["signal_speed"]), float(v["speed_kmh"])
+        )
+        consist = train.make_consist(f"2 SD40-2 + {int(v['cars'])} loaded hopper")
+        where = np.cumsum(consist.length)[:-1]
+        draft.set_data(where, run.max_tension / 1e3)
+        buff.set_data(where, -run.max_compression / 1e3)
+        force, j, t_peak = run.peak()
+        peak_mark.set_data([where[j]], [force / 1e3])
+        front.set_data(run.t, run.coupler_force[1] / 1e3)
+        worst.set_data(run.t, run.coupler_force[j] / 1e3)
+        rear.set_data(run.t, run.coupler_force[-1] / 1e3)
+        kind = "buff" if force < 0 else "draft"
+        status.value = (
+            f"peak {abs(force) / 1e3:.0f} kN {kind} at coupler {j} ({where[j]:.0f} m behind the front) "
+            f"at t = {t_peak:.1f} s · the brake signal reaches the rear after "
+            f"{consist.train_length / v['signal_speed']:.1f} s"
+        )
+
+    return redraw
+
+
+BRAKING_RUN = Recipe(
+    _braking_controls,
+    _braking_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (10.0, 3.8)},
+    static={"slack_mm": SLACK_GRID},
+    title="Coupler forces of a freight train in emergency braking: envelope along the train and histories",
+)
+
+
+def braking_run_widget():
+    """Emergency braking of 2 SD40-2 + N loaded hoppers: coupler-force envelope and histories.
+
+    Controls: number of wagons, slack per coupler (mm), brake-signal speed (m/s)
+    and initial speed (km/h); each new combination is one whole-train integration
+    (debounced: it runs when a slider is released), repeated ones come from a cache.
+    """
+    return BRAKING_RUN.build()
+
+
+def _lining_controls():
+    return {
+        "radius": slider("curve radius (m)", 200.0, 100.0, 1000.0, 10.0, fmt=".0f"),
+        "force_kn": slider("coupler force (kN, + draft)", 800.0, -1500.0, 1500.0, 50.0, fmt=".0f"),
+    }
+
+
+_LINING = train.make_consist("3 loaded hopper")
+_FORCES = np.linspace(-1500e3, 1500e3, 121)
+
+
+def _lv(radius):
+    """Truck-side L/V of the middle hopper for every force in _FORCES, both couplers equal."""
+    return np.array(
+        [train.coupler_effects(_LINING, [f, f], curvature=1 / radius).l_over_v[1, 0] for f in _FORCES]
+    )
+
+
+def _lining_setup(live, status):
+    (ax,) = live.axes[0]
+    for radius in (150, 300, 600):
+        ax.plot(_FORCES / 1e3, _lv(radius), color="0.8", lw=0.8)
+        ax.annotate(f"R = {radius} m", (1500, _lv(radius)[-1]), fontsize=7, ha="right", va="bottom")
+    (curve,) = ax.plot([], [], color=plots.COLORS[0], label="truck-side L/V, middle hopper")
+    (mark,) = ax.plot([], [], "o", color="k", mfc="w", mew=2, ms=7)
+    ax.set_xlim(-1500, 1500)
+    ax.set_ylim(0, 0.5)
+    ax.set_xlabel("coupler force (kN): ← buff (jack-knifing) · draft (string-lining) →")
+    ax.set_ylabel("truck-side L/V")
+    ax.legend(loc="upper center")
+    live.animate(curve, mark)
+
+    def redraw(v):
+        lv = _lv(v["radius"])
+        curve.set_data(_FORCES / 1e3, lv)
+        f = v["force_kn"] * 1e3
+        effects = train.coupler_effects(_LINING, [f, f], curvature=1 / v["radius"])
+        mark.set_data([v["force_kn"]], [effects.l_over_v[1, 0]])
+        angle = np.degrees(train.coupler_angles(_LINING, 1 / v["radius"])[0])
+        mode = effects.mode[0] or "no coupler force"
+        status.value = (
+            f"{mode}: coupler angle {angle:.2f}° · lateral force per truck "
+            f"{abs(effects.lateral_force[1, 0]) / 1e3:.1f} kN · L/V = {effects.l_over_v[1, 0]:.3f}"
+        )
+
+    return redraw
+
+
+STRING_LINING = Recipe(
+    _lining_controls,
+    _lining_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (7.0, 3.6)},
+    static={"radius": [100, 150, 200, 300, 400, 600, 800, 1000]},
+    title="Truck-side L/V of a hopper from the lateral components of its coupler forces on a curve",
+)
+
+
+def string_lining():
+    """Truck-side L/V of a hopper between two hoppers on a curve, against the coupler force.
+
+    Controls: curve radius (m) and coupler force (kN, + draft). Grey curves:
+    R = 150, 300 and 600 m.
+    """
+    return STRING_LINING.build()
