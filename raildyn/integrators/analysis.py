@@ -1,0 +1,282 @@
+"""Stability and accuracy of each scheme on the test oscillator x'' + 2ξω x' + ω² x = 0.
+
+Applied to one oscillator with a constant step, every scheme of this package is a
+linear recursion z₊ = A z; A is its amplification matrix {Bathe 1996, §9.4.1}.
+Its eigenvalues tell all: the scheme is stable while the spectral radius
+ρ(A) = max|λ| stays at or below 1, and the principal pair λ = exp(Δt(−ξ̄ω̄ ± iω̄))
+gives the computed frequency ω̄ and decay, hence the period elongation and the
+amplitude decay plotted against Δt/T in {Bathe 1996, Figs. 9.2–9.4}. The period is
+T = 1 s, so ω = 2π rad/s and Δt = Δt/T.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from math import factorial
+
+import numpy as np
+
+from raildyn._checks import scalar
+from raildyn.integrators import linear
+
+# Every scheme the analysis knows, by name; the same names select the integrators.
+METHODS = (
+    "central_difference",
+    "houbolt",
+    "wilson",
+    "newmark",
+    "average_acceleration",
+    "linear_acceleration",
+    "hht_alpha",
+    "forward_euler",
+    "rk4",
+    "abm",
+)
+
+# The parameters each scheme accepts, with their defaults.
+PARAMETERS = {
+    "central_difference": {},
+    "houbolt": {},
+    "wilson": {"theta": 1.4},
+    "newmark": {"gamma": 0.5, "beta": 0.25},
+    "average_acceleration": {},
+    "linear_acceleration": {},
+    "hht_alpha": {"alpha": -0.05},
+    "forward_euler": {},
+    "rk4": {},
+    "abm": {},
+}
+
+
+def _parameters(method: str, params: dict) -> dict:
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    allowed = PARAMETERS[method]
+    unknown = sorted(set(params) - set(allowed))
+    if unknown:
+        raise ValueError(f"{method} takes the parameters {sorted(allowed) or 'none'}, got {unknown}")
+    chosen = {**allowed, **params}
+    if method == "wilson":
+        chosen["theta"] = scalar("theta", chosen["theta"], low=1.0, high=3.0)
+    if method == "newmark":
+        chosen["gamma"] = scalar("gamma", chosen["gamma"], low=0.5, high=1.5)
+        chosen["beta"] = scalar("beta", chosen["beta"], low=0.0, high=1.0)
+    if method == "hht_alpha":
+        chosen["alpha"] = scalar("alpha", chosen["alpha"], low=-1 / 3, high=0.0)
+    return chosen
+
+
+def _abm_matrix(hJ: np.ndarray) -> np.ndarray:
+    """Adams–Bashforth–Moulton (4th order, PECE) on y' = J y, state (y_n, y_{n−1}, y_{n−2}, y_{n−3}).
+
+    ``hJ`` is a stack (k, s, s) of Δt J.
+    """
+    k, s = hJ.shape[0], hJ.shape[-1]
+    eye = np.broadcast_to(np.eye(s), hJ.shape)
+    # Predictor (AB4) blocks, then the corrector (three-step AM, fourth order) fed f(predictor).
+    pred = [eye + 55 / 24 * hJ, -59 / 24 * hJ, 37 / 24 * hJ, -9 / 24 * hJ]
+    corr = [eye + 19 / 24 * hJ, -5 / 24 * hJ, 1 / 24 * hJ, 0 * hJ]
+    A = np.zeros((k, 4 * s, 4 * s), dtype=hJ.dtype)
+    for j in range(4):
+        A[:, :s, j * s : (j + 1) * s] = corr[j] + 9 / 24 * hJ @ pred[j]
+    A[:, s:, : 3 * s] = np.eye(3 * s)
+    return A
+
+
+def _matrices(method: str, h: np.ndarray, xi: float, params: dict) -> np.ndarray:
+    """The amplification matrices (k, s, s) for the steps h (k,) on the oscillator ω = 2π rad/s."""
+    w = 2 * np.pi
+    M, C, K = np.eye(1), np.array([[2 * xi * w]]), np.array([[w * w]])
+    h = h[:, None, None]
+    if method == "central_difference":
+        return linear.recursion_matrices(linear.central_difference_step(M, C, K, h), 2, 1)[0]
+    if method == "houbolt":
+        return linear.recursion_matrices(linear.houbolt_step(M, C, K, h), 3, 1)[0]
+    if method == "wilson":
+        return linear.recursion_matrices(linear.wilson_step(M, C, K, h, params["theta"]), 3, 1)[0]
+    if method in ("newmark", "average_acceleration", "linear_acceleration", "hht_alpha"):
+        alpha = params.get("alpha", 0.0)
+        gamma, beta = {
+            "newmark": (params.get("gamma"), params.get("beta")),
+            "average_acceleration": (0.5, 0.25),
+            "linear_acceleration": (0.5, 1 / 6),
+            "hht_alpha": (0.5 - alpha, (1 - alpha) ** 2 / 4),
+        }[method]
+        return linear.recursion_matrices(linear.newmark_step(M, C, K, h, gamma, beta, alpha), 3, 1)[0]
+    hJ = h * np.array([[0.0, 1.0], [-w * w, -2 * xi * w]])
+    if method == "forward_euler":
+        return np.eye(2) + hJ
+    if method == "rk4":
+        return sum(np.linalg.matrix_power(hJ, k) / factorial(k) for k in range(5))
+    return _abm_matrix(hJ)
+
+
+def amplification_matrix(method: str, dt_over_T, damping_ratio: float = 0.0, **params) -> np.ndarray:
+    """The amplification matrix A of ``method`` on the oscillator of period T (z₊ = A z).
+
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    dt_over_T : float or array_like
+        Step over the undamped natural period, > 0.
+    damping_ratio : float
+        ξ of the oscillator, in [0, 1).
+    **params
+        The scheme's parameters: ``theta`` (wilson), ``gamma`` and ``beta`` (newmark), ``alpha`` (hht_alpha).
+
+    Returns
+    -------
+    ndarray, shape (s, s) or (k, s, s) for k values of dt_over_T
+        The state is (x, v, a) for the Newmark family and Wilson-θ, (x_n, x_{n−1}) for the
+        central difference, (x_n, x_{n−1}, x_{n−2}) for Houbolt, (x, v) for forward Euler
+        and RK4, and four past (x, v) for the Adams–Bashforth–Moulton scheme.
+
+    Examples
+    --------
+    >>> A = amplification_matrix("central_difference", 0.1)
+    >>> round(float(np.trace(A)), 6)  # 2 − (ωΔt)² with ωΔt = 0.2π
+    1.605216
+    """
+    chosen = _parameters(method, params)
+    xi = scalar("damping_ratio", damping_ratio, low=0.0, high=1.0, high_open=True)
+    ratios = np.asarray(dt_over_T, dtype=float)
+    flat = np.atleast_1d(ratios)
+    if flat.ndim != 1 or not np.all(np.isfinite(flat)) or np.any(flat <= 0):
+        raise ValueError(f"dt_over_T must be > 0 and finite, got {dt_over_T!r}")
+    mats = _matrices(method, flat, xi, chosen)
+    return mats[0] if ratios.ndim == 0 else mats
+
+
+def spectral_radius(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
+    """ρ(A) = max |λ(A)|: the scheme is stable while ρ <= 1 (float, or array like ``dt_over_T``)."""
+    mats = amplification_matrix(method, dt_over_T, damping_ratio, **params)
+    return np.abs(np.linalg.eigvals(mats)).max(axis=-1)
+
+
+def _principal(method, dt_over_T, damping_ratio, params):
+    """The principal eigenvalue (nearest the exact exp(sΔt)) for each ratio, and the ratios."""
+    mats = amplification_matrix(method, dt_over_T, damping_ratio, **params)
+    ratios = np.atleast_1d(np.asarray(dt_over_T, dtype=float))
+    mats = mats.reshape(ratios.size, *mats.shape[-2:])
+    xi, w = damping_ratio, 2 * np.pi
+    target = ratios * w * (-xi + 1j * np.sqrt(1 - xi * xi))  # s Δt of the exact motion
+    lam = np.linalg.eigvals(mats)
+    # The principal root is the complex one whose logarithm is nearest sΔt; spurious roots of the
+    # multistep schemes (and the zero root of the (x, v, a) forms) are real at the steps of interest.
+    # Where no root is complex the motion does not oscillate: take the largest root, marked real.
+    complex_root = lam.imag > 1e-12 * np.abs(lam)
+    logs = np.log(np.where(complex_root, lam, 1.0))
+    distance = np.where(complex_root, np.abs(logs - target[:, None]), np.inf)
+    pick = np.where(complex_root.any(axis=1), np.argmin(distance, axis=1), np.argmax(np.abs(lam), axis=1))
+    return lam[np.arange(ratios.size), pick], ratios
+
+
+def _shape(value, dt_over_T):
+    return float(value[0]) if np.ndim(dt_over_T) == 0 else value
+
+
+def period_elongation(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
+    """(T̄ − T_d)/T_d: relative error of the computed period (NaN where the principal root is real).
+
+    T̄ = 2πΔt/arg λ from the principal eigenvalue λ; T_d is the exact damped period.
+    Positive means the computed motion is too slow (Bathe's "PE", as a fraction, not %).
+    """
+    lam, ratios = _principal(method, dt_over_T, damping_ratio, params)
+    xi = damping_ratio
+    phase = np.abs(np.angle(lam))
+    exact = 2 * np.pi * ratios * np.sqrt(1 - xi * xi)  # ω_d Δt
+    with np.errstate(divide="ignore"):
+        pe = np.where(np.abs(lam.imag) > 1e-12 * np.abs(lam), exact / phase - 1.0, np.nan)
+    return _shape(pe, dt_over_T)
+
+
+def amplitude_decay(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
+    """1 − (computed / exact amplitude) after one damped period T_d (Bathe's "AD", as a fraction).
+
+    The computed amplitude shrinks by |λ| a step over T_d/Δt steps; the exact one by
+    exp(−ξωT_d). Zero for a scheme with no numerical damping; negative if it grows.
+    """
+    lam, ratios = _principal(method, dt_over_T, damping_ratio, params)
+    xi = damping_ratio
+    steps = np.sqrt(1 - xi * xi) ** -1 / ratios  # T_d/Δt with T = 1
+    physical = np.exp(-xi * 2 * np.pi * steps * ratios)
+    return _shape(1.0 - np.abs(lam) ** steps / physical, dt_over_T)
+
+
+@lru_cache(maxsize=256)
+def _limit(method: str, xi: float, items: tuple) -> float:
+    params = dict(items)
+    grid = np.logspace(-3, 3, 481)
+    unstable = spectral_radius(method, grid, xi, **params) > 1 + 1e-9
+    if not unstable.any():
+        return np.inf
+    i = int(np.argmax(unstable))
+    if i == 0:
+        return 0.0
+    lo, hi = grid[i - 1], grid[i]
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if spectral_radius(method, mid, xi, **params) > 1 + 1e-9:
+            hi = mid
+        else:
+            lo = mid
+    return float(lo)
+
+
+def stability_limit(method: str, damping_ratio: float = 0.0, **params) -> float:
+    """Largest Δt/T for which ρ(A) <= 1, found on the amplification matrix (inf: unconditional; 0: never).
+
+    Found by a scan of Δt/T from 10⁻³ to 10³ and bisection, so it checks the closed
+    forms rather than quoting them: 1/π for the central difference, √3/π for linear
+    acceleration, √2/π for RK4 on an undamped oscillator.
+
+    Examples
+    --------
+    >>> round(stability_limit("central_difference") * np.pi, 9)
+    1.0
+    """
+    chosen = _parameters(method, params)
+    xi = scalar("damping_ratio", damping_ratio, low=0.0, high=1.0, high_open=True)
+    return _limit(method, xi, tuple(sorted(chosen.items())))
+
+
+def _scalar_radius(method: str, z: np.ndarray) -> np.ndarray:
+    """ρ of a first-order scheme on y' = λy with z = Δtλ (complex array)."""
+    if method == "forward_euler":
+        return np.abs(1 + z)
+    if method == "rk4":
+        return np.abs(1 + z + z**2 / 2 + z**3 / 6 + z**4 / 24)
+    return np.abs(np.linalg.eigvals(_abm_matrix(z.reshape(-1, 1, 1)))).max(axis=-1)
+
+
+def first_order_step_limit(method: str, eigenvalue: complex) -> float:
+    """Largest Δt (s) for which a first-order scheme keeps the mode y' = λy from growing.
+
+    For schemes of the (x, x') form (forward Euler, RK4, Adams–Bashforth–Moulton), the
+    limit on a damped or non-symmetric system is set by the eigenvalues λ of the
+    first-order system, not by the undamped periods: a heavily damped real λ (a creep
+    or friction time constant) can bind first. 0 when no step is stable (an undamped
+    mode under forward Euler, or Re λ > 0, a mode that grows anyway).
+    """
+    if method not in ("forward_euler", "rk4", "abm"):
+        raise ValueError(f"method must be a first-order scheme (forward_euler, rk4, abm), got {method!r}")
+    lam = complex(eigenvalue)
+    size = abs(lam)
+    if size == 0.0:
+        return np.inf
+    steps = np.logspace(-4, 2, 241) / size
+    unstable = _scalar_radius(method, steps * lam) > 1 + 1e-9
+    if not unstable.any():
+        return np.inf
+    i = int(np.argmax(unstable))
+    if i == 0:
+        return 0.0
+    lo, hi = steps[i - 1], steps[i]
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if _scalar_radius(method, np.array([mid * lam]))[0] > 1 + 1e-9:
+            hi = mid
+        else:
+            lo = mid
+    return float(lo)

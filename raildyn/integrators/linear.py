@@ -1,0 +1,407 @@
+"""Direct integration of linear systems: central difference, Houbolt, Wilson-θ, Newmark-β and HHT-α.
+
+For a linear system with a constant step every scheme here is a linear
+recursion ``z₊ = A z + B₀ f(t) + B₁ f(t + Δt)`` on a small state z (two or three
+vectors of n entries). Each scheme is written once, as the step of Bathe's
+tables {Bathe 1996, §9.2, Tables 9.1–9.3}, on matrices of column states; feeding
+it identity blocks gives ``A``, ``B₀`` and ``B₁`` with the effective stiffness
+factorized once. The run is then one matrix–vector product a step, and the same
+``A`` on the test oscillator is the amplification matrix of
+:mod:`raildyn.integrators.analysis`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+import scipy.linalg
+import scipy.signal
+from scipy.linalg.blas import dgemv as gemv
+
+from raildyn._checks import scalar
+from raildyn.integrators._common import (
+    IntegrationResult,
+    Problem,
+    check_on_divergence,
+    divergence,
+    equilibrium_acceleration,
+    problem,
+    sampled_load,
+    scale,
+)
+
+# How often (in steps) the recursion looks for a blow-up: often enough that a state growing even
+# a hundredfold a step is caught long before it overflows, rarely enough to cost nothing.
+_CHECK_EVERY = 16
+
+Step = Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray]
+
+
+def _solver(matrix: np.ndarray):
+    """Factorize once; return a function solving ``matrix @ y = b`` for a vector or block b.
+
+    A stack of matrices (k, n, n) (the test oscillator at k steps, for the analysis) is
+    inverted once instead, so that one call serves every step size.
+    """
+    if matrix.ndim > 2:
+        inverse = np.linalg.inv(matrix)
+        return lambda b: inverse @ b
+    lu = scipy.linalg.lu_factor(matrix, check_finite=False)
+    return lambda b: scipy.linalg.lu_solve(lu, b, check_finite=False)
+
+
+def _stack(*parts) -> np.ndarray:
+    """Stack state parts along the second-last axis, broadcasting any leading (batch) axes."""
+    lead = np.broadcast_shapes(*(p.shape[:-2] for p in parts))
+    return np.concatenate([np.broadcast_to(p, lead + p.shape[-2:]) for p in parts], axis=-2)
+
+
+# ---------------------------------------------------------------------------
+# One step of each scheme, on column blocks: Z (s, c), F0 = f(t) and F1 = f(t + h), (n, c).
+# M, C, K and h may also carry a leading batch axis (k, ...) for the analysis of the test oscillator.
+
+
+def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
+    """Newmark-β (α = 0) or HHT-α on the state (x, v, a), acceleration form.
+
+    HHT-α {Hilber, Hughes & Taylor 1977} weighs the elastic, damping and applied
+    forces between t and t + Δt: M a₊ + (1+α)(C v₊ + K x₊ − f₊) − α(C v + K x − f) = 0,
+    with Newmark's updates x₊ = x + Δt v + Δt²[(½−β) a + β a₊], v₊ = v + Δt[(1−γ) a + γ a₊].
+    """
+    n = M.shape[-1]
+    solve = _solver(M + (1 + alpha) * (gamma * h * C + beta * h * h * K))
+
+    def step(Z, F0, F1):
+        x, v, a = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
+        x_pred = x + h * v + h * h * (0.5 - beta) * a
+        v_pred = v + h * (1 - gamma) * a
+        rhs = (1 + alpha) * F1 - alpha * F0
+        rhs = rhs - C @ ((1 + alpha) * v_pred - alpha * v) - K @ ((1 + alpha) * x_pred - alpha * x)
+        a_new = solve(rhs)
+        return _stack(x_pred + beta * h * h * a_new, v_pred + gamma * h * a_new, a_new)
+
+    return step
+
+
+def wilson_step(M, C, K, h, theta) -> Step:
+    """Wilson-θ on (x, v, a): linear acceleration over τ = θΔt, equilibrium at t + τ {Bathe 1996, Tab 9.2}."""
+    n = M.shape[-1]
+    tau = theta * h
+    a0, a1 = 6 / tau**2, 3 / tau
+    a2, a3 = 2 * a1, tau / 2
+    a4, a5, a6 = a0 / theta, -a2 / theta, 1 - 3 / theta
+    a7, a8 = h / 2, h * h / 6
+    solve = _solver(K + a0 * M + a1 * C)
+
+    def step(Z, F0, F1):
+        x, v, a = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
+        load = F0 + theta * (F1 - F0) + M @ (a0 * x + a2 * v + 2 * a) + C @ (a1 * x + 2 * v + a3 * a)
+        x_tau = solve(load)
+        a_new = a4 * (x_tau - x) + a5 * v + a6 * a
+        v_new = v + a7 * (a_new + a)
+        x_new = x + h * v + a8 * (a_new + 2 * a)
+        return _stack(x_new, v_new, a_new)
+
+    return step
+
+
+def central_difference_step(M, C, K, h) -> Step:
+    """Central difference on (x_n, x_{n−1}); equilibrium at t_n {Bathe 1996, Table 9.1}."""
+    n = M.shape[-1]
+    solve = _solver(M / h**2 + C / (2 * h))
+    stiff = K - 2 * M / h**2
+    lag = M / h**2 - C / (2 * h)
+
+    def step(Z, F0, F1):
+        x, x_old = Z[..., :n, :], Z[..., n:, :]
+        return _stack(solve(F0 - stiff @ x - lag @ x_old), x)
+
+    return step
+
+
+def houbolt_step(M, C, K, h) -> Step:
+    """Houbolt on (x_n, x_{n−1}, x_{n−2}): backward differences, equilibrium at t_{n+1} {Houbolt 1950}."""
+    n = M.shape[-1]
+    a0, a1, a2, a3 = 2 / h**2, 11 / (6 * h), 5 / h**2, 3 / h
+    a4, a5, a6, a7 = -2 * a0, -a3 / 2, a0 / 2, a3 / 9
+    solve = _solver(K + a0 * M + a1 * C)
+
+    def step(Z, F0, F1):
+        x, x1, x2 = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
+        load = F1 + M @ (a2 * x + a4 * x1 + a6 * x2) + C @ (a3 * x + a5 * x1 + a7 * x2)
+        return _stack(solve(load), x, x1)
+
+    return step
+
+
+def recursion_matrices(step: Step, size: int, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A, B₀, B₁ of a linear step, found by applying it to identity blocks."""
+    eye, zs, zn = np.eye(size), np.zeros((n, size)), np.zeros((size, n))
+    zf = np.zeros((n, n))
+    A = step(eye, zs, zs)
+    B0 = step(zn, np.eye(n), zf)
+    B1 = step(zn, zf, np.eye(n))
+    return A, B0, B1
+
+
+def _recur(A, B0, B1, z0, load, steps: int, bound: float):
+    """Run z₊ = A z + B₀ f_k + B₁ f_{k+1}; return the states (rows) and the first bad row or None."""
+    Z = np.empty((steps + 1, A.shape[0]))
+    Z[0] = z0
+    G = None if load is None else load[:steps] @ B0.T + load[1 : steps + 1] @ B1.T
+    A = np.ascontiguousarray(A)
+    product = np.empty(A.shape[0])
+    for k in range(steps):
+        if G is None:
+            np.dot(A, Z[k], out=Z[k + 1])
+        else:
+            np.dot(A, Z[k], out=product)
+            np.add(product, G[k], out=Z[k + 1])
+        if k % _CHECK_EVERY == _CHECK_EVERY - 1 or k == steps - 1:
+            first = max(0, k + 1 - _CHECK_EVERY)
+            peak = np.abs(Z[first : k + 2]).max(axis=1)
+            bad = np.flatnonzero(~(peak <= bound))
+            if bad.size:
+                return Z[: first + bad[0]], first + bad[0]
+    return Z, None
+
+
+def _two_step(p: Problem, load, gamma, beta, A, B0, B1, a0, bound):
+    """Newmark with γ = 2β (the trapezoidal rule among them) as a recursion on displacements alone.
+
+    Eliminating v and a from Newmark's relations and equilibrium leaves
+    (M + γΔtC + βΔt²K) x₊ − (2M − (1−2γ)ΔtC − (½−2β+γ)Δt²K) x + (M − (1−γ)ΔtC + (½+β−γ)Δt²K) x₋
+    = Δt² [β f₊ + (½−2β+γ) f + (½+β−γ) f₋] {Hughes 2000, §9.1}: one n × 2n product a step
+    instead of 2n × 2n. With γ = 2β the velocity then follows from the displacements alone,
+    v₊ = (1 − γ/β) v + (γ/β)(x₊ − x)/Δt, a scalar recursion run for every coordinate at once.
+    """
+    n, h, m = p.n, p.h, p.t.size
+    M, C, K = p.M, p.C, p.K
+    solve = _solver(M + gamma * h * C + beta * h * h * K)
+    c1, c2 = 0.5 - 2 * beta + gamma, 0.5 + beta - gamma
+    P1 = solve(2 * M - (1 - 2 * gamma) * h * C - c1 * h * h * K)
+    P2 = -solve(M - (1 - gamma) * h * C + c2 * h * h * K)
+    pair = np.ascontiguousarray(np.hstack([P2, P1]))  # acts on [x₋, x], two adjacent rows of X
+    X = np.empty((m, n))
+    X[0] = p.x0
+    first = A @ np.r_[p.x0, p.v0, a0]
+    if load is None:
+        X[2:] = 0.0
+    else:
+        first += B0 @ load[0] + B1 @ load[1]
+        # The load term of every step at once; each step then adds its product onto it in place.
+        combined = beta * load[2:] + c1 * load[1:-1] + c2 * load[:-2]
+        np.matmul(combined, (h * h) * solve(np.eye(n)).T, out=X[2:])
+    X[1] = first[:n]
+    pair_t = pair.T  # Fortran-ordered view: BLAS computes pairᵀᵀ y = pair y with no copy
+    bad = None if np.abs(X[1]).max() <= bound else 1
+    for k in range(1, m - 1 if bad is None else 1):
+        gemv(1.0, pair_t, X[k - 1 : k + 1].reshape(-1), 1.0, X[k + 1], trans=1, overwrite_y=1)
+        if k % _CHECK_EVERY == 0 or k == m - 2:
+            start = max(1, k + 1 - _CHECK_EVERY)
+            peak = np.abs(X[start : k + 2]).max(axis=1)
+            over = np.flatnonzero(~(peak <= bound))
+            if over.size:
+                bad = start + over[0]
+                break
+    done = m if bad is None else bad
+    ratio = gamma / beta
+    steps = np.diff(X[:done], axis=0) * (ratio / h)
+    v = np.empty((done, n))
+    v[0] = p.v0
+    if done > 1:
+        zi = ((1 - ratio) * p.v0)[None, :]
+        v[1:] = scipy.signal.lfilter([1.0], [1.0, ratio - 1.0], steps, axis=0, zi=zi)[0]
+    return X[:done], v, bad
+
+
+def _finish(name, p: Problem, x, v, a, bad, on_divergence, limit_params, iterations=0) -> IntegrationResult:
+    """Package the rows (m, n) into the result, or raise / stop on a blow-up."""
+    if bad is not None:
+        err = divergence(name, p, bad, limit_params)
+        if on_divergence == "raise":
+            raise err
+        m = min(len(x), len(v), len(a))
+        return IntegrationResult(
+            p.t[:m], x[:m].T, v[:m].T, a[:m].T, name, max(m - 1, 0), iterations, False, str(err)
+        )
+    m = p.t.size
+    return IntegrationResult(p.t, x[:m].T, v[:m].T, a[:m].T, name, m - 1, iterations, True, "completed")
+
+
+# ---------------------------------------------------------------------------
+# Public integrators
+
+
+def _check_newmark(gamma, beta):
+    gamma = scalar("gamma", gamma, low=0.5, high=1.5)
+    beta = scalar("beta", beta, low=0.0, high=1.0)
+    return gamma, beta
+
+
+def newmark(
+    M, C, K, t, x0, v0, force=None, *, gamma=0.5, beta=0.25, on_divergence="raise"
+) -> IntegrationResult:
+    """Newmark-β integration of ``M x'' + C x' + K x = f(t)`` {Newmark 1959}.
+
+    Δt is the spacing of ``t``. γ = ½, β = ¼ is the average (constant) acceleration
+    method, unconditionally stable and second order; γ = ½, β = 1/6 the linear
+    acceleration method, stable for ω Δt ≤ 2√3; γ > ½ adds numerical damping and
+    drops the order to one {Bathe 1996, §9.2.4; Hughes 2000, §9.1}.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like, shape (n,), or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
+    gamma, beta : float
+        Newmark's parameters, γ in [½, 1.5], β in [0, 1].
+    on_divergence : {"raise", "stop"}
+        Raise :class:`DivergenceError`, or return the completed part with ``success=False``.
+
+    Returns
+    -------
+    IntegrationResult
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, 1.0, 101)
+    >>> r = newmark(1.0, 0.0, (2 * np.pi) ** 2, t, 1.0, 0.0)
+    >>> round(float(r.x[0, -1]), 4)  # cos 2π = 1 after one period, less a 0.03 % period error
+    1.0
+    """
+    gamma, beta = _check_newmark(gamma, beta)
+    return _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, 0.0, "newmark", on_divergence)
+
+
+def _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, name, on_divergence) -> IntegrationResult:
+    """Newmark (α = 0) or HHT-α with checked parameters; the public functions below name the preset."""
+    on_divergence = check_on_divergence(on_divergence)
+    p = problem(M, C, K, t, x0, v0)
+    load = sampled_load(force, p)
+    n, h = p.n, p.h
+    a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
+    step = newmark_step(p.M, p.C, p.K, h, gamma, beta, alpha)
+    A, B0, B1 = recursion_matrices(step, 3 * n, n)
+    params = {"gamma": gamma, "beta": beta} if name == "newmark" else ({"alpha": alpha} if alpha else {})
+    bound = scale(p, load)
+    if alpha == 0.0 and gamma == 2 * beta and p.t.size > 2:
+        x, v, bad = _two_step(p, load, gamma, beta, A, B0, B1, a0, bound)
+        # a from equilibrium: differencing v instead would lose digits as 1/(ωΔt) for slow modes.
+        a = equilibrium_acceleration(p, x, v, None if load is None else load[: len(x)])
+    elif alpha == 0.0:
+        # Newmark's a₊ satisfies equilibrium at t + Δt, so a is a function of (x, v, f): eliminating it
+        # leaves a recursion on (x, v) alone, two thirds the size.
+        Minv = np.linalg.inv(p.M)
+        E = np.vstack([np.eye(2 * n), -Minv @ np.hstack([p.K, p.C])])
+        D = np.vstack([np.zeros((2 * n, n)), Minv])
+        Ar, B0r, B1r = A[: 2 * n] @ E, A[: 2 * n] @ D + B0[: 2 * n], B1[: 2 * n]
+        Z, bad = _recur(Ar, B0r, B1r, np.r_[p.x0, p.v0], load, p.t.size - 1, bound)
+        x, v = Z[:, :n], Z[:, n:]
+        a = equilibrium_acceleration(p, x, v, None if load is None else load[: len(Z)])
+    else:
+        Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, bound)
+        x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
+    return _finish(name, p, x, v, a, bad, on_divergence, params)
+
+
+def average_acceleration(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+    """Newmark's average acceleration (trapezoidal) method, γ = ½, β = ¼; see :func:`newmark`."""
+    return _newmark_family(M, C, K, t, x0, v0, force, 0.5, 0.25, 0.0, "average_acceleration", on_divergence)
+
+
+def linear_acceleration(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+    """Newmark's linear acceleration method, γ = ½, β = 1/6 (stable for ω Δt ≤ 2√3); see :func:`newmark`."""
+    return _newmark_family(M, C, K, t, x0, v0, force, 0.5, 1 / 6, 0.0, "linear_acceleration", on_divergence)
+
+
+def hht_alpha(M, C, K, t, x0, v0, force=None, *, alpha=-0.05, on_divergence="raise") -> IntegrationResult:
+    """HHT-α {Hilber, Hughes & Taylor 1977}: γ = ½ − α, β = (1 − α)²/4, α in [−⅓, 0].
+
+    Second order and unconditionally stable, with numerical damping that grows
+    with Δt/T up to a spectral radius (1 + α)/(1 − α) at Δt/T → ∞; α = 0 is the
+    average acceleration method. Other arguments as :func:`newmark`.
+    """
+    alpha = scalar("alpha", alpha, low=-1 / 3, high=0.0)
+    gamma, beta = 0.5 - alpha, (1 - alpha) ** 2 / 4
+    if alpha == 0.0:
+        return average_acceleration(M, C, K, t, x0, v0, force, on_divergence=on_divergence)
+    return _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, "hht_alpha", on_divergence)
+
+
+def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4, on_divergence="raise") -> IntegrationResult:
+    """Wilson-θ {Wilson, Farhoomand & Bathe 1973}: unconditionally stable for θ ≥ 1.37 {Bathe 1996, §9.4}.
+
+    The force at t + θΔt is extrapolated linearly from its samples at t and t + Δt.
+    ``theta`` in [1, 3]; θ = 1 is the linear acceleration method. Other arguments as :func:`newmark`.
+    """
+    theta = scalar("theta", theta, low=1.0, high=3.0)
+    on_divergence = check_on_divergence(on_divergence)
+    p = problem(M, C, K, t, x0, v0)
+    load = sampled_load(force, p)
+    n = p.n
+    a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
+    A, B0, B1 = recursion_matrices(wilson_step(p.M, p.C, p.K, p.h, theta), 3 * n, n)
+    Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, scale(p, load))
+    x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
+    return _finish("wilson", p, x, v, a, bad, on_divergence, {"theta": theta})
+
+
+def central_difference(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+    """The central difference method: explicit, second order, stable for Δt ≤ T_min/π {Bathe 1996, §9.2.1}.
+
+    It starts from the fictitious x(−Δt) = x₀ − Δt v₀ + ½Δt² a₀, and takes one
+    step past the grid so that v and a at the last time use the same centred
+    differences as the rest. Other arguments as :func:`newmark`.
+    """
+    on_divergence = check_on_divergence(on_divergence)
+    p = problem(M, C, K, t, x0, v0)
+    load = sampled_load(force, p)
+    n, h = p.n, p.h
+    a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
+    A, B0, B1 = recursion_matrices(central_difference_step(p.M, p.C, p.K, h), 2 * n, n)
+    padded = None if load is None else np.vstack([load, load[-1:]])
+    z0 = np.r_[p.x0, p.x0 - h * p.v0 + 0.5 * h * h * a0]
+    Z, bad = _recur(A, B0, B1, z0, padded, p.t.size, scale(p, load))
+    x_next, x, x_prev = Z[1:, :n], Z[:-1, :n], Z[:-1, n:]
+    v = (x_next - x_prev) / (2 * h)
+    a = (x_next - 2 * x + x_prev) / h**2
+    if bad is not None:
+        bad = max(bad - 1, 0)
+    return _finish("central_difference", p, x, v, a, bad, on_divergence, {})
+
+
+def houbolt(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+    """Houbolt's method {Houbolt 1950}: third-order backward differences, unconditionally stable.
+
+    A three-step method: the first two steps are taken with the average
+    acceleration method (also second order), as Houbolt's own start needs
+    values before t₀. Other arguments as :func:`newmark`.
+    """
+    on_divergence = check_on_divergence(on_divergence)
+    p = problem(M, C, K, t, x0, v0)
+    load = sampled_load(force, p)
+    n, h, m = p.n, p.h, p.t.size
+    head = average_acceleration(
+        p.M, p.C, p.K, p.t[: min(m, 3)], p.x0, p.v0, None if load is None else load[:3].T
+    )
+    if m <= 3:
+        return IntegrationResult(p.t, head.x, head.v, head.a, "houbolt", m - 1, 0, True, "completed")
+    A, B0, B1 = recursion_matrices(houbolt_step(p.M, p.C, p.K, h), 3 * n, n)
+    z2 = np.r_[head.x[:, 2], head.x[:, 1], head.x[:, 0]]
+    Z, bad = _recur(A, B0, B1, z2, None if load is None else load[2:], m - 3, scale(p, load))
+    xs = np.vstack([head.x[:, :2].T, Z[:, :n]])  # x_0 … x_k
+    x3 = xs[3:]
+    v = (11 * x3 - 18 * xs[2:-1] + 9 * xs[1:-2] - 2 * xs[:-3]) / (6 * h)
+    a = (2 * x3 - 5 * xs[2:-1] + 4 * xs[1:-2] - xs[:-3]) / h**2
+    v = np.vstack([head.v.T, v])
+    a = np.vstack([head.a.T, a])
+    if bad is not None:
+        bad = bad + 2
+    return _finish("houbolt", p, xs, v, a, bad, on_divergence, {})
