@@ -158,7 +158,8 @@ def mode_sweep(model, speeds, *, progress: bool = False) -> ModeSweep:
     if progress:
         from tqdm.auto import tqdm
 
-        with tqdm(total=1, desc="tracking modes", leave=False) as bar:
+        # A finished bar stays: closing its widget would leave a dead view in Voilà and the book.
+        with tqdm(total=1, desc="tracking modes") as bar:
             lam, vec = track_modes(lam, vec)
             bar.update(1)
     else:

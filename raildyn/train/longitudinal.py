@@ -333,7 +333,8 @@ def simulate(
     if progress:
         from tqdm.auto import tqdm
 
-        bar = tqdm(total=round(duration), desc="simulated time (s)", leave=False)
+        # A finished bar stays: closing its widget would leave a dead view in Voilà and the book.
+        bar = tqdm(total=round(duration), desc="simulated time (s)")
 
         def fun(t, y, _rhs=model.rhs):
             step = int(t) - bar.n
