@@ -29,7 +29,7 @@ STYLE = {
 COLORS = ("#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad", "#d68910")
 
 
-def _axes(ax):
+def axes_or_new(ax):
     """The given axes, or new ones on a new pyplot figure (for notebook use)."""
     if ax is not None:
         return ax
@@ -56,7 +56,7 @@ def root_locus(locus: np.ndarray, roots: np.ndarray | None = None, *, ax=None) -
     -------
     dict of artists: ``branch1``, ``branch2``, ``roots``, ``circle``.
     """
-    ax = _axes(ax)
+    ax = axes_or_new(ax)
     with matplotlib.rc_context(STYLE):
         scale = float(np.abs(locus[0, 0]))  # |s| at ξ = 0 is ω_n
         phi = np.linspace(np.pi / 2, 3 * np.pi / 2, 91)
@@ -84,7 +84,7 @@ def time_history(
     -------
     dict of artists: ``line``, ``upper``, ``lower``.
     """
-    ax = _axes(ax)
+    ax = axes_or_new(ax)
     with matplotlib.rc_context(STYLE):
         (line,) = ax.plot(t, x, color=color, label=label)
         env = np.full_like(t, np.nan) if envelope is None else envelope
@@ -98,7 +98,7 @@ def time_history(
 
 def frequency_curves(r: np.ndarray, curves: dict[str, np.ndarray], *, ax=None, logy: bool = False) -> dict:
     """Draw several curves against the frequency ratio r = ω/ω_n; return the lines by name."""
-    ax = _axes(ax)
+    ax = axes_or_new(ax)
     lines = {}
     with matplotlib.rc_context(STYLE):
         for i, (name, y) in enumerate(curves.items()):
@@ -113,7 +113,7 @@ def spectrum(
     omega: np.ndarray, psd: np.ndarray, *, ax=None, label: str | None = None, color=COLORS[0]
 ) -> dict:
     """Draw a one-sided PSD per rad/s on log–log axes; return ``{"line": ...}``."""
-    ax = _axes(ax)
+    ax = axes_or_new(ax)
     with matplotlib.rc_context(STYLE):
         (line,) = ax.loglog(omega, psd, color=color, label=label)
         ax.set_xlabel(r"circular frequency $\omega$ (rad/s)")

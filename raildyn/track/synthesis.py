@@ -72,7 +72,7 @@ class IrregularitySample:
 
     def plot(self, ax=None) -> dict:
         """Draw the (first) sample in mm against distance, with the ±RMS lines; return the artists."""
-        ax = plots._axes(ax)
+        ax = plots.axes_or_new(ax)
         z = self.z if self.z.ndim == 1 else self.z[0]
         with matplotlib.rc_context(plots.STYLE):
             (line,) = ax.plot(self.x, 1e3 * z, color=plots.COLORS[0], lw=0.8)
