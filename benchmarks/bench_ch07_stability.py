@@ -14,7 +14,7 @@ import numpy as np
 
 from benchmarks.common import Case, timed, widget_case
 from raildyn import stability, vibration
-from raildyn.vehicles_lateral import Car
+from raildyn.vehicles import Car
 
 SPEED_RANGE = (1.0, 200.0)  # m/s
 

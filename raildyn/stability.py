@@ -1,6 +1,6 @@
 """Lateral stability (book chapter 7): eigenvalues against speed, mode tracking, critical speed, hunting.
 
-The linear models of :mod:`raildyn.wheelset` and :mod:`raildyn.vehicles_lateral`
+The linear models of :mod:`raildyn.wheelset` and :mod:`raildyn.vehicles`
 are :class:`~raildyn.wheelset.LateralSystem` objects, M q̈ + (C₀ + C₁/V) q̇ + K q = 0,
 so the state matrix at every speed of a sweep is built at once and all
 eigenvalues come from one batched ``numpy.linalg`` call.

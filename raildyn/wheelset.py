@@ -7,7 +7,7 @@
   and spin, on a primary suspension to a frame moving at the speed V
   (:func:`wheelset_matrices`, :func:`suspended_wheelset`);
 * the speed-dependent second-order system :class:`LateralSystem` that the
-  bogie and car models of :mod:`raildyn.vehicles_lateral` also produce, and that
+  bogie and car models of :mod:`raildyn.vehicles` also produce, and that
   :mod:`raildyn.stability` sweeps over speed;
 * the nonlinear wheelset (:class:`WheelRailContact`, :class:`NonlinearWheelset`):
   a rolling-radius difference Δr(y), saturating creep forces and a flange

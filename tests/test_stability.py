@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import stability, vibration
-from raildyn.vehicles_lateral import Bogie, Car
+from raildyn.vehicles import Bogie, Car
 from raildyn.wheelset import LateralSystem, NonlinearWheelset, Wheelset
 
 SOFT = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # a wheelset that hunts below 60 m/s

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import stability
-from raildyn.vehicles_lateral import Bogie
+from raildyn.vehicles import Bogie
 from raildyn.wheelset import (
     LateralSystem,
     NonlinearLateral,

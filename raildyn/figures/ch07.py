@@ -7,7 +7,7 @@ from matplotlib.figure import Figure
 
 from raildyn import plots, stability
 from raildyn.figures import new_figure, register
-from raildyn.vehicles_lateral import Car
+from raildyn.vehicles import Car
 
 
 @register(

@@ -1,7 +1,7 @@
 """Chapter 7 widgets: the car's roots against speed, and its critical speed against conicity.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
-models are :mod:`raildyn.vehicles_lateral` and :mod:`raildyn.stability`; this
+models are :mod:`raildyn.vehicles` and :mod:`raildyn.stability`; this
 module only turns control values into model calls and moves artists.
 """
 
@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from raildyn import plots, stability
-from raildyn.vehicles_lateral import Car
+from raildyn.vehicles import Car
 from raildyn.widgets._core import Recipe, slider
 
 _SPEEDS = np.linspace(5.0, 150.0, 60)  # m/s; enough points for smooth curves, few enough for 100 ms

@@ -1,4 +1,4 @@
-"""raildyn.vehicles_lateral: the bogie and the car against independent assemblies and limits."""
+"""raildyn.vehicles: the bogie and the car against independent assemblies and limits."""
 
 import numpy as np
 import pytest
@@ -6,7 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import stability
-from raildyn.vehicles_lateral import MANCHESTER_CAR, Bogie, Car
+from raildyn.vehicles import MANCHESTER_CAR, Bogie, Car
 from raildyn.wheelset import GRAVITY, Wheelset, suspended_wheelset
 
 
