@@ -47,8 +47,10 @@ app: $(STAMP)
 	$(VENV)/bin/voila notebooks --no-browser --Voila.ip=127.0.0.1 --port=8866
 
 ## bench: widget and model timings against their baselines, same run
+# One BLAS thread: on a shared 2-core machine, thread scheduling otherwise swings the
+# matrix-heavy cases (raildyn and baseline alike) by more than the ratios measured.
 bench: $(STAMP)
-	$(PY) benchmarks/run.py
+	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 $(PY) benchmarks/run.py
 
 ## figures: write every registered book figure
 figures: $(STAMP)

@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import json
+import os
 import platform
 import statistics
 import sys
@@ -52,9 +53,10 @@ def main(argv=None) -> int:
     cases = []
     for name in files:
         cases += importlib.import_module(f"benchmarks.{name}").cases(repeats)
+    threads = os.environ.get("OPENBLAS_NUM_THREADS", "default")
     print(
         f"raildyn benchmarks, {date.today()}, {platform.machine()}, Python {platform.python_version()}, "
-        f"{repeats} repeats\n"
+        f"{repeats} repeats, BLAS threads: {threads}\n"
     )
     print(table(cases))
     out = {c.name: {"raildyn_s": c.raildyn, "baseline_s": c.baseline, "ratio": c.ratio} for c in cases}

@@ -454,3 +454,47 @@ def test_chapter_two_figures_show_the_central_difference_limit():
     assert rising == pytest.approx(1 / np.pi, rel=0.03) and rising > 1 / np.pi
     assert np.allclose(rho[ratios < 0.3], 1.0, atol=1e-12)
     assert "fig2.2" in figures.REGISTRY
+
+
+# ---------------------------------------------------------------- the modal path for classical damping
+
+
+def _rayleigh_chain(n=12):
+    M, K = vibration.chain_matrices(np.linspace(800.0, 1200.0, n), np.linspace(0.8e6, 1.2e6, n))
+    w = vibration.modal_analysis(M, K).natural_frequencies
+    C = vibration.rayleigh_damping(M, K, *vibration.rayleigh_coefficients(w[0], w[-1], 0.03, 0.03))
+    return M, C, K
+
+
+def test_modal_newmark_equals_the_coupled_recursion_for_classical_damping():
+    """Newmark commutes with the modal transform, so both paths agree to rounding (1e-11 of the peak)."""
+    from raildyn.integrators import _common, linear
+
+    M, C, K = _rayleigh_chain()
+    t = np.arange(2001) * 0.01
+    rng = np.random.default_rng(3)
+    force = rng.normal(size=(M.shape[0], t.size)) * 1e3
+    p = _common.problem(M, C, K, t, rng.normal(size=12) * 1e-3, rng.normal(size=12) * 1e-2)
+    load = _common.sampled_load(force, p)
+    bound = _common.scale(p, load)
+    modes = linear._classical_modes(p)
+    assert modes is not None
+    x_m, v_m, a_m, bad = linear._modal_two_step(p, load, 0.5, 0.25, modes, bound)
+    a0 = _common.equilibrium_acceleration(p, p.x0, p.v0, load[0])
+    A, B0, B1 = linear.recursion_matrices(linear.newmark_step(M, C, K, p.h, 0.5, 0.25), 3 * p.n, p.n)
+    x_c, v_c, _ = linear._two_step(p, load, 0.5, 0.25, A, B0, B1, a0, bound)
+    assert bad is None
+    assert np.abs(x_m - x_c).max() <= 1e-11 * np.abs(x_c).max()
+    assert np.abs(v_m - v_c).max() <= 1e-11 * np.abs(v_c).max()
+    a_c = _common.equilibrium_acceleration(p, x_c, v_c, load)
+    assert np.abs(a_m - a_c).max() <= 1e-10 * np.abs(a_c).max()
+
+
+def test_non_classical_damping_takes_the_coupled_path():
+    from raildyn.integrators import _common, linear
+
+    M, C, K = _rayleigh_chain()
+    C = C.copy()
+    C[0, 0] += 5e3  # a damper on the first mass alone: Φᵀ C Φ is no longer diagonal
+    p = _common.problem(M, C, K, np.arange(11) * 0.01, np.zeros(12), np.zeros(12))
+    assert linear._classical_modes(p) is None
