@@ -1,6 +1,4 @@
-"""Vehicle models; for now the lateral ones: a two-axle bogie and a full passenger car (book chapter 7).
-
-The vertical models of chapter 6 will join them here.
+"""Lateral vehicle models: a two-axle bogie and a full passenger car (book chapter 7).
 
 * :class:`Bogie` — a bogie frame (lateral, yaw) on two wheelsets (lateral, yaw
   each), joined by the secondary suspension to a car body running straight:
