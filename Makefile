@@ -19,8 +19,9 @@ $(STAMP): requirements.txt pyproject.toml
 install: $(STAMP)
 
 ## book: execute every notebook and build the HTML book (the README's main command)
+# RAILDYN_PROGRESS=0: a page without a kernel would show a progress bar frozen at 0 %, so none is drawn.
 book: $(STAMP)
-	$(VENV)/bin/jupyter-book build . --config book/_config.yml --toc book/_toc.yml --path-output book
+	RAILDYN_PROGRESS=0 $(VENV)/bin/jupyter-book build . --config book/_config.yml --toc book/_toc.yml --path-output book
 	@echo "The book is at $(abspath $(BOOK_HTML))/index.html"
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser

@@ -25,6 +25,7 @@ import numpy as np
 import scipy.optimize
 
 from raildyn._checks import array, integer, positive, scalar
+from raildyn._progress import progress_bar
 from raildyn.wheelset import LateralSystem, Wheelset, suspended_wheelset
 
 
@@ -135,7 +136,7 @@ class ModeSweep:
     coordinates: tuple
 
 
-def mode_sweep(model, speeds, *, progress: bool = False) -> ModeSweep:
+def mode_sweep(model, speeds) -> ModeSweep:
     """Eigenvalues, frequencies and damping ratios of every mode against speed, modes tracked by MAC.
 
     All state matrices are solved in one batched ``numpy.linalg.eig`` call; the
@@ -146,8 +147,6 @@ def mode_sweep(model, speeds, *, progress: bool = False) -> ModeSweep:
     model : LateralSystem, Wheelset or object with ``linear_system()``
     speeds : array_like (n_speeds,)
         Increasing speeds, m/s (> 0).
-    progress : bool
-        Show a tqdm bar over the tracking steps.
     """
     system = as_system(model)
     V = _speeds(speeds)
@@ -155,15 +154,7 @@ def mode_sweep(model, speeds, *, progress: bool = False) -> ModeSweep:
         raise ValueError("speeds must be strictly increasing for mode tracking")
     n = system.size
     lam, vec = np.linalg.eig(system.state_matrices(V))
-    if progress:
-        from tqdm.auto import tqdm
-
-        # A finished bar stays: closing its widget would leave a dead view in Voilà and the book.
-        with tqdm(total=1, desc="tracking modes") as bar:
-            lam, vec = track_modes(lam, vec)
-            bar.update(1)
-    else:
-        lam, vec = track_modes(lam, vec)
+    lam, vec = track_modes(lam, vec)
     # One root of each conjugate pair: the n roots highest in the upper half-plane at the first
     # speed (real roots fill in when some modes are overdamped), ordered by frequency.
     keep = np.argsort(-lam[0].imag, kind="stable")[:n]
@@ -314,9 +305,7 @@ def critical_speed_map(
     out = np.empty((ys.size, xs.size))
     pairs = [(j, i) for j in range(ys.size) for i in range(xs.size)]
     if progress:
-        from tqdm.auto import tqdm
-
-        pairs = tqdm(pairs, desc="critical speed map")
+        pairs = progress_bar(pairs, desc="critical speed map")
     for j, i in pairs:
         out[j, i] = critical_speed(factory(xs[i], ys[j]), speed_range, tol=tol).speed
     return CriticalSpeedMap(xs, ys, out, x_name, y_name)
@@ -483,9 +472,7 @@ def bifurcation_diagram(
     integer("refine", refine, low=0)
     items = V
     if progress:
-        from tqdm.auto import tqdm
-
-        items = tqdm(V, desc="bifurcation diagram (ramp-down)")
+        items = progress_bar(V, desc="bifurcation diagram (ramp-down)")
     cycles, state = [], None
     for v in items:
         cycle = limit_cycle_amplitude(

@@ -4,6 +4,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 
+import os  # noqa: E402
 import subprocess  # noqa: E402
 import sys  # noqa: E402
 from pathlib import Path  # noqa: E402
@@ -48,5 +49,7 @@ def built_book():
         "-n",
         "--keep-going",
     ]
-    proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900)
+    # As `make book`: no progress bars, which a page without a kernel would show frozen at 0 %.
+    env = {**os.environ, "RAILDYN_PROGRESS": "0"}
+    proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900, env=env)
     return proc, ROOT / "book" / "_build" / "html"

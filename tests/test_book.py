@@ -27,3 +27,10 @@ def test_book_has_chapter_one_with_offline_mathjax(built_book):
     assert not remote, f"the page loads from the network: {remote}"
     assert "Logarithmic decrement" in page or "logarithmic decrement" in page
     assert page.count("<img") >= 4, "the executed notebook's figures are missing"
+
+
+@pytest.mark.slow
+def test_no_progress_bar_is_left_frozen_on_a_page(built_book):
+    _, html = built_book
+    for page in (html / "notebooks").glob("*.html"):
+        assert "0%|" not in page.read_text(encoding="utf-8"), f"{page.name} shows a progress bar stuck at 0 %"

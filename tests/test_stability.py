@@ -76,7 +76,7 @@ def test_mode_sweep_damping_ratio_crosses_zero_at_the_critical_speed():
     # The hunting mode's damping ratio changes sign between the two sweep speeds around V_c.
     cs = stability.critical_speed(SOFT, (5.0, 120.0))
     speeds = np.linspace(5.0, 120.0, 300)
-    sweep = stability.mode_sweep(SOFT, speeds, progress=False)
+    sweep = stability.mode_sweep(SOFT, speeds)
     below, above = speeds < cs.speed, speeds > cs.speed
     unstable = sweep.damping_ratios < 0
     assert not unstable[below].any()

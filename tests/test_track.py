@@ -32,7 +32,7 @@ from raildyn.track import (
 
 FRA_BAND = wavelength_band((1.524, 304.8))  # 5 ft to 1000 ft, the range the FRA spectra were fitted over
 ALL = [("fra", g, c) for g in range(1, 7) for c in COMPONENTS] + [
-    ("german", g, c) for g in ("low", "high") for c in ("vertical", "alignment", "cross_level")
+    ("german", g, c) for g in ("low", "high") for c in COMPONENTS
 ]
 
 
@@ -78,6 +78,25 @@ def test_german_spectra_match_their_formulas(level):
     np.testing.assert_allclose(german_psd("alignment", level, w), A_a * base, rtol=1e-13)
     angle = A_v / b**2 * base * w**2 / (w**2 + w_s**2)
     np.testing.assert_allclose(german_psd("cross_level", level, w), (2 * b) ** 2 * angle, rtol=1e-13)
+    # gauge: A_g in m·rad (5.32e-8 low, 1.032e-7 high), as coded in the open function PowerSpectrum_German
+    # (code index file id 54524734296) with the same A_v, A_a, Ω_c, Ω_r, Ω_s as Zhai (2020, ch. 2).
+    A_g = {"low": 5.32e-8, "high": 1.032e-7}[level]
+    gauge = A_g * w_c**2 * w**2 / ((w**2 + w_r**2) * (w**2 + w_c**2) * (w**2 + w_s**2))
+    np.testing.assert_allclose(german_psd("gauge", level, w), gauge, rtol=1e-13)
+
+
+def test_german_gauge_spectrum_at_its_peak_by_hand():
+    # Ω²/((Ω²+Ω_r²)(Ω²+Ω_c²)(Ω²+Ω_s²)) with Ω_r ≪ Ω_s < Ω_c: at Ω = √(Ω_s Ω_c) the value is, to O(Ω_r²/Ω²)
+    # ≈ 1e-3, A_g Ω_c/(Ω_s (Ω_s+Ω_c)²) (a few lines of algebra); it is the peak of the same approximation.
+    w_c, w_s = 0.8246, 0.4380
+    w = np.sqrt(w_s * w_c)
+    for level, A_g in (("low", 5.32e-8), ("high", 1.032e-7)):
+        peak = A_g * w_c / (w_s * (w_s + w_c) ** 2)
+        assert german_psd("gauge", level, [w])[0] == pytest.approx(peak, rel=2e-3)
+    # the high-disturbance gauge spectrum is 1.032e-7/5.32e-8 times the low one at every Ω
+    np.testing.assert_allclose(
+        german_psd("gauge", "high", OMEGA) / german_psd("gauge", "low", OMEGA), 1.032e-7 / 5.32e-8, rtol=1e-14
+    )
 
 
 def _slope(f, w1, w2):
@@ -227,7 +246,15 @@ def test_two_rail_sample_is_consistent():
     # but not tiny (few independent wavelengths per record); 0.3 is far above its spread here.
     assert abs(np.corrcoef(t.vertical, t.cross_level)[0, 1]) < 0.3
     g = synthesize_track("german", "low", 2000.0, 0.25, (1.524, 304.8), rng=7)
-    assert g.variances["gauge"] == 0.0 and not np.any(g.gauge)
+    np.testing.assert_allclose(g.left_lateral - g.right_lateral, g.gauge, atol=1e-15)
+    for name in COMPONENTS:
+        assert np.mean(getattr(g, name) ** 2) == pytest.approx(g.variances[name], rel=1e-10)
+    # the German gauge is sampled from its spectrum: its variance is the band integral of S_g (this band
+    # lies on the grid, so it is the sampled band; 8-point Gauss–Legendre per cell as in
+    # test_sample_variance_equals_the_band_integral, error far below 1e-8) and is not zero
+    band = wavelength_band((1.524, 304.8))
+    assert g.variances["gauge"] > 0
+    assert g.variances["gauge"] == pytest.approx(band_variance("german", "gauge", "low", band), rel=1e-8)
 
 
 @settings(deadline=None, max_examples=40)
@@ -350,7 +377,7 @@ def test_bad_component_level_and_wavenumber():
     with pytest.raises(ValueError, match="component must be one of"):
         fra_psd("twist", 3, [1.0])
     with pytest.raises(ValueError, match="component must be one of"):
-        german_psd("gauge", "low", [1.0])
+        german_psd("twist", "low", [1.0])
     with pytest.raises(ValueError, match="level must be 'low' or 'high'"):
         german_psd("vertical", "medium", [1.0])
     with pytest.raises(ValueError, match="wavenumber must be > 0"):

@@ -25,10 +25,11 @@ def test_random_track_status_gives_the_analytic_band_rms():
     assert sampled == pytest.approx(analytic, abs=0.011)  # the sample's mean square is the band integral
 
 
-def test_random_track_german_gauge_is_reported_missing():
+def test_random_track_german_gauge_has_its_spectrum():
     container, update = chapter03.random_track()
-    update(track="German low", component="gauge")
-    assert "no German gauge spectrum" in _status(container)
+    low = update(track="German low", component="gauge")
+    high = update(track="German high")
+    assert low != high and "RMS" in _status(container)
 
 
 def test_jointed_rail_harmonics_vanish_for_roll_when_in_phase():

@@ -25,6 +25,7 @@ import matplotlib
 from matplotlib.figure import Figure
 
 from raildyn import plots
+from raildyn._progress import progress_bar
 
 
 @dataclass(frozen=True)
@@ -116,13 +117,11 @@ def save_all(
     progress: bool = True,
 ) -> list[Path]:
     """Write the registered figures (all, or ``ids``) to ``out``; return the paths written."""
-    from tqdm.auto import tqdm
-
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     chosen = sorted(REGISTRY) if ids is None else list(ids)
     written = []
-    for fid in tqdm(chosen, desc="figures", disable=not progress):
+    for fid in progress_bar(chosen, desc="figures") if progress else chosen:
         fig = make(fid)
         for fmt in formats:
             path = out / f"{fid}.{fmt}"

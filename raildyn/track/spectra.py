@@ -34,20 +34,25 @@ Hamid & Yang (1981); TTB-2D (Cantero 2022, ``A04_Options.m``, citing Berawi
 
 German spectra (ORE B176 / DB)
 ------------------------------
-With Ω_c, Ω_r, Ω_s in rad/m and A_v, A_a in m·rad (= m²·rad/m):
+With Ω_c, Ω_r, Ω_s in rad/m and A_v, A_a, A_g in m·rad (= m²·rad/m):
 
 * vertical profile   S_v(Ω) = A_v Ω_c² / [(Ω² + Ω_r²)(Ω² + Ω_c²)]
 * alignment          S_a(Ω) = A_a Ω_c² / [(Ω² + Ω_r²)(Ω² + Ω_c²)]
 * cross-level        S_c(Ω) = (A_v/b²) Ω_c² Ω² / [(Ω² + Ω_r²)(Ω² + Ω_c²)(Ω² + Ω_s²)]
+* gauge              S_g(Ω) = A_g Ω_c² Ω² / [(Ω² + Ω_r²)(Ω² + Ω_c²)(Ω² + Ω_s²)]
 
-in m²/(rad/m) for S_v, S_a and rad²/(rad/m) for the cross-level *angle* S_c, b
-being half the distance between the rails' contact points (0.75 m). raildyn
-returns the cross-level as the height difference between the rails, 2b × the
-angle, so its spectrum is (2b)² S_c = 4 A_v Ω_c² Ω²/[…] and b drops out. The
-low/high-disturbance values are those quoted by Zhai (2020, ch. 2) and by Guo et
-al. (2012; A_v, Ω_c, Ω_r also coded in TTB-2D); they are used one-sided per
-rad/m as those sources use them. A German gauge spectrum is not provided: no
-source at hand gave its parameter with enough confidence to cite.
+in m²/(rad/m) for S_v, S_a, S_g and rad²/(rad/m) for the cross-level *angle*
+S_c, b being half the distance between the rails' contact points (0.75 m).
+raildyn returns the cross-level as the height difference between the rails,
+2b × the angle, so its spectrum is (2b)² S_c = 4 A_v Ω_c² Ω²/[…] and b drops
+out. The gauge spectrum is already a length (no b). The low/high-disturbance
+values are those quoted by Zhai (2020, ch. 2) and by Guo et al. (2012; A_v,
+Ω_c, Ω_r also coded in TTB-2D); they are used one-sided per rad/m as those
+sources use them. A_g (5.32e-8 low, 1.032e-7 high) is Zhai's value; the one
+retrievable copy we found is an open-source Python implementation of these
+spectra (its repository could not be identified) that codes every German
+parameter with the values below, the same formulas and the same one-sided
+m²/(rad/m) reading. A second source for A_g is still wanted.
 
 References
 ----------
@@ -136,8 +141,8 @@ class GermanParameters:
 
     Attributes
     ----------
-    A_v, A_a : float
-        Roughness parameters of profile and alignment, m·rad (= m²·rad/m).
+    A_v, A_a, A_g : float
+        Roughness parameters of profile, alignment and gauge, m·rad (= m²·rad/m).
     omega_c, omega_r, omega_s : float
         Corner wavenumbers, rad/m.
     b : float
@@ -146,6 +151,7 @@ class GermanParameters:
 
     A_v: float
     A_a: float
+    A_g: float
     omega_c: float
     omega_r: float
     omega_s: float
@@ -154,10 +160,11 @@ class GermanParameters:
 
 # fmt: off
 # Zhai (2020, ch. 2); A_v (low), Ω_c and Ω_r also in Guo et al. (2012) as coded in TTB-2D (Cantero 2022).
+# Every value, A_g included, also in an open-source implementation of these spectra (see the module notes).
 GERMAN_PARAMETERS = {
-    #                  A_v (m·rad) A_a (m·rad) Ω_c     Ω_r     Ω_s (rad/m)  b (m)
-    "low": GermanParameters(4.032e-7, 2.119e-7, 0.8246, 0.0206, 0.4380, 0.75),
-    "high": GermanParameters(1.080e-6, 6.125e-7, 0.8246, 0.0206, 0.4380, 0.75),
+    #                  A_v (m·rad) A_a (m·rad) A_g (m·rad) Ω_c     Ω_r     Ω_s (rad/m)  b (m)
+    "low": GermanParameters(4.032e-7, 2.119e-7, 5.32e-8, 0.8246, 0.0206, 0.4380, 0.75),
+    "high": GermanParameters(1.080e-6, 6.125e-7, 1.032e-7, 0.8246, 0.0206, 0.4380, 0.75),
 }
 # fmt: on
 
@@ -240,9 +247,9 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
 
     Parameters
     ----------
-    component : {"vertical", "alignment", "cross_level"}
-        Vertical profile, alignment, or cross-level as the height difference
-        between the rails (2b × the cross-level angle of the source).
+    component : {"vertical", "alignment", "cross_level", "gauge"}
+        Vertical profile, alignment, cross-level as the height difference
+        between the rails (2b × the cross-level angle of the source), or gauge.
     level : {"low", "high"}
         Low or high disturbance.
     wavenumber : array_like
@@ -261,7 +268,7 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
     >>> bool(np.isclose(s[0], 4.032e-7 / 0.0206**2, rtol=1e-6))
     True
     """
-    component = _component(component, ("vertical", "alignment", "cross_level"))
+    component = _component(component)
     p = _german_level(level)
     w2 = _wavenumber(wavenumber) ** 2
     wc2, wr2 = p.omega_c**2, p.omega_r**2
@@ -270,9 +277,11 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
         s = p.A_v * base
     elif component == "alignment":
         s = p.A_a * base
-    else:
+    elif component == "cross_level":
         angle = (p.A_v / p.b**2) * base * w2 / (w2 + p.omega_s**2)
         s = (2.0 * p.b) ** 2 * angle
+    else:
+        s = p.A_g * base * w2 / (w2 + p.omega_s**2)
     return rv.convert_psd(s, **_SOURCE_FORM, to_unit="rad/m")
 
 
@@ -287,7 +296,7 @@ def track_psd(spectrum: str, component: str, grade) -> Callable[[np.ndarray], np
         _fra_class(grade)
         return lambda w: fra_psd(component, grade, w)
     if spectrum == "german":
-        _component(component, ("vertical", "alignment", "cross_level"))
+        _component(component)
         _german_level(grade)
         return lambda w: german_psd(component, grade, w)
     raise ValueError(f"spectrum must be 'fra' or 'german'; got {spectrum!r}")
@@ -380,6 +389,7 @@ def band_variance(spectrum: str, component: str, grade, band, *, k: float = FRA_
         if component in ("vertical", "alignment"):
             A = p.A_v if component == "vertical" else p.A_a
             return A * p.omega_c**2 * _int_two_lorentz(w, p.omega_r, p.omega_c)
-        return 4 * p.A_v * p.omega_c**2 * _int_three(w, p.omega_r, p.omega_c, p.omega_s)
+        A = 4 * p.A_v if component == "cross_level" else p.A_g  # (2b)² A_v/b² for the cross-level
+        return A * p.omega_c**2 * _int_three(w, p.omega_r, p.omega_c, p.omega_s)
 
     return float(F(hi) - F(lo))

@@ -265,8 +265,7 @@ def synthesize_track(
 
     The sources give no cross-spectra between the four components, so they are
     sampled as independent processes (from one generator, in the order of
-    ``raildyn.track.spectra.COMPONENTS``). The German spectra have no gauge component in raildyn;
-    its gauge is returned as zeros with variance 0.
+    ``raildyn.track.spectra.COMPONENTS``).
 
     Parameters
     ----------
@@ -283,16 +282,11 @@ def synthesize_track(
     generator = _checks.generator(rng)
     parts, variances = {}, {}
     for component in COMPONENTS:
-        if spectrum == "german" and component == "gauge":
-            continue
         sample = synthesize_irregularity(
             track_psd(spectrum, component, grade), length, dx, wavelength_band, generator
         )
         parts[component], variances[component] = sample.z, sample.variance
-    x = sample.x
-    if "gauge" not in parts:
-        parts["gauge"], variances["gauge"] = np.zeros_like(x), 0.0
-    return TwoRailIrregularity(x, variances=variances, **parts)
+    return TwoRailIrregularity(sample.x, variances=variances, **parts)
 
 
 def temporal_psd(psd: Callable, speed: float) -> Callable:

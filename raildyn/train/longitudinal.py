@@ -21,6 +21,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from raildyn import _checks
+from raildyn._progress import progress_bar
 from raildyn.train.couplers import DraftGear
 from raildyn.train.forces import NOTCHES, AirBrake
 from raildyn.train.resistance import CURVE_RESISTANCE, Route, davis_resistance
@@ -331,10 +332,7 @@ def simulate(
     fun = model.rhs
     bar = None
     if progress:
-        from tqdm.auto import tqdm
-
-        # A finished bar stays: closing its widget would leave a dead view in Voilà and the book.
-        bar = tqdm(total=round(duration), desc="simulated time (s)")
+        bar = progress_bar(total=round(duration), desc="simulated time (s)")
 
         def fun(t, y, _rhs=model.rhs):
             step = int(t) - bar.n

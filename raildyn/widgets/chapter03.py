@@ -84,14 +84,8 @@ def _random_track_setup(live, status):
     def redraw(v):
         spectrum, grade = TRACKS[v["track"]]
         component = v["component"]
-        available = not (spectrum == "german" and component == "gauge")
         for line, (fam, g) in zip(others, TRACKS.values(), strict=True):
-            ok = not (fam == "german" and component == "gauge")
-            line.set_visible(ok)
-            if ok:
-                line.set_ydata(track.track_psd(fam, component, g)(_OMEGA_SPACE))
-        for artist in (chosen, welch, sample_line, temporal):
-            artist.set_visible(available)
+            line.set_ydata(track.track_psd(fam, component, g)(_OMEGA_SPACE))
         shortest, longest = v["shortest"], max(v["longest"], 2.0 * v["shortest"])
         lo, hi = track.wavelength_band((shortest, longest))
         V = v["speed_kmh"] / 3.6
@@ -99,11 +93,6 @@ def _random_track_setup(live, status):
             line.set_xdata([value, value])
         for line, value in zip(band_t, (V * lo, V * hi), strict=True):
             line.set_xdata([value, value])
-        if not available:
-            status.value = (
-                "raildyn has no German gauge spectrum (no citable parameter); pick another component"
-            )
-            return
         psd = track.track_psd(spectrum, component, grade)
         chosen.set_ydata(psd(_OMEGA_SPACE))
         sample = track.synthesize_irregularity(psd, _SAMPLE_LENGTH, _DX, (shortest, longest), v["seed"])
