@@ -1,8 +1,41 @@
-"""Vehicle models: the lateral bogie and car of chapter 7 (and, next, the vertical models of chapter 6).
+"""Vehicle models: the lateral bogie and car of chapter 7 and the vertical models of chapter 6.
 
 Every public name is importable from ``raildyn.vehicles``.
 """
 
+from raildyn.vehicles.freight import FreightCar, RockAndRoll, rock_and_roll, wedge_energy_per_cycle
 from raildyn.vehicles.lateral import MANCHESTER_CAR, Bogie, Car
+from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
+from raildyn.vehicles.response import (
+    LinearVehicle,
+    ResponseSpectrum,
+    TimeResponse,
+    lateral_vehicle,
+    response_spectrum,
+    rms_over_speeds,
+    time_response,
+    track_frf,
+)
+from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, VerticalCar
 
-__all__ = ["MANCHESTER_CAR", "Bogie", "Car"]
+__all__ = [
+    "MANCHESTER_CAR",
+    "Bogie",
+    "Car",
+    "DEFAULT_LOCOMOTIVE",
+    "FreightCar",
+    "LinearVehicle",
+    "Locomotive",
+    "MANCHESTER_VERTICAL",
+    "ResponseSpectrum",
+    "RockAndRoll",
+    "TimeResponse",
+    "VerticalCar",
+    "lateral_vehicle",
+    "response_spectrum",
+    "rms_over_speeds",
+    "rock_and_roll",
+    "time_response",
+    "track_frf",
+    "wedge_energy_per_cycle",
+]

@@ -1,0 +1,76 @@
+"""Chapter 6 figures: car-body acceleration spectra and ride index against speed, and freight-car rocking."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from raildyn import plots, ride, track
+from raildyn.figures import new_figure, register
+from raildyn.vehicles import MANCHESTER_VERTICAL, FreightCar, response_spectrum, rock_and_roll
+
+
+@register(
+    "fig6.ride_spectra",
+    "Vertical acceleration at the centre of the car body of the Manchester benchmark vehicle "
+    "(Iwnicki 1998) on FRA class 4 track: PSD per Hz at 80, 120 and 160 km/h (left) and Sperling's "
+    "ride index Wz against speed for FRA classes 3–6 and the German spectra (right).",
+    chapter=6,
+)
+def ride_spectra() -> Figure:
+    fig = new_figure(figsize=(9.5, 3.8))
+    ax_s, ax_w = fig.subplots(1, 2)
+    vehicle = MANCHESTER_VERTICAL.linear()
+    f = np.linspace(0.05, 30.0, 1500)
+    w = 2 * np.pi * f
+    for i, kmh in enumerate((80, 120, 160)):
+        spec = response_spectrum(vehicle, track.track_psd("fra", "vertical", 4), kmh / 3.6, w)
+        ax_s.semilogy(f, 2 * np.pi * spec.psd, color=plots.COLORS[i], label=f"{kmh} km/h")
+    ax_s.set_ylim(1e-6, 1.0)
+    ax_s.set_xlabel("frequency (Hz)")
+    ax_s.set_ylabel(r"PSD ((m/s$^2$)$^2$/Hz)")
+    ax_s.legend()
+    speeds = np.linspace(40.0, 200.0, 17)
+    grades = [("fra", c) for c in (3, 4, 5, 6)] + [("german", "high"), ("german", "low")]
+    for i, (family, grade) in enumerate(grades):
+        wz = [
+            ride.ride_quality(
+                response_spectrum(vehicle, track.track_psd(family, "vertical", grade), v / 3.6, w).psd, w
+            ).wz
+            for v in speeds
+        ]
+        label = f"FRA {grade}" if family == "fra" else f"German {grade}"
+        style = "-" if family == "fra" else "--"
+        ax_w.plot(speeds, wz, style, color=plots.COLORS[i % 4], label=label)
+    ax_w.set_xlabel("speed (km/h)")
+    ax_w.set_ylabel("Sperling Wz")
+    ax_w.legend(ncols=2, fontsize="small")
+    return fig
+
+
+@register(
+    "fig6.rock_and_roll",
+    "Steady roll amplitude of a loaded hopper car on friction-damped three-piece trucks over staggered "
+    "11.9 m rails with 20 mm dipped joints, against speed, for three wedge friction forces; the dotted "
+    "line marks the roll resonance of the springs alone, V = f_φ L.",
+    chapter=6,
+)
+def rock_figure() -> Figure:
+    fig = new_figure(figsize=(6.5, 3.8))
+    ax = fig.subplots()
+    speeds = np.linspace(20.0, 70.0, 16) / 3.6
+    for i, friction in enumerate((2e3, 6e3, 15e3)):
+        r = rock_and_roll(FreightCar(wedge_friction=friction), speeds, cycles=12, dt=0.008)
+        ax.plot(
+            3.6 * speeds,
+            np.degrees(r.roll_amplitude),
+            "o-",
+            ms=3,
+            color=plots.COLORS[i],
+            label=f"{friction / 1e3:.0f} kN per nest",
+        )
+    ax.axvline(3.6 * FreightCar().roll_resonance_speed(), color="k", ls=":", lw=1)
+    ax.set_xlabel("speed (km/h)")
+    ax.set_ylabel("roll amplitude (deg)")
+    ax.legend()
+    return fig

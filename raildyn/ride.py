@@ -1,0 +1,152 @@
+"""Ride comfort: Sperling's ride index Wz and the ISO 2631-1 frequency-weighted RMS (chapter 6).
+
+Sperling's index of a harmonic acceleration of peak a (cm/s²) at f Hz is
+Wz = 0.896 (a³ F(f)/f)^{1/10}, F the frequency correction factor (Sperling 1941;
+Garg & Dukkipati 1984, ch. 6). Writing B(f)³ = 0.896¹⁰ F(f)/f gives Wz = (aB)^{0.3};
+B is approximated by the rational filter of :func:`sperling_weighting`, and a
+random acceleration with weighted RMS σ_w (m/s²) is given the index of the
+harmonic of the same RMS: a = √2 · 100 σ_w cm/s², so Wz = (100√2 σ_w)^{0.3}
+= 4.42 σ_w^{0.3}.
+
+ISO 2631-1 (1997, annex A) weights whole-body vertical acceleration by W_k and
+horizontal by W_d, each the product of a band limit (high pass at f₁, low pass
+at f₂), an acceleration–velocity transition (f₃, f₄, Q₄) and, for W_k, an upward
+step (f₅, Q₅, f₆, Q₆); the weighted RMS is √∫|W|² S dω.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn import random_vibration as rv
+
+# Sperling's correction factor F(f) (Sperling 1941, as tabulated by Garg & Dukkipati 1984, ch. 6).
+_SPERLING_F = {
+    "vertical": ((0.5, 5.9, lambda f: 0.325 * f**2), (5.9, 20.0, lambda f: 400.0 / f**2), 20.0),
+    "lateral": ((0.5, 5.4, lambda f: 0.8 * f**2), (5.4, 26.0, lambda f: 650.0 / f**2), 26.0),
+}
+
+# Rational fits of B(f), f in Hz, as commonly quoted for Sperling's weighting (source to be confirmed;
+# tests/test_ride.py checks the vertical fit against F(f) above: within 4 %, 7 % at the 5.9 Hz corner).
+_SPERLING_B = {
+    "vertical": (0.588, 1.911, 0.25, 0.277, 1.563, 0.0368),
+    "lateral": (0.737, 1.911, 0.25, 0.277, 1.563, 0.0368),
+}
+
+# ISO 2631-1:1997, table A.2: f1, f2, f3, f4, Q4, f5, Q5, f6, Q6 (Hz); W_d has no upward step.
+_ISO = {
+    "Wk": (0.4, 100.0, 12.5, 12.5, 0.63, 2.37, 0.91, 3.35, 0.91),
+    "Wd": (0.4, 100.0, 2.0, 2.0, 0.63, None, None, None, None),
+}
+
+
+def _direction(direction: str) -> str:
+    if direction not in ("vertical", "lateral"):
+        raise ValueError(f"direction must be 'vertical' or 'lateral'; got {direction!r}")
+    return direction
+
+
+def sperling_correction(frequency, direction: str = "vertical") -> np.ndarray:
+    """Sperling's correction factor F(f) (dimensionless) for f in Hz, 0.5 <= f."""
+    f = _checks.array("frequency", frequency, low=0.5)
+    (a0, a1, low), (_, b1, high), top = _SPERLING_F[_direction(direction)]
+    return np.where(f < a1, low(f), np.where(f < b1, high(f), 1.0))
+
+
+def sperling_weighting(frequency, direction: str = "vertical") -> np.ndarray:
+    """|B(f)|: Sperling's weighting filter (dimensionless), f in Hz >= 0."""
+    f = _checks.array("frequency", frequency, low=0.0)
+    c, n1, n2, d1, d2, d3 = _SPERLING_B[_direction(direction)]
+    num = n1 * f**2 + (n2 * f**2) ** 2
+    den = (1 - d1 * f**2) ** 2 + (d2 * f - d3 * f**3) ** 2
+    return c * np.sqrt(num / den)
+
+
+def sperling_harmonic(amplitude, frequency, direction: str = "vertical") -> np.ndarray:
+    """Wz of a harmonic acceleration of peak ``amplitude`` (m/s²) at ``frequency`` (Hz), from F(f)."""
+    a = _checks.array("amplitude", amplitude, low=0.0) * 100.0  # cm/s²
+    f = _checks.array("frequency", frequency, low=0.5)
+    return 0.896 * (a**3 * sperling_correction(f, direction) / f) ** 0.1
+
+
+def iso2631_weighting(frequency, weighting: str = "Wk") -> np.ndarray:
+    """Complex ISO 2631-1 weighting W(i2πf) (dimensionless), f in Hz >= 0; ``weighting`` "Wk" or "Wd"."""
+    f = _checks.array("frequency", frequency, low=0.0)
+    if weighting not in _ISO:
+        raise ValueError(f"weighting must be 'Wk' or 'Wd'; got {weighting!r}")
+    f1, f2, f3, f4, q4, f5, q5, f6, q6 = _ISO[weighting]
+    s = 2j * np.pi * f
+    w1, w2, w3, w4 = (2 * np.pi * x for x in (f1, f2, f3, f4))
+    q1 = 1 / np.sqrt(2)
+    high = s**2 / (s**2 + w1 * s / q1 + w1**2)
+    low = w2**2 / (s**2 + w2 * s / q1 + w2**2)
+    transition = (1 + s / w3) / (1 + s / (q4 * w4) + (s / w4) ** 2)
+    H = high * low * transition
+    if f5 is not None:
+        w5, w6 = 2 * np.pi * f5, 2 * np.pi * f6
+        H = H * (1 + s / (q5 * w5) + (s / w5) ** 2) / (1 + s / (q6 * w6) + (s / w6) ** 2) * (w5 / w6) ** 2
+    return H
+
+
+@dataclass(frozen=True)
+class RideQuality:
+    """Ride measures of one acceleration spectrum.
+
+    Attributes
+    ----------
+    rms : float
+        Unweighted RMS, m/s².
+    sperling_rms : float
+        RMS weighted by Sperling's B(f), m/s².
+    wz : float
+        Sperling's ride index (1 very good … 4.5 dangerous).
+    iso_rms : float
+        ISO 2631-1 weighted RMS (W_k vertical, W_d lateral), m/s².
+    """
+
+    rms: float
+    sperling_rms: float
+    wz: float
+    iso_rms: float
+
+
+def sperling_index(weighted_rms) -> float:
+    """Wz = (100√2 σ_w)^{0.3} for a Sperling-weighted RMS σ_w in m/s² (module docstring)."""
+    s = _checks.nonnegative("weighted_rms", weighted_rms)
+    return float((100.0 * np.sqrt(2.0) * s) ** 0.3)
+
+
+def ride_quality(psd, omega, direction: str = "vertical") -> RideQuality:
+    """Ride measures of a one-sided acceleration PSD (m²/s⁴ per rad/s) on a grid ω (rad/s)."""
+    S = np.asarray(psd, dtype=float)
+    w = np.asarray(omega, dtype=float)
+    f = _checks.array("omega", omega, ndim=1, low=0.0) / (2 * np.pi)
+    B = sperling_weighting(f, direction)
+    W = iso2631_weighting(f, "Wk" if direction == "vertical" else "Wd")
+    ms = rv.mean_square(S, w)
+    sw = float(np.sqrt(rv.mean_square(B**2 * S, w)))
+    return RideQuality(
+        float(np.sqrt(ms)), sw, sperling_index(sw), float(np.sqrt(rv.mean_square(np.abs(W) ** 2 * S, w)))
+    )
+
+
+def ride_quality_history(acceleration, dt, direction: str = "vertical") -> RideQuality:
+    """Ride measures of an acceleration history (m/s²) sampled every dt s, weighted by FFT."""
+    a = _checks.array("acceleration", acceleration, ndim=1)
+    dt = _checks.positive("dt", dt)
+    if a.size < 4:
+        raise ValueError(f"acceleration must hold at least 4 samples, got {a.size}")
+    a = a - a.mean()
+    A = np.fft.rfft(a)
+    f = np.fft.rfftfreq(a.size, dt)
+    B = sperling_weighting(f, direction)
+    W = np.abs(iso2631_weighting(f, "Wk" if direction == "vertical" else "Wd"))
+
+    def _rms(weight):
+        return float(np.sqrt(np.mean(np.fft.irfft(A * weight, n=a.size) ** 2)))
+
+    sw = _rms(B)
+    return RideQuality(float(np.sqrt(np.mean(a**2))), sw, sperling_index(sw), _rms(W))

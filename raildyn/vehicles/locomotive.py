@@ -1,0 +1,107 @@
+"""Six-axle locomotive in the vertical plane: body bounce and pitch on two three-axle trucks (chapter 6).
+
+Six coordinates: body z, θ; truck 1 (front) z, θ; truck 2 z, θ (a point x ahead of
+a centre moves z + xθ). Each truck has three equally spaced axles (centre axle
+under the truck centre); the wheelsets, with their traction motors, follow the
+track and are unsprung. Primary springs join each axle to its truck frame,
+secondary springs each truck to the body.
+
+The default values are representative of an EMD SD40-2: 368 000 lb (167 t) and
+truck centres 43 ft 6 in (13.26 m), as published (Wikipedia, "EMD SD40-2"); 2.07 m
+between axles; the split of the mass between body, frames and unsprung wheelsets and
+the spring rates are chosen, not taken from a published table (body bounce
+near 1.4 Hz).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn.vehicles.response import GRAVITY, LinearVehicle, _Assembler
+
+LABELS = ("body z", "body θ", "truck1 z", "truck1 θ", "truck2 z", "truck2 θ")
+
+
+@dataclass(frozen=True)
+class Locomotive:
+    """A six-axle locomotive, vertical.
+
+    Attributes
+    ----------
+    body_mass : float
+        kg (167 t less 6 × 3.5 t unsprung and 2 × 6.5 t frames).
+    body_pitch_inertia : float
+        kg·m² (m L²/12 for a 20 m body).
+    truck_mass, truck_pitch_inertia : float
+        One truck frame, kg and kg·m².
+    semi_truck_spacing : float
+        Half the distance between truck centres, m.
+    axle_spacing : float
+        Between neighbouring axles of a truck, m.
+    primary_stiffness, primary_damping : float
+        Per axle, N/m and N·s/m.
+    secondary_stiffness, secondary_damping : float
+        Per truck, N/m and N·s/m.
+    """
+
+    body_mass: float = 133_000.0
+    body_pitch_inertia: float = 133_000.0 * 20.0**2 / 12
+    truck_mass: float = 6_500.0
+    truck_pitch_inertia: float = 6_500.0 * 4.5**2 / 12
+    semi_truck_spacing: float = (43 + 6 / 12) * 0.3048 / 2
+    axle_spacing: float = 2.07
+    primary_stiffness: float = 3.0e6
+    primary_damping: float = 3.0e4
+    secondary_stiffness: float = 5.15e6
+    secondary_damping: float = 6.0e4
+
+    def __post_init__(self):
+        for name in self.__dataclass_fields__:
+            if name.endswith("damping"):
+                _checks.nonnegative(name, getattr(self, name))
+            else:
+                _checks.positive(name, getattr(self, name))
+        if self.axle_spacing >= self.semi_truck_spacing:
+            raise ValueError(
+                f"axle_spacing must be less than semi_truck_spacing ({self.semi_truck_spacing!r} m), "
+                f"got {self.axle_spacing!r}"
+            )
+
+    def with_(self, **changes) -> Locomotive:
+        return replace(self, **changes)
+
+    @property
+    def axle_positions(self) -> np.ndarray:
+        """Distances of the six axles behind the leading one, m."""
+        a, s = self.axle_spacing, self.semi_truck_spacing
+        front = np.array([0.0, a, 2 * a])
+        return np.concatenate([front, front + 2 * s])
+
+    def linear(self) -> LinearVehicle:
+        """The 6-coordinate model with its six axle inputs."""
+        asm = _Assembler(LABELS, 6)
+        asm.mass("body z", self.body_mass)
+        asm.mass("body θ", self.body_pitch_inertia)
+        a, s = self.axle_spacing, self.semi_truck_spacing
+        j = 0
+        for tag, xt in (("1", s), ("2", -s)):
+            z, th = f"truck{tag} z", f"truck{tag} θ"
+            asm.mass(z, self.truck_mass)
+            asm.mass(th, self.truck_pitch_inertia)
+            asm.element(
+                {z: 1.0, "body z": -1.0, "body θ": -xt}, self.secondary_stiffness, self.secondary_damping
+            )
+            for xa in (a, 0.0, -a):
+                asm.element({z: 1.0, th: xa}, self.primary_stiffness, self.primary_damping, inputs={j: 1.0})
+                j += 1
+        weight = -GRAVITY * np.diag(asm.M) * np.array([1, 0, 1, 0, 1, 0])
+        return LinearVehicle(
+            asm.M, asm.C, asm.K, asm.GK, asm.GC, LABELS, self.axle_positions, np.zeros(6), weight
+        )
+
+
+DEFAULT_LOCOMOTIVE = Locomotive()
+"""The representative six-axle locomotive."""

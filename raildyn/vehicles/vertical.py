@@ -1,0 +1,120 @@
+"""Vertical passenger car: body bounce and pitch on two bogies (bounce, pitch each) — chapter 6.
+
+Six coordinates: body z, θ; bogie 1 (front) z, θ; bogie 2 z, θ. A point x m ahead
+of a body's centre moves z + xθ (θ > 0 raises the front). The wheelsets follow
+the track (rigid contact): their masses are unsprung and carry no dynamics here.
+Primary springs and dampers join each wheelset to its bogie frame, secondary
+ones each bogie to the body. The defaults are the Manchester benchmark vehicle
+(Iwnicki 1998), the same car as :class:`raildyn.vehicles.Car`, whose lateral
+model reuses them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from raildyn._checks import positive
+from raildyn.vehicles.lateral import Bogie, Car
+from raildyn.vehicles.response import GRAVITY, LinearVehicle, _Assembler
+
+_CAR, _BOGIE = Car(), Bogie()
+
+LABELS = ("body z", "body θ", "bogie1 z", "bogie1 θ", "bogie2 z", "bogie2 θ")
+
+
+@dataclass(frozen=True)
+class VerticalCar:
+    """A passenger car in the vertical plane (Manchester benchmark vehicle, Iwnicki 1998).
+
+    Attributes
+    ----------
+    body_mass : float
+        kg (Iwnicki 1998: 32 000 kg; as :class:`Car`).
+    body_pitch_inertia : float
+        kg·m² (Iwnicki 1998: 1.97 × 10⁶ kg·m²).
+    bogie_mass : float
+        Bogie frame, kg (Iwnicki 1998: 2615 kg; as :class:`Bogie`).
+    bogie_pitch_inertia : float
+        kg·m² (Iwnicki 1998: 1722 kg·m²).
+    semi_bogie_spacing : float
+        l, m (Iwnicki 1998: 19 m between bogie centres).
+    semi_wheelbase : float
+        b, m (Iwnicki 1998: 2.56 m wheelbase).
+    primary_stiffness, primary_damping : float
+        Per wheelset (two axleboxes), N/m and N·s/m (Iwnicki 1998: 1220 kN/m and
+        4 kN·s/m per axlebox).
+    secondary_stiffness, secondary_damping : float
+        Per bogie (two sides), N/m and N·s/m (Iwnicki 1998: 430 kN/m and
+        20 kN·s/m per side; as the roll terms of :class:`Car`).
+    """
+
+    body_mass: float = _CAR.body_mass
+    body_pitch_inertia: float = 1.97e6
+    bogie_mass: float = _BOGIE.frame_mass
+    bogie_pitch_inertia: float = 1722.0
+    semi_bogie_spacing: float = _CAR.semi_bogie_spacing
+    semi_wheelbase: float = _BOGIE.semi_wheelbase
+    primary_stiffness: float = 2 * 1220.0e3
+    primary_damping: float = 2 * 4.0e3
+    secondary_stiffness: float = 2 * 430.0e3
+    secondary_damping: float = 2 * 20.0e3
+
+    def __post_init__(self):
+        for name in self.__dataclass_fields__:
+            if name.endswith("damping"):
+                value = getattr(self, name)
+                if not np.isfinite(value) or value < 0:
+                    raise ValueError(f"{name} must be a finite number >= 0, got {value!r}")
+            else:
+                positive(name, getattr(self, name))
+        if self.semi_wheelbase >= self.semi_bogie_spacing:
+            raise ValueError(
+                f"semi_wheelbase must be less than semi_bogie_spacing ({self.semi_bogie_spacing!r} m), "
+                f"got {self.semi_wheelbase!r}"
+            )
+
+    def with_(self, **changes) -> VerticalCar:
+        return replace(self, **changes)
+
+    @property
+    def axle_positions(self) -> np.ndarray:
+        """Distances of the four axles behind the leading one, m: 0, 2b, 2l, 2l + 2b."""
+        b, s = self.semi_wheelbase, self.semi_bogie_spacing
+        return np.array([0.0, 2 * b, 2 * s, 2 * s + 2 * b])
+
+    def linear(self) -> LinearVehicle:
+        """The 6-coordinate model with its four wheelset inputs."""
+        asm = _Assembler(LABELS, 4)
+        asm.mass("body z", self.body_mass)
+        asm.mass("body θ", self.body_pitch_inertia)
+        b, s = self.semi_wheelbase, self.semi_bogie_spacing
+        j = 0
+        for tag, xb in (("1", s), ("2", -s)):
+            z, th = f"bogie{tag} z", f"bogie{tag} θ"
+            asm.mass(z, self.bogie_mass)
+            asm.mass(th, self.bogie_pitch_inertia)
+            # secondary: the bogie centre against the body at x = ±l
+            asm.element(
+                {z: 1.0, "body z": -1.0, "body θ": -xb}, self.secondary_stiffness, self.secondary_damping
+            )
+            for xw in (b, -b):  # leading wheelset of the bogie first
+                asm.element({z: 1.0, th: xw}, self.primary_stiffness, self.primary_damping, inputs={j: 1.0})
+                j += 1
+        weight = -GRAVITY * np.diag(asm.M) * np.array([1, 0, 1, 0, 1, 0])
+        return LinearVehicle(
+            asm.M, asm.C, asm.K, asm.GK, asm.GC, LABELS, self.axle_positions, np.zeros(4), weight
+        )
+
+    def body_frequencies(self) -> dict:
+        """Closed-form undamped body bounce and pitch frequencies on the secondary, bogies held, Hz."""
+        ks, s = self.secondary_stiffness, self.semi_bogie_spacing
+        return {
+            "bounce": np.sqrt(2 * ks / self.body_mass) / (2 * np.pi),
+            "pitch": np.sqrt(2 * ks * s**2 / self.body_pitch_inertia) / (2 * np.pi),
+        }
+
+
+MANCHESTER_VERTICAL = VerticalCar()
+"""The Manchester benchmark vehicle in the vertical plane."""

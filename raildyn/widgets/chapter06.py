@@ -1,0 +1,220 @@
+"""Chapter 6 widgets: ride of a passenger car on random track, and a freight car rocking on jointed rail.
+
+Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
+models are :mod:`raildyn.vehicles` and :mod:`raildyn.ride`; this module turns
+control values into model calls and moves artists. Units at the edge: km/h,
+mm, degrees, kN.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import ipywidgets as widgets
+import numpy as np
+
+from raildyn import plots, ride, track
+from raildyn.vehicles import MANCHESTER_VERTICAL, FreightCar, response_spectrum, rock_and_roll, time_response
+
+TRACKS = {f"FRA class {c}": ("fra", c) for c in track.FRA_CLASSES} | {
+    "German low": ("german", "low"),
+    "German high": ("german", "high"),
+}
+_F = np.linspace(0.05, 30.0, 1200)  # Hz: the response spectrum's grid
+_RUN_LENGTH, _DX, _BAND = 1500.0, 0.25, (1.0, 300.0)  # m: the seeded track of the time run
+_DT = 0.01  # s
+_SETTLE = 10.0  # s dropped from the time run before its RMS is taken
+_VEHICLE = MANCHESTER_VERTICAL.linear()
+
+
+def _ride_controls():
+    from raildyn.widgets._core import slider
+
+    return {
+        "track": widgets.Dropdown(options=list(TRACKS), value="FRA class 4", description="track"),
+        "speed_kmh": slider("V (km/h)", 120.0, 40.0, 200.0, 10.0, fmt=".0f"),
+        "seed": widgets.IntSlider(value=1, min=0, max=20, description="seed"),
+    }
+
+
+@lru_cache(maxsize=64)
+def _track_sample(track_label: str, seed: int):
+    spectrum, grade = TRACKS[track_label]
+    psd = track.track_psd(spectrum, "vertical", grade)
+    s = track.synthesize_irregularity(psd, _RUN_LENGTH, _DX, _BAND, seed)
+    z = s.z.reshape(-1)
+    n = z.size
+    slope = np.fft.irfft(2j * np.pi * np.fft.rfftfreq(n, _DX) * np.fft.rfft(z), n=n)
+    return np.arange(n) * _DX, z, slope
+
+
+def ride_run(track_label: str, speed_kmh: float, seed: int):
+    """Frequency-domain spectrum and ride measures beside a seeded time run (body centre, vertical)."""
+    spectrum, grade = TRACKS[track_label]
+    V = speed_kmh / 3.6
+    psd = track.track_psd(spectrum, "vertical", grade)
+    w = 2 * np.pi * _F
+    spec = response_spectrum(_VEHICLE, psd, V, w, "body z", derivative=2)
+    fd = ride.ride_quality(spec.psd, w)
+    # the time run: the same spectrum, limited to the synthesized band, along a periodic sample
+    x, z, slope = _track_sample(track_label, seed)
+    L = x[-1] + _DX
+
+    def periodic(values):
+        return lambda xx, rails: np.interp(np.mod(xx, L), x, values, period=L)
+
+    t = np.arange(0.0, _SETTLE + L / V, _DT)
+    run = time_response(_VEHICLE, periodic(z), V, t, "body z", derivative=2, profile_rate=periodic(slope))
+    keep = t >= _SETTLE
+    td = ride.ride_quality_history(run.y[keep], _DT)
+    return spec, fd, t[keep] - _SETTLE, run.y[keep], td
+
+
+def _ride_setup(live, status):
+    ax_s, ax_t = live.axes[0]
+    (psd_line,) = ax_s.semilogy(_F, _F, color=plots.COLORS[0], label="car-body acceleration")
+    (weighted,) = ax_s.semilogy(_F, _F, color=plots.COLORS[1], ls="--", label="Sperling-weighted")
+    ax_s.set_xlim(0, _F[-1])
+    ax_s.set_ylim(1e-6, 1.0)
+    ax_s.set_xlabel("frequency (Hz)")
+    ax_s.set_ylabel(r"PSD ((m/s$^2$)$^2$/Hz)")
+    ax_s.legend(loc="upper right")
+    t_max = 60.0
+    (hist,) = ax_t.plot([0, t_max], [0, 0], color=plots.COLORS[2], lw=0.7)
+    ax_t.set_xlim(0, t_max)
+    ax_t.set_ylim(-3.0, 3.0)
+    ax_t.set_xlabel("time (s)")
+    ax_t.set_ylabel(r"acceleration (m/s$^2$)")
+    live.animate(psd_line, weighted, hist)
+
+    def redraw(v):
+        spec, fd, t, a, td = ride_run(v["track"], v["speed_kmh"], v["seed"])
+        per_hz = 2 * np.pi * spec.psd
+        psd_line.set_ydata(np.maximum(per_hz, 1e-12))
+        weighted.set_ydata(np.maximum(ride.sperling_weighting(_F) ** 2 * per_hz, 1e-12))
+        shown = t <= t_max
+        hist.set_data(t[shown], a[shown])
+        status.value = (
+            f"{v['track']} at {v['speed_kmh']:.0f} km/h · frequency domain: RMS {fd.rms:.3f} m/s², "
+            f"Wz {fd.wz:.2f}, ISO 2631 W_k {fd.iso_rms:.3f} m/s² · seeded run "
+            f"(λ {_BAND[0]:g}–{_BAND[1]:g} m): RMS {td.rms:.3f} m/s², Wz {td.wz:.2f}"
+        )
+
+    return redraw
+
+
+def _ride_recipe():
+    from raildyn.widgets._core import Recipe
+
+    return Recipe(
+        _ride_controls,
+        _ride_setup,
+        {"nrows": 1, "ncols": 2, "figsize": (11.0, 3.6)},
+        static={"speed_kmh": [40.0, 60.0, 80.0, 100.0, 120.0, 140.0, 160.0, 180.0, 200.0]},
+        title="Car-body acceleration spectrum, ride index and a seeded time run against speed",
+    )
+
+
+RIDE = _ride_recipe()
+
+
+def ride_quality():
+    """Passenger car on random track: car-body acceleration spectrum, RMS and Sperling's Wz.
+
+    Controls: track quality, speed (km/h), seed. Left: the car-body (centre)
+    acceleration PSD per Hz and its Sperling-weighted part; right: a seeded time
+    run over a synthesized track of the same quality. The status line gives the
+    frequency-domain RMS, Wz and ISO 2631 weighted RMS beside the run's.
+    """
+    return RIDE.build()
+
+
+# --------------------------------------------------------------------------- freight car rock and roll
+
+_ROCK_SPEEDS_KMH = np.linspace(20.0, 70.0, 11)
+
+
+def _rock_controls():
+    from raildyn.widgets._core import slider
+
+    return {
+        "speed_kmh": slider("V (km/h)", 40.0, 20.0, 70.0, 5.0, fmt=".0f"),
+        "friction_kn": slider("wedge friction (kN per nest)", 6.0, 2.0, 20.0, 2.0, fmt=".0f"),
+        "depth_mm": slider("joint dip δ (mm)", 20.0, 5.0, 30.0, 5.0, fmt=".0f"),
+    }
+
+
+@lru_cache(maxsize=32)
+def rock_sweep(friction_kn: float, depth_mm: float):
+    """Roll amplitude (deg) over the widget's speeds, and the resonance speed (km/h)."""
+    car = FreightCar(wedge_friction=1e3 * friction_kn)
+    r = rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=12, dt=0.008)
+    return np.degrees(r.roll_amplitude), 3.6 * r.resonance_speed
+
+
+@lru_cache(maxsize=64)
+def rock_history(speed_kmh: float, friction_kn: float, depth_mm: float):
+    car = FreightCar(wedge_friction=1e3 * friction_kn)
+    cycles = max(12, int(np.ceil(30.0 * speed_kmh / 3.6 / track.RAIL_LENGTH)))  # about 30 s shown
+    r = rock_and_roll(car, [speed_kmh / 3.6], depth=1e-3 * depth_mm, cycles=cycles, dt=0.008)
+    return r.t, np.degrees(r.roll[0])
+
+
+def _rock_setup(live, status):
+    ax_a, ax_t = live.axes[0]
+    (curve,) = ax_a.plot(_ROCK_SPEEDS_KMH, 0 * _ROCK_SPEEDS_KMH, "o-", color=plots.COLORS[0], ms=3)
+    resonance = ax_a.axvline(40.0, color="k", ls=":", lw=1, label="roll resonance $f_\\phi L$")
+    (marker,) = ax_a.plot([40.0], [0.0], "s", color=plots.COLORS[1], ms=7, label="chosen speed")
+    ax_a.set_xlim(_ROCK_SPEEDS_KMH[0] - 2, _ROCK_SPEEDS_KMH[-1] + 2)
+    ax_a.set_ylim(0, 5.0)
+    ax_a.set_xlabel("speed (km/h)")
+    ax_a.set_ylabel("roll amplitude (deg)")
+    ax_a.legend(loc="upper right")
+    (hist,) = ax_t.plot([0, 1], [0, 0], color=plots.COLORS[2], lw=0.9)
+    ax_t.set_xlim(0, 30)
+    ax_t.set_ylim(-5.0, 5.0)
+    ax_t.set_xlabel("time (s)")
+    ax_t.set_ylabel("body roll (deg)")
+    live.animate(curve, resonance, marker, hist)
+
+    def redraw(v):
+        amp, v_res = rock_sweep(v["friction_kn"], v["depth_mm"])
+        curve.set_ydata(amp)
+        resonance.set_xdata([v_res, v_res])
+        t, roll = rock_history(v["speed_kmh"], v["friction_kn"], v["depth_mm"])
+        shown = t <= 30
+        hist.set_data(t[shown], roll[shown])
+        tail = t >= 0.75 * t[-1]
+        here = 0.5 * (roll[tail].max() - roll[tail].min())
+        marker.set_data([v["speed_kmh"]], [here])
+        status.value = (
+            f"roll resonance (springs alone) at {v_res:.0f} km/h; at {v['speed_kmh']:.0f} km/h the steady "
+            f"roll amplitude is {here:.2f}° ({v['friction_kn']:.0f} kN per nest, {v['depth_mm']:.0f} mm dips)"
+        )
+
+    return redraw
+
+
+def _rock_recipe():
+    from raildyn.widgets._core import Recipe
+
+    return Recipe(
+        _rock_controls,
+        _rock_setup,
+        {"nrows": 1, "ncols": 2, "figsize": (11.0, 3.6)},
+        static={"speed_kmh": [20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0, 60.0, 65.0, 70.0]},
+        title="Freight car rocking on staggered jointed rail: roll amplitude against speed",
+    )
+
+
+ROCK = _rock_recipe()
+
+
+def rock_and_roll_widget():
+    """Freight car on staggered jointed rail: roll amplitude against speed and the roll history.
+
+    Controls: speed (km/h), wedge friction per nest (kN), joint dip depth (mm).
+    Left: steady roll amplitude over 20–70 km/h with the roll resonance of the
+    springs alone dotted and the chosen speed marked; right: the roll history.
+    """
+    return ROCK.build()

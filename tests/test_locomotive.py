@@ -1,0 +1,67 @@
+"""Tests for the six-axle locomotive (raildyn.vehicles.locomotive): closed forms, filter zeros, bad input."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from raildyn.vehicles import response as resp
+from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
+from raildyn.vibration import modal_analysis
+
+LOCO = DEFAULT_LOCOMOTIVE
+
+
+def _two_dof(m1, k1, m2, k2):
+    """ω² of m1 on k1 on m2 on k2 (ground), from the characteristic quadratic."""
+    a, b, c = m1 * m2, -(m1 * (k1 + k2) + m2 * k1), k1 * k2
+    d = np.sqrt(b * b - 4 * a * c)
+    return np.array([(-b - d) / (2 * a), (-b + d) / (2 * a)])
+
+
+def test_static_deflection_matches_hand_calculation():
+    q = LOCO.linear().static_deflection()
+    # each truck: half the body on one secondary; half body + frame on three primaries
+    truck = (LOCO.body_mass / 2 + LOCO.truck_mass) * 9.81 / (3 * LOCO.primary_stiffness)
+    body = truck + LOCO.body_mass / 2 * 9.81 / LOCO.secondary_stiffness
+    np.testing.assert_allclose(q[[0, 2, 4]], [-body, -truck, -truck], rtol=1e-12)
+    np.testing.assert_allclose(q[[1, 3, 5]], 0.0, atol=1e-14)
+
+
+def test_undamped_frequencies_match_closed_forms():
+    v = LOCO.linear()
+    got = np.sort(modal_analysis(v.M, v.K).natural_frequencies ** 2)
+    ks, kp, s, a, mt = (
+        LOCO.secondary_stiffness,
+        LOCO.primary_stiffness,
+        LOCO.semi_truck_spacing,
+        LOCO.axle_spacing,
+        LOCO.truck_mass,
+    )
+    bounce = _two_dof(LOCO.body_mass, 2 * ks, 2 * mt, 6 * kp)
+    pitch = _two_dof(LOCO.body_pitch_inertia, 2 * ks * s**2, 2 * mt * s**2, 6 * kp * s**2)
+    truck_pitch = 2 * kp * a**2 / LOCO.truck_pitch_inertia  # axles at ±a (the middle one has no arm)
+    want = np.sort(np.concatenate([bounce, pitch, [truck_pitch] * 2]))
+    # symmetric eigenproblem against the quadratic formula: rounding only
+    np.testing.assert_allclose(got, want, rtol=1e-9)
+
+
+@settings(max_examples=50, deadline=None)
+@given(speed=st.floats(5.0, 50.0))
+def test_property_three_axle_filter_zeros(speed):
+    """Body bounce sees 1 + e^{-iωa/V} + e^{-2iωa/V}: zero at λ = 3a and 3a/2 (cube roots of unity)."""
+    v = LOCO.linear()
+    lam = np.array([3 * LOCO.axle_spacing, 1.5 * LOCO.axle_spacing])
+    H = resp.track_frf(v, 2 * np.pi * speed / lam, speed, "body z")
+    scale = np.abs(resp.track_frf(v, np.linspace(0.5, 60, 300), speed, "body z")).max()
+    # exact cancellation of three unit phasors: rounding of the exponentials
+    assert np.abs(H).max() < 1e-12 * scale
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="truck_mass"):
+        Locomotive(truck_mass=-3.0)
+    with pytest.raises(ValueError, match="axle_spacing"):
+        Locomotive(axle_spacing=7.0)
+    with pytest.raises(ValueError, match="secondary_damping"):
+        Locomotive(secondary_damping=-1.0)
