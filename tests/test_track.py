@@ -420,3 +420,15 @@ def test_bad_deterministic_input():
         jointed_track([0.0], 0.01, 1.0, arrangement="random")
     with pytest.raises(ValueError, match="wavelength must be in"):
         sinusoid([0.0], 0.01, 0.0)
+
+
+def test_harmonic_amplitudes_of_a_sum_of_sinusoids():
+    x = np.arange(256) / 256
+    profile = 0.004 * np.cos(2 * np.pi * x) + 0.001 * np.sin(2 * np.pi * 5 * x + 0.3)
+    # A DFT of a whole number of periods separates the harmonics exactly (to rounding, 1e-15 m).
+    assert np.allclose(track.harmonic_amplitudes(profile, 6), [0.004, 0, 0, 0, 0.001, 0], atol=1e-15)
+
+
+def test_harmonic_amplitudes_bad_count():
+    with pytest.raises(ValueError, match="count"):
+        track.harmonic_amplitudes(np.zeros(8), 4)

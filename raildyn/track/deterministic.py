@@ -34,6 +34,7 @@ __all__ = [
     "bump",
     "sinusoid",
     "passing_frequency",
+    "harmonic_amplitudes",
 ]
 
 RAIL_LENGTH = 11.9  # m; the 39-ft rail of North American jointed track (Garg & Dukkipati 1984, ch. 3)
@@ -223,3 +224,20 @@ def sinusoid(x, amplitude: float, wavelength: float, *, phase: float = 0.0, deri
 def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     """Frequency f = V/L (Hz) at which the joints of one rail pass an axle at speed V (m/s)."""
     return _checks.positive("speed", speed) / _checks.positive("rail_length", rail_length)
+
+
+def harmonic_amplitudes(one_period, count: int) -> np.ndarray:
+    """Amplitudes of the first ``count`` harmonics of a periodic profile (same unit as the profile).
+
+    ``one_period`` samples exactly one period uniformly, without repeating its
+    first point. Harmonic n has the wavelength L/n, so an axle at speed V meets it
+    at the frequency nV/L (see :func:`passing_frequency`). The amplitude of
+    harmonic n is 2|Xₙ|/N from the discrete Fourier transform of the N samples.
+
+    >>> x = np.arange(64) / 64
+    >>> np.round(harmonic_amplitudes(3 * np.cos(2 * np.pi * x) + np.sin(6 * np.pi * x), 3), 12).tolist()
+    [3.0, 0.0, 1.0]
+    """
+    samples = _checks.array("one_period", one_period, ndim=1)
+    count = _checks.integer("count", count, low=1, high=(samples.size - 1) // 2)
+    return 2.0 * np.abs(np.fft.rfft(samples))[1 : count + 1] / samples.size

@@ -184,8 +184,7 @@ def _jointed_rail_setup(live, status):
         cross.set_ydata(1e3 * t.cross_level)
         one = track.jointed_track(period, depth, a, arrangement=v["arrangement"])
         for bars, signal in ((bounce, one.vertical), (roll, one.cross_level)):
-            amplitudes = 2 * np.abs(np.fft.rfft(signal))[1 : n_harm + 1] / period.size
-            for bar, h in zip(bars.patches, 1e3 * amplitudes, strict=True):
+            for bar, h in zip(bars.patches, 1e3 * track.harmonic_amplitudes(signal, n_harm), strict=True):
                 bar.set_height(h)
         f1 = track.passing_frequency(v["speed_kmh"] / 3.6)
         for n, (b, r) in enumerate(zip(bounce.patches, roll.patches, strict=True), start=1):
