@@ -4,6 +4,9 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
 BOOK_HTML := book/_build/html
+# matplotlib's font cache inside the venv: a cache shared across checkouts on one machine can be
+# rewritten by another checkout's half-deleted venv and lose matplotlib's own fonts.
+export MPLCONFIGDIR := $(CURDIR)/.venv/matplotlib
 
 .PHONY: book test test-fast lab app bench figures lint clean chromium install
 
