@@ -79,7 +79,14 @@ class PageLog:
         page.on("console", lambda m: self.errors.append(m.text) if m.type == "error" else None)
         page.on("pageerror", lambda e: self.errors.append(str(e)))
         page.on("request", self._request)
-        page.on("requestfailed", lambda r: self.errors.append(f"request failed: {r.url[:120]} ({r.failure})"))
+        page.on("requestfailed", self._failed)
+
+    def _failed(self, request):
+        # A widget picture replaced while its previous frame is still loading cancels that load
+        # (a blob: URL, net::ERR_ABORTED): not an error. Any other failed request is.
+        if request.url.startswith("blob:") and "ERR_ABORTED" in str(request.failure):
+            return
+        self.errors.append(f"request failed: {request.url[:120]} ({request.failure})")
 
     def _request(self, request):
         url = urlparse(request.url)
