@@ -247,3 +247,18 @@ def test_time_response_to_a_sinusoid_matches_the_frf():
     tail = run.y[t >= 30.0]
     H = resp.track_frf(CAR.linear(), np.array([omega]), V, "body z", derivative=2)[0]
     assert 0.5 * (tail.max() - tail.min()) == pytest.approx(abs(H) * A, rel=1e-3)
+
+
+def test_periodic_profile_slope_is_the_exact_derivative_and_repeats():
+    from raildyn.vehicles import periodic_profile
+
+    dx, n = 0.25, 400  # one 100 m period
+    x = np.arange(n) * dx
+    z = 0.003 * np.sin(2 * np.pi * x / 20.0) + 0.001 * np.cos(2 * np.pi * x / 12.5)
+    profile, slope = periodic_profile(z, dx)
+    exact = 0.003 * 2 * np.pi / 20.0 * np.cos(2 * np.pi * x / 20.0) - 0.001 * 2 * np.pi / 12.5 * np.sin(
+        2 * np.pi * x / 12.5
+    )
+    # Whole numbers of periods: the Fourier derivative is exact to rounding (1e-15 of the slope).
+    assert np.allclose(slope(x, None), exact, rtol=0, atol=1e-15)
+    assert np.allclose(profile(x + n * dx, None), z, rtol=0, atol=1e-15)

@@ -14,7 +14,14 @@ import ipywidgets as widgets
 import numpy as np
 
 from raildyn import plots, ride, track
-from raildyn.vehicles import MANCHESTER_VERTICAL, FreightCar, response_spectrum, rock_and_roll, time_response
+from raildyn.vehicles import (
+    MANCHESTER_VERTICAL,
+    FreightCar,
+    periodic_profile,
+    response_spectrum,
+    rock_and_roll,
+    time_response,
+)
 
 TRACKS = {f"FRA class {c}": ("fra", c) for c in track.FRA_CLASSES} | {
     "German low": ("german", "low"),
@@ -38,14 +45,10 @@ def _ride_controls():
 
 
 @lru_cache(maxsize=64)
-def _track_sample(track_label: str, seed: int):
+def _track_sample(track_label: str, seed: int) -> np.ndarray:
     spectrum, grade = TRACKS[track_label]
     psd = track.track_psd(spectrum, "vertical", grade)
-    s = track.synthesize_irregularity(psd, _RUN_LENGTH, _DX, _BAND, seed)
-    z = s.z.reshape(-1)
-    n = z.size
-    slope = np.fft.irfft(2j * np.pi * np.fft.rfftfreq(n, _DX) * np.fft.rfft(z), n=n)
-    return np.arange(n) * _DX, z, slope
+    return track.synthesize_irregularity(psd, _RUN_LENGTH, _DX, _BAND, seed).z.reshape(-1)
 
 
 def ride_run(track_label: str, speed_kmh: float, seed: int):
@@ -56,15 +59,11 @@ def ride_run(track_label: str, speed_kmh: float, seed: int):
     w = 2 * np.pi * _F
     spec = response_spectrum(_VEHICLE, psd, V, w, "body z", derivative=2)
     fd = ride.ride_quality(spec.psd, w)
-    # the time run: the same spectrum, limited to the synthesized band, along a periodic sample
-    x, z, slope = _track_sample(track_label, seed)
-    L = x[-1] + _DX
-
-    def periodic(values):
-        return lambda xx, rails: np.interp(np.mod(xx, L), x, values, period=L)
-
-    t = np.arange(0.0, _SETTLE + L / V, _DT)
-    run = time_response(_VEHICLE, periodic(z), V, t, "body z", derivative=2, profile_rate=periodic(slope))
+    # The time run: the same spectrum, limited to the synthesized band, along a periodic sample.
+    z = _track_sample(track_label, seed)
+    profile, slope = periodic_profile(z, _DX)
+    t = np.arange(0.0, _SETTLE + z.size * _DX / V, _DT)
+    run = time_response(_VEHICLE, profile, V, t, "body z", derivative=2, profile_rate=slope)
     keep = t >= _SETTLE
     td = ride.ride_quality_history(run.y[keep], _DT)
     return spec, fd, t[keep] - _SETTLE, run.y[keep], td
