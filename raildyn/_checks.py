@@ -194,3 +194,18 @@ def time_grid(name: str, value, *, uniform: bool = False) -> np.ndarray:
                 f"{name} must be uniformly spaced (mean step {h:.6g} s); step {i} is {steps[i]:.6g} s"
             )
     return t
+
+
+def interval(name: str, value, *, unit: str = "", low: float = 0.0) -> tuple[float, float]:
+    """Return a pair (lo, hi) of finite floats with low < lo < hi (a band of wavelengths or frequencies)."""
+    where = f" ({unit})" if unit else ""
+    try:
+        lo, hi = (float(v) for v in value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a pair (low, high){where}, got {value!r}") from None
+    if not (np.isfinite(lo) and np.isfinite(hi) and low < lo < hi):
+        raise ValueError(
+            f"{name} must satisfy {low} < low < high{where}, finite; "
+            f"got {value!r} (an empty or impossible band)"
+        )
+    return lo, hi

@@ -16,7 +16,7 @@ from math import factorial
 
 import numpy as np
 
-from raildyn._checks import scalar
+from raildyn._checks import array, scalar
 from raildyn.integrators import linear
 
 # Every scheme the analysis knows, by name; the same names select the integrators.
@@ -141,9 +141,7 @@ def amplification_matrix(method: str, dt_over_T, damping_ratio: float = 0.0, **p
     chosen = _parameters(method, params)
     xi = scalar("damping_ratio", damping_ratio, low=0.0, high=1.0, high_open=True)
     ratios = np.asarray(dt_over_T, dtype=float)
-    flat = np.atleast_1d(ratios)
-    if flat.ndim != 1 or not np.all(np.isfinite(flat)) or np.any(flat <= 0):
-        raise ValueError(f"dt_over_T must be > 0 and finite, got {dt_over_T!r}")
+    flat = array("dt_over_T", np.atleast_1d(ratios), ndim=1, low=0.0, low_open=True)
     mats = _matrices(method, flat, xi, chosen)
     return mats[0] if ratios.ndim == 0 else mats
 

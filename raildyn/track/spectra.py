@@ -304,14 +304,7 @@ def track_psd(spectrum: str, component: str, grade) -> Callable[[np.ndarray], np
 
 def wavelength_band(band) -> tuple[float, float]:
     """Check a wavelength band (λ_min, λ_max) in m and return the wavenumber band (2π/λ_max, 2π/λ_min)."""
-    try:
-        lo, hi = (float(b) for b in band)
-    except (TypeError, ValueError):
-        raise ValueError(f"wavelength_band must be a pair (shortest, longest) in m, got {band!r}") from None
-    if not (np.isfinite(lo) and np.isfinite(hi) and 0.0 < lo < hi):
-        raise ValueError(
-            f"wavelength_band must satisfy 0 < shortest < longest (m), finite; got {band!r} (an empty band)"
-        )
+    lo, hi = _checks.interval("wavelength_band", band, unit="m")
     return 2.0 * np.pi / hi, 2.0 * np.pi / lo
 
 
@@ -369,12 +362,7 @@ def band_variance(spectrum: str, component: str, grade, band, *, k: float = FRA_
     """
     track_psd(spectrum, component, grade)  # checks the names
     k = _checks.positive("k", k)
-    try:
-        lo, hi = (float(b) for b in band)
-    except (TypeError, ValueError):
-        raise ValueError(f"band must be a pair (omega_lo, omega_hi) in rad/m, got {band!r}") from None
-    if not (np.isfinite(lo) and np.isfinite(hi) and 0.0 < lo < hi):
-        raise ValueError(f"band must satisfy 0 < omega_lo < omega_hi (rad/m), finite; got {band!r}")
+    lo, hi = _checks.interval("band", band, unit="rad/m")
 
     def F(w):  # antiderivative of S in m²
         if spectrum == "fra":

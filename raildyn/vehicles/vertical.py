@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from raildyn._checks import positive
+from raildyn._checks import nonnegative, positive
 from raildyn.vehicles.lateral import Bogie, Car
 from raildyn.vehicles.response import GRAVITY, LinearVehicle, _Assembler
 
@@ -64,9 +64,7 @@ class VerticalCar:
     def __post_init__(self):
         for name in self.__dataclass_fields__:
             if name.endswith("damping"):
-                value = getattr(self, name)
-                if not np.isfinite(value) or value < 0:
-                    raise ValueError(f"{name} must be a finite number >= 0, got {value!r}")
+                nonnegative(name, getattr(self, name))
             else:
                 positive(name, getattr(self, name))
         if self.semi_wheelbase >= self.semi_bogie_spacing:
