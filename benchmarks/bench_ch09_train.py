@@ -1,8 +1,9 @@
 """Chapter 9: a long freight train in emergency braking, vectorised right-hand side against a per-car loop.
 
 Both runs use the same ``solve_ivp`` method (RK45), tolerances, state and
-physics; the baseline evaluates the right-hand side the straightforward way, one
-vehicle and one coupler at a time in Python. A 600 s run with the loop takes
+physics, one state per call; the baseline evaluates the right-hand side the
+straightforward way, one vehicle and one coupler at a time in Python, raildyn in
+its compiled loop (``raildyn.train._kernel``). A 600 s run with the loop takes
 minutes, so both are timed over the same shorter span (``SPAN``), which covers the
 brake application, the run-in and the stop; the raildyn 600 s run is timed as well
 to give the factor over real time. Also the chapter's widget update.
@@ -81,18 +82,18 @@ def loop_rhs(model):
     return rhs
 
 
-def _solve(fun, model, span, vectorized):
+def _solve(fun, model, span):
     n = model.size
     atol = np.r_[1e-3, np.full(n - 1, 1e-6), np.full(n, 1e-5)]
     y0 = model.initial_state(20.0, model.gear.slack / 2)
-    return solve_ivp(fun, (0.0, span), y0, rtol=1e-7, atol=atol, vectorized=vectorized)
+    return solve_ivp(fun, (0.0, span), y0, rtol=1e-7, atol=atol)
 
 
 def check_same_answer() -> float:
     """Largest difference of the final speeds of the two versions over a short span, m/s."""
     model = _model()
-    a = _solve(model.rhs, model, 5.0, True)
-    b = _solve(loop_rhs(model), model, 5.0, False)
+    a = _solve(model.rhs, model, 5.0)
+    b = _solve(loop_rhs(model), model, 5.0)
     return float(np.abs(a.y[model.size :, -1] - b.y[model.size :, -1]).max())
 
 
@@ -100,8 +101,8 @@ def cases(repeats: int) -> list[Case]:
     model = _model()
     assert check_same_answer() < 1e-6, "the loop baseline and raildyn disagree"
     loop = loop_rhs(model)
-    fast = timed(lambda i: _solve(model.rhs, model, SPAN, True), repeats)
-    slow = timed(lambda i: _solve(loop, model, SPAN, False), max(1, min(repeats, 2)))
+    fast = timed(lambda i: _solve(model.rhs, model, SPAN), repeats)
+    slow = timed(lambda i: _solve(loop, model, SPAN), max(1, min(repeats, 2)))
     full = timed(lambda i: train.simulate(model, FULL, 20.0, initial_extension=model.gear.slack / 2), 1)
     real_time = Case(
         f"{WAGONS}-wagon emergency stop, {FULL:.0f} s simulated (baseline = real time)",

@@ -9,8 +9,9 @@ resistance ``R``, grade ``G`` and curve resistance ``K``, and ``F_i`` the force
 in the coupler behind vehicle ``i`` (+ tension). Retarding forces that act
 against the motion are multiplied by ``tanh(v/v_c)`` with a creep speed
 ``v_c`` of a few cm/s, so a stopped train does not chatter between signs.
-The right-hand side works on a whole batch of states at once, as
-``scipy.integrate.solve_ivp(..., vectorized=True)`` expects.
+``TrainModel.rhs`` computes the right-hand side of one state in a compiled loop
+(``_kernel``) and of a batch of states (one per column) with numpy, which is
+also the readable reference the compiled loop is tested against.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from scipy.integrate import solve_ivp
 
 from raildyn import _checks
 from raildyn._progress import progress_bar
+from raildyn.train import _kernel
 from raildyn.train.couplers import DraftGear
 from raildyn.train.forces import NOTCHES, AirBrake
 from raildyn.train.resistance import CURVE_RESISTANCE, Route, davis_resistance
@@ -104,6 +106,33 @@ class TrainModel:
         pre["traction"] = bool(c.locomotive.any() and (self.notch > 0 or self.dynamic_brake > 0))
         object.__setattr__(self, "_pre", pre)
         object.__setattr__(self, "_pre_columns", columns)
+        object.__setattr__(self, "_packed", self._pack(pre))
+
+    def _pack(self, pre):
+        """The model as the compiled right-hand side takes it: (table, scalars, route)."""
+        c, k = self.consist, _kernel
+        n = len(c)
+        table = np.zeros((k.ROWS, n))
+        table[k.ROW_INV_MASS] = pre["inv_mass"]
+        table[k.ROW_A0], table[k.ROW_A1], table[k.ROW_A2] = pre["a0"], pre["a1"], pre["a2"]
+        table[k.ROW_CURVE], table[k.ROW_WEIGHT] = pre["curve"], pre["weight"]
+        table[k.ROW_SPACING, : n - 1] = pre["spacing"]
+        table[k.ROW_POWER], table[k.ROW_EFFORT] = c.rail_power, c.max_tractive_effort
+        table[k.ROW_DYNAMIC] = c.max_dynamic_brake
+        s = np.zeros(k.SCALARS)
+        g = self.gear
+        s[k.S_SLACK], s[k.S_K_LOAD], s[k.S_K_UNLOAD] = g.slack, g.loading_stiffness, g.unloading_stiffness
+        s[k.S_TRAVEL], s[k.S_K_SOLID] = g.travel, g.solid_stiffness
+        s[k.S_SMOOTHING], s[k.S_TRANSITION] = g.smoothing, g.transition_rate
+        s[k.S_CREEP], s[k.S_NOTCH], s[k.S_DYNAMIC] = self.creep_speed, self.notch, self.dynamic_brake
+        s[k.S_RESISTANCE], s[k.S_TRACTION] = self.resistance, pre["traction"]
+        s[k.S_ROUTE] = not self.route.is_level
+        if self.air_brake is not None:
+            table[k.ROW_BRAKE], table[k.ROW_ARRIVAL] = pre["brake"], pre["arrival"]
+            s[k.S_BRAKE], s[k.S_BRAKE_START] = 1.0, self.air_brake.start
+            s[k.S_BUILD_UP] = self.air_brake.build_up_time
+        route = np.vstack([self.route._x, self.route._table[:2]])
+        return table, s, route
 
     @property
     def size(self) -> int:
@@ -176,7 +205,16 @@ class TrainModel:
         return traction - np.tanh(v / self.creep_speed) * dynamic
 
     def rhs(self, t, y):
-        """dy/dt for ``y = [x_0, δ, v]`` (see :meth:`initial_state`), shape ``(2n,)`` or ``(2n, k)``."""
+        """dy/dt for ``y = [x_0, δ, v]`` (see :meth:`initial_state`), shape ``(2n,)`` or ``(2n, k)``.
+
+        One state goes through the compiled loop, a batch (one state per column) through numpy.
+        """
+        if np.ndim(y) == 1:
+            return _kernel.rhs(float(t), np.asarray(y, dtype=float), *self._packed)
+        return self.rhs_numpy(t, y)
+
+    def rhs_numpy(self, t, y):
+        """:meth:`rhs` in numpy array operations, for one state or a batch: the reference."""
         n = self.size
         delta, v = y[1:n], y[n:]
         rate = v[:-1] - v[1:]
@@ -343,7 +381,7 @@ def simulate(
     try:
         sol = solve_ivp(
             fun, (0.0, duration), y0, method=method, t_eval=t_eval, rtol=rtol, atol=atol,
-            vectorized=True, max_step=max_step,
+            max_step=max_step,
         )  # fmt: skip
     finally:
         if bar is not None:

@@ -1,0 +1,108 @@
+"""The longitudinal right-hand side of one train state, compiled with numba.
+
+``TrainModel.rhs`` (numpy) is the readable reference and serves batches of
+states; this module computes the same thing for a single state in one compiled
+loop over the vehicles. A long train is a few hundred small operations per
+evaluation, where numpy's per-call cost outweighs the arithmetic: the compiled
+loop is about ten times faster, which is what makes long braking runs
+interactive. ``tests/test_train.py`` holds the two equal to round-off.
+
+Everything the loop needs is packed into two float arrays (so a call unboxes few
+arguments): ``table`` has one column per vehicle and the rows named by the
+``ROW_*`` constants; ``scalars`` holds the coupler law, the brake, the driver's
+settings and flags (``S_*``). ``route`` is ``[positions, grade, curvature]``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+(ROW_INV_MASS, ROW_A0, ROW_A1, ROW_A2, ROW_CURVE, ROW_WEIGHT, ROW_BRAKE, ROW_ARRIVAL,
+ ROW_SPACING, ROW_POWER, ROW_EFFORT, ROW_DYNAMIC) = range(12)  # fmt: skip
+ROWS = 12
+
+(S_SLACK, S_K_LOAD, S_K_UNLOAD, S_TRAVEL, S_K_SOLID, S_SMOOTHING, S_TRANSITION, S_CREEP,
+ S_BRAKE_START, S_BUILD_UP, S_NOTCH, S_DYNAMIC, S_RESISTANCE, S_BRAKE, S_TRACTION, S_ROUTE) = range(16)  # fmt: skip
+SCALARS = 16
+NOTCH_FRACTION_PER_STEP = 1.0 / 8.0  # forces.NOTCHES = 8
+DYNAMIC_PEAK, DYNAMIC_FADE = 8.0, 20.0  # m/s, the corner speeds of forces.dynamic_brake_force
+
+
+@numba.njit(cache=True, fastmath=False)
+def coupler_force(delta, rate, s):
+    """Force of one coupler (N, + tension) for extension ``delta`` and its rate: DraftGear.force."""
+    sign = 1.0 if delta > 0.0 else (-1.0 if delta < 0.0 else 0.0)
+    slack = s[S_SLACK]
+    if slack == 0.0:
+        u, slope = abs(delta), 1.0
+    else:
+        eps = s[S_SMOOTHING]
+        a = abs(delta) - 0.5 * slack
+        b = min(max(a + eps, 0.0), 2.0 * eps)
+        u = a if a >= eps else b * b * (0.25 / eps)
+        slope = b * (0.5 / eps)
+    mean = 0.5 * (s[S_K_LOAD] + s[S_K_UNLOAD])
+    half = 0.5 * (s[S_K_LOAD] - s[S_K_UNLOAD])
+    k = mean + half * math.tanh(slope * sign * rate / s[S_TRANSITION])
+    force = k * u
+    if s[S_K_SOLID] > 0.0:
+        force += s[S_K_SOLID] * max(u - s[S_TRAVEL], 0.0)
+    return sign * force
+
+
+@numba.njit(cache=True)
+def _segment(xs, position):
+    k = np.searchsorted(xs, position, side="right") - 1
+    return min(max(k, 0), xs.size - 1)
+
+
+@numba.njit(cache=True)
+def rhs(t, y, table, scalars, route):
+    """dy/dt of ``y = [x_0, δ_0 … δ_{n−2}, v_0 … v_{n−1}]`` (see TrainModel.initial_state)."""
+    n = table.shape[1]
+    out = np.empty(2 * n)
+    force = np.zeros(n)
+    s = scalars
+    creep = s[S_CREEP]
+    brake_on = s[S_BRAKE] > 0.0 and t > s[S_BRAKE_START]
+    x = y[0]  # route position of vehicle i, walked back along the train
+    for i in range(n):
+        v = y[n + i]
+        speed = abs(v)
+        retard = 0.0
+        if s[S_RESISTANCE] > 0.0:
+            retard = table[ROW_A0, i] + speed * (table[ROW_A1, i] + table[ROW_A2, i] * speed)
+        grade = 0.0
+        if s[S_ROUTE] > 0.0:
+            if i > 0:
+                x -= table[ROW_SPACING, i - 1] + y[i]
+            k = _segment(route[0], x)
+            grade = route[1, k]
+            if s[S_RESISTANCE] > 0.0:
+                retard += table[ROW_CURVE, i] * abs(route[2, k])
+        if brake_on:
+            since = max(t - table[ROW_ARRIVAL, i], 0.0)
+            retard -= table[ROW_BRAKE, i] * math.expm1(-since / s[S_BUILD_UP])
+        total = math.tanh(-v / creep) * retard
+        if grade != 0.0:
+            total -= table[ROW_WEIGHT, i] * grade / math.sqrt(1.0 + grade * grade)
+        if s[S_TRACTION] > 0.0:
+            limit = table[ROW_POWER, i] / max(speed, 1e-6)
+            traction = s[S_NOTCH] * NOTCH_FRACTION_PER_STEP * min(table[ROW_EFFORT, i], limit)
+            shape = min(speed / DYNAMIC_PEAK, min(1.0, DYNAMIC_FADE / max(speed, 1e-12)))
+            dynamic = s[S_DYNAMIC] * table[ROW_DYNAMIC, i] * shape
+            total += traction - math.tanh(v / creep) * dynamic
+        force[i] += total
+        if i < n - 1:
+            rate = v - y[n + i + 1]
+            f = coupler_force(y[1 + i], rate, s)
+            force[i] -= f
+            force[i + 1] += f
+            out[1 + i] = rate
+    out[0] = y[n]
+    for i in range(n):
+        out[n + i] = force[i] * table[ROW_INV_MASS, i]
+    return out
