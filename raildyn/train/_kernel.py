@@ -20,13 +20,14 @@ import math
 import numba
 import numpy as np
 
+# Rows of ``table`` (one column per vehicle).
 (ROW_INV_MASS, ROW_A0, ROW_A1, ROW_A2, ROW_CURVE, ROW_WEIGHT, ROW_BRAKE, ROW_ARRIVAL,
- ROW_SPACING, ROW_POWER, ROW_EFFORT, ROW_DYNAMIC) = range(12)  # fmt: skip
-ROWS = 12
+ ROW_SPACING, ROW_POWER, ROW_EFFORT, ROW_DYNAMIC) = range(ROWS := 12)  # fmt: skip
 
+# Entries of ``scalars``; the last four are flags (1.0 or 0.0).
 (S_SLACK, S_K_LOAD, S_K_UNLOAD, S_TRAVEL, S_K_SOLID, S_SMOOTHING, S_TRANSITION, S_CREEP,
- S_BRAKE_START, S_BUILD_UP, S_NOTCH, S_DYNAMIC, S_RESISTANCE, S_BRAKE, S_TRACTION, S_ROUTE) = range(16)  # fmt: skip
-SCALARS = 16
+ S_BRAKE_START, S_BUILD_UP, S_NOTCH, S_DYNAMIC,
+ S_RESISTANCE, S_BRAKE, S_TRACTION, S_ROUTE) = range(SCALARS := 16)  # fmt: skip
 NOTCH_FRACTION_PER_STEP = 1.0 / 8.0  # forces.NOTCHES = 8
 DYNAMIC_PEAK, DYNAMIC_FADE = 8.0, 20.0  # m/s, the corner speeds of forces.dynamic_brake_force
 
