@@ -14,6 +14,9 @@ from hypothesis import strategies as st
 
 from raildyn.contact import (
     KALKER_NU,
+    POLACH_DRY,
+    POLACH_WET,
+    PolachAdhesion,
     carter,
     carter_coefficient,
     creep_coefficients,
@@ -21,6 +24,7 @@ from raildyn.contact import (
     kalker_coefficients,
     kalker_linear,
     polach,
+    polach_adhesion,
     shen_hedrick_elkins,
     wheelset_creepages,
 )
@@ -165,6 +169,60 @@ def test_polach_spin_term_matches_the_linear_theory_at_small_spin():
     assert r.mz is None
 
 
+def test_polach_spin_force_is_kalkers_whatever_the_longitudinal_creepage():
+    # For small creepage Kalker's linear theory gives Fy = −f₂₃φ (η = 0) independent of ξ.
+    # Polach's spin force does so only with ε_M proportional to s_C = √(ξ² + η_C²): with
+    # |η_C| = |φa| instead (as in some transcriptions) it would be (|φa|/s_C)·f₂₃φ, here 0.6 %
+    # of it. ξ = 1e-5 keeps ε ≈ 0.01, so the saturation changes the result by about 1e-4.
+    a, b, n, mu = 6e-3, 4e-3, 1e5, 0.3
+    f = creep_coefficients(a, b)
+    xi, phi = 1e-5, 1e-5
+    r = polach(xi, 0.0, phi, n, mu, a, b)
+    assert r.fy == pytest.approx(-f.f23 * phi, rel=2e-4)
+    assert r.fx == pytest.approx(-f.f11 * xi, rel=2e-4)
+
+
+def test_polach_2005_friction_falls_from_mu0_to_a_mu0():
+    dry = POLACH_DRY
+    w = np.array([0.0, 0.1, 1.0, 10.0, 1e3])
+    mu = dry.friction(w)
+    assert mu[0] == pytest.approx(0.55)
+    assert np.all(np.diff(mu) < 0)
+    assert mu[-1] == pytest.approx(0.4 * 0.55, rel=1e-12)
+    # μ₀[(1 − A)e^{−Bw} + A] at w = 1 m/s, B = 0.6 s/m (Polach 2005, eq. for μ(w)).
+    assert mu[2] == pytest.approx(0.55 * (0.6 * math.exp(-0.6) + 0.4), rel=1e-12)
+
+
+def test_polach_adhesion_without_decay_is_the_1999_method():
+    a, b, q = 6e-3, 4e-3, 1e5
+    plain = PolachAdhesion(k_a=1.0, k_s=1.0, static_friction=0.3, limit_ratio=1.0, decay_rate=0.0)
+    xi = np.geomspace(1e-5, 0.2, 25)
+    got = polach_adhesion(xi, 0.3 * xi, 0.5, q, 30.0, a, b, plain)
+    ref = polach(xi, 0.3 * xi, 0.5, q, 0.3, a, b)
+    np.testing.assert_allclose(got.fx, ref.fx, rtol=1e-13)
+    np.testing.assert_allclose(got.fy, ref.fy, rtol=1e-13)
+
+
+@pytest.mark.parametrize("conditions", [POLACH_DRY, POLACH_WET], ids=["dry", "wet"])
+def test_polach_adhesion_slope_peak_and_falling_branch(conditions):
+    a, b, q, v = 6e-3, 4e-3, 1e5, 20.0
+    # Initial slope: (2Qμ/π)(k_A + k_S)ε, i.e. (k_A + k_S)/2 of Kalker's f₁₁.
+    tiny = 1e-8
+    slope = -polach_adhesion(tiny, 0.0, 0.0, q, v, a, b, conditions).fx / tiny
+    f11 = creep_coefficients(a, b).f11
+    assert slope == pytest.approx(0.5 * (conditions.k_a + conditions.k_s) * f11, rel=1e-5)
+    # The adhesion coefficient rises to a peak, then falls with the friction (to ξ = 0.2, a slip
+    # of 4 m/s; far beyond, μ sits at A·μ₀ and the curve creeps up towards it); it never
+    # exceeds μ at the slip speed.
+    xi = np.geomspace(1e-5, 1.0, 400)
+    fx = -polach_adhesion(xi, 0.0, 0.0, q, v, a, b, conditions).fx / q
+    peak = int(np.argmax(fx))
+    assert 0 < peak < xi.size - 1
+    assert np.all(np.diff(fx[peak:][xi[peak:] < 0.2]) < 0)
+    assert np.all(fx <= conditions.friction(v * xi) * (1 + 1e-12))
+    assert fx[-1] > conditions.limit_ratio * conditions.static_friction * 0.9
+
+
 def test_polach_closed_form_for_pure_longitudinal_creepage():
     # Pure ξ: F = (2Qμ/π)(ε/(1+ε²) + arctan ε), ε = GπabC11ξ/(4Qμ) (Polach 1999, eq. 7).
     a, b, q, mu, g = 6e-3, 4e-3, 1e5, 0.3, 8.1e10
@@ -210,6 +268,12 @@ def test_bad_input():
         shen_hedrick_elkins(0.01, 0.0, 0.0, 1e5, -0.1, f)
     with pytest.raises(ValueError, match="normal_load"):
         polach(0.01, 0.0, 0.0, -1e5, 0.3, 6e-3, 4e-3)
+    with pytest.raises(ValueError, match="speed"):
+        polach_adhesion(0.01, 0.0, 0.0, 1e5, 0.0, 6e-3, 4e-3)
+    with pytest.raises(ValueError, match="limit_ratio"):
+        PolachAdhesion(k_a=1.0, k_s=0.4, static_friction=0.5, limit_ratio=1.5, decay_rate=0.6)
+    with pytest.raises(ValueError, match="slip_speed"):
+        POLACH_DRY.friction(-1.0)
     with pytest.raises(ValueError, match="normal_load"):
         carter(0.01, -5.0, 0.3, 1e7)
     with pytest.raises(ValueError, match="a"):

@@ -10,9 +10,12 @@
 
 from raildyn.contact.creep import (
     KALKER_NU,
+    POLACH_DRY,
+    POLACH_WET,
     CreepCoefficients,
     CreepForces,
     KalkerCoefficients,
+    PolachAdhesion,
     WheelsetCreepages,
     carter,
     carter_coefficient,
@@ -21,6 +24,7 @@ from raildyn.contact.creep import (
     kalker_coefficients,
     kalker_linear,
     polach,
+    polach_adhesion,
     shen_hedrick_elkins,
     wheelset_creepages,
 )
@@ -68,6 +72,10 @@ __all__ = [
     "kalker_coefficients",
     "kalker_linear",
     "polach",
+    "polach_adhesion",
+    "PolachAdhesion",
+    "POLACH_DRY",
+    "POLACH_WET",
     "rolling_radius_difference",
     "s1002_wheel",
     "shen_hedrick_elkins",

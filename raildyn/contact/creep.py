@@ -398,6 +398,11 @@ def polach(
     k_a = _checks.scalar("k_a", k_a, low=0.0, high=1.0, low_open=True)
     k_s = _checks.scalar("k_s", k_s, low=0.0, high=1.0, low_open=True)
     c = kalker_coefficients(a / b, poisson_ratio)
+    return _polach(xi, eta, phi, q, mu, a, b, g_mod, c, k_a, k_s)
+
+
+def _polach(xi, eta, phi, q, mu, a, b, g_mod, c, k_a, k_s) -> CreepForces:
+    """Polach's method on checked input; ``mu`` may be an array broadcasting with the creepages."""
     xi, eta, phi = np.broadcast_arrays(xi, eta, phi)
     eta_c = np.where(np.abs(eta + phi * a) > np.abs(eta), eta + phi * a, eta)
     s_c = np.hypot(xi, eta_c)
@@ -408,6 +413,8 @@ def polach(
     force = 2 * q * mu / np.pi * (k_a * eps / (1 + (k_a * eps) ** 2) + np.arctan(k_s * eps))
     safe_sc = np.where(s_c > 0, s_c, 1.0)
     k_m_factor = 1 + 6.3 * (1 - np.exp(-a / b))
+    # ε_M grows with the whole creepage s_C (not with |η_C| alone): then for small creepage
+    # the spin force is Kalker's −f₂₃φ whatever ξ is (tests/test_contact_creep.py).
     eps_m = 8.0 / 3.0 * g_mod * b * np.sqrt(a * b) * c.c23 * s_c / (q * mu * k_m_factor)
     delta = (eps_m**2 - 1) / (eps_m**2 + 1)
     k_m = np.abs(eps_m) * (delta**3 / 3 - delta**2 / 2 + 1 / 6) - np.sqrt((1 - delta**2) ** 3) / 3
@@ -415,6 +422,110 @@ def polach(
     fx = np.where(s_c > 0, -force * xi / safe_sc, 0.0)
     fy = np.where(s_c > 0, -force * eta / safe_sc + fy_spin, 0.0)
     return CreepForces(fx=_out(fx), fy=_out(fy))
+
+
+@dataclass(frozen=True)
+class PolachAdhesion:
+    """Wheel–rail conditions for Polach's (2005) method near the adhesion limit.
+
+    Friction falls with the slip speed w (m/s) as ``μ = μ₀[(1 − A) e^{−Bw} + A]``, and
+    the reduction factors ``k_A`` (adhesion zone) and ``k_S`` (slip zone) lower the
+    initial slope of the creep-force curve, which Kalker's theory overestimates on
+    real, contaminated rails (Polach 2005).
+
+    Attributes
+    ----------
+    k_a, k_s : float
+        Reduction factors in (0, 1].
+    static_friction : float
+        μ₀ at zero slip speed (> 0).
+    limit_ratio : float
+        A = μ∞/μ₀ in (0, 1].
+    decay_rate : float
+        B, s/m (>= 0).
+    """
+
+    k_a: float
+    k_s: float
+    static_friction: float
+    limit_ratio: float
+    decay_rate: float
+
+    def __post_init__(self):
+        _checks.scalar("k_a", self.k_a, low=0.0, high=1.0, low_open=True)
+        _checks.scalar("k_s", self.k_s, low=0.0, high=1.0, low_open=True)
+        _friction(self.static_friction)
+        _checks.scalar("limit_ratio", self.limit_ratio, low=0.0, high=1.0, low_open=True)
+        _checks.nonnegative("decay_rate", self.decay_rate)
+
+    def friction(self, slip_speed):
+        """μ at slip speed w (m/s, >= 0; any shape)."""
+        w = _checks.array("slip_speed", slip_speed)
+        if np.any(w < 0):
+            raise ValueError(f"slip_speed must be >= 0 m/s, got a minimum of {w.min()!r}")
+        a = self.limit_ratio
+        return _out(self.static_friction * ((1 - a) * np.exp(-self.decay_rate * w) + a))
+
+
+# Polach (2005), Table 2: the parameters fitted to measured adhesion of locomotives on dry and
+# on wet rail (values as transcribed in the RailBreak repository, tools/eval/plant_ref.py, and
+# reproduced by the parameter formulas of Open Rails' Axle.cs at μ₀ = 0.55 and 0.30).
+POLACH_DRY = PolachAdhesion(k_a=1.0, k_s=0.4, static_friction=0.55, limit_ratio=0.4, decay_rate=0.6)
+"""Dry rail (Polach 2005, Table 2)."""
+POLACH_WET = PolachAdhesion(k_a=0.3, k_s=0.1, static_friction=0.30, limit_ratio=0.4, decay_rate=0.2)
+"""Wet rail (Polach 2005, Table 2)."""
+
+
+def polach_adhesion(
+    longitudinal,
+    lateral,
+    spin,
+    normal_load,
+    speed,
+    a,
+    b,
+    conditions: PolachAdhesion = POLACH_DRY,
+    shear_modulus=8.1e10,
+    poisson_ratio=0.3,
+) -> CreepForces:
+    """Polach's (2005) creep forces near the adhesion limit: friction falling with slip speed.
+
+    As :func:`polach`, with ``μ = conditions.friction(w)`` at the slip speed
+    ``w = V √(ξ² + η²)`` and the reduction factors of ``conditions``. Beyond the
+    adhesion peak the force falls as the creepage grows, the behaviour that wheel-slip
+    control of a locomotive has to live with.
+
+    Parameters
+    ----------
+    longitudinal, lateral, spin : float or array_like
+        ξ, η, φ (1/m).
+    normal_load : float
+        Q (N), > 0.
+    speed : float
+        Rolling speed V (m/s), > 0.
+    a, b : float
+        Semi-axes of the contact ellipse (m).
+    conditions : PolachAdhesion
+        :data:`POLACH_DRY` (default) or :data:`POLACH_WET`, or your own.
+    shear_modulus, poisson_ratio : float
+
+    Returns
+    -------
+    CreepForces
+    """
+    if not isinstance(conditions, PolachAdhesion):
+        raise TypeError(f"conditions must be a PolachAdhesion, got {type(conditions).__name__}")
+    xi = _checks.array("longitudinal", longitudinal)
+    eta = _checks.array("lateral", lateral)
+    phi = _checks.array("spin", spin)
+    q = _checks.positive("normal_load", normal_load)
+    v = _checks.positive("speed", speed)
+    a = _checks.positive("a", a)
+    b = _checks.positive("b", b)
+    g_mod = _checks.positive("shear_modulus", shear_modulus)
+    c = kalker_coefficients(a / b, poisson_ratio)
+    mu = np.asarray(conditions.friction(v * np.hypot(xi, eta)))
+    return _polach(xi, eta, phi, q, mu, a, b, g_mod, c, conditions.k_a, conditions.k_s)
 
 
 @dataclass(frozen=True)

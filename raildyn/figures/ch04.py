@@ -71,6 +71,35 @@ def creep_laws_figure() -> Figure:
 
 
 @register(
+    "fig4.adhesion",
+    "Adhesion coefficient −F_x/N against longitudinal creepage by Polach's (2005) method with the "
+    "parameters fitted to dry and to wet rail (friction falling with slip speed), at 10 and 30 m/s; "
+    "a = 6 mm, b = 4 mm, N = 100 kN.",
+    chapter=4,
+)
+def adhesion_figure() -> Figure:
+    a, b, load = 6e-3, 4e-3, 100e3
+    xi = np.geomspace(1e-4, 0.3, 300)
+    fig = new_figure(figsize=(6.0, 4.0))
+    ax = fig.subplots()
+    for i, (name, cond) in enumerate((("dry", contact.POLACH_DRY), ("wet", contact.POLACH_WET))):
+        for speed, style in ((10.0, "-"), (30.0, "--")):
+            fx = contact.polach_adhesion(xi, 0.0, 0.0, load, speed, a, b, cond, _G, _NU).fx
+            ax.plot(
+                100 * xi,
+                -np.asarray(fx) / load,
+                style,
+                color=plots.COLORS[i],
+                label=f"{name}, {speed:.0f} m/s",
+            )
+    ax.set_xscale("log")
+    ax.set_xlabel("longitudinal creepage ξ (%)")
+    ax.set_ylabel("adhesion coefficient −F_x/N")
+    ax.legend()
+    return fig
+
+
+@register(
     "fig4.fastsim",
     "FASTSIM traction over the contact ellipse (a = 6 mm, b = 4 mm, N = 100 kN, μ = 0.3) for ξ = 1 ‰, "
     "η = 0.5 ‰: adhesion at the leading edge (right), slip at the trailing edge.",
