@@ -387,23 +387,28 @@ def polach(
     CreepForces
         ``mz`` is None (the method gives no spin moment).
     """
+    inputs = _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio)
+    mu = _friction(friction)
+    k_a = _checks.scalar("k_a", k_a, low=0.0, high=1.0, low_open=True)
+    k_s = _checks.scalar("k_s", k_s, low=0.0, high=1.0, low_open=True)
+    return _polach(*inputs, mu, k_a, k_s)
+
+
+def _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio):
+    """Checked (ξ, η, φ broadcast together, Q, a, b, G, Kalker's C) for Polach's method."""
     xi = _checks.array("longitudinal", longitudinal)
     eta = _checks.array("lateral", lateral)
     phi = _checks.array("spin", spin)
     q = _checks.positive("normal_load", normal_load)
-    mu = _friction(friction)
     a = _checks.positive("a", a)
     b = _checks.positive("b", b)
     g_mod = _checks.positive("shear_modulus", shear_modulus)
-    k_a = _checks.scalar("k_a", k_a, low=0.0, high=1.0, low_open=True)
-    k_s = _checks.scalar("k_s", k_s, low=0.0, high=1.0, low_open=True)
     c = kalker_coefficients(a / b, poisson_ratio)
-    return _polach(xi, eta, phi, q, mu, a, b, g_mod, c, k_a, k_s)
+    return (*np.broadcast_arrays(xi, eta, phi), q, a, b, g_mod, c)
 
 
-def _polach(xi, eta, phi, q, mu, a, b, g_mod, c, k_a, k_s) -> CreepForces:
+def _polach(xi, eta, phi, q, a, b, g_mod, c, mu, k_a, k_s) -> CreepForces:
     """Polach's method on checked input; ``mu`` may be an array broadcasting with the creepages."""
-    xi, eta, phi = np.broadcast_arrays(xi, eta, phi)
     eta_c = np.where(np.abs(eta + phi * a) > np.abs(eta), eta + phi * a, eta)
     s_c = np.hypot(xi, eta_c)
     s = np.hypot(xi, eta)
@@ -515,17 +520,11 @@ def polach_adhesion(
     """
     if not isinstance(conditions, PolachAdhesion):
         raise TypeError(f"conditions must be a PolachAdhesion, got {type(conditions).__name__}")
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
-    phi = _checks.array("spin", spin)
-    q = _checks.positive("normal_load", normal_load)
+    inputs = _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio)
     v = _checks.positive("speed", speed)
-    a = _checks.positive("a", a)
-    b = _checks.positive("b", b)
-    g_mod = _checks.positive("shear_modulus", shear_modulus)
-    c = kalker_coefficients(a / b, poisson_ratio)
+    xi, eta = inputs[:2]
     mu = np.asarray(conditions.friction(v * np.hypot(xi, eta)))
-    return _polach(xi, eta, phi, q, mu, a, b, g_mod, c, conditions.k_a, conditions.k_s)
+    return _polach(*inputs, mu, conditions.k_a, conditions.k_s)
 
 
 @dataclass(frozen=True)
