@@ -4,7 +4,7 @@ Every public name is importable from ``raildyn.vehicles``.
 """
 
 from raildyn.vehicles.freight import FreightCar, RockAndRoll, rock_and_roll, wedge_energy_per_cycle
-from raildyn.vehicles.lateral import MANCHESTER_CAR, Bogie, Car
+from raildyn.vehicles.lateral import COOPERRIDER_CAR, MANCHESTER_CAR, Bogie, Car, cooperrider_car
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
 from raildyn.vehicles.response import (
     LinearVehicle,
@@ -20,6 +20,7 @@ from raildyn.vehicles.response import (
 from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, VerticalCar
 
 __all__ = [
+    "COOPERRIDER_CAR",
     "MANCHESTER_CAR",
     "Bogie",
     "Car",
@@ -32,6 +33,7 @@ __all__ = [
     "RockAndRoll",
     "TimeResponse",
     "VerticalCar",
+    "cooperrider_car",
     "lateral_vehicle",
     "periodic_profile",
     "response_spectrum",

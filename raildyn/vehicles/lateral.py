@@ -10,7 +10,9 @@ Both give a :class:`~raildyn.wheelset.LateralSystem` (``linear_system()``) for
 :mod:`raildyn.stability`, and a nonlinear counterpart (``nonlinear(speed)``).
 The default parameters are those of the Manchester benchmark vehicle
 (Iwnicki 1998), cited beside each value; the wheel–rail contact is the cone of
-:class:`~raildyn.wheelset.Wheelset`. The bogie frame's roll and the heights of
+:class:`~raildyn.wheelset.Wheelset`. A second parameter set,
+:data:`COOPERRIDER_CAR` (:func:`cooperrider_car`), is the car on two Cooperrider
+bogies of DTU's DYTSI code. The bogie frame's roll and the heights of
 the frame and wheelsets are left out: the car body rolls on the secondary
 springs, which stand on frames that stay upright.
 """
@@ -21,6 +23,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from raildyn import contact
 from raildyn._checks import nonnegative, positive
 from raildyn.wheelset import (
     GRAVITY,
@@ -248,3 +251,159 @@ class Car:
 
 MANCHESTER_CAR = Car()
 """The Manchester benchmark vehicle with the default conical wheel–rail contact."""
+
+
+# ---------------------------------------------------------------------------
+# The Cooperrider car of DYTSI
+#
+# Source: D. Bigoni, DYTSI (DTU Compute), https://github.com/daniele-bigoni/dytsi:
+# [xml] input/InputFiles/inputBifurcation-Cooperrider-straight.xml at commit
+#       d66cf61a3a6a7669d82542f96c8d3e2a3889e3cb (the named parameters r0, a, u1, ..., k1, ..., D6);
+# [ortho] src/Models/CooperriderOrthogonalModel.cpp at commit 303a11153a456b41fee68b4b58246c3b14685af6
+#       (masses, inertias and the geometry of every spring and damper). The input file's model tag is
+#       <CooperriderOrthogonalModel>, so DYTSI runs this class with it, not CooperriderModel.cpp.
+# Lengths in m, stiffnesses per spring in N/m, dampings per damper in N·s/m; "per side" means one of
+# the two elements, left and right, at ±y from the centre line.
+_CR_WHEELSET_MASS = 1022.0  # kg [ortho: wheelset block, mass]
+_CR_WHEELSET_YAW_INERTIA = 678.0  # kg·m² [ortho: wheelset block, Iz]
+_CR_FRAME_MASS = 2918.9  # kg [ortho: bogie frame block, mass]
+_CR_FRAME_YAW_INERTIA = 6780.0  # kg·m² [ortho: bogie frame block, Iz]
+_CR_BODY_MASS = 44388.0  # kg [ortho: car body block, mass]
+_CR_BODY_ROLL_INERTIA = 2.80e5  # kg·m² [ortho: car body block, Ix]
+# [ortho: car body block, Iz, marked there "TODO: Retreive real measures"]. The non-orthogonal
+# variant src/Models/CooperriderModel.cpp (same commit) has 5.6e6; the linear critical speed of
+# this car moves by less than 0.05 m/s between the two.
+_CR_BODY_YAW_INERTIA = 5.0e5  # kg·m²
+_CR_R0 = 0.425  # centred rolling radius [xml: r0]
+_CR_A = 0.75  # half the distance between the contact points [xml: a]
+_CR_U1 = 7.5  # half the distance between the bogie centres [xml: u1]
+_CR_U2 = 1.074  # half the wheelbase [xml: u2]
+_CR_H2 = 1.5584  # height of the body's centre of gravity above the frame centre [xml: h2; ortho: r0+h1+h2]
+_CR_S1 = 0.62  # lateral position of the primary longitudinal (and vertical) springs [xml: s1]
+_CR_S2 = 0.6584  # height of the secondary lateral springs above the frame centre [xml: s2]
+_CR_S3 = 0.68  # lateral position of the secondary vertical springs and dampers [xml: s3]
+# Lateral position of the secondary yaw springs and dampers: a + l1 + l2 + l3/2 = 0.75 + 0.3 + 0.3
+# + 0.15 = 1.5 m [xml: a, l1, l2, l3; ortho: "Left yaw spring and damper"]. They are longitudinal
+# elements, so their arm about the bogie pivot is this lateral offset; s4 = 0.759 m [xml] is only
+# how far ahead of the pivot they are fixed to the body and plays no part in the yaw moment.
+_CR_YAW_ARM = 0.75 + 0.30 + 0.30 + 0.30 / 2
+_CR_K1 = 1823000.0  # primary lateral spring, per side [xml: k1]
+_CR_K2 = 3646000.0  # primary longitudinal spring, per side, at y = ±s1 [xml: k2]
+_CR_K4 = 182300.0  # secondary lateral spring, per side [xml: k4]
+_CR_K5 = 333300.0  # secondary vertical spring, per side, at y = ±s3 [xml: k5]
+_CR_K6 = 903350.0  # secondary longitudinal (yaw) spring, per side, at y = ±1.5 m [xml: k6]
+_CR_D1 = 20000.0  # secondary vertical damper, per side, at y = ±s3 [xml: D1]
+_CR_D2 = 29200.0  # secondary lateral damper, per side [xml: D2]
+_CR_D3 = 0.0  # primary longitudinal damper [xml: D3]
+_CR_D5 = 0.0  # primary lateral damper [xml: D5]
+_CR_D6 = 166669.0  # secondary longitudinal (yaw) damper, per side, at y = ±1.5 m [xml: D6]
+# Steel: E = 210 GPa, ν = 0.27 [ortho: wheelset block]. The shear modulus is E/(2(1 + ν)) =
+# 82.7 GPa; DYTSI's code writes E/(2(1 − ν)) = 144 GPa there, a sign slip that we do not copy.
+_CR_YOUNG = 2.1e11
+_CR_POISSON = 0.27
+# Stand-in for the tabulated 1:40 wheel/rail geometry (RSGEO/1o40/RSGEO.dat [xml]): a cone with
+# the 1:40 slope. The table's own rolling radius has a slope of about 0.030 at the centre.
+_CR_CONICITY = 1.0 / 40.0
+
+
+def cooperrider_car() -> Car:
+    """The car on two Cooperrider bogies of DTU's DYTSI code, as a :class:`Car`.
+
+    DYTSI (D. Bigoni, DTU Compute, 2011–2014) models a car body on two bogies
+    of Cooperrider's design (Cooperrider 1972), as used by True and
+    co-workers. The values come from the input file
+    ``input/InputFiles/inputBifurcation-Cooperrider-straight.xml`` (commit
+    d66cf61) and from the model class that file selects,
+    ``src/Models/CooperriderOrthogonalModel.cpp`` (commit 303a111), of
+    https://github.com/daniele-bigoni/dytsi; each one is cited beside its
+    constant in this module.
+
+    * Wheelset: 1022 kg, 678 kg·m²; r₀ = 0.425 m, a = 0.75 m. Primary: lateral
+      2 k₁ = 2 × 1823 kN/m; yaw 2 k₂ s₁² with k₂ = 3646 kN/m per side at
+      s₁ = 0.62 m; no dampers (D₃ = D₅ = 0).
+    * Frame: 2918.9 kg, 6780 kg·m²; half wheelbase 1.074 m. Secondary, per
+      bogie: lateral 2 k₄ = 2 × 182.3 kN/m and 2 D₂ = 2 × 29.2 kN·s/m; yaw
+      2 k₆ y² and 2 D₆ y² from longitudinal springs (903.35 kN/m) and dampers
+      (166.669 kN·s/m) at y = ±1.5 m.
+    * Body: 44388 kg; roll 2.80 × 10⁵ kg·m², yaw 5.0 × 10⁵ kg·m² (marked
+      provisional in DYTSI); bogie centres 2 × 7.5 m apart. Roll per bogie:
+      2 k₅ s₃² and 2 D₁ s₃², vertical springs of 333.3 kN/m and dampers of
+      20 kN·s/m per side at s₃ = 0.68 m. The body's centre of gravity is
+      h₂ − s₂ = 1.5584 − 0.6584 = 0.9 m above the secondary lateral springs.
+    * Contact: a cone of conicity 1/40 stands in for DYTSI's tabulated 1:40
+      wheel/rail geometry, on knife-edge rails (contact angle and ε equal to
+      the conicity), as for the Manchester default. Axle load: the whole
+      vehicle's weight over four axles. The contact patch is Hertz's under
+      half the axle load with curvature 1/r₀ along and across the track (a
+      circle, as the Manchester default assumes), and Kalker's coefficients
+      come from :func:`raildyn.contact.creep_coefficients` with
+      G = E/(2(1 + ν)) = 82.7 GPa (E = 210 GPa, ν = 0.27).
+
+    Left out, having no counterpart in the 15 coordinates of :class:`Car`:
+
+    * the vertical, roll and pitch motion of wheelsets, frames and body, with
+      the primary vertical springs (k₃ = 3646 kN/m per side) and dampers
+      (D₄ = 0), and the heights h₁, v₁–v₄ and x₁ of the attachment points;
+    * the frames' roll, so the secondary lateral springs, s₂ = 0.6584 m above
+      the frame centre, act on frames that stay upright;
+    * the weight's roll moment: :class:`Car` takes it at the secondary lateral
+      springs (0.9 m below the centre of gravity), DYTSI through the vertical
+      springs, 0.3096 m below it; the difference moves the linear critical
+      speed by less than 0.01 m/s;
+    * the tabulated profile itself (rolling radius, contact angle, contact
+      patch at every lateral displacement), including the flange, and the
+      friction coefficient 0.15, which only a nonlinear contact would use
+      (``WheelRailContact(friction=0.15)``);
+    * from the non-orthogonal variant ``src/Models/CooperriderModel.cpp``
+      (same commit), which this input file does not select: the hard-coded
+      shear springs of 150 kN/m under the vertical springs, the inclined yaw
+      dampers and the body yaw inertia of 5.6 × 10⁶ kg·m².
+
+    Returns
+    -------
+    Car
+    """
+    wheel_load = 0.5 * (_CR_BODY_MASS + 2 * _CR_FRAME_MASS + 4 * _CR_WHEELSET_MASS) * GRAVITY / 4.0
+    shear = _CR_YOUNG / (2.0 * (1.0 + _CR_POISSON))
+    patch = contact.hertz_contact(wheel_load, _CR_R0, np.inf, _CR_R0, _CR_YOUNG, _CR_POISSON)
+    f = contact.creep_coefficients(patch.a, patch.b, shear, _CR_POISSON)
+    wheelset = Wheelset(
+        mass=_CR_WHEELSET_MASS,
+        yaw_inertia=_CR_WHEELSET_YAW_INERTIA,
+        rolling_radius=_CR_R0,
+        half_gauge=_CR_A,
+        conicity=_CR_CONICITY,
+        axle_load=2.0 * wheel_load,
+        f11=float(f.f11),
+        f22=float(f.f22),
+        f23=float(f.f23),
+        f33=float(f.f33),
+        lateral_stiffness=2 * _CR_K1,
+        yaw_stiffness=2 * _CR_K2 * _CR_S1**2,
+        lateral_damping=2 * _CR_D5,
+        yaw_damping=2 * _CR_D3 * _CR_S1**2,
+    )
+    bogie = Bogie(
+        wheelset=wheelset,
+        frame_mass=_CR_FRAME_MASS,
+        frame_yaw_inertia=_CR_FRAME_YAW_INERTIA,
+        semi_wheelbase=_CR_U2,
+        secondary_lateral_stiffness=2 * _CR_K4,
+        secondary_lateral_damping=2 * _CR_D2,
+        secondary_yaw_stiffness=2 * _CR_K6 * _CR_YAW_ARM**2,
+        secondary_yaw_damping=2 * _CR_D6 * _CR_YAW_ARM**2,
+    )
+    return Car(
+        bogie=bogie,
+        body_mass=_CR_BODY_MASS,
+        body_yaw_inertia=_CR_BODY_YAW_INERTIA,
+        body_roll_inertia=_CR_BODY_ROLL_INERTIA,
+        semi_bogie_spacing=_CR_U1,
+        body_height=_CR_H2 - _CR_S2,
+        roll_stiffness=2 * _CR_K5 * _CR_S3**2,
+        roll_damping=2 * _CR_D1 * _CR_S3**2,
+    )
+
+
+COOPERRIDER_CAR = cooperrider_car()
+"""The car on two Cooperrider bogies of DTU's DYTSI code (:func:`cooperrider_car`), on a 1:40 cone."""
