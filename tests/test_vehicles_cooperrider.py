@@ -106,17 +106,25 @@ def test_cooperrider_critical_speed_matches_bisection_on_control_poles():
     assert cs.speed == pytest.approx(reference, abs=0.1)
 
 
-@pytest.mark.parametrize("car", [MANCHESTER_CAR, COOPERRIDER_CAR], ids=["manchester", "cooperrider"])
-def test_hunting_frequency_lies_between_rigid_bogie_and_free_wheelset(car):
-    # Wickens (2003, ch. 3): a bogie hunts between two kinematic limits, Klingel's free wheelset
-    # (yaw springs → 0) and the rigid bogie (→ ∞), whose frequencies are V over each wavelength.
+def _hunting_and_kinematic_limits(car):
+    """Hunting frequency at the critical speed and the rigid-bogie and free-wheelset frequencies there, Hz.
+
+    Wickens (2003, ch. 3): a bogie hunts between two kinematic limits, Klingel's free wheelset
+    (yaw springs → 0) and the rigid bogie (→ ∞), whose frequencies are V over each wavelength.
+    """
     ws = car.wheelset
     cs = stability.critical_speed(car, (1.0, 400.0))
     free = cs.speed / kinematic_wavelength(ws.rolling_radius, ws.half_gauge, ws.conicity)
     rigid = cs.speed / rigid_bogie_wavelength(
         ws.rolling_radius, ws.half_gauge, ws.conicity, car.bogie.semi_wheelbase
     )
-    assert rigid < cs.frequency < free
+    return cs.frequency, rigid, free
+
+
+@pytest.mark.parametrize("car", [MANCHESTER_CAR, COOPERRIDER_CAR], ids=["manchester", "cooperrider"])
+def test_hunting_frequency_lies_between_rigid_bogie_and_free_wheelset(car):
+    hunting, rigid, free = _hunting_and_kinematic_limits(car)
+    assert rigid < hunting < free
 
 
 def test_softer_primary_yaw_puts_cooperrider_hunting_nearer_the_free_wheelset():
@@ -124,13 +132,8 @@ def test_softer_primary_yaw_puts_cooperrider_hunting_nearer_the_free_wheelset():
     # (62.8 MN·m/rad), so its wheelsets yaw more nearly as free ones: its hunting frequency sits
     # further from the rigid-bogie limit, in the fraction of the way between the two limits.
     def position(car):
-        ws = car.wheelset
-        cs = stability.critical_speed(car, (1.0, 400.0))
-        free = cs.speed / kinematic_wavelength(ws.rolling_radius, ws.half_gauge, ws.conicity)
-        rigid = cs.speed / rigid_bogie_wavelength(
-            ws.rolling_radius, ws.half_gauge, ws.conicity, car.bogie.semi_wheelbase
-        )
-        return (cs.frequency - rigid) / (free - rigid)
+        hunting, rigid, free = _hunting_and_kinematic_limits(car)
+        return (hunting - rigid) / (free - rigid)
 
     assert COOPERRIDER_CAR.wheelset.yaw_stiffness < MANCHESTER_CAR.wheelset.yaw_stiffness / 20
     assert position(COOPERRIDER_CAR) > position(MANCHESTER_CAR) + 0.3
