@@ -1,16 +1,16 @@
 """The longitudinal right-hand side of one train state, compiled with numba.
 
-``TrainModel.rhs`` (numpy) is the readable reference and serves batches of
+``TrainModel.rhs_numpy`` is the readable reference and serves batches of
 states; this module computes the same thing for a single state in one compiled
 loop over the vehicles. A long train is a few hundred small operations per
 evaluation, where numpy's per-call cost outweighs the arithmetic: the compiled
-loop is about ten times faster, which is what makes long braking runs
-interactive. ``tests/test_train.py`` holds the two equal to round-off.
+loop takes about 4 µs for 152 vehicles against 20 µs for numpy, which makes long
+braking runs interactive. ``tests/test_train.py`` holds the two equal to round-off.
 
-Everything the loop needs is packed into two float arrays (so a call unboxes few
-arguments): ``table`` has one column per vehicle and the rows named by the
+Everything the loop needs is packed into three float arrays (so a call unboxes
+few arguments): ``table`` has one column per vehicle and the rows named by the
 ``ROW_*`` constants; ``scalars`` holds the coupler law, the brake, the driver's
-settings and flags (``S_*``). ``route`` is ``[positions, grade, curvature]``.
+settings and flags (``S_*``); ``route`` is ``[positions, grade, curvature]``.
 """
 
 from __future__ import annotations
