@@ -1,8 +1,10 @@
 """Tests for the freight car on three-piece trucks (raildyn.vehicles.freight).
 
 Tiers: closed forms (static deflection, bounce/pitch/roll frequencies, 4 F X per
-cycle and its smoothing deficit), symmetry (joints in phase cannot roll the car),
-the nonlinear rocking peak at the predicted speed, and bad input.
+cycle and its smoothing deficit, the wedge's force balance), symmetry (joints in
+phase cannot roll the car), the nonlinear rocking peak at the predicted speed for
+both parameter sets, the GDU ore car value by value against its source with two
+consistency checks of that source, and bad input.
 """
 
 import numpy as np
@@ -11,7 +13,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn.vehicles import response as resp
-from raildyn.vehicles.freight import FreightCar, rock_and_roll, wedge_energy_per_cycle
+from raildyn.vehicles.freight import (
+    GDU_ORE_CAR,
+    FreightCar,
+    rock_and_roll,
+    wedge_energy_per_cycle,
+    wedge_friction_force,
+)
 from raildyn.vibration import modal_analysis
 
 CAR = FreightCar()
@@ -69,14 +77,91 @@ def test_in_phase_joints_do_not_roll_the_car():
     assert np.abs(resp.track_frf(v, w, 10.0, "body φ", component="cross_level")).max() > 0
 
 
-def test_rocking_peaks_near_the_roll_resonance():
-    Vr = CAR.roll_resonance_speed()
+def test_truck_spacing_filters_the_roll_input():
+    # Cross-level of wavelength L reaches the two trucks 2s apart; roll does not couple to bounce or
+    # pitch, so only the phase between the trucks depends on s: |H(s)| ∝ |cos(2πs/L)| at that wave.
+    L, V = 11.9, 12.0
+    w = np.array([2 * np.pi * V / L])
+    base = GDU_ORE_CAR.with_(wedge_friction=0.0)
+
+    def roll_gain(s):
+        v = base.with_(semi_truck_spacing=s).linear(equivalent_damping=2e4)
+        return abs(resp.track_frf(v, w, V, "body φ", component="cross_level")[0])
+
+    s = GDU_ORE_CAR.semi_truck_spacing
+    assert roll_gain(s) / roll_gain(L / 2) == pytest.approx(abs(np.cos(2 * np.pi * s / L)), rel=1e-9)
+    # the GDU car's truck centres (5.41 m) lie near half a rail length: 14 % of the input survives
+    assert abs(np.cos(2 * np.pi * s / L)) == pytest.approx(0.142, abs=1e-3)
+    assert roll_gain(L / 4) < 1e-12 * roll_gain(L / 2)
+
+
+@pytest.mark.parametrize("car", [CAR, GDU_ORE_CAR], ids=["hopper", "gdu"])
+def test_rocking_peaks_near_the_roll_resonance(car):
+    Vr = car.roll_resonance_speed()
     speeds = Vr * np.array([0.6, 0.8, 1.0, 1.2, 1.4])
-    r = rock_and_roll(CAR, speeds, cycles=16)
+    r = rock_and_roll(car, speeds, cycles=16)
     # the friction shifts and blunts the peak but, on a 20 % speed grid, it stays at the linear resonance
     assert int(np.argmax(r.roll_amplitude)) == 2
     assert r.roll_amplitude[2] > 2 * max(r.roll_amplitude[0], r.roll_amplitude[-1])
     assert r.resonance_speed == pytest.approx(Vr)
+
+
+def test_gdu_ore_car_values_match_the_source():
+    """leo-bart/doutorado-repo @ 247ba5c: input.in, src/system.cpp, src/ridecontroltruck.cpp."""
+    c = GDU_ORE_CAR
+    assert c.body_mass == 116200.0  # BOX_MASS
+    assert (c.body_roll_inertia, c.body_pitch_inertia) == (130000.0, 640000.0)  # BOX_Izz, BOX_Ixx
+    assert 2 * c.semi_truck_spacing == pytest.approx(5.410, abs=1e-12)  # CAR_WHEEL_BASE
+    assert 2 * c.semi_truck_wheelbase == pytest.approx(1.828, abs=1e-12)  # TRUCK_WHEEL_BASE
+    assert 2 * c.semi_spring_spacing == pytest.approx(2.278, abs=1e-12)  # sideFrameLateralDistance
+    assert c.nest_stiffness == 9 * 527833.0  # nine coils of bolsterSpringStiffness
+    # centre of gravity 2.152 m above the rail, spring tops at seat 0.238 + loaded length 0.267
+    assert c.cg_height == pytest.approx(2.152 - 0.238 - 0.267, abs=1e-12)
+    # two wedges of 344 kN/m springs, 0.1857 -> 0.1381 m, on a 37.5° slope with μ = 0.10
+    down, up = wedge_friction_force(344000.0 * (0.1857 - 0.1381), np.radians(37.5), 0.10)
+    assert c.wedge_friction == pytest.approx(0.5 * (down + up), rel=1e-12)
+    assert 4.3e3 < c.wedge_friction < 4.4e3
+
+
+def test_gdu_springs_carry_the_body_at_their_loaded_length():
+    # The source's free (0.327 m) and loaded (0.267 m) coil lengths, given to the millimetre, differ
+    # by the static deflection under this body: 60 mm against m g / 4k = 59.99 mm (1 mm in 60 = 1.7 %).
+    q = GDU_ORE_CAR.linear().static_deflection()
+    assert -q[0] == pytest.approx(0.327 - 0.267, rel=0.017)
+
+
+def test_gdu_inertia_reading_agrees_with_the_authors_labelled_set():
+    c = GDU_ORE_CAR
+    width, height = 3.113, 1.908  # the body box of src/system.cpp
+    # a uniform box of that size has the roll inertia we read off the source, within 1 %
+    assert c.body_roll_inertia == pytest.approx(c.body_mass * (width**2 + height**2) / 12, rel=0.01)
+    # the same author's labelled set for this car (leo-bart/mbsim-wagons @ 0360902, input2.in: mass
+    # 138 547.5 kg, BOX_Iroll 179 997, BOX_Ipitch 942 567.5 kg·m²) has radii of gyration within 12 %
+    k_roll, k_pitch = np.sqrt(179997.0 / 138547.5), np.sqrt(942567.5 / 138547.5)
+    assert np.sqrt(c.body_roll_inertia / c.body_mass) == pytest.approx(k_roll, rel=0.12)
+    assert np.sqrt(c.body_pitch_inertia / c.body_mass) == pytest.approx(k_pitch, rel=0.12)
+    # while the literal reading of the axis labels puts the roll radius twice too far out
+    assert np.sqrt(c.body_pitch_inertia / c.body_mass) > 1.8 * k_roll
+
+
+@settings(max_examples=50, deadline=None)
+@given(
+    P=st.floats(1e3, 5e4),
+    alpha=st.floats(np.radians(20.0), np.radians(70.0)),
+    mu=st.floats(0.0, 0.3),
+    n=st.integers(1, 4),
+)
+def test_property_wedge_friction_balances_the_wedge(P, alpha, mu, n):
+    if np.tan(alpha) <= mu + 0.05:
+        return
+    down, up = wedge_friction_force(P, alpha, mu, wedges=n)
+    for sign, got in ((1.0, down), (-1.0, up)):
+        # unknowns: column normal N, slope normal N_b; horizontal N = N_b cos α; vertical
+        # P + sign·μN = N_b sin α (column friction with the spring when the bolster goes down)
+        A = np.array([[1.0, -np.cos(alpha)], [sign * mu, -np.sin(alpha)]])
+        N, _ = np.linalg.solve(A, [0.0, -P])
+        assert got == pytest.approx(n * mu * N, rel=1e-10, abs=1e-9)
+    assert down >= up
 
 
 def test_bad_input():
@@ -92,3 +177,11 @@ def test_bad_input():
         wedge_energy_per_cycle(1.0, 0.0, 1.0)
     with pytest.raises(ValueError, match="equivalent_damping"):
         CAR.linear(-1.0)
+    with pytest.raises(ValueError, match="spring_force"):
+        wedge_friction_force(-1.0, 0.6, 0.1)
+    with pytest.raises(ValueError, match="slope_angle"):
+        wedge_friction_force(1e4, np.pi / 2, 0.1)
+    with pytest.raises(ValueError, match="locks the wedge"):
+        wedge_friction_force(1e4, np.radians(5.0), 0.1)
+    with pytest.raises(ValueError, match="wedges"):
+        wedge_friction_force(1e4, 0.6, 0.1, wedges=0)

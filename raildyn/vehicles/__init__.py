@@ -3,7 +3,15 @@
 Every public name is importable from ``raildyn.vehicles``.
 """
 
-from raildyn.vehicles.freight import FreightCar, RockAndRoll, rock_and_roll, wedge_energy_per_cycle
+from raildyn.vehicles.freight import (
+    GDU_ORE_CAR,
+    FreightCar,
+    RockAndRoll,
+    gdu_ore_car,
+    rock_and_roll,
+    wedge_energy_per_cycle,
+    wedge_friction_force,
+)
 from raildyn.vehicles.lateral import COOPERRIDER_CAR, MANCHESTER_CAR, Bogie, Car, cooperrider_car
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
 from raildyn.vehicles.response import (
@@ -26,6 +34,7 @@ __all__ = [
     "Car",
     "DEFAULT_LOCOMOTIVE",
     "FreightCar",
+    "GDU_ORE_CAR",
     "LinearVehicle",
     "Locomotive",
     "MANCHESTER_VERTICAL",
@@ -34,6 +43,7 @@ __all__ = [
     "TimeResponse",
     "VerticalCar",
     "cooperrider_car",
+    "gdu_ore_car",
     "lateral_vehicle",
     "periodic_profile",
     "response_spectrum",
@@ -42,4 +52,5 @@ __all__ = [
     "time_response",
     "track_frf",
     "wedge_energy_per_cycle",
+    "wedge_friction_force",
 ]

@@ -17,10 +17,15 @@ Eight inputs: the left and right rail under each of the four axles.
 * :func:`wedge_energy_per_cycle` — energy a wedge dissipates over one cycle of
   imposed harmonic motion (4 F X for the ideal law).
 
-Default parameters: a loaded 100-ton hopper car (the AAR 286 000 lb gross rail
-load, 129.7 t) on 11.9 m rails; the body values are derived in the docstring of
-:class:`FreightCar` from that load and a nest deflection, and are representative
-rather than taken from one published table.
+Two parameter sets:
+
+* ``FreightCar()``: a loaded 100-ton hopper car (the AAR 286 000 lb gross rail
+  load, 129.7 t); its body values are derived in the docstring of
+  :class:`FreightCar` from that load and a nest deflection, representative
+  rather than taken from one published table;
+* :data:`GDU_ORE_CAR` (:func:`gdu_ore_car`): a loaded iron-ore gondola on
+  AmstedMaxion Ride Control trucks, every value taken from the public model of
+  L. Baruffaldi's doctoral thesis (UNICAMP), cited beside its constant.
 """
 
 from __future__ import annotations
@@ -256,3 +261,114 @@ def wedge_energy_per_cycle(
     v = X * w * np.cos(w * t)
     force = coulomb_friction(v, F, velocity_scale=velocity_scale)
     return float(np.sum(force * v) * T / n)
+
+
+def wedge_friction_force(
+    spring_force, slope_angle, friction_coefficient, *, wedges: int = 2
+) -> tuple[float, float]:
+    """Column friction (N) of the spring-loaded wedges of one nest: (bolster moving down, moving up).
+
+    A constant-damping wedge sits between the vertical column face of the side
+    frame and a slope of the bolster inclined ``slope_angle`` (rad) from the
+    vertical; its spring presses it along the vertical with ``spring_force`` P.
+    The wedge moves with the bolster and rubs on the column with μ times the
+    column's normal force N. Its balance, with the slope taken as frictionless,
+    reads N = N_b cos α and P ± μN = N_b sin α, so that
+
+        N = P / (tan α ∓ μ),
+
+    the upper sign when the bolster moves down (friction on the wedge acts up,
+    with the spring), the lower when it moves up. The two friction forces μN of
+    ``wedges`` wedges are returned. A slope with tan α <= μ locks the wedge.
+    """
+    P = _checks.nonnegative("spring_force", spring_force)
+    alpha = _checks.scalar("slope_angle", slope_angle, low=0.0, high=np.pi / 2, low_open=True, high_open=True)
+    mu = _checks.nonnegative("friction_coefficient", friction_coefficient)
+    n = _checks.integer("wedges", wedges, low=1)
+    if np.tan(alpha) <= mu:
+        raise ValueError(
+            f"slope_angle {slope_angle!r} rad locks the wedge: tan α = {np.tan(alpha):.4g} must exceed "
+            f"friction_coefficient {mu!r}"
+        )
+    down = n * mu * P / (np.tan(alpha) - mu)
+    up = n * mu * P / (np.tan(alpha) + mu)
+    return float(down), float(up)
+
+
+# The loaded Vale GDU iron-ore gondola (1.6 m gauge) on AmstedMaxion Ride Control trucks, from the
+# MBSim model of L. Baruffaldi's doctoral thesis (UNICAMP): https://github.com/leo-bart/doutorado-repo,
+# commit 247ba5c, files input.in ("SYSTEM_NAME=GDU_Vale_Freq_Bounce") [in], src/system.cpp [sys] and
+# src/ridecontroltruck.cpp [truck]; the truck is "based on AmstedMaxion SS Ride Control 7 in x 12 in,
+# Part no. 3013-40754-00-1" [include/ridecontroltruck.h, commit 94aaff0].
+_GDU_BODY_MASS = 116200.0  # [in: BOX_MASS]
+# [in] gives BOX_Ixx = BOX_Iyy = 640 000 and BOX_Izz = 130 000 kg·m² in a frame with x along the car,
+# y up and z across [sys, truck], and its planar model turns the body about z. Read literally, that
+# is a pitch inertia of 1.3e5 and a roll inertia of 6.4e5 kg·m²: radii of gyration of 1.06 m along
+# an 8.75 m body and 2.35 m across a 3.11 m one. A uniform box of the body's size [sys: setLength
+# 8.747, setWidth 3.113, setHeight 1.908] has a roll inertia m(w² + h²)/12 = 1.29e5 kg·m², so we take
+# 130 000 as the roll and 640 000 as the pitch inertia (tests/test_freight.py checks this reading
+# against the same author's explicitly labelled set in leo-bart/mbsim-wagons, input2.in).
+_GDU_ROLL_INERTIA = 130000.0
+_GDU_PITCH_INERTIA = 640000.0
+_GDU_TRUCK_CENTRES = 5.410  # [in: CAR_WHEEL_BASE]
+_GDU_WHEELBASE = 1.828  # [in: TRUCK_WHEEL_BASE]
+_GDU_CG_ABOVE_RAIL = 2.152  # height of the body's reference frame above the rail [sys]
+_GDU_SPRING_RATE = 527833.0  # one coil of a nest, N/m [truck: bolsterSpringStiffness]
+_GDU_SPRINGS_PER_NEST = 9  # a 3 × 3 grid at 0.143 m pitch [truck: LBS11 … LBS91]
+_GDU_NEST_SPACING = 2.278  # lateral distance between the side frames, m [truck: sideFrameLateralDistance]
+_GDU_SPRING_SEAT = 0.238  # spring seat above the rail, m [truck: sideFrameSpringBedBottomHeight]
+_GDU_SPRING_FREE = 0.327  # m [truck: bolsterSpringFreeLength]
+_GDU_SPRING_DESIGN = 0.267  # loaded, m [truck: bolsterSpringDesignLength]
+_GDU_WEDGE_SPRING = 344000.0  # N/m [truck: wedgeSpringStiffness]
+_GDU_WEDGE_FREE = 0.1857  # m [truck: wedgeSpringFreeLength]
+_GDU_WEDGE_DESIGN = 0.1381  # m [truck: wedgeSpringDesignLength]
+_GDU_WEDGE_ANGLE = np.radians(37.5)  # bolster slope from the vertical; column face vertical [truck]
+_GDU_WEDGE_FRICTION = 0.10  # [in: FRICTION_COEFF]
+_GDU_WEDGES_PER_NEST = 2  # one ahead of and one behind the bolster on each side frame [truck: WRL, WFL]
+
+
+def gdu_ore_car() -> FreightCar:
+    """A loaded iron-ore gondola on Ride Control trucks, from a public thesis model, as a :class:`FreightCar`.
+
+    The Vale GDU ore car (1.6 m gauge) on AmstedMaxion Ride Control
+    (constant-damping) trucks, as L. Baruffaldi modelled it in MBSim for his
+    doctoral thesis at UNICAMP (https://github.com/leo-bart/doutorado-repo,
+    commit 247ba5c; each value is cited beside its constant in this module).
+
+    * Body with lading 116.2 t; roll 1.3 × 10⁵ and pitch 6.4 × 10⁵ kg·m² (the
+      source's axis labels are read as explained beside the constants); centre
+      of gravity 2.152 m above the rail.
+    * Truck centres 5.410 m apart, wheelbase 1.828 m.
+    * Each nest: nine coils of 527.8 kN/m (4.75 MN/m), the nests 2.278 m apart;
+      the springs stand on a seat 0.238 m above the rail and are 0.267 m long
+      under load, so the spring plane is 0.505 m above the rail and the centre
+      of gravity 1.647 m above it.
+    * Two wedges per nest on a 37.5° slope, spring 344 kN/m compressed from
+      0.1857 to 0.1381 m (16.4 kN), μ = 0.10: by :func:`wedge_friction_force`,
+      4.91 kN per nest with the bolster going down and 3.78 kN going up;
+      raildyn's symmetric law takes their mean, 4.34 kN.
+
+    Left out: the bolsters and wedges (0.4 t a truck) that ride on the springs
+    with the body, and the 1 % of roll stiffness the width of each 3 × 3 nest
+    adds about its own centre.
+    """
+    nest = _GDU_SPRINGS_PER_NEST * _GDU_SPRING_RATE
+    preload = _GDU_WEDGE_SPRING * (_GDU_WEDGE_FREE - _GDU_WEDGE_DESIGN)
+    down, up = wedge_friction_force(
+        preload, _GDU_WEDGE_ANGLE, _GDU_WEDGE_FRICTION, wedges=_GDU_WEDGES_PER_NEST
+    )
+    return FreightCar(
+        body_mass=_GDU_BODY_MASS,
+        body_pitch_inertia=_GDU_PITCH_INERTIA,
+        body_roll_inertia=_GDU_ROLL_INERTIA,
+        cg_height=_GDU_CG_ABOVE_RAIL - (_GDU_SPRING_SEAT + _GDU_SPRING_DESIGN),
+        semi_truck_spacing=_GDU_TRUCK_CENTRES / 2,
+        semi_truck_wheelbase=_GDU_WHEELBASE / 2,
+        semi_spring_spacing=_GDU_NEST_SPACING / 2,
+        nest_stiffness=nest,
+        wedge_friction=0.5 * (down + up),
+    )
+
+
+GDU_ORE_CAR = gdu_ore_car()
+"""The loaded Vale GDU ore gondola on Ride Control trucks (:func:`gdu_ore_car`)."""

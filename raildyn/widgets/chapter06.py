@@ -15,6 +15,7 @@ import numpy as np
 
 from raildyn import plots, ride, track
 from raildyn.vehicles import (
+    GDU_ORE_CAR,
     MANCHESTER_VERTICAL,
     FreightCar,
     periodic_profile,
@@ -130,13 +131,15 @@ def ride_quality():
 
 # --------------------------------------------------------------------------- freight car rock and roll
 
-_ROCK_SPEEDS_KMH = np.linspace(20.0, 70.0, 11)
+_ROCK_SPEEDS_KMH = np.linspace(20.0, 70.0, 21)  # 2.5 km/h: the resonance peaks are narrow
+FREIGHT_CARS = {"286K hopper (derived)": FreightCar(), "GDU ore car (Baruffaldi)": GDU_ORE_CAR}
 
 
 def _rock_controls():
     from raildyn.widgets._core import slider
 
     return {
+        "car": widgets.Dropdown(options=list(FREIGHT_CARS), value="286K hopper (derived)", description="car"),
         "speed_kmh": slider("V (km/h)", 40.0, 20.0, 70.0, 5.0, fmt=".0f"),
         "friction_kn": slider("wedge friction (kN per nest)", 6.0, 2.0, 20.0, 2.0, fmt=".0f"),
         "depth_mm": slider("joint dip δ (mm)", 20.0, 5.0, 30.0, 5.0, fmt=".0f"),
@@ -144,16 +147,16 @@ def _rock_controls():
 
 
 @lru_cache(maxsize=32)
-def rock_sweep(friction_kn: float, depth_mm: float):
+def rock_sweep(car_label: str, friction_kn: float, depth_mm: float):
     """Roll amplitude (deg) over the widget's speeds, and the resonance speed (km/h)."""
-    car = FreightCar(wedge_friction=1e3 * friction_kn)
+    car = FREIGHT_CARS[car_label].with_(wedge_friction=1e3 * friction_kn)
     r = rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=12, dt=0.008)
     return np.degrees(r.roll_amplitude), 3.6 * r.resonance_speed
 
 
 @lru_cache(maxsize=64)
-def rock_history(speed_kmh: float, friction_kn: float, depth_mm: float):
-    car = FreightCar(wedge_friction=1e3 * friction_kn)
+def rock_history(car_label: str, speed_kmh: float, friction_kn: float, depth_mm: float):
+    car = FREIGHT_CARS[car_label].with_(wedge_friction=1e3 * friction_kn)
     cycles = max(12, int(np.ceil(30.0 * speed_kmh / 3.6 / track.RAIL_LENGTH)))  # about 30 s shown
     r = rock_and_roll(car, [speed_kmh / 3.6], depth=1e-3 * depth_mm, cycles=cycles, dt=0.008)
     return r.t, np.degrees(r.roll[0])
@@ -177,10 +180,10 @@ def _rock_setup(live, status):
     live.animate(curve, resonance, marker, hist)
 
     def redraw(v):
-        amp, v_res = rock_sweep(v["friction_kn"], v["depth_mm"])
+        amp, v_res = rock_sweep(v["car"], v["friction_kn"], v["depth_mm"])
         curve.set_ydata(amp)
         resonance.set_xdata([v_res, v_res])
-        t, roll = rock_history(v["speed_kmh"], v["friction_kn"], v["depth_mm"])
+        t, roll = rock_history(v["car"], v["speed_kmh"], v["friction_kn"], v["depth_mm"])
         shown = t <= 30
         hist.set_data(t[shown], roll[shown])
         tail = t >= 0.75 * t[-1]
@@ -212,7 +215,9 @@ ROCK = _rock_recipe()
 def rock_and_roll_widget():
     """Freight car on staggered jointed rail: roll amplitude against speed and the roll history.
 
-    Controls: speed (km/h), wedge friction per nest (kN), joint dip depth (mm).
+    Controls: the car (the derived 286K hopper or the GDU ore car of
+    :data:`raildyn.vehicles.freight.GDU_ORE_CAR`, whose own wedges give 4.3 kN),
+    speed (km/h), wedge friction per nest (kN), joint dip depth (mm).
     Left: steady roll amplitude over 20–70 km/h with the roll resonance of the
     springs alone dotted and the chosen speed marked; right: the roll history.
     """
