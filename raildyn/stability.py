@@ -122,7 +122,8 @@ class ModeSweep:
     shapes : complex ndarray (n_speeds, n, k)
         Displacement part of each eigenvector, largest entry 1.
     labels : tuple of str
-        For each mode, the coordinate with the largest share of its first-speed shape.
+        For each mode, the coordinate that carries the largest share of its kinetic
+        energy at the first speed (the shape weighted by the mass matrix).
     coordinates : tuple of str
         The model's coordinate names.
     """
@@ -167,7 +168,11 @@ def mode_sweep(model, speeds) -> ModeSweep:
     mag = np.abs(lam)
     ratio = np.divide(-lam.real, mag, out=np.zeros(mag.shape), where=mag > 0)
     names = system.labels or tuple(f"q{i}" for i in range(n))
-    labels = tuple(names[int(np.argmax(np.abs(shapes[0, :, j])))] for j in range(shapes.shape[2]))
+    # Name each mode by the coordinate that carries most of its kinetic energy, Re(φ̄ᵢ (Mφ)ᵢ):
+    # the largest entry of φ alone would weigh metres against radians.
+    first = shapes[0]
+    energy = np.real(np.conj(first) * (system.M @ first))
+    labels = tuple(names[int(j)] for j in np.argmax(energy, axis=0))
     return ModeSweep(V, lam, freq, ratio, shapes, labels, tuple(names))
 
 
