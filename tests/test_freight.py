@@ -92,6 +92,9 @@ def test_truck_spacing_filters_the_roll_input():
     assert roll_gain(s) / roll_gain(L / 2) == pytest.approx(abs(np.cos(2 * np.pi * s / L)), rel=1e-9)
     # the GDU car's truck centres (5.41 m) lie near half a rail length: 14 % of the input survives
     assert abs(np.cos(2 * np.pi * s / L)) == pytest.approx(0.142, abs=1e-3)
+    for car in (GDU_ORE_CAR, CAR, GDU_ORE_CAR.with_(semi_truck_spacing=4.0)):
+        ratio = roll_gain(car.semi_truck_spacing) / roll_gain(L / 2)
+        assert car.roll_input_factor(L) == pytest.approx(ratio, rel=1e-9)
     assert roll_gain(L / 4) < 1e-12 * roll_gain(L / 2)
 
 
@@ -185,3 +188,5 @@ def test_bad_input():
         wedge_friction_force(1e4, np.radians(5.0), 0.1)
     with pytest.raises(ValueError, match="wedges"):
         wedge_friction_force(1e4, 0.6, 0.1, wedges=0)
+    with pytest.raises(ValueError, match="rail_length"):
+        CAR.roll_input_factor(0.0)

@@ -123,6 +123,12 @@ class FreightCar:
         frequency: V = f_roll L."""
         return self.natural_frequencies()["roll"] * _checks.positive("rail_length", rail_length)
 
+    def roll_input_factor(self, rail_length: float = _track.RAIL_LENGTH) -> float:
+        """|cos(2π s/L)|: the share of a cross-level wave of length L that the two trucks, 2s apart,
+        pass on to the body's roll (their inputs cancel when 2s = L/2)."""
+        L = _checks.positive("rail_length", rail_length)
+        return float(abs(np.cos(2 * np.pi * self.semi_truck_spacing / L)))
+
     @property
     def axle_positions(self) -> np.ndarray:
         a, s = self.semi_truck_wheelbase, self.semi_truck_spacing
