@@ -333,14 +333,48 @@ def _damped_matrices(M, C, K) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return M, C, K
 
 
+def first_order_matrix(M, C, K) -> np.ndarray:
+    """The state matrix A of z' = A z, z = [x; x'], for M x'' + C x' + K x = 0: the one builder in raildyn.
+
+    A = [[0, I], [−M⁻¹K, −M⁻¹C]] (Garg & Dukkipati 1984, ch. 1, the state-space
+    form). C and K may be non-symmetric; M must be symmetric positive definite.
+    M, C and K may also be stacks of shape (m, n, n) (for example one C per
+    speed of a sweep): A then has shape (m, 2n, 2n).
+
+    Parameters
+    ----------
+    M, C, K : array_like, (n, n) or (m, n, n)
+        Mass, damping and stiffness, in consistent units.
+
+    Returns
+    -------
+    ndarray, (2n, 2n) or (m, 2n, 2n)
+        1/s² and 1/s blocks as in the equation.
+
+    Examples
+    --------
+    >>> first_order_matrix([[2.0]], [[4.0]], [[8.0]])
+    array([[ 0.,  1.],
+           [-4., -2.]])
+    """
+    Ms, Cs, Ks = (np.asarray(X, dtype=float) for X in (M, C, K))
+    if max(Ms.ndim, Cs.ndim, Ks.ndim) == 2:
+        Ms, Cs, Ks = _damped_matrices(Ms, Cs, Ks)
+    else:
+        Ms, Cs, Ks = np.broadcast_arrays(Ms, Cs, Ks)
+        if Ms.shape[-1] != Ms.shape[-2] or not np.all(np.isfinite(Ms + Cs + Ks)):
+            raise ValueError(f"M, C and K must be finite stacks of square matrices, got shape {Ms.shape}")
+    n = Ms.shape[-1]
+    A = np.zeros(Ms.shape[:-2] + (2 * n, 2 * n))
+    A[..., :n, n:] = np.eye(n)
+    A[..., n:, :] = -np.linalg.solve(Ms, np.concatenate([Ks, Cs], axis=-1))
+    return A
+
+
 def _first_order(M, C, K) -> tuple[np.ndarray, np.ndarray]:
-    """Checked M and the matrix A of z' = A z, z = [x; x'], for M x'' + C x' + K x = 0."""
+    """Checked M and the matrix A of :func:`first_order_matrix`."""
     M, C, K = _damped_matrices(M, C, K)
-    n = M.shape[0]
-    A = np.zeros((2 * n, 2 * n))
-    A[:n, n:] = np.eye(n)
-    A[n:] = -np.linalg.solve(M, np.hstack([K, C]))
-    return M, A
+    return M, first_order_matrix(M, C, K)
 
 
 def complex_modes(M, C, K) -> ComplexModes:
