@@ -44,7 +44,7 @@ def _loop(vehicle) -> np.ndarray:
 
 
 def cases(repeats: int):
-    vehicle = MANCHESTER_VERTICAL.linear()
+    vehicle = MANCHESTER_VERTICAL.linear_system()
     fast_result = rms_over_speeds(vehicle, _psd, SPEEDS, OMEGA)
     slow_result = _loop(vehicle)
     # the same numbers by both routes (rounding only), or the timing means nothing

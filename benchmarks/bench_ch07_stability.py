@@ -26,7 +26,8 @@ def _poles_on_grid(system, n: int = 1000) -> float:
     B = np.ones((system.size, 1))
     g = np.empty(n)
     for i, V in enumerate(speeds):
-        M, C, K = system.matrices(V)
+        mats = system.matrices(V)
+        M, C, K = mats.M, mats.C, mats.K
         g[i] = control.poles(vibration.to_control(M, C, K, B)).real.max()
     k = int(np.flatnonzero((g[:-1] < 0) & (g[1:] >= 0))[0])
     return float(speeds[k] - g[k] * (speeds[k + 1] - speeds[k]) / (g[k + 1] - g[k]))

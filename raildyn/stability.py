@@ -1,7 +1,8 @@
 """Lateral stability (book chapter 7): eigenvalues against speed, mode tracking, critical speed, hunting.
 
 The linear models of :mod:`raildyn.wheelset` and :mod:`raildyn.vehicles`
-are :class:`~raildyn.wheelset.LateralSystem` objects, M q̈ + (C₀ + C₁/V) q̇ + K q = 0,
+follow the one protocol (:class:`raildyn.linear_model.LinearModel`), and their
+systems read M q̈ + (C₀ + C₁/V) q̇ + K q = 0 without the track,
 so the state matrix at every speed of a sweep is built at once and all
 eigenvalues come from one batched ``numpy.linalg`` call.
 
@@ -26,20 +27,27 @@ import scipy.optimize
 
 from raildyn._checks import array, integer, positive, scalar
 from raildyn._progress import progress_bar
-from raildyn.wheelset import LateralSystem, Wheelset, suspended_wheelset
+from raildyn.errors import SolverError
+from raildyn.linear_model import as_linear_system
 
-
-def as_system(model) -> LateralSystem:
-    """A :class:`LateralSystem` from a system, a Wheelset, or any object with ``linear_system()``."""
-    if isinstance(model, LateralSystem):
-        return model
-    if isinstance(model, Wheelset):
-        return suspended_wheelset(model)
-    if hasattr(model, "linear_system"):
-        return model.linear_system()
-    raise TypeError(
-        f"model must be a LateralSystem, a Wheelset or have linear_system(), got {type(model).__name__}"
-    )
+__all__ = [
+    "BifurcationDiagram",
+    "CriticalSpeed",
+    "CriticalSpeedMap",
+    "LimitCycle",
+    "ModeSweep",
+    "PeriodicOrbit",
+    "bifurcation_diagram",
+    "critical_speed",
+    "critical_speed_map",
+    "eigenvalues_against_speed",
+    "largest_real_part",
+    "limit_cycle_amplitude",
+    "mac",
+    "mode_sweep",
+    "periodic_orbit",
+    "track_modes",
+]
 
 
 def _speeds(speeds) -> np.ndarray:
@@ -54,7 +62,7 @@ def _speeds(speeds) -> np.ndarray:
 def eigenvalues_against_speed(model, speeds) -> np.ndarray:
     """All 2n eigenvalues (1/s) at each speed (m/s), shape (n_speeds, 2n), from one batched eigvals call."""
     V = _speeds(speeds)
-    return np.linalg.eigvals(as_system(model).state_matrices(V))
+    return np.linalg.eigvals(as_linear_system(model).state_matrices(V))
 
 
 def largest_real_part(model, speeds) -> np.ndarray:
@@ -145,11 +153,11 @@ def mode_sweep(model, speeds) -> ModeSweep:
 
     Parameters
     ----------
-    model : LateralSystem, Wheelset or object with ``linear_system()``
+    model : LinearModel or LinearSystem
     speeds : array_like (n_speeds,)
         Increasing speeds, m/s (> 0).
     """
-    system = as_system(model)
+    system = as_linear_system(model)
     V = _speeds(speeds)
     if np.any(np.diff(V) <= 0):
         raise ValueError("speeds must be strictly increasing for mode tracking")
@@ -225,7 +233,7 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
 
     Parameters
     ----------
-    model : LateralSystem, Wheelset or object with ``linear_system()``
+    model : LinearModel or LinearSystem
     speed_range : (float, float)
         Lowest and highest speed, m/s (0 < low < high).
     tol : float
@@ -238,9 +246,9 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     >>> from raildyn.wheelset import Wheelset
     >>> cs = critical_speed(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), (1.0, 200.0))
     >>> cs.status, round(cs.speed, 1)
-    ('crossing', 54.3)
+    ('crossing', 54.6)
     """
-    system = as_system(model)
+    system = as_linear_system(model)
     low, high = _range(speed_range)
     positive("tol", tol)
     integer("scan", scan, low=8)
@@ -300,7 +308,7 @@ def critical_speed_map(
     """Critical speed for every pair of parameters: ``factory(x_i, y_j)`` gives the model.
 
     Example: critical speed against conicity and primary yaw stiffness,
-    ``factory = lambda lam, k: car.with_(conicity=lam, primary_yaw_stiffness=k)``.
+    ``factory = lambda lam, k: car.replace(conicity=lam, primary_yaw_stiffness=k)``.
     Shows a tqdm bar when ``progress`` is true.
     """
     xs = array("x", np.atleast_1d(x), ndim=1)
@@ -328,7 +336,7 @@ def _settle(model, speed: float, y0: np.ndarray, duration: float, max_step: floa
         model.rhs, (0.0, duration), y0, method="RK45", rtol=rtol, atol=1e-9, max_step=max_step
     )
     if not sol.success:
-        raise RuntimeError(f"integration failed at V = {speed:.2f} m/s: {sol.message}")
+        raise SolverError(f"integration failed at V = {speed:.2f} m/s: {sol.message}", time=float(sol.t[-1]))
     return sol.t, sol.y
 
 
@@ -611,7 +619,9 @@ def periodic_orbit(
     def flow(x0, t_end):
         sol = scipy.integrate.solve_ivp(m.rhs, (0.0, t_end), x0, method="DOP853", rtol=rtol, atol=1e-12)
         if not sol.success:
-            raise RuntimeError(f"shooting integration failed at V = {V:.2f} m/s: {sol.message}")
+            raise SolverError(
+                f"shooting integration failed at V = {V:.2f} m/s: {sol.message}", time=float(sol.t[-1])
+            )
         return sol.y[:, -1]
 
     # Finite-difference steps relative to each entry, with a floor so that an entry near 0 (such
@@ -633,7 +643,7 @@ def periodic_orbit(
         if np.linalg.norm(step[:-1] / scale[free]) < tol and abs(step[-1]) < tol * T:
             break
     else:
-        raise RuntimeError(f"shooting did not converge in {max_iter} iterations at V = {V:.2f} m/s")
+        raise SolverError(f"shooting did not converge in {max_iter} iterations at V = {V:.2f} m/s")
     # Monodromy matrix and one period of the orbit, for the multipliers and the amplitude.
     end = flow(x, T)
     monodromy = np.empty((n, n))

@@ -4,11 +4,11 @@
   two-axle bogie (:func:`kinematic_wavelength`, :func:`rigid_bogie_wavelength`);
 * a :class:`Wheelset` parameter set and its linear lateral–yaw equations with
   Kalker's linear creep forces (f₁₁, f₂₂, f₂₃, f₃₃), gravitational stiffness
-  and spin, on a primary suspension to a frame moving at the speed V
-  (:func:`wheelset_matrices`, :func:`suspended_wheelset`);
-* the speed-dependent second-order system :class:`LateralSystem` that the
-  bogie and car models of :mod:`raildyn.vehicles` also produce, and that
-  :mod:`raildyn.stability` sweeps over speed;
+  and spin, on a primary suspension to a frame moving at the speed V: a
+  linear model of the one protocol (:class:`raildyn.linear_model.LinearModel`:
+  ``Wheelset().matrices(V)``, ``state_space(V)``), whose wheel–rail terms
+  (:func:`creep_terms`, :func:`add_wheelset`) the bogie and car models of
+  :mod:`raildyn.vehicles` assemble too;
 * the nonlinear wheelset (:class:`WheelRailContact`, :class:`NonlinearWheelset`):
   a rolling-radius difference Δr(y), saturating creep forces and a flange
   modelled as a stiff spring beyond the flangeway clearance, as ``rhs(t, y)``.
@@ -27,12 +27,29 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from raildyn._checks import nonnegative, positive, scalar
-
-GRAVITY = 9.81  # m/s²
-
+from raildyn.constants import GRAVITY, STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS, STEEL_YOUNGS_MODULUS
+from raildyn.contact.creep import creep_coefficients
+from raildyn.contact.hertz import hertz_contact
+from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 
 # ---------------------------------------------------------------------------
 # Kinematics
+
+
+__all__ = [
+    "CreepTerms",
+    "NonlinearLateral",
+    "NonlinearWheelset",
+    "WheelRailContact",
+    "Wheelset",
+    "add_wheelset",
+    "contact_forces",
+    "creep_terms",
+    "kinematic_wavelength",
+    "rigid_bogie_wavelength",
+    "saturation_factor",
+    "wickens_critical_speed",
+]
 
 
 def kinematic_wavelength(rolling_radius, half_gauge, conicity) -> float:
@@ -78,31 +95,22 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
 
 
 # ---------------------------------------------------------------------------
-# Creep coefficients
+# Default contact
 
 
-def kalker_creep_coefficients(shear_modulus, semi_axis_a, semi_axis_b, c11, c22, c23, c33):
-    """Kalker's linear creep coefficients of one contact patch, (f₁₁, f₂₂, f₂₃, f₃₃).
+def _hertz_kalker(wheel_load, rolling_radius):
+    """Kalker's coefficients of a wheel of radius r₀ on a rail crowned with the same radius, per wheel.
 
-    f₁₁ = G c² C₁₁, f₂₂ = G c² C₂₂, f₂₃ = G c³ C₂₃, f₃₃ = G c⁴ C₃₃ with c = √(ab)
-    (Kalker 1967). Units: N, N, N·m, N·m².
+    The patch is Hertz's (:func:`raildyn.contact.hertz_contact`, curvature 1/r₀ along
+    and across the track: a circle) and the coefficients are Kalker's
+    (:func:`raildyn.contact.creep_coefficients`), both for the steel of
+    :mod:`raildyn.constants`.
     """
-    G = positive("shear_modulus", shear_modulus)
-    c = np.sqrt(positive("semi_axis_a", semi_axis_a) * positive("semi_axis_b", semi_axis_b))
-    names = ("c11", "c22", "c23", "c33")
-    coefficients = [nonnegative(name, v) for name, v in zip(names, (c11, c22, c23, c33), strict=True)]
-    return (
-        float(G * c**2 * coefficients[0]),
-        float(G * c**2 * coefficients[1]),
-        float(G * c**3 * coefficients[2]),
-        float(G * c**4 * coefficients[3]),
+    patch = hertz_contact(
+        wheel_load, rolling_radius, np.inf, rolling_radius, STEEL_YOUNGS_MODULUS, STEEL_POISSON_RATIO
     )
+    return creep_coefficients(patch.a, patch.b, STEEL_SHEAR_MODULUS, STEEL_POISSON_RATIO)
 
-
-# Kalker's coefficients for a circular patch (a/b = 1) and Poisson's ratio 0.25, as tabulated by
-# Kalker (1967, 1990): C11 = 4.12, C22 = 3.67, C23 = 1.47, C33 = 1.19. The patch radius of 6 mm
-# is our choice, the order of a new wheel on a new rail under about 55 kN; G = 80 GPa for steel.
-_DEFAULT_CREEP = kalker_creep_coefficients(8.0e10, 6.0e-3, 6.0e-3, 4.12, 3.67, 1.47, 1.19)
 
 # Manchester benchmark vehicle (Iwnicki 1998, Table of vehicle 1 parameters): wheelset mass 1813 kg,
 # yaw inertia 1120 kg·m², nominal rolling radius 0.46 m; primary stiffness per axlebox: lateral
@@ -111,17 +119,21 @@ _DEFAULT_CREEP = kalker_creep_coefficients(8.0e10, 6.0e-3, 6.0e-3, 4.12, 3.67, 1
 # = 44482 kg, so the axle load is 44482·g/4.
 _MANCHESTER_AXLE_LOAD = 44482.0 * GRAVITY / 4.0
 _MANCHESTER_PRIMARY_YAW_SPACING = 1.0  # m, half the lateral distance between the primary springs
+# Half the axle load on a 0.46 m wheel and a rail crowned with the same radius (our choice: the
+# benchmark's real profiles are not modelled here).
+_DEFAULT_CREEP = _hertz_kalker(_MANCHESTER_AXLE_LOAD / 2.0, 0.46)
 
 
 @dataclass(frozen=True)
-class Wheelset:
+class Wheelset(LinearModelBase):
     """A wheelset, its contact with the rails and its primary suspension to a frame.
 
     The defaults are one wheelset of the Manchester benchmark vehicle (Iwnicki
     1998) on a cone; the conicity (0.15) and contact half-spacing (0.75 m, the
     usual value for standard gauge) are our choice, not the benchmark's, which
-    specifies real profiles. Creep coefficients are per contact patch (see
-    ``_DEFAULT_CREEP`` for how they are evaluated).
+    specifies real profiles. Creep coefficients are per contact patch: Kalker's
+    (:func:`raildyn.contact.creep_coefficients`) on Hertz's patch under half the
+    axle load, wheel radius 0.46 m on a rail crowned with the same radius.
 
     Attributes
     ----------
@@ -158,10 +170,10 @@ class Wheelset:
     half_gauge: float = 0.75
     conicity: float = 0.15
     axle_load: float = _MANCHESTER_AXLE_LOAD
-    f11: float = _DEFAULT_CREEP[0]
-    f22: float = _DEFAULT_CREEP[1]
-    f23: float = _DEFAULT_CREEP[2]
-    f33: float = _DEFAULT_CREEP[3]
+    f11: float = float(_DEFAULT_CREEP.f11)
+    f22: float = float(_DEFAULT_CREEP.f22)
+    f23: float = float(_DEFAULT_CREEP.f23)
+    f33: float = float(_DEFAULT_CREEP.f33)
     contact_angle: float | None = None
     contact_angle_parameter: float | None = None
     lateral_stiffness: float = 2 * 3884.0e3
@@ -207,20 +219,68 @@ class Wheelset:
         return replace(self, **changes)
 
     def free(self) -> Wheelset:
-        """The same wheelset with no primary suspension."""
+        """The same wheelset with no primary suspension.
+
+        Returns
+        -------
+        Wheelset
+        """
         return self.replace(lateral_stiffness=0.0, yaw_stiffness=0.0, lateral_damping=0.0, yaw_damping=0.0)
+
+    def linear_system(self) -> LinearSystem:
+        """The wheelset on its primary suspension to a frame running straight at V.
+
+        Coordinates q = [y, ψ] (m, rad): m ÿ + c_y ẏ + k_y y = F_y and
+        I_z ψ̈ + c_ψ ψ̇ + k_ψ ψ = M_z with the wheel–rail forces of
+        :func:`creep_terms`. Two track inputs at the wheelset: the alignment and
+        the cross-level (m), as :func:`add_wheelset` couples them.
+
+        Returns
+        -------
+        LinearSystem
+
+        Examples
+        --------
+        >>> mats = Wheelset().matrices(30.0)
+        >>> mats.M
+        array([[1813.,    0.],
+               [   0., 1120.]])
+        """
+        asm = Assembler(["wheelset y", "wheelset ψ"], n_inputs=2)
+        add_wheelset(asm, "wheelset y", "wheelset ψ", self, alignment=0, cross_level=1)
+        asm.element({"wheelset y": 1.0}, self.lateral_stiffness, self.lateral_damping)
+        asm.element({"wheelset ψ": 1.0}, self.yaw_stiffness, self.yaw_damping)
+        return asm.system(input_kinds=("alignment", "cross_level"))
 
 
 def _speed(speed) -> float:
     return scalar("speed", speed, low=0.0, low_open=True)
 
 
-def creep_terms(ws: Wheelset) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The wheel–rail terms of one wheelset on its coordinates [y, ψ]: (C₁, K_creep, K_gravity).
+@dataclass(frozen=True)
+class CreepTerms:
+    """The linear wheel–rail terms of one wheelset on its coordinates [y, ψ].
 
-    The wheel–rail force on the wheelset is −(C₁/V) q̇ − (K_creep + K_gravity) q with
-    q = [y, ψ], from Kalker's linear law summed over the two wheels
-    (Garg & Dukkipati 1984, ch. 5; Wickens 2003, ch. 2):
+    The wheel–rail force on the wheelset is −(C₁/V) q̇ − (K_creep + K_gravity) q.
+
+    Attributes
+    ----------
+    C1 : ndarray (2, 2)
+        Creep damping times speed, N (divide by V for N·s/m).
+    K_creep, K_gravity : ndarray (2, 2)
+        Creep and gravitational stiffness, N/m and N·m/rad.
+    """
+
+    C1: np.ndarray
+    K_creep: np.ndarray
+    K_gravity: np.ndarray
+
+
+def creep_terms(ws: Wheelset) -> CreepTerms:
+    """The linear wheel–rail terms of one wheelset on its coordinates [y, ψ].
+
+    From Kalker's linear law summed over the two wheels (Garg & Dukkipati 1984,
+    ch. 5; Wickens 2003, ch. 2):
 
     * lateral:  F_y = −2f₂₂(ẏ/V − ψ) − 2f₂₃ψ̇/V − (Wε/a) y
     * yaw:      M_z = −2af₁₁(aψ̇/V + λy/r₀) + 2f₂₃(ẏ/V − ψ) − 2f₃₃ψ̇/V + W a δ₀ ψ
@@ -228,12 +288,13 @@ def creep_terms(ws: Wheelset) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     The small lateral spin force due to the contact-angle difference,
     proportional to f₂₃ε/(a r₀), is left out.
 
+    Parameters
+    ----------
+    ws : Wheelset
+
     Returns
     -------
-    C1 : ndarray (2, 2)
-        Creep damping times speed, N·s/m · m/s (divide by V for C).
-    K_creep, K_gravity : ndarray (2, 2)
-        Creep and gravitational stiffness, N/m and N·m/rad.
+    CreepTerms
     """
     a, r0, lam = ws.half_gauge, ws.rolling_radius, ws.conicity
     f11, f22, f23, f33 = ws.f11, ws.f22, ws.f23, ws.f33
@@ -245,96 +306,39 @@ def creep_terms(ws: Wheelset) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     K_gravity = np.array([[ws.axle_load * ws.contact_angle_parameter / a, 0.0],
                           [0.0, -ws.axle_load * a * ws.contact_angle]])
     # fmt: on
-    return C1, K_creep, K_gravity
+    return CreepTerms(C1, K_creep, K_gravity)
 
 
-@dataclass(frozen=True)
-class LateralSystem:
-    """A linear lateral model whose damping varies as 1/V: M q̈ + (C₀ + C₁/V) q̇ + K q = 0.
+def add_wheelset(asm: Assembler, y: str, psi: str, ws: Wheelset, *, alignment=None, cross_level=None) -> None:
+    """Add a wheelset's mass, inertia and wheel–rail terms to an assembly, with its track inputs.
 
-    Every model of chapters 5 and 7 has this form, because linear creep forces
-    are proportional to creepages, which are velocities divided by V.
-
-    Attributes
-    ----------
-    M, C0, C1, K : ndarray (n, n)
-        Mass (kg), speed-independent damping (N·s/m), creep damping times speed
-        (N), stiffness (N/m); rotational rows in the matching units.
-    labels : tuple of str
-        Name of each coordinate.
-    wheelsets : tuple of (int, int, Wheelset)
-        Indices of the [y, ψ] coordinates of each wheelset and its parameters,
-        so that :class:`NonlinearLateral` can replace the linear wheel–rail terms.
-    """
-
-    M: np.ndarray
-    C0: np.ndarray
-    C1: np.ndarray
-    K: np.ndarray
-    labels: tuple = ()
-    wheelsets: tuple = field(default=())
-
-    @property
-    def size(self) -> int:
-        return self.M.shape[0]
-
-    def matrices(self, speed) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(M, C(V), K) at the speed V (m/s, > 0)."""
-        V = _speed(speed)
-        return self.M, self.C0 + self.C1 / V, self.K
-
-    def state_matrices(self, speeds) -> np.ndarray:
-        """A(V) = [[0, I], [−M⁻¹K, −M⁻¹C(V)]] for every speed, shape (n_speeds, 2n, 2n), in one pass."""
-        from raildyn._checks import array
-
-        V = array("speeds", np.atleast_1d(speeds), ndim=1, low=0.0, low_open=True)
-        n = self.size
-        Minv = np.linalg.inv(self.M)
-        MK, MC0, MC1 = Minv @ self.K, Minv @ self.C0, Minv @ self.C1
-        A = np.zeros((V.size, 2 * n, 2 * n))
-        A[:, :n, n:] = np.eye(n)
-        A[:, n:, :n] = -MK
-        A[:, n:, n:] = -MC0 - MC1 / V[:, None, None]
-        return A
-
-
-def wheelset_matrices(params: Wheelset, speed) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """M, C(V), K(V) of a wheelset on its primary suspension to a frame moving at V along the track.
-
-    Coordinates q = [y, ψ] (m, rad). The equations are
-    m ÿ + c_y ẏ + k_y y = F_y and I_z ψ̈ + c_ψ ψ̇ + k_ψ ψ = M_z with the
-    wheel–rail forces of :func:`creep_terms`.
+    Alignment y_a enters the terms that depend on the wheelset's displacement
+    relative to the rails — the rolling-radius difference λ(y − y_a)/r₀ and the
+    gravitational stiffness — while the creepages ẏ/V − ψ and aψ̇/V stay
+    absolute. Cross-level c tilts the rails by c/(2a), and the rail reactions
+    push the wheelset sideways by −W c/(2a).
 
     Parameters
     ----------
-    params : Wheelset
-    speed : float
-        V, m/s (> 0: the creep forces divide by it).
-
-    Returns
-    -------
-    M, C, K : ndarray (2, 2)
-        kg and kg·m²; N·s/m and N·m·s/rad; N/m and N·m/rad. C and K are not symmetric.
-
-    Examples
-    --------
-    >>> M, C, K = wheelset_matrices(Wheelset(), 30.0)
-    >>> M
-    array([[1813.,    0.],
-           [   0., 1120.]])
+    asm : Assembler
+    y, psi : str
+        Labels of the wheelset's lateral (m) and yaw (rad) coordinates.
+    ws : Wheelset
+    alignment, cross_level : int, optional
+        Indices of the track inputs that carry the alignment and the cross-level
+        (m) at this wheelset.
     """
-    return suspended_wheelset(params).matrices(speed)
-
-
-def suspended_wheelset(params: Wheelset) -> LateralSystem:
-    """The wheelset on its primary suspension to a frame running straight at V: a :class:`LateralSystem`."""
-    if not isinstance(params, Wheelset):
-        raise TypeError(f"params must be a Wheelset, got {type(params).__name__}")
-    C1, K_creep, K_gravity = creep_terms(params)
-    M = np.diag([params.mass, params.yaw_inertia])
-    C0 = np.diag([params.lateral_damping, params.yaw_damping])
-    K = np.diag([params.lateral_stiffness, params.yaw_stiffness]) + K_creep + K_gravity
-    return LateralSystem(M, C0, C1, K, labels=("wheelset y", "wheelset ψ"), wheelsets=((0, 1, params),))
+    terms = creep_terms(ws)
+    stiffness = terms.K_creep + terms.K_gravity
+    asm.block([y, psi], C1=terms.C1, K=stiffness)
+    asm.mass(y, ws.mass)
+    asm.mass(psi, ws.yaw_inertia)
+    asm.wheelsets.append((asm.index(y), asm.index(psi), ws))
+    if alignment is not None:
+        asm.track_force(y, alignment, stiffness[0, 0])
+        asm.track_force(psi, alignment, stiffness[1, 0])
+    if cross_level is not None:
+        asm.track_force(y, cross_level, -ws.axle_load / (2 * ws.half_gauge))
 
 
 def wickens_critical_speed(params: Wheelset) -> float:
@@ -407,7 +411,17 @@ class WheelRailContact:
 def saturation_factor(force, limit) -> np.ndarray:
     """Shen–Hedrick–Elkins reduction of a linear creep force magnitude F to μN (Shen et al. 1983).
 
-    Returns F_sat/F with F_sat = μN(u − u²/3 + u³/27) for u = F/(μN) < 3 and μN beyond.
+    Parameters
+    ----------
+    force : array_like
+        |F| of the linear law, N.
+    limit : float
+        μN, N.
+
+    Returns
+    -------
+    ndarray
+        F_sat/F with F_sat = μN(u − u²/3 + u³/27) for u = F/(μN) < 3 and μN beyond.
     """
     force = np.abs(np.asarray(force, dtype=float))
     u = force / limit
@@ -419,10 +433,29 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     """Lateral force (N) and yaw moment (N·m) of the rails on a wheelset, nonlinear; arrays broadcast.
 
     Creepages of the left/right wheel: ξx = ∓(aψ̇/V + Δr(y)/(2r₀)), ξy = ẏ/V − ψ,
-    spin ψ̇/V. Each wheel's longitudinal and lateral linear force is reduced
-    by :func:`saturation_factor` at μ W/2; gravity acts through the
-    contact-angle difference, and the flange as a spring beyond the clearance.
-    For small motion the result equals the linear forces of :func:`creep_terms`.
+    spin ψ̇/V (those of :func:`raildyn.contact.wheelset_creepages` with
+    r_L,R = r₀ ± Δr/2 and no contact-angle spin, written out here because this
+    runs inside every step of a hunting simulation). Each wheel's longitudinal and
+    lateral linear force is reduced by :func:`saturation_factor` at μ W/2;
+    gravity acts through the contact-angle difference, and the flange as a
+    spring beyond the clearance. For small motion the result equals the linear
+    forces of :func:`creep_terms`.
+
+    Parameters
+    ----------
+    ws : Wheelset
+    contact : WheelRailContact
+    y, psi, ydot, psidot : float or ndarray
+        Lateral displacement (m), yaw (rad) and their rates (m/s, rad/s).
+    speed : float
+        V, m/s.
+
+    Returns
+    -------
+    lateral : ndarray
+        N.
+    yaw : ndarray
+        N·m.
     """
     a, r0, W = ws.half_gauge, ws.rolling_radius, ws.axle_load
     dr = (contact.rolling_radius_difference or _cone(ws.conicity))(y)
@@ -478,25 +511,33 @@ class NonlinearWheelset:
 
 @dataclass(frozen=True)
 class NonlinearLateral:
-    """Any :class:`LateralSystem` with its linear wheel–rail terms replaced by :func:`contact_forces`.
+    """Any lateral :class:`~raildyn.linear_model.LinearSystem` with its linear wheel–rail terms replaced
+    by :func:`contact_forces`.
 
     M q̈ = −C₀q̇ − K_s q + Σ F_contact, where K_s is K without the creep and
     gravitational terms of each wheelset. State [q; q̇]; ``rhs(t, state)`` for solve_ivp.
     """
 
-    system: LateralSystem
+    system: LinearSystem
     contact: WheelRailContact = field(default_factory=WheelRailContact)
     speed: float = 30.0
+    # Derived once from the fields above (not arguments): the suspension stiffness, M⁻¹, and the
+    # wheelsets grouped by their parameters.
+    _K_suspension: np.ndarray = field(init=False, repr=False, compare=False)
+    _M_inv: np.ndarray = field(init=False, repr=False, compare=False)
+    _groups: list = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         _speed(self.speed)
+        if not isinstance(self.system, LinearSystem):
+            raise TypeError(f"system must be a LinearSystem, got {type(self.system).__name__}")
         if not self.system.wheelsets:
             raise ValueError("system has no wheelsets in contact with the rails")
         K_s = np.array(self.system.K, dtype=float, copy=True)
         for iy, ipsi, ws in self.system.wheelsets:
-            _, K_creep, K_gravity = creep_terms(ws)
+            terms = creep_terms(ws)
             idx = np.ix_([iy, ipsi], [iy, ipsi])
-            K_s[idx] -= K_creep + K_gravity
+            K_s[idx] -= terms.K_creep + terms.K_gravity
         object.__setattr__(self, "_K_suspension", K_s)
         object.__setattr__(self, "_M_inv", np.linalg.inv(self.system.M))
         # Wheelsets with equal parameters are evaluated together in one vectorised call.

@@ -12,10 +12,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from raildyn.constants import GRAVITY
 from raildyn.vehicles import response as resp
 from raildyn.vehicles.freight import (
     GDU_ORE_CAR,
     FreightCar,
+    rk4_step_limit,
     rock_and_roll,
     wedge_energy_per_cycle,
     wedge_friction_force,
@@ -26,25 +28,28 @@ CAR = FreightCar()
 
 
 def test_static_deflection_is_quarter_weight_over_nest():
-    q = CAR.linear().static_deflection()
+    q = CAR.linear_system().static_deflection()
     # four equal nests share the weight: δ = m g / 4k (0.06 m by construction); rounding only
-    assert q[0] == pytest.approx(-CAR.body_mass * 9.81 / (4 * CAR.nest_stiffness), rel=1e-12)
+    assert q[0] == pytest.approx(-CAR.body_mass * GRAVITY / (4 * CAR.nest_stiffness), rel=1e-12)
     np.testing.assert_allclose(q[1:], 0.0, atol=1e-15)
 
 
 def test_natural_frequencies_match_closed_forms():
-    v = CAR.linear()
+    v = CAR.linear_system()
     got = np.sort(modal_analysis(v.M, v.K).natural_frequencies) / (2 * np.pi)
-    want = np.sort(list(CAR.natural_frequencies().values()))
+    f = CAR.natural_frequencies()
+    want = np.sort([f.bounce_hz, f.pitch_hz, f.roll_hz])
     # bounce, pitch and roll are uncoupled for a symmetric car: eigenvalues of a diagonal pencil
     np.testing.assert_allclose(got, want, rtol=1e-12)
 
 
 def test_roll_stiffness_loses_the_weight_term():
     k, b = CAR.nest_stiffness, CAR.semi_spring_spacing
-    assert CAR.roll_stiffness == pytest.approx(4 * k * b**2 - CAR.body_mass * 9.81 * CAR.cg_height, rel=1e-14)
+    assert CAR.roll_stiffness == pytest.approx(
+        4 * k * b**2 - CAR.body_mass * GRAVITY * CAR.cg_height, rel=1e-14
+    )
     # the resonance sits where one cross-level cycle per rail meets f_roll
-    assert CAR.roll_resonance_speed(11.9) == pytest.approx(CAR.natural_frequencies()["roll"] * 11.9)
+    assert CAR.roll_resonance_speed(11.9) == pytest.approx(CAR.natural_frequencies().roll_hz * 11.9)
 
 
 def test_wedge_energy_is_four_f_x():
@@ -69,7 +74,7 @@ def test_property_smooth_wedge_deficit(F, X, f, eps):
 
 
 def test_in_phase_joints_do_not_roll_the_car():
-    v = CAR.linear(equivalent_damping=2e4)
+    v = CAR.replace(equivalent_damping=2e4).linear_system()
     w = np.linspace(0.5, 30, 50)
     # vertical irregularity (both rails alike) gives no roll: the two nests of a truck cancel exactly
     assert np.abs(resp.track_frf(v, w, 10.0, "body φ")).max() == 0.0
@@ -82,17 +87,17 @@ def test_truck_spacing_filters_the_roll_input():
     # pitch, so only the phase between the trucks depends on s: |H(s)| ∝ |cos(2πs/L)| at that wave.
     L, V = 11.9, 12.0
     w = np.array([2 * np.pi * V / L])
-    base = GDU_ORE_CAR.with_(wedge_friction=0.0)
+    base = GDU_ORE_CAR.replace(wedge_friction=0.0)
 
     def roll_gain(s):
-        v = base.with_(semi_truck_spacing=s).linear(equivalent_damping=2e4)
+        v = base.replace(semi_truck_spacing=s, equivalent_damping=2e4).linear_system()
         return abs(resp.track_frf(v, w, V, "body φ", component="cross_level")[0])
 
     s = GDU_ORE_CAR.semi_truck_spacing
     assert roll_gain(s) / roll_gain(L / 2) == pytest.approx(abs(np.cos(2 * np.pi * s / L)), rel=1e-9)
     # the GDU car's truck centres (5.41 m) lie near half a rail length: 14 % of the input survives
     assert abs(np.cos(2 * np.pi * s / L)) == pytest.approx(0.142, abs=1e-3)
-    for car in (GDU_ORE_CAR, CAR, GDU_ORE_CAR.with_(semi_truck_spacing=4.0)):
+    for car in (GDU_ORE_CAR, CAR, GDU_ORE_CAR.replace(semi_truck_spacing=4.0)):
         ratio = roll_gain(car.semi_truck_spacing) / roll_gain(L / 2)
         assert car.roll_input_factor(L) == pytest.approx(ratio, rel=1e-9)
     assert roll_gain(L / 4) < 1e-12 * roll_gain(L / 2)
@@ -129,7 +134,7 @@ def test_gdu_ore_car_values_match_the_source():
 def test_gdu_springs_carry_the_body_at_their_loaded_length():
     # The source's free (0.327 m) and loaded (0.267 m) coil lengths, given to the millimetre, differ
     # by the static deflection under this body: 60 mm against m g / 4k = 59.99 mm (1 mm in 60 = 1.7 %).
-    q = GDU_ORE_CAR.linear().static_deflection()
+    q = GDU_ORE_CAR.linear_system().static_deflection()
     assert -q[0] == pytest.approx(0.327 - 0.267, rel=0.017)
 
 
@@ -179,7 +184,7 @@ def test_bad_input():
     with pytest.raises(ValueError, match="amplitude"):
         wedge_energy_per_cycle(1.0, 0.0, 1.0)
     with pytest.raises(ValueError, match="equivalent_damping"):
-        CAR.linear(-1.0)
+        CAR.replace(equivalent_damping=-1.0)
     with pytest.raises(ValueError, match="spring_force"):
         wedge_friction_force(-1.0, 0.6, 0.1)
     with pytest.raises(ValueError, match="slope_angle"):
@@ -190,3 +195,33 @@ def test_bad_input():
         wedge_friction_force(1e4, 0.6, 0.1, wedges=0)
     with pytest.raises(ValueError, match="rail_length"):
         CAR.roll_input_factor(0.0)
+
+
+def test_rock_and_roll_refuses_a_step_at_which_rk4_goes_unstable():
+    """Wrong answer fixed (issue 14): dt = 0.5 s gave a roll amplitude of 4.28 rad (dt = 2 s:
+    7.7e10 rad) with no word; the converged answer is about 0.003 rad. The step is now checked
+    against RK4's stability limit on the car with sticking wedges, before the run."""
+    for dt in (0.5, 2.0):
+        with pytest.raises(ValueError, match="dt must be at most"):
+            rock_and_roll(FreightCar(), [5.0], cycles=4, dt=dt)
+    # The limit is RK4's: the spectral radius of the step matrix P = Σ (hA)^k/k!, k ≤ 4, of the
+    # linearised car crosses 1 there (computed here from the matrix, not from its eigenvalues).
+    sticking = CAR.replace(equivalent_damping=CAR.wedge_friction / 0.002)
+    limit = rk4_step_limit(sticking)
+    A = sticking.matrices(1.0).state_matrix()
+
+    def radius(h):
+        P, term = np.eye(A.shape[0]), np.eye(A.shape[0])
+        for k in range(1, 5):
+            term = term @ (h * A) / k
+            P = P + term
+        return np.abs(np.linalg.eigvals(P)).max()
+
+    assert radius(0.999 * limit) <= 1.0 + 1e-9
+    assert radius(1.01 * limit) > 1.0
+    # a step just inside the limit is stable and near the converged amplitude: RK4's O(h⁴) error
+    # at 0.9 of its limit against a step four times smaller (seen: 0.2 %), so 1 %
+    near = rock_and_roll(CAR, [8.0], cycles=8, dt=0.9 * limit).roll_amplitude[0]
+    fine = rock_and_roll(CAR, [8.0], cycles=8, dt=0.9 * limit / 4).roll_amplitude[0]
+    assert np.isfinite(near) and near < 0.05
+    assert near == pytest.approx(fine, rel=0.01)

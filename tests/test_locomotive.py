@@ -5,6 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from raildyn.constants import GRAVITY
 from raildyn.vehicles import response as resp
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
 from raildyn.vibration import modal_analysis
@@ -20,16 +21,16 @@ def _two_dof(m1, k1, m2, k2):
 
 
 def test_static_deflection_matches_hand_calculation():
-    q = LOCO.linear().static_deflection()
+    q = LOCO.linear_system().static_deflection()
     # each truck: half the body on one secondary; half body + frame on three primaries
-    truck = (LOCO.body_mass / 2 + LOCO.truck_mass) * 9.81 / (3 * LOCO.primary_stiffness)
-    body = truck + LOCO.body_mass / 2 * 9.81 / LOCO.secondary_stiffness
+    truck = (LOCO.body_mass / 2 + LOCO.truck_mass) * GRAVITY / (3 * LOCO.primary_stiffness)
+    body = truck + LOCO.body_mass / 2 * GRAVITY / LOCO.secondary_stiffness
     np.testing.assert_allclose(q[[0, 2, 4]], [-body, -truck, -truck], rtol=1e-12)
     np.testing.assert_allclose(q[[1, 3, 5]], 0.0, atol=1e-14)
 
 
 def test_undamped_frequencies_match_closed_forms():
-    v = LOCO.linear()
+    v = LOCO.linear_system()
     got = np.sort(modal_analysis(v.M, v.K).natural_frequencies ** 2)
     ks, kp, s, a, mt = (
         LOCO.secondary_stiffness,
@@ -50,7 +51,7 @@ def test_undamped_frequencies_match_closed_forms():
 @given(speed=st.floats(5.0, 50.0))
 def test_property_three_axle_filter_zeros(speed):
     """Body bounce sees 1 + e^{-iωa/V} + e^{-2iωa/V}: zero at λ = 3a and 3a/2 (cube roots of unity)."""
-    v = LOCO.linear()
+    v = LOCO.linear_system()
     lam = np.array([3 * LOCO.axle_spacing, 1.5 * LOCO.axle_spacing])
     H = resp.track_frf(v, 2 * np.pi * speed / lam, speed, "body z")
     scale = np.abs(resp.track_frf(v, np.linspace(0.5, 60, 300), speed, "body z")).max()

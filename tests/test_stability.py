@@ -9,7 +9,8 @@ from hypothesis import strategies as st
 
 from raildyn import stability, vibration
 from raildyn.vehicles import Bogie, Car
-from raildyn.wheelset import LateralSystem, NonlinearWheelset, Wheelset
+from raildyn.linear_model import LinearSystem
+from raildyn.wheelset import NonlinearWheelset, Wheelset
 
 SOFT = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # a wheelset that hunts below 60 m/s
 
@@ -17,7 +18,7 @@ SOFT = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # a wheelset that
 def _negative_damping_oscillator(c0, c1, k=4.0):
     """m q̈ + (c₁/V − c₀) q̇ + k q = 0: unstable exactly for V > c₁/c₀."""
     one = np.array([[1.0]])
-    return LateralSystem(one, -c0 * one, c1 * one, k * one, labels=("q",))
+    return LinearSystem(one, -c0 * one, c1 * one, k * one, labels=("q",))
 
 
 # ---------------------------------------------------------------------------
@@ -30,9 +31,10 @@ def test_batched_eigenvalues_agree_with_python_control_poles(model):
     # poles agree to 1e-8 of the largest, the accuracy of a balanced nonsymmetric eigen-solver.
     speeds = [5.0, 40.0, 90.0]
     batched = stability.eigenvalues_against_speed(model, speeds)
-    system = stability.as_system(model)
+    system = stability.as_linear_system(model)
     for V, lam in zip(speeds, batched, strict=True):
-        M, C, K = system.matrices(V)
+        mats = system.matrices(V)
+        M, C, K = mats.M, mats.C, mats.K
         poles = control.poles(vibration.to_control(M, C, K, np.ones((system.size, 1))))
         scale = np.abs(poles).max()
         np.testing.assert_allclose(np.sort_complex(lam), np.sort_complex(poles), atol=1e-8 * scale)
@@ -44,7 +46,8 @@ def test_batched_eigenvalues_agree_with_complex_modes(speed, conicity):
     # raildyn.vibration.complex_modes solves each speed on its own (scipy.linalg.eig).
     ws = SOFT.replace(conicity=conicity)
     lam = stability.eigenvalues_against_speed(ws, [speed])[0]
-    M, C, K = stability.as_system(ws).matrices(speed)
+    mats = stability.as_linear_system(ws).matrices(speed)
+    M, C, K = mats.M, mats.C, mats.K
     ref = vibration.complex_modes(M, C, K).eigenvalues
     np.testing.assert_allclose(np.sort_complex(lam), np.sort_complex(ref), atol=1e-9 * np.abs(ref).max())
 
@@ -58,7 +61,7 @@ def test_mode_tracking_keeps_labels_through_a_crossing():
     # √(4 − 2.25/V²) rises through that of q₂ (√3, undamped) at V = 1.5 m/s. Sorting by
     # frequency swaps them there; MAC tracking must not.
     M = np.eye(2)
-    system = LateralSystem(M, np.zeros((2, 2)), np.diag([3.0, 0.0]), np.diag([4.0, 3.0]), labels=("q1", "q2"))
+    system = LinearSystem(M, np.zeros((2, 2)), np.diag([3.0, 0.0]), np.diag([4.0, 3.0]), labels=("q1", "q2"))
     speeds = np.linspace(1.2, 3.0, 60)
     sweep = stability.mode_sweep(system, speeds)
     j1 = sweep.labels.index("q1")
@@ -81,7 +84,7 @@ def test_mode_labels_follow_kinetic_energy_not_amplitude():
     w2, phi = scipy.linalg.eigh(K, M)
     energy = np.diag(M)[:, None] * phi**2
     assert np.argmax(np.abs(phi[:, 0])) == 1 and np.argmax(energy[:, 0]) == 0  # the case has teeth
-    system = LateralSystem(M, np.zeros((2, 2)), np.zeros((2, 2)), K, labels=("y", "ψ"))
+    system = LinearSystem(M, np.zeros((2, 2)), np.zeros((2, 2)), K, labels=("y", "ψ"))
     sweep = stability.mode_sweep(system, [1.0, 2.0])
     np.testing.assert_allclose(sweep.frequencies[0], np.sqrt(w2) / (2 * np.pi), rtol=1e-10)
     assert sweep.labels == ("y", "ψ")
@@ -132,7 +135,8 @@ def test_critical_speed_statuses():
 def test_critical_speed_falls_with_conicity():
     # Klingel frequency rises with √λ, so the hunting speed of a bogie falls as λ grows.
     speeds = [
-        stability.critical_speed(Bogie().with_(conicity=lam), (1.0, 300.0)).speed for lam in (0.05, 0.2, 0.4)
+        stability.critical_speed(Bogie().replace(conicity=lam), (1.0, 300.0)).speed
+        for lam in (0.05, 0.2, 0.4)
     ]
     assert speeds[0] > speeds[1] > speeds[2]
 
@@ -141,7 +145,7 @@ def test_critical_speed_map_matches_single_calls():
     bogie = Bogie()
 
     def factory(lam, k):
-        return bogie.with_(conicity=lam, yaw_stiffness=k)
+        return bogie.replace(conicity=lam, yaw_stiffness=k)
 
     result = stability.critical_speed_map(
         factory, [0.1, 0.3], [5e6, 5e7], (1.0, 300.0), x_name="λ", y_name="k_ψ", progress=False

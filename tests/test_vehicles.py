@@ -7,7 +7,8 @@ from hypothesis import strategies as st
 
 from raildyn import stability
 from raildyn.vehicles import MANCHESTER_CAR, Bogie, Car
-from raildyn.wheelset import GRAVITY, Wheelset, suspended_wheelset
+from raildyn.constants import GRAVITY
+from raildyn.wheelset import Wheelset
 
 
 def test_manchester_parameters_as_published():
@@ -41,7 +42,7 @@ def test_bogie_with_locked_frame_is_two_suspended_wheelsets():
     bogie = Bogie(frame_mass=1e12, frame_yaw_inertia=1e12)
     V = 50.0
     lam_bogie = stability.eigenvalues_against_speed(bogie, [V])[0]
-    lam_ws = stability.eigenvalues_against_speed(suspended_wheelset(bogie.wheelset), [V])[0]
+    lam_ws = stability.eigenvalues_against_speed(bogie.wheelset, [V])[0]
     for lam in lam_ws:
         close = np.sort(np.abs(lam_bogie - lam))[:2]
         assert np.all(close < 1e-6 * abs(lam)), "each wheelset eigenvalue appears twice"
@@ -102,7 +103,7 @@ def test_bogie_critical_speed_scales_as_inverse_root_conicity_in_the_high_creep_
 
 
 def test_with_reaches_every_level():
-    car = Car().with_(conicity=0.3, frame_mass=3000.0, body_mass=30000.0)
+    car = Car().replace(conicity=0.3, frame_mass=3000.0, body_mass=30000.0)
     assert car.wheelset.conicity == 0.3 and car.wheelset.contact_angle == 0.3
     assert car.bogie.frame_mass == 3000.0 and car.body_mass == 30000.0
 
@@ -113,7 +114,7 @@ def test_bad_input():
     with pytest.raises(ValueError, match="body_mass"):
         Car(body_mass=0.0)
     with pytest.raises(ValueError, match="conicity"):
-        Car().with_(conicity=-0.1)
+        Car().replace(conicity=-0.1)
     with pytest.raises(TypeError, match="Wheelset"):
         Bogie(wheelset=3)
     with pytest.raises(ValueError, match="speed"):

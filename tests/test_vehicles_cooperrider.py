@@ -13,7 +13,8 @@ import pytest
 from raildyn import stability
 from raildyn.contact import kalker_coefficients
 from raildyn.vehicles import COOPERRIDER_CAR, MANCHESTER_CAR, cooperrider_car
-from raildyn.wheelset import GRAVITY, kinematic_wavelength, rigid_bogie_wavelength
+from raildyn.constants import GRAVITY
+from raildyn.wheelset import kinematic_wavelength, rigid_bogie_wavelength
 
 
 def test_cooperrider_parameters_as_in_dytsi():
@@ -74,7 +75,8 @@ def test_cooperrider_car_is_built_afresh_and_leaves_the_defaults_alone():
 
 def _max_real_pole(system, speed):
     """Largest real part of the poles of python-control's state space built here from M, C(V), K."""
-    M, C, K = system.matrices(speed)
+    mats = system.matrices(speed)
+    M, C, K = mats.M, mats.C, mats.K
     n = M.shape[0]
     Minv = np.linalg.inv(M)
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ C]])
@@ -142,5 +144,5 @@ def test_softer_primary_yaw_puts_cooperrider_hunting_nearer_the_free_wheelset():
 def test_body_yaw_inertia_of_the_other_dytsi_variant_hardly_moves_the_critical_speed():
     # CooperriderModel.cpp has 5.6e6 kg·m² where the orthogonal model has 5.0e5 (as the docstring says).
     base = stability.critical_speed(COOPERRIDER_CAR, (1.0, 400.0)).speed
-    other = stability.critical_speed(COOPERRIDER_CAR.with_(body_yaw_inertia=5.6e6), (1.0, 400.0)).speed
+    other = stability.critical_speed(COOPERRIDER_CAR.replace(body_yaw_inertia=5.6e6), (1.0, 400.0)).speed
     assert other == pytest.approx(base, abs=0.05)

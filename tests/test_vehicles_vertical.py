@@ -12,13 +12,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import track
+from raildyn.constants import GRAVITY
 from raildyn.vehicles import response as resp
 from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, VerticalCar
 from raildyn.vibration import modal_analysis
 
-G = 9.81
+G = GRAVITY
 CAR = MANCHESTER_VERTICAL
 FRA4 = lambda w: track.fra_psd("vertical", 4, w)  # noqa: E731
+FRA4_ALIGNMENT = lambda w: track.fra_psd("alignment", 4, w)  # noqa: E731
+FRA4_CROSS_LEVEL = lambda w: track.fra_psd("cross_level", 4, w)  # noqa: E731
 
 
 def test_defaults_are_the_manchester_vehicle():
@@ -30,7 +33,7 @@ def test_defaults_are_the_manchester_vehicle():
 
 
 def test_static_deflection_matches_hand_calculation():
-    v = CAR.linear()
+    v = CAR.linear_system()
     q = v.static_deflection()
     ks, kp = CAR.secondary_stiffness, CAR.primary_stiffness
     # each bogie carries half the body on one secondary set and (half body + frame) on two wheelsets
@@ -51,7 +54,7 @@ def _two_dof(m1, k1, m2, k2):
 
 
 def test_undamped_frequencies_match_closed_forms():
-    v = CAR.linear()
+    v = CAR.linear_system()
     got = np.sort(modal_analysis(v.M, v.K).natural_frequencies) ** 2
     ks, kp, s, b = CAR.secondary_stiffness, CAR.primary_stiffness, CAR.semi_bogie_spacing, CAR.semi_wheelbase
     mb, Ib = CAR.bogie_mass, CAR.bogie_pitch_inertia
@@ -66,18 +69,18 @@ def test_undamped_frequencies_match_closed_forms():
 
 
 def test_body_frequencies_on_a_rigid_primary():
-    stiff = CAR.with_(primary_stiffness=1e13)
-    v = stiff.linear()
+    stiff = CAR.replace(primary_stiffness=1e13)
+    v = stiff.linear_system()
     got = np.sort(modal_analysis(v.M, v.K).natural_frequencies)[:2] / (2 * np.pi)
     want = stiff.body_frequencies()
     # the primary 5 × 10⁶ times stiffer than the secondary shifts them by ~1e-7 relative
-    np.testing.assert_allclose(got, sorted([want["bounce"], want["pitch"]]), rtol=1e-6)
+    np.testing.assert_allclose(got, sorted([want.bounce_hz, want.pitch_hz]), rtol=1e-6)
 
 
 @pytest.mark.parametrize("speed", [20.0, 45.0])
 def test_wheelbase_filter_zeros(speed):
     """Body bounce sees (1 + e^{-iω2b/V})(1 + e^{-iω2l/V}): zero where λ = 4b/(2n+1) or 4l/(2n+1)."""
-    v = CAR.linear()
+    v = CAR.linear_system()
     b, s = CAR.semi_wheelbase, CAR.semi_bogie_spacing
     lam = np.array([4 * b, 4 * b / 3, 4 * s / 3, 4 * s / 5])
     omega = 2 * np.pi * speed / lam
@@ -91,14 +94,14 @@ def test_wheelbase_filter_zeros(speed):
 
 
 def test_low_frequency_body_follows_the_track():
-    v = CAR.linear()
+    v = CAR.linear_system()
     H = resp.track_frf(v, np.array([1e-4]), 30.0, "body z")
     # quasi-static: body height = mean of four equal wheel heights; error O(ω) ~ 1e-5
     assert abs(H[0] - 1.0) < 1e-3
 
 
 def test_response_spectrum_equals_track_frf_squared():
-    v = CAR.linear()
+    v = CAR.linear_system()
     w = np.linspace(0.5, 150.0, 800)
     V = 33.0
     spec = resp.response_spectrum(v, FRA4, V, w, "body z", derivative=2)
@@ -130,7 +133,7 @@ def test_frequency_domain_rms_matches_long_time_domain_run():
     def periodic(values):
         return lambda x, rails: np.interp(np.mod(x, L), xs, values, period=L)
 
-    v = CAR.linear()
+    v = CAR.linear_system()
     dt = 0.004
     settle = 30.0  # s: the slowest mode decays by e^{-ζωt} ≈ e^{-0.1·6.7·30} ≈ 2e-9
     t = np.arange(0.0, settle + L / V, dt)
@@ -150,8 +153,8 @@ def test_frequency_domain_rms_matches_long_time_domain_run():
     cs=st.floats(0.0, 1e5),
 )
 def test_property_rms_positive_and_cross_level_gives_no_vertical(speed, ks, cs):
-    car = CAR.with_(secondary_stiffness=ks, secondary_damping=cs)
-    v = car.linear()
+    car = CAR.replace(secondary_stiffness=ks, secondary_damping=cs)
+    v = car.linear_system()
     w = np.linspace(1.0, 100.0, 200)
     spec = resp.response_spectrum(v, FRA4, speed, w, "body z")
     assert spec.rms > 0 and np.all(spec.psd >= 0)
@@ -167,11 +170,11 @@ def test_bad_input():
         VerticalCar(primary_damping=-5.0)
     with pytest.raises(ValueError, match="semi_wheelbase"):
         VerticalCar(semi_wheelbase=20.0)
-    v = CAR.linear()
+    v = CAR.linear_system()
     with pytest.raises(ValueError, match="output"):
-        v.axle_frf([1.0], "roof z")
+        v.axle_frf([1.0], 30.0, "roof z")
     with pytest.raises(ValueError, match="derivative"):
-        v.axle_frf([1.0], "body z", 3)
+        v.axle_frf([1.0], 30.0, "body z", 3)
     with pytest.raises(ValueError, match="speed"):
         resp.response_spectrum(v, FRA4, -1.0, [1.0, 2.0])
     with pytest.raises(ValueError, match="omega"):
@@ -188,7 +191,7 @@ def test_bad_input():
 def test_lateral_car_follows_long_alignment():
     from raildyn.vehicles import MANCHESTER_CAR
 
-    v = resp.lateral_vehicle(MANCHESTER_CAR, 30.0)
+    v = MANCHESTER_CAR.linear_system()
     w = np.array([1e-4])
     # a very long alignment wave is followed rigidly: every body moves with the track, nothing rolls;
     # the deviation is O(ω) ~ 1e-4 relative
@@ -198,7 +201,7 @@ def test_lateral_car_follows_long_alignment():
     assert abs(resp.track_frf(v, w, 30.0, "body φ", component="alignment")[0]) < 1e-3
     # the alignment inputs carry no vertical input, the vertical car no alignment
     assert resp.track_frf(v, w, 30.0, "body y", component="vertical")[0] == 0.0
-    assert resp.track_frf(CAR.linear(), w, 30.0, "body z", component="alignment")[0] == 0.0
+    assert resp.track_frf(CAR.linear_system(), w, 30.0, "body z", component="alignment")[0] == 0.0
 
 
 def test_lateral_car_static_cross_level_balances_the_rail_forces():
@@ -206,7 +209,7 @@ def test_lateral_car_static_cross_level_balances_the_rail_forces():
     wheel–rail forces on the four wheelsets must add to zero: Σ [−(Wε/a) y + 2f₂₂ψ − W c/(2a)] = 0."""
     from raildyn.vehicles import MANCHESTER_CAR
 
-    v = resp.lateral_vehicle(MANCHESTER_CAR, 30.0)
+    v = MANCHESTER_CAR.linear_system()
     c = 0.01
     q = np.linalg.solve(v.K, v.GK[:, 4:] @ np.full(4, c))
     ws = MANCHESTER_CAR.wheelset
@@ -224,8 +227,73 @@ def test_lateral_car_static_cross_level_balances_the_rail_forces():
 def test_lateral_car_above_critical_speed_is_refused():
     from raildyn.vehicles import MANCHESTER_CAR
 
+    w = np.linspace(1.0, 60.0, 20)
     with pytest.raises(ValueError, match="critical speed"):
-        resp.lateral_vehicle(MANCHESTER_CAR, 150.0)
+        resp.response_spectrum(MANCHESTER_CAR, FRA4, 150.0, w, "body y", component="alignment")
+    with pytest.raises(ValueError, match="critical speed"):
+        resp.track_frf(MANCHESTER_CAR, w, 150.0, "body y", component="alignment")
+
+
+def _lateral_rms_at(car, speed):
+    """Lateral body acceleration RMS (m/s²) of a car to class-4 alignment, one matrix solve per ω:
+    the reference of the two tests below, written from the car's matrices at ``speed``."""
+    w = np.linspace(0.5, 120.0, 1500)
+    mats = car.matrices(speed)
+    system = car.linear_system()
+    Z = mats.K - w[:, None, None] ** 2 * mats.M + 1j * w[:, None, None] * mats.C
+    X = np.linalg.solve(Z, mats.GK + 1j * w[:, None, None] * mats.GC)  # (n_ω, n, q)
+    tau = system.input_positions / speed
+    alignment = np.array([kind == "alignment" for kind in system.input_kinds], dtype=float)
+    i = system.labels.index("body y")
+    H = -(w**2) * np.sum(X[:, i, :] * alignment * np.exp(-1j * w[:, None] * tau), axis=1)
+    S = np.abs(H) ** 2 * FRA4_ALIGNMENT(w / speed) / speed
+    return float(np.sqrt(np.trapezoid(S, w))), w
+
+
+def test_speed_is_given_once_and_reaches_the_creep_damping():
+    """Wrong answer fixed (issue 14): a lateral car built at 20 m/s and evaluated at 40 m/s gave
+    the RMS of the 20 m/s creep damping (0.244 m/s² instead of 0.391). The speed now enters in one
+    place, the call, and both the delays and the creep damping C₁/V follow it. Reference: the same
+    sum from the car's own matrices at 40 m/s, on the same grid (so 1e-9, rounding only)."""
+    from raildyn.vehicles import MANCHESTER_CAR
+
+    want, w = _lateral_rms_at(MANCHESTER_CAR, 40.0)
+    got = resp.response_spectrum(MANCHESTER_CAR, FRA4_ALIGNMENT, 40.0, w, "body y", component="alignment").rms
+    assert got == pytest.approx(want, rel=1e-9)
+    slow, _ = _lateral_rms_at(MANCHESTER_CAR, 20.0)
+    # the creep damping matters: at 20 m/s the same sum differs by far more than the tolerance
+    assert abs(slow - want) > 0.1 * want
+
+
+def test_rms_over_speeds_honours_the_input_kinds():
+    """Wrong answer fixed (issue 14): rms_over_speeds ignored the inputs' kinds, so on the lateral car
+    it mixed alignment and cross-level inputs into one process (0.083 against 0.154). It now gives
+    response_spectrum's RMS at every speed (rel 1e-12: the same computation) and the reference."""
+    from raildyn.vehicles import MANCHESTER_CAR
+
+    speeds = np.array([25.0, 40.0])
+    want, w = _lateral_rms_at(MANCHESTER_CAR, 40.0)
+    S = FRA4_ALIGNMENT
+    rms = resp.rms_over_speeds(MANCHESTER_CAR, S, speeds, w, "body y", component="alignment")
+    for V, r in zip(speeds, rms, strict=True):
+        assert r == pytest.approx(
+            resp.response_spectrum(MANCHESTER_CAR, S, V, w, "body y", component="alignment").rms, rel=1e-12
+        )
+    assert rms[1] == pytest.approx(want, rel=1e-9)
+
+
+def test_independent_components_add_their_response_spectra():
+    """Alignment and cross-level are independent processes: the spectrum for both is the sum of the
+    two spectra (exactly, rel 1e-12), and neither input kind leaks into the other's response."""
+    from raildyn.vehicles import MANCHESTER_CAR
+
+    w = np.linspace(1.0, 80.0, 200)
+    Sa, Sc = FRA4_ALIGNMENT, FRA4_CROSS_LEVEL
+    both = resp.response_spectrum(MANCHESTER_CAR, {"alignment": Sa, "cross_level": Sc}, 30.0, w, "body y")
+    a = resp.response_spectrum(MANCHESTER_CAR, Sa, 30.0, w, "body y", component="alignment")
+    c = resp.response_spectrum(MANCHESTER_CAR, Sc, 30.0, w, "body y", component="cross_level")
+    np.testing.assert_allclose(both.psd, a.psd + c.psd, rtol=1e-12)
+    assert a.rms > 0 and c.rms > 0
 
 
 def test_time_response_to_a_sinusoid_matches_the_frf():
@@ -236,7 +304,7 @@ def test_time_response_to_a_sinusoid_matches_the_frf():
     omega = 2 * np.pi * V / lam
     t = np.arange(0.0, 40.0, 0.002)
     run = resp.time_response(
-        CAR.linear(),
+        CAR.linear_system(),
         lambda x, r: track.sinusoid(x, A, lam),
         V,
         t,
@@ -245,7 +313,7 @@ def test_time_response_to_a_sinusoid_matches_the_frf():
         profile_rate=lambda x, r: track.sinusoid(x, A, lam, derivative=1),
     )
     tail = run.y[t >= 30.0]
-    H = resp.track_frf(CAR.linear(), np.array([omega]), V, "body z", derivative=2)[0]
+    H = resp.track_frf(CAR.linear_system(), np.array([omega]), V, "body z", derivative=2)[0]
     assert 0.5 * (tail.max() - tail.min()) == pytest.approx(abs(H) * A, rel=1e-3)
 
 
@@ -262,3 +330,28 @@ def test_periodic_profile_slope_is_the_exact_derivative_and_repeats():
     # Whole numbers of periods: the Fourier derivative is exact to rounding (1e-15 of the slope).
     assert np.allclose(slope(x, None), exact, rtol=0, atol=1e-15)
     assert np.allclose(profile(x + n * dx, None), z, rtol=0, atol=1e-15)
+
+
+def test_every_manchester_inertia_turns_about_its_own_axis():
+    """Wrong answer fixed (issue 14): the vertical car's bogie pitch inertia was the frame's roll
+    inertia (1722 kg·m², about x). Iwnicki (1998) gives the frame 1722 about x (roll), 1476 about y
+    (pitch) and 3067 kg·m² about z (yaw); the body 5.68 × 10⁴ (x), 1.97 × 10⁶ (y) and 1.97 × 10⁶
+    (z); the wheelset 1120 about z. Each model takes the inertia of the axis its coordinate turns
+    about. (D. Cantero's TTB-2D, TrainProp_Manchester_BenchMark.m, takes 1476 for the bogie in the
+    vertical plane too.) Exact values: ==."""
+    from raildyn.vehicles import MANCHESTER_CAR
+
+    frame_x, frame_y, frame_z = 1722.0, 1476.0, 3067.0
+    body_x, body_y, body_z = 5.68e4, 1.97e6, 1.97e6
+    assert MANCHESTER_VERTICAL.bogie_pitch_inertia == frame_y  # "bogie θ": pitch, about y
+    assert MANCHESTER_VERTICAL.body_pitch_inertia == body_y
+    assert MANCHESTER_CAR.bogie.frame_yaw_inertia == frame_z  # "frame ψ": yaw, about z
+    assert MANCHESTER_CAR.body_yaw_inertia == body_z
+    assert MANCHESTER_CAR.body_roll_inertia == body_x  # "body φ": roll, about x
+    assert MANCHESTER_CAR.wheelset.yaw_inertia == 1120.0
+    assert frame_x not in (MANCHESTER_VERTICAL.bogie_pitch_inertia, MANCHESTER_CAR.bogie.frame_yaw_inertia)
+    # and the matrix carries it on the bogie's pitch coordinates
+    M = MANCHESTER_VERTICAL.linear_system().M
+    for label in ("bogie1 θ", "bogie2 θ"):
+        i = MANCHESTER_VERTICAL.linear_system().labels.index(label)
+        assert M[i, i] == frame_y

@@ -6,22 +6,18 @@ import scipy.integrate
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from raildyn import stability
+from raildyn import contact, stability
+from raildyn.linear_model import LinearSystem
 from raildyn.vehicles import Bogie
 from raildyn.wheelset import (
-    LateralSystem,
     NonlinearLateral,
     NonlinearWheelset,
     WheelRailContact,
     Wheelset,
     contact_forces,
     creep_terms,
-    kalker_creep_coefficients,
     kinematic_wavelength,
     rigid_bogie_wavelength,
-    saturation_factor,
-    suspended_wheelset,
-    wheelset_matrices,
     wickens_critical_speed,
 )
 
@@ -91,7 +87,8 @@ def test_wheelset_matrices_by_hand():
     # The entries written out from the equations of motion in the docstring of creep_terms.
     ws = Wheelset()
     V = 25.0
-    M, C, K = wheelset_matrices(ws, V)
+    mats = ws.matrices(V)
+    M, C, K = mats.M, mats.C, mats.K
     a, r0, lam, W = ws.half_gauge, ws.rolling_radius, ws.conicity, ws.axle_load
     np.testing.assert_allclose(M, np.diag([ws.mass, ws.yaw_inertia]))
     C_hand = np.array(
@@ -111,10 +108,23 @@ def test_wheelset_matrices_by_hand():
 
 
 def test_kalker_coefficients_scale_with_the_patch():
-    # f₁₁ ∝ c², f₂₃ ∝ c³, f₃₃ ∝ c⁴: doubling both semi-axes multiplies them by 4, 8 and 16.
-    small = np.array(kalker_creep_coefficients(8e10, 3e-3, 4e-3, 4.0, 3.5, 1.5, 1.2))
-    large = np.array(kalker_creep_coefficients(8e10, 6e-3, 8e-3, 4.0, 3.5, 1.5, 1.2))
-    np.testing.assert_allclose(large / small, [4, 4, 8, 16], rtol=1e-14)
+    # f₁₁ ∝ c², f₂₃ ∝ c³, f₃₃ ∝ c⁴: doubling both semi-axes multiplies them by 4, 8 and 16. The
+    # wheelset takes its coefficients from raildyn.contact, the one source of Kalker's law.
+    def coefficients(a, b):
+        f = contact.creep_coefficients(a, b, 8e10, 0.3)
+        return np.array([f.f11, f.f22, f.f23, f.f33])
+
+    np.testing.assert_allclose(coefficients(6e-3, 8e-3) / coefficients(3e-3, 4e-3), [4, 4, 8, 16], rtol=1e-14)
+
+
+def test_default_creep_coefficients_are_kalkers_on_the_hertz_patch():
+    # One source for the law: the default wheelset's f₁₁ … f₃₃ are raildyn.contact's Kalker
+    # coefficients on raildyn.contact's Hertz patch under half the axle load (r₀ = 0.46 m, a rail
+    # crowned with r₀), for the steel of raildyn.constants; identical numbers, so 1e-14.
+    ws = Wheelset()
+    patch = contact.hertz_contact(ws.axle_load / 2, 0.46, np.inf, 0.46, 2.1e11, 0.3)
+    f = contact.creep_coefficients(patch.a, patch.b, 2.1e11 / 2.6, 0.3)
+    np.testing.assert_allclose([ws.f11, ws.f22, ws.f23, ws.f33], [f.f11, f.f22, f.f23, f.f33], rtol=1e-14)
 
 
 # ---------------------------------------------------------------------------
@@ -203,7 +213,7 @@ def test_nonlinear_wheelset_linearises_to_the_linear_model():
     ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
     model = NonlinearWheelset(ws, WheelRailContact(), 40.0)
     J, f0 = _jacobian(model.rhs, np.zeros(4))
-    A = suspended_wheelset(ws).state_matrices([40.0])[0]
+    A = ws.linear_system().state_matrices([40.0])[0]
     np.testing.assert_allclose(f0, 0.0, atol=1e-12)
     np.testing.assert_allclose(J, A, rtol=1e-5, atol=1e-5 * np.abs(A).max())
 
@@ -213,7 +223,7 @@ def test_generic_nonlinear_model_equals_the_wheelset_one():
     ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
     contact = WheelRailContact()
     a = NonlinearWheelset(ws, contact, 55.0)
-    b = NonlinearLateral(suspended_wheelset(ws), contact, 55.0)
+    b = NonlinearLateral(ws.linear_system(), contact, 55.0)
     rng = np.random.default_rng(3)
     for _ in range(20):
         x = rng.normal(size=4) * np.array([8e-3, 5e-3, 0.3, 0.2])
@@ -223,8 +233,10 @@ def test_generic_nonlinear_model_equals_the_wheelset_one():
 @settings(deadline=None, max_examples=50)
 @given(force=st.floats(0.0, 1e7), limit=st.floats(1e3, 1e5))
 def test_saturated_force_never_exceeds_friction_limit(force, limit):
-    # Shen–Hedrick–Elkins: F_sat ≤ μN, F_sat ≤ F (it never amplifies).
-    sat = force * saturation_factor(force, limit)
+    # Shen–Hedrick–Elkins, the law the nonlinear wheelset takes from raildyn.contact: F_sat ≤ μN,
+    # F_sat ≤ F (it never amplifies). Unit f₁₁ and μ = 1, so the linear force is the creepage.
+    unit = contact.CreepCoefficients(1.0, 1.0, 0.0, 0.0)
+    sat = abs(float(contact.shen_hedrick_elkins(force, 0.0, 0.0, limit, 1.0, unit).fx))
     assert sat <= limit * (1 + 1e-12)
     assert sat <= force * (1 + 1e-12)
 
@@ -252,9 +264,9 @@ def test_bad_input():
     with pytest.raises(ValueError, match="rolling_radius"):
         kinematic_wavelength(-0.46, 0.75, 0.1)
     with pytest.raises(ValueError, match="speed"):
-        wheelset_matrices(Wheelset(), 0.0)
+        Wheelset().matrices(0.0)
     with pytest.raises(ValueError, match="speed"):
-        wheelset_matrices(Wheelset(), -3.0)
+        Wheelset().matrices(-3.0)
     with pytest.raises(ValueError, match="mass"):
         Wheelset(mass=0.0)
     with pytest.raises(ValueError, match="friction"):
@@ -263,17 +275,17 @@ def test_bad_input():
         WheelRailContact(rolling_radius_difference=0.3)
     with pytest.raises(ValueError, match="speed"):
         NonlinearWheelset(speed=0.0)
-    with pytest.raises(TypeError, match="Wheelset"):
-        suspended_wheelset("wheelset")
+    with pytest.raises(TypeError, match="LinearModel"):
+        stability.as_linear_system("wheelset")
 
 
 def test_lateral_system_speeds_must_be_positive():
-    system = suspended_wheelset(Wheelset())
-    assert isinstance(system, LateralSystem)
+    system = Wheelset().linear_system()
+    assert isinstance(system, LinearSystem)
     with pytest.raises(ValueError, match="speeds"):
         system.state_matrices([10.0, 0.0])
 
 
 def test_creep_terms_vanish_with_the_creep_coefficients():
-    C1, K_creep, _ = creep_terms(Wheelset(f11=0.0, f22=0.0, f23=0.0, f33=0.0))
-    assert not C1.any() and not K_creep.any()
+    terms = creep_terms(Wheelset(f11=0.0, f22=0.0, f23=0.0, f33=0.0))
+    assert not terms.C1.any() and not terms.K_creep.any()

@@ -22,7 +22,7 @@ def test_ride_status_gives_the_frequency_domain_index_and_a_matching_run():
     wz_fd, wz_td = (float(x) for x in re.findall(r"Wz ([0-9.]+)", text))
     w = np.linspace(0.2, 2 * np.pi * 30, 3000)
     spec = response_spectrum(
-        MANCHESTER_VERTICAL.linear(), lambda o: track.fra_psd("vertical", 4, o), 120 / 3.6, w, "body z", 2
+        MANCHESTER_VERTICAL.linear_system(), lambda o: track.fra_psd("vertical", 4, o), 120 / 3.6, w, "body z", 2
     )
     want = ride.ride_quality(spec.psd, w)
     # printed to 3 decimals and 2 decimals; grids of 1200 and 3000 points agree to < 0.1 %

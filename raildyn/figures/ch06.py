@@ -20,7 +20,7 @@ from raildyn.vehicles import MANCHESTER_VERTICAL, FreightCar, response_spectrum,
 def ride_spectra() -> Figure:
     fig = new_figure(figsize=(9.5, 3.8))
     ax_s, ax_w = fig.subplots(1, 2)
-    vehicle = MANCHESTER_VERTICAL.linear()
+    vehicle = MANCHESTER_VERTICAL.linear_system()
     f = np.linspace(0.05, 30.0, 1500)
     w = 2 * np.pi * f
     for i, kmh in enumerate((80, 120, 160)):
@@ -60,7 +60,7 @@ def rock_figure() -> Figure:
     ax = fig.subplots()
     speeds = np.linspace(20.0, 70.0, 16) / 3.6
     for i, friction in enumerate((2e3, 6e3, 15e3)):
-        r = rock_and_roll(FreightCar(wedge_friction=friction), speeds, cycles=12, dt=0.008)
+        r = rock_and_roll(FreightCar(wedge_friction=friction), speeds, cycles=12)
         ax.plot(
             3.6 * speeds,
             np.degrees(r.roll_amplitude),

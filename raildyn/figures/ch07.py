@@ -56,7 +56,7 @@ def critical_speed_map() -> Figure:
     conicity = np.linspace(0.05, 0.5, 8)
     stiffness = np.geomspace(2e6, 1.2e8, 8)
     result = stability.critical_speed_map(
-        lambda lam, k: car.with_(conicity=lam, yaw_stiffness=k),
+        lambda lam, k: car.replace(conicity=lam, yaw_stiffness=k),
         conicity,
         stiffness,
         (1.0, 200.0),

@@ -8,6 +8,7 @@ from raildyn.vehicles.freight import (
     FreightCar,
     RockAndRoll,
     gdu_ore_car,
+    rk4_step_limit,
     rock_and_roll,
     wedge_energy_per_cycle,
     wedge_friction_force,
@@ -15,27 +16,25 @@ from raildyn.vehicles.freight import (
 from raildyn.vehicles.lateral import COOPERRIDER_CAR, MANCHESTER_CAR, Bogie, Car, cooperrider_car
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
 from raildyn.vehicles.response import (
-    LinearVehicle,
     ResponseSpectrum,
     TimeResponse,
-    lateral_vehicle,
     periodic_profile,
     response_spectrum,
     rms_over_speeds,
     time_response,
     track_frf,
 )
-from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, VerticalCar
+from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, BodyFrequencies, VerticalCar
 
 __all__ = [
     "COOPERRIDER_CAR",
     "MANCHESTER_CAR",
+    "BodyFrequencies",
     "Bogie",
     "Car",
     "DEFAULT_LOCOMOTIVE",
     "FreightCar",
     "GDU_ORE_CAR",
-    "LinearVehicle",
     "Locomotive",
     "MANCHESTER_VERTICAL",
     "ResponseSpectrum",
@@ -44,10 +43,10 @@ __all__ = [
     "VerticalCar",
     "cooperrider_car",
     "gdu_ore_car",
-    "lateral_vehicle",
     "periodic_profile",
     "response_spectrum",
     "rms_over_speeds",
+    "rk4_step_limit",
     "rock_and_roll",
     "time_response",
     "track_frf",

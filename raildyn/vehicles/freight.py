@@ -30,21 +30,36 @@ Two parameter sets:
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
 from raildyn import _checks
 from raildyn import track as _track
+from raildyn.constants import GRAVITY
+from raildyn.errors import SolverError
 from raildyn.integrators import rk4
+from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.suspension import coulomb_friction
-from raildyn.vehicles.response import GRAVITY, LinearVehicle, _Assembler
+from raildyn.vehicles.vertical import BodyFrequencies
+
+__all__ = [
+    "GDU_ORE_CAR",
+    "LABELS",
+    "FreightCar",
+    "RockAndRoll",
+    "gdu_ore_car",
+    "rk4_step_limit",
+    "rock_and_roll",
+    "wedge_energy_per_cycle",
+    "wedge_friction_force",
+]
 
 LABELS = ("body z", "body θ", "body φ")
 
 
 @dataclass(frozen=True)
-class FreightCar:
+class FreightCar(LinearModelBase):
     """A loaded hopper car on two three-piece trucks.
 
     Attributes
@@ -69,6 +84,9 @@ class FreightCar:
         Per nest, N/m: a static deflection of 0.06 m under a quarter of the body.
     wedge_friction : float
         Friction force of the wedges of one nest, N.
+    equivalent_damping : float
+        The viscous damper (N·s/m) that stands for each nest's wedges in the linear
+        model (:meth:`linear_system`); default none, the wedges sliding freely.
     """
 
     body_mass: float = 121_000.0
@@ -80,11 +98,12 @@ class FreightCar:
     semi_spring_spacing: float = 1.0
     nest_stiffness: float = 121_000.0 * GRAVITY / 4 / 0.06
     wedge_friction: float = 6.0e3
+    equivalent_damping: float = 0.0
 
     def __post_init__(self):
         for name in self.__dataclass_fields__:
             value = getattr(self, name)
-            if name in ("wedge_friction", "cg_height"):
+            if name in ("wedge_friction", "cg_height", "equivalent_damping"):
                 _checks.nonnegative(name, value)
             else:
                 _checks.positive(name, value)
@@ -93,9 +112,6 @@ class FreightCar:
                 f"cg_height {self.cg_height!r} m leaves no roll stiffness: 4 k b² = "
                 f"{4 * self.nest_stiffness * self.semi_spring_spacing**2:.4g} N·m/rad <= m g h"
             )
-
-    def with_(self, **changes) -> FreightCar:
-        return replace(self, **changes)
 
     @property
     def roll_stiffness(self) -> float:
@@ -109,19 +125,24 @@ class FreightCar:
         """Roll inertia about the spring plane, I + m h², kg·m²."""
         return self.body_roll_inertia + self.body_mass * self.cg_height**2
 
-    def natural_frequencies(self) -> dict:
-        """Undamped bounce, pitch and roll frequencies on the springs alone (wedges sliding freely), Hz."""
+    def natural_frequencies(self) -> BodyFrequencies:
+        """Undamped bounce, pitch and roll frequencies on the springs alone (wedges sliding freely).
+
+        Returns
+        -------
+        BodyFrequencies
+        """
         k, s = self.nest_stiffness, self.semi_truck_spacing
-        return {
-            "bounce": np.sqrt(4 * k / self.body_mass) / (2 * np.pi),
-            "pitch": np.sqrt(4 * k * s**2 / self.body_pitch_inertia) / (2 * np.pi),
-            "roll": np.sqrt(self.roll_stiffness / self.roll_inertia_spring_plane) / (2 * np.pi),
-        }
+        return BodyFrequencies(
+            bounce_hz=float(np.sqrt(4 * k / self.body_mass) / (2 * np.pi)),
+            pitch_hz=float(np.sqrt(4 * k * s**2 / self.body_pitch_inertia) / (2 * np.pi)),
+            roll_hz=float(np.sqrt(self.roll_stiffness / self.roll_inertia_spring_plane) / (2 * np.pi)),
+        )
 
     def roll_resonance_speed(self, rail_length: float = _track.RAIL_LENGTH) -> float:
         """Speed (m/s) at which staggered joints, one cross-level cycle per rail length, meet the roll
         frequency: V = f_roll L."""
-        return self.natural_frequencies()["roll"] * _checks.positive("rail_length", rail_length)
+        return self.natural_frequencies().roll_hz * _checks.positive("rail_length", rail_length)
 
     def roll_input_factor(self, rail_length: float = _track.RAIL_LENGTH) -> float:
         """|cos(2π s/L)|: the share of a cross-level wave of length L that the two trucks, 2s apart,
@@ -145,20 +166,27 @@ class FreightCar:
                 out.append((np.array([1.0, x, y]), h))
         return out
 
-    def linear(self, equivalent_damping: float = 0.0) -> LinearVehicle:
-        """The linear model, each nest's wedges replaced by a viscous damper (N·s/m, default none)."""
-        c = _checks.nonnegative("equivalent_damping", equivalent_damping)
-        asm = _Assembler(LABELS, 8)
+    def linear_system(self) -> LinearSystem:
+        """The linear model, each nest's wedges replaced by the viscous ``equivalent_damping``.
+
+        Eight inputs: the left and right rail heights under each of the four axles.
+
+        Returns
+        -------
+        LinearSystem
+        """
+        c = self.equivalent_damping
+        asm = Assembler(LABELS, 8)
         asm.mass("body z", self.body_mass)
         asm.mass("body θ", self.body_pitch_inertia)
         asm.mass("body φ", self.roll_inertia_spring_plane)
         for g, h in self.nests():
             asm.element(dict(zip(LABELS, g, strict=True)), self.nest_stiffness, c, dict(enumerate(h)))
-        asm.K[2, 2] -= self.body_mass * GRAVITY * self.cg_height
+        asm.block(["body φ"], K=[[-self.body_mass * GRAVITY * self.cg_height]])
         positions = np.repeat(self.axle_positions, 2)
         rails = np.tile([1.0, -1.0], 4)
         weight = np.array([-GRAVITY * self.body_mass, 0.0, 0.0])
-        return LinearVehicle(asm.M, asm.C, asm.K, asm.GK, asm.GC, LABELS, positions, rails, weight)
+        return asm.system(input_positions=positions, input_rails=rails, gravity_load=weight)
 
 
 @dataclass(frozen=True)
@@ -194,7 +222,7 @@ def rock_and_roll(
     half_width: float = 1.0,
     rail_length: float = _track.RAIL_LENGTH,
     cycles: int = 40,
-    dt: float = 0.005,
+    dt: float | None = None,
     velocity_scale: float = 0.002,
     progress: bool = False,
 ) -> RockAndRoll:
@@ -204,14 +232,49 @@ def rock_and_roll(
     block-diagonal system; the friction is the smooth law F tanh(v/v_ε). The run
     lasts ``cycles`` rail lengths at the lowest speed; the amplitude is taken over
     its last quarter.
+
+    RK4 is explicit: it is stable only while every eigenvalue λ of the car with its
+    stiffest wedge law — sticking, the tanh's slope F/v_ε as a viscous damper —
+    keeps |1 + z + z²/2 + z³/6 + z⁴/24| ≤ 1 at z = λ Δt. A larger ``dt`` is
+    refused before the run with the largest stable step in the message; a run
+    whose roll still becomes non-finite raises :class:`raildyn.errors.SolverError`.
+
+    Parameters
+    ----------
+    car : FreightCar
+    speeds : array_like
+        m/s, > 0.
+    depth, half_width : float
+        Dip of each joint (m) and its half-length along the rail (m).
+    rail_length : float
+        m.
+    cycles : int
+        Rail lengths run at the lowest speed (≥ 4).
+    dt : float, optional
+        Time step, s. Default: 8 ms, or 0.9 of the stability limit below (:func:`rk4_step_limit`)
+        where that is smaller (stiff wedges).
+    velocity_scale : float
+        v_ε of the smooth friction law, m/s.
+    progress : bool
+        Show a progress bar.
+
+    Returns
+    -------
+    RockAndRoll
     """
     V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True)
     cycles = _checks.integer("cycles", cycles, low=4)
-    dt = _checks.positive("dt", dt)
     eps = _checks.positive("velocity_scale", velocity_scale)
     L = _checks.positive("rail_length", rail_length)
-    lin = car.linear()
-    n, m = lin.n, V.size
+    limit = rk4_step_limit(car.replace(equivalent_damping=car.wedge_friction / eps))
+    dt = min(0.008, 0.9 * limit) if dt is None else _checks.positive("dt", dt)
+    if dt > limit:
+        raise ValueError(
+            f"dt must be at most {limit:.4g} s for RK4 to stay stable on this car with sticking wedges "
+            f"(slope F/v_ε = {car.wedge_friction / eps:.4g} N·s/m per nest), got {dt!r}"
+        )
+    lin = car.linear_system()
+    n, m = lin.size, V.size
     M = np.kron(np.eye(m), lin.M)
     K = np.kron(np.eye(m), lin.K)
     C = np.zeros_like(M)
@@ -246,9 +309,48 @@ def rock_and_roll(
         bar.update(1)
         bar.close()
     roll = run.x[2::n]
+    if not np.all(np.isfinite(roll)):
+        step = int(np.argmin(np.all(np.isfinite(roll), axis=0)))
+        raise SolverError("the roll became non-finite: RK4 went unstable", step=step, time=float(t[step]))
     tail = t >= 0.75 * t[-1]
     amp = 0.5 * (roll[:, tail].max(axis=1) - roll[:, tail].min(axis=1))
     return RockAndRoll(V, amp, car.roll_resonance_speed(L), t, roll)
+
+
+def rk4_step_limit(car: FreightCar) -> float:
+    """The largest time step (s) at which classical RK4 is stable on the car's linear model.
+
+    RK4 multiplies each mode by R(z) = 1 + z + z²/2 + z³/6 + z⁴/24 per step,
+    z = λ Δt; the run is stable while |R(z)| ≤ 1 for every eigenvalue λ of the
+    first-order system (Butcher 2008, §238). The step is found by bisection.
+
+    Parameters
+    ----------
+    car : FreightCar
+        Its ``equivalent_damping`` stands for the wedges.
+
+    Returns
+    -------
+    float
+        s.
+
+    Examples
+    --------
+    >>> round(float(rk4_step_limit(FreightCar(equivalent_damping=3.0e6))), 4)
+    0.0138
+    """
+    lam = np.linalg.eigvals(car.matrices(1.0).state_matrix())
+    lam = lam[np.abs(lam) > 0]
+
+    def stable(h):
+        z = lam * h
+        return np.all(np.abs(1 + z + z**2 / 2 + z**3 / 6 + z**4 / 24) <= 1 + 1e-12)
+
+    lo, hi = 0.0, 2.9 / np.abs(lam).max()  # |R| > 1 beyond |z| = 2.83 in every direction
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if stable(mid) else (lo, mid)
+    return lo
 
 
 def wedge_energy_per_cycle(

@@ -6,8 +6,10 @@
 * :class:`Car` — a car body (lateral, yaw, roll) on two such bogies: 15 degrees
   of freedom.
 
-Both give a :class:`~raildyn.wheelset.LateralSystem` (``linear_system()``) for
-:mod:`raildyn.stability`, and a nonlinear counterpart (``nonlinear(speed)``).
+Both are linear models of the one protocol (:class:`raildyn.linear_model.LinearModel`:
+``linear_system()``, ``matrices(V)``, ``state_space(V)``, ``replace(...)``), driven
+by the alignment and cross-level under each wheelset, for :mod:`raildyn.stability`
+and :mod:`raildyn.vehicles.response`; ``nonlinear(speed)`` gives the nonlinear counterpart.
 The default parameters are those of the Manchester benchmark vehicle
 (Iwnicki 1998), cited beside each value; the wheel–rail contact is the cone of
 :class:`~raildyn.wheelset.Wheelset`. A second parameter set,
@@ -25,14 +27,11 @@ import numpy as np
 
 from raildyn import contact
 from raildyn._checks import nonnegative, positive
-from raildyn.wheelset import (
-    GRAVITY,
-    LateralSystem,
-    NonlinearLateral,
-    WheelRailContact,
-    Wheelset,
-    creep_terms,
-)
+from raildyn.constants import GRAVITY
+from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
+from raildyn.wheelset import NonlinearLateral, WheelRailContact, Wheelset, add_wheelset
+
+__all__ = ["COOPERRIDER_CAR", "MANCHESTER_CAR", "Bogie", "Car", "cooperrider_car"]
 
 # Manchester benchmark vehicle 1 (Iwnicki 1998): lateral primary springs 1.0 m either side of the
 # centre line (semi-spacing), secondary springs 1.0 m either side; semi-wheelbase 1.28 m; semi
@@ -43,49 +42,8 @@ _B1 = 1.0
 _B2 = 1.0
 
 
-class _Assembly:
-    """M, C₀, C₁, K of a lateral model, built element by element."""
-
-    def __init__(self, labels: list[str]):
-        self.labels = list(labels)
-        n = len(labels)
-        self.M = np.zeros((n, n))
-        self.C0 = np.zeros((n, n))
-        self.C1 = np.zeros((n, n))
-        self.K = np.zeros((n, n))
-        self.wheelsets: list = []
-
-    def index(self, label: str) -> int:
-        return self.labels.index(label)
-
-    def mass(self, label: str, value: float) -> None:
-        i = self.index(label)
-        self.M[i, i] += value
-
-    def element(self, terms: dict[str, float], stiffness: float, damping: float = 0.0) -> None:
-        """A spring and damper acting on the relative displacement d = Σ coefficient · coordinate."""
-        g = np.zeros(len(self.labels))
-        for label, coefficient in terms.items():
-            g[self.index(label)] += coefficient
-        self.K += stiffness * np.outer(g, g)
-        self.C0 += damping * np.outer(g, g)
-
-    def wheelset(self, y: str, psi: str, ws: Wheelset) -> None:
-        """The wheel–rail terms of one wheelset on its two coordinates."""
-        C1, K_creep, K_gravity = creep_terms(ws)
-        idx = np.ix_([self.index(y), self.index(psi)], [self.index(y), self.index(psi)])
-        self.C1[idx] += C1
-        self.K[idx] += K_creep + K_gravity
-        self.mass(y, ws.mass)
-        self.mass(psi, ws.yaw_inertia)
-        self.wheelsets.append((self.index(y), self.index(psi), ws))
-
-    def system(self) -> LateralSystem:
-        return LateralSystem(self.M, self.C0, self.C1, self.K, tuple(self.labels), tuple(self.wheelsets))
-
-
 @dataclass(frozen=True)
-class Bogie:
+class Bogie(LinearModelBase):
     """A two-axle bogie: frame and wheelsets, primary and secondary suspension (Manchester vehicle).
 
     The primary suspension of each wheelset is the one in its
@@ -130,8 +88,18 @@ class Bogie:
         ):
             nonnegative(name, getattr(self, name))
 
-    def with_(self, **changes) -> Bogie:
-        """A copy with bogie or wheelset fields changed (``conicity=...`` reaches the wheelset)."""
+    def replace(self, **changes) -> Bogie:
+        """A copy with bogie or wheelset fields changed (``conicity=...`` reaches the wheelset).
+
+        Parameters
+        ----------
+        **changes
+            Fields of the bogie or of its :class:`~raildyn.wheelset.Wheelset`.
+
+        Returns
+        -------
+        Bogie
+        """
         ws_fields = set(Wheelset.__dataclass_fields__)
         ws_changes = {k: v for k, v in changes.items() if k in ws_fields}
         own = {k: v for k, v in changes.items() if k not in ws_fields}
@@ -139,16 +107,34 @@ class Bogie:
             own["wheelset"] = self.wheelset.replace(**ws_changes)
         return replace(self, **own)
 
-    def _add(self, asm: _Assembly, tag: str, body: dict[str, float], body_yaw: str | None) -> None:
-        """Frame and wheelsets of bogie ``tag``; ``body`` gives the lateral displacement of its
-        secondary seat as coefficients of the body coordinates, ``body_yaw`` the body's yaw coordinate."""
+    def assemble(
+        self, asm: Assembler, tag: str, body: dict[str, float], body_yaw: str | None, first_input: int
+    ) -> None:
+        """Add the frame and wheelsets of bogie ``tag`` to an assembly.
+
+        Parameters
+        ----------
+        asm : Assembler
+        tag : str
+            Suffix of the bogie's labels ("frame{tag} y", "wheelset{tag}1 y", ...).
+        body : dict of str to float
+            The lateral displacement of the secondary seat as coefficients of the body coordinates.
+        body_yaw : str or None
+            The body's yaw coordinate, if the body moves.
+        first_input : int
+            Index of the leading wheelset's alignment input; the trailing one's is next, and
+            their cross-level inputs follow the alignment inputs of every wheelset
+            (``asm.GK.shape[1] // 2`` further on).
+        """
         ws, b = self.wheelset, self.semi_wheelbase
         fy, fpsi = f"frame{tag} y", f"frame{tag} ψ"
         asm.mass(fy, self.frame_mass)
         asm.mass(fpsi, self.frame_yaw_inertia)
+        half = asm.GK.shape[1] // 2
         for k, x in ((1, b), (2, -b)):
             wy, wpsi = f"wheelset{tag}{k} y", f"wheelset{tag}{k} ψ"
-            asm.wheelset(wy, wpsi, ws)
+            j = first_input + k - 1
+            add_wheelset(asm, wy, wpsi, ws, alignment=j, cross_level=half + j)
             # Primary: lateral relative displacement at the axle, relative yaw.
             asm.element({wy: 1.0, fy: -1.0, fpsi: -x}, ws.lateral_stiffness, ws.lateral_damping)
             asm.element({wpsi: 1.0, fpsi: -1.0}, ws.yaw_stiffness, ws.yaw_damping)
@@ -157,20 +143,42 @@ class Bogie:
         yaw = {fpsi: 1.0} | ({body_yaw: -1.0} if body_yaw else {})
         asm.element(yaw, self.secondary_yaw_stiffness, self.secondary_yaw_damping)
 
-    def linear_system(self) -> LateralSystem:
-        """The bogie under a car body that runs straight (the body does not move): 6 coordinates."""
+    def linear_system(self) -> LinearSystem:
+        """The bogie under a car body that runs straight (the body does not move): 6 coordinates.
+
+        Four track inputs: the alignment at the leading and trailing wheelsets, then
+        the cross-level there (m).
+
+        Returns
+        -------
+        LinearSystem
+        """
         labels = ["frame y", "frame ψ", "wheelset1 y", "wheelset1 ψ", "wheelset2 y", "wheelset2 ψ"]
-        asm = _Assembly(labels)
-        self._add(asm, "", {}, None)
-        return asm.system()
+        asm = Assembler(labels, n_inputs=4)
+        self.assemble(asm, "", {}, None, 0)
+        b = self.semi_wheelbase
+        kinds = ("alignment",) * 2 + ("cross_level",) * 2
+        return asm.system(input_positions=np.tile([0.0, 2 * b], 2), input_kinds=kinds)
 
     def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The bogie with nonlinear wheel–rail contact at ``speed`` (m/s)."""
+        """The bogie with nonlinear wheel–rail contact at ``speed``.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s.
+        contact : WheelRailContact, optional
+            The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
+
+        Returns
+        -------
+        NonlinearLateral
+        """
         return NonlinearLateral(self.linear_system(), contact or WheelRailContact(), speed)
 
 
 @dataclass(frozen=True)
-class Car:
+class Car(LinearModelBase):
     """A passenger car: body (lateral, yaw, roll) on two bogies; the Manchester benchmark vehicle.
 
     Attributes
@@ -211,41 +219,83 @@ class Car:
         for name in ("body_height", "roll_stiffness", "roll_damping"):
             nonnegative(name, getattr(self, name))
 
-    def with_(self, **changes) -> Car:
-        """A copy with car, bogie or wheelset fields changed."""
+    def replace(self, **changes) -> Car:
+        """A copy with car, bogie or wheelset fields changed.
+
+        Parameters
+        ----------
+        **changes
+            Fields of the car, of its :class:`Bogie` or of their :class:`~raildyn.wheelset.Wheelset`.
+
+        Returns
+        -------
+        Car
+        """
         own_fields = set(Car.__dataclass_fields__)
         own = {k: v for k, v in changes.items() if k in own_fields}
         rest = {k: v for k, v in changes.items() if k not in own_fields}
         if rest:
-            own["bogie"] = (own.get("bogie") or self.bogie).with_(**rest)
+            own["bogie"] = (own.get("bogie") or self.bogie).replace(**rest)
         return replace(self, **own)
 
     @property
     def wheelset(self) -> Wheelset:
+        """The wheelset of the car's bogies."""
         return self.bogie.wheelset
 
-    def linear_system(self) -> LateralSystem:
-        """The 15-coordinate car: body y, ψ, φ; each frame y, ψ; each wheelset y, ψ."""
+    @property
+    def axle_positions(self) -> np.ndarray:
+        """Distances of the four wheelsets behind the leading one, m: 0, 2b, 2s, 2s + 2b."""
+        b, s = self.bogie.semi_wheelbase, self.semi_bogie_spacing
+        return np.array([0.0, 2 * b, 2 * s, 2 * s + 2 * b])
+
+    def linear_system(self) -> LinearSystem:
+        """The 15-coordinate car (body y, ψ, φ; each frame y, ψ; each wheelset y, ψ) and its track inputs.
+
+        Eight inputs: the alignment y_a (m) at each of the four wheelsets, then the
+        cross-level c (m) there, coupled to each wheelset by
+        :func:`~raildyn.wheelset.add_wheelset`. The bogie frames, which the model
+        keeps upright on the track, tilt with the mean of their two wheelsets, so
+        the secondary roll springs act on φ − c̄/(2a).
+
+        Returns
+        -------
+        LinearSystem
+        """
         labels = ["body y", "body ψ", "body φ"]
         for tag in ("1", "2"):
             labels += [f"frame{tag} y", f"frame{tag} ψ"]
             labels += [f"wheelset{tag}{k} {q}" for k in (1, 2) for q in ("y", "ψ")]
-        asm = _Assembly(labels)
+        asm = Assembler(labels, n_inputs=8)
         asm.mass("body y", self.body_mass)
         asm.mass("body ψ", self.body_yaw_inertia)
         asm.mass("body φ", self.body_roll_inertia)
         h, s = self.body_height, self.semi_bogie_spacing
-        for tag, x in (("1", s), ("2", -s)):
+        tilt = 0.5 / (2 * self.wheelset.half_gauge)  # frame roll per metre of cross-level at each wheelset
+        for first, (tag, x) in zip((0, 2), (("1", s), ("2", -s)), strict=True):
             # The secondary seat is h below the body's centre: it moves y + xψ + hφ.
-            self.bogie._add(asm, tag, {"body y": 1.0, "body ψ": x, "body φ": h}, "body ψ")
-            asm.element({"body φ": 1.0}, self.roll_stiffness, self.roll_damping)
+            self.bogie.assemble(asm, tag, {"body y": 1.0, "body ψ": x, "body φ": h}, "body ψ", first)
+            frame_tilt = {4 + first: tilt, 5 + first: tilt}
+            asm.element({"body φ": 1.0}, self.roll_stiffness, self.roll_damping, inputs=frame_tilt)
         # The body's weight acting above the roll centre (the secondary seat) lowers its roll stiffness.
-        i = asm.index("body φ")
-        asm.K[i, i] -= self.body_mass * GRAVITY * h
-        return asm.system()
+        asm.block(["body φ"], K=[[-self.body_mass * GRAVITY * h]])
+        kinds = ("alignment",) * 4 + ("cross_level",) * 4
+        return asm.system(input_positions=np.tile(self.axle_positions, 2), input_kinds=kinds)
 
     def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The car with nonlinear wheel–rail contact at ``speed`` (m/s)."""
+        """The car with nonlinear wheel–rail contact at ``speed``.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s.
+        contact : WheelRailContact, optional
+            The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
+
+        Returns
+        -------
+        NonlinearLateral
+        """
         return NonlinearLateral(self.linear_system(), contact or WheelRailContact(), speed)
 
 

@@ -15,18 +15,21 @@ near 1.4 Hz).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
 from raildyn import _checks
-from raildyn.vehicles.response import GRAVITY, LinearVehicle, _Assembler
+from raildyn.constants import GRAVITY
+from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
+
+__all__ = ["DEFAULT_LOCOMOTIVE", "LABELS", "Locomotive"]
 
 LABELS = ("body z", "body θ", "truck1 z", "truck1 θ", "truck2 z", "truck2 θ")
 
 
 @dataclass(frozen=True)
-class Locomotive:
+class Locomotive(LinearModelBase):
     """A six-axle locomotive, vertical.
 
     Attributes
@@ -70,9 +73,6 @@ class Locomotive:
                 f"got {self.axle_spacing!r}"
             )
 
-    def with_(self, **changes) -> Locomotive:
-        return replace(self, **changes)
-
     @property
     def axle_positions(self) -> np.ndarray:
         """Distances of the six axles behind the leading one, m."""
@@ -80,9 +80,14 @@ class Locomotive:
         front = np.array([0.0, a, 2 * a])
         return np.concatenate([front, front + 2 * s])
 
-    def linear(self) -> LinearVehicle:
-        """The 6-coordinate model with its six axle inputs."""
-        asm = _Assembler(LABELS, 6)
+    def linear_system(self) -> LinearSystem:
+        """The 6-coordinate model with its six axle inputs (rail heights, both rails).
+
+        Returns
+        -------
+        LinearSystem
+        """
+        asm = Assembler(LABELS, 6)
         asm.mass("body z", self.body_mass)
         asm.mass("body θ", self.body_pitch_inertia)
         a, s = self.axle_spacing, self.semi_truck_spacing
@@ -98,9 +103,7 @@ class Locomotive:
                 asm.element({z: 1.0, th: xa}, self.primary_stiffness, self.primary_damping, inputs={j: 1.0})
                 j += 1
         weight = -GRAVITY * np.diag(asm.M) * np.array([1, 0, 1, 0, 1, 0])
-        return LinearVehicle(
-            asm.M, asm.C, asm.K, asm.GK, asm.GC, LABELS, self.axle_positions, np.zeros(6), weight
-        )
+        return asm.system(input_positions=self.axle_positions, gravity_load=weight)
 
 
 DEFAULT_LOCOMOTIVE = Locomotive()

@@ -1,34 +1,29 @@
-"""Linear vehicle models driven by the track: FRFs, response spectra and time histories (chapter 6).
+"""Linear vehicles driven by the track: FRFs, response spectra and time histories (chapter 6).
 
-A vehicle on rigid wheel–rail contact is a linear system whose inputs are the
-rail heights under its wheels:
+Every vehicle here is a linear model of the one protocol
+(:class:`raildyn.linear_model.LinearModel`), whose system is
 
-    M q'' + C q' + K q = G_K w(t) + G_C w'(t),
+    M q'' + C(V) q' + K q = G_K w(t) + G_C w'(t),
 
-q the body coordinates, w the q_in track heights at the wheels. Every spring k
-(damper c) acts on a relative displacement d = g·q − h·w, so it adds k g gᵀ to
-K and k g hᵀ to G_K (c to C and G_C). Input j is the track met at distance d_j
-behind the leading axle: w_j(t) = u(t − τ_j) with τ_j = d_j/V, and on the rail
-given by ``input_rails`` (+1 left, −1 right, 0 both: the centreline).
+q the body coordinates, w the track inputs under its wheels (rail heights,
+alignment or cross-level, :data:`raildyn.linear_model.INPUT_KINDS`). Input j is
+the track met at distance d_j behind the leading axle: w_j(t) = u(t − τ_j) with
+τ_j = d_j/V. The speed V is given once, to each function here, and reaches both
+the delays and the creep damping of the lateral models.
 
-* :class:`LinearVehicle` — the matrices and their inputs;
-* :meth:`LinearVehicle.axle_frf` — H_j(ω), (output)/(m of input j), all
-  frequencies in one batched solve;
-* :func:`track_frf` — H(ω) = Σ_j H_j(ω) e^{−iωτ_j}: from the track met by the
+* :func:`track_frf` — H(ω) = Σ_j a_j H_j(ω) e^{−iωτ_j}: from the track met by the
   leading axle to the output;
-* :func:`response_spectrum` — response PSD and RMS for a spatial track spectrum
-  at speed V (:func:`raildyn.track.synthesis.excitation_csd` and
+* :func:`response_spectrum` — response PSD and RMS for spatial track spectra at
+  speed V, one per irregularity component, the components independent
+  (:func:`raildyn.track.synthesis.excitation_csd` and
   :func:`raildyn.random_vibration.response_psd`);
-* :func:`time_response` — the history over a track profile by
-  ``scipy.signal.lsim``;
-* :func:`rms_over_speeds` — RMS at many speeds from one batched FRF solve;
-* :func:`lateral_vehicle` — the lateral car of chapter 7 driven by alignment
-  and cross-level.
+* :func:`rms_over_speeds` — the RMS of :func:`response_spectrum` at many speeds;
+* :func:`time_response` — the history over a track profile by ``scipy.signal.lsim``.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -36,146 +31,77 @@ import numpy as np
 from raildyn import _checks
 from raildyn import random_vibration as rv
 from raildyn import track as _track
+from raildyn.linear_model import INPUT_KINDS, LinearSystem, as_linear_system
 
-GRAVITY = 9.81  # m/s²
-
-
-class _Assembler:
-    """M, C, K, G_K, G_C of a vehicle, built spring by spring."""
-
-    def __init__(self, labels, n_inputs):
-        self.labels = list(labels)
-        n = len(self.labels)
-        self.M = np.zeros((n, n))
-        self.C = np.zeros((n, n))
-        self.K = np.zeros((n, n))
-        self.GK = np.zeros((n, n_inputs))
-        self.GC = np.zeros((n, n_inputs))
-
-    def vector(self, terms: dict) -> np.ndarray:
-        g = np.zeros(len(self.labels))
-        for label, value in terms.items():
-            g[self.labels.index(label)] += value
-        return g
-
-    def mass(self, label, value):
-        i = self.labels.index(label)
-        self.M[i, i] += value
-
-    def element(self, body: dict, stiffness, damping=0.0, inputs: dict | None = None):
-        """A spring and damper on d = Σ body coefficients · q − Σ input coefficients · w."""
-        g = self.vector(body)
-        self.K += stiffness * np.outer(g, g)
-        self.C += damping * np.outer(g, g)
-        if inputs:
-            h = np.zeros(self.GK.shape[1])
-            for j, value in inputs.items():
-                h[j] += value
-            self.GK += stiffness * np.outer(g, h)
-            self.GC += damping * np.outer(g, h)
+__all__ = [
+    "ResponseSpectrum",
+    "TimeResponse",
+    "periodic_profile",
+    "response_spectrum",
+    "rms_over_speeds",
+    "time_response",
+    "track_frf",
+]
 
 
-@dataclass(frozen=True)
-class LinearVehicle:
-    """A linear vehicle model with track inputs.
+def _rail_weights(system: LinearSystem, component: str) -> np.ndarray:
+    """a_j: how an irregularity of the given component reaches each input.
 
-    Attributes
-    ----------
-    M, C, K : ndarray, (n, n)
-        kg (kg·m²), N·s/m, N/m (per radian for rotations).
-    GK, GC : ndarray, (n, q)
-        Forces from the track heights and their rates, N/m and N·s/m.
-    labels : tuple of str
-        Names of the n coordinates (m or rad).
-    input_positions : ndarray, (q,)
-        Distance of each input behind the leading axle, m.
-    input_rails : ndarray, (q,)
-        +1 left rail, −1 right rail, 0 both rails (the centreline).
-    gravity_load : ndarray, (n,)
-        Generalized weight of the sprung masses, N (down is negative).
-    input_kinds : tuple of str or None
-        What each input is, when it is not a rail height: "alignment" or
-        "cross_level" (m). None: rail heights, by ``input_rails``.
+    An input of the same kind takes it whole; a rail-height input takes a vertical
+    irregularity whole and a cross-level c as ±c/2 on the left/right rail.
     """
-
-    M: np.ndarray
-    C: np.ndarray
-    K: np.ndarray
-    GK: np.ndarray
-    GC: np.ndarray
-    labels: tuple
-    input_positions: np.ndarray
-    input_rails: np.ndarray
-    gravity_load: np.ndarray
-    input_kinds: tuple | None = None
-
-    @property
-    def n(self) -> int:
-        return self.M.shape[0]
-
-    def output_vector(self, output) -> np.ndarray:
-        """A coordinate label ("body z"), ("body z", x) for the point x m ahead of the centre
-        (z + xθ), or a row vector of length n."""
-        if isinstance(output, str):
-            if output not in self.labels:
-                raise ValueError(f"output must be one of {self.labels}; got {output!r}")
-            return np.eye(self.n)[self.labels.index(output)]
-        if isinstance(output, tuple) and len(output) == 2 and isinstance(output[0], str):
-            label, x = output
-            base = self.output_vector(label)
-            x = _checks.scalar("output position", x)
-            pitch = label.rsplit(" ", 1)[0] + " θ"
-            if pitch not in self.labels:
-                raise ValueError(f"output {label!r} has no pitch coordinate {pitch!r} to place a point")
-            return base + x * self.output_vector(pitch)
-        return _checks.array("output", output, shape=(self.n,))
-
-    def static_deflection(self) -> np.ndarray:
-        """Displacements under gravity, m (rad): K q = weight."""
-        return np.linalg.solve(self.K, self.gravity_load)
-
-    def axle_frf(self, omega, output="body z", derivative: int = 0) -> np.ndarray:
-        """H_j(ω) from input j (m) to the output (m, m/s or m/s² for derivative 0, 1, 2): shape (n_ω, q).
-
-        One batched solve of (K − ω²M + iωC) X = G_K + iωG_C over all frequencies.
-        """
-        w = _checks.array("omega", omega, ndim=1, low=0.0)
-        d = _checks.integer("derivative", derivative, low=0, high=2)
-        o = self.output_vector(output)
-        Z = self.K - w[:, None, None] ** 2 * self.M + 1j * w[:, None, None] * self.C
-        X = np.linalg.solve(Z, self.GK + 1j * w[:, None, None] * self.GC)
-        return (1j * w[:, None]) ** d * np.einsum("i,kij->kj", o, X)
-
-
-_COMPONENTS = ("vertical", "cross_level", "alignment")
-
-
-def _rail_weights(vehicle: LinearVehicle, component: str) -> np.ndarray:
-    """How an irregularity of the given component reaches each input."""
-    if component not in _COMPONENTS:
-        raise ValueError(f"component must be one of {_COMPONENTS}; got {component!r}")
-    if vehicle.input_kinds is not None:
-        return np.array([1.0 if kind == component else 0.0 for kind in vehicle.input_kinds])
-    rails = vehicle.input_rails
-    if component == "vertical":
-        return np.ones(rails.shape)
+    if component not in INPUT_KINDS:
+        raise ValueError(f"component must be one of {INPUT_KINDS}; got {component!r}")
+    kinds = np.array(system.input_kinds)
+    weights = (kinds == component).astype(float)
     if component == "cross_level":  # left − right = c: the left rail at +c/2, the right at −c/2
-        return 0.5 * rails
-    return np.zeros(rails.shape)
+        weights += np.where(kinds == "vertical", 0.5 * system.input_rails, 0.0)
+    return weights
 
 
-def track_frf(
-    vehicle: LinearVehicle, omega, speed, output="body z", derivative: int = 0, component: str = "vertical"
-) -> np.ndarray:
+def _steady_system(vehicle, speed) -> tuple[LinearSystem, float]:
+    """The vehicle's system and V, refusing a speed at which the model is unstable (no steady response)."""
+    system = as_linear_system(vehicle)
+    V = _checks.positive("speed", speed)
+    if np.any(system.C1):
+        growth = np.linalg.eigvals(system.matrices(V).state_matrix()).real.max()
+        if growth >= 0:
+            raise ValueError(
+                f"speed {V!r} m/s is at or above the critical speed of this vehicle (an eigenvalue has real "
+                f"part {growth:.3g} 1/s >= 0): no steady response"
+            )
+    return system, V
+
+
+def track_frf(vehicle, omega, speed, output="body z", derivative: int = 0, component: str = "vertical"):
     """H(ω) = Σ_j a_j H_j(ω) e^{−iωτ_j}: from the track under the leading axle to the output.
 
-    a_j is 1 for a vertical irregularity and ±1/2 on the left/right rail for cross-level.
+    a_j is 1 for an input of the component's kind, and ±1/2 on the left/right
+    rail for a cross-level met by rail-height inputs.
+
+    Parameters
+    ----------
+    vehicle : LinearModel or LinearSystem
+    omega : array_like, (n_ω,)
+        rad/s, ≥ 0.
+    speed : float
+        V, m/s (> 0, below the critical speed of a lateral model).
+    output : str, (str, float) or array_like
+        See :meth:`raildyn.linear_model.LinearSystem.output_vector`.
+    derivative : {0, 1, 2}
+        Output in m, m/s or m/s² per m of track.
+    component : {"vertical", "alignment", "cross_level"}
+
+    Returns
+    -------
+    ndarray, complex, (n_ω,)
     """
-    tau = _track.axle_delays(vehicle.input_positions, speed)
-    Hj = vehicle.axle_frf(omega, output, derivative)
+    system, V = _steady_system(vehicle, speed)
+    tau = _track.axle_delays(system.input_positions, V)
+    Hj = system.axle_frf(omega, V, output, derivative)
     w = np.asarray(omega, dtype=float)
     phase = np.exp(-1j * w[:, None] * tau[None, :])
-    return np.einsum("kj,j,kj->k", Hj, _rail_weights(vehicle, component), phase)
+    return np.einsum("kj,j,kj->k", Hj, _rail_weights(system, component), phase)
 
 
 @dataclass(frozen=True)
@@ -200,49 +126,113 @@ class ResponseSpectrum:
     speed: float
 
     @property
-    def frequency(self) -> np.ndarray:
-        """Hz."""
+    def frequency_hz(self) -> np.ndarray:
+        """The grid in Hz."""
         return self.omega / (2 * np.pi)
 
 
+def _spectra(psd, component) -> dict:
+    """{component: S(Ω)} from one spectrum and its component, or from a mapping of independent components."""
+    if isinstance(psd, Mapping):
+        if component is not None:
+            raise ValueError(f"component must be None when psd is a mapping of components, got {component!r}")
+        spectra = dict(psd)
+    else:
+        spectra = {"vertical" if component is None else component: psd}
+    if not spectra:
+        raise ValueError("psd must hold at least one spectrum")
+    for name, S in spectra.items():
+        if name not in INPUT_KINDS:
+            raise ValueError(f"psd component must be one of {INPUT_KINDS}; got {name!r}")
+        if not callable(S):
+            raise TypeError(f"psd[{name!r}] must be a callable S(Ω) in m²/(rad/m), got {S!r}")
+    return spectra
+
+
 def response_spectrum(
-    vehicle: LinearVehicle,
-    psd: Callable,
+    vehicle,
+    psd,
     speed,
     omega,
     output="body z",
     derivative: int = 2,
-    component: str = "vertical",
+    component: str | None = None,
 ) -> ResponseSpectrum:
-    """Response PSD and RMS of an output for a spatial track spectrum S(Ω) (m²/(rad/m)) at speed V.
+    """Response PSD and RMS of an output for spatial track spectra S(Ω) (m²/(rad/m)) at speed V.
 
-    The inputs' cross-spectral matrix comes from :func:`raildyn.track.synthesis.excitation_csd`
-    and the response from :func:`raildyn.random_vibration.response_psd`.
+    For each irregularity component the inputs' cross-spectral matrix comes from
+    :func:`raildyn.track.synthesis.excitation_csd` and the response from
+    :func:`raildyn.random_vibration.response_psd`; the components (vertical
+    profile, alignment, cross-level) are taken as independent processes, so
+    their response PSDs add.
+
+    Parameters
+    ----------
+    vehicle : LinearModel or LinearSystem
+    psd : callable or mapping
+        S(Ω), one-sided, m²/(rad/m), of the irregularity named by ``component``
+        (default "vertical"); or a mapping {component: S} of independent components.
+    speed : float
+        V, m/s.
+    omega : array_like
+        rad/s, > 0.
+    output : str, (str, float) or array_like
+        See :meth:`raildyn.linear_model.LinearSystem.output_vector`.
+    derivative : {0, 1, 2}
+        Displacement, velocity or acceleration of the output.
+    component : {"vertical", "alignment", "cross_level"}, optional
+        With a single ``psd``: the component it describes.
+
+    Returns
+    -------
+    ResponseSpectrum
     """
-    V = _checks.positive("speed", speed)
+    system, V = _steady_system(vehicle, speed)
     w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=True)
-    a = _rail_weights(vehicle, component)
-    H = vehicle.axle_frf(w, output, derivative) * a[None, :]
-    S_in = _track.excitation_csd(psd, w, vehicle.input_positions, V)
-    S = rv.response_psd(H, S_in)
+    Hj = system.axle_frf(w, V, output, derivative)
+    S = np.zeros(w.size)
+    for name, spectrum in _spectra(psd, component).items():
+        H = Hj * _rail_weights(system, name)[None, :]
+        S_in = _track.excitation_csd(spectrum, w, system.input_positions, V)
+        S = S + rv.response_psd(H, S_in)
     return ResponseSpectrum(w, S, float(np.sqrt(rv.mean_square(S, w))), V)
 
 
 def rms_over_speeds(
-    vehicle: LinearVehicle, psd: Callable, speeds, omega, output="body z", derivative: int = 2
+    vehicle, psd, speeds, omega, output="body z", derivative: int = 2, component: str | None = None
 ) -> np.ndarray:
-    """RMS of the output (vertical track) at each speed: the FRFs solved once, for all speeds.
+    """The RMS of :func:`response_spectrum` at each speed, from one batched FRF solve where it can.
 
-    The axle FRFs do not depend on speed; only the delays and the temporal
-    spectrum S(ω/V)/V do, so a speed costs one weighted sum over the grid.
+    A vehicle without creep damping (the vertical cars) has axle FRFs that do not
+    depend on speed: only the delays and the temporal spectrum S(ω/V)/V do, so a
+    speed costs one weighted sum over the grid. A lateral model's FRFs are solved
+    again at each speed.
+
+    Parameters
+    ----------
+    vehicle, psd, omega, output, derivative, component
+        As for :func:`response_spectrum`.
+    speeds : array_like, (n_V,)
+        m/s, > 0.
+
+    Returns
+    -------
+    ndarray, (n_V,)
+        RMS of the output at each speed, in its unit.
     """
+    system = as_linear_system(vehicle)
     V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True)
     w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=True)
-    Hj = vehicle.axle_frf(w, output, derivative)  # (n_ω, q)
-    tau = vehicle.input_positions[None, :] - vehicle.input_positions[0]
+    spectra = _spectra(psd, component)
+    if np.any(system.C1):
+        return np.array([response_spectrum(system, spectra, v, w, output, derivative).rms for v in V])
+    Hj = system.axle_frf(w, V[0], output, derivative)  # (n_ω, q), the same at every speed
+    tau = system.input_positions[None, :] - system.input_positions[0]
     phase = np.exp(-1j * w[None, :, None] * tau[:, None, :] / V[:, None, None])  # (n_V, n_ω, q)
-    H = np.einsum("kj,vkj->vk", Hj, phase)
-    S = np.abs(H) ** 2 * np.asarray(psd(w[None, :] / V[:, None])) / V[:, None]
+    S = np.zeros((V.size, w.size))
+    for name, spectrum in spectra.items():
+        H = np.einsum("kj,j,vkj->vk", Hj, _rail_weights(system, name), phase)
+        S = S + np.abs(H) ** 2 * np.asarray(spectrum(w[None, :] / V[:, None])) / V[:, None]
     return np.sqrt(np.trapezoid(S, w, axis=1))
 
 
@@ -293,7 +283,7 @@ def periodic_profile(height, dx) -> tuple[Callable, Callable]:
 
 
 def time_response(
-    vehicle: LinearVehicle,
+    vehicle,
     profile: Callable,
     speed,
     t,
@@ -305,10 +295,11 @@ def time_response(
 
     Parameters
     ----------
+    vehicle : LinearModel or LinearSystem
     profile : callable
-        ``profile(x, rails)`` → track height (m) under each input at distances x
-        (m, array (n_t, q)); ``rails`` is ``vehicle.input_rails`` broadcast like x.
-        The leading axle is at x = V t.
+        ``profile(x, rails)`` → track input (m) at each input at distances x
+        (m, array (n_t, q)); ``rails`` is ``input_rails`` of the vehicle's system
+        broadcast like x. The leading axle is at x = V t.
     profile_rate : callable, optional
         The slope dz/dx with the same signature; without it the damper inputs
         use a finite-difference slope.
@@ -316,10 +307,18 @@ def time_response(
         m/s.
     t : array_like
         Uniform times, s, starting from rest at static equilibrium.
+    output : str, (str, float) or array_like
+        See :meth:`raildyn.linear_model.LinearSystem.output_vector`.
+    derivative : {0, 1, 2}
+        Displacement, velocity or acceleration of the output.
+
+    Returns
+    -------
+    TimeResponse
     """
     from scipy import signal
 
-    V = _checks.positive("speed", speed)
+    vehicle, V = _steady_system(vehicle, speed)
     tt = _checks.time_grid("t", t, uniform=True)
     d = _checks.integer("derivative", derivative, low=0, high=2)
     o = vehicle.output_vector(output)
@@ -330,10 +329,10 @@ def time_response(
         wdot = V * np.asarray(profile_rate(x, rails), dtype=float)
     else:
         wdot = np.gradient(w, tt, axis=0)
-    n, q = vehicle.n, w.shape[1]
-    Minv = np.linalg.inv(vehicle.M)
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ vehicle.K, -Minv @ vehicle.C]])
-    B = np.vstack([np.zeros((n, 2 * q)), Minv @ np.hstack([vehicle.GK, vehicle.GC])])
+    n, q = vehicle.size, w.shape[1]
+    mats = vehicle.matrices(V)
+    A = mats.state_matrix()
+    B = np.vstack([np.zeros((n, 2 * q)), np.linalg.solve(mats.M, np.hstack([mats.GK, mats.GC]))])
     if d == 0:
         Cs, D = np.concatenate([o, np.zeros(n)])[None, :], np.zeros((1, 2 * q))
     elif d == 1:
@@ -342,45 +341,3 @@ def time_response(
         Cs, D = (o @ A[n:])[None, :], (o @ B[n:])[None, :]
     _, y, _ = signal.lsim((A, B, Cs, D), np.hstack([w, wdot]), tt)
     return TimeResponse(tt, np.asarray(y, dtype=float).reshape(-1), w)
-
-
-def lateral_vehicle(car, speed) -> LinearVehicle:
-    """The lateral car of chapter 7 (:class:`raildyn.vehicles.Car`) at speed V, driven by the track.
-
-    Eight inputs: the alignment y_a (m) at each of the four wheelsets, then the
-    cross-level c (m) there. Alignment enters the wheel–rail terms that depend on
-    the wheelset's displacement relative to the rails — the rolling-radius
-    difference λ(y − y_a)/r₀ and the gravitational stiffness — while the creepages
-    ẏ/V − ψ and aψ̇/V stay absolute. Cross-level tilts the rails by c/(2a): the
-    rail reactions push each wheelset sideways by −W c/(2a), and the bogie frames,
-    which the model keeps upright on the track, tilt with the mean of their two
-    wheelsets, so the secondary roll springs act on φ − c̄/(2a).
-
-    Raises ValueError above the car's critical speed, where no steady response exists.
-    """
-    from raildyn.wheelset import creep_terms
-
-    V = _checks.positive("speed", speed)
-    system = car.linear_system()
-    M, C, K = system.matrices(V)
-    n = M.shape[0]
-    GK, GC = np.zeros((n, 8)), np.zeros((n, 8))
-    phi = system.labels.index("body φ")
-    for j, (iy, ipsi, ws) in enumerate(system.wheelsets):
-        _, K_creep, K_gravity = creep_terms(ws)
-        GK[[iy, ipsi], j] = (K_creep + K_gravity)[:, 0]
-        a = ws.half_gauge
-        GK[iy, 4 + j] = -ws.axle_load / (2 * a)
-        GK[phi, 4 + j] = 0.5 * car.roll_stiffness / (2 * a)
-        GC[phi, 4 + j] = 0.5 * car.roll_damping / (2 * a)
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])
-    growth = np.linalg.eigvals(A).real.max()
-    if growth >= 0:
-        raise ValueError(
-            f"speed {V!r} m/s is at or above the critical speed of this car (an eigenvalue has real part "
-            f"{growth:.3g} 1/s >= 0): no steady response"
-        )
-    b, s = car.bogie.semi_wheelbase, car.semi_bogie_spacing
-    positions = np.tile([0.0, 2 * b, 2 * s, 2 * s + 2 * b], 2)
-    kinds = ("alignment",) * 4 + ("cross_level",) * 4
-    return LinearVehicle(M, C, K, GK, GC, system.labels, positions, np.zeros(8), np.zeros(n), kinds)

@@ -32,7 +32,7 @@ _F = np.linspace(0.05, 30.0, 1200)  # Hz: the response spectrum's grid
 _RUN_LENGTH, _DX, _BAND = 1500.0, 0.25, (1.0, 300.0)  # m: the seeded track of the time run
 _DT = 0.01  # s
 _SETTLE = 10.0  # s dropped from the time run before its RMS is taken
-_VEHICLE = MANCHESTER_VERTICAL.linear()
+_VEHICLE = MANCHESTER_VERTICAL.linear_system()
 
 
 def _ride_controls():
@@ -149,16 +149,16 @@ def _rock_controls():
 @lru_cache(maxsize=32)
 def rock_sweep(car_label: str, friction_kn: float, depth_mm: float):
     """Roll amplitude (deg) over the widget's speeds, and the resonance speed (km/h)."""
-    car = FREIGHT_CARS[car_label].with_(wedge_friction=1e3 * friction_kn)
-    r = rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=12, dt=0.008)
+    car = FREIGHT_CARS[car_label].replace(wedge_friction=1e3 * friction_kn)
+    r = rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=12)
     return np.degrees(r.roll_amplitude), 3.6 * r.resonance_speed
 
 
 @lru_cache(maxsize=64)
 def rock_history(car_label: str, speed_kmh: float, friction_kn: float, depth_mm: float):
-    car = FREIGHT_CARS[car_label].with_(wedge_friction=1e3 * friction_kn)
+    car = FREIGHT_CARS[car_label].replace(wedge_friction=1e3 * friction_kn)
     cycles = max(12, int(np.ceil(30.0 * speed_kmh / 3.6 / track.RAIL_LENGTH)))  # about 30 s shown
-    r = rock_and_roll(car, [speed_kmh / 3.6], depth=1e-3 * depth_mm, cycles=cycles, dt=0.008)
+    r = rock_and_roll(car, [speed_kmh / 3.6], depth=1e-3 * depth_mm, cycles=cycles)
     return r.t, np.degrees(r.roll[0])
 
 

@@ -18,7 +18,7 @@ _CAR = Car()
 
 
 def _car(values) -> Car:
-    return _CAR.with_(
+    return _CAR.replace(
         conicity=values["conicity"],
         yaw_stiffness=1e6 * values.get("yaw_stiffness", _CAR.wheelset.yaw_stiffness / 1e6),
     )
@@ -126,13 +126,13 @@ def _critical_curve_setup(live, status):
     live.animate(car_line, bogie_line)
 
     def redraw(v):
-        base = _CAR.with_(
+        base = _CAR.replace(
             yaw_stiffness=1e6 * v["yaw_stiffness"],
             secondary_yaw_stiffness=1e6 * v["secondary_yaw_stiffness"],
         )
         car_v, bogie_v = [], []
         for lam in _CONICITIES:
-            car = base.with_(conicity=lam)
+            car = base.replace(conicity=lam)
             car_v.append(stability.critical_speed(car, (1.0, 200.0), tol=0.1, scan=16).speed)
             bogie_v.append(stability.critical_speed(car.bogie, (1.0, 200.0), tol=0.1, scan=16).speed)
         car_v, bogie_v = 3.6 * np.array(car_v), 3.6 * np.array(bogie_v)

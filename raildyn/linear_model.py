@@ -1,0 +1,620 @@
+"""One protocol for every linear model of raildyn, and the one system every model assembles into.
+
+Every linear model — the wheelset of chapter 5, the bogie and the lateral car of
+chapter 7, the vertical passenger car, the freight car and the locomotive of
+chapter 6, and each model the later chapters add — follows
+:class:`LinearModel`:
+
+* ``linear_system()`` → :class:`LinearSystem`, the assembled equations
+  M q̈ + (C₀ + C₁/V) q̇ + K q = G_K w(t) + G_C ẇ(t), with w the track
+  irregularities met by the wheels (rail heights, alignment, cross-level);
+* ``matrices(speed)`` → :class:`SystemMatrices`: M, C(V), K and the input
+  matrices G_K, G_C at one speed;
+* ``state_space(speed, outputs=..., derivative=...)`` → a
+  ``control.StateSpace`` from the track inputs to the outputs, so that root
+  loci, Bode plots and frequency responses come from python-control;
+* ``replace(**changes)`` → a validated copy with some parameters changed.
+
+The speed V is given in exactly one place: the call that evaluates the model.
+Linear creep forces are proportional to creepages, which are velocities divided
+by V, so the wheel–rail damping is C₁/V; models without creep (the vertical
+cars) have C₁ = 0 and give the same matrices at every speed.
+
+:class:`Assembler` builds a :class:`LinearSystem` spring by spring: every
+spring k (damper c) acts on a relative displacement d = g·q − h·w, so it adds
+k g gᵀ to K and k g hᵀ to G_K (c to C₀ and G_C).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from dataclasses import replace as _dataclass_replace
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn.vibration import first_order_matrix
+
+__all__ = [
+    "INPUT_KINDS",
+    "Assembler",
+    "LinearModel",
+    "LinearModelBase",
+    "LinearSystem",
+    "SystemMatrices",
+    "as_linear_system",
+]
+
+INPUT_KINDS = ("vertical", "alignment", "cross_level")
+"""What a track input can be: a rail height (on the rail given by ``input_rails``), the alignment
+(lateral position of the track centreline) or the cross-level (left rail height − right rail height), m."""
+
+
+@dataclass(frozen=True)
+class SystemMatrices:
+    """The matrices of a linear model at one speed: M q̈ + C q̇ + K q = G_K w + G_C ẇ.
+
+    Attributes
+    ----------
+    M, C, K : ndarray, (n, n)
+        Mass (kg, kg·m²), damping (N·s/m, N·m·s/rad) and stiffness (N/m, N·m/rad)
+        at ``speed``; C and K need not be symmetric (creep forces).
+    GK, GC : ndarray, (n, q)
+        Forces per unit track input and per unit input rate, N/m and N·s/m.
+    labels : tuple of str
+        Name of each coordinate.
+    speed : float
+        V, m/s.
+    """
+
+    M: np.ndarray
+    C: np.ndarray
+    K: np.ndarray
+    GK: np.ndarray
+    GC: np.ndarray
+    labels: tuple
+    speed: float
+
+    def state_matrix(self) -> np.ndarray:
+        """A = [[0, I], [−M⁻¹K, −M⁻¹C]], shape (2n, 2n), 1/s² and 1/s blocks.
+
+        Returns
+        -------
+        ndarray
+            The first-order state matrix, from :func:`raildyn.vibration.first_order_matrix`.
+        """
+        return first_order_matrix(self.M, self.C, self.K)
+
+
+def _frozen(name: str, value, shape) -> np.ndarray:
+    arr = _checks.array(name, value, shape=shape).copy()
+    arr.setflags(write=False)
+    return arr
+
+
+@dataclass(frozen=True)
+class LinearSystem:
+    """A linear model: M q̈ + (C₀ + C₁/V) q̇ + K q = G_K w(t) + G_C ẇ(t).
+
+    Input j is the track met at distance ``input_positions[j]`` behind the
+    leading axle, so that at speed V it arrives τ_j = d_j/V later; its kind is
+    ``input_kinds[j]`` (one of :data:`INPUT_KINDS`) and, for a rail height, its
+    rail ``input_rails[j]`` (+1 left, −1 right, 0 both).
+
+    Attributes
+    ----------
+    M, C0, C1, K : ndarray, (n, n)
+        Mass (kg), speed-independent damping (N·s/m), creep damping times speed
+        (N), stiffness (N/m); rotational rows in the matching units.
+    GK, GC : ndarray, (n, q)
+        Forces from the track inputs and their rates, N/m and N·s/m.
+    labels : tuple of str
+        Name of each of the n coordinates (m or rad).
+    input_positions : ndarray, (q,)
+        m.
+    input_kinds : tuple of str, (q,)
+    input_rails : ndarray, (q,)
+    gravity_load : ndarray, (n,)
+        Generalized weight of the sprung masses, N (down is negative).
+    wheelsets : tuple of (int, int, Wheelset)
+        Indices of the [y, ψ] coordinates of each wheelset in contact with the
+        rails and its parameters, for the nonlinear counterpart
+        (:class:`raildyn.wheelset.NonlinearLateral`).
+    """
+
+    M: np.ndarray
+    C0: np.ndarray
+    C1: np.ndarray
+    K: np.ndarray
+    GK: np.ndarray = None
+    GC: np.ndarray = None
+    labels: tuple = ()
+    input_positions: np.ndarray = None
+    input_kinds: tuple = ()
+    input_rails: np.ndarray = None
+    gravity_load: np.ndarray = None
+    wheelsets: tuple = field(default=())
+
+    def __post_init__(self):
+        M = _checks.square_matrix("M", self.M)
+        n = M.shape[0]
+        try:  # a Cholesky factor exists exactly when M is positive definite, at any scale of its entries
+            np.linalg.cholesky(M)
+        except np.linalg.LinAlgError:
+            raise ValueError(
+                f"M must be positive definite, got eigenvalues {np.linalg.eigvalsh(M)}"
+            ) from None
+        set_ = object.__setattr__  # frozen: the validated, read-only arrays replace what was passed
+        set_(self, "M", _frozen("M", M, (n, n)))
+        for name in ("C0", "C1", "K"):
+            set_(self, name, _frozen(name, getattr(self, name), (n, n)))
+        GK = np.zeros((n, 0)) if self.GK is None else self.GK
+        set_(self, "GK", _frozen("GK", GK, (n, None)))
+        q = self.GK.shape[1]
+        set_(self, "GC", _frozen("GC", np.zeros((n, q)) if self.GC is None else self.GC, (n, q)))
+        for name, default in (("input_positions", 0.0), ("input_rails", 0.0)):
+            value = getattr(self, name)
+            set_(self, name, _frozen(name, np.full(q, default) if value is None else value, (q,)))
+        gravity = np.zeros(n) if self.gravity_load is None else self.gravity_load
+        set_(self, "gravity_load", _frozen("gravity_load", gravity, (n,)))
+        labels = tuple(self.labels) or tuple(f"q{i}" for i in range(n))
+        if len(labels) != n or not all(isinstance(s, str) for s in labels):
+            raise ValueError(f"labels must be {n} strings, one per coordinate, got {self.labels!r}")
+        set_(self, "labels", labels)
+        kinds = tuple(self.input_kinds) or ("vertical",) * q
+        if len(kinds) != q or any(k not in INPUT_KINDS for k in kinds):
+            raise ValueError(f"input_kinds must be {q} of {INPUT_KINDS}, got {self.input_kinds!r}")
+        set_(self, "input_kinds", kinds)
+
+    @property
+    def size(self) -> int:
+        """n, the number of coordinates."""
+        return self.M.shape[0]
+
+    @property
+    def n_inputs(self) -> int:
+        """q, the number of track inputs."""
+        return self.GK.shape[1]
+
+    # -- the protocol ------------------------------------------------------------------------------
+
+    def linear_system(self) -> LinearSystem:
+        """This system itself (the protocol's assembly step).
+
+        Returns
+        -------
+        LinearSystem
+        """
+        return self
+
+    def replace(self, **changes) -> LinearSystem:
+        """A copy with some fields changed, validated again.
+
+        Parameters
+        ----------
+        **changes
+            Field names and their new values.
+
+        Returns
+        -------
+        LinearSystem
+        """
+        return _dataclass_replace(self, **changes)
+
+    def matrices(self, speed) -> SystemMatrices:
+        """M, C(V) = C₀ + C₁/V, K, G_K and G_C at the speed V.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0: the creep damping divides by it).
+
+        Returns
+        -------
+        SystemMatrices
+        """
+        V = _checks.positive("speed", speed)
+        return SystemMatrices(self.M, self.C0 + self.C1 / V, self.K, self.GK, self.GC, self.labels, V)
+
+    def state_matrices(self, speeds) -> np.ndarray:
+        """A(V) = [[0, I], [−M⁻¹K, −M⁻¹C(V)]] for every speed in one pass.
+
+        Parameters
+        ----------
+        speeds : array_like, (m,)
+            m/s, each > 0.
+
+        Returns
+        -------
+        ndarray, (m, 2n, 2n)
+        """
+        V = _checks.array("speeds", np.atleast_1d(speeds), ndim=1, low=0.0, low_open=True)
+        C = self.C0[None] + self.C1[None] / V[:, None, None]
+        return first_order_matrix(self.M[None], C, self.K[None])
+
+    def output_vector(self, output) -> np.ndarray:
+        """The row vector c with output = c·q.
+
+        Parameters
+        ----------
+        output : str, (str, float) or array_like
+            A coordinate label ("body z"); a label and a distance x (m) ahead of
+            the body's centre, for the point z + xθ (the label's body must have a
+            pitch coordinate "… θ"); or a row of n coefficients.
+
+        Returns
+        -------
+        ndarray, (n,)
+        """
+        if isinstance(output, str):
+            if output not in self.labels:
+                raise ValueError(f"output must be one of {self.labels}; got {output!r}")
+            return np.eye(self.size)[self.labels.index(output)]
+        if isinstance(output, tuple) and len(output) == 2 and isinstance(output[0], str):
+            label, x = output
+            base = self.output_vector(label)
+            x = _checks.scalar("output position", x)
+            pitch = label.rsplit(" ", 1)[0] + " θ"
+            if pitch not in self.labels:
+                raise ValueError(f"output {label!r} has no pitch coordinate {pitch!r} to place a point")
+            return base + x * self.output_vector(pitch)
+        return _checks.array("output", output, shape=(self.size,))
+
+    def state_space(self, speed, outputs=None, derivative: int = 0):
+        """The model at speed V as a ``control.StateSpace`` from the q track inputs to the outputs.
+
+        With E = M⁻¹G_C the state x = [q; q̇ − E w] removes the input rate ẇ:
+
+            ẋ = [[0, I], [−M⁻¹K, −M⁻¹C]] x + [[E], [M⁻¹(G_K − C E)]] w,
+
+        and q = [I 0] x, q̇ = [0 I] x + E w, q̈ = [−M⁻¹K, −M⁻¹C] x + M⁻¹(G_K − C E) w + E ẇ.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+        outputs : sequence, optional
+            Output specifications as for :meth:`output_vector`; default every coordinate.
+        derivative : {0, 1, 2}
+            Displacement, velocity or acceleration of the outputs.
+
+        Returns
+        -------
+        control.StateSpace
+            Inputs: the track inputs (m); outputs in m, m/s or m/s² (rad for rotations).
+
+        Raises
+        ------
+        ValueError
+            For an acceleration output that a damper couples directly to the
+            track (the transfer function would be improper), or a system without inputs.
+        """
+        import control
+
+        d = _checks.integer("derivative", derivative, low=0, high=2)
+        mats = self.matrices(speed)
+        if self.n_inputs == 0:
+            raise ValueError("this system has no track inputs, so it has no state-space input matrix")
+        rows = [self.output_vector(o) for o in (self.labels if outputs is None else outputs)]
+        if not rows:
+            raise ValueError(f"outputs must name at least one output, got {outputs!r}")
+        Co = np.array(rows)
+        n = self.size
+        A = mats.state_matrix()
+        E = np.linalg.solve(self.M, self.GC)
+        F = np.linalg.solve(self.M, self.GK - mats.C @ E)
+        B = np.vstack([E, F])
+        zero = np.zeros((len(rows), n))
+        if d == 0:
+            C, D = np.hstack([Co, zero]), np.zeros((len(rows), self.n_inputs))
+        elif d == 1:
+            C, D = np.hstack([zero, Co]), Co @ E
+        else:
+            if np.any(np.abs(Co @ E) > 0.0):
+                raise ValueError(
+                    "outputs with derivative=2 must not be tied to the track by a damper: their acceleration "
+                    "responds to the input rate without bound (improper transfer function)"
+                )
+            C, D = Co @ A[n:], Co @ F
+        names = [o if isinstance(o, str) else f"y{i}" for i, o in enumerate(outputs or self.labels)]
+        return control.ss(
+            A, B, C, D, inputs=[f"{kind} {j}" for j, kind in enumerate(self.input_kinds)], outputs=names
+        )
+
+    # -- responses to the track ---------------------------------------------------------------------
+
+    def static_deflection(self) -> np.ndarray:
+        """Displacements under gravity, K q = weight.
+
+        Returns
+        -------
+        ndarray, (n,)
+            m (rad).
+        """
+        return np.linalg.solve(self.K, self.gravity_load)
+
+    def axle_frf(self, omega, speed, output="body z", derivative: int = 0) -> np.ndarray:
+        """H_j(ω) from track input j (m) to the output, all frequencies in one batched solve.
+
+        Solves (K − ω²M + iωC(V)) X = G_K + iωG_C at every ω.
+
+        Parameters
+        ----------
+        omega : array_like, (n_ω,)
+            rad/s, ≥ 0.
+        speed : float
+            V, m/s (the creep damping depends on it).
+        output : see :meth:`output_vector`
+        derivative : {0, 1, 2}
+            Output in m, m/s or m/s².
+
+        Returns
+        -------
+        ndarray, complex, (n_ω, q)
+        """
+        w = _checks.array("omega", omega, ndim=1, low=0.0)
+        d = _checks.integer("derivative", derivative, low=0, high=2)
+        o = self.output_vector(output)
+        mats = self.matrices(speed)
+        Z = mats.K - w[:, None, None] ** 2 * mats.M + 1j * w[:, None, None] * mats.C
+        X = np.linalg.solve(Z, mats.GK + 1j * w[:, None, None] * mats.GC)
+        return (1j * w[:, None]) ** d * np.einsum("i,kij->kj", o, X)
+
+
+@runtime_checkable
+class LinearModel(Protocol):
+    """What every linear model of raildyn offers (see the module docstring).
+
+    A parameter set (a frozen dataclass) becomes a linear model by defining
+    ``linear_system()`` and inheriting :class:`LinearModelBase`, which supplies
+    the rest from it.
+    """
+
+    def linear_system(self) -> LinearSystem:
+        """The assembled equations of motion with their track inputs."""
+        ...
+
+    def matrices(self, speed) -> SystemMatrices:
+        """M, C(V), K, G_K, G_C at speed V (m/s)."""
+        ...
+
+    def state_space(self, speed, outputs=None, derivative: int = 0):
+        """A ``control.StateSpace`` from the track inputs to the outputs at speed V (m/s)."""
+        ...
+
+    def replace(self, **changes) -> LinearModel:
+        """A validated copy with some parameters changed."""
+        ...
+
+
+class LinearModelBase:
+    """The protocol's methods for a frozen-dataclass parameter set that defines ``linear_system()``."""
+
+    def linear_system(self) -> LinearSystem:  # pragma: no cover - every subclass defines it
+        """The assembled equations; defined by each model.
+
+        Returns
+        -------
+        LinearSystem
+        """
+        raise NotImplementedError
+
+    def matrices(self, speed) -> SystemMatrices:
+        """M, C(V), K, G_K, G_C at the speed V.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+
+        Returns
+        -------
+        SystemMatrices
+        """
+        return self.linear_system().matrices(speed)
+
+    def state_space(self, speed, outputs=None, derivative: int = 0):
+        """The model at speed V as a ``control.StateSpace`` (see :meth:`LinearSystem.state_space`).
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+        outputs : sequence, optional
+            Output specifications (coordinate labels by default).
+        derivative : {0, 1, 2}
+            Displacement, velocity or acceleration outputs.
+
+        Returns
+        -------
+        control.StateSpace
+        """
+        return self.linear_system().state_space(speed, outputs, derivative)
+
+    def replace(self, **changes):
+        """A copy with some fields changed, validated again by the dataclass.
+
+        Parameters
+        ----------
+        **changes
+            Field names and their new values.
+
+        Returns
+        -------
+        The same type as the model.
+        """
+        return _dataclass_replace(self, **changes)
+
+
+def as_linear_system(model) -> LinearSystem:
+    """The :class:`LinearSystem` of a linear model, or the system itself.
+
+    Parameters
+    ----------
+    model : LinearModel or LinearSystem
+
+    Returns
+    -------
+    LinearSystem
+
+    Raises
+    ------
+    TypeError
+        If ``model`` does not follow :class:`LinearModel`.
+    """
+    if isinstance(model, LinearSystem):
+        return model
+    if isinstance(model, LinearModel):
+        system = model.linear_system()
+        if isinstance(system, LinearSystem):
+            return system
+    raise TypeError(f"model must be a raildyn linear model (LinearModel), got {type(model).__name__}")
+
+
+class Assembler:
+    """Builds a :class:`LinearSystem` element by element.
+
+    Parameters
+    ----------
+    labels : sequence of str
+        Names of the coordinates.
+    n_inputs : int
+        Number of track inputs q.
+
+    Examples
+    --------
+    Two masses on springs, the lower one on the track:
+
+    >>> asm = Assembler(["body z", "wheel z"], n_inputs=1)
+    >>> asm.mass("body z", 1000.0); asm.mass("wheel z", 100.0)
+    >>> asm.element({"body z": 1.0, "wheel z": -1.0}, 1e5, 2e3)
+    >>> asm.element({"wheel z": 1.0}, 1e7, inputs={0: 1.0})
+    >>> asm.system().GK[:, 0]
+    array([       0., 10000000.])
+    """
+
+    def __init__(self, labels: Sequence[str], n_inputs: int = 0):
+        self.labels = list(labels)
+        n = len(self.labels)
+        q = _checks.integer("n_inputs", n_inputs, low=0)
+        self.M = np.zeros((n, n))
+        self.C0 = np.zeros((n, n))
+        self.C1 = np.zeros((n, n))
+        self.K = np.zeros((n, n))
+        self.GK = np.zeros((n, q))
+        self.GC = np.zeros((n, q))
+        self.wheelsets: list = []
+
+    def index(self, label: str) -> int:
+        """Position of a coordinate.
+
+        Parameters
+        ----------
+        label : str
+
+        Returns
+        -------
+        int
+        """
+        if label not in self.labels:
+            raise ValueError(f"label must be one of {self.labels}, got {label!r}")
+        return self.labels.index(label)
+
+    def vector(self, terms: dict) -> np.ndarray:
+        """g with g·q = Σ coefficient · coordinate.
+
+        Parameters
+        ----------
+        terms : dict of str to float
+
+        Returns
+        -------
+        ndarray, (n,)
+        """
+        g = np.zeros(len(self.labels))
+        for label, value in terms.items():
+            g[self.index(label)] += value
+        return g
+
+    def mass(self, label: str, value: float) -> None:
+        """Add a mass (kg) or inertia (kg·m²) on one coordinate.
+
+        Parameters
+        ----------
+        label : str
+        value : float
+        """
+        i = self.index(label)
+        self.M[i, i] += _checks.positive(f"mass of {label!r}", value)
+
+    def element(self, body: dict, stiffness, damping=0.0, inputs: dict | None = None) -> None:
+        """A spring and damper on d = Σ body coefficients · q − Σ input coefficients · w.
+
+        Parameters
+        ----------
+        body : dict of str to float
+            Coefficients of the coordinates in the deflection.
+        stiffness, damping : float
+            N/m and N·s/m (per radian for rotations).
+        inputs : dict of int to float, optional
+            Coefficients of the track inputs in the deflection.
+        """
+        g = self.vector(body)
+        k = _checks.scalar("stiffness", stiffness)
+        c = _checks.nonnegative("damping", damping)
+        self.K += k * np.outer(g, g)
+        self.C0 += c * np.outer(g, g)
+        if inputs:
+            h = np.zeros(self.GK.shape[1])
+            for j, value in inputs.items():
+                h[j] += value
+            self.GK += k * np.outer(g, h)
+            self.GC += c * np.outer(g, h)
+
+    def block(self, labels: Sequence[str], *, C1=None, K=None) -> None:
+        """Add a block of creep damping C₁ (N) and stiffness (N/m) on some coordinates.
+
+        Parameters
+        ----------
+        labels : sequence of str
+            The coordinates of the block's rows and columns.
+        C1, K : array_like, (k, k), optional
+        """
+        idx = np.ix_(*(2 * ([self.index(s) for s in labels],)))
+        if C1 is not None:
+            self.C1[idx] += C1
+        if K is not None:
+            self.K[idx] += K
+
+    def track_force(self, label: str, j: int, stiffness: float, damping: float = 0.0) -> None:
+        """Add G_K[label, j] (N/m) and G_C[label, j] (N·s/m): a force on one coordinate per unit of input j.
+
+        Parameters
+        ----------
+        label : str
+        j : int
+            Index of the track input.
+        stiffness, damping : float
+        """
+        i = self.index(label)
+        self.GK[i, j] += stiffness
+        self.GC[i, j] += damping
+
+    def system(self, **inputs) -> LinearSystem:
+        """The assembled :class:`LinearSystem`.
+
+        Parameters
+        ----------
+        **inputs
+            ``input_positions``, ``input_kinds``, ``input_rails``, ``gravity_load``.
+
+        Returns
+        -------
+        LinearSystem
+        """
+        return LinearSystem(
+            self.M, self.C0, self.C1, self.K, self.GK, self.GC, tuple(self.labels),
+            wheelsets=tuple(self.wheelsets), **inputs,
+        )  # fmt: skip

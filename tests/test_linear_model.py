@@ -1,0 +1,133 @@
+"""The one protocol of every linear model (raildyn.linear_model), held by one contract test.
+
+Every linear model of the package is listed in MODELS; a model a later chapter adds joins the list.
+Each is held to the protocol's promises, and its python-control StateSpace is checked against an
+independent computation: the frequency response that python-control evaluates from (A, B, C, D)
+against raildyn's batched solve of (K − ω²M + iωC) X = G_K + iωG_C on the second-order matrices.
+"""
+
+import dataclasses
+
+import control
+import numpy as np
+import pytest
+
+from raildyn import stability
+from raildyn.linear_model import LinearModel, LinearSystem, SystemMatrices, as_linear_system
+from raildyn.vehicles import (
+    COOPERRIDER_CAR,
+    DEFAULT_LOCOMOTIVE,
+    GDU_ORE_CAR,
+    MANCHESTER_CAR,
+    MANCHESTER_VERTICAL,
+    Bogie,
+    FreightCar,
+)
+from raildyn.wheelset import Wheelset
+
+MODELS = {
+    "wheelset": Wheelset(),
+    "bogie": Bogie(),
+    "manchester car": MANCHESTER_CAR,
+    "cooperrider car": COOPERRIDER_CAR,
+    "vertical car": MANCHESTER_VERTICAL,
+    "freight car": FreightCar(equivalent_damping=2.0e4),
+    "gdu ore car": GDU_ORE_CAR.replace(equivalent_damping=2.0e4),
+    "locomotive": DEFAULT_LOCOMOTIVE,
+}
+SPEED = 30.0  # m/s, below every lateral model's critical speed
+
+
+@pytest.fixture(params=list(MODELS), ids=list(MODELS))
+def model(request):
+    return MODELS[request.param]
+
+
+def test_model_follows_the_protocol(model):
+    assert isinstance(model, LinearModel)
+    system = model.linear_system()
+    assert isinstance(system, LinearSystem)
+    assert as_linear_system(system) is system
+    mats = model.matrices(SPEED)
+    assert isinstance(mats, SystemMatrices) and mats.speed == SPEED
+    n, q = system.size, system.n_inputs
+    assert mats.M.shape == mats.C.shape == mats.K.shape == (n, n)
+    assert mats.GK.shape == mats.GC.shape == (n, q) and q > 0
+    assert len(mats.labels) == n and len(system.input_positions) == q
+    np.testing.assert_array_equal(mats.M, mats.M.T)
+    assert np.all(np.linalg.eigvalsh(mats.M) > 0)
+    # the assembled arrays cannot be changed behind the model's back
+    with pytest.raises(ValueError):
+        system.K[0, 0] = 1.0
+
+
+def test_speed_is_given_once_in_the_call(model):
+    # C(V) = C₀ + C₁/V: the creep damping of a lateral model scales as 1/V exactly; a model without
+    # creep gives the same C at every speed. M, K and the inputs never depend on V.
+    system = model.linear_system()
+    slow, fast = model.matrices(10.0), model.matrices(40.0)
+    np.testing.assert_array_equal(slow.K, fast.K)
+    np.testing.assert_array_equal(slow.GK, fast.GK)
+    np.testing.assert_allclose(slow.C - fast.C, system.C1 * (1 / 10.0 - 1 / 40.0), rtol=1e-12, atol=1e-9)
+    for bad in (0.0, -5.0, float("nan")):
+        with pytest.raises(ValueError, match="speed"):
+            model.matrices(bad)
+
+
+def test_replace_gives_a_validated_variant(model):
+    assert model.replace() == model
+    first = dataclasses.fields(model)[0].name
+    with pytest.raises(TypeError):
+        model.replace(no_such_parameter=1.0)
+    value = getattr(model, first)
+    if isinstance(value, float):
+        with pytest.raises(ValueError, match=first):
+            model.replace(**{first: -1.0})
+
+
+@pytest.mark.parametrize("derivative", [0, 1])
+def test_state_space_matches_the_second_order_frequency_response(model, derivative):
+    # python-control evaluates C(iωI − A)⁻¹B + D of the state space; raildyn's axle_frf solves the
+    # second-order system. Both are exact linear algebra on matrices up to ~1e7 in condition:
+    # 1e-8 of the response's largest entry.
+    system = model.linear_system()
+    out = system.labels[0]
+    ss = model.state_space(SPEED, outputs=[out], derivative=derivative)
+    omega = np.array([0.7, 6.0, 40.0])
+    response = control.frequency_response(ss, omega)
+    H_ss = np.asarray(response.complex).reshape(system.n_inputs, omega.size).T  # (n_ω, q)
+    H_2nd = system.axle_frf(omega, SPEED, out, derivative)
+    np.testing.assert_allclose(H_ss, H_2nd, atol=1e-8 * np.abs(H_2nd).max())
+
+
+def test_state_space_poles_are_the_stability_eigenvalues(model):
+    poles = np.sort_complex(control.poles(model.state_space(SPEED)))
+    ours = np.sort_complex(stability.eigenvalues_against_speed(model, [SPEED])[0])
+    np.testing.assert_allclose(poles, ours, atol=1e-8 * np.abs(ours).max())
+
+
+def test_acceleration_output_tied_to_the_track_by_a_damper_is_refused():
+    # The vertical car's bogie is joined to the wheelsets by primary dampers: its acceleration per
+    # metre of track grows without bound with frequency, so no proper StateSpace exists.
+    with pytest.raises(ValueError, match="improper"):
+        MANCHESTER_VERTICAL.state_space(SPEED, outputs=["bogie1 z"], derivative=2)
+    ss = MANCHESTER_VERTICAL.state_space(SPEED, outputs=["body z"], derivative=2)
+    omega = np.array([3.0, 12.0])
+    H = np.asarray(control.frequency_response(ss, omega).complex).reshape(4, 2).T
+    np.testing.assert_allclose(H, MANCHESTER_VERTICAL.linear_system().axle_frf(omega, SPEED, "body z", 2),
+                               rtol=1e-8)  # fmt: skip
+
+
+def test_as_linear_system_refuses_what_is_not_a_model():
+    with pytest.raises(TypeError, match="LinearModel"):
+        as_linear_system("car")
+
+
+def test_linear_system_checks_its_matrices():
+    one = np.eye(1)
+    with pytest.raises(ValueError, match="positive definite"):
+        LinearSystem(-one, one, one, one)
+    with pytest.raises(ValueError, match="C0"):
+        LinearSystem(one, np.eye(2), one, one)
+    with pytest.raises(ValueError, match="input_kinds"):
+        LinearSystem(one, one, one, one, GK=np.ones((1, 1)), input_kinds=("gauge",))
