@@ -40,12 +40,12 @@ def _states(seed=0):
 
 
 def fastsim_case(repeats: int) -> Case:
-    s = _states()
-    g, nu = 8.1e10, 0.3
-    l1, l2, l3 = flexibilities(s["a"], s["b"], g, nu)
+    s = _states()  # steel of raildyn.constants: the defaults of fastsim and flexibilities
+    flex = flexibilities(s["a"], s["b"])
+    l1, l2, l3 = flex.l1, flex.l2, flex.l3
 
     def vectorized(_i):
-        return fastsim(s["xi"], s["eta"], s["phi"], s["load"], s["mu"], s["a"], s["b"], g, nu, fields=False)
+        return fastsim(s["xi"], s["eta"], s["phi"], s["load"], s["mu"], s["a"], s["b"], fields=False)
 
     def loop(_i):
         for j in range(SUBSET):

@@ -5,6 +5,10 @@ Each function draws on the axes it is given (or on new ones), never calls
 with ``set_data`` instead of drawing again. Style is applied through
 ``matplotlib.rc_context(STYLE)`` only: importing raildyn never changes
 matplotlib's defaults.
+
+Charts that belong to one result live on that result as ``.plot(ax=None)``
+(e.g. :meth:`raildyn.vibration.RootLocus.plot`); the helpers here are the
+generic pieces they and the widgets share.
 """
 
 from __future__ import annotations
@@ -12,7 +16,8 @@ from __future__ import annotations
 import matplotlib
 import numpy as np
 
-# One quiet house style for every raildyn figure.
+__all__ = ["COLORS", "STYLE", "axes_or_new", "frequency_curves", "spectrum", "time_history"]
+
 STYLE = {
     "axes.grid": True,
     "grid.alpha": 0.3,
@@ -25,12 +30,24 @@ STYLE = {
     "legend.frameon": False,
     "lines.linewidth": 1.6,
 }
+"""One quiet house style for every raildyn figure: rcParams for ``matplotlib.rc_context``."""
 
 COLORS = ("#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad", "#d68910")
+"""The colour cycle of raildyn figures, in order of use."""
 
 
 def axes_or_new(ax):
-    """The given axes, or new ones on a new pyplot figure (for notebook use)."""
+    """The given axes, or new ones on a new pyplot figure (for notebook use).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes or None
+        Axes to draw on; None makes a new figure with the house style.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
     if ax is not None:
         return ax
     import matplotlib.pyplot as plt
@@ -40,49 +57,30 @@ def axes_or_new(ax):
     return ax
 
 
-def root_locus(locus: np.ndarray, roots: np.ndarray | None = None, *, ax=None) -> dict:
-    """Draw the locus of the characteristic roots s₁, s₂ of an SDOF system (book Fig. 1.4).
-
-    Parameters
-    ----------
-    locus : complex ndarray, shape (n, 2)
-        Roots for a sweep of damping factors, normalised or in rad/s, as
-        returned by :func:`raildyn.vibration.root_locus`.
-    roots : complex ndarray, shape (2,), optional
-        The roots to mark (the current ξ).
-    ax : matplotlib Axes, optional
-
-    Returns
-    -------
-    dict of artists: ``branch1``, ``branch2``, ``roots``, ``circle``.
-    """
-    ax = axes_or_new(ax)
-    with matplotlib.rc_context(STYLE):
-        scale = float(np.abs(locus[0, 0]))  # |s| at ξ = 0 is ω_n
-        phi = np.linspace(np.pi / 2, 3 * np.pi / 2, 91)
-        (circle,) = ax.plot(scale * np.cos(phi), scale * np.sin(phi), ls=":", color="0.6", lw=1)
-        (b1,) = ax.plot(locus[:, 0].real, locus[:, 0].imag, color=COLORS[0], label="$s_1$")
-        (b2,) = ax.plot(locus[:, 1].real, locus[:, 1].imag, color=COLORS[1], label="$s_2$")
-        marks = np.zeros(2, complex) if roots is None else np.asarray(roots)
-        (pts,) = ax.plot(marks.real, marks.imag, "o", color="k", ms=7, mfc="w", mew=2, zorder=5)
-        pts.set_visible(roots is not None)
-        ax.axhline(0, color="0.4", lw=0.8)
-        ax.axvline(0, color="0.4", lw=0.8)
-        ax.set_aspect("equal", adjustable="box")
-        ax.set_xlabel("real part")
-        ax.set_ylabel("imaginary part")
-        ax.legend(loc="upper left")
-    return {"branch1": b1, "branch2": b2, "roots": pts, "circle": circle}
-
-
 def time_history(
     t: np.ndarray, x: np.ndarray, *, ax=None, label: str | None = None, envelope=None, color=COLORS[0]
 ) -> dict:
     """Draw a displacement history, with an optional decay envelope ±A e^{-ξω_n t}.
 
+    Parameters
+    ----------
+    t : ndarray, shape (n,)
+        Times, s.
+    x : ndarray, shape (n,)
+        Displacements (any unit).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; new axes if None.
+    label : str, optional
+        Legend label of the history.
+    envelope : ndarray, shape (n,), optional
+        The envelope, drawn dashed at ±envelope; hidden (NaN) if None.
+    color : color
+        Colour of the history.
+
     Returns
     -------
-    dict of artists: ``line``, ``upper``, ``lower``.
+    dict
+        The artists ``line``, ``upper``, ``lower``.
     """
     ax = axes_or_new(ax)
     with matplotlib.rc_context(STYLE):
@@ -97,7 +95,24 @@ def time_history(
 
 
 def frequency_curves(r: np.ndarray, curves: dict[str, np.ndarray], *, ax=None, logy: bool = False) -> dict:
-    """Draw several curves against the frequency ratio r = ω/ω_n; return the lines by name."""
+    """Draw several curves against the frequency ratio r = ω/ω_n.
+
+    Parameters
+    ----------
+    r : ndarray, shape (n,)
+        Frequency ratios.
+    curves : dict of str to ndarray, shape (n,)
+        The curves by name (their legend labels).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; new axes if None.
+    logy : bool
+        Logarithmic y axis.
+
+    Returns
+    -------
+    dict
+        The lines, by the names of ``curves``.
+    """
     ax = axes_or_new(ax)
     lines = {}
     with matplotlib.rc_context(STYLE):
@@ -112,7 +127,26 @@ def frequency_curves(r: np.ndarray, curves: dict[str, np.ndarray], *, ax=None, l
 def spectrum(
     omega: np.ndarray, psd: np.ndarray, *, ax=None, label: str | None = None, color=COLORS[0]
 ) -> dict:
-    """Draw a one-sided PSD per rad/s on log–log axes; return ``{"line": ...}``."""
+    """Draw a one-sided PSD per rad/s on log–log axes.
+
+    Parameters
+    ----------
+    omega : ndarray, shape (n,)
+        Circular frequencies, rad/s, > 0.
+    psd : ndarray, shape (n,)
+        One-sided PSD per rad/s.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; new axes if None.
+    label : str, optional
+        Legend label.
+    color : color
+        Line colour.
+
+    Returns
+    -------
+    dict
+        ``{"line": line}``.
+    """
     ax = axes_or_new(ax)
     with matplotlib.rc_context(STYLE):
         (line,) = ax.loglog(omega, psd, color=color, label=label)

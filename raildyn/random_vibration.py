@@ -54,6 +54,7 @@ References
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.signal
@@ -61,9 +62,13 @@ import scipy.signal
 from raildyn import _checks
 
 __all__ = [
+    "SpectralLines",
+    "Spectrum",
+    "cancellation_frequencies",
     "convert_psd",
     "response_psd",
     "delayed_input_csd",
+    "delayed_mean_psd",
     "mean_square",
     "rms",
     "spectral_moments",
@@ -80,6 +85,60 @@ _SIDED = ("one", "two")
 _TIME_UNITS = ("rad/s", "Hz")
 _SPACE_UNITS = ("rad/m", "cycles/m")
 _CYCLIC_UNITS = ("Hz", "cycles/m")
+
+
+# --------------------------------------------------------------------------- results
+
+
+@dataclass(frozen=True)
+class Spectrum:
+    """A one-sided PSD on a grid of frequencies (raildyn's convention, module docstring).
+
+    Attributes
+    ----------
+    omega : ndarray, shape (n,)
+        Circular frequencies, rad/s (or wavenumbers, rad/m, for a spectrum in space).
+    psd : ndarray, shape (..., n)
+        One-sided PSD per rad/s (per rad/m); several records give several rows.
+    """
+
+    omega: np.ndarray
+    psd: np.ndarray
+
+    @property
+    def mean_square(self) -> float | np.ndarray:
+        """∫ S dω over the grid by the trapezoid rule, (quantity)²: see :func:`mean_square`."""
+        value = np.trapezoid(self.psd, self.omega, axis=-1)
+        return float(value) if np.ndim(value) == 0 else value
+
+    @property
+    def rms(self) -> float | np.ndarray:
+        """√(mean square), in the unit of the quantity."""
+        return np.sqrt(self.mean_square)
+
+
+@dataclass(frozen=True)
+class SpectralLines:
+    """The spectral lines of a synthesized sample (:func:`synthesis_lines`).
+
+    Attributes
+    ----------
+    omega : ndarray
+        Line frequencies kept, rad/s.
+    psd : ndarray
+        One-sided PSD at those frequencies, per rad/s.
+    d_omega : float
+        Line spacing Δω = 2π/(n·dt), rad/s.
+    """
+
+    omega: np.ndarray
+    psd: np.ndarray
+    d_omega: float
+
+    @property
+    def mean_square(self) -> float:
+        """Σ_k S(ω_k) Δω: the mean square of every sample over its record, (quantity)²."""
+        return float(np.sum(self.psd) * self.d_omega)
 
 
 # --------------------------------------------------------------------------- conventions
@@ -256,6 +315,77 @@ def delayed_input_csd(psd, omega, delays) -> np.ndarray:
     return S[:, None, None] * np.exp(-1j * w[:, None, None] * dtau[None, :, :])
 
 
+def delayed_mean_psd(psd, omega, delays) -> np.ndarray:
+    """PSD of the mean of q inputs that are one process met with time delays.
+
+    The mean y(t) = (1/q) Σ_j u(t − τ_j) (the average of what q axles meet,
+    a bounce input) has the frequency response (1/q) Σ_j e^{−iωτ_j}, so
+
+        S_y(ω) = S(ω) |(1/q) Σ_j e^{−iωτ_j}|²
+
+    (:func:`response_psd` of the cross-spectral matrix of
+    :func:`delayed_input_csd` gives the same). For two inputs τ apart,
+    S_y = S cos²(ωτ/2): the mean misses every frequency of
+    :func:`cancellation_frequencies`.
+
+    Parameters
+    ----------
+    psd : array_like, shape (n,)
+        One-sided PSD S(ω) of u, >= 0, per rad/s.
+    omega : array_like, shape (n,)
+        Circular frequencies, rad/s, >= 0.
+    delays : array_like, shape (q,)
+        Time delays τ_j, s.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        One-sided PSD of the mean, per rad/s.
+
+    Examples
+    --------
+    >>> tau = 0.1
+    >>> np.round(delayed_mean_psd([1.0, 1.0], [0.0, np.pi / tau], [0.0, tau]), 12).tolist()
+    [1.0, 0.0]
+    """
+    S, w = _spectrum_grid(psd, omega, increasing=False)
+    tau = _checks.array("delays", delays, ndim=1)
+    if tau.size == 0:
+        raise ValueError("delays must hold at least one delay, got an empty array")
+    gain = np.exp(-1j * w[:, None] * tau[None, :]).mean(axis=1)
+    return S * np.abs(gain) ** 2
+
+
+def cancellation_frequencies(delay, count: int) -> np.ndarray:
+    """Circular frequencies ω_j = (2j + 1)π/τ at which the mean of two inputs τ apart vanishes.
+
+    Two inputs that are one process met τ apart average to zero wherever one is
+    half a period behind the other: ωτ = π, 3π, 5π … (the zeros of
+    cos(ωτ/2) in :func:`delayed_mean_psd`). For axles a distance d apart at
+    speed V, τ = d/V.
+
+    Parameters
+    ----------
+    delay : float
+        τ, s, > 0.
+    count : int
+        Number of frequencies, >= 1.
+
+    Returns
+    -------
+    ndarray, shape (count,)
+        ω_j, rad/s, j = 0 … count − 1.
+
+    Examples
+    --------
+    >>> np.round(cancellation_frequencies(np.pi, 3), 12).tolist()
+    [1.0, 3.0, 5.0]
+    """
+    tau = _checks.positive("delay", delay)
+    n = _checks.integer("count", count, low=1)
+    return (2 * np.arange(n) + 1) * np.pi / tau
+
+
 # --------------------------------------------------------------------------- mean squares and moments
 
 
@@ -308,11 +438,29 @@ def mean_square(psd, omega) -> float:
 
 
 def rms(psd, omega) -> float:
-    """Root mean square √(∫ S dω) of a zero-mean process (see :func:`mean_square`)."""
+    """Root mean square √(∫ S dω) of a zero-mean process (see :func:`mean_square`).
+
+    Parameters
+    ----------
+    psd : array_like, shape (n,)
+        One-sided PSD >= 0 per rad/s (per rad/m in space).
+    omega : array_like, shape (n,)
+        Frequencies >= 0, strictly increasing, rad/s (rad/m), n >= 2.
+
+    Returns
+    -------
+    float
+        RMS, in the unit of the quantity.
+
+    Examples
+    --------
+    >>> rms([2.0, 2.0], [1.0, 3.0])
+    2.0
+    """
     return float(np.sqrt(mean_square(psd, omega)))
 
 
-def spectral_moments(psd, omega, orders=(0, 2, 4)) -> dict:
+def spectral_moments(psd, omega, orders=(0, 2, 4)) -> np.ndarray:
     """Spectral moments m_k = ∫ ω^k S(ω) dω (trapezoid rule over the grid).
 
     m₀ is the mean square of the process, m₂ that of its derivative and m₄ that
@@ -327,23 +475,23 @@ def spectral_moments(psd, omega, orders=(0, 2, 4)) -> dict:
 
     Returns
     -------
-    dict
-        ``{k: m_k}`` keyed by the orders as given; m_k in (quantity)²·(rad/s)^k.
+    ndarray, shape (len(orders),)
+        m_k for each order, in the order given; m_k in (quantity)²·(rad/s)^k.
 
     Examples
     --------
     >>> spectral_moments([1.0, 1.0], [0.0, 1.0], orders=(0, 1))
-    {0: 1.0, 1: 0.5}
+    array([1. , 0.5])
     """
     S, w = _spectrum_grid(psd, omega, min_points=2)
     if isinstance(orders, np.ndarray) and orders.ndim == 1:
         orders = orders.tolist()
     if isinstance(orders, (str, bytes)) or not isinstance(orders, Sequence):
         raise TypeError(f"orders must be a sequence of numbers >= 0, got {orders!r}")
-    out = {}
-    for k in orders:
+    out = np.empty(len(orders))
+    for i, k in enumerate(orders):
         kk = _checks.nonnegative("orders", k)
-        out[k] = float(np.trapezoid(w**kk * S, w))
+        out[i] = np.trapezoid(w**kk * S, w)
     return out
 
 
@@ -352,24 +500,60 @@ def zero_upcrossing_rate(psd, omega) -> float:
 
     Rice's formula (Rice 1944; Newland 1993, ch. 8). For a PSD per rad/s the
     result is in crossings per second; per rad/m, crossings per metre.
+
+    Parameters
+    ----------
+    psd : array_like, shape (n,)
+        One-sided PSD >= 0 per rad/s (per rad/m).
+    omega : array_like, shape (n,)
+        Frequencies >= 0, strictly increasing, rad/s (rad/m), n >= 2.
+
+    Returns
+    -------
+    float
+        ν₀⁺, 1/s (1/m in space).
+
+    Examples
+    --------
+    A narrow band at ω = 2π rad/s crosses zero upwards about once a second:
+
+    >>> w = np.linspace(6.2, 6.36, 201)
+    >>> round(zero_upcrossing_rate(np.ones(w.size), w), 3)
+    1.0
     """
-    m = spectral_moments(psd, omega, orders=(0, 2))
-    if m[0] <= 0:
+    m0, m2 = spectral_moments(psd, omega, orders=(0, 2))
+    if m0 <= 0:
         raise ValueError(
             "psd must not be zero everywhere: the mean square m0 is 0, so no crossing rate exists"
         )
-    return float(np.sqrt(m[2] / m[0]) / (2.0 * np.pi))
+    return float(np.sqrt(m2 / m0) / (2.0 * np.pi))
 
 
 def peak_rate(psd, omega) -> float:
     """Expected rate of maxima ν_p = (1/2π) √(m₄/m₂) of a Gaussian process (Rice 1945; Newland 1993, ch. 8).
 
-    Per second for a PSD per rad/s, per metre for one per rad/m.
+    Parameters
+    ----------
+    psd : array_like, shape (n,)
+        One-sided PSD >= 0 per rad/s (per rad/m).
+    omega : array_like, shape (n,)
+        Frequencies >= 0, strictly increasing, rad/s (rad/m), n >= 2.
+
+    Returns
+    -------
+    float
+        ν_p, 1/s for a PSD per rad/s, 1/m for one per rad/m.
+
+    Examples
+    --------
+    >>> w = np.linspace(6.2, 6.36, 201)
+    >>> round(peak_rate(np.ones(w.size), w), 3)
+    1.0
     """
-    m = spectral_moments(psd, omega, orders=(2, 4))
-    if m[2] <= 0:
+    m2, m4 = spectral_moments(psd, omega, orders=(2, 4))
+    if m2 <= 0:
         raise ValueError("psd must not vanish at every omega > 0: m2 is 0, so no peak rate exists")
-    return float(np.sqrt(m[4] / m[2]) / (2.0 * np.pi))
+    return float(np.sqrt(m4 / m2) / (2.0 * np.pi))
 
 
 def irregularity_factor(psd, omega) -> float:
@@ -378,11 +562,29 @@ def irregularity_factor(psd, omega) -> float:
     The ratio of zero up-crossings to maxima: α → 1 for a narrow-band process
     (one peak per crossing), α → 0 for a broad-band one (Rice 1945; Newland 1993,
     ch. 8).
+
+    Parameters
+    ----------
+    psd : array_like, shape (n,)
+        One-sided PSD >= 0 per rad/s (per rad/m).
+    omega : array_like, shape (n,)
+        Frequencies >= 0, strictly increasing, rad/s (rad/m), n >= 2.
+
+    Returns
+    -------
+    float
+        α, dimensionless.
+
+    Examples
+    --------
+    >>> w = np.linspace(6.2, 6.36, 201)
+    >>> round(irregularity_factor(np.ones(w.size), w), 3)  # narrow band: α close to 1
+    1.0
     """
-    m = spectral_moments(psd, omega, orders=(0, 2, 4))
-    if m[0] <= 0 or m[4] <= 0:
+    m0, m2, m4 = spectral_moments(psd, omega, orders=(0, 2, 4))
+    if m0 <= 0 or m4 <= 0:
         raise ValueError("psd must not vanish at every omega > 0: m0 or m4 is 0, so the factor is undefined")
-    return float(m[2] / np.sqrt(m[0] * m[4]))
+    return float(m2 / np.sqrt(m0 * m4))
 
 
 def sdof_white_noise_mean_square(mass, damping, stiffness, psd_level, sided="one") -> float:
@@ -479,34 +681,42 @@ def _band_mask(band, w: np.ndarray, dt: float) -> np.ndarray:
     return mask
 
 
-def synthesis_lines(psd, dt, n, *, band=None) -> tuple[np.ndarray, np.ndarray, float]:
+def synthesis_lines(psd, dt, n, *, band=None) -> SpectralLines:
     """The spectral lines :func:`synthesize` uses: frequencies, PSD values and spacing.
 
     ω_k = 2πk/(n·dt) for k = 1 … ⌈n/2⌉ − 1 (the zero frequency and, for even n,
     the Nyquist frequency are left out), restricted to ``band`` if given. Every
     sample of :func:`synthesize` has mean square over its record exactly
-    Σ_k S(ω_k) Δω = ``(values * d_omega).sum()``.
+    Σ_k S(ω_k) Δω (``SpectralLines.mean_square``).
 
     Parameters
     ----------
-    psd, dt, n, band
-        As for :func:`synthesize`.
+    psd : callable or (omega_grid, values)
+        One-sided PSD per rad/s, as for :func:`synthesize`.
+    dt : float
+        Time step, s, > 0.
+    n : int
+        Number of time points, >= 4.
+    band : (omega_lo, omega_hi), optional
+        Lines kept, rad/s, as for :func:`synthesize`.
 
     Returns
     -------
-    omega : ndarray
-        Line frequencies kept, rad/s.
-    values : ndarray
-        One-sided PSD at those frequencies.
-    d_omega : float
-        Line spacing Δω = 2π/(n·dt), rad/s.
+    SpectralLines
+        Line frequencies (rad/s), PSD values there and the spacing Δω (rad/s).
+
+    Examples
+    --------
+    >>> lines = synthesis_lines(lambda w: 0.01, dt=0.01, n=8)
+    >>> lines.omega.round(3).tolist(), round(lines.d_omega, 3)
+    ([78.54, 157.08, 235.619], 78.54)
     """
     dt = _checks.positive("dt", dt)
     n = _checks.integer("n", n, low=4)
     w, d_omega = _line_grid(dt, n)
     mask = _band_mask(band, w, dt)
     S = _evaluate_psd(psd, w)
-    return w[mask], S[mask], d_omega
+    return SpectralLines(omega=w[mask], psd=S[mask], d_omega=d_omega)
 
 
 def synthesize(
@@ -561,8 +771,8 @@ def synthesize(
     Examples
     --------
     >>> x = synthesize(lambda w: 0.01, dt=0.01, n=1024, rng=1)
-    >>> w, s, dw = synthesis_lines(lambda w: 0.01, dt=0.01, n=1024)
-    >>> bool(np.isclose(np.mean(x**2), np.sum(s) * dw, rtol=1e-12))
+    >>> lines = synthesis_lines(lambda w: 0.01, dt=0.01, n=1024)
+    >>> bool(np.isclose(np.mean(x**2), lines.mean_square, rtol=1e-12))
     True
     """
     generator = _checks.generator(rng)
@@ -582,7 +792,7 @@ def synthesize(
     return x[0] if n_samples == 1 else x
 
 
-def welch_psd(x, dt, nperseg=None) -> tuple[np.ndarray, np.ndarray]:
+def welch_psd(x, dt, nperseg=None) -> Spectrum:
     """Welch estimate of the PSD of a sampled record, in the raildyn convention.
 
     Calls ``scipy.signal.welch`` (Hann window, 50 % overlap, mean removed;
@@ -604,10 +814,18 @@ def welch_psd(x, dt, nperseg=None) -> tuple[np.ndarray, np.ndarray]:
 
     Returns
     -------
-    omega : ndarray, shape (nperseg//2 + 1,)
-        Circular frequencies, rad/s.
-    psd : ndarray, shape (..., nperseg//2 + 1)
-        One-sided PSD per rad/s.
+    Spectrum
+        ``omega`` (nperseg//2 + 1,) in rad/s and ``psd`` (..., nperseg//2 + 1),
+        one-sided per rad/s.
+
+    Examples
+    --------
+    The mean square of a unit sine is 1/2, whatever the window:
+
+    >>> t = np.arange(4096) * 0.01
+    >>> est = welch_psd(np.sin(2 * np.pi * 5.0 * t), 0.01, nperseg=1024)
+    >>> round(est.mean_square, 3)
+    0.5
     """
     arr = _checks.array("x", x)
     if arr.ndim not in (1, 2):
@@ -618,4 +836,4 @@ def welch_psd(x, dt, nperseg=None) -> tuple[np.ndarray, np.ndarray]:
         raise ValueError(f"x must hold at least 4 samples per record, got {n}")
     nperseg = min(256, n) if nperseg is None else _checks.integer("nperseg", nperseg, low=4, high=n)
     f, p_hz = scipy.signal.welch(arr, fs=1.0 / dt, nperseg=nperseg, axis=-1)
-    return 2.0 * np.pi * f, p_hz / (2.0 * np.pi)
+    return Spectrum(omega=2.0 * np.pi * f, psd=p_hz / (2.0 * np.pi))

@@ -280,3 +280,20 @@ def test_bad_input():
         creep_coefficients(-1e-3, 4e-3)
     with pytest.raises(ValueError, match="speed"):
         wheelset_creepages(0.0, 0, 0, 0, 0.46, 0.46, 0.46, 0.75)
+
+
+def test_defaults_are_the_steel_constants_of_raildyn():
+    from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
+
+    # One source for G and ν: the default coefficients are those of G = E/(2(1 + ν)) = 80.8 GPa,
+    # the shear modulus of the steel that Hertz's patch uses, not a separately rounded 81 GPa.
+    a, b = 6e-3, 4e-3
+    default = creep_coefficients(a, b)
+    assert default == creep_coefficients(a, b, STEEL_SHEAR_MODULUS, STEEL_POISSON_RATIO)
+    c = kalker_coefficients(a / b, STEEL_POISSON_RATIO)
+    assert default.f11 == pytest.approx(STEEL_SHEAR_MODULUS * a * b * c.c11, rel=1e-14)
+    assert polach(1e-3, 0.0, 0.0, 1e5, 0.3, a, b) == polach(
+        1e-3, 0.0, 0.0, 1e5, 0.3, a, b, STEEL_SHEAR_MODULUS, STEEL_POISSON_RATIO
+    )
+    dry = polach_adhesion(1e-3, 0.0, 0.0, 1e5, 20.0, a, b)
+    assert dry == polach_adhesion(1e-3, 0.0, 0.0, 1e5, 20.0, a, b, POLACH_DRY, STEEL_SHEAR_MODULUS, 0.3)

@@ -67,13 +67,13 @@ def test_large_creepage_saturates_at_mu_n(direction):
 def test_vectorized_equals_the_cell_by_cell_reference(xi, eta, phi, mu, ratio):
     a, b = A, A / ratio
     r = fastsim(xi, eta, phi, N, mu, a, b, G, NU, fields=False)
-    l1, l2, l3 = flexibilities(a, b, G, NU)
-    ref = fastsim_reference(xi, eta, phi, N, mu, a, b, float(l1), float(l2), float(l3))
+    flex = flexibilities(a, b, G, NU)
+    ref = fastsim_reference(xi, eta, phi, N, mu, a, b, float(flex.l1), float(flex.l2), float(flex.l3))
     # Same arithmetic in another order: agreement to 1e-9 of μN.
     scale = mu * N
-    assert r.fx == pytest.approx(ref[0], abs=1e-9 * scale)
-    assert r.fy == pytest.approx(ref[1], abs=1e-9 * scale)
-    assert r.mz == pytest.approx(ref[2], abs=1e-9 * scale * A)
+    assert r.fx == pytest.approx(ref.fx, abs=1e-9 * scale)
+    assert r.fy == pytest.approx(ref.fy, abs=1e-9 * scale)
+    assert r.mz == pytest.approx(ref.mz, abs=1e-9 * scale * A)
     assert np.hypot(r.fx, r.fy) <= scale * (1 + 1e-12)
 
 
@@ -106,3 +106,44 @@ def test_bad_input():
         fastsim(1e-3, 0, 0, N, MU, A, A / 20)
     with pytest.raises(ValueError, match="n_x"):
         fastsim(1e-3, 0, 0, N, MU, A, B, n_x=1)
+
+
+def test_defaults_are_the_steel_constants_of_raildyn():
+    from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
+
+    # One source for G: the default is G = E/(2(1 + ν)) of raildyn.constants (80.8 GPa, not 81).
+    default = fastsim(1e-4, 2e-4, 0.1, N, MU, A, B, fields=False)
+    explicit = fastsim(1e-4, 2e-4, 0.1, N, MU, A, B, STEEL_SHEAR_MODULUS, STEEL_POISSON_RATIO, fields=False)
+    assert default == explicit
+    assert flexibilities(A, B) == flexibilities(A, B, STEEL_SHEAR_MODULUS, STEEL_POISSON_RATIO)
+    # In the linear range the force is proportional to G: the old default 81 GPa gave 0.3 % more.
+    old = fastsim(1e-7, 0.0, 0.0, N, MU, A, B, 8.1e10, 0.3, fields=False)
+    assert default.fx != old.fx
+    tiny = fastsim(1e-7, 0.0, 0.0, N, MU, A, B, fields=False)
+    assert tiny.fx / old.fx == pytest.approx(STEEL_SHEAR_MODULUS / 8.1e10, rel=1e-9)
+
+
+def test_result_knows_its_state_and_the_friction_in_use():
+    r = fastsim(np.array([1e-4, 1e-2]), 0.0, 0.0, N, MU, A, B, fields=False)
+    np.testing.assert_array_equal(r.friction, [MU, MU])
+    # |F|/(μN): small in the linear range, 1 in full sliding (to the grid's rounding, as above)
+    assert r.friction_utilisation[0] < 0.1
+    assert r.friction_utilisation[1] == pytest.approx(1.0, rel=2e-3)
+    f = flexibilities(A, B, G, NU)
+    ref = fastsim_reference(1e-3, 0.0, 0.0, N, MU, A, B, f.l1, f.l2, f.l3)
+    assert ref.friction_utilisation == pytest.approx(np.hypot(ref.fx, ref.fy) / (MU * N), rel=1e-15)
+
+
+def test_plot_patch_draws_one_state_and_moves_its_cells():
+    import matplotlib.pyplot as plt
+
+    r = fastsim(1e-3, 0.5e-3, 0.0, N, MU, A, B, n_x=12, n_y=12)
+    _, ax = plt.subplots()
+    art = r.plot_patch(ax)
+    assert len(art["stick"].get_offsets()) == int(r.adhesion.sum())
+    assert len(art["stick"].get_offsets()) + len(art["slip"].get_offsets()) == 144
+    sliding = fastsim(5e-3, 0.0, 0.0, N, MU, A, B, n_x=12, n_y=12)
+    assert sliding.plot_patch(artists=art) is art
+    assert len(art["stick"].get_offsets()) == int(sliding.adhesion.sum()) < int(r.adhesion.sum())
+    with pytest.raises(ValueError, match="fields"):
+        fastsim(1e-3, 0.0, 0.0, N, MU, A, B, fields=False).plot_patch(ax)

@@ -38,7 +38,8 @@ CLASSIC_TABLE = {
 
 @pytest.mark.parametrize("theta_deg", sorted(CLASSIC_TABLE))
 def test_m_n_against_the_classic_table(theta_deg):
-    m, n = hertz_coefficients(math.radians(theta_deg))
+    h = hertz_coefficients(math.radians(theta_deg))
+    m, n = h.m, h.n
     m_tab, n_tab = CLASSIC_TABLE[theta_deg]
     # The table has three decimals (±0.0005) and carries errors of up to 2 units in the third
     # decimal in Hertz's own computation (Cooper 1969 lists them): 2.5e-3 absolute.
@@ -48,15 +49,18 @@ def test_m_n_against_the_classic_table(theta_deg):
 
 def test_m_n_vectorized_equal_scalar_calls():
     theta = np.radians([10.0, 33.0, 77.0])
-    m, n = hertz_coefficients(theta)
+    h = hertz_coefficients(theta)
+    m, n = h.m, h.n
     for t, mi, ni in zip(theta, m, n, strict=True):
-        assert (mi, ni) == pytest.approx(hertz_coefficients(float(t)), rel=1e-14)
+        one = hertz_coefficients(float(t))
+        assert (mi, ni) == pytest.approx((one.m, one.n), rel=1e-14)
 
 
 @given(st.floats(1.0, 90.0))
 @PROPERTY
 def test_m_n_satisfy_the_defining_elliptic_integral_equations(theta_deg):
-    m, n = hertz_coefficients(math.radians(theta_deg))
+    h = hertz_coefficients(math.radians(theta_deg))
+    m, n = h.m, h.n
     k = n / m
     e2 = 1 - k**2
     big_k, big_e = special.ellipk(e2), special.ellipe(e2)
@@ -130,3 +134,22 @@ def test_bad_input():
         hertz_coefficients(0.0)
     with pytest.raises(ValueError, match="theta"):
         hertz_coefficients(2.0)
+
+
+def test_defaults_are_the_steel_constants_of_raildyn():
+    from raildyn.constants import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
+
+    # One source for E and ν: the default contact equals the one given the constants, exactly.
+    default = hertz_contact(100e3, 0.46, math.inf, 0.3)
+    explicit = hertz_contact(100e3, 0.46, math.inf, 0.3, STEEL_YOUNGS_MODULUS, STEEL_POISSON_RATIO)
+    assert default == explicit
+
+
+def test_coefficients_are_a_frozen_dataclass_with_theta():
+    import dataclasses
+
+    h = hertz_coefficients(math.radians(45.0))
+    assert dataclasses.is_dataclass(h) and not isinstance(h, tuple)
+    assert h.theta == pytest.approx(math.pi / 4, rel=1e-15)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        h.m = 2.0

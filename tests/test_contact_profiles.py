@@ -16,6 +16,7 @@ from raildyn.contact import (
     contact_angles,
     contact_geometry,
     equivalent_conicity,
+    harmonic_conicity,
     rolling_radius_difference,
     s1002_wheel,
     uic60_rail,
@@ -116,3 +117,29 @@ def test_bad_input():
         s1002_wheel(-0.46)
     with pytest.raises(ValueError, match="shifts"):
         contact_geometry(S1002, RAIL, [np.nan])
+
+
+def test_geometry_plots_draw_and_move_their_lines():
+    import matplotlib.pyplot as plt
+
+    rail = uic60_rail(1 / 40)
+    y = np.linspace(-10e-3, 10e-3, 121)
+    amp = np.linspace(0.5e-3, 10e-3, 20)
+    s1002 = contact_geometry(s1002_wheel(), rail, y)
+    _, (ax_r, ax_d, ax_l) = plt.subplots(1, 3)
+    dr = s1002.plot_rolling_radius_difference(ax_r, label="S1002")
+    ang = s1002.plot_contact_angle(ax_d)
+    lam = s1002.plot_equivalent_conicity(amp, ax_l)
+    np.testing.assert_allclose(
+        dr["rolling_radius_difference"].get_ydata(), 1e3 * s1002.rolling_radius_difference
+    )
+    np.testing.assert_allclose(ang["contact_angle"].get_ydata(), np.degrees(s1002.contact_angle[0]))
+    # The method is the harmonic linearisation of the same table (one call, identical numbers).
+    np.testing.assert_array_equal(
+        lam["equivalent_conicity"].get_ydata(),
+        harmonic_conicity(y, s1002.rolling_radius_difference, amp),
+    )
+    cone = contact_geometry(conical_wheel(1 / 20), rail, y, roll=False)
+    assert cone.plot_equivalent_conicity(amp, artists=lam) is lam and len(ax_l.lines) == 1
+    # A cone without roll: Δr = 2λy, so λ_e = λ at every amplitude (rounding of the quadrature).
+    np.testing.assert_allclose(lam["equivalent_conicity"].get_ydata(), 0.05, rtol=1e-9)

@@ -101,7 +101,7 @@ def test_spectral_moments_and_rates_of_band_limited_white_noise():
     G, W = 0.8, 10.0
     w = np.linspace(0.0, W, 10001)  # step h = 1e-3
     S = np.full_like(w, G)
-    m = rv.spectral_moments(S, w, orders=(0, 2, 4))
+    m = dict(zip((0, 2, 4), rv.spectral_moments(S, w, orders=(0, 2, 4)), strict=True))  # m[k] = m_k
     # Euler-Maclaurin: trapezoid error of ω² is (h²/12)·2W·G exactly, i.e. h²/(2W²) = 5e-9 relative;
     # of ω⁴ it is (5/3)h²/W² ≈ 1.7e-8 relative to leading order; 1e-7 covers both
     assert m[0] == pytest.approx(G * W, rel=1e-13)
@@ -111,7 +111,7 @@ def test_spectral_moments_and_rates_of_band_limited_white_noise():
     assert rv.peak_rate(S, w) == pytest.approx(W / (2 * np.pi) * np.sqrt(3 / 5), rel=1e-7)
     assert rv.irregularity_factor(S, w) == pytest.approx(np.sqrt(5) / 3, rel=1e-7)
     assert 0.0 < rv.irregularity_factor(S, w) <= 1.0
-    assert rv.spectral_moments(S, w, orders=np.array([2]))[2] == m[2]  # an array of orders works too
+    assert rv.spectral_moments(S, w, orders=np.array([2]))[0] == m[2]  # an array of orders works too
 
 
 # --------------------------------------------------------------------------- SDOF under white noise
@@ -264,7 +264,8 @@ def test_synthesize_shapes_grid_psd_and_band():
     values = np.array([1.0, 1.0, 0.0])
     assert rv.synthesize((omega_grid, values), 0.01, 101, rng=0).shape == (101,)
     assert rv.synthesize((omega_grid, values), 0.01, 100, rng=0, n_samples=3).shape == (3, 100)
-    w, s, dw = rv.synthesis_lines((omega_grid, values), 0.01, 1000)
+    lines = rv.synthesis_lines((omega_grid, values), 0.01, 1000)
+    w, s, dw = lines.omega, lines.psd, lines.d_omega
     np.testing.assert_allclose(s, np.interp(w, omega_grid, values, left=0.0, right=0.0), rtol=1e-15)
     assert np.all(s[w > 20.0] == 0.0)
     # a band keeps the same phases on the lines it keeps: same as zeroing the PSD outside it
@@ -272,7 +273,8 @@ def test_synthesize_shapes_grid_psd_and_band():
     inside = rv.synthesize(lambda w: 2.0, 0.01, 1000, rng=4, band=band)
     masked = rv.synthesize(lambda w: 2.0 * ((w >= band[0]) & (w <= band[1])), 0.01, 1000, rng=4)
     np.testing.assert_allclose(inside, masked, rtol=0, atol=1e-14)
-    wb, sb, _ = rv.synthesis_lines(lambda w: 2.0, 0.01, 1000, band=band)
+    kept = rv.synthesis_lines(lambda w: 2.0, 0.01, 1000, band=band)
+    wb, sb = kept.omega, kept.psd
     assert wb.min() >= band[0] and wb.max() <= band[1]
     assert np.mean(inside**2) == pytest.approx(np.sum(sb) * dw, rel=1e-12)
 
@@ -332,7 +334,8 @@ def test_welch_estimate_matches_target_psd_within_chi_square_bounds():
     dt, n, nperseg = 0.01, 2**18, 512
     G, band = 0.5, (5.0, 250.0)
     x = rv.synthesize(lambda w: G, dt, n, rng=7, band=band)
-    w, p = rv.welch_psd(x, dt, nperseg=nperseg)
+    estimate = rv.welch_psd(x, dt, nperseg=nperseg)
+    w, p = estimate.omega, estimate.psd
     assert w[-1] == pytest.approx(np.pi / dt)
     dw = w[1] - w[0]
     inner = (w >= band[0] + 4 * dw) & (w <= band[1] - 4 * dw)  # Hann leakage from the band edges stays out
@@ -476,3 +479,57 @@ def test_bad_welch_input():
         rv.welch_psd([0.0, 1.0, np.nan, 0.0, 1.0], 0.01)
     with pytest.raises(ValueError, match="dt must be in"):
         rv.welch_psd(np.zeros(100), -0.01)
+
+
+# ---------------------------------------------------------------- result shapes and the delay filter
+
+
+def test_results_are_frozen_dataclasses_with_their_mean_square():
+    import dataclasses
+
+    x = rv.synthesize(lambda w: 0.5, 0.01, 4096, rng=3)
+    lines = rv.synthesis_lines(lambda w: 0.5, 0.01, 4096)
+    estimate = rv.welch_psd(x, 0.01, nperseg=512)
+    for result in (lines, estimate):
+        assert dataclasses.is_dataclass(result) and not isinstance(result, tuple)
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            result.omega = None
+    # Parseval over the record: the mean square of the sample is the sum over its lines, to rounding.
+    assert lines.mean_square == pytest.approx(np.mean(x**2), rel=1e-12)
+    # The Spectrum's mean square is the trapezoid rule over its grid, as mean_square computes it.
+    assert estimate.mean_square == pytest.approx(rv.mean_square(estimate.psd, estimate.omega), rel=1e-15)
+    assert estimate.rms == pytest.approx(np.sqrt(estimate.mean_square), rel=1e-15)
+
+
+def test_spectral_moments_come_in_the_order_asked():
+    w = np.linspace(0.0, 2.0, 201)
+    m = rv.spectral_moments(np.ones_like(w), w, orders=(4, 0, 2))
+    # Trapezoid rule on ω^k, step 0.01: m_0 exact, m_2 and m_4 within (h²/12)·(max |f''|)·W ≲ 2e-4.
+    assert m.shape == (3,)
+    np.testing.assert_allclose(m, [2.0**5 / 5, 2.0, 2.0**3 / 3], rtol=2e-4)
+
+
+@given(st.floats(0.01, 1.0), st.integers(2, 4))
+@settings(max_examples=30, deadline=None)
+def test_delayed_mean_psd_is_the_response_to_the_cross_spectral_matrix(tau, q):
+    w = np.linspace(0.0, 200.0, 801)
+    S = 1.0 / (1.0 + w**2)
+    delays = tau * np.arange(q) ** 1.5
+    csd = rv.delayed_input_csd(S, w, delays)
+    # Two routes to the PSD of the mean (1/q) Σ u(t − τ_j): H S Hᴴ with H = 1/q, and S|mean e^{−iωτ}|².
+    expected = rv.response_psd(np.full((w.size, q), 1.0 / q), csd)
+    np.testing.assert_allclose(rv.delayed_mean_psd(S, w, delays), expected, rtol=1e-12, atol=1e-15)
+
+
+def test_mean_of_two_delayed_inputs_vanishes_at_the_cancellation_frequencies():
+    tau = 2.5 / 30.0
+    w = rv.cancellation_frequencies(tau, 4)
+    np.testing.assert_allclose(w, np.array([1, 3, 5, 7]) * np.pi / tau, rtol=1e-15)
+    # cos²(ωτ/2) = 0 there: rounding of the phase (~ωτ ε ≈ 2e-15) squared.
+    assert np.all(rv.delayed_mean_psd(np.ones(4), w, [0.0, tau]) < 1e-28)
+    with pytest.raises(ValueError, match="delay"):
+        rv.cancellation_frequencies(0.0, 2)
+    with pytest.raises(ValueError, match="count"):
+        rv.cancellation_frequencies(0.1, 0)
+    with pytest.raises(ValueError, match="delays must hold at least one"):
+        rv.delayed_mean_psd([1.0], [1.0], [])

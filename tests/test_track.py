@@ -216,7 +216,8 @@ def test_welch_estimate_of_a_long_sample_follows_the_spectrum():
     psd = track_psd("german", "vertical", "high")
     dx = 0.25
     sample = synthesize_irregularity(psd, 40_000.0, dx, (1.0, 200.0), rng=5)
-    w, s = rv.welch_psd(sample.z, dx, nperseg=4096)  # space: rad/m instead of rad/s
+    estimate = rv.welch_psd(sample.z, dx, nperseg=4096)  # space: rad/m instead of rad/s
+    w, s = estimate.omega, estimate.psd
     keep = (w > 0.2) & (w < 5.0)  # well inside the band, away from its edges and the window's leakage
     ratio = s[keep] / psd(w[keep])
     # ~19 half-overlapping segments: each Welch value has a relative standard deviation near 1/√10;
@@ -241,20 +242,20 @@ def test_two_rail_sample_is_consistent():
     np.testing.assert_allclose(t.left_lateral - t.right_lateral, t.gauge, atol=1e-15)
     np.testing.assert_allclose(0.5 * (t.left_vertical + t.right_vertical), t.vertical, atol=1e-15)
     for name in COMPONENTS:
-        assert np.mean(getattr(t, name) ** 2) == pytest.approx(t.variances[name], rel=1e-10)
+        assert np.mean(getattr(t, name) ** 2) == pytest.approx(getattr(t.variances, name), rel=1e-10)
     # independent components: the sample correlation of 8000 points of long-wavelength processes is small
     # but not tiny (few independent wavelengths per record); 0.3 is far above its spread here.
     assert abs(np.corrcoef(t.vertical, t.cross_level)[0, 1]) < 0.3
     g = synthesize_track("german", "low", 2000.0, 0.25, (1.524, 304.8), rng=7)
     np.testing.assert_allclose(g.left_lateral - g.right_lateral, g.gauge, atol=1e-15)
     for name in COMPONENTS:
-        assert np.mean(getattr(g, name) ** 2) == pytest.approx(g.variances[name], rel=1e-10)
+        assert np.mean(getattr(g, name) ** 2) == pytest.approx(getattr(g.variances, name), rel=1e-10)
     # the German gauge is sampled from its spectrum: its variance is the band integral of S_g (this band
     # lies on the grid, so it is the sampled band; 8-point Gauss–Legendre per cell as in
     # test_sample_variance_equals_the_band_integral, error far below 1e-8) and is not zero
     band = wavelength_band((1.524, 304.8))
-    assert g.variances["gauge"] > 0
-    assert g.variances["gauge"] == pytest.approx(band_variance("german", "gauge", "low", band), rel=1e-8)
+    assert g.variances.gauge > 0
+    assert g.variances.gauge == pytest.approx(band_variance("german", "gauge", "low", band), rel=1e-8)
 
 
 @settings(deadline=None, max_examples=40)
@@ -281,7 +282,8 @@ def test_property_sample_mean_square_is_the_band_variance(seed, grade, component
 def test_speed_scaling_conserves_the_variance(speed, grade):
     w_space = np.geomspace(*FRA_BAND, 4001)
     s_space = fra_psd("alignment", grade, w_space)
-    w_time, s_time = track.spatial_to_temporal(s_space, w_space, speed)
+    in_time = track.spatial_to_temporal(s_space, w_space, speed)
+    w_time, s_time = in_time.omega, in_time.psd
     # ω = VΩ and S_t = S/V: the trapezoid sums are the same numbers scaled by V and 1/V (round-off)
     assert rv.mean_square(s_time, w_time) == pytest.approx(rv.mean_square(s_space, w_space), rel=1e-12)
     callable_t = track.temporal_psd(track_psd("fra", "alignment", grade), speed)
@@ -432,3 +434,91 @@ def test_harmonic_amplitudes_of_a_sum_of_sinusoids():
 def test_harmonic_amplitudes_bad_count():
     with pytest.raises(ValueError, match="count"):
         track.harmonic_amplitudes(np.zeros(8), 4)
+
+
+# --------------------------------------------------------------------------- rates in time, filters, results
+
+
+@pytest.mark.parametrize(
+    ("profile", "kwargs"),
+    [
+        (bump, {"height": 0.01, "length": 4.0, "position": 5.0}),
+        (sinusoid, {"amplitude": 0.003, "wavelength": 8.0}),
+        (dipped_joints, {"depth": 0.008, "half_width": 2.0}),
+    ],
+)
+def test_rates_in_time_are_speed_powers_times_the_derivatives_along_x(profile, kwargs):
+    x = np.linspace(0.0, 20.0, 801)
+    V = 20.0
+    for order in (0, 1, 2):
+        along = profile(x, **kwargs, derivative=order)
+        # d^k z/dt^k = V^k d^k z/dx^k: one multiplication, exact to rounding.
+        np.testing.assert_allclose(
+            profile(x, **kwargs, derivative=order, speed=V), V**order * along, rtol=1e-15
+        )
+    with pytest.raises(ValueError, match="speed must be in"):
+        profile(x, **kwargs, derivative=1, speed=0.0)
+
+
+def test_largest_vertical_velocity_on_a_bump_is_pi_h_v_over_length():
+    x = np.linspace(0.0, 20.0, 8001)  # the peak of sin at x = 6 m lies on the grid
+    rate = bump(x, -0.01, 4.0, position=5.0, derivative=1, speed=20.0)
+    # dz/dt = V (h/2)(2π/ℓ) sin(2π(x − x₀)/ℓ): largest πhV/ℓ, reached on the grid (rounding only).
+    assert np.abs(rate).max() == pytest.approx(np.pi * 0.01 * 20.0 / 4.0, rel=1e-12)
+
+
+def test_passing_speed_inverts_passing_frequency():
+    for n in (1, 2, 3):
+        V = track.passing_speed(0.9, harmonic=n)
+        # harmonic n is met at n V/L = 0.9 Hz (a product and a quotient: rounding)
+        assert n * track.passing_frequency(V) == pytest.approx(0.9, rel=1e-15)
+    with pytest.raises(ValueError, match="harmonic"):
+        track.passing_speed(0.9, harmonic=0)
+
+
+def test_axle_filter_wavelengths_are_the_zeros_of_the_two_axle_mean():
+    d, V = 2.5, 120 / 3.6
+    lam = track.axle_filter_wavelengths(d, 4)
+    np.testing.assert_allclose(lam, [5.0, 5 / 3, 1.0, 5 / 7], rtol=1e-15)
+    # The same zeros in time: ω = 2πV/λ are the cancellation frequencies of τ = d/V.
+    np.testing.assert_allclose(2 * np.pi * V / lam, rv.cancellation_frequencies(d / V, 4), rtol=1e-14)
+    with pytest.raises(ValueError, match="axle_spacing"):
+        track.axle_filter_wavelengths(-1.0, 2)
+
+
+def test_two_rail_sample_reports_rms_by_component():
+    import dataclasses
+
+    t = synthesize_track("german", "high", 1000.0, 0.25, (3.0, 150.0), rng=1)
+    assert dataclasses.is_dataclass(t.variances) and not isinstance(t.variances, dict)
+    for name in COMPONENTS:
+        assert t.rms(name) == pytest.approx(np.sqrt(getattr(t.variances, name)), rel=1e-15)
+        # the sample's mean square is its band variance (Parseval over the record: round-off)
+        assert t.measured_rms(name) == pytest.approx(t.rms(name), rel=1e-9)
+    with pytest.raises(ValueError, match="component must be one of"):
+        t.rms("twist")
+    s = synthesize_irregularity(
+        track_psd("fra", "vertical", 4), 500.0, 0.25, (2.0, 100.0), rng=3, n_samples=2
+    )
+    assert s.measured_rms == pytest.approx(s.rms, rel=1e-9)
+
+
+def test_spatial_to_temporal_gives_a_spectrum():
+    s = track.spatial_to_temporal([2.0, 2.0, 2.0], [0.0, 0.5, 1.0], 10.0)
+    assert isinstance(s, rv.Spectrum)
+    # ∫ S_t dω = ∫ S dΩ: S = 2 on [0, 1] rad/m becomes S_t = 0.2 on [0, 10] rad/s; both sums are 2.
+    assert s.mean_square == pytest.approx(2.0, rel=1e-15)
+
+
+def test_jointed_track_plot_draws_and_moves_its_lines():
+    import matplotlib.pyplot as plt
+
+    x = np.linspace(0.0, 3 * 11.9, 600)
+    staggered = jointed_track(x, 0.008, 2.0, arrangement="staggered")
+    _, ax = plt.subplots()
+    art = staggered.plot(ax)
+    assert set(art) == {"left", "right", "cross_level"}
+    np.testing.assert_allclose(art["cross_level"].get_ydata(), 1e3 * staggered.cross_level, rtol=1e-15)
+    in_phase = jointed_track(x, 0.008, 2.0, arrangement="in_phase")
+    assert in_phase.plot(artists=art) is art and len(ax.lines) == 3
+    np.testing.assert_array_equal(art["cross_level"].get_ydata(), 0.0)

@@ -39,7 +39,8 @@ def _system(xi, wn=2 * np.pi, m=3.0):
 
 def _fixed_fixed_chain(n, m, k):
     """n equal masses between two walls, n + 1 equal springs."""
-    M, K = vib.chain_matrices([m] * n, [k] * n)
+    chain = vib.chain_matrices([m] * n, [k] * n)
+    M, K = chain.M, chain.K
     K[-1, -1] += k  # the last mass is tied to the far wall as well
     return M, K
 
@@ -116,14 +117,16 @@ def test_log_decrement_from_a_sampled_free_response(xi):
 
 def test_decay_peaks_are_maxima_one_period_apart():
     s = _system(0.1)
-    times, values = s.decay_peaks(0.01, 0.3, count=3)
+    peaks = s.decay_peaks(0.01, 0.3, count=3)
+    times, values = peaks.times, peaks.values
     assert np.diff(times) == pytest.approx([s.damped_period] * 2, rel=1e-12)
     # At a maximum the velocity vanishes (to rounding of x' ~ ω_n x), and x > 0.
     assert np.all(np.abs(s.free_velocity(times, 0.01, 0.3)) < 1e-12 * s.natural_frequency * values.max())
     assert np.all(values > 0)
     assert np.log(values[0] / values[1]) == pytest.approx(s.log_decrement, rel=1e-12)
     # Starting at rest from a positive displacement, the first maximum is t = 0 itself.
-    t0, x0 = s.decay_peaks(0.02, 0.0, count=1)
+    peaks = s.decay_peaks(0.02, 0.0, count=1)
+    t0, x0 = peaks.times, peaks.values
     assert t0[0] == pytest.approx(0.0, abs=1e-12) and x0[0] == pytest.approx(0.02, rel=1e-12)
     # x = A e^(−σt) cos θ peaks where cos θ = √(1 − ξ²), just before it touches the envelope A e^(−σt);
     # closed forms on both sides, so rounding only.
@@ -206,19 +209,20 @@ def test_roots_of_a_heavily_overdamped_system_keep_their_accuracy():
 
 def test_root_locus_matches_the_roots_and_the_book_limits():
     xi = np.linspace(0.0, 3.0, 31)
-    locus = vib.root_locus(2.0, xi)
+    locus = vib.root_locus(2.0, xi).roots
     assert locus.shape == (31, 2) and locus.dtype == complex
     for row, value in zip(locus, xi, strict=True):
         np.testing.assert_array_equal(row, SDOF.from_modal(2.0, value).roots())
     # Fig. 1.4: ξ = 0 gives ±iω_n; as ξ grows, s₁ → 0 and s₂ → −∞ (s₁ ≈ −ω_n/(2ξ)).
     assert locus[0] == pytest.approx([2j, -2j], abs=4 * EPS)
-    far = vib.root_locus(2.0, [1e6])[0]
+    far = vib.root_locus(2.0, [1e6]).roots[0]
     assert far[0].real == pytest.approx(-1e-6, rel=1e-9) and far[1].real < -1e6
 
 
 def test_two_dof_fixed_free_chain():
     m, k = 2.0, 50.0
-    M, K = vib.chain_matrices([m, m], [k, k])
+    chain = vib.chain_matrices([m, m], [k, k])
+    M, K = chain.M, chain.K
     np.testing.assert_array_equal(K, [[2 * k, -k], [-k, k]])
     modes = vib.modal_analysis(M, K)
     # ω² = (3 ∓ √5)/2 · k/m; shapes [1, (1 + √5)/2] and [1, (1 − √5)/2] before normalisation.
@@ -234,7 +238,8 @@ def test_three_dof_chains_fixed_free_and_fixed_fixed():
     n, m, k = 3, 2.0, 50.0
     j = np.arange(1, n + 1)
     # Fixed-free chain of equal masses: ω_j = 2√(k/m) sin((2j − 1)π / (2(2n + 1))).
-    M, K = vib.chain_matrices([m] * n, [k] * n)
+    chain = vib.chain_matrices([m] * n, [k] * n)
+    M, K = chain.M, chain.K
     expected = 2 * np.sqrt(k / m) * np.sin((2 * j - 1) * np.pi / (2 * (2 * n + 1)))
     assert vib.modal_analysis(M, K).natural_frequencies == pytest.approx(expected, rel=1e-14)
     # Fixed-fixed chain: ω_j = 2√(k/m) sin(jπ/(2(n + 1))), shapes φ_ij ∝ sin(ijπ/(n + 1)).
@@ -250,7 +255,8 @@ def test_three_dof_chains_fixed_free_and_fixed_fixed():
 
 
 def test_free_free_chain_has_a_rigid_body_mode():
-    M, K = vib.chain_matrices([1.0, 2.0, 3.0], [10.0, 20.0], grounded=False)
+    chain = vib.chain_matrices([1.0, 2.0, 3.0], [10.0, 20.0], grounded=False)
+    M, K = chain.M, chain.K
     modes = vib.modal_analysis(M, K)
     assert modes.natural_frequencies[0] == 0.0  # exactly: rounding-level eigenvalues are zeroed
     assert modes.natural_frequencies[1] > 1.0
@@ -402,7 +408,8 @@ def test_forced_response_handles_a_long_record_quickly():
 
 def test_modal_superposition_against_direct_state_space():
     # A damped 3-DOF chain with classical (modal) damping, started moving and pushed.
-    M, K = vib.chain_matrices([2.0, 1.0, 1.5], [400.0, 300.0, 200.0])
+    chain = vib.chain_matrices([2.0, 1.0, 1.5], [400.0, 300.0, 200.0])
+    M, K = chain.M, chain.K
     modes = vib.modal_analysis(M, K)
     xi = np.array([0.02, 0.05, 0.1])
     phi, w = modes.mode_shapes, modes.natural_frequencies
@@ -412,7 +419,8 @@ def test_modal_superposition_against_direct_state_space():
     x0, v0 = np.array([0.01, 0.0, -0.02]), np.array([0.0, 0.1, 0.0])
     force = np.vstack([10 * np.sin(7.0 * t), np.zeros_like(t), 5.0 * (t > 1.0)])
     x = vib.modal_superposition(M, K, t, x0=x0, v0=v0, force=force, damping_ratios=xi)
-    A, B, *_ = vib.state_space(M, C, K, np.eye(3))
+    matrices = vib.state_space(M, C, K, np.eye(3))
+    A, B = matrices.A, matrices.B
     reference = _foh_reference(A, B, np.r_[x0, v0], t, force)[:3]
     # Both are exact for the same piecewise-linear force; they differ by rounding accumulated over 800
     # steps (~800 ε times the response, ~0.05 m): 1e-12 m.
@@ -424,22 +432,26 @@ def test_modal_superposition_against_direct_state_space():
 
 
 def test_modal_superposition_of_a_free_free_chain_with_a_rigid_body_mode():
-    M, K = vib.chain_matrices([1.0, 2.0], [50.0], grounded=False)
+    chain = vib.chain_matrices([1.0, 2.0], [50.0], grounded=False)
+    M, K = chain.M, chain.K
     t = np.linspace(0.0, 3.0, 601)
     force = np.vstack([np.where(t < 1.0, 4.0 * t, 0.0), np.zeros_like(t)])  # a ramp, then released
     x0, v0 = np.array([0.0, 0.01]), np.array([0.1, 0.0])
     x = vib.modal_superposition(M, K, t, x0=x0, v0=v0, force=force)
-    A, B, *_ = vib.state_space(M, np.zeros((2, 2)), K, np.eye(2))
+    matrices = vib.state_space(M, np.zeros((2, 2)), K, np.eye(2))
+    A, B = matrices.A, matrices.B
     # Exact for the piecewise-linear force both ways; the rigid mode drifts, so allow rounding on the
     # growing displacement (~1 m): 1e-12.
     np.testing.assert_allclose(x, _foh_reference(A, B, np.r_[x0, v0], t, force)[:2], rtol=0, atol=1e-12)
 
 
 def test_rayleigh_damping_hits_its_two_targets():
-    alpha, beta = vib.rayleigh_coefficients(2.0, 20.0, 0.02, 0.05)
+    coefficients = vib.rayleigh_coefficients(2.0, 20.0, 0.02, 0.05)
+    alpha, beta = coefficients.alpha, coefficients.beta
     for w, target in ((2.0, 0.02), (20.0, 0.05)):
         assert alpha / (2 * w) + beta * w / 2 == pytest.approx(target, rel=8 * EPS)
-    M, K = vib.chain_matrices([1.0, 1.0, 1.0], [100.0, 100.0, 100.0])
+    chain = vib.chain_matrices([1.0, 1.0, 1.0], [100.0, 100.0, 100.0])
+    M, K = chain.M, chain.K
     C = vib.rayleigh_damping(M, K, alpha, beta)
     np.testing.assert_allclose(C, alpha * M + beta * K, rtol=EPS)
     w = vib.modal_analysis(M, K).natural_frequencies
@@ -448,14 +460,15 @@ def test_rayleigh_damping_hits_its_two_targets():
 
 
 def test_complex_modes_of_proportional_damping_are_the_damped_undamped_modes():
-    M, K = vib.chain_matrices([1.0, 2.0, 1.0], [100.0, 80.0, 60.0])
+    chain = vib.chain_matrices([1.0, 2.0, 1.0], [100.0, 80.0, 60.0])
+    M, K = chain.M, chain.K
     modes = vib.modal_analysis(M, K)
     xi = np.array([0.05, 0.3, 1.5])  # the last mode overdamped: two real eigenvalues
     phi, w = modes.mode_shapes, modes.natural_frequencies
     C = M @ phi @ np.diag(2 * xi * w) @ phi.T @ M
     cm = vib.complex_modes(M, C, K)
     assert cm.eigenvalues.shape == (6,) and cm.mode_shapes.shape == (3, 6)
-    expected = np.concatenate([vib.root_locus(wj, [x])[0] for wj, x in zip(w, xi, strict=True)])
+    expected = np.concatenate([vib.root_locus(wj, [x]).roots[0] for wj, x in zip(w, xi, strict=True)])
     # Order: by |λ| (conjugates have equal moduli, so a stable sort keeps s₁ before s₂); the
     # overdamped mode splits into two real roots that need not sit next to each other.
     expected = expected[np.argsort(np.abs(expected), kind="stable")]
@@ -482,23 +495,28 @@ def test_state_space_outputs():
     K = np.array([[300.0, -100.0], [-100.0, 100.0]])
     C = np.array([[3.0, -1.0], [-1.0, 1.0]])
     B = np.array([1.0, 0.0])  # one force on the first mass, given as a vector
-    A, Bs, Cs, D = vib.state_space(M, C, K, B)
+    matrices = vib.state_space(M, C, K, B)
+    A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
     assert (A.shape, Bs.shape, Cs.shape, D.shape) == ((4, 4), (4, 1), (2, 4), (2, 1))
     np.testing.assert_allclose(A[2:], -np.linalg.solve(M, np.hstack([K, C])), rtol=EPS)
     w = 3.0
     H = vib.frf_matrix(M, C, K, w)[0] @ B
     # Each output's frequency response, C_s (iωI − A)⁻¹ B_s + D, must be iω or −ω² times the receptance.
     for output, factor in (("displacement", 1.0), ("velocity", 1j * w), ("acceleration", -(w**2))):
-        A, Bs, Cs, D = vib.state_space(M, C, K, B, output=output)
+        matrices = vib.state_space(M, C, K, B, output=output)
+        A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
         g = Cs @ np.linalg.solve(1j * w * np.eye(4) - A, Bs) + D
         np.testing.assert_allclose(g[:, 0], factor * H, rtol=1e-13)
-    A, Bs, Cs, D = vib.state_space(M, C, K, B, output="acceleration")
+    matrices = vib.state_space(M, C, K, B, output="acceleration")
+    A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
     np.testing.assert_allclose(D, np.linalg.solve(M, B[:, None]), rtol=EPS)
-    A, Bs, Cs, D = vib.state_space(M, C, K, B, output="state")
+    matrices = vib.state_space(M, C, K, B, output="state")
+    A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
     np.testing.assert_array_equal(Cs, np.eye(4))
     # The SDOF view is the 1x1 case.
     s = SDOF(2.0, 0.4, 8.0)
-    A, Bs, Cs, D = s.state_space()
+    matrices = s.state_space()
+    A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
     np.testing.assert_allclose(A, [[0, 1], [-4.0, -0.2]], rtol=EPS)
     np.testing.assert_allclose(Bs, [[0], [0.5]], rtol=EPS)
 
@@ -509,7 +527,8 @@ def test_frf_matrix_is_batched_symmetric_and_matches_the_sdof_receptance():
     H = vib.frf_matrix([[s.mass]], [[s.damping]], [[s.stiffness]], w)
     assert H.shape == (11, 1, 1)
     np.testing.assert_allclose(H[:, 0, 0], s.receptance(w), rtol=1e-14)
-    M, K = vib.chain_matrices([1.0, 2.0, 1.0], [100.0, 80.0, 60.0])
+    chain = vib.chain_matrices([1.0, 2.0, 1.0], [100.0, 80.0, 60.0])
+    M, K = chain.M, chain.K
     C = vib.rayleigh_damping(M, K, 0.1, 0.001)
     H = vib.frf_matrix(M, C, K, w)
     # Maxwell reciprocity for symmetric M, C, K: H = Hᵀ (to the solver's rounding).
@@ -625,7 +644,8 @@ def test_frequency_response_from_python_control():
     w = np.linspace(0.0, 30.0, 61)
     # Evaluating the state-space realisation is an independent route (a linear solve per frequency).
     np.testing.assert_allclose(s.to_control()(1j * w), s.receptance(w), rtol=1e-12)
-    M, K = vib.chain_matrices([1.0, 2.0, 1.0], [100.0, 80.0, 60.0])
+    chain = vib.chain_matrices([1.0, 2.0, 1.0], [100.0, 80.0, 60.0])
+    M, K = chain.M, chain.K
     C = np.diag([0.5, 0.0, 1.5])
     response = control.frequency_response(vib.to_control(M, C, K, np.eye(3)), w[1:])
     fresp = np.moveaxis(response.frdata, -1, 0)  # (outputs, inputs, ω) → (ω, outputs, inputs)
@@ -705,3 +725,170 @@ def test_non_numbers_raise_type_error():
 def test_error_message_states_the_value_and_the_allowed_range():
     with pytest.raises(ValueError, match=r"mass must be in \(0\.0, inf\], got -1\.0"):
         SDOF(-1.0, 0.0, 1.0)
+
+
+# ---------------------------------------------------------------------------
+# Results are frozen dataclasses with named fields (units in the name where it could be read two ways)
+
+
+def test_every_result_is_a_frozen_dataclass():
+    chain = vib.chain_matrices([1.0, 2.0], [100.0, 80.0], dampings=[1.0, 0.5])
+    s = _system(0.1)
+    results = [
+        chain,
+        vib.modal_analysis(chain.M, chain.K),
+        vib.complex_modes(chain.M, chain.C, chain.K),
+        vib.rayleigh_coefficients(2.0, 20.0, 0.02, 0.05),
+        vib.state_space(chain.M, chain.C, chain.K, np.eye(2)),
+        vib.root_locus(1.0, [0.0, 0.5]),
+        s.decay_peaks(0.01, 0.0, count=2),
+        s.free_vibration(T, 0.01, 0.0),
+    ]
+    for result in results:
+        assert dataclasses.is_dataclass(result) and not isinstance(result, tuple), type(result)
+        field = dataclasses.fields(result)[0].name
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            setattr(result, field, None)
+
+
+def test_natural_frequencies_in_hz_are_those_in_rad_per_s_over_two_pi():
+    chain = vib.chain_matrices([1.0, 2.0], [100.0, 80.0], dampings=[1.0, 0.5])
+    modes = vib.modal_analysis(chain.M, chain.K)
+    # f = ω/(2π): one division, exact to rounding.
+    np.testing.assert_allclose(
+        modes.natural_frequencies_hz, modes.natural_frequencies / (2 * np.pi), rtol=EPS
+    )
+    cm = vib.complex_modes(chain.M, chain.C, chain.K)
+    np.testing.assert_allclose(cm.natural_frequencies_hz, np.abs(cm.eigenvalues) / (2 * np.pi), rtol=4 * EPS)
+
+
+def test_modal_matrix_diagonalises_mass_and_stiffness():
+    chain = vib.chain_matrices([1.0, 2.0, 1.5], [100.0, 80.0, 60.0])
+    modes = vib.modal_analysis(chain.M, chain.K)
+    # Φᵀ M Φ = I, Φᵀ K Φ = diag(ω²): eigh's rounding on entries of order 1 and ‖K‖/m ~ 200: 1e-12.
+    np.testing.assert_allclose(modes.modal_matrix(chain.M), np.eye(3), atol=1e-13)
+    np.testing.assert_allclose(modes.modal_matrix(chain.K), np.diag(modes.natural_frequencies**2), atol=1e-12)
+    with pytest.raises(ValueError, match="matrix must be 3x3"):
+        modes.modal_matrix(np.eye(2))
+
+
+def test_relative_phase_is_zero_or_pi_for_real_modes_and_shows_coupling_otherwise():
+    chain = vib.chain_matrices([1.0, 1.0], [1.0, 1.0])
+    real = vib.complex_modes(chain.M, 0.01 * chain.K, chain.K)  # proportional: real shapes
+    # Mode 1 moves both masses together, mode 2 against each other: 0 and π exactly up to eig's rounding.
+    np.testing.assert_allclose(np.abs(real.relative_phase(1, 0)[::2]), [0.0, np.pi], atol=1e-10)
+    coupled = vib.complex_modes(chain.M, np.diag([0.5, 0.0]), chain.K)  # damper on one mass only
+    assert np.all(np.abs(np.sin(coupled.relative_phase(1, 0)[::2])) > 1e-3)
+    # Its definition, checked directly: the argument of the ratio of the two entries.
+    np.testing.assert_allclose(
+        coupled.relative_phase(1, 0), np.angle(coupled.mode_shapes[1] / coupled.mode_shapes[0]), rtol=EPS
+    )
+    with pytest.raises(ValueError, match="coordinate must be an integer in"):
+        coupled.relative_phase(2, 0)
+
+
+def test_chain_dampers_assemble_like_the_springs():
+    masses, springs = [1.0, 2.0, 3.0], [10.0, 20.0, 30.0]
+    chain = vib.chain_matrices(masses, springs, dampings=[0.1, 0.2, 0.3])
+    # The same assembly rule with the damper values: exactly the stiffness matrix of springs 0.1, 0.2, 0.3.
+    np.testing.assert_array_equal(chain.C, vib.chain_matrices(masses, [0.1, 0.2, 0.3]).K)
+    # A zero damper is allowed (a zero spring is not): as in notebook 01's bogie and body.
+    np.testing.assert_array_equal(
+        vib.chain_matrices(masses, springs, dampings=[0.1, 0.0, 0.3]).C,
+        [[0.1, 0.0, 0.0], [0.0, 0.3, -0.3], [0.0, -0.3, 0.3]],
+    )
+    np.testing.assert_array_equal(vib.chain_matrices(masses, springs).C, np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="dampings must have 1 entries"):
+        vib.chain_matrices(masses[:2], [1.0], dampings=[1.0, 1.0], grounded=False)
+    with pytest.raises(ValueError, match="dampings must be >= 0"):
+        vib.chain_matrices(masses, springs, dampings=[1.0, -1.0, 0.0])
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 7])
+def test_uniform_chain_frequencies_match_the_eigen_solution(n):
+    m, k = 2.0, 50.0
+    chain = vib.chain_matrices([m] * n, [k] * n)
+    # Closed form against eigh, which is backward stable: 1e-13 relative.
+    np.testing.assert_allclose(
+        vib.uniform_chain_frequencies(n, m, k),
+        vib.modal_analysis(chain.M, chain.K).natural_frequencies,
+        rtol=1e-13,
+    )
+    with pytest.raises(ValueError, match="count"):
+        vib.uniform_chain_frequencies(0, m, k)
+
+
+def test_rayleigh_coefficients_give_their_damping_ratio_and_matrix():
+    c = vib.rayleigh_coefficients(2.0, 20.0, 0.02, 0.05)
+    # ξ(ω) = α/(2ω) + βω/2 at the two target frequencies: the targets, to rounding.
+    np.testing.assert_allclose(c.damping_ratio([2.0, 20.0]), [0.02, 0.05], rtol=8 * EPS)
+    chain = vib.chain_matrices([1.0, 1.0], [100.0, 100.0])
+    np.testing.assert_array_equal(
+        c.damping_matrix(chain.M, chain.K), vib.rayleigh_damping(chain.M, chain.K, c.alpha, c.beta)
+    )
+    with pytest.raises(ValueError, match="omega"):
+        c.damping_ratio(0.0)
+
+
+def test_decrement_from_peaks_several_cycles_apart():
+    s = _system(0.05)
+    peaks = s.decay_peaks(0.01, 0.0, count=6)
+    # ln(x₀/x₅)/5 = δ: the peaks come from the closed form, so rounding only.
+    assert vib.decrement_from_peaks(peaks.values[0], peaks.values[5], cycles=5) == pytest.approx(
+        s.log_decrement, rel=1e-12
+    )
+    assert peaks.log_decrement == pytest.approx(s.log_decrement, rel=1e-12)
+    assert vib.decrement_from_peaks(12.0, 3.0, cycles=5) == pytest.approx(math.log(4.0) / 5, rel=EPS)
+    with pytest.raises(ValueError, match="later"):
+        vib.decrement_from_peaks(1.0, 0.0)
+    with pytest.raises(ValueError, match="cycles"):
+        vib.decrement_from_peaks(1.0, 0.5, cycles=0)
+
+
+def test_free_vibration_holds_response_envelope_and_peaks_and_plots_them():
+    import matplotlib.pyplot as plt
+
+    s = _system(0.1)
+    t = np.linspace(0.0, 3.0, 601)
+    r = s.free_vibration(t, 0.01, 0.2, peaks=3)
+    np.testing.assert_array_equal(r.displacement, s.free_response(t, 0.01, 0.2))
+    np.testing.assert_array_equal(r.envelope, s.envelope(t, 0.01, 0.2))
+    np.testing.assert_array_equal(r.peaks.times, s.decay_peaks(0.01, 0.2, count=3).times)
+    fig, ax = plt.subplots()
+    art = r.plot(ax)
+    assert set(art) == {"line", "upper", "lower", "peaks"}
+    np.testing.assert_array_equal(art["peaks"].get_xdata(), r.peaks.times)
+    # A second response moves the same artists (a widget's update): no new line on the axes.
+    count = len(ax.lines)
+    other = _system(2.0).free_vibration(t, 0.01, 0.2)
+    assert other.peaks.times.size == 0  # overdamped: no maxima to mark
+    assert other.plot(artists=art) is art and len(ax.lines) == count
+    np.testing.assert_array_equal(art["line"].get_ydata(), other.displacement)
+    np.testing.assert_array_equal(art["lower"].get_ydata(), -other.envelope)
+
+
+def test_root_locus_plot_draws_both_branches_and_the_marked_roots():
+    import matplotlib.pyplot as plt
+
+    locus = vib.root_locus(2.0, np.linspace(0.0, 3.0, 31))
+    _, ax = plt.subplots()
+    art = locus.plot(ax, mark=locus.roots[5], normalised=True)
+    # Normalised: s/ω_n, so the branches start at ±i.
+    np.testing.assert_allclose(art["branch1"].get_xydata()[0], [0.0, 1.0], atol=4 * EPS)
+    np.testing.assert_allclose(art["roots"].get_xdata(), locus.roots[5].real / 2.0, rtol=EPS)
+    assert art["roots"].get_visible()
+    hidden = locus.plot(ax)["roots"]
+    assert not hidden.get_visible()
+
+
+@pytest.mark.parametrize(("start", "order"), [(0.0, 2), (1.0, 1)])
+def test_duhamel_rectangle_rule_converges_to_the_exact_response(start, order):
+    s = SDOF.from_modal(2 * np.pi, 0.2, mass=8000.0)
+    errors = []
+    for n in (2001, 4001):
+        t = np.linspace(0.0, 2.0, n)
+        force = 2e4 * (start + np.sin(np.pi * t / 0.2) * (t < 0.2))  # F(0) = 2e4·start
+        errors.append(np.abs(s.duhamel_response(t, force) - s.forced_response(t, force)).max())
+    # Halving Δt divides the error by 2^order: first order when F(t₀) ≠ 0 (the τ = t₀ term counted
+    # whole), second when it vanishes. 10 % slack for the higher-order terms at these steps.
+    assert errors[1] / errors[0] == pytest.approx(0.5**order, rel=0.1)

@@ -6,8 +6,12 @@
 * :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), vectorized over states.
 * :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles; contact points, Δr(y),
   contact angles and equivalent conicity.
+* :mod:`~raildyn.contact.comparison` — every creep law on one sweep of lateral creepage, side by side.
+
+The elastic constants default to the steel of :mod:`raildyn.constants` everywhere.
 """
 
+from raildyn.contact.comparison import CREEP_LAWS, LateralCreepCurves, lateral_creep_curves
 from raildyn.contact.creep import (
     KALKER_NU,
     POLACH_DRY,
@@ -28,8 +32,8 @@ from raildyn.contact.creep import (
     shen_hedrick_elkins,
     wheelset_creepages,
 )
-from raildyn.contact.fastsim import FastsimResult, fastsim, fastsim_reference, flexibilities
-from raildyn.contact.hertz import HertzContact, hertz_coefficients, hertz_contact
+from raildyn.contact.fastsim import FastsimResult, Flexibilities, fastsim, fastsim_reference, flexibilities
+from raildyn.contact.hertz import HertzCoefficients, HertzContact, hertz_coefficients, hertz_contact
 from raildyn.contact.profiles import (
     ContactGeometry,
     RailProfile,
@@ -45,13 +49,17 @@ from raildyn.contact.profiles import (
 )
 
 __all__ = [
+    "CREEP_LAWS",
     "KALKER_NU",
     "ContactGeometry",
     "CreepCoefficients",
     "CreepForces",
     "FastsimResult",
+    "Flexibilities",
+    "HertzCoefficients",
     "HertzContact",
     "KalkerCoefficients",
+    "LateralCreepCurves",
     "RailProfile",
     "WheelProfile",
     "WheelsetCreepages",
@@ -71,6 +79,7 @@ __all__ = [
     "johnson_vermeulen",
     "kalker_coefficients",
     "kalker_linear",
+    "lateral_creep_curves",
     "polach",
     "polach_adhesion",
     "PolachAdhesion",

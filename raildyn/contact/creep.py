@@ -18,6 +18,28 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
+
+__all__ = [
+    "KALKER_NU",
+    "POLACH_DRY",
+    "POLACH_WET",
+    "CreepCoefficients",
+    "CreepForces",
+    "KalkerCoefficients",
+    "PolachAdhesion",
+    "WheelsetCreepages",
+    "carter",
+    "carter_coefficient",
+    "creep_coefficients",
+    "johnson_vermeulen",
+    "kalker_coefficients",
+    "kalker_linear",
+    "polach",
+    "polach_adhesion",
+    "shen_hedrick_elkins",
+    "wheelset_creepages",
+]
 
 # fmt: off
 # Kalker's coefficients C_ij of the linear theory for an elliptical contact,
@@ -167,7 +189,9 @@ def kalker_coefficients(a_over_b, poisson_ratio) -> KalkerCoefficients:
     return KalkerCoefficients(*(_out(c[..., i]) for i in range(4)))
 
 
-def creep_coefficients(a, b, shear_modulus=8.1e10, poisson_ratio=0.3) -> CreepCoefficients:
+def creep_coefficients(
+    a, b, shear_modulus=STEEL_SHEAR_MODULUS, poisson_ratio=STEEL_POISSON_RATIO
+) -> CreepCoefficients:
     """Kalker's creep coefficients f₁₁, f₂₂, f₂₃, f₃₃ of a contact ellipse.
 
     f₁₁ = G a b C₁₁, f₂₂ = G a b C₂₂, f₂₃ = G (ab)^{3/2} C₂₃, f₃₃ = G (ab)² C₃₃
@@ -179,9 +203,9 @@ def creep_coefficients(a, b, shear_modulus=8.1e10, poisson_ratio=0.3) -> CreepCo
         Semi-axes (m) in the rolling and lateral directions, > 0, with
         0.1 ≤ a/b ≤ 10. Arrays broadcast together.
     shear_modulus : float
-        G (Pa); default 81 GPa for steel (E = 210 GPa, ν = 0.3).
+        G (Pa); default :data:`raildyn.constants.STEEL_SHEAR_MODULUS`, E/(2(1 + ν)) = 80.8 GPa.
     poisson_ratio : float
-        ν in [0, 0.5]; default 0.3.
+        ν in [0, 0.5]; default :data:`raildyn.constants.STEEL_POISSON_RATIO` (0.3).
 
     Returns
     -------
@@ -190,6 +214,8 @@ def creep_coefficients(a, b, shear_modulus=8.1e10, poisson_ratio=0.3) -> CreepCo
 
     Examples
     --------
+    With G = 81 GPa and ν = 0.25 (a circle, C₁₁ = 4.12 from Kalker's table):
+
     >>> f = creep_coefficients(6e-3, 6e-3, 8.1e10, 0.25)
     >>> round(f.f11 / 1e6, 3)  # MN
     12.014
@@ -218,11 +244,18 @@ def kalker_linear(longitudinal, lateral, spin, coefficients: CreepCoefficients) 
     spin : float or array_like
         Spin creepage φ (1/m).
     coefficients : CreepCoefficients
+        f₁₁, f₂₂, f₂₃, f₃₃ of the contact (:func:`creep_coefficients`).
 
     Returns
     -------
     CreepForces
         Unbounded: valid only while the creepages are small (no sliding).
+
+    Examples
+    --------
+    >>> f = creep_coefficients(6e-3, 4e-3)
+    >>> bool(kalker_linear(1e-3, 0.0, 0.0, f).fx == -f.f11 * 1e-3)
+    True
     """
     xi = _checks.array("longitudinal", longitudinal)
     eta = _checks.array("lateral", lateral)
@@ -246,6 +279,16 @@ def carter_coefficient(normal_load, wheel_radius, semi_axis):
         R (m).
     semi_axis : float
         Half-length a of the contact strip in the rolling direction (m).
+
+    Returns
+    -------
+    float
+        dF/dξ at ξ = 0, N.
+
+    Examples
+    --------
+    >>> round(carter_coefficient(1e5, 0.46, 6e-3) / 1e6, 4)  # 2NR/a, MN
+    15.3333
     """
     n = _checks.positive("normal_load", normal_load)
     r = _checks.positive("wheel_radius", wheel_radius)
@@ -276,6 +319,13 @@ def carter(longitudinal, normal_load, friction, creep_coefficient):
     -------
     float or ndarray
         Fx (N).
+
+    Examples
+    --------
+    Beyond u = 1 the whole patch slides and the force is μN:
+
+    >>> carter(0.05, 1e5, 0.3, carter_coefficient(1e5, 0.46, 6e-3))
+    -30000.0
     """
     xi = _checks.array("longitudinal", longitudinal)
     n = _checks.positive("normal_load", normal_load)
@@ -295,10 +345,26 @@ def johnson_vermeulen(longitudinal, lateral, normal_load, friction, coefficients
     starts on the linear theory; Johnson and Vermeulen's own coefficients differ
     by up to about 20 % (Garg & Dukkipati 1984, ch. 4).
 
+    Parameters
+    ----------
+    longitudinal, lateral : float or array_like
+        Creepages ξ, η (dimensionless).
+    normal_load : float
+        N (N), > 0.
+    friction : float
+        μ > 0.
+    coefficients : CreepCoefficients
+        Kalker's f₁₁, f₂₂ give the initial slopes.
+
     Returns
     -------
     CreepForces
         ``mz`` is None.
+
+    Examples
+    --------
+    >>> round(johnson_vermeulen(0.5, 0.0, 1e5, 0.3, creep_coefficients(6e-3, 4e-3)).fx, 6)  # saturated
+    -30000.0
     """
     xi = _checks.array("longitudinal", longitudinal)
     eta = _checks.array("lateral", lateral)
@@ -319,9 +385,31 @@ def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coef
     With β = |F_lin|/(μN) the resultant becomes μN(β − β²/3 + β³/27) for β ≤ 3 and
     μN beyond; Fx, Fy and Mz are all scaled by the same factor.
 
+    Parameters
+    ----------
+    longitudinal, lateral : float or array_like
+        Creepages ξ, η (dimensionless).
+    spin : float or array_like
+        φ (1/m).
+    normal_load : float
+        N (N), > 0.
+    friction : float
+        μ > 0.
+    coefficients : CreepCoefficients
+        Kalker's coefficients of the contact.
+
     Returns
     -------
     CreepForces
+        Linear forces scaled to a resultant within μN.
+
+    Examples
+    --------
+    At β = 3 (the linear force three times μN) the curve meets μN:
+
+    >>> f = creep_coefficients(6e-3, 4e-3)
+    >>> round(shen_hedrick_elkins(3 * 30e3 / f.f11, 0.0, 0.0, 1e5, 0.3, f).fx, 6)
+    -30000.0
     """
     n = _checks.positive("normal_load", normal_load)
     mu = _friction(friction)
@@ -344,8 +432,8 @@ def polach(
     friction,
     a,
     b,
-    shear_modulus=8.1e10,
-    poisson_ratio=0.3,
+    shear_modulus=STEEL_SHEAR_MODULUS,
+    poisson_ratio=STEEL_POISSON_RATIO,
     *,
     k_a: float = 1.0,
     k_s: float = 1.0,
@@ -378,7 +466,7 @@ def polach(
     a, b : float
         Semi-axes of the contact ellipse (m).
     shear_modulus, poisson_ratio : float
-        G (Pa) and ν for Kalker's coefficients.
+        G (Pa) and ν for Kalker's coefficients; the steel of :mod:`raildyn.constants` by default.
     k_a, k_s : float, keyword
         Reduction factors in (0, 1].
 
@@ -386,6 +474,12 @@ def polach(
     -------
     CreepForces
         ``mz`` is None (the method gives no spin moment).
+
+    Examples
+    --------
+    >>> r = polach(1e-3, 0.0, 0.0, 1e5, 0.3, 6e-3, 4e-3)
+    >>> bool(-0.3 * 1e5 < r.fx < 0.0), r.mz is None
+    (True, True)
     """
     inputs = _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio)
     mu = _friction(friction)
@@ -464,7 +558,23 @@ class PolachAdhesion:
         _checks.nonnegative("decay_rate", self.decay_rate)
 
     def friction(self, slip_speed):
-        """μ at slip speed w (m/s, >= 0; any shape)."""
+        """Coefficient of friction μ = μ₀[(1 − A) e^{−Bw} + A] at a slip speed w.
+
+        Parameters
+        ----------
+        slip_speed : float or array_like
+            w, m/s, >= 0 (any shape).
+
+        Returns
+        -------
+        float or ndarray
+            μ, dimensionless.
+
+        Examples
+        --------
+        >>> POLACH_DRY.friction(0.0), round(POLACH_DRY.friction(1e3), 6)
+        (0.55, 0.22)
+        """
         w = _checks.array("slip_speed", slip_speed)
         if np.any(w < 0):
             raise ValueError(f"slip_speed must be >= 0 m/s, got a minimum of {w.min()!r}")
@@ -490,8 +600,8 @@ def polach_adhesion(
     a,
     b,
     conditions: PolachAdhesion = POLACH_DRY,
-    shear_modulus=8.1e10,
-    poisson_ratio=0.3,
+    shear_modulus=STEEL_SHEAR_MODULUS,
+    poisson_ratio=STEEL_POISSON_RATIO,
 ) -> CreepForces:
     """Polach's (2005) creep forces near the adhesion limit: friction falling with slip speed.
 
@@ -513,10 +623,20 @@ def polach_adhesion(
     conditions : PolachAdhesion
         :data:`POLACH_DRY` (default) or :data:`POLACH_WET`, or your own.
     shear_modulus, poisson_ratio : float
+        G (Pa) and ν; the steel of :mod:`raildyn.constants` by default.
 
     Returns
     -------
     CreepForces
+        ``mz`` is None.
+
+    Examples
+    --------
+    Past the adhesion peak the force falls as the creepage grows:
+
+    >>> fx = polach_adhesion(np.array([0.01, 0.2]), 0.0, 0.0, 1e5, 20.0, 6e-3, 4e-3).fx
+    >>> bool(-fx[1] < -fx[0])
+    True
     """
     if not isinstance(conditions, PolachAdhesion):
         raise TypeError(f"conditions must be a PolachAdhesion, got {type(conditions).__name__}")
@@ -587,6 +707,15 @@ def wheelset_creepages(
     Returns
     -------
     WheelsetCreepages
+        ξ, η, φ at the left (index 0) and right (index 1) contacts.
+
+    Examples
+    --------
+    A coned wheelset shifted 3 mm to the left, λ = 1/20:
+
+    >>> c = wheelset_creepages(40.0, 0.0, 0.0, 0.0, 0.46 + 1.5e-4, 0.46 - 1.5e-4, 0.46, 0.75)
+    >>> np.round(c.longitudinal * 1e4, 4).tolist()
+    [-3.2609, 3.2609]
     """
     v = _checks.positive("speed", speed)
     r0 = _checks.positive("nominal_radius", nominal_radius)

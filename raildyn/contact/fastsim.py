@@ -16,16 +16,24 @@ Python loop over the cells of one strip (``n_x`` steps), numpy over everything
 else. Each step uses the exact increment of the adhesion solution over the
 cell, and the cells are evaluated at their midpoints, so that in full adhesion
 the forces are exact along x and accurate to O((1/n_y)²) across.
+
+:func:`fastsim_reference` is the same algorithm cell by cell in plain Python:
+the independent implementation the tests hold :func:`fastsim` to, and the
+baseline of the chapter 4 benchmark.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from raildyn import _checks
+from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
 from raildyn.contact.creep import kalker_coefficients
+
+__all__ = ["FastsimResult", "Flexibilities", "fastsim", "fastsim_reference", "flexibilities"]
 
 
 @dataclass(frozen=True)
@@ -53,6 +61,12 @@ class FastsimResult:
         Local slip (dimensionless, creepage units): zero in the adhesion zone.
     adhesion : ndarray of bool or None
         True where the cell sticks.
+    normal_load : float or ndarray or None
+        N (N) of each state.
+    friction : float or ndarray or None
+        μ of each state.
+    a, b : float or ndarray or None
+        Semi-axes of each state's ellipse (m).
     """
 
     fx: np.ndarray | float
@@ -66,6 +80,10 @@ class FastsimResult:
     slip_x: np.ndarray | None = None
     slip_y: np.ndarray | None = None
     adhesion: np.ndarray | None = None
+    normal_load: np.ndarray | float | None = None
+    friction: np.ndarray | float | None = None
+    a: np.ndarray | float | None = None
+    b: np.ndarray | float | None = None
 
     @property
     def adhesion_fraction(self):
@@ -76,17 +94,128 @@ class FastsimResult:
         weight = np.broadcast_to(dx, self.adhesion.shape)
         return (weight * self.adhesion).sum(axis=(-2, -1)) / weight.sum(axis=(-2, -1))
 
+    @property
+    def friction_utilisation(self):
+        """|F|/(μN) = √(Fx² + Fy²)/(μN): the share of the friction limit in use, between 0 and 1."""
+        if self.friction is None or self.normal_load is None:
+            raise ValueError(
+                "this result does not hold the friction and the normal load it was computed with"
+            )
+        value = np.hypot(self.fx, self.fy) / (np.asarray(self.friction) * np.asarray(self.normal_load))
+        return float(value) if np.ndim(value) == 0 else value
 
-def flexibilities(a, b, shear_modulus, poisson_ratio):
-    """Kalker's flexibilities L₁, L₂, L₃ (m/Pa) that make FASTSIM match the linear theory.
+    def plot_patch(self, ax=None, *, artists=None) -> dict:
+        """Draw one state's contact patch: adhesion and slip cells, and the traction as arrows.
+
+        The arrows are scaled so that μp₀ spans a third of the semi-axis b; x
+        (the rolling direction, leading edge at the right) and y are in mm.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        artists : dict, optional
+            The dict a previous call returned: the cells and arrows move to this
+            result (same grid size) instead of being drawn again, as a widget does.
+
+        Returns
+        -------
+        dict
+            ``stick`` and ``slip`` (scatter collections), ``arrows`` (a quiver)
+            and ``outline`` (the ellipse).
+        """
+        if self.adhesion is None or self.adhesion.ndim != 2 or self.friction is None:
+            raise ValueError("plot_patch needs the fields of one contact state: fastsim(..., fields=True)")
+        xy = np.c_[1e3 * self.x.ravel(), 1e3 * self.y.ravel()]
+        sticks = self.adhesion.ravel()
+        b_mm = 1e3 * float(self.b)
+        k = b_mm / 3.0 / max(float(self.friction) * float(self.pz.max()), 1.0)
+        u, v = k * self.px.ravel(), k * self.py.ravel()
+        if artists is None:
+            import matplotlib
+
+            from raildyn import plots
+
+            ax = plots.axes_or_new(ax)
+            t = np.linspace(0.0, 2.0 * math.pi, 200)
+            with matplotlib.rc_context(plots.STYLE):
+                (outline,) = ax.plot(1e3 * float(self.a) * np.cos(t), b_mm * np.sin(t), color="0.4", lw=1)
+                stick = ax.scatter([], [], s=14, color=plots.COLORS[0], label="adhesion")
+                slip = ax.scatter([], [], s=14, color=plots.COLORS[1], label="slip")
+                arrows = ax.quiver(
+                    xy[:, 0], xy[:, 1], u, v, angles="xy", scale_units="xy", scale=1.0, width=0.004
+                )
+                ax.set_aspect("equal")
+                ax.set_xlabel("x, rolling direction (mm) — leading edge at right")
+                ax.set_ylabel("y (mm)")
+                ax.legend(loc="upper left", ncol=2)
+            artists = {"stick": stick, "slip": slip, "arrows": arrows, "outline": outline}
+        artists["stick"].set_offsets(xy[sticks] if sticks.any() else np.empty((0, 2)))
+        artists["slip"].set_offsets(xy[~sticks] if (~sticks).any() else np.empty((0, 2)))
+        artists["arrows"].set_offsets(xy)
+        artists["arrows"].set_UVC(u, v)
+        return artists
+
+
+@dataclass(frozen=True)
+class Flexibilities:
+    """Kalker's flexibilities of the simplified theory, m/Pa (:func:`flexibilities`).
+
+    Attributes
+    ----------
+    l1 : float or ndarray
+        L₁ = 8a/(3C₁₁G), longitudinal.
+    l2 : float or ndarray
+        L₂ = 8a/(3C₂₂G), lateral.
+    l3 : float or ndarray
+        L₃ = πa√(a/b)/(4C₂₃G), spin.
+    """
+
+    l1: np.ndarray | float
+    l2: np.ndarray | float
+    l3: np.ndarray | float
+
+
+def flexibilities(
+    a, b, shear_modulus=STEEL_SHEAR_MODULUS, poisson_ratio=STEEL_POISSON_RATIO
+) -> Flexibilities:
+    """Kalker's flexibilities L₁, L₂, L₃ that make FASTSIM match the linear theory.
 
     L₁ = 8a/(3C₁₁G), L₂ = 8a/(3C₂₂G), L₃ = πa√(a/b)/(4C₂₃G) (Kalker 1982, 1990).
+
+    Parameters
+    ----------
+    a, b : float or array_like
+        Semi-axes (m), > 0, a in the rolling direction; 0.1 <= a/b <= 10.
+    shear_modulus : float
+        G (Pa), > 0; :data:`raildyn.constants.STEEL_SHEAR_MODULUS` by default.
+    poisson_ratio : float
+        ν in [0, 0.5]; :data:`raildyn.constants.STEEL_POISSON_RATIO` by default.
+
+    Returns
+    -------
+    Flexibilities
+        L₁, L₂, L₃ in m/Pa, of the broadcast shape of ``a`` and ``b``.
+
+    Examples
+    --------
+    >>> f = flexibilities(6e-3, 6e-3, 8.1e10, 0.25)  # a circle: C₁₁ = 4.12
+    >>> round(f.l1 * 1e14, 4)  # 8a/(3 C₁₁ G), 1e-14 m/Pa
+    4.7944
     """
-    a = np.asarray(a, dtype=float)
-    b = np.asarray(b, dtype=float)
+    a = _checks.array("a", a, low=0.0, low_open=True)
+    b = _checks.array("b", b, low=0.0, low_open=True)
+    g = _checks.positive("shear_modulus", shear_modulus)
     c = kalker_coefficients(a / b, poisson_ratio)
-    g = shear_modulus
-    return 8 * a / (3 * c.c11 * g), 8 * a / (3 * c.c22 * g), np.pi * a * np.sqrt(a / b) / (4 * c.c23 * g)
+
+    def out(v):
+        return float(v) if np.ndim(v) == 0 else v
+
+    return Flexibilities(
+        l1=out(8 * a / (3 * c.c11 * g)),
+        l2=out(8 * a / (3 * c.c22 * g)),
+        l3=out(np.pi * a * np.sqrt(a / b) / (4 * c.c23 * g)),
+    )
 
 
 def fastsim(
@@ -97,8 +226,8 @@ def fastsim(
     friction,
     a,
     b,
-    shear_modulus=8.1e10,
-    poisson_ratio=0.3,
+    shear_modulus=STEEL_SHEAR_MODULUS,
+    poisson_ratio=STEEL_POISSON_RATIO,
     *,
     n_x: int = 20,
     n_y: int = 20,
@@ -119,9 +248,9 @@ def fastsim(
     a, b : float or array_like
         Semi-axes (m): a in the rolling direction; 0.1 ≤ a/b ≤ 10.
     shear_modulus : float
-        G (Pa).
+        G (Pa); :data:`raildyn.constants.STEEL_SHEAR_MODULUS` by default.
     poisson_ratio : float
-        ν in [0, 0.5].
+        ν in [0, 0.5]; :data:`raildyn.constants.STEEL_POISSON_RATIO` by default.
     n_x, n_y : int, keyword
         Cells per strip and number of strips (≥ 2).
     fields : bool, keyword
@@ -130,7 +259,8 @@ def fastsim(
     Returns
     -------
     FastsimResult
-        All inputs broadcast together; a batch of states is one call.
+        All inputs broadcast together; a batch of states is one call. With
+        ``fields`` and a single state, ``.plot_patch(ax)`` draws the patch.
 
     Examples
     --------
@@ -148,8 +278,10 @@ def fastsim(
     g_mod = _checks.positive("shear_modulus", shear_modulus)
     n_x = _checks.integer("n_x", n_x, low=2)
     n_y = _checks.integer("n_y", n_y, low=2)
-    l1, l2, l3 = flexibilities(a, b, g_mod, poisson_ratio)
-    xi, eta, phi, load, mu, a, b, l1, l2, l3 = np.broadcast_arrays(xi, eta, phi, load, mu, a, b, l1, l2, l3)
+    flex = flexibilities(a, b, g_mod, poisson_ratio)
+    xi, eta, phi, load, mu, a, b, l1, l2, l3 = np.broadcast_arrays(
+        xi, eta, phi, load, mu, a, b, flex.l1, flex.l2, flex.l3
+    )
     e = (..., None)  # add the strip axis
     # Strips: midpoints of n_y equal bands across the ellipse.
     eta_y = (np.arange(n_y) + 0.5) / n_y * 2.0 - 1.0  # y/b
@@ -207,12 +339,14 @@ def fastsim(
     def scalar_or(v):
         return float(v) if np.ndim(v) == 0 else v
 
+    state = {"normal_load": scalar_or(load), "friction": scalar_or(mu), "a": scalar_or(a), "b": scalar_or(b)}
     if not fields:
-        return FastsimResult(scalar_or(fx_t), scalar_or(fy_t), scalar_or(mz_t))
+        return FastsimResult(scalar_or(fx_t), scalar_or(fy_t), scalar_or(mz_t), **state)
     return FastsimResult(
         fx=scalar_or(fx_t),
         fy=scalar_or(fy_t),
         mz=scalar_or(mz_t),
+        **state,
         x=out["x"],
         y=np.broadcast_to(y[..., None], out["x"].shape).copy(),
         px=out["px"],
@@ -224,14 +358,44 @@ def fastsim(
     )
 
 
-def fastsim_reference(longitudinal, lateral, spin, normal_load, friction, a, b, l1, l2, l3, n_x=20, n_y=20):
+def fastsim_reference(
+    longitudinal, lateral, spin, normal_load, friction, a, b, l1, l2, l3, n_x=20, n_y=20
+) -> FastsimResult:
     """The same algorithm as :func:`fastsim` written cell by cell in plain Python, for one state.
 
     It exists as the independent, straightforward implementation that the tests
-    and the benchmark compare the vectorized one with. Returns (Fx, Fy, Mz).
-    """
-    import math
+    and the chapter 4 benchmark compare the vectorized one with; it takes the
+    flexibilities directly and checks nothing.
 
+    Parameters
+    ----------
+    longitudinal, lateral : float
+        ξ, η.
+    spin : float
+        φ (1/m).
+    normal_load : float
+        N (N).
+    friction : float
+        μ.
+    a, b : float
+        Semi-axes (m).
+    l1, l2, l3 : float
+        Flexibilities (m/Pa), e.g. from :func:`flexibilities`.
+    n_x, n_y : int
+        Cells per strip and strips.
+
+    Returns
+    -------
+    FastsimResult
+        Fx, Fy (N) and Mz (N m) only.
+
+    Examples
+    --------
+    >>> f = flexibilities(6e-3, 4e-3)
+    >>> ref = fastsim_reference(1e-3, 0.0, 0.0, 1e5, 0.3, 6e-3, 4e-3, f.l1, f.l2, f.l3)
+    >>> bool(abs(ref.fx - fastsim(1e-3, 0.0, 0.0, 1e5, 0.3, 6e-3, 4e-3).fx) < 1e-6)
+    True
+    """
     dy = 2.0 * b / n_y
     total = 0.0  # the grid integral of the parabolic pressure shape, normalised as in fastsim
     for j in range(n_y):
@@ -263,4 +427,4 @@ def fastsim_reference(longitudinal, lateral, spin, normal_load, friction, a, b, 
             fy += py * dx * dy
             mz += (x * py - y * px) * dx * dy
             x_prev = x
-    return fx, fy, mz
+    return FastsimResult(fx, fy, mz, normal_load=normal_load, friction=friction, a=a, b=b)

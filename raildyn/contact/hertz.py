@@ -20,6 +20,9 @@ import numpy as np
 from scipy import special
 
 from raildyn import _checks
+from raildyn.constants import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
+
+__all__ = ["HertzCoefficients", "HertzContact", "hertz_coefficients", "hertz_contact"]
 
 _BISECTION_STEPS = 60  # halves a bracket of width 15 in log(b/a) to ~1e-17: below double precision
 
@@ -59,7 +62,26 @@ def _shape_factors(k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return m, k * m
 
 
-def hertz_coefficients(theta):
+@dataclass(frozen=True)
+class HertzCoefficients:
+    """Hertz's coefficients m and n (dimensionless) for an angle θ.
+
+    Attributes
+    ----------
+    theta : float or ndarray
+        θ, rad, cos θ = |B − A|/(A + B).
+    m : float or ndarray
+        Coefficient of the semi-axis along the direction of smaller relative curvature.
+    n : float or ndarray
+        Coefficient of the other semi-axis (n <= 1 <= m).
+    """
+
+    theta: float | np.ndarray
+    m: float | np.ndarray
+    n: float | np.ndarray
+
+
+def hertz_coefficients(theta) -> HertzCoefficients:
     """Hertz's coefficients m and n for the angle θ with cos θ = |B − A|/(A + B).
 
     Parameters
@@ -69,15 +91,16 @@ def hertz_coefficients(theta):
 
     Returns
     -------
-    m, n : float or ndarray
-        The semi-axes are ``m c`` (along the direction of smaller relative
-        curvature) and ``n c``, with ``c = ∛(3 N (1−ν²) / (2 E (A+B)))`` for two
-        bodies of the same material (book ch. 4; Timoshenko & Goodier 1970 §140).
+    HertzCoefficients
+        ``m`` and ``n`` (floats for a scalar θ): the semi-axes are ``m c`` (along
+        the direction of smaller relative curvature) and ``n c``, with
+        ``c = ∛(3 N (1−ν²) / (2 E (A+B)))`` for two bodies of the same material
+        (book ch. 4; Timoshenko & Goodier 1970 §140).
 
     Examples
     --------
-    >>> m, n = hertz_coefficients(math.radians(60))
-    >>> round(float(m), 3), round(float(n), 3)
+    >>> h = hertz_coefficients(math.radians(60))
+    >>> round(h.m, 3), round(h.n, 3)
     (1.486, 0.717)
     """
     th = np.asarray(theta, dtype=float)
@@ -86,8 +109,8 @@ def hertz_coefficients(theta):
     k = _ratio_from_cos_theta(np.abs(np.cos(th)))
     m, n = _shape_factors(k)
     if np.ndim(theta) == 0:
-        return float(m), float(n)
-    return m, n
+        return HertzCoefficients(theta=float(th), m=float(m), n=float(n))
+    return HertzCoefficients(theta=th, m=m, n=n)
 
 
 @dataclass(frozen=True)
@@ -133,7 +156,26 @@ class HertzContact:
         return self.a / self.b
 
     def pressure(self, x, y):
-        """Hertz pressure p₀√(1 − x²/a² − y²/b²) at (x, y) in m; zero outside the ellipse (Pa)."""
+        """Hertz pressure p₀√(1 − x²/a² − y²/b²) at (x, y); zero outside the ellipse.
+
+        Parameters
+        ----------
+        x : array_like
+            Distance from the centre along the rolling direction, m.
+        y : array_like
+            Distance from the centre across the rail, m; broadcast with ``x``.
+
+        Returns
+        -------
+        ndarray
+            p, Pa.
+
+        Examples
+        --------
+        >>> c = hertz_contact(100e3, 0.46, math.inf, 0.3)
+        >>> bool(c.pressure(0.0, 0.0) == c.peak_pressure), float(c.pressure(c.a, 0.0))
+        (True, 0.0)
+        """
         r2 = (np.asarray(x) / self.a) ** 2 + (np.asarray(y) / self.b) ** 2
         return self.peak_pressure * np.sqrt(np.clip(1.0 - r2, 0.0, None))
 
@@ -153,8 +195,8 @@ def hertz_contact(
     wheel_rolling_radius,
     wheel_transverse_radius,
     rail_transverse_radius,
-    youngs_modulus=2.1e11,
-    poisson_ratio=0.3,
+    youngs_modulus=STEEL_YOUNGS_MODULUS,
+    poisson_ratio=STEEL_POISSON_RATIO,
     *,
     rail_rolling_radius=math.inf,
 ) -> HertzContact:
@@ -174,15 +216,16 @@ def hertz_contact(
         Radius of the rail head across the rail R₂′ (m), positive convex,
         ``math.inf`` for a flat rail.
     youngs_modulus : float
-        E (Pa), for both bodies; default 210 GPa for steel.
+        E (Pa), for both bodies; default :data:`raildyn.constants.STEEL_YOUNGS_MODULUS` (210 GPa).
     poisson_ratio : float
-        ν in [0, 0.5); default 0.3.
+        ν in [0, 0.5); default :data:`raildyn.constants.STEEL_POISSON_RATIO` (0.3).
     rail_rolling_radius : float, keyword
         Radius of the rail along the track (m); ``math.inf`` for straight track.
 
     Returns
     -------
     HertzContact
+        Semi-axes, peak pressure, approach and normal stiffness.
 
     Notes
     -----

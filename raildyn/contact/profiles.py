@@ -29,6 +29,20 @@ import numpy as np
 
 from raildyn import _checks
 
+__all__ = [
+    "ContactGeometry",
+    "RailProfile",
+    "WheelProfile",
+    "conical_wheel",
+    "contact_angles",
+    "contact_geometry",
+    "equivalent_conicity",
+    "harmonic_conicity",
+    "rolling_radius_difference",
+    "s1002_wheel",
+    "uic60_rail",
+]
+
 _MM = 1e-3
 _STEP = 0.05e-3  # m; sampling of the profiles and of the contact search, refined by a parabola
 
@@ -40,6 +54,7 @@ class WheelProfile:
     Attributes
     ----------
     name : str
+        What the profile is, for labels.
     lateral : ndarray
         u (m), increasing, positive towards the flange.
     radius : ndarray
@@ -54,7 +69,23 @@ class WheelProfile:
     nominal_radius: float
 
     def radius_at(self, u):
-        """r(u) by linear interpolation (m)."""
+        """Rolling radius r(u) by linear interpolation.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Lateral position on the wheel, m, positive towards the flange.
+
+        Returns
+        -------
+        float or ndarray
+            r, m.
+
+        Examples
+        --------
+        >>> round(float(conical_wheel(1 / 20).radius_at(3e-3)), 6)  # r₀ + λu
+        0.46015
+        """
         return np.interp(u, self.lateral, self.radius)
 
 
@@ -65,6 +96,7 @@ class RailProfile:
     Attributes
     ----------
     name : str
+        What the profile is, for labels.
     lateral : ndarray
         u (m), increasing, positive towards the track centre (gauge side).
     height : ndarray
@@ -93,6 +125,16 @@ def conical_wheel(slope, nominal_radius=0.46, *, width=0.13) -> WheelProfile:
         r₀ (m).
     width : float, keyword
         Lateral extent of the tread, centred on the tape circle (m).
+
+    Returns
+    -------
+    WheelProfile
+        Named "cone 1:N" (or "cylinder").
+
+    Examples
+    --------
+    >>> conical_wheel(1 / 40).name
+    'cone 1:40'
     """
     lam = _checks.nonnegative("slope", slope)
     r0 = _checks.positive("nominal_radius", nominal_radius)
@@ -135,6 +177,21 @@ def s1002_wheel(nominal_radius=0.46) -> WheelProfile:
 
     The flange tip lies about 28 mm above the tape circle at u ≈ 55 mm; the
     back of the flange is 70 mm from the tape circle.
+
+    Parameters
+    ----------
+    nominal_radius : float
+        r₀, the radius at the tape circle (m), > 0.
+
+    Returns
+    -------
+    WheelProfile
+
+    Examples
+    --------
+    >>> w = s1002_wheel()
+    >>> round(float(1e3 * (w.radius.max() - w.nominal_radius)), 1)  # flange height, mm
+    28.0
     """
     r0 = _checks.positive("nominal_radius", nominal_radius)
     u = np.arange(-60.0 * _MM, 68.0 * _MM + _STEP / 2, _STEP)
@@ -161,7 +218,22 @@ def _uic60_head_mm(x: np.ndarray) -> np.ndarray:
 
 
 def uic60_rail(inclination=1 / 40) -> RailProfile:
-    """The 60E1 (UIC60) rail head, tilted towards the track centre by ``inclination`` (a slope, e.g. 1/40)."""
+    """The 60E1 (UIC60) rail head, tilted towards the track centre.
+
+    Parameters
+    ----------
+    inclination : float
+        The cant as a slope (e.g. 1/40 or 1/20), >= 0; 0 leaves the rail upright.
+
+    Returns
+    -------
+    RailProfile
+
+    Examples
+    --------
+    >>> uic60_rail(1 / 20).name
+    '60E1 1:20'
+    """
     cant = np.arctan(_checks.nonnegative("inclination", inclination))
     x = np.linspace(-36.5, 36.5, 7301)  # mm, the head and its 1:20 flanks
     z = _uic60_head_mm(x)
@@ -220,6 +292,113 @@ class ContactGeometry:
         """δ_L − δ_R (rad)."""
         return self.contact_angle[0] - self.contact_angle[1]
 
+    def equivalent_conicity(self, amplitudes, *, samples: int = 256) -> np.ndarray:
+        """Equivalent conicity λ_e(A) from this table of Δr(y) (:func:`harmonic_conicity`).
+
+        Parameters
+        ----------
+        amplitudes : float or array_like
+            A (m), > 0, within the shifts of this table.
+        samples : int, keyword
+            Points in θ of the quadrature.
+
+        Returns
+        -------
+        ndarray
+            λ_e for each amplitude (dimensionless).
+        """
+        return harmonic_conicity(self.shift, self.rolling_radius_difference, amplitudes, samples=samples)
+
+    def _line(self, ax, artists, key, x, y, label, color, xlabel, ylabel):
+        if artists is not None:
+            artists[key].set_ydata(y)
+            return artists
+        import matplotlib
+
+        from raildyn import plots
+
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            (line,) = ax.plot(x, y, color=color, label=label)
+            ax.set_xlabel(xlabel)
+            ax.set_ylabel(ylabel)
+        return {key: line}
+
+    def plot_rolling_radius_difference(self, ax=None, *, label=None, color=None, artists=None) -> dict:
+        """Draw Δr(y) in mm against the shift y in mm; or move a line drawn before.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        label : str, optional
+            Legend label.
+        color : color, optional
+            Line colour.
+        artists : dict, optional
+            The dict a previous call returned (same shifts): its line takes this table.
+
+        Returns
+        -------
+        dict
+            ``{"rolling_radius_difference": line}``.
+        """
+        return self._line(
+            ax, artists, "rolling_radius_difference", 1e3 * self.shift, 1e3 * self.rolling_radius_difference,
+            label, color, "lateral shift y (mm)", "Δr = r_L − r_R (mm)",
+        )  # fmt: skip
+
+    def plot_contact_angle(self, ax=None, *, label=None, color=None, artists=None) -> dict:
+        """Draw the left wheel's contact angle δ_L in degrees against the shift y in mm.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        label : str, optional
+            Legend label.
+        color : color, optional
+            Line colour.
+        artists : dict, optional
+            The dict a previous call returned (same shifts): its line takes this table.
+
+        Returns
+        -------
+        dict
+            ``{"contact_angle": line}``.
+        """
+        return self._line(
+            ax, artists, "contact_angle", 1e3 * self.shift, np.degrees(self.contact_angle[0]),
+            label, color, "lateral shift y (mm)", "left contact angle δ_L (deg)",
+        )  # fmt: skip
+
+    def plot_equivalent_conicity(self, amplitudes, ax=None, *, label=None, color=None, artists=None) -> dict:
+        """Draw λ_e(A) (:meth:`equivalent_conicity`) against the amplitude A in mm.
+
+        Parameters
+        ----------
+        amplitudes : array_like
+            A (m), > 0, within the shifts of this table.
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        label : str, optional
+            Legend label.
+        color : color, optional
+            Line colour.
+        artists : dict, optional
+            The dict a previous call returned (same amplitudes): its line takes this table.
+
+        Returns
+        -------
+        dict
+            ``{"equivalent_conicity": line}``.
+        """
+        amp = np.atleast_1d(np.asarray(amplitudes, dtype=float))
+        return self._line(
+            ax, artists, "equivalent_conicity", 1e3 * amp, self.equivalent_conicity(amp),
+            label, color, "amplitude A (mm)", "equivalent conicity λ_e",
+        )  # fmt: skip
+
 
 def _offset(rail: RailProfile, gauge: float, tape_distance: float) -> float:
     """d: tape circle minus rail centre line, lateral, in the centred position (m)."""
@@ -273,8 +452,10 @@ def contact_geometry(
 
     Parameters
     ----------
-    wheel, rail : WheelProfile, RailProfile
-        The same profiles on both sides (mirror images).
+    wheel : WheelProfile
+        The wheel profile, the same on both sides (mirror images).
+    rail : RailProfile
+        The rail profile, the same on both sides.
     shifts : float or array_like
         Lateral shifts y (m), positive to the left.
     gauge : float, keyword
@@ -287,6 +468,15 @@ def contact_geometry(
     Returns
     -------
     ContactGeometry
+        Contact points, radii and angles over the shifts; ``.plot_*`` methods draw them.
+
+    Examples
+    --------
+    A cone without roll gives Δr = 2λy exactly:
+
+    >>> g = contact_geometry(conical_wheel(1 / 20), uic60_rail(1 / 40), [0.0, 2e-3], roll=False)
+    >>> np.round(g.rolling_radius_difference * 1e3, 6).tolist()  # mm
+    [0.0, 0.2]
     """
     y = np.atleast_1d(_checks.array("shifts", shifts)).astype(float)
     g = _checks.positive("gauge", gauge)
@@ -309,12 +499,46 @@ def contact_geometry(
 
 
 def rolling_radius_difference(wheel: WheelProfile, rail: RailProfile, shifts, **kwargs) -> np.ndarray:
-    """Δr(y) = r_L − r_R (m) for each lateral shift y (m); keywords as :func:`contact_geometry`."""
+    """Rolling-radius difference Δr(y) = r_L − r_R for each lateral shift y.
+
+    Parameters
+    ----------
+    wheel : WheelProfile
+        The wheel profile (both sides).
+    rail : RailProfile
+        The rail profile (both sides).
+    shifts : float or array_like
+        y (m), positive to the left.
+    **kwargs
+        ``gauge``, ``tape_distance``, ``roll`` as :func:`contact_geometry`.
+
+    Returns
+    -------
+    ndarray
+        Δr, m.
+    """
     return contact_geometry(wheel, rail, shifts, **kwargs).rolling_radius_difference
 
 
 def contact_angles(wheel: WheelProfile, rail: RailProfile, shifts, **kwargs) -> np.ndarray:
-    """Contact angles (δ_L, δ_R) (rad), shape (2, n), for each lateral shift y (m)."""
+    """Contact angles δ_L, δ_R for each lateral shift y.
+
+    Parameters
+    ----------
+    wheel : WheelProfile
+        The wheel profile (both sides).
+    rail : RailProfile
+        The rail profile (both sides).
+    shifts : float or array_like
+        y (m), positive to the left.
+    **kwargs
+        ``gauge``, ``tape_distance``, ``roll`` as :func:`contact_geometry`.
+
+    Returns
+    -------
+    ndarray, shape (2, n)
+        δ_L, δ_R, rad.
+    """
     return contact_geometry(wheel, rail, shifts, **kwargs).contact_angle
 
 
@@ -334,19 +558,27 @@ def equivalent_conicity(
 
     Parameters
     ----------
-    wheel, rail : WheelProfile, RailProfile
+    wheel : WheelProfile
+        The wheel profile (both sides).
+    rail : RailProfile
+        The rail profile (both sides).
     amplitudes : float or array_like
         A (m), > 0.
     samples : int, keyword
         Points in θ of the quadrature (the rectangle rule, spectrally accurate
         for a periodic integrand apart from the kinks of flange contact).
     **kwargs
-        ``gauge``, ``tape_distance`` as :func:`contact_geometry`.
+        ``gauge``, ``tape_distance``, ``roll`` as :func:`contact_geometry`.
 
     Returns
     -------
     ndarray
         λ_e for each amplitude (dimensionless).
+
+    Examples
+    --------
+    >>> round(float(equivalent_conicity(conical_wheel(1 / 20), uic60_rail(1 / 40), 3e-3, roll=False)[0]), 9)
+    0.05
     """
     amp = np.atleast_1d(_checks.array("amplitudes", amplitudes, low=0.0, low_open=True))
     table_y = np.linspace(-amp.max(), amp.max(), 801)
@@ -368,6 +600,17 @@ def harmonic_conicity(shifts, delta_r, amplitudes, *, samples: int = 256) -> np.
         A (m), > 0, within the table.
     samples : int, keyword
         Points in θ of the quadrature.
+
+    Returns
+    -------
+    ndarray
+        λ_e for each amplitude (dimensionless).
+
+    Examples
+    --------
+    >>> y = np.linspace(-0.01, 0.01, 201)
+    >>> np.round(harmonic_conicity(y, 2 * 0.05 * y, [2e-3, 5e-3]), 12).tolist()  # a cone: λ
+    [0.05, 0.05]
     """
     y = _checks.array("shifts", shifts, ndim=1)
     dr = _checks.array("delta_r", delta_r, shape=(y.size,))

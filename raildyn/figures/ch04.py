@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from matplotlib.figure import Figure
 
 from raildyn import contact, plots
 from raildyn.figures import new_figure, register
 
-_G, _NU = 8.1e10, 0.3  # steel shear modulus (Pa) and Poisson ratio
+__all__: list[str] = []  # registry plug-ins: reached through raildyn.figures.make/show, not by name
+
+# Every elastic constant is the default of raildyn.contact: the steel of raildyn.constants.
 
 
 @register(
@@ -23,7 +23,8 @@ def hertz_coefficients_figure() -> Figure:
     fig = new_figure(figsize=(5.5, 3.8))
     ax = fig.subplots()
     theta = np.linspace(5.0, 90.0, 341)
-    m, n = contact.hertz_coefficients(np.radians(theta))
+    coefficients = contact.hertz_coefficients(np.radians(theta))
+    m, n = coefficients.m, coefficients.n
     ax.plot(theta, m, color=plots.COLORS[0], label="m")
     ax.plot(theta, n, color=plots.COLORS[1], label="n")
     table = {30: (2.731, 0.493), 45: (1.926, 0.604), 60: (1.486, 0.717), 75: (1.202, 0.846), 90: (1.0, 1.0)}
@@ -46,27 +47,9 @@ def hertz_coefficients_figure() -> Figure:
     chapter=4,
 )
 def creep_laws_figure() -> Figure:
-    a, b, load, mu = 6e-3, 4e-3, 100e3, 0.3
-    f = contact.creep_coefficients(a, b, _G, _NU)
-    eta = np.linspace(0, 0.01, 201)
-    curves = {
-        "Kalker linear": contact.kalker_linear(0.0, eta, 0.0, f).fy,
-        "Carter (2-D)": contact.carter(eta, load, mu, f.f22),
-        "Johnson–Vermeulen": contact.johnson_vermeulen(0.0, eta, load, mu, f).fy,
-        "Shen–Hedrick–Elkins": contact.shen_hedrick_elkins(0.0, eta, 0.0, load, mu, f).fy,
-        "Polach": contact.polach(0.0, eta, 0.0, load, mu, a, b, _G, _NU).fy,
-        "FASTSIM": contact.fastsim(0.0, eta, 0.0, load, mu, a, b, _G, _NU, fields=False).fy,
-    }
+    curves = contact.lateral_creep_curves(np.linspace(0, 0.01, 201), 100e3, 0.3, 6e-3, 4e-3)
     fig = new_figure(figsize=(6.0, 4.0))
-    ax = fig.subplots()
-    for i, (name, force) in enumerate(curves.items()):
-        style = ":" if name == "Kalker linear" else "-"
-        ax.plot(100 * eta, -np.asarray(force) / (mu * load), style, color=plots.COLORS[i % 5], label=name)
-    ax.axhline(1.0, color="0.5", lw=0.8)
-    ax.set_ylim(0, 1.4)
-    ax.set_xlabel("lateral creepage η (%)")
-    ax.set_ylabel("−F_y/(μN)")
-    ax.legend(loc="lower right")
+    curves.plot(fig.subplots())
     return fig
 
 
@@ -84,7 +67,7 @@ def adhesion_figure() -> Figure:
     ax = fig.subplots()
     for i, (name, cond) in enumerate((("dry", contact.POLACH_DRY), ("wet", contact.POLACH_WET))):
         for speed, style in ((10.0, "-"), (30.0, "--")):
-            fx = contact.polach_adhesion(xi, 0.0, 0.0, load, speed, a, b, cond, _G, _NU).fx
+            fx = contact.polach_adhesion(xi, 0.0, 0.0, load, speed, a, b, cond).fx
             ax.plot(
                 100 * xi,
                 -np.asarray(fx) / load,
@@ -106,21 +89,10 @@ def adhesion_figure() -> Figure:
     chapter=4,
 )
 def fastsim_figure() -> Figure:
-    r = contact.fastsim(1e-3, 0.5e-3, 0.0, 100e3, 0.3, 6e-3, 4e-3, _G, _NU, n_x=24, n_y=24)
+    r = contact.fastsim(1e-3, 0.5e-3, 0.0, 100e3, 0.3, 6e-3, 4e-3, n_x=24, n_y=24)
     fig = new_figure(figsize=(6.0, 3.8))
     ax = fig.subplots()
-    x, y = 1e3 * r.x.ravel(), 1e3 * r.y.ravel()
-    stick = r.adhesion.ravel()
-    ax.scatter(x[stick], y[stick], s=12, color=plots.COLORS[0], label="adhesion")
-    ax.scatter(x[~stick], y[~stick], s=12, color=plots.COLORS[1], label="slip")
-    k = 4.0 / 3 / (0.3 * r.pz.max())
-    ax.quiver(x, y, k * r.px.ravel(), k * r.py.ravel(), angles="xy", scale_units="xy", scale=1.0, width=0.003)
-    t = np.linspace(0, 2 * math.pi, 200)
-    ax.plot(6 * np.cos(t), 4 * np.sin(t), color="0.4", lw=1)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x, rolling direction (mm)")
-    ax.set_ylabel("y (mm)")
-    ax.legend(loc="upper left", ncol=2)
+    r.plot_patch(ax)
     ax.set_title(f"F_x = {r.fx / 1e3:.1f} kN, F_y = {r.fy / 1e3:.1f} kN")
     return fig
 
@@ -139,14 +111,8 @@ def profiles_figure() -> Figure:
     fig = new_figure(figsize=(8.0, 3.4))
     ax_r, ax_l = fig.subplots(1, 2)
     for i, wheel in enumerate(wheels):
-        dr = contact.rolling_radius_difference(wheel, rail, y)
-        ax_r.plot(1e3 * y, 1e3 * dr, color=plots.COLORS[i], label=wheel.name)
-        ax_l.plot(
-            1e3 * amp, contact.equivalent_conicity(wheel, rail, amp), color=plots.COLORS[i], label=wheel.name
-        )
-    ax_r.set_xlabel("lateral shift y (mm)")
-    ax_r.set_ylabel("Δr (mm)")
+        geometry = contact.contact_geometry(wheel, rail, y)
+        geometry.plot_rolling_radius_difference(ax_r, label=wheel.name, color=plots.COLORS[i])
+        geometry.plot_equivalent_conicity(amp, ax_l, label=wheel.name, color=plots.COLORS[i])
     ax_r.legend()
-    ax_l.set_xlabel("amplitude A (mm)")
-    ax_l.set_ylabel("equivalent conicity λ_e")
     return fig

@@ -20,6 +20,7 @@ from raildyn.track.deterministic import (
     harmonic_amplitudes,
     jointed_track,
     passing_frequency,
+    passing_speed,
     sinusoid,
 )
 from raildyn.track.spectra import (
@@ -35,9 +36,11 @@ from raildyn.track.spectra import (
     wavelength_band,
 )
 from raildyn.track.synthesis import (
+    ComponentVariances,
     IrregularitySample,
     TwoRailIrregularity,
     axle_delays,
+    axle_filter_wavelengths,
     excitation_csd,
     spatial_to_temporal,
     synthesize_irregularity,
@@ -52,6 +55,7 @@ __all__ = [
     "dipped_joints",
     "jointed_track",
     "passing_frequency",
+    "passing_speed",
     "harmonic_amplitudes",
     "sinusoid",
     "COMPONENTS",
@@ -64,9 +68,11 @@ __all__ = [
     "german_psd",
     "track_psd",
     "wavelength_band",
+    "ComponentVariances",
     "IrregularitySample",
     "TwoRailIrregularity",
     "axle_delays",
+    "axle_filter_wavelengths",
     "excitation_csd",
     "spatial_to_temporal",
     "synthesize_irregularity",

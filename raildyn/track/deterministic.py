@@ -2,7 +2,8 @@
 
 Each function takes distances ``x`` (m) and returns the irregularity (m) or, with
 ``derivative=1`` or ``2``, its slope (m/m) or curvature (1/m) along the track; a
-vehicle at speed V sees the rates V·dz/dx and V²·d²z/dx².
+vehicle at speed V sees the rates dz/dt = V·dz/dx and d²z/dt² = V²·d²z/dx², which
+each function returns when given ``speed=V``.
 
 Jointed rail (Garg & Dukkipati 1984, ch. 3): rails of length L (11.9 m, the
 39-ft North American rail) whose ends are pushed down at each joint. Each joint
@@ -34,6 +35,7 @@ __all__ = [
     "bump",
     "sinusoid",
     "passing_frequency",
+    "passing_speed",
     "harmonic_amplitudes",
 ]
 
@@ -46,8 +48,22 @@ def _derivative(value) -> int:
     return int(value)
 
 
+def _in_time(values: np.ndarray, order: int, speed) -> np.ndarray:
+    """Derivatives along x turned into rates in time at speed V: d^k z/dt^k = V^k d^k z/dx^k."""
+    if speed is None:
+        return values
+    return _checks.positive("speed", speed) ** order * values
+
+
 def dipped_joints(
-    x, depth: float, half_width: float, *, rail_length: float = RAIL_LENGTH, offset: float = 0.0, derivative=0
+    x,
+    depth: float,
+    half_width: float,
+    *,
+    rail_length: float = RAIL_LENGTH,
+    offset: float = 0.0,
+    derivative=0,
+    speed=None,
 ) -> np.ndarray:
     """Vertical profile of one jointed rail with cusp-shaped dipped joints at x = offset + jL.
 
@@ -67,10 +83,14 @@ def dipped_joints(
         Return z (m), dz/dx or d²z/dx² (1/m). At a joint itself the slope is
         taken as the mean of its two one-sided values (0); the curvature returned
         is the regular part, without the Dirac term of the slope jump 4δ/a.
+    speed : float, optional
+        V > 0, m/s: return the rates met in time instead, dz/dt = V dz/dx (m/s)
+        or d²z/dt² = V² d²z/dx² (m/s²).
 
     Returns
     -------
     ndarray, same shape as ``x``
+        z (m) or the derivative asked for.
 
     Examples
     --------
@@ -87,10 +107,12 @@ def dipped_joints(
     u = np.abs(xi) / a
     inside = u < 1.0
     if order == 0:
-        return np.where(inside, -delta * (1.0 - u) ** 2, 0.0)
-    if order == 1:
-        return np.where(inside, 2.0 * delta * (1.0 - u) * np.sign(xi) / a, 0.0)
-    return np.where(inside, -2.0 * delta / a**2, 0.0)
+        z = np.where(inside, -delta * (1.0 - u) ** 2, 0.0)
+    elif order == 1:
+        z = np.where(inside, 2.0 * delta * (1.0 - u) * np.sign(xi) / a, 0.0)
+    else:
+        z = np.where(inside, -2.0 * delta / a**2, 0.0)
+    return _in_time(z, order, speed)
 
 
 @dataclass(frozen=True)
@@ -122,6 +144,45 @@ class JointedTrack:
         """Cross-level left − right: the roll input (zero for joints in phase)."""
         return self.left - self.right
 
+    def plot(self, ax=None, *, artists=None) -> dict:
+        """Draw both rails and the cross-level in mm against distance; or move artists drawn before.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        artists : dict, optional
+            The dict a previous call returned: its lines take this track's
+            profiles (``set_ydata``, same ``x``) instead of drawing new ones.
+
+        Returns
+        -------
+        dict
+            The lines ``left``, ``right`` and ``cross_level``.
+        """
+        profiles = {"left": self.left, "right": self.right, "cross_level": self.cross_level}
+        if artists is not None:
+            for name, values in profiles.items():
+                artists[name].set_ydata(1e3 * values)
+            return artists
+        import matplotlib
+
+        from raildyn import plots
+
+        ax = plots.axes_or_new(ax)
+        styles = {
+            "left": {"color": plots.COLORS[0], "label": "left rail"},
+            "right": {"color": plots.COLORS[1], "ls": "--", "label": "right rail"},
+            "cross_level": {"color": plots.COLORS[2], "ls": ":", "lw": 1.2, "label": "cross-level"},
+        }
+        drawn = {}
+        with matplotlib.rc_context(plots.STYLE):
+            for name, values in profiles.items():
+                (drawn[name],) = ax.plot(self.x, 1e3 * values, **styles[name])
+            ax.set_xlabel("distance $x$ (m)")
+            ax.set_ylabel("profile (mm)")
+        return drawn
+
 
 def jointed_track(
     x,
@@ -131,11 +192,34 @@ def jointed_track(
     rail_length: float = RAIL_LENGTH,
     arrangement: str = "staggered",
     derivative=0,
+    speed=None,
 ) -> JointedTrack:
     """Both rails of jointed track: joints in phase, or staggered by half a rail length.
 
     The left rail has a joint at x = 0; the right one at x = 0 (``"in_phase"``)
-    or x = L/2 (``"staggered"``). Other arguments as for :func:`dipped_joints`.
+    or x = L/2 (``"staggered"``).
+
+    Parameters
+    ----------
+    x : array_like
+        Distance along the track, m.
+    depth : float
+        δ >= 0, depth of each dip, m.
+    half_width : float
+        a, m, 0 < a <= L/2.
+    rail_length : float
+        L > 0, m (default 11.9).
+    arrangement : {"staggered", "in_phase"}
+        Joints of the right rail half a rail length along, or opposite those of the left.
+    derivative : {0, 1, 2}
+        Profiles (m), slopes or curvatures (1/m), as for :func:`dipped_joints`.
+    speed : float, optional
+        V > 0, m/s: rates in time instead, as for :func:`dipped_joints`.
+
+    Returns
+    -------
+    JointedTrack
+        Both rails; ``.plot(ax)`` draws them with the cross-level.
 
     Examples
     --------
@@ -146,13 +230,15 @@ def jointed_track(
     if arrangement not in ("staggered", "in_phase"):
         raise ValueError(f"arrangement must be 'staggered' or 'in_phase'; got {arrangement!r}")
     L = _checks.positive("rail_length", rail_length)
-    left = dipped_joints(x, depth, half_width, rail_length=L, derivative=derivative)
+    left = dipped_joints(x, depth, half_width, rail_length=L, derivative=derivative, speed=speed)
     shift = 0.5 * L if arrangement == "staggered" else 0.0
-    right = dipped_joints(x, depth, half_width, rail_length=L, offset=shift, derivative=derivative)
+    right = dipped_joints(
+        x, depth, half_width, rail_length=L, offset=shift, derivative=derivative, speed=speed
+    )
     return JointedTrack(np.asarray(x, dtype=float), left, right, arrangement)
 
 
-def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0) -> np.ndarray:
+def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0, speed=None) -> np.ndarray:
     """An isolated bump (height > 0) or dip (height < 0) of 1 − cos shape.
 
     z = (h/2)(1 − cos(2π(x − x₀)/ℓ)) for x₀ <= x <= x₀ + ℓ, and 0 elsewhere: z and its
@@ -170,11 +256,21 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
         x₀, start of the bump, m.
     derivative : {0, 1, 2}
         z (m), dz/dx or d²z/dx² (1/m).
+    speed : float, optional
+        V > 0, m/s: return the rates met in time instead, dz/dt = V dz/dx (m/s)
+        or d²z/dt² = V² d²z/dx² (m/s²). The largest dz/dt is πhV/ℓ.
+
+    Returns
+    -------
+    ndarray, same shape as ``x``
+        z (m) or the derivative asked for.
 
     Examples
     --------
     >>> bump([0.0, 0.5, 1.0], height=0.02, length=1.0).round(6).tolist()
     [0.0, 0.02, 0.0]
+    >>> round(float(bump(0.25, 0.02, 1.0, derivative=1, speed=10.0)), 6)  # π h V/ℓ
+    0.628319
     """
     x = _checks.array("x", x)
     h = _checks.scalar("height", height)
@@ -185,13 +281,17 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
     s = x - x0
     inside = (s >= 0.0) & (s <= ell)
     if order == 0:
-        return np.where(inside, 0.5 * h * (1.0 - np.cos(k * s)), 0.0)
-    if order == 1:
-        return np.where(inside, 0.5 * h * k * np.sin(k * s), 0.0)
-    return np.where(inside, 0.5 * h * k**2 * np.cos(k * s), 0.0)
+        z = np.where(inside, 0.5 * h * (1.0 - np.cos(k * s)), 0.0)
+    elif order == 1:
+        z = np.where(inside, 0.5 * h * k * np.sin(k * s), 0.0)
+    else:
+        z = np.where(inside, 0.5 * h * k**2 * np.cos(k * s), 0.0)
+    return _in_time(z, order, speed)
 
 
-def sinusoid(x, amplitude: float, wavelength: float, *, phase: float = 0.0, derivative=0) -> np.ndarray:
+def sinusoid(
+    x, amplitude: float, wavelength: float, *, phase: float = 0.0, derivative=0, speed=None
+) -> np.ndarray:
     """A sinusoidal profile or alignment z = A sin(2πx/λ + φ), or its derivatives.
 
     Parameters
@@ -205,6 +305,14 @@ def sinusoid(x, amplitude: float, wavelength: float, *, phase: float = 0.0, deri
     phase : float
         φ, rad.
     derivative : {0, 1, 2}
+        z (m), dz/dx or d²z/dx² (1/m).
+    speed : float, optional
+        V > 0, m/s: return the rates met in time instead (m/s, m/s²).
+
+    Returns
+    -------
+    ndarray, same shape as ``x``
+        z (m) or the derivative asked for.
 
     Examples
     --------
@@ -218,12 +326,66 @@ def sinusoid(x, amplitude: float, wavelength: float, *, phase: float = 0.0, deri
     order = _derivative(derivative)
     k = 2.0 * np.pi / lam
     arg = k * x + phi
-    return (A * np.sin(arg), A * k * np.cos(arg), -A * k**2 * np.sin(arg))[order]
+    z = (A * np.sin(arg), A * k * np.cos(arg), -A * k**2 * np.sin(arg))[order]
+    return _in_time(z, order, speed)
 
 
 def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
-    """Frequency f = V/L (Hz) at which the joints of one rail pass an axle at speed V (m/s)."""
+    """Frequency f = V/L at which the joints of one rail pass an axle.
+
+    Also the frequency at which any feature repeating every L metres (a
+    wavelength L) is met.
+
+    Parameters
+    ----------
+    speed : float
+        V, m/s, > 0.
+    rail_length : float
+        L, m, > 0 (default 11.9).
+
+    Returns
+    -------
+    float
+        f, Hz.
+
+    Examples
+    --------
+    >>> round(passing_frequency(119.0 / 3.6), 4)  # 119 km/h over 11.9 m rails
+    2.7778
+    """
     return _checks.positive("speed", speed) / _checks.positive("rail_length", rail_length)
+
+
+def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmonic: int = 1) -> float:
+    """Speed V = fL/n at which harmonic n of a rail-length periodic input is met at frequency f.
+
+    The inverse of :func:`passing_frequency`: harmonic n has the wavelength L/n
+    and is met at nV/L, so a mode of frequency f is excited in resonance at
+    V = fL/n (for staggered joints the cross-level holds the odd harmonics).
+
+    Parameters
+    ----------
+    frequency : float
+        f, Hz, > 0.
+    rail_length : float
+        L, m, > 0 (default 11.9).
+    harmonic : int
+        n >= 1.
+
+    Returns
+    -------
+    float
+        V, m/s.
+
+    Examples
+    --------
+    >>> round(passing_speed(0.9, harmonic=3) * 3.6, 2)  # km/h
+    12.85
+    """
+    f = _checks.positive("frequency", frequency)
+    L = _checks.positive("rail_length", rail_length)
+    n = _checks.integer("harmonic", harmonic, low=1)
+    return f * L / n
 
 
 def harmonic_amplitudes(one_period, count: int) -> np.ndarray:
@@ -234,6 +396,20 @@ def harmonic_amplitudes(one_period, count: int) -> np.ndarray:
     at the frequency nV/L (see :func:`passing_frequency`). The amplitude of
     harmonic n is 2|Xₙ|/N from the discrete Fourier transform of the N samples.
 
+    Parameters
+    ----------
+    one_period : array_like, shape (N,)
+        The profile over one period, uniformly sampled.
+    count : int
+        Harmonics wanted, 1 <= count <= (N − 1)/2.
+
+    Returns
+    -------
+    ndarray, shape (count,)
+        Amplitudes of harmonics 1 … count, in the unit of the profile.
+
+    Examples
+    --------
     >>> x = np.arange(64) / 64
     >>> np.round(harmonic_amplitudes(3 * np.cos(2 * np.pi * x) + np.sin(6 * np.pi * x), 3), 12).tolist()
     [3.0, 0.0, 1.0]

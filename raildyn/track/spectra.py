@@ -288,8 +288,27 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
 def track_psd(spectrum: str, component: str, grade) -> Callable[[np.ndarray], np.ndarray]:
     """The spectrum S(Ω) as a callable, for the synthesis and the widgets.
 
-    ``spectrum`` is ``"fra"`` (``grade`` a class 1–6) or ``"german"`` (``grade``
-    ``"low"`` or ``"high"``). The arguments are checked now, not at the first call.
+    The arguments are checked now, not at the first call.
+
+    Parameters
+    ----------
+    spectrum : {"fra", "german"}
+        The family: FRA classes (Hamid & Yang 1981) or the German spectra.
+    component : {"vertical", "alignment", "cross_level", "gauge"}
+        As for :func:`fra_psd`.
+    grade : int or str
+        FRA class 1–6, or German level ``"low"`` or ``"high"``.
+
+    Returns
+    -------
+    callable
+        S(Ω): wavenumbers (rad/m, > 0) to the one-sided PSD, m²/(rad/m).
+
+    Examples
+    --------
+    >>> psd = track_psd("fra", "vertical", 4)
+    >>> bool(np.isclose(psd(np.array([0.5]))[0], fra_psd("vertical", 4, [0.5])[0]))
+    True
     """
     if spectrum == "fra":
         _component(component)
@@ -303,7 +322,26 @@ def track_psd(spectrum: str, component: str, grade) -> Callable[[np.ndarray], np
 
 
 def wavelength_band(band) -> tuple[float, float]:
-    """Check a wavelength band (λ_min, λ_max) in m and return the wavenumber band (2π/λ_max, 2π/λ_min)."""
+    """Check a wavelength band and return the matching wavenumber band (2π/λ_max, 2π/λ_min).
+
+    A band is a pair (low, high) wherever raildyn takes one, so this conversion
+    returns the pair itself, ready to pass on as ``band``.
+
+    Parameters
+    ----------
+    band : (float, float)
+        (λ_min, λ_max), m, 0 < λ_min < λ_max.
+
+    Returns
+    -------
+    (float, float)
+        (Ω_low, Ω_high), rad/m.
+
+    Examples
+    --------
+    >>> [round(w, 4) for w in wavelength_band((1.524, 304.8))]
+    [0.0206, 4.1228]
+    """
     lo, hi = _checks.interval("wavelength_band", band, unit="m")
     return 2.0 * np.pi / hi, 2.0 * np.pi / lo
 
@@ -338,6 +376,7 @@ def band_variance(spectrum: str, component: str, grade, band, *, k: float = FRA_
     Parameters
     ----------
     spectrum : {"fra", "german"}
+        The family of spectra.
     component : str
         As for :func:`fra_psd` / :func:`german_psd`.
     grade : int or str

@@ -28,8 +28,10 @@ from raildyn import random_vibration as rv
 from raildyn.track.spectra import COMPONENTS, track_psd, wavelength_band
 
 __all__ = [
+    "ComponentVariances",
     "IrregularitySample",
     "TwoRailIrregularity",
+    "axle_filter_wavelengths",
     "synthesize_irregularity",
     "synthesize_track",
     "temporal_psd",
@@ -67,11 +69,28 @@ class IrregularitySample:
 
     @property
     def rms(self) -> float:
-        """√variance, m."""
+        """√variance, m: the RMS the spectrum gives over the band."""
         return float(np.sqrt(self.variance))
 
+    @property
+    def measured_rms(self) -> float | np.ndarray:
+        """RMS of the sample over its length, m (one per sample); equal to :attr:`rms` to rounding."""
+        value = np.sqrt(np.mean(self.z**2, axis=-1))
+        return float(value) if np.ndim(value) == 0 else value
+
     def plot(self, ax=None) -> dict:
-        """Draw the (first) sample in mm against distance, with the ±RMS lines; return the artists."""
+        """Draw the (first) sample in mm against distance, with the ±RMS lines.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+
+        Returns
+        -------
+        dict
+            The artists ``line``, ``upper`` and ``lower``.
+        """
         ax = plots.axes_or_new(ax)
         z = self.z if self.z.ndim == 1 else self.z[0]
         with matplotlib.rc_context(plots.STYLE):
@@ -150,7 +169,7 @@ def synthesize_irregularity(
     n = int(round(length / dx))
     if n < 4:
         raise ValueError(f"length/dx must give at least 4 points, got length={length!r}, dx={dx!r}")
-    lo, hi = wavelength_band_checked(wavelength_band, n * dx, dx)
+    lo, hi = _wavelength_band_checked(wavelength_band, n * dx, dx)
     d_omega = 2.0 * np.pi / (n * dx)
     # The highest line is k = ⌈n/2⌉ − 1; its cell ends half a spacing above it, just under the Nyquist
     # wavenumber π/dx. The band kept (and reported) stops there.
@@ -169,7 +188,7 @@ def synthesize_irregularity(
     return IrregularitySample(np.arange(n) * dx, z, (lo, hi), variance)
 
 
-def wavelength_band_checked(band, length: float, dx: float) -> tuple[float, float]:
+def _wavelength_band_checked(band, length: float, dx: float) -> tuple[float, float]:
     """Wavenumber band of a wavelength band, checked against the record: 2·dx <= λ_min, λ_max <= length."""
     lo, hi = wavelength_band(band)
     shortest, longest = 2 * np.pi / hi, 2 * np.pi / lo
@@ -183,6 +202,22 @@ def wavelength_band_checked(band, length: float, dx: float) -> tuple[float, floa
             f"wavelength_band longest wavelength {longest!r} m exceeds the record length {length!r} m"
         )
     return lo, hi
+
+
+@dataclass(frozen=True)
+class ComponentVariances:
+    """Variances ∫_band S dΩ of the four track irregularities, m².
+
+    Attributes
+    ----------
+    vertical, alignment, cross_level, gauge : float
+        One per component of ``raildyn.track.spectra.COMPONENTS``, m².
+    """
+
+    vertical: float
+    alignment: float
+    cross_level: float
+    gauge: float
 
 
 @dataclass(frozen=True)
@@ -205,7 +240,7 @@ class TwoRailIrregularity:
         Distance, m.
     vertical, alignment, cross_level, gauge : ndarray
         Irregularities, m.
-    variances : dict
+    variances : ComponentVariances
         ∫_band S dΩ of each component, m².
     """
 
@@ -214,26 +249,78 @@ class TwoRailIrregularity:
     alignment: np.ndarray
     cross_level: np.ndarray
     gauge: np.ndarray
-    variances: dict
+    variances: ComponentVariances
 
     @property
     def left_vertical(self) -> np.ndarray:
+        """Height of the left rail, vertical + cross_level/2, m."""
         return self.vertical + 0.5 * self.cross_level
 
     @property
     def right_vertical(self) -> np.ndarray:
+        """Height of the right rail, vertical − cross_level/2, m."""
         return self.vertical - 0.5 * self.cross_level
 
     @property
     def left_lateral(self) -> np.ndarray:
+        """Lateral position of the left rail, alignment + gauge/2, m."""
         return self.alignment + 0.5 * self.gauge
 
     @property
     def right_lateral(self) -> np.ndarray:
+        """Lateral position of the right rail, alignment − gauge/2, m."""
         return self.alignment - 0.5 * self.gauge
 
+    def _component(self, component: str) -> str:
+        if not isinstance(component, str) or component not in COMPONENTS:
+            raise ValueError(
+                f"component must be one of {', '.join(map(repr, COMPONENTS))}; got {component!r}"
+            )
+        return component
+
+    def rms(self, component: str) -> float:
+        """RMS the spectrum gives a component over the band, √(∫_band S dΩ), m.
+
+        Parameters
+        ----------
+        component : {"vertical", "alignment", "cross_level", "gauge"}
+            Which irregularity.
+
+        Returns
+        -------
+        float
+            m.
+        """
+        return float(np.sqrt(getattr(self.variances, self._component(component))))
+
+    def measured_rms(self, component: str) -> float:
+        """RMS of a component of this sample over its length, m; equal to :meth:`rms` to rounding.
+
+        Parameters
+        ----------
+        component : {"vertical", "alignment", "cross_level", "gauge"}
+            Which irregularity.
+
+        Returns
+        -------
+        float
+            m.
+        """
+        return float(np.sqrt(np.mean(getattr(self, self._component(component)) ** 2)))
+
     def plot(self, axes=None) -> dict:
-        """Draw both rails, vertical and lateral, in mm on two axes (new if not given); return the lines."""
+        """Draw both rails, vertical and lateral, in mm on two axes.
+
+        Parameters
+        ----------
+        axes : sequence of two matplotlib.axes.Axes, optional
+            Vertical above lateral; new ones on a new pyplot figure if None.
+
+        Returns
+        -------
+        dict
+            The lines ``left_vertical``, ``right_vertical``, ``left_lateral`` and ``right_lateral``.
+        """
         if axes is None:
             import matplotlib.pyplot as plt
 
@@ -270,14 +357,28 @@ def synthesize_track(
     Parameters
     ----------
     spectrum : {"fra", "german"}
+        The family of spectra.
     grade : int or str
         FRA class 1–6 or German level "low"/"high".
-    length, dx, wavelength_band, rng
-        As for :func:`synthesize_irregularity`.
+    length : float
+        Length of track, m.
+    dx : float
+        Spacing, m, > 0.
+    wavelength_band : (shortest, longest)
+        Wavelengths kept, m, as for :func:`synthesize_irregularity`.
+    rng : numpy.random.Generator, int or None
+        Source of the phases of all four components.
 
     Returns
     -------
     TwoRailIrregularity
+        The four irregularities, their rails and their band variances.
+
+    Examples
+    --------
+    >>> t = synthesize_track("fra", 4, 1000.0, 0.25, (1.524, 304.8), rng=2026)
+    >>> round(1e3 * t.rms("vertical"), 1), bool(np.isclose(t.measured_rms("gauge"), t.rms("gauge")))
+    (25.0, True)
     """
     generator = _checks.generator(rng)
     parts, variances = {}, {}
@@ -286,18 +387,36 @@ def synthesize_track(
             track_psd(spectrum, component, grade), length, dx, wavelength_band, generator
         )
         parts[component], variances[component] = sample.z, sample.variance
-    return TwoRailIrregularity(sample.x, variances=variances, **parts)
+    return TwoRailIrregularity(sample.x, variances=ComponentVariances(**variances), **parts)
 
 
 def temporal_psd(psd: Callable, speed: float) -> Callable:
-    """S_t(ω) = S(ω/V)/V: the spectrum in time, per rad/s, of a track spectrum met at speed V (m/s)."""
+    """S_t(ω) = S(ω/V)/V: the spectrum in time, per rad/s, of a track spectrum met at speed V.
+
+    Parameters
+    ----------
+    psd : callable
+        Spatial one-sided S(Ω), m²/(rad/m), Ω in rad/m.
+    speed : float
+        V > 0, m/s.
+
+    Returns
+    -------
+    callable
+        S_t(ω), m²/(rad/s), ω in rad/s.
+
+    Examples
+    --------
+    >>> round(float(temporal_psd(lambda w: 1.0 / w**2, 10.0)(20.0)), 6)  # S(2)/10
+    0.025
+    """
     V = _checks.positive("speed", speed)
     if not callable(psd):
         raise TypeError(f"psd must be a callable S(Omega), got {type(psd).__name__}")
     return lambda omega: np.asarray(psd(np.asarray(omega, dtype=float) / V)) / V
 
 
-def spatial_to_temporal(psd_values, wavenumber, speed) -> tuple[np.ndarray, np.ndarray]:
+def spatial_to_temporal(psd_values, wavenumber, speed) -> rv.Spectrum:
     """Convert a spatial spectrum on a grid to time: ω = VΩ and S_t = S/V.
 
     Parameters
@@ -311,15 +430,14 @@ def spatial_to_temporal(psd_values, wavenumber, speed) -> tuple[np.ndarray, np.n
 
     Returns
     -------
-    omega : ndarray
-        Circular frequencies, rad/s.
-    psd : ndarray
-        One-sided S_t(ω), m²/(rad/s); ∫ S_t dω = ∫ S dΩ over matching bands.
+    raildyn.random_vibration.Spectrum
+        ``omega`` (rad/s) and the one-sided ``psd`` S_t(ω), m²/(rad/s);
+        ∫ S_t dω = ∫ S dΩ over matching bands.
 
     Examples
     --------
-    >>> w, s = spatial_to_temporal([2.0, 2.0], [0.0, 1.0], 10.0)
-    >>> w.tolist(), s.tolist()
+    >>> s = spatial_to_temporal([2.0, 2.0], [0.0, 1.0], 10.0)
+    >>> s.omega.tolist(), s.psd.tolist()
     ([0.0, 10.0], [0.2, 0.2])
     """
     V = _checks.positive("speed", speed)
@@ -327,11 +445,29 @@ def spatial_to_temporal(psd_values, wavenumber, speed) -> tuple[np.ndarray, np.n
     W = _checks.array("wavenumber", wavenumber, low=0.0)
     if S.shape != W.shape:
         raise ValueError(f"psd_values and wavenumber must have the same shape, got {S.shape} and {W.shape}")
-    return V * W, S / V
+    return rv.Spectrum(omega=V * W, psd=S / V)
 
 
 def axle_delays(axle_positions, speed) -> np.ndarray:
-    """Time delays τ_j = d_j/V (s) of axles at distances d_j (m) behind the first, at speed V (m/s)."""
+    """Time delays τ_j = d_j/V of axles at distances d_j behind the first, at speed V.
+
+    Parameters
+    ----------
+    axle_positions : array_like, shape (q,)
+        Distances d_j, m; the first is the reference.
+    speed : float
+        V > 0, m/s.
+
+    Returns
+    -------
+    ndarray, shape (q,)
+        τ_j, s (τ_0 = 0).
+
+    Examples
+    --------
+    >>> axle_delays([0.0, 2.5, 17.5], 25.0).tolist()
+    [0.0, 0.1, 0.7]
+    """
     V = _checks.positive("speed", speed)
     d = _checks.array("axle_positions", axle_positions, ndim=1)
     if d.size == 0:
@@ -360,7 +496,39 @@ def excitation_csd(psd: Callable, omega, axle_positions, speed) -> np.ndarray:
     Returns
     -------
     ndarray, complex, shape (n, q, q)
+        The Hermitian cross-spectral matrix.
     """
     w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=True)
     delays = axle_delays(axle_positions, speed)
     return rv.delayed_input_csd(temporal_psd(psd, speed)(w), w, delays)
+
+
+def axle_filter_wavelengths(axle_spacing: float, count: int) -> np.ndarray:
+    """Wavelengths λ_j = 2d/(2j + 1) that the mean of two axles a distance d apart does not feel.
+
+    Each axle meets the same track d apart; where d is an odd number of half
+    wavelengths the two see opposite irregularities and their mean (the bounce
+    of a bogie or a car) is zero, whatever the speed. At speed V these are the
+    frequencies V/λ_j (:func:`passing_frequency`), i.e. the
+    :func:`raildyn.random_vibration.cancellation_frequencies` for τ = d/V.
+
+    Parameters
+    ----------
+    axle_spacing : float
+        d, m, > 0.
+    count : int
+        Number of wavelengths, >= 1.
+
+    Returns
+    -------
+    ndarray, shape (count,)
+        λ_j, m, j = 0 … count − 1, longest first.
+
+    Examples
+    --------
+    >>> axle_filter_wavelengths(2.5, 3).round(4).tolist()
+    [5.0, 1.6667, 1.0]
+    """
+    d = _checks.positive("axle_spacing", axle_spacing)
+    n = _checks.integer("count", count, low=1)
+    return 2.0 * d / (2 * np.arange(n) + 1)

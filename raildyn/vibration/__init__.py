@@ -18,8 +18,11 @@ again. SI units throughout: m, kg, s, N, rad/s.
 """
 
 from raildyn.vibration.mdof import (
+    ChainMatrices,
     ComplexModes,
     ModalResult,
+    RayleighCoefficients,
+    StateSpaceMatrices,
     chain_matrices,
     complex_modes,
     first_order_matrix,
@@ -31,10 +34,15 @@ from raildyn.vibration.mdof import (
     rayleigh_damping,
     state_space,
     to_control,
+    uniform_chain_frequencies,
 )
 from raildyn.vibration.sdof import (
     SDOF,
+    DecayPeaks,
+    FreeVibration,
+    RootLocus,
     damping_ratio_from_decrement,
+    decrement_from_peaks,
     log_decrement,
     magnification_factor,
     phase_angle,
@@ -44,12 +52,19 @@ from raildyn.vibration.sdof import (
 
 __all__ = [
     "SDOF",
+    "ChainMatrices",
     "ComplexModes",
+    "DecayPeaks",
+    "FreeVibration",
     "ModalResult",
+    "RayleighCoefficients",
+    "RootLocus",
+    "StateSpaceMatrices",
     "chain_matrices",
     "complex_modes",
-    "first_order_matrix",
     "damping_ratio_from_decrement",
+    "decrement_from_peaks",
+    "first_order_matrix",
     "frf_matrix",
     "log_decrement",
     "magnification_factor",
@@ -63,4 +78,5 @@ __all__ = [
     "state_space",
     "to_control",
     "transmissibility_ratio",
+    "uniform_chain_frequencies",
 ]

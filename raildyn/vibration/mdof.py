@@ -4,17 +4,41 @@ The undamped eigenproblem with mass-normalised modes, modal superposition,
 Rayleigh (proportional) damping, complex modes of the first-order form when the
 damping is not proportional, state-space matrices for python-control, and the
 frequency-response matrix. SI units: m, kg, s, N, rad/s.
+
+Results are frozen dataclasses: :class:`ModalResult`, :class:`ComplexModes`,
+:class:`ChainMatrices`, :class:`RayleighCoefficients` and
+:class:`StateSpaceMatrices`.
 """
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg
 
-from raildyn._checks import array, nonnegative, positive, scalar, square_matrix, time_grid
+from raildyn._checks import array, integer, nonnegative, positive, scalar, square_matrix, time_grid
 from raildyn.vibration.sdof import SDOF
+
+__all__ = [
+    "ChainMatrices",
+    "ComplexModes",
+    "ModalResult",
+    "RayleighCoefficients",
+    "StateSpaceMatrices",
+    "chain_matrices",
+    "complex_modes",
+    "first_order_matrix",
+    "frf_matrix",
+    "modal_analysis",
+    "modal_damping_ratios",
+    "modal_superposition",
+    "rayleigh_coefficients",
+    "rayleigh_damping",
+    "state_space",
+    "to_control",
+    "uniform_chain_frequencies",
+]
 
 # The outputs that state_space can give.
 _OUTPUTS = ("displacement", "velocity", "acceleration", "state")
@@ -23,13 +47,15 @@ _OUTPUTS = ("displacement", "velocity", "acceleration", "state")
 # Several degrees of freedom
 
 
-class ModalResult(NamedTuple):
+@dataclass(frozen=True)
+class ModalResult:
     """Undamped modes of ``M x'' + K x = 0``.
 
     Attributes
     ----------
     natural_frequencies : ndarray, shape (n,)
-        ω_j in rad/s, ascending (0.0 for a rigid-body mode).
+        ω_j in rad/s, ascending (0.0 for a rigid-body mode); in Hz as
+        :attr:`natural_frequencies_hz`.
     mode_shapes : ndarray, shape (n, n)
         Column j is mode j, scaled so that Φᵀ M Φ = I (units kg^(−1/2)) and its
         largest-magnitude entry is positive.
@@ -38,8 +64,43 @@ class ModalResult(NamedTuple):
     natural_frequencies: np.ndarray
     mode_shapes: np.ndarray
 
+    @property
+    def natural_frequencies_hz(self) -> np.ndarray:
+        """f_j = ω_j/(2π), Hz."""
+        return self.natural_frequencies / (2.0 * np.pi)
 
-class ComplexModes(NamedTuple):
+    def modal_matrix(self, matrix) -> np.ndarray:
+        """A matrix in modal coordinates, Φᵀ X Φ.
+
+        With the mass matrix it gives the identity, with the stiffness matrix
+        diag(ω_j²) (the orthogonality of the modes); with a damping matrix it is
+        diagonal only for proportional damping.
+
+        Parameters
+        ----------
+        matrix : array_like, shape (n, n)
+            X: M (kg), C (N·s/m) or K (N/m).
+
+        Returns
+        -------
+        ndarray, shape (n, n)
+            Φᵀ X Φ: dimensionless for M, 1/s for C, 1/s² for K.
+
+        Examples
+        --------
+        >>> chain = chain_matrices([1.0, 1.0], [1.0, 1.0])
+        >>> modes = modal_analysis(chain.M, chain.K)
+        >>> np.round(modes.modal_matrix(chain.M), 12)
+        array([[1., 0.],
+               [0., 1.]])
+        """
+        n = self.mode_shapes.shape[0]
+        X = square_matrix("matrix", matrix, size=n, symmetric=False)
+        return self.mode_shapes.T @ X @ self.mode_shapes
+
+
+@dataclass(frozen=True)
+class ComplexModes:
     """Modes of ``M x'' + C x' + K x = 0`` from its first-order form.
 
     Attributes
@@ -50,7 +111,8 @@ class ComplexModes(NamedTuple):
         Displacement part of each eigenvector, scaled so its largest-magnitude
         entry is 1 + 0j (dimensionless).
     natural_frequencies : ndarray, shape (2n,)
-        |λ|, rad/s (the undamped ω_j when damping is proportional).
+        |λ|, rad/s (the undamped ω_j when damping is proportional); in Hz as
+        :attr:`natural_frequencies_hz`.
     damping_ratios : ndarray, shape (2n,)
         −Re λ/|λ| (1 for a real, overdamped eigenvalue; 0 for λ = 0).
     """
@@ -59,6 +121,146 @@ class ComplexModes(NamedTuple):
     mode_shapes: np.ndarray
     natural_frequencies: np.ndarray
     damping_ratios: np.ndarray
+
+    @property
+    def natural_frequencies_hz(self) -> np.ndarray:
+        """|λ|/(2π), Hz."""
+        return self.natural_frequencies / (2.0 * np.pi)
+
+    def relative_phase(self, coordinate: int, reference: int) -> np.ndarray:
+        """Phase of one coordinate relative to another in each mode, arg(φ_coordinate/φ_reference).
+
+        Zero or ±π for a real (proportionally damped) mode: the two move in or
+        against phase; anything else shows that damping couples the modes.
+
+        Parameters
+        ----------
+        coordinate : int
+            Index of the coordinate, 0 <= coordinate < n.
+        reference : int
+            Index of the reference coordinate, 0 <= reference < n; its entry must not vanish.
+
+        Returns
+        -------
+        ndarray, shape (2n,)
+            Phase in rad, in (−π, π], one per eigenvalue.
+
+        Examples
+        --------
+        >>> modes = complex_modes(np.eye(2), np.zeros((2, 2)), [[2.0, -1.0], [-1.0, 2.0]])
+        >>> np.round(np.degrees(modes.relative_phase(1, 0)[::2]), 6)
+        array([  0., 180.])
+        """
+        n = self.mode_shapes.shape[0]
+        i = integer("coordinate", coordinate, low=0, high=n - 1)
+        j = integer("reference", reference, low=0, high=n - 1)
+        ref = self.mode_shapes[j]
+        if np.any(ref == 0):
+            raise ValueError(
+                f"reference must be a coordinate that moves in every mode; coordinate {j} is at rest "
+                f"in mode(s) {np.flatnonzero(ref == 0).tolist()}"
+            )
+        return np.angle(self.mode_shapes[i] / ref)
+
+
+@dataclass(frozen=True)
+class ChainMatrices:
+    """Mass, damping and stiffness matrices of a chain of masses (:func:`chain_matrices`).
+
+    Attributes
+    ----------
+    M : ndarray, shape (n, n)
+        Mass matrix, kg (diagonal).
+    C : ndarray, shape (n, n)
+        Damping matrix, N·s/m (zeros when no dampers were given).
+    K : ndarray, shape (n, n)
+        Stiffness matrix, N/m.
+    """
+
+    M: np.ndarray
+    C: np.ndarray
+    K: np.ndarray
+
+
+@dataclass(frozen=True)
+class RayleighCoefficients:
+    """Coefficients of Rayleigh (proportional) damping C = αM + βK.
+
+    Attributes
+    ----------
+    alpha : float
+        α, 1/s.
+    beta : float
+        β, s.
+    """
+
+    alpha: float
+    beta: float
+
+    def damping_ratio(self, omega):
+        """Damping ratio ξ(ω) = α/(2ω) + βω/2 that C = αM + βK gives a mode of frequency ω.
+
+        Parameters
+        ----------
+        omega : array_like
+            ω, rad/s, > 0.
+
+        Returns
+        -------
+        ndarray or float
+            ξ, shape of ``omega``.
+        """
+        w = array("omega", omega, low=0.0, low_open=True)
+        return (self.alpha / (2.0 * w) + self.beta * w / 2.0)[()]
+
+    def damping_matrix(self, M, K) -> np.ndarray:
+        """C = αM + βK, N·s/m (see :func:`rayleigh_damping`).
+
+        Parameters
+        ----------
+        M : array_like, shape (n, n)
+            Mass matrix, kg; symmetric positive definite.
+        K : array_like, shape (n, n)
+            Stiffness matrix, N/m; symmetric positive semi-definite.
+
+        Returns
+        -------
+        ndarray, shape (n, n)
+        """
+        return rayleigh_damping(M, K, self.alpha, self.beta)
+
+
+@dataclass(frozen=True)
+class StateSpaceMatrices:
+    """The matrices of z' = A z + B u, y = C z + D u (:func:`state_space`).
+
+    Attributes
+    ----------
+    A : ndarray, shape (2n, 2n)
+        State matrix, blocks in 1/s² and 1/s.
+    B : ndarray, shape (2n, m)
+        Input matrix.
+    C : ndarray, shape (p, 2n)
+        Output matrix.
+    D : ndarray, shape (p, m)
+        Feedthrough matrix.
+    """
+
+    A: np.ndarray
+    B: np.ndarray
+    C: np.ndarray
+    D: np.ndarray
+
+    def to_control(self):
+        """The same system as a ``control.StateSpace`` (python-control).
+
+        Returns
+        -------
+        control.StateSpace
+        """
+        import control  # imported here so that importing raildyn does not pull in python-control
+
+        return control.ss(self.A, self.B, self.C, self.D)
 
 
 def _pivots(vectors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -85,7 +287,7 @@ def _modes(M: np.ndarray, K: np.ndarray) -> ModalResult:
     noise = 1e3 * lam.size * np.finfo(float).eps * np.abs(K).max() / np.linalg.eigvalsh(M)[0]
     lam = np.where(lam > noise, lam, 0.0)
     phi = phi * np.sign(phi[_pivots(phi)])
-    return ModalResult(np.sqrt(lam), phi)
+    return ModalResult(natural_frequencies=np.sqrt(lam), mode_shapes=phi)
 
 
 def modal_analysis(M, K) -> ModalResult:
@@ -107,23 +309,42 @@ def modal_analysis(M, K) -> ModalResult:
     Returns
     -------
     ModalResult
+        ω_j (rad/s, also in Hz) and the mass-normalised shapes.
 
     Examples
     --------
-    >>> M, K = chain_matrices([1.0, 1.0], [1.0, 1.0])
-    >>> np.round(modal_analysis(M, K).natural_frequencies ** 2, 6)  # (3 ∓ √5)/2
+    >>> chain = chain_matrices([1.0, 1.0], [1.0, 1.0])
+    >>> np.round(modal_analysis(chain.M, chain.K).natural_frequencies ** 2, 6)  # (3 ∓ √5)/2
     array([0.381966, 2.618034])
     """
     return _modes(*_mass_and_stiffness(M, K))
 
 
-def chain_matrices(masses, stiffnesses, grounded: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """Mass and stiffness matrices of masses in a line joined by springs.
+def _chain_assembly(name: str, values, n: int, grounded: bool, low_open: bool) -> np.ndarray:
+    """The matrix of springs (or dampers) joining a chain of n masses in order."""
+    want = n if grounded else n - 1
+    k = array(name, values, ndim=1, low=0.0, low_open=low_open)
+    if k.size != want:
+        kind = "grounded (fixed-free)" if grounded else "free-free"
+        raise ValueError(f"{name} must have {want} entries for a {kind} chain of {n} masses, got {k.size}")
+    right = np.arange(n - want, n)  # the mass at the far end of each spring
+    left = right - 1  # −1 is the ground
+    K = np.zeros((n, n))
+    np.add.at(K, (right, right), k)
+    inner = left >= 0
+    np.add.at(K, (left[inner], left[inner]), k[inner])
+    np.add.at(K, (left[inner], right[inner]), -k[inner])
+    np.add.at(K, (right[inner], left[inner]), -k[inner])
+    return K
+
+
+def chain_matrices(masses, stiffnesses, *, dampings=None, grounded: bool = True) -> ChainMatrices:
+    """Mass, damping and stiffness matrices of masses in a line joined by springs (and dampers).
 
     Springs join neighbouring masses in order. With ``grounded=True`` there is
     one more spring, listed first, tying mass 0 to the ground, and the last
     mass is free (fixed-free); otherwise both ends are free (free-free, with one
-    rigid-body mode). A chain of dampers gives its damping matrix the same way.
+    rigid-body mode). Dampers, if given, sit beside the springs.
 
     Parameters
     ----------
@@ -131,15 +352,19 @@ def chain_matrices(masses, stiffnesses, grounded: bool = True) -> tuple[np.ndarr
         kg, > 0.
     stiffnesses : array_like, shape (n,) if grounded else (n − 1,)
         N/m, > 0.
+    dampings : array_like, optional
+        N·s/m, >= 0, one beside each spring; no damping by default.
     grounded : bool
+        Whether the first spring (and damper) ties mass 0 to the ground.
 
     Returns
     -------
-    M, K : ndarray, shape (n, n)
+    ChainMatrices
+        M (kg), C (N·s/m) and K (N/m), each (n, n).
 
     Examples
     --------
-    >>> chain_matrices([1.0, 2.0], [3.0, 4.0])[1]
+    >>> chain_matrices([1.0, 2.0], [3.0, 4.0]).K
     array([[ 7., -4.],
            [-4.,  4.]])
     """
@@ -148,25 +373,49 @@ def chain_matrices(masses, stiffnesses, grounded: bool = True) -> tuple[np.ndarr
         raise ValueError("masses must hold at least one mass, got an empty array")
     if not isinstance(grounded, (bool, np.bool_)):
         raise TypeError(f"grounded must be True or False, got {grounded!r}")
-    want = m.size if grounded else m.size - 1
-    k = array("stiffnesses", stiffnesses, ndim=1, low=0.0, low_open=True)
-    if k.size != want:
-        kind = "grounded (fixed-free)" if grounded else "free-free"
-        raise ValueError(
-            f"stiffnesses must have {want} entries for a {kind} chain of {m.size} masses, got {k.size}"
-        )
-    right = np.arange(m.size - want, m.size)  # the mass at the far end of each spring
-    left = right - 1  # −1 is the ground
-    K = np.zeros((m.size, m.size))
-    np.add.at(K, (right, right), k)
-    inner = left >= 0
-    np.add.at(K, (left[inner], left[inner]), k[inner])
-    np.add.at(K, (left[inner], right[inner]), -k[inner])
-    np.add.at(K, (right[inner], left[inner]), -k[inner])
-    return np.diag(m), K
+    K = _chain_assembly("stiffnesses", stiffnesses, m.size, grounded, low_open=True)
+    C = (
+        np.zeros_like(K)
+        if dampings is None
+        else _chain_assembly("dampings", dampings, m.size, grounded, low_open=False)
+    )
+    return ChainMatrices(M=np.diag(m), C=C, K=K)
 
 
-def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) -> tuple[float, float]:
+def uniform_chain_frequencies(count: int, mass: float, stiffness: float) -> np.ndarray:
+    """Natural frequencies of a uniform fixed-free chain in closed form.
+
+    For n equal masses m joined by n equal springs k, the first tied to the
+    ground (``chain_matrices([m] * n, [k] * n)``), the modes are discrete
+    sines and ω_j = 2√(k/m) sin((2j − 1)π / (2(2n + 1))), j = 1 … n.
+
+    Parameters
+    ----------
+    count : int
+        n >= 1.
+    mass : float
+        m, kg, > 0.
+    stiffness : float
+        k, N/m, > 0.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        ω_j, rad/s, ascending.
+
+    Examples
+    --------
+    >>> np.round(uniform_chain_frequencies(2, 1.0, 1.0) ** 2, 6)  # (3 ∓ √5)/2
+    array([0.381966, 2.618034])
+    """
+    n = integer("count", count, low=1)
+    m = positive("mass", mass)
+    k = positive("stiffness", stiffness)
+    j = np.arange(1, n + 1)
+    return 2.0 * np.sqrt(k / m) * np.sin((2 * j - 1) * np.pi / (2 * (2 * n + 1)))
+
+
+def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) -> RayleighCoefficients:
     """Coefficients (α, β) of C = αM + βK that give damping ratios ξ₁ at ω₁ and ξ₂ at ω₂.
 
     Mode j then has ξ_j = α/(2ω_j) + βω_j/2 (Rayleigh damping; see Clough &
@@ -183,15 +432,13 @@ def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) 
 
     Returns
     -------
-    alpha : float
-        1/s.
-    beta : float
-        s.
+    RayleighCoefficients
+        α (1/s) and β (s).
 
     Examples
     --------
-    >>> a, b = rayleigh_coefficients(1.0, 3.0, 0.05, 0.05)
-    >>> round(a, 6), round(b, 6)
+    >>> c = rayleigh_coefficients(1.0, 3.0, 0.05, 0.05)
+    >>> round(c.alpha, 6), round(c.beta, 6)
     (0.075, 0.025)
     """
     w1, w2 = positive("omega1", omega1), positive("omega2", omega2)
@@ -199,11 +446,35 @@ def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) 
         raise ValueError(f"omega2 must differ from omega1 to fix two coefficients, both are {w1!r}")
     x1, x2 = nonnegative("xi1", xi1), nonnegative("xi2", xi2)
     span = w2**2 - w1**2
-    return 2.0 * w1 * w2 * (x1 * w2 - x2 * w1) / span, 2.0 * (x2 * w2 - x1 * w1) / span
+    return RayleighCoefficients(
+        alpha=2.0 * w1 * w2 * (x1 * w2 - x2 * w1) / span, beta=2.0 * (x2 * w2 - x1 * w1) / span
+    )
 
 
 def rayleigh_damping(M, K, alpha: float, beta: float) -> np.ndarray:
-    """Proportional damping matrix C = αM + βK, N·s/m (α in 1/s, β in s; any finite values)."""
+    """Proportional damping matrix C = αM + βK.
+
+    Parameters
+    ----------
+    M : array_like, shape (n, n)
+        Mass matrix, kg; symmetric positive definite.
+    K : array_like, shape (n, n)
+        Stiffness matrix, N/m; symmetric positive semi-definite.
+    alpha : float
+        α, 1/s (any finite value).
+    beta : float
+        β, s (any finite value).
+
+    Returns
+    -------
+    ndarray, shape (n, n)
+        C, N·s/m.
+
+    Examples
+    --------
+    >>> rayleigh_damping(np.eye(1), 4.0 * np.eye(1), 0.5, 0.25)
+    array([[1.5]])
+    """
     M, K = _mass_and_stiffness(M, K)
     return scalar("alpha", alpha) * M + scalar("beta", beta) * K
 
@@ -230,8 +501,8 @@ def modal_damping_ratios(M, C, K) -> np.ndarray:
 
     Examples
     --------
-    >>> M, K = chain_matrices([1.0, 1.0], [1.0, 1.0])
-    >>> np.round(modal_damping_ratios(M, 0.1 * K, K), 6)  # ξ_j = 0.1 ω_j / 2
+    >>> chain = chain_matrices([1.0, 1.0], [1.0, 1.0])
+    >>> np.round(modal_damping_ratios(chain.M, 0.1 * chain.K, chain.K), 6)  # ξ_j = 0.1 ω_j / 2
     array([0.030902, 0.080902])
     """
     M, K = _mass_and_stiffness(M, K)
@@ -288,8 +559,8 @@ def modal_superposition(M, K, t, x0=None, v0=None, force=None, damping_ratios=No
 
     Examples
     --------
-    >>> M, K = chain_matrices([1.0], [4.0])
-    >>> np.round(modal_superposition(M, K, [0.0, np.pi / 2], x0=[1.0]), 12)
+    >>> chain = chain_matrices([1.0], [4.0])
+    >>> np.round(modal_superposition(chain.M, chain.K, [0.0, np.pi / 2], x0=[1.0]), 12)
     array([[ 1., -1.]])
     """
     M, K = _mass_and_stiffness(M, K)
@@ -395,6 +666,7 @@ def complex_modes(M, C, K) -> ComplexModes:
     Returns
     -------
     ComplexModes
+        Eigenvalues (rad/s), complex shapes, |λ| and damping ratios.
 
     Notes
     -----
@@ -428,10 +700,15 @@ def complex_modes(M, C, K) -> ComplexModes:
     values = np.array(values)
     freq = np.abs(values)
     ratio = np.divide(-values.real, freq, out=np.zeros(freq.shape), where=freq > 0)
-    return ComplexModes(values, np.stack(columns, axis=1), freq, ratio)
+    return ComplexModes(
+        eigenvalues=values,
+        mode_shapes=np.stack(columns, axis=1),
+        natural_frequencies=freq,
+        damping_ratios=ratio,
+    )
 
 
-def state_space(M, C, K, B, output: str = "displacement"):
+def state_space(M, C, K, B, output: str = "displacement") -> StateSpaceMatrices:
     """State-space matrices of ``M x'' + C x' + K x = B u`` with state z = [x; x'].
 
     z' = A z + B_s u, y = C_s z + D u, with A = [[0, I], [−M⁻¹K, −M⁻¹C]] and
@@ -450,14 +727,13 @@ def state_space(M, C, K, B, output: str = "displacement"):
 
     Returns
     -------
-    A, B_s, C_s, D : ndarray
-        Shapes (2n, 2n), (2n, m), (p, 2n), (p, m), with p = 2n for "state"
-        and n otherwise.
+    StateSpaceMatrices
+        A, B = B_s, C = C_s and D, of shapes (2n, 2n), (2n, m), (p, 2n), (p, m),
+        with p = 2n for "state" and n otherwise.
 
     Examples
     --------
-    >>> A, Bs, Cs, D = state_space([[2.0]], [[0.0]], [[8.0]], [[1.0]])
-    >>> A
+    >>> state_space([[2.0]], [[0.0]], [[8.0]], [[1.0]]).A
     array([[ 0.,  1.],
            [-4., -0.]])
     """
@@ -472,16 +748,31 @@ def state_space(M, C, K, B, output: str = "displacement"):
     Bs = np.vstack([np.zeros((n, m)), accel_input])
     zeros = np.zeros((n, m))
     if output == "displacement":
-        return A, Bs, np.hstack([np.eye(n), np.zeros((n, n))]), zeros
-    if output == "velocity":
-        return A, Bs, np.hstack([np.zeros((n, n)), np.eye(n)]), zeros
-    if output == "acceleration":
-        return A, Bs, A[n:].copy(), accel_input
-    return A, Bs, np.eye(2 * n), np.zeros((2 * n, m))
+        Cs, D = np.hstack([np.eye(n), np.zeros((n, n))]), zeros
+    elif output == "velocity":
+        Cs, D = np.hstack([np.zeros((n, n)), np.eye(n)]), zeros
+    elif output == "acceleration":
+        Cs, D = A[n:].copy(), accel_input
+    else:
+        Cs, D = np.eye(2 * n), np.zeros((2 * n, m))
+    return StateSpaceMatrices(A=A, B=Bs, C=Cs, D=D)
 
 
 def to_control(M, C, K, B, output: str = "displacement"):
     """The system of :func:`state_space` as a ``control.StateSpace`` (python-control).
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n)
+        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices.
+    B : array_like, shape (n, m) or (n,)
+        How each input loads each coordinate.
+    output : {"displacement", "velocity", "acceleration", "state"}
+        As for :func:`state_space`.
+
+    Returns
+    -------
+    control.StateSpace
 
     Examples
     --------
@@ -490,9 +781,7 @@ def to_control(M, C, K, B, output: str = "displacement"):
     >>> np.round(np.sort_complex(control.poles(sys)), 6)
     array([-0.2-1.989975j, -0.2+1.989975j])
     """
-    import control  # imported here so that importing raildyn does not pull in python-control
-
-    return control.ss(*state_space(M, C, K, B, output))
+    return state_space(M, C, K, B, output).to_control()
 
 
 def frf_matrix(M, C, K, omega) -> np.ndarray:

@@ -3,18 +3,39 @@
 Free response in every damping regime, the characteristic roots and their locus
 (Fig. 1.4), the logarithmic decrement (eq. 1.17), harmonic and base-excited
 response, and the exact response to a sampled force. SI units: m, kg, s, N, rad/s.
+
+Results come as frozen dataclasses: :class:`DecayPeaks`, :class:`FreeVibration`
+(with ``.plot``) and :class:`RootLocus` (with ``.plot``, book Fig. 1.4).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import scipy.linalg
 import scipy.signal
 
 from raildyn._checks import array, integer, nonnegative, positive, scalar, time_grid
+
+if TYPE_CHECKING:  # mdof imports this module, so its classes are named here for the annotations only
+    from raildyn.vibration.mdof import StateSpaceMatrices
+
+__all__ = [
+    "SDOF",
+    "DecayPeaks",
+    "FreeVibration",
+    "RootLocus",
+    "damping_ratio_from_decrement",
+    "decrement_from_peaks",
+    "log_decrement",
+    "magnification_factor",
+    "phase_angle",
+    "root_locus",
+    "transmissibility_ratio",
+]
 
 # |ξ − 1| at or below this counts as critical damping in SDOF.regime.
 CRITICAL_TOLERANCE = 1e-9
@@ -82,6 +103,154 @@ def _reciprocal(numerator, denominator):
 
 
 # ---------------------------------------------------------------------------
+# Results
+
+
+@dataclass(frozen=True)
+class DecayPeaks:
+    """Successive maxima of an underdamped free response (book Fig. 1.5).
+
+    Attributes
+    ----------
+    times : ndarray, shape (count,)
+        Times of the maxima, s, one damped period T_d apart.
+    values : ndarray, shape (count,)
+        Displacements there, m (or the unit of x0).
+    """
+
+    times: np.ndarray
+    values: np.ndarray
+
+    @property
+    def log_decrement(self) -> float:
+        """δ = ln(x₁/x_{j+1})/j measured over the j periods between the first and the last peak (eq. 1.17).
+
+        Needs at least two peaks; equal to :attr:`SDOF.log_decrement` to rounding.
+        """
+        return decrement_from_peaks(self.values[0], self.values[-1], cycles=self.values.size - 1)
+
+
+@dataclass(frozen=True)
+class FreeVibration:
+    """The free response of an SDOF system on a time grid, with its envelope and its maxima.
+
+    Built by :meth:`SDOF.free_vibration`; :meth:`plot` draws it as book Fig. 1.5.
+
+    Attributes
+    ----------
+    time : ndarray, shape (n,)
+        t, s.
+    displacement : ndarray, shape (n,)
+        x(t), in the unit of x0 (m).
+    envelope : ndarray, shape (n,)
+        A e^(−ξω_n t) when the system oscillates, else |x(t)|; same unit.
+    peaks : DecayPeaks
+        The first maxima (empty arrays when ξ >= 1: no oscillation, no peaks).
+    """
+
+    time: np.ndarray
+    displacement: np.ndarray
+    envelope: np.ndarray
+    peaks: DecayPeaks
+
+    def plot(self, ax=None, *, artists=None) -> dict:
+        """Draw x(t), the envelope ±A e^(−ξω_n t) and the maxima; or move artists drawn before.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        artists : dict, optional
+            The dict a previous call returned: its lines are moved to this
+            response (``set_data``) instead of drawing new ones, as a widget does.
+
+        Returns
+        -------
+        dict
+            The artists: ``line``, ``upper``, ``lower`` (the envelope) and ``peaks``.
+        """
+        if artists is not None:
+            artists["line"].set_data(self.time, self.displacement)
+            artists["upper"].set_data(self.time, self.envelope)
+            artists["lower"].set_data(self.time, -self.envelope)
+            artists["peaks"].set_data(self.peaks.times, self.peaks.values)
+            return artists
+        import matplotlib
+
+        from raildyn import plots
+
+        drawn = plots.time_history(self.time, self.displacement, ax=ax, envelope=self.envelope)
+        ax = drawn["line"].axes
+        with matplotlib.rc_context(plots.STYLE):
+            (drawn["peaks"],) = ax.plot(
+                self.peaks.times, self.peaks.values, "s", color=plots.COLORS[1], ms=6, label="maxima"
+            )
+        return drawn
+
+
+@dataclass(frozen=True)
+class RootLocus:
+    """Characteristic roots s₁, s₂ of an SDOF system over a sweep of damping factors (book Fig. 1.4).
+
+    Attributes
+    ----------
+    natural_frequency : float
+        ω_n, rad/s.
+    damping_ratios : ndarray, shape (n,)
+        ξ values swept.
+    roots : complex ndarray, shape (n, 2)
+        s₁ (+ sign in eq. 1.9) and s₂ for each ξ, rad/s.
+    """
+
+    natural_frequency: float
+    damping_ratios: np.ndarray
+    roots: np.ndarray
+
+    def plot(self, ax=None, *, mark=None, normalised: bool = False) -> dict:
+        """Draw both branches of the locus, the circle |s| = ω_n and, optionally, marked roots.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        mark : complex array_like, shape (2,), optional
+            Roots to mark, rad/s (scaled like the locus when ``normalised``); the
+            marker is drawn hidden when None, for a widget to move and show later.
+        normalised : bool
+            Draw s/ω_n instead of s in rad/s.
+
+        Returns
+        -------
+        dict
+            The artists: ``branch1``, ``branch2``, ``roots`` (the marker) and ``circle``.
+        """
+        import matplotlib
+
+        from raildyn import plots
+
+        ax = plots.axes_or_new(ax)
+        scale = 1.0 / self.natural_frequency if normalised else 1.0
+        locus = self.roots * scale
+        radius = self.natural_frequency * scale
+        with matplotlib.rc_context(plots.STYLE):
+            phi = np.linspace(np.pi / 2, 3 * np.pi / 2, 91)
+            (circle,) = ax.plot(radius * np.cos(phi), radius * np.sin(phi), ls=":", color="0.6", lw=1)
+            (b1,) = ax.plot(locus[:, 0].real, locus[:, 0].imag, color=plots.COLORS[0], label="$s_1$")
+            (b2,) = ax.plot(locus[:, 1].real, locus[:, 1].imag, color=plots.COLORS[1], label="$s_2$")
+            marks = np.zeros(2, complex) if mark is None else scale * np.asarray(mark, dtype=complex)
+            (pts,) = ax.plot(marks.real, marks.imag, "o", color="k", ms=7, mfc="w", mew=2, zorder=5)
+            pts.set_visible(mark is not None)
+            ax.axhline(0, color="0.4", lw=0.8)
+            ax.axvline(0, color="0.4", lw=0.8)
+            ax.set_aspect("equal", adjustable="box")
+            unit = r"$s/\omega_n$" if normalised else "$s$ (rad/s)"
+            ax.set_xlabel(f"Re {unit}")
+            ax.set_ylabel(f"Im {unit}")
+            ax.legend(loc="upper left")
+        return {"branch1": b1, "branch2": b2, "roots": pts, "circle": circle}
+
+
+# ---------------------------------------------------------------------------
 # Single degree of freedom
 
 
@@ -117,9 +286,22 @@ class SDOF:
 
     @classmethod
     def from_modal(cls, natural_frequency: float, damping_ratio: float, mass: float = 1.0) -> SDOF:
-        """Build the oscillator from ω_n (rad/s, > 0), ξ (>= 0) and m (kg, > 0).
+        """Build the oscillator from its natural frequency, damping factor and mass.
 
         Uses k = m ω_n² and c = ξ c_c = 2 ξ m ω_n (eqs. 1.5 and 1.14).
+
+        Parameters
+        ----------
+        natural_frequency : float
+            ω_n, rad/s, > 0.
+        damping_ratio : float
+            ξ, >= 0.
+        mass : float
+            m, kg, > 0.
+
+        Returns
+        -------
+        SDOF
 
         Examples
         --------
@@ -235,10 +417,24 @@ class SDOF:
         return (x0 * ec + (v0 + self.damping_ratio * self.natural_frequency * x0) * es)[()]
 
     def free_velocity(self, t, x0: float, v0: float):
-        """Velocity x'(t), m/s, of the free system; arguments as :meth:`free_response`.
+        """Velocity x'(t), m/s, of the free system.
 
         Differentiating the closed form and using ξ²ω_n² + ω_n²(1 − ξ²) = ω_n² gives
         ``x' = e^(−ξω_n t) [v0 C(t) − (ξω_n v0 + ω_n² x0) S(t)]``.
+
+        Parameters
+        ----------
+        t : array_like
+            Times since the start, s, >= 0.
+        x0 : float
+            Initial displacement, m.
+        v0 : float
+            Initial velocity, m/s.
+
+        Returns
+        -------
+        ndarray
+            x'(t), m/s, same shape as ``t``.
 
         Examples
         --------
@@ -261,6 +457,11 @@ class SDOF:
         t : array_like
             Times after the impulse, s, >= 0.
 
+        Returns
+        -------
+        ndarray
+            h(t), m/(N·s), same shape as ``t``.
+
         Examples
         --------
         >>> s = SDOF.from_modal(1.0, 0.0, mass=2.0)
@@ -274,6 +475,20 @@ class SDOF:
 
         A = √(x0² + ((v0 + ξω_n x0)/ω_d)²) is the amplitude of eq. (1.11). For
         ξ >= 1 the motion does not oscillate and |x(t)| itself is returned.
+
+        Parameters
+        ----------
+        t : array_like
+            Times since the start, s, >= 0.
+        x0 : float
+            Initial displacement, m.
+        v0 : float
+            Initial velocity, m/s.
+
+        Returns
+        -------
+        ndarray
+            The envelope, m, same shape as ``t``.
 
         Examples
         --------
@@ -290,18 +505,32 @@ class SDOF:
         amplitude = math.hypot(x0, (v0 + sigma * x0) / wd)
         return (amplitude * np.exp(-sigma * t))[()]
 
-    def decay_peaks(self, x0: float, v0: float, count: int = 2) -> tuple[np.ndarray, np.ndarray]:
-        """Times (s) and values (m) of the first ``count`` maxima of the free response (ξ < 1).
+    def decay_peaks(self, x0: float, v0: float, count: int = 2) -> DecayPeaks:
+        """The first ``count`` maxima of the free response (ξ < 1).
 
         Successive maxima are one damped period apart and their ratio is
         x₁/x₂ = e^(ξω_n T_d), so ln(x₁/x₂) = δ (eqs. 1.15-1.17, Fig. 1.5). A
         maximum at t = 0 (when v0 = 0 and x0 > 0) is the first one.
 
+        Parameters
+        ----------
+        x0 : float
+            Initial displacement, m.
+        v0 : float
+            Initial velocity, m/s.
+        count : int
+            Number of maxima, >= 1.
+
+        Returns
+        -------
+        DecayPeaks
+            Their times (s) and values (m).
+
         Examples
         --------
         >>> s = SDOF.from_modal(2 * np.pi, 0.1)
-        >>> times, values = s.decay_peaks(1.0, 0.0, count=2)
-        >>> round(float(np.log(values[0] / values[1])), 6) == round(s.log_decrement, 6)
+        >>> peaks = s.decay_peaks(1.0, 0.0, count=2)
+        >>> round(peaks.log_decrement, 6) == round(s.log_decrement, 6)
         True
         """
         count = integer("count", count, low=1)
@@ -319,15 +548,61 @@ class SDOF:
         if 2.0 * math.pi - offset < 1e-9:  # a peak rounded to just before t = 0 is the one at t = 0
             offset = 0.0
         times = (offset + 2.0 * math.pi * np.arange(count)) / wd
-        return times, np.asarray(self.free_response(times, x0, v0))
+        return DecayPeaks(times, np.asarray(self.free_response(times, x0, v0)))
+
+    def free_vibration(self, t, x0: float, v0: float, *, peaks: int = 2) -> FreeVibration:
+        """The free response on a time grid with its decay envelope and first maxima (book Fig. 1.5).
+
+        Parameters
+        ----------
+        t : array_like
+            Times since the start, s, >= 0.
+        x0 : float
+            Initial displacement, m.
+        v0 : float
+            Initial velocity, m/s.
+        peaks : int
+            Number of maxima to locate, >= 1 (none are located when ξ >= 1).
+
+        Returns
+        -------
+        FreeVibration
+            With ``.plot(ax)``.
+
+        Examples
+        --------
+        >>> s = SDOF.from_modal(2 * np.pi, 0.1)
+        >>> r = s.free_vibration(np.linspace(0.0, 3.0, 301), 1.0, 0.0, peaks=3)
+        >>> r.peaks.times.round(4).tolist(), round(r.peaks.log_decrement, 4)
+        ([0.0, 1.005, 2.0101], 0.6315)
+        """
+        peaks = integer("peaks", peaks, low=1)
+        t = array("t", t, low=0.0)
+        x = np.asarray(self.free_response(t, x0, v0))
+        envelope = np.asarray(self.envelope(t, x0, v0))
+        if self.damped_frequency > 0.0:
+            found = self.decay_peaks(x0, v0, count=peaks)
+        else:
+            found = DecayPeaks(np.empty(0), np.empty(0))
+        return FreeVibration(t, x, envelope, found)
 
     # -- harmonic response -----------------------------------------------
 
     def receptance(self, omega):
-        """Receptance X/F = 1/(k − mω² + icω), m/N, at circular frequencies ω (rad/s, >= 0).
+        """Receptance X/F = 1/(k − mω² + icω), m/N, at circular frequencies ω.
 
         Complex; its modulus times k is the magnification factor and minus its
         angle the phase lag. Infinite for an undamped system exactly at ω_n.
+
+        Parameters
+        ----------
+        omega : array_like
+            ω, rad/s, >= 0.
+
+        Returns
+        -------
+        complex ndarray
+            X/F, m/N, same shape as ``omega``.
 
         Examples
         --------
@@ -338,16 +613,36 @@ class SDOF:
         return _reciprocal(1.0, self.stiffness - self.mass * w**2 + 1j * self.damping * w)[()]
 
     def base_frf(self, omega):
-        """Complex ratio X/Y of mass to base motion, (k + icω)/(k − mω² + icω), at ω (rad/s, >= 0).
+        """Complex ratio X/Y of mass to base motion, (k + icω)/(k − mω² + icω).
 
         For ``m x'' + c (x' − y') + k (x − y) = 0``; dimensionless.
+
+        Parameters
+        ----------
+        omega : array_like
+            ω, rad/s, >= 0.
+
+        Returns
+        -------
+        complex ndarray
+            X/Y, same shape as ``omega``.
         """
         w = array("omega", omega, low=0.0)
         den = self.stiffness - self.mass * w**2 + 1j * self.damping * w
         return _reciprocal(self.stiffness + 1j * self.damping * w, den)[()]
 
     def transmissibility(self, omega):
-        """Displacement transmissibility |X/Y| = |1 + 2iξr| / |1 − r² + 2iξr|, r = ω/ω_n, at ω (rad/s, >= 0).
+        """Displacement transmissibility |X/Y| = |1 + 2iξr| / |1 − r² + 2iξr|, r = ω/ω_n.
+
+        Parameters
+        ----------
+        omega : array_like
+            ω, rad/s, >= 0.
+
+        Returns
+        -------
+        ndarray
+            |X/Y|, dimensionless, same shape as ``omega``.
 
         Examples
         --------
@@ -368,7 +663,8 @@ class SDOF:
         Systems*, 3rd ed., 1998, ch. 6).
         With z = [x, x'], the step is z₊ = Φ z + P F + Q F₊; returns (P, Q).
         """
-        a, b, *_ = self.state_space()
+        matrices = self.state_space()
+        a, b = matrices.A, matrices.B
         aug = np.zeros((4, 4))
         aug[:2, :2], aug[:2, 2:3], aug[2, 3] = a, b, 1.0
         e = scipy.linalg.expm(aug * h)
@@ -396,6 +692,11 @@ class SDOF:
         Returns
         -------
         ndarray, shape (n,)
+            x(t), m.
+
+        See Also
+        --------
+        duhamel_response : the same response by the rectangle rule, to compare with.
 
         Examples
         --------
@@ -424,12 +725,60 @@ class SDOF:
         free = self.free_response(tau, x0 - q[0] * f[0], v0 - q[1] * f[0])
         return free + scipy.signal.fftconvolve(f, kernel)[:n]
 
+    def duhamel_response(self, t, force) -> np.ndarray:
+        """Response from rest to a sampled force by Duhamel's integral, summed by the rectangle rule.
+
+        x(t_k) ≈ Δt Σ_{j<=k} h(t_k − t_j) F(t_j), with h the unit-impulse response
+        (:meth:`impulse_response`): the convolution x = ∫₀ᵗ h(t − τ) F(τ) dτ of the
+        book's chapter 1 evaluated the plain way. It converges to the exact
+        :meth:`forced_response` as Δt → 0: at first order in Δt, at second when
+        F(t₀) = 0 (the term the rectangle rule counts whole at τ = t₀ then vanishes).
+
+        Parameters
+        ----------
+        t : array_like, shape (n,)
+            Uniformly spaced, strictly increasing times, s; the system is at rest at t[0].
+        force : array_like, shape (n,)
+            F(t), N.
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            x(t), m.
+
+        Examples
+        --------
+        >>> s = SDOF.from_modal(2 * np.pi, 0.2, mass=10.0)
+        >>> t = np.linspace(0.0, 2.0, 2001)
+        >>> f = np.where(t < 0.2, np.sin(np.pi * t / 0.2), 0.0)
+        >>> bool(np.abs(s.duhamel_response(t, f) - s.forced_response(t, f)).max() < 1e-7)
+        True
+        """
+        t = time_grid("t", t, uniform=True)
+        f = array("force", force, shape=t.shape)
+        if t.size == 1:
+            return np.zeros(1)
+        h = (t[-1] - t[0]) / (t.size - 1)
+        kernel = self.impulse_response(t - t[0])
+        return h * scipy.signal.fftconvolve(f, kernel)[: t.size]
+
     # -- linear-system views ---------------------------------------------
 
-    def state_space(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """State-space matrices (A, B, C, D) for state [x, x'] (m, m/s), input F (N), output x (m).
+    def state_space(self) -> StateSpaceMatrices:
+        """State-space matrices for state [x, x'] (m, m/s), input F (N), output x (m).
 
         A = [[0, 1], [−k/m, −c/m]], B = [[0], [1/m]], C = [[1, 0]], D = [[0]].
+
+        Returns
+        -------
+        StateSpaceMatrices
+            A (2, 2), B (2, 1), C (1, 2), D (1, 1).
+
+        Examples
+        --------
+        >>> SDOF(2.0, 0.4, 8.0).state_space().A
+        array([[ 0. ,  1. ],
+               [-4. , -0.2]])
         """
         from raildyn.vibration.mdof import state_space  # mdof builds on SDOF, so import late
 
@@ -437,6 +786,10 @@ class SDOF:
 
     def to_control(self):
         """The oscillator as a ``control.StateSpace`` (input F in N, output x in m).
+
+        Returns
+        -------
+        control.StateSpace
 
         Examples
         --------
@@ -453,7 +806,7 @@ class SDOF:
 # SDOF curves as functions of ξ and r
 
 
-def root_locus(natural_frequency: float, damping_ratios) -> np.ndarray:
+def root_locus(natural_frequency: float, damping_ratios) -> RootLocus:
     """Characteristic roots s₁, s₂ (rad/s) for each damping factor in a sweep (Fig. 1.4).
 
     Parameters
@@ -465,18 +818,19 @@ def root_locus(natural_frequency: float, damping_ratios) -> np.ndarray:
 
     Returns
     -------
-    complex ndarray, shape (n, 2)
-        Columns s₁ (+ sign in eq. 1.9) and s₂.
+    RootLocus
+        ``roots`` has shape (n, 2): columns s₁ (+ sign in eq. 1.9) and s₂;
+        ``.plot(ax)`` draws Fig. 1.4.
 
     Examples
     --------
-    >>> root_locus(1.0, [0.0, 1.0])
+    >>> root_locus(1.0, [0.0, 1.0]).roots
     array([[ 0.+1.j,  0.-1.j],
            [-1.+0.j, -1.+0.j]])
     """
     wn = positive("natural_frequency", natural_frequency)
     xi = array("damping_ratios", damping_ratios, ndim=1, low=0.0)
-    return _roots(wn, xi)
+    return RootLocus(wn, xi, _roots(wn, xi))
 
 
 def log_decrement(damping_ratio):
@@ -486,6 +840,11 @@ def log_decrement(damping_ratio):
     ----------
     damping_ratio : array_like
         ξ >= 0.
+
+    Returns
+    -------
+    ndarray or float
+        δ, dimensionless, shape of ``damping_ratio``.
 
     Examples
     --------
@@ -506,6 +865,11 @@ def damping_ratio_from_decrement(delta):
     delta : array_like
         δ >= 0 (finite: a system with ξ >= 1 has no decrement to measure).
 
+    Returns
+    -------
+    ndarray or float
+        ξ, shape of ``delta``.
+
     Examples
     --------
     >>> round(float(damping_ratio_from_decrement(log_decrement(0.3))), 12)
@@ -513,6 +877,39 @@ def damping_ratio_from_decrement(delta):
     """
     d = array("delta", delta, low=0.0)
     return (d / np.hypot(2.0 * np.pi, d))[()]
+
+
+def decrement_from_peaks(first, later, cycles: int = 1) -> float:
+    """Logarithmic decrement measured from two maxima ``cycles`` periods apart: δ = ln(x₀/x_j)/j.
+
+    Successive maxima of a free decay shrink by e^δ each period (eqs. 1.15-1.17),
+    so j periods apart they shrink by e^(jδ); averaging over several periods is
+    how a decrement is read off a record.
+
+    Parameters
+    ----------
+    first : float
+        The earlier maximum x₀, > 0 (any unit).
+    later : float
+        The maximum x_j, j periods later, > 0 (same unit).
+    cycles : int
+        j >= 1.
+
+    Returns
+    -------
+    float
+        δ, dimensionless.
+
+    Examples
+    --------
+    >>> delta = decrement_from_peaks(12.0, 3.0, cycles=5)
+    >>> round(delta, 4), round(float(damping_ratio_from_decrement(delta)), 4)
+    (0.2773, 0.0441)
+    """
+    x0 = positive("first", first)
+    xj = positive("later", later)
+    j = integer("cycles", cycles, low=1)
+    return math.log(x0 / xj) / j
 
 
 def _ratio_and_damping(frequency_ratio, damping_ratio):
@@ -552,6 +949,18 @@ def phase_angle(frequency_ratio, damping_ratio):
     For ξ = 0 the lag jumps from 0 to π at r = 1, where π/2 (the limit as
     ξ → 0) is returned.
 
+    Parameters
+    ----------
+    frequency_ratio : array_like
+        r = ω/ω_n >= 0.
+    damping_ratio : array_like
+        ξ >= 0; broadcast against ``frequency_ratio``.
+
+    Returns
+    -------
+    ndarray
+        φ, rad.
+
     Examples
     --------
     >>> np.round(phase_angle([0.0, 1.0], 0.1) / np.pi, 12)
@@ -567,6 +976,18 @@ def transmissibility_ratio(frequency_ratio, damping_ratio):
     """Transmissibility √(1 + (2ξr)²)/√((1 − r²)² + (2ξr)²), for force to ground or base motion to mass.
 
     Equal to 1 at r = √2 whatever ξ; isolation (< 1) needs r > √2.
+
+    Parameters
+    ----------
+    frequency_ratio : array_like
+        r = ω/ω_n >= 0.
+    damping_ratio : array_like
+        ξ >= 0; broadcast against ``frequency_ratio``.
+
+    Returns
+    -------
+    ndarray
+        Dimensionless; inf for ξ = 0 at r = 1.
 
     Examples
     --------

@@ -14,6 +14,8 @@ from matplotlib.legend import Legend
 from raildyn import plots, random_vibration, vibration
 from raildyn.widgets._core import Recipe, slider
 
+__all__ = ["chain_modes", "forced_response", "free_vibration", "random_response"]
+
 # Damping factors of the grey reference curves behind the live one.
 _REFERENCE_XI = (0.05, 0.1, 0.2, 0.5, 1.0)
 
@@ -30,40 +32,36 @@ def _free_vibration_controls():
 def _free_vibration_setup(live, status):
     ax_t, ax_s = live.axes[0]
     t = np.linspace(0.0, 5.0, 1000)  # s; a fixed axis keeps the cached picture valid on every move
-    hist = plots.time_history(t, np.zeros_like(t), ax=ax_t, envelope=np.zeros_like(t))
-    (peak_marks,) = ax_t.plot([], [], "s", color=plots.COLORS[1], ms=6, label="$x_1, x_2$ one period apart")
+    start = vibration.SDOF.from_modal(2 * np.pi, 0.1).free_vibration(t, 10.0, 0.0)  # the default controls
+    hist = start.plot(ax_t)
+    hist["peaks"].set_label("$x_1, x_2$ one period apart")
     ax_t.set_ylabel("displacement $x$ (mm)")
     ax_t.legend(loc="upper right")
     ax_t.set_ylim(-21, 21)
     ax_t.set_xlim(0, t[-1])
     locus = vibration.root_locus(1.0, np.linspace(0.0, 2.0, 401))
-    art = plots.root_locus(locus, np.zeros(2, complex), ax=ax_s)
-    ax_s.set_xlabel(r"Re $s/\omega_n$")
-    ax_s.set_ylabel(r"Im $s/\omega_n$")
+    art = locus.plot(ax_s, mark=np.zeros(2, complex), normalised=True)
     ax_s.set_xlim(-4.0, 0.5)
     ax_s.set_ylim(-1.3, 1.3)
-    live.animate(hist["line"], hist["upper"], hist["lower"], peak_marks, art["roots"])
+    live.animate(hist["line"], hist["upper"], hist["lower"], hist["peaks"], art["roots"])
 
     def redraw(v):
         system = vibration.SDOF.from_modal(v["natural_frequency"], v["damping_ratio"])
-        hist["line"].set_ydata(system.free_response(t, v["x0"], v["v0"]))
-        env = system.envelope(t, v["x0"], v["v0"])
-        hist["upper"].set_ydata(env)
-        hist["lower"].set_ydata(-env)
+        response = system.free_vibration(t, v["x0"], v["v0"], peaks=2)
+        response.plot(artists=hist)
         roots = system.roots() / system.natural_frequency
         art["roots"].set_data(roots.real, roots.imag)
         art["roots"].set_visible(True)
         text = f"<b>{system.regime}</b>"
         if 0 < system.damping_ratio < 1:
-            peaks_t, peaks_x = system.decay_peaks(v["x0"], v["v0"], count=2)
-            peak_marks.set_data(peaks_t, peaks_x)
-            measured = np.log(peaks_x[0] / peaks_x[1]) if peaks_x[1] > 0 else np.inf
+            peaks = response.peaks
+            measured = peaks.log_decrement if peaks.values[1] > 0 else np.inf
             text += (
                 f" · ω_d = {system.damped_frequency:.3f} rad/s · δ = 2πξ/√(1−ξ²) = "
                 f"{system.log_decrement:.4f} · ln(x₁/x₂) = {measured:.4f}"
             )
         else:
-            peak_marks.set_data([], [])
+            hist["peaks"].set_data([], [])  # the undamped motion has no decay to read
         status.value = text
 
     return redraw
@@ -84,6 +82,13 @@ def free_vibration():
     Controls: damping factor ξ, natural frequency ω_n (rad/s), initial
     displacement x₀ (mm) and velocity v₀ (mm/s). The status line gives the
     regime, ω_d, the logarithmic decrement δ and ln(x₁/x₂) read off the curve.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return FREE_VIBRATION.build()
 
@@ -136,6 +141,13 @@ def forced_response():
 
     Grey curves show ξ = 0.05, 0.1, 0.2, 0.5 and 1 for reference; the dotted line
     marks r = √2, where the transmissibility is 1 whatever the damping.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return FORCED_RESPONSE.build()
 
@@ -180,8 +192,8 @@ def _chain_modes_setup(live, status):
         n = v["dof"]
         masses = 1000.0 * np.r_[1.0, np.full(n - 1, v["mass_ratio"])]
         springs = 1.0e6 * np.r_[1.0, np.full(n - 1, v["stiffness_ratio"])]
-        M, K = vibration.chain_matrices(masses, springs, grounded=True)
-        modes = vibration.modal_analysis(M, K)
+        chain = vibration.chain_matrices(masses, springs, grounded=True)
+        modes = vibration.modal_analysis(chain.M, chain.K)
         x0 = np.zeros(n)
         if v["initial"] == "mass 1 displaced":
             x0[0] = 10.0
@@ -190,7 +202,7 @@ def _chain_modes_setup(live, status):
         else:
             shape = modes.mode_shapes[:, int(v["initial"][5]) - 1]
             x0 = 10.0 * shape / np.abs(shape).max()
-        x = vibration.modal_superposition(M, K, t, x0=x0, damping_ratios=v["damping_ratio"])
+        x = vibration.modal_superposition(chain.M, chain.K, t, x0=x0, damping_ratios=v["damping_ratio"])
         shapes = modes.mode_shapes / np.abs(modes.mode_shapes).max(axis=0)  # each drawn with largest entry 1
         for j in range(3):
             visible = j < n
@@ -204,7 +216,7 @@ def _chain_modes_setup(live, status):
         # Limits in steps of 5 mm, so that most moves keep the axes (and the cached picture).
         limit = 5.0 * np.ceil(1.15 * np.abs(x).max() / 5.0)
         ax_x.set_ylim(-limit, limit)
-        freqs = ", ".join(f"{w / (2 * np.pi):.2f}" for w in modes.natural_frequencies)
+        freqs = ", ".join(f"{f:.2f}" for f in modes.natural_frequencies_hz)
         status.value = f"natural frequencies: {freqs} Hz"
 
     return redraw
@@ -226,6 +238,13 @@ def chain_modes():
     first (m₁ = 1000 kg, k₁ = 1 MN/m), a modal damping factor and the starting
     shape. Left: the mode shapes, each scaled to a largest entry of 1; right:
     each mass's displacement from modal superposition.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return CHAIN_MODES.build()
 
@@ -256,10 +275,10 @@ def _random_response_setup(live, status):
         force = random_vibration.synthesize(lambda w: np.full_like(w, level), dt, n, v["seed"], band=band)
         x = system.forced_response(t, force)
         x = x[t > 20 / (system.damping_ratio * system.natural_frequency)]  # drop the start-up transient
-        w_est, s_est = random_vibration.welch_psd(x, dt, nperseg=2048)
+        estimate = random_vibration.welch_psd(x, dt, nperseg=2048)
         sigma = random_vibration.rms(response, omega)
         exact.set_ydata(response[1:])
-        welch.set_data(w_est[1:], s_est[1:])
+        welch.set_data(estimate.omega[1:], estimate.psd[1:])
         sample["line"].set_ydata(x[: shown.sum()] / sigma)
         white = np.sqrt(
             random_vibration.sdof_white_noise_mean_square(mass, system.damping, system.stiffness, level)
@@ -292,5 +311,12 @@ def random_response():
     |H|²G₀ with the Welch estimate of one 400 s sample; right: 10 s of the sample
     in units of the analytic RMS σ, with the ±σ lines. Controls: natural frequency (Hz),
     damping factor ξ, and the random seed.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return RANDOM_RESPONSE.build()

@@ -14,6 +14,8 @@ import numpy as np
 from raildyn import plots, random_vibration, track
 from raildyn.widgets._core import Recipe, slider
 
+__all__ = ["jointed_rail", "random_track"]
+
 # The eight track qualities the widget offers, by label: (spectrum family, class or level).
 TRACKS = {f"FRA class {c}": ("fra", c) for c in track.FRA_CLASSES} | {
     "German low": ("german", "low"),
@@ -96,7 +98,8 @@ def _random_track_setup(live, status):
         psd = track.track_psd(spectrum, component, grade)
         chosen.set_ydata(psd(_OMEGA_SPACE))
         sample = track.synthesize_irregularity(psd, _SAMPLE_LENGTH, _DX, (shortest, longest), v["seed"])
-        w_est, s_est = random_vibration.welch_psd(sample.z, _DX, nperseg=1024)
+        estimate = random_vibration.welch_psd(sample.z, _DX, nperseg=1024)
+        w_est, s_est = estimate.omega, estimate.psd
         inside = (w_est >= sample.band[0]) & (w_est <= sample.band[1])
         welch.set_data(w_est[inside], np.where(s_est[inside] > 0, s_est[inside], np.nan))
         sample_line.set_ydata(1e3 * sample.z)
@@ -108,7 +111,7 @@ def _random_track_setup(live, status):
         f_lo, f_hi = V * lo / (2 * np.pi), V * hi / (2 * np.pi)
         status.value = (
             f"RMS over λ ∈ [{shortest:g}, {longest:g}] m: analytic {1e3 * np.sqrt(analytic):.2f} mm · "
-            f"1 km sample {1e3 * np.sqrt(np.mean(sample.z**2)):.2f} mm · at {v['speed_kmh']:.0f} km/h "
+            f"1 km sample {1e3 * sample.measured_rms:.2f} mm · at {v['speed_kmh']:.0f} km/h "
             f"this band excites {f_lo:.2f}–{f_hi:.1f} Hz"
         )
 
@@ -133,6 +136,13 @@ def random_track():
     estimate of the sample; middle: the seeded 1 km sample (mm); right: the
     spectrum met in time at V, S(ω/V)/V. The status line gives the band RMS,
     analytic beside the sample's.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return RANDOM_TRACK.build()
 
@@ -154,13 +164,9 @@ def _jointed_rail_setup(live, status):
     ax_p, ax_h = live.axes[0]
     L = track.RAIL_LENGTH
     x = np.linspace(0.0, 3 * L, 1200)
-    (left,) = ax_p.plot(x, 0 * x, color=plots.COLORS[0], label="left rail")
-    (right,) = ax_p.plot(x, 0 * x, color=plots.COLORS[1], ls="--", label="right rail")
-    (cross,) = ax_p.plot(x, 0 * x, color=plots.COLORS[2], lw=1.2, ls=":", label="cross-level")
+    profiles = track.jointed_track(x, 0.008, 2.0).plot(ax_p)  # the default controls
     ax_p.set_xlim(0, x[-1])
     ax_p.set_ylim(-21, 21)
-    ax_p.set_xlabel("distance $x$ (m)")
-    ax_p.set_ylabel("profile (mm)")
     ax_p.legend(loc="lower right", ncols=3)
     # Harmonics of the periodic inputs seen at speed V, at the frequencies nV/L: bounce (mean of the
     # rails) and roll (cross-level). The frequency axis is fixed; the bars move along it with the speed.
@@ -173,15 +179,12 @@ def _jointed_rail_setup(live, status):
     ax_h.set_xlabel("frequency $nV/L$ (Hz)")
     ax_h.set_ylabel("amplitude (mm)")
     ax_h.legend(loc="upper right")
-    live.animate(left, right, cross, *bounce.patches, *roll.patches)
+    live.animate(*profiles.values(), *bounce.patches, *roll.patches)
     period = np.linspace(0.0, L, 2048, endpoint=False)
 
     def redraw(v):
         depth, a = 1e-3 * v["depth_mm"], min(v["half_width"], L / 2)
-        t = track.jointed_track(x, depth, a, arrangement=v["arrangement"])
-        left.set_ydata(1e3 * t.left)
-        right.set_ydata(1e3 * t.right)
-        cross.set_ydata(1e3 * t.cross_level)
+        track.jointed_track(x, depth, a, arrangement=v["arrangement"]).plot(artists=profiles)
         one = track.jointed_track(period, depth, a, arrangement=v["arrangement"])
         for bars, signal in ((bounce, one.vertical), (roll, one.cross_level)):
             for bar, h in zip(bars.patches, 1e3 * track.harmonic_amplitudes(signal, n_harm), strict=True):
@@ -214,5 +217,12 @@ def jointed_rail():
     (km/h). Left: both rails and the cross-level over three rail lengths; right:
     the Fourier amplitudes of the bounce (mean) and roll (cross-level) inputs,
     placed at their frequencies nV/L in Hz.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return JOINTED_RAIL.build()

@@ -1,8 +1,8 @@
 """Chapter 4 widgets: the Hertz ellipse, creep laws side by side, the FASTSIM patch, profile geometry.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
-models are in :mod:`raildyn.contact`; this module turns control values (kN, mm,
-‰) into SI model calls and moves the artists.
+models are in :mod:`raildyn.contact` (steel of :mod:`raildyn.constants`); this
+module turns control values (kN, mm, ‰) into SI model calls and moves the artists.
 """
 
 from __future__ import annotations
@@ -16,8 +16,7 @@ import numpy as np
 from raildyn import contact, plots
 from raildyn.widgets._core import Recipe, slider
 
-_YOUNG, _NU = 2.1e11, 0.3  # steel (Pa, –)
-_SHEAR = _YOUNG / (2 * (1 + _NU))
+__all__ = ["creep_laws", "fastsim_patch", "hertz", "profiles"]
 
 
 # ---------------------------------------------------------------- Hertz ellipse and pressure
@@ -52,7 +51,7 @@ def _hertz_setup(live, status):
 
     def redraw(v):
         c = contact.hertz_contact(
-            v["load_kn"] * 1e3, v["wheel_radius_mm"] * 1e-3, math.inf, v["rail_radius_mm"] * 1e-3, _YOUNG, _NU
+            v["load_kn"] * 1e3, v["wheel_radius_mm"] * 1e-3, math.inf, v["rail_radius_mm"] * 1e-3
         )
         ellipse.set_data(1e3 * c.a * np.cos(t), 1e3 * c.b * np.sin(t))
         p_x.set_data(1e3 * c.a * s, 1e-6 * c.pressure(c.a * s, 0.0))
@@ -82,6 +81,13 @@ def hertz():
     Controls: wheel load (kN), wheel rolling radius and rail crown radius (mm).
     The status line gives a, b, θ, Hertz's m and n, p₀, the approach and the
     linearized normal stiffness.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return HERTZ.build()
 
@@ -100,54 +106,28 @@ def _creep_controls():
 
 def _ellipse(load, a_over_b):
     """Semi-axes with ratio a/b and the area of the circular Hertz contact of radius-460-mm bodies."""
-    c = contact.hertz_contact(load, 0.46, 0.46, math.inf, _YOUNG, _NU)  # circle: a = b
+    c = contact.hertz_contact(load, 0.46, 0.46, math.inf)  # circle: a = b
     size = math.sqrt(c.a * c.b)
     return size * math.sqrt(a_over_b), size / math.sqrt(a_over_b)
 
 
-_CREEP_LAWS = (
-    "Kalker linear",
-    "Carter (2-D)",
-    "Johnson–Vermeulen",
-    "Shen–Hedrick–Elkins",
-    "Polach",
-    "FASTSIM",
-)
+def _creep_curves(load, a_over_b, friction, spin, eta):
+    a, b = _ellipse(load, a_over_b)
+    return contact.lateral_creep_curves(eta, load, friction, a, b, spin=spin)
 
 
 def _creep_setup(live, status):
     (ax,) = live.axes[0]
     eta = np.linspace(0.0, 0.01, 81)
-    lines = {}
-    styles = dict(zip(_CREEP_LAWS, (":", "-", "-", "--", "-.", "o"), strict=True))
-    for i, name in enumerate(_CREEP_LAWS):
-        colour = "k" if name == "Kalker linear" else plots.COLORS[(i - 1) % len(plots.COLORS)]
-        style = styles[name]
-        kw = {"ms": 3} if style == "o" else {}
-        (lines[name],) = ax.plot(eta * 100, eta, style, color=colour, label=name, **kw)
-    ax.axhline(1.0, color="0.5", lw=0.8)
+    lines = _creep_curves(100e3, 1.0, 0.3, 0.0, eta).plot(ax)  # the default controls
     ax.set_xlim(0, 1.0)
-    ax.set_ylim(0, 1.4)
-    ax.set_xlabel("lateral creepage η (%)")
-    ax.set_ylabel("lateral creep force −F_y/(μN)")
-    ax.legend(loc="lower right", ncol=2)
     live.animate(*lines.values())
 
     def redraw(v):
-        load, mu, phi = v["load_kn"] * 1e3, v["friction"], v["spin"]
-        a, b = _ellipse(load, v["a_over_b"])
-        f = contact.creep_coefficients(a, b, _SHEAR, _NU)
-        scale = -1.0 / (mu * load)
-        curves = {
-            "Kalker linear": contact.kalker_linear(0.0, eta, phi, f).fy,
-            "Carter (2-D)": contact.carter(eta, load, mu, f.f22),
-            "Johnson–Vermeulen": contact.johnson_vermeulen(0.0, eta, load, mu, f).fy,
-            "Shen–Hedrick–Elkins": contact.shen_hedrick_elkins(0.0, eta, phi, load, mu, f).fy,
-            "Polach": contact.polach(0.0, eta, phi, load, mu, a, b, _SHEAR, _NU).fy,
-            "FASTSIM": contact.fastsim(0.0, eta, phi, load, mu, a, b, _SHEAR, _NU, fields=False).fy,
-        }
-        for name, force in curves.items():
-            lines[name].set_ydata(scale * np.asarray(force))
+        load, mu = v["load_kn"] * 1e3, v["friction"]
+        curves = _creep_curves(load, v["a_over_b"], mu, v["spin"], eta)
+        curves.plot(artists=lines)
+        a, b, f = curves.a, curves.b, curves.coefficients
         status.value = (
             f"a = {1e3 * a:.2f} mm, b = {1e3 * b:.2f} mm · f₂₂ = {f.f22 / 1e6:.2f} MN, "
             f"f₂₃ = {f.f23 / 1e3:.2f} kN m · μN = {mu * load / 1e3:.1f} kN "
@@ -172,6 +152,13 @@ def creep_laws():
     Controls: a/b, spin φ (1/m), friction μ and wheel load (kN); the ellipse
     area is that of Hertz's circular contact for 460 mm radii in both directions. Forces are
     shown as −F_y/(μN), so the saturation level is 1.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return CREEP_LAWS.build()
 
@@ -191,22 +178,21 @@ def _patch_controls():
 _PATCH = {"load": 100e3, "a": 6e-3, "b": 4e-3, "n": 16}
 
 
+def _patch(xi_permille, eta_permille, spin, friction):
+    n = _PATCH["n"]
+    return contact.fastsim(
+        xi_permille * 1e-3, eta_permille * 1e-3, spin, _PATCH["load"], friction, _PATCH["a"], _PATCH["b"],
+        n_x=n, n_y=n,
+    )  # fmt: skip
+
+
 def _patch_setup(live, status):
     ax_f, ax_s = live.axes[0]
     n = _PATCH["n"]
-    t = np.linspace(0, 2 * np.pi, 200)
     a_mm, b_mm = 1e3 * _PATCH["a"], 1e3 * _PATCH["b"]
-    ax_f.plot(a_mm * np.cos(t), b_mm * np.sin(t), color="0.4", lw=1)
-    stick = ax_f.scatter([], [], s=14, color=plots.COLORS[0], label="adhesion")
-    slip = ax_f.scatter([], [], s=14, color=plots.COLORS[1], label="slip")
-    zeros = np.zeros(n * n)
-    arrows = ax_f.quiver(zeros, zeros, zeros, zeros, angles="xy", scale_units="xy", scale=1.0, width=0.004)
+    patch = _patch(1.0, 0.5, 0.0, 0.3).plot_patch(ax_f)  # the default controls
     ax_f.set_xlim(-1.15 * a_mm, 1.15 * a_mm)
     ax_f.set_ylim(-1.3 * b_mm, 1.3 * b_mm)
-    ax_f.set_aspect("equal")
-    ax_f.set_xlabel("x, rolling direction (mm) — leading edge at right")
-    ax_f.set_ylabel("y (mm)")
-    ax_f.legend(loc="upper left", ncol=2)
     x_line = np.linspace(-a_mm, a_mm, n)
     (bound_up,) = ax_s.plot(x_line, x_line, color="0.5", lw=1, label="±μp_z")
     (bound_dn,) = ax_s.plot(x_line, x_line, color="0.5", lw=1)
@@ -217,31 +203,11 @@ def _patch_setup(live, status):
     ax_s.set_xlabel("x along the centre strip (mm)")
     ax_s.set_ylabel("traction (MPa)")
     ax_s.legend(loc="lower left", ncol=3)
-    live.animate(stick, slip, arrows, bound_up, bound_dn, trac_x, trac_y)
+    live.animate(patch["stick"], patch["slip"], patch["arrows"], bound_up, bound_dn, trac_x, trac_y)
 
     def redraw(v):
-        r = contact.fastsim(
-            v["xi_permille"] * 1e-3,
-            v["eta_permille"] * 1e-3,
-            v["spin"],
-            _PATCH["load"],
-            v["friction"],
-            _PATCH["a"],
-            _PATCH["b"],
-            _SHEAR,
-            _NU,
-            n_x=n,
-            n_y=n,
-        )
-        xy = np.c_[1e3 * r.x.ravel(), 1e3 * r.y.ravel()]
-        sticks = r.adhesion.ravel()
-        stick.set_offsets(xy[sticks] if sticks.any() else np.empty((0, 2)))
-        slip.set_offsets(xy[~sticks] if (~sticks).any() else np.empty((0, 2)))
-        # Arrows: traction scaled so that μ p₀ spans a third of the semi-axis b.
-        peak = max(v["friction"] * r.pz.max(), 1.0)
-        k = b_mm / 3 / peak
-        arrows.set_offsets(xy)
-        arrows.set_UVC(k * r.px.ravel(), k * r.py.ravel())
+        r = _patch(v["xi_permille"], v["eta_permille"], v["spin"], v["friction"])
+        r.plot_patch(artists=patch)
         mid = n // 2
         xs = 1e3 * r.x[mid]
         bound = 1e-6 * v["friction"] * r.pz[mid]
@@ -251,7 +217,7 @@ def _patch_setup(live, status):
         trac_y.set_data(xs, 1e-6 * r.py[mid])
         status.value = (
             f"F_x = {r.fx / 1e3:.1f} kN, F_y = {r.fy / 1e3:.1f} kN, M_z = {r.mz:.1f} N m · "
-            f"|F|/μN = {math.hypot(r.fx, r.fy) / (v['friction'] * _PATCH['load']):.3f} · adhesion on "
+            f"|F|/μN = {r.friction_utilisation:.3f} · adhesion on "
             f"{100 * r.adhesion_fraction:.0f} % of the area"
         )
 
@@ -273,6 +239,13 @@ def fastsim_patch():
     N = 100 kN, a = 6 mm, b = 4 mm. Controls: ξ and η (‰), spin φ (1/m),
     friction μ. Right: the traction along the centre strip against the
     traction bound ±μp_z; the adhesion zone is where the traction stays inside.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return FASTSIM_PATCH.build()
 
@@ -290,12 +263,10 @@ _AMPLITUDES = np.linspace(0.5e-3, 10e-3, 39)
 
 
 @functools.lru_cache(maxsize=16)
-def _geometry(wheel_name: str, rail_name: str, gauge_mm: float):
+def _geometry(wheel_name: str, rail_name: str, gauge_mm: float) -> contact.ContactGeometry:
     wheel = _WHEELS[wheel_name]()
     rail = contact.uic60_rail(_RAILS[rail_name])
-    g = contact.contact_geometry(wheel, rail, _SHIFTS, gauge=gauge_mm * 1e-3)
-    lam = contact.harmonic_conicity(_SHIFTS, g.rolling_radius_difference, _AMPLITUDES)
-    return g.rolling_radius_difference, g.contact_angle[0], lam
+    return contact.contact_geometry(wheel, rail, _SHIFTS, gauge=gauge_mm * 1e-3)
 
 
 def _profile_controls():
@@ -310,33 +281,28 @@ def _profile_controls():
 
 def _profile_setup(live, status):
     ax_r, ax_d, ax_l = live.axes[0]
-    y_mm = 1e3 * _SHIFTS
-    (dr,) = ax_r.plot(y_mm, y_mm, color=plots.COLORS[0])
+    start = _geometry("S1002", "60E1 at 1:40", 1435.0)  # the default controls
+    dr = start.plot_rolling_radius_difference(ax_r, color=plots.COLORS[0])
     ax_r.set_xlim(-10, 10)
     ax_r.set_ylim(-20, 20)
-    ax_r.set_xlabel("lateral shift y (mm)")
-    ax_r.set_ylabel("Δr = r_L − r_R (mm)")
-    (ang,) = ax_d.plot(y_mm, y_mm, color=plots.COLORS[1])
+    ang = start.plot_contact_angle(ax_d, color=plots.COLORS[1])
     ax_d.set_xlim(-10, 10)
     ax_d.set_ylim(0, 75)
-    ax_d.set_xlabel("lateral shift y (mm)")
-    ax_d.set_ylabel("left contact angle δ_L (deg)")
-    amp_mm = 1e3 * _AMPLITUDES
-    (lam,) = ax_l.plot(amp_mm, amp_mm, color=plots.COLORS[2])
+    lam = start.plot_equivalent_conicity(_AMPLITUDES, ax_l, color=plots.COLORS[2])
     ax_l.set_xlim(0, 10)
     ax_l.set_ylim(0, 0.6)
-    ax_l.set_xlabel("amplitude A (mm)")
-    ax_l.set_ylabel("equivalent conicity λ_e")
-    live.animate(dr, ang, lam)
+    live.animate(*dr.values(), *ang.values(), *lam.values())
 
     def redraw(v):
-        delta_r, angle, conicity = _geometry(v["wheel"], v["rail"], float(v["gauge_mm"]))
-        dr.set_ydata(1e3 * delta_r)
-        ang.set_ydata(np.degrees(angle))
-        lam.set_ydata(conicity)
+        g = _geometry(v["wheel"], v["rail"], float(v["gauge_mm"]))
+        g.plot_rolling_radius_difference(artists=dr)
+        g.plot_contact_angle(artists=ang)
+        g.plot_equivalent_conicity(_AMPLITUDES, artists=lam)
+        conicity = lam["equivalent_conicity"].get_ydata()
         i3 = int(np.argmin(np.abs(_AMPLITUDES - 3e-3)))
         status.value = (
-            f"λ_e(3 mm) = {conicity[i3]:.3f} · largest contact angle {np.degrees(angle).max():.1f}°"
+            f"λ_e(3 mm) = {conicity[i3]:.3f} · largest contact angle "
+            f"{np.degrees(g.contact_angle[0]).max():.1f}°"
         )
 
     return redraw
@@ -352,5 +318,17 @@ PROFILES = Recipe(
 
 
 def profiles():
-    """Δr(y), the left contact angle and the equivalent conicity for a chosen wheel, rail and gauge."""
+    """Δr(y), the left contact angle and the equivalent conicity for a chosen wheel, rail and gauge.
+
+    Controls: the wheel (1:20 and 1:40 cones, S1002), the 60E1 rail's
+    inclination and the track gauge (mm). The status line gives λ_e at 3 mm
+    and the largest contact angle.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
+    """
     return PROFILES.build()

@@ -1,0 +1,208 @@
+"""The creep-force laws of chapter 4 side by side on one sweep of lateral creepage.
+
+Kalker's linear theory, Carter's two-dimensional law and Johnson–Vermeulen's
+cubic (both with Kalker's initial slope), the saturation of Shen, Hedrick and
+Elkins, Polach's method and FASTSIM, all for the same contact ellipse, load and
+friction: the chart of the chapter's figure ``fig4.creep`` and of its creep-law
+widget, drawn by :meth:`LateralCreepCurves.plot`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
+from raildyn.contact.creep import (
+    CreepCoefficients,
+    carter,
+    creep_coefficients,
+    johnson_vermeulen,
+    kalker_linear,
+    polach,
+    shen_hedrick_elkins,
+)
+from raildyn.contact.fastsim import fastsim
+
+__all__ = ["CREEP_LAWS", "LateralCreepCurves", "lateral_creep_curves"]
+
+CREEP_LAWS = {
+    "Kalker linear": "kalker_linear",
+    "Carter (2-D)": "carter",
+    "Johnson–Vermeulen": "johnson_vermeulen",
+    "Shen–Hedrick–Elkins": "shen_hedrick_elkins",
+    "Polach": "polach",
+    "FASTSIM": "fastsim",
+}
+"""The laws compared, by label, with the field of :class:`LateralCreepCurves` that holds each."""
+
+_STYLES = dict(zip(CREEP_LAWS, (":", "-", "-", "--", "-.", "o"), strict=True))
+
+
+@dataclass(frozen=True)
+class LateralCreepCurves:
+    """Lateral creep force against lateral creepage by every law of chapter 4 (no longitudinal creepage).
+
+    Attributes
+    ----------
+    lateral : ndarray, shape (n,)
+        Lateral creepages η swept (dimensionless).
+    spin : float
+        Spin creepage φ, 1/m (Carter and Johnson–Vermeulen take none).
+    normal_load : float
+        N, N.
+    friction : float
+        μ.
+    a, b : float
+        Semi-axes of the contact ellipse, m.
+    coefficients : CreepCoefficients
+        Kalker's coefficients of the ellipse.
+    kalker_linear, carter, johnson_vermeulen, shen_hedrick_elkins, polach, fastsim : ndarray, shape (n,)
+        F_y of each law, N (the force of the rail on the wheel: negative for η > 0).
+    """
+
+    lateral: np.ndarray
+    spin: float
+    normal_load: float
+    friction: float
+    a: float
+    b: float
+    coefficients: CreepCoefficients
+    kalker_linear: np.ndarray
+    carter: np.ndarray
+    johnson_vermeulen: np.ndarray
+    shen_hedrick_elkins: np.ndarray
+    polach: np.ndarray
+    fastsim: np.ndarray
+
+    def normalised(self, label: str) -> np.ndarray:
+        """−F_y/(μN) of one law: 1 at full sliding.
+
+        Parameters
+        ----------
+        label : str
+            One of the keys of :data:`CREEP_LAWS`, e.g. ``"Polach"``.
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            Dimensionless.
+        """
+        if label not in CREEP_LAWS:
+            raise ValueError(f"label must be one of {', '.join(map(repr, CREEP_LAWS))}; got {label!r}")
+        return -getattr(self, CREEP_LAWS[label]) / (self.friction * self.normal_load)
+
+    def plot(self, ax=None, *, artists=None) -> dict:
+        """Draw −F_y/(μN) of every law against η in %; or move lines drawn before.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        artists : dict, optional
+            The dict a previous call returned (same creepages): its lines take
+            these curves (``set_ydata``) instead of drawing new ones.
+
+        Returns
+        -------
+        dict
+            One line per law, keyed by its label in :data:`CREEP_LAWS`.
+        """
+        if artists is not None:
+            for label in CREEP_LAWS:
+                artists[label].set_ydata(self.normalised(label))
+            return artists
+        import matplotlib
+
+        from raildyn import plots
+
+        ax = plots.axes_or_new(ax)
+        lines = {}
+        every = max(1, self.lateral.size // 40)
+        with matplotlib.rc_context(plots.STYLE):
+            for i, label in enumerate(CREEP_LAWS):
+                colour = "k" if label == "Kalker linear" else plots.COLORS[(i - 1) % len(plots.COLORS)]
+                style = _STYLES[label]
+                extra = {"ms": 3, "markevery": every} if style == "o" else {}
+                (lines[label],) = ax.plot(
+                    100 * self.lateral, self.normalised(label), style, color=colour, label=label, **extra
+                )
+            ax.axhline(1.0, color="0.5", lw=0.8)
+            ax.set_ylim(0, 1.4)
+            ax.set_xlabel("lateral creepage η (%)")
+            ax.set_ylabel("lateral creep force −F_y/(μN)")
+            ax.legend(loc="lower right", ncol=2)
+        return lines
+
+
+def lateral_creep_curves(
+    lateral,
+    normal_load,
+    friction,
+    a,
+    b,
+    spin=0.0,
+    shear_modulus=STEEL_SHEAR_MODULUS,
+    poisson_ratio=STEEL_POISSON_RATIO,
+) -> LateralCreepCurves:
+    """Lateral creep force of every law of chapter 4 over a sweep of lateral creepage.
+
+    Carter's law and Johnson–Vermeulen's use Kalker's f₂₂ as their initial
+    slope, so every curve but Polach's (whose slope is Kalker's too) starts on
+    the linear theory; all saturate at μN except the linear theory.
+
+    Parameters
+    ----------
+    lateral : array_like, shape (n,)
+        η, dimensionless, >= 0.
+    normal_load : float
+        N, N, > 0.
+    friction : float
+        μ > 0.
+    a, b : float
+        Semi-axes of the contact ellipse, m, 0.1 <= a/b <= 10.
+    spin : float
+        φ, 1/m.
+    shear_modulus : float
+        G, Pa; :data:`raildyn.constants.STEEL_SHEAR_MODULUS` by default.
+    poisson_ratio : float
+        ν; :data:`raildyn.constants.STEEL_POISSON_RATIO` by default.
+
+    Returns
+    -------
+    LateralCreepCurves
+        F_y of each law (N); ``.plot(ax)`` draws them.
+
+    Examples
+    --------
+    >>> c = lateral_creep_curves(np.linspace(0.0, 0.01, 5), 100e3, 0.3, 6e-3, 4e-3)
+    >>> np.round(c.normalised("Shen–Hedrick–Elkins"), 3).tolist()
+    [-0.0, 0.555, 0.854, 0.976, 1.0]
+    """
+    eta = _checks.array("lateral", lateral, ndim=1, low=0.0)
+    load = _checks.positive("normal_load", normal_load)
+    mu = _checks.positive("friction", friction)
+    a = _checks.positive("a", a)
+    b = _checks.positive("b", b)
+    phi = _checks.scalar("spin", spin)
+    f = creep_coefficients(a, b, shear_modulus, poisson_ratio)
+    fy = {
+        "kalker_linear": kalker_linear(0.0, eta, phi, f).fy,
+        "carter": carter(eta, load, mu, f.f22),
+        "johnson_vermeulen": johnson_vermeulen(0.0, eta, load, mu, f).fy,
+        "shen_hedrick_elkins": shen_hedrick_elkins(0.0, eta, phi, load, mu, f).fy,
+        "polach": polach(0.0, eta, phi, load, mu, a, b, shear_modulus, poisson_ratio).fy,
+        "fastsim": fastsim(0.0, eta, phi, load, mu, a, b, shear_modulus, poisson_ratio, fields=False).fy,
+    }
+    return LateralCreepCurves(
+        lateral=eta,
+        spin=phi,
+        normal_load=load,
+        friction=mu,
+        a=a,
+        b=b,
+        coefficients=f,
+        **{name: np.broadcast_to(np.asarray(v, dtype=float), eta.shape).copy() for name, v in fy.items()},
+    )

@@ -1,0 +1,65 @@
+"""Tests of raildyn.contact.comparison: every creep law on one sweep, equal to the laws called one by one."""
+
+import dataclasses
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+
+from raildyn import contact
+from raildyn.contact import CREEP_LAWS, lateral_creep_curves
+
+A, B, N, MU = 6e-3, 4e-3, 100e3, 0.3
+ETA = np.linspace(0.0, 0.01, 41)
+
+
+def test_each_curve_is_its_law_called_alone():
+    c = lateral_creep_curves(ETA, N, MU, A, B, spin=0.3)
+    f = contact.creep_coefficients(A, B)
+    assert c.coefficients == f
+    # The same calls with the same arguments: identical numbers.
+    np.testing.assert_array_equal(c.kalker_linear, contact.kalker_linear(0.0, ETA, 0.3, f).fy)
+    np.testing.assert_array_equal(c.carter, contact.carter(ETA, N, MU, f.f22))
+    np.testing.assert_array_equal(c.johnson_vermeulen, contact.johnson_vermeulen(0.0, ETA, N, MU, f).fy)
+    np.testing.assert_array_equal(
+        c.shen_hedrick_elkins, contact.shen_hedrick_elkins(0.0, ETA, 0.3, N, MU, f).fy
+    )
+    np.testing.assert_array_equal(c.polach, contact.polach(0.0, ETA, 0.3, N, MU, A, B).fy)
+    np.testing.assert_array_equal(c.fastsim, contact.fastsim(0.0, ETA, 0.3, N, MU, A, B, fields=False).fy)
+    assert dataclasses.is_dataclass(c)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        c.polach = None
+
+
+def test_saturating_laws_stay_below_mu_n_and_start_on_kalker():
+    c = lateral_creep_curves(np.array([1e-7, 0.05]), N, MU, A, B)
+    lin = c.normalised("Kalker linear")
+    for label in CREEP_LAWS:
+        if label == "Kalker linear":
+            continue
+        y = c.normalised(label)
+        # Bounded by μN (FASTSIM's grid scales its pressure to sum exactly N: rounding only).
+        assert y[1] <= 1.0 + 1e-12, label
+        # At η = 1e-7, β ~ 1e-4: every law is on Kalker's line to O(β) (FASTSIM to its 0.125 % grid error).
+        assert y[0] == pytest.approx(lin[0], rel=2e-3), label
+
+
+def test_plot_draws_one_line_per_law_and_moves_them():
+    c = lateral_creep_curves(ETA, N, MU, A, B)
+    _, ax = plt.subplots()
+    lines = c.plot(ax)
+    assert list(lines) == list(CREEP_LAWS)
+    np.testing.assert_allclose(lines["Polach"].get_ydata(), -c.polach / (MU * N), rtol=1e-15)
+    spun = lateral_creep_curves(ETA, N, MU, A, B, spin=1.0)
+    count = len(ax.lines)
+    assert spun.plot(artists=lines) is lines and len(ax.lines) == count
+    np.testing.assert_array_equal(lines["FASTSIM"].get_ydata(), spun.normalised("FASTSIM"))
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="lateral must be >= 0"):
+        lateral_creep_curves([-0.01, 0.0], N, MU, A, B)
+    with pytest.raises(ValueError, match="friction"):
+        lateral_creep_curves(ETA, N, 0.0, A, B)
+    with pytest.raises(ValueError, match="label must be one of"):
+        lateral_creep_curves(ETA, N, MU, A, B).normalised("Coulomb")
