@@ -25,10 +25,11 @@ DOF, STEPS, DT = (
 
 def chain_problem():
     """A fixed–free chain of 100 × 1000 kg on 1 MN/m springs, 2 % Rayleigh damping, a sine at the tip."""
-    M, K = vibration.chain_matrices(np.full(DOF, 1000.0), np.full(DOF, 1.0e6))
+    chain = vibration.chain_matrices(np.full(DOF, 1000.0), np.full(DOF, 1.0e6))
+    M, K = chain.M, chain.K
     modes = vibration.modal_analysis(M, K).natural_frequencies
-    alpha, beta = vibration.rayleigh_coefficients(modes[0], modes[-1], 0.02, 0.02)
-    C = vibration.rayleigh_damping(M, K, alpha, beta)
+    coefficients = vibration.rayleigh_coefficients(modes[0], modes[-1], 0.02, 0.02)
+    C = vibration.rayleigh_damping(M, K, coefficients.alpha, coefficients.beta)
     t = np.arange(STEPS + 1) * DT
     force = np.zeros((DOF, t.size))
     force[-1] = 1.0e3 * np.sin(3.0 * t)  # N; 3 rad/s drives the lowest few modes
@@ -61,9 +62,8 @@ def student_newmark(M, C, K, t, force, gamma=0.5, beta=0.25):
 def _scipy(M, C, K, t, rtol, method="RK45", atol=None):
     """The same chain through solve_ivp as a first-order system (the tip force written in closed form)."""
     n = M.shape[0]
-    Minv = np.linalg.inv(M)
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ C]])
-    tip = Minv[:, -1]
+    A = vibration.first_order_matrix(M, C, K)
+    tip = np.linalg.inv(M)[:, -1]
 
     def rhs(tk, y):
         dy = A @ y

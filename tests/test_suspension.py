@@ -77,3 +77,94 @@ def test_bad_suspension_input():
         sus.clearance_force(0.1, -0.01, 1e6)
     with pytest.raises(ValueError, match="deflection must contain only finite"):
         sus.spring_force(np.nan, 1.0)
+
+
+# ---------------------------------------------------------------- the friction law's slope and the damper
+
+
+@settings(deadline=None, max_examples=100)
+@given(v=st.floats(-0.05, 0.05), eps=st.floats(1e-4, 0.1), F=st.floats(1.0, 1e5))
+def test_friction_slope_matches_a_central_difference(v, eps, F):
+    # Central difference with h = 1e-4 v_ε: truncation error F/v_ε·O((h/v_ε)²) ≈ 1e-8 F/v_ε, and
+    # rounding ≈ 1e-16 F / h = 1e-12 F/v_ε: within 1e-6 of the slope's peak F/v_ε.
+    h = 1e-4 * eps
+    fd = (
+        sus.coulomb_friction(v + h, F, velocity_scale=eps)
+        - sus.coulomb_friction(v - h, F, velocity_scale=eps)
+    ) / (2 * h)
+    assert sus.coulomb_friction_slope(v, F, velocity_scale=eps) == pytest.approx(fd, abs=1e-6 * F / eps)
+
+
+def test_friction_slope_closed_forms_and_far_field():
+    F, eps = 1.0e4, 1.0e-3
+    # At v = 0 the smooth law is a damper of F/v_ε; the slope is even in v and never negative.
+    assert sus.coulomb_friction_slope(0.0, F, velocity_scale=eps) == pytest.approx(F / eps, rel=1e-15)
+    v = np.linspace(0.0, 0.01, 21)
+    slope = sus.coulomb_friction_slope(v, F, velocity_scale=eps)
+    np.testing.assert_array_equal(slope, sus.coulomb_friction_slope(-v, F, velocity_scale=eps))
+    assert np.all(slope >= 0) and np.all(np.diff(slope) < 0)
+    # sech² u written as 4e^{−2|u|}/(1 + e^{−2|u|})² stays finite and exact far out (no overflow warning):
+    # at u = 500, sech² u = 4e^{−1000} underflows to 0; at u = 20, 4e^{−40}(1 − 2e^{−40}) to 1e-15.
+    assert sus.coulomb_friction_slope(0.5, F, velocity_scale=eps) == 0.0
+    far = sus.coulomb_friction_slope(0.02, F, velocity_scale=eps)
+    assert far == pytest.approx(F / eps * 4 * np.exp(-40.0), rel=1e-15)
+    with pytest.raises(ValueError, match="velocity_scale must be > 0"):
+        sus.coulomb_friction_slope(0.1, F, velocity_scale=0.0)
+
+
+@settings(deadline=None, max_examples=50)
+@given(
+    v=st.lists(st.floats(-0.05, 0.05), min_size=1, max_size=3),
+    eps=st.floats(1e-3, 0.1),
+    F=st.floats(1.0, 1e4),
+)
+def test_friction_damper_jacobian_matches_finite_differences(v, eps, F):
+    v = np.array(v)
+    n = v.size
+    damper = sus.FrictionDamper(friction_force=F, velocity_scale=eps)
+    x = np.zeros(n)
+    J = damper.jacobian(0.0, x, v)
+    h = 1e-4 * eps
+    fd = np.column_stack(
+        [(damper.force(0.0, x, v + h * e) - damper.force(0.0, x, v - h * e)) / (2 * h) for e in np.eye(n)]
+    )
+    # As above: central differences within 1e-6 of the peak slope F/v_ε.
+    np.testing.assert_allclose(J.wrt_velocity, fd, atol=1e-6 * F / eps, rtol=0)
+    assert np.all(J.wrt_displacement == 0.0) and J.wrt_velocity.shape == (n, n)
+    np.testing.assert_allclose(damper.force(0.0, x, v), -sus.coulomb_friction(v, F, velocity_scale=eps))
+
+
+def test_friction_damper_per_coordinate_and_bad_input():
+    damper = sus.FrictionDamper(friction_force=[100.0, 200.0], velocity_scale=0.01)
+    np.testing.assert_allclose(damper.force(0.0, [0, 0], [1.0, -1.0]), [-100.0, 200.0], rtol=1e-12)
+    np.testing.assert_allclose(np.diag(damper.jacobian(0.0, [0, 0], [0.0, 0.0]).wrt_velocity), [-1e4, -2e4])
+    with pytest.raises(ValueError, match="v must have 2 entries, one per friction_force, got 3"):
+        damper.force(0.0, np.zeros(3), np.zeros(3))
+    with pytest.raises(ValueError, match="velocity_scale must be > 0"):
+        sus.FrictionDamper(friction_force=10.0, velocity_scale=0.0)
+    with pytest.raises(ValueError, match="friction_force must be >= 0"):
+        sus.FrictionDamper(friction_force=-1.0, velocity_scale=0.01)
+    with pytest.raises(ValueError, match="friction_force must be a number or a vector"):
+        sus.FrictionDamper(friction_force=np.ones((2, 2)), velocity_scale=0.01)
+
+
+def test_friction_amplitude_loss_against_a_simulation():
+    # The chapter 2 example: 25 t on 5 MN/m with F_f = 10 kN loses 4F_f/k = 8 mm a cycle (Den Hartog 1956).
+    from scipy.signal import find_peaks
+
+    from raildyn import integrators
+
+    m, k, F, eps = 25e3, 5e6, 10e3, 1e-3
+    assert float(sus.friction_amplitude_loss(F, k)) == pytest.approx(0.008, rel=1e-15)
+    damper = sus.FrictionDamper(F, eps)
+    t = np.linspace(0.0, 1.0, 1001)
+    run = integrators.stiff(
+        m, 0.0, k, t, 0.03, 0.0, damper.force, jacobian=damper.jacobian, rtol=1e-9, atol=1e-12
+    )
+    # Released at its first maximum, 30 mm: the next maxima at 22 and 14 mm. The smoothing leaves a viscous
+    # damper of F/v_ε near v = 0 that the mass crosses in a few ms: the drop is 8 mm within 0.1 mm.
+    peaks = run.x[0][find_peaks(run.x[0])[0]]
+    drops = -np.diff(np.r_[0.03, peaks[:2]])
+    np.testing.assert_allclose(drops, sus.friction_amplitude_loss(F, k), atol=1e-4)
+    with pytest.raises(ValueError, match="stiffness must be > 0"):
+        sus.friction_amplitude_loss(F, 0.0)

@@ -1,5 +1,10 @@
 """Chapter 2 widgets driven without a browser: every control changes the picture, in place."""
 
+import numpy as np
+import pytest
+
+from raildyn import integrators
+from raildyn.errors import SolverError
 from raildyn.widgets import chapter02
 
 
@@ -23,3 +28,20 @@ def test_accuracy_chart_gives_the_stability_limit():
     assert "Δt/T ≤ 0.3183" in _status(container)  # 1/π
     update(method="houbolt")
     assert "unconditionally stable" in _status(container)
+
+
+def test_an_unstable_run_draws_the_part_computed_before_the_blow_up():
+    container, update = chapter02.scheme_response()
+    update(method="central_difference", dt_over_T=0.5, damping_ratio=0.0)
+    scheme = next(ln for ln in container.live.figure.axes[0].lines if ln.get_label() == "scheme")
+    t = np.arange(11) * 0.5  # five periods of T = 1 s
+    with pytest.raises(SolverError) as info:
+        integrators.central_difference(1.0, 0.0, (2 * np.pi) ** 2, t, 1.0, 0.0)
+    part = info.value.partial
+    # The drawn samples are the error's partial history (clipped to ±10 x₀ for drawing).
+    assert np.array_equal(scheme.get_xdata(), part.t)
+    assert np.array_equal(scheme.get_ydata(), np.clip(part.x[0], -10.0, 10.0))
+    assert f"diverged at step {info.value.step} (t = {info.value.time:.2f} s)" in _status(container)
+    # Back to a stable step: the whole run is drawn.
+    update(dt_over_T=0.25)
+    assert scheme.get_xdata().size == 21 and "largest error" in _status(container)

@@ -2,7 +2,8 @@
 
 The companion's version of the accuracy plots of Bathe, *Finite Element
 Procedures* (1996), Figs. 9.2 and 9.3, computed from the amplification matrices of
-:mod:`raildyn.integrators`.
+:mod:`raildyn.integrators` and drawn by :class:`raildyn.integrators.SchemeAccuracy`,
+whose methods the chapter 2 widgets call too.
 """
 
 from __future__ import annotations
@@ -38,13 +39,11 @@ def spectral_radius_figure() -> Figure:
     ax = fig.subplots()
     ratios = np.logspace(-2, 2, 400)
     for name, label in _SCHEMES.items():
-        rho = integrators.spectral_radius(name, ratios)
-        ax.semilogx(ratios, np.where(rho < 2.0, rho, np.nan), color=_STYLES[name], label=label)
+        integrators.scheme_accuracy(name, ratios).plot_spectral_radius(ax, color=_STYLES[name], label=label)
+    ax.set_xscale("log")
     ax.axhline(1.0, color="0.4", lw=0.8, ls=":")
     ax.axvline(1 / np.pi, color=_STYLES["central_difference"], lw=0.8, ls="--")
     ax.set_ylim(0.0, 1.6)
-    ax.set_xlabel(r"$\Delta t/T$")
-    ax.set_ylabel(r"spectral radius $\rho(A)$")
     ax.legend(loc="lower left", ncols=2)
     return fig
 
@@ -63,15 +62,11 @@ def accuracy_figure() -> Figure:
     for name, label in _SCHEMES.items():
         if name == "rk4":
             continue
-        ax_pe.plot(
-            ratios, 100 * integrators.period_elongation(name, ratios), color=_STYLES[name], label=label
-        )
-        ax_ad.plot(ratios, 100 * integrators.amplitude_decay(name, ratios), color=_STYLES[name], label=label)
-    ax_pe.set_ylabel("period elongation (%)")
-    ax_ad.set_ylabel("amplitude decay per period (%)")
+        chart = integrators.scheme_accuracy(name, ratios)
+        chart.plot_period_elongation(ax_pe, color=_STYLES[name], label=label)
+        chart.plot_amplitude_decay(ax_ad, color=_STYLES[name], label=label)
     for ax in (ax_pe, ax_ad):
         ax.set_xlim(0, 0.3)
-        ax.set_xlabel(r"$\Delta t/T$")
     ax_pe.set_ylim(-30, 40)
     ax_ad.set_ylim(-2, 60)
     ax_pe.legend(loc="upper left")

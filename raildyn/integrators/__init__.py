@@ -1,8 +1,7 @@
 """Time integration of ``M x'' + C x' + K x = f(t, x, x')`` and the stability and accuracy of each scheme.
 
 Chapter 2 of the companion (numerical methods). Three families, one result type
-(:class:`IntegrationResult`: t, x, v, a, step and iteration counts, success,
-message):
+(:class:`IntegrationResult`: t, x, v, a, step and iteration counts):
 
 * linear systems, direct integration with a constant step: :func:`central_difference`
   (explicit), :func:`houbolt`, :func:`wilson`, :func:`newmark` with the presets
@@ -11,25 +10,52 @@ message):
   precomputed matrix;
 * first-order schemes for nonlinear forces: :func:`forward_euler`, :func:`rk4`,
   :func:`abm` (Adams–Bashforth–Moulton predictor–corrector);
-* implicit nonlinear: :func:`newmark_newton` (Newton–Raphson iterations each step)
-  and :func:`stiff` (scipy's BDF or Radau).
+* implicit nonlinear: :func:`newmark_newton` (Newton–Raphson iterations each step,
+  on the force's tangent, a :class:`ForceJacobian`) and :func:`stiff` (scipy's BDF
+  or Radau).
 
-A run that blows up raises :class:`DivergenceError` naming the step and the
-stability limit of the scheme (or stops with ``success=False`` when asked).
+:func:`integrate` runs any scheme named in ``METHODS``.
+
+Failure policy: every failure (a run that blows up, a Newton iteration that does
+not converge, scipy giving up) raises :class:`raildyn.errors.SolverError` with the
+step, the time and the reason, which names the stability limit of the scheme on
+the system, and holds the completed part of the run as its ``partial``
+:class:`IntegrationResult`. A returned result is a success.
+
 On the test oscillator, :func:`amplification_matrix`, :func:`spectral_radius`,
 :func:`period_elongation`, :func:`amplitude_decay` and :func:`stability_limit`
-describe each scheme named in ``METHODS`` against Δt/T. SI units throughout.
+describe each scheme against Δt/T, and :func:`scheme_accuracy` gathers them into a
+:class:`SchemeAccuracy` that draws the chart; :func:`convergence_study` measures the
+order of accuracy; on a model, :func:`stable_step` gives the largest stable step
+(for the first-order schemes through :func:`first_order_step_limit`) and
+:func:`stiffness_ratio` how stiff the equations are. SI units throughout.
+
+Examples
+--------
+>>> import numpy as np
+>>> from raildyn.errors import SolverError
+>>> t = np.arange(100) * 0.4  # T = 1 s, past the central difference limit T/π
+>>> try:
+...     integrate("central_difference", 1.0, 0.0, (2 * np.pi) ** 2, t, 1.0, 0.0)
+... except SolverError as err:
+...     print(err.partial.t.size == err.step, "stable only for dt <= T_min/pi" in str(err))
+True True
 """
 
-from raildyn.integrators._common import DivergenceError, IntegrationResult
+from raildyn.integrators._common import Deviation, ForceJacobian, IntegrationResult, Maxima
 from raildyn.integrators.analysis import (
-    METHODS,
-    PARAMETERS,
+    ConvergenceStudy,
+    SchemeAccuracy,
     amplification_matrix,
     amplitude_decay,
+    convergence_study,
+    first_order_step_limit,
     period_elongation,
+    scheme_accuracy,
     spectral_radius,
     stability_limit,
+    stable_step,
+    stiffness_ratio,
 )
 from raildyn.integrators.linear import (
     average_acceleration,
@@ -41,49 +67,24 @@ from raildyn.integrators.linear import (
     wilson,
 )
 from raildyn.integrators.nonlinear import abm, forward_euler, newmark_newton, rk4, stiff
-
-_BY_NAME = {
-    "central_difference": central_difference,
-    "houbolt": houbolt,
-    "wilson": wilson,
-    "newmark": newmark,
-    "average_acceleration": average_acceleration,
-    "linear_acceleration": linear_acceleration,
-    "hht_alpha": hht_alpha,
-    "forward_euler": forward_euler,
-    "rk4": rk4,
-    "abm": abm,
-}
-
-
-def integrate(method: str, M, C, K, t, x0, v0, force=None, **params) -> IntegrationResult:
-    """Run the scheme named ``method`` (one of ``METHODS``) with its parameters.
-
-    ``force`` follows the scheme: f(t) (sampled array or ``force(t)``) for the
-    linear schemes, f(t, x, v) for the first-order ones. See each function.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> r = integrate("wilson", 1.0, 0.0, 1.0, np.linspace(0, 1, 11), 1.0, 0.0, theta=1.4)
-    >>> r.method, r.steps, r.success
-    ('wilson', 10, True)
-    """
-    if method not in _BY_NAME:
-        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
-    return _BY_NAME[method](M, C, K, t, x0, v0, force, **params)
-
+from raildyn.integrators.schemes import METHODS, PARAMETERS, integrate
 
 __all__ = [
     "METHODS",
     "PARAMETERS",
-    "DivergenceError",
+    "ConvergenceStudy",
+    "Deviation",
+    "ForceJacobian",
     "IntegrationResult",
+    "Maxima",
+    "SchemeAccuracy",
     "abm",
     "amplification_matrix",
     "amplitude_decay",
     "average_acceleration",
     "central_difference",
+    "convergence_study",
+    "first_order_step_limit",
     "forward_euler",
     "hht_alpha",
     "houbolt",
@@ -93,8 +94,11 @@ __all__ = [
     "newmark_newton",
     "period_elongation",
     "rk4",
+    "scheme_accuracy",
     "spectral_radius",
     "stability_limit",
+    "stable_step",
     "stiff",
+    "stiffness_ratio",
     "wilson",
 ]

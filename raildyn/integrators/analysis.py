@@ -11,41 +11,36 @@ T = 1 s, so ω = 2π rad/s and Δt = Δt/T.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import lru_cache
 from math import factorial
 
+import matplotlib
 import numpy as np
 
-from raildyn._checks import array, scalar
+from raildyn import plots
+from raildyn._checks import array, integer, scalar, square_matrix
 from raildyn.integrators import linear
+from raildyn.integrators._common import highest_frequency
+from raildyn.integrators.schemes import FIRST_ORDER, METHODS, PARAMETERS, integrate
+from raildyn.vibration import SDOF, first_order_matrix
 
-# Every scheme the analysis knows, by name; the same names select the integrators.
-METHODS = (
-    "central_difference",
-    "houbolt",
-    "wilson",
-    "newmark",
-    "average_acceleration",
-    "linear_acceleration",
-    "hht_alpha",
-    "forward_euler",
-    "rk4",
-    "abm",
-)
-
-# The parameters each scheme accepts, with their defaults.
-PARAMETERS = {
-    "central_difference": {},
-    "houbolt": {},
-    "wilson": {"theta": 1.4},
-    "newmark": {"gamma": 0.5, "beta": 0.25},
-    "average_acceleration": {},
-    "linear_acceleration": {},
-    "hht_alpha": {"alpha": -0.05},
-    "forward_euler": {},
-    "rk4": {},
-    "abm": {},
-}
+__all__ = [
+    "METHODS",
+    "PARAMETERS",
+    "ConvergenceStudy",
+    "SchemeAccuracy",
+    "amplification_matrix",
+    "amplitude_decay",
+    "convergence_study",
+    "first_order_step_limit",
+    "period_elongation",
+    "scheme_accuracy",
+    "spectral_radius",
+    "stability_limit",
+    "stable_step",
+    "stiffness_ratio",
+]
 
 
 def _parameters(method: str, params: dict) -> dict:
@@ -89,11 +84,11 @@ def _matrices(method: str, h: np.ndarray, xi: float, params: dict) -> np.ndarray
     M, C, K = np.eye(1), np.array([[2 * xi * w]]), np.array([[w * w]])
     h = h[:, None, None]
     if method == "central_difference":
-        return linear.recursion_matrices(linear.central_difference_step(M, C, K, h), 2, 1)[0]
+        return linear.recursion_matrices(linear.central_difference_step(M, C, K, h), 2, 1).A
     if method == "houbolt":
-        return linear.recursion_matrices(linear.houbolt_step(M, C, K, h), 3, 1)[0]
+        return linear.recursion_matrices(linear.houbolt_step(M, C, K, h), 3, 1).A
     if method == "wilson":
-        return linear.recursion_matrices(linear.wilson_step(M, C, K, h, params["theta"]), 3, 1)[0]
+        return linear.recursion_matrices(linear.wilson_step(M, C, K, h, params["theta"]), 3, 1).A
     if method in ("newmark", "average_acceleration", "linear_acceleration", "hht_alpha"):
         alpha = params.get("alpha", 0.0)
         gamma, beta = {
@@ -102,8 +97,8 @@ def _matrices(method: str, h: np.ndarray, xi: float, params: dict) -> np.ndarray
             "linear_acceleration": (0.5, 1 / 6),
             "hht_alpha": (0.5 - alpha, (1 - alpha) ** 2 / 4),
         }[method]
-        return linear.recursion_matrices(linear.newmark_step(M, C, K, h, gamma, beta, alpha), 3, 1)[0]
-    hJ = h * np.array([[0.0, 1.0], [-w * w, -2 * xi * w]])
+        return linear.recursion_matrices(linear.newmark_step(M, C, K, h, gamma, beta, alpha), 3, 1).A
+    hJ = h * first_order_matrix(M, C, K)  # Δt J, J = [[0, 1], [−ω², −2ξω]]
     if method == "forward_euler":
         return np.eye(2) + hJ
     if method == "rk4":
@@ -147,7 +142,29 @@ def amplification_matrix(method: str, dt_over_T, damping_ratio: float = 0.0, **p
 
 
 def spectral_radius(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
-    """ρ(A) = max |λ(A)|: the scheme is stable while ρ <= 1 (float, or array like ``dt_over_T``)."""
+    """ρ(A) = max |λ(A)| of the amplification matrix: the scheme is stable while ρ <= 1.
+
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    dt_over_T : float or array_like
+        Step over the undamped natural period, > 0.
+    damping_ratio : float
+        ξ of the oscillator, in [0, 1).
+    **params
+        The scheme's parameters (see :func:`amplification_matrix`).
+
+    Returns
+    -------
+    float or ndarray
+        ρ (dimensionless), shaped like ``dt_over_T``.
+
+    Examples
+    --------
+    >>> round(float(spectral_radius("hht_alpha", 1e5, alpha=-0.1)), 4)  # (1 + α)/(1 − α)
+    0.8182
+    """
     mats = amplification_matrix(method, dt_over_T, damping_ratio, **params)
     return np.abs(np.linalg.eigvals(mats)).max(axis=-1)
 
@@ -179,6 +196,29 @@ def period_elongation(method: str, dt_over_T, damping_ratio: float = 0.0, **para
 
     T̄ = 2πΔt/arg λ from the principal eigenvalue λ; T_d is the exact damped period.
     Positive means the computed motion is too slow (Bathe's "PE", as a fraction, not %).
+
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    dt_over_T : float or array_like
+        Step over the undamped natural period, > 0.
+    damping_ratio : float
+        ξ of the oscillator, in [0, 1).
+    **params
+        The scheme's parameters (see :func:`amplification_matrix`).
+
+    Returns
+    -------
+    float or ndarray
+        The period elongation as a fraction, shaped like ``dt_over_T``.
+
+    Examples
+    --------
+    >>> w = 2 * np.pi * 0.1  # average acceleration: ω̄Δt = 2 arctan(ωΔt/2)
+    >>> closed_form = float(w / (2 * np.arctan(w / 2)) - 1)
+    >>> round(period_elongation("average_acceleration", 0.1), 8), round(closed_form, 8)
+    (0.03207491, 0.03207491)
     """
     lam, ratios = _principal(method, dt_over_T, damping_ratio, params)
     xi = damping_ratio
@@ -194,6 +234,22 @@ def amplitude_decay(method: str, dt_over_T, damping_ratio: float = 0.0, **params
 
     The computed amplitude shrinks by |λ| a step over T_d/Δt steps; the exact one by
     exp(−ξωT_d). Zero for a scheme with no numerical damping; negative if it grows.
+
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    dt_over_T : float or array_like
+        Step over the undamped natural period, > 0.
+    damping_ratio : float
+        ξ of the oscillator, in [0, 1).
+    **params
+        The scheme's parameters (see :func:`amplification_matrix`).
+
+    Returns
+    -------
+    float or ndarray
+        The amplitude decay per period as a fraction, shaped like ``dt_over_T``.
     """
     lam, ratios = _principal(method, dt_over_T, damping_ratio, params)
     xi = damping_ratio
@@ -229,6 +285,21 @@ def stability_limit(method: str, damping_ratio: float = 0.0, **params) -> float:
     forms rather than quoting them: 1/π for the central difference, √3/π for linear
     acceleration, √2/π for RK4 on an undamped oscillator.
 
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    damping_ratio : float
+        ξ of the oscillator, in [0, 1).
+    **params
+        The scheme's parameters (see :func:`amplification_matrix`).
+
+    Returns
+    -------
+    float
+        The limit on Δt/T (dimensionless): inf if the scheme is unconditionally stable,
+        0 if no step is.
+
     Examples
     --------
     >>> round(stability_limit("central_difference") * np.pi, 9)
@@ -256,6 +327,23 @@ def first_order_step_limit(method: str, eigenvalue: complex) -> float:
     first-order system, not by the undamped periods: a heavily damped real λ (a creep
     or friction time constant) can bind first. 0 when no step is stable (an undamped
     mode under forward Euler, or Re λ > 0, a mode that grows anyway).
+
+    Parameters
+    ----------
+    method : {"forward_euler", "rk4", "abm"}
+        A first-order scheme.
+    eigenvalue : complex
+        λ of the mode, 1/s.
+
+    Returns
+    -------
+    float
+        The largest stable Δt, s (inf for λ = 0).
+
+    Examples
+    --------
+    >>> round(first_order_step_limit("forward_euler", -100.0), 9)  # |1 + Δtλ| <= 1: Δt <= 2/|λ|
+    0.02
     """
     if method not in ("forward_euler", "rk4", "abm"):
         raise ValueError(f"method must be a first-order scheme (forward_euler, rk4, abm), got {method!r}")
@@ -278,3 +366,335 @@ def first_order_step_limit(method: str, eigenvalue: complex) -> float:
         else:
             lo = mid
     return float(lo)
+
+
+# ---------------------------------------------------------------------------
+# A model's step limit and stiffness
+
+
+def stable_step(method: str, M, C, K, **params) -> float:
+    """The largest stable time step of ``method`` on the model ``M x'' + C x' + K x = 0``, s.
+
+    For the schemes on (x, v, a) and the multistep displacement schemes the limit is
+    :func:`stability_limit` times T_min = 2π/ω_max, the period of the highest undamped
+    mode (viscous damping does not lower the central difference limit). For the
+    first-order schemes (forward Euler, RK4, ABM) it is set by the eigenvalues of
+    the first-order system (:func:`raildyn.vibration.first_order_matrix`), so that a
+    heavily damped mode, such as a creep time constant, can bind first
+    (:func:`first_order_step_limit`).
+
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    **params
+        The scheme's parameters (see :func:`amplification_matrix`).
+
+    Returns
+    -------
+    float
+        Δt_max, s: inf if no step is too long, 0 if none is stable.
+
+    Examples
+    --------
+    >>> round(stable_step("central_difference", 1.0, 0.0, 1.0e6), 9)  # 2/ω_max, ω_max = 1000 rad/s
+    0.002
+    >>> round(stable_step("rk4", 1.0, 2000.0, 1.0) * 1e3, 4)  # the creep-like mode λ = −2000 1/s binds
+    1.3926
+    """
+    chosen = _parameters(method, params)
+    M = square_matrix("M", M, positive_definite=True)
+    C = square_matrix("C", C, size=M.shape[0], symmetric=False)
+    K = square_matrix("K", K, size=M.shape[0], symmetric=False)
+    if method in FIRST_ORDER:
+        lam = np.linalg.eigvals(first_order_matrix(M, C, K))
+        return float(min(first_order_step_limit(method, z) for z in lam))
+    ratio = stability_limit(method, **chosen)
+    wmax = highest_frequency(M, K)
+    if np.isinf(ratio) or wmax == 0.0:
+        return np.inf
+    return float(ratio * 2 * np.pi / wmax)
+
+
+def stiffness_ratio(M, C, K) -> float:
+    """|λ|max / |λ|min over the eigenvalues of the first-order system: how stiff the equations are.
+
+    A ratio of thousands means motions on very different time scales: an explicit
+    scheme must follow the fastest, an implicit one may step over it {Hairer & Wanner 1996}.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+
+    Returns
+    -------
+    float
+        The ratio (dimensionless); inf if a mode has λ = 0 (a rigid-body mode).
+
+    Examples
+    --------
+    >>> round(stiffness_ratio(1.0, 1001.0, 1000.0), 6)  # λ = −1 and −1000 1/s
+    1000.0
+    """
+    M = square_matrix("M", M, positive_definite=True)
+    C = square_matrix("C", C, size=M.shape[0], symmetric=False)
+    K = square_matrix("K", K, size=M.shape[0], symmetric=False)
+    size = np.abs(np.linalg.eigvals(first_order_matrix(M, C, K)))
+    return float(size.max() / size.min()) if size.min() > 0 else np.inf
+
+
+# ---------------------------------------------------------------------------
+# The accuracy chart of a scheme, as one result with its drawings
+
+# ρ above this is not drawn (the charts stop at ρ = 1.6); amplitude decays are drawn within ±1000 %.
+_RHO_SHOWN = 2.0
+_AD_SHOWN = 1.0e3
+
+
+@dataclass(frozen=True)
+class SchemeAccuracy:
+    """Spectral radius, period elongation and amplitude decay of one scheme against Δt/T.
+
+    Attributes
+    ----------
+    method : str
+        The scheme, one of ``METHODS``.
+    parameters : dict
+        Its parameters, defaults filled in.
+    damping_ratio : float
+        ξ of the test oscillator.
+    dt_over_T : ndarray, shape (k,)
+        Steps over the undamped period.
+    spectral_radius : ndarray, shape (k,)
+        ρ(A), dimensionless.
+    period_elongation_fraction : ndarray, shape (k,)
+        (T̄ − T_d)/T_d as a fraction (NaN where the computed motion does not oscillate).
+    amplitude_decay_fraction : ndarray, shape (k,)
+        Amplitude lost per period beyond the physical decay, as a fraction.
+    stability_limit_dt_over_T : float
+        Largest stable Δt/T (inf: unconditionally stable; 0: never stable).
+    """
+
+    method: str
+    parameters: dict
+    damping_ratio: float
+    dt_over_T: np.ndarray
+    spectral_radius: np.ndarray
+    period_elongation_fraction: np.ndarray
+    amplitude_decay_fraction: np.ndarray
+    stability_limit_dt_over_T: float
+
+    def _draw(self, ax, artists, y, ylabel, style) -> dict:
+        if artists is not None:
+            artists["line"].set_data(self.dt_over_T, y)
+            return artists
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            (line,) = ax.plot(self.dt_over_T, y, **style)
+            ax.set_xlabel(r"$\Delta t/T$")
+            ax.set_ylabel(ylabel)
+        return {"line": line}
+
+    def plot_spectral_radius(self, ax=None, *, artists=None, **style) -> dict:
+        """Draw ρ(A) against Δt/T (values above 2 left out); return the artists.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Where to draw (new axes on a new figure if None). Set a log scale on it for a
+            wide range of steps.
+        artists : dict, optional
+            The artists of an earlier call: their data are replaced in place (a widget's
+            update) and nothing new is drawn.
+        **style
+            Passed to ``Axes.plot`` (``label``, ``color``...).
+
+        Returns
+        -------
+        dict
+            ``{"line": Line2D}``.
+        """
+        y = np.where(self.spectral_radius < _RHO_SHOWN, self.spectral_radius, np.nan)
+        return self._draw(ax, artists, y, r"spectral radius $\rho(A)$", style)
+
+    def plot_period_elongation(self, ax=None, *, artists=None, **style) -> dict:
+        """Draw the period elongation in % against Δt/T; return the artists.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Where to draw (new axes on a new figure if None).
+        artists : dict, optional
+            The artists of an earlier call, updated in place.
+        **style
+            Passed to ``Axes.plot``.
+
+        Returns
+        -------
+        dict
+            ``{"line": Line2D}``.
+        """
+        return self._draw(ax, artists, 100 * self.period_elongation_fraction, "period elongation (%)", style)
+
+    def plot_amplitude_decay(self, ax=None, *, artists=None, **style) -> dict:
+        """Draw the amplitude decay per period in % against Δt/T (within ±1000 %); return the artists.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Where to draw (new axes on a new figure if None).
+        artists : dict, optional
+            The artists of an earlier call, updated in place.
+        **style
+            Passed to ``Axes.plot``.
+
+        Returns
+        -------
+        dict
+            ``{"line": Line2D}``.
+        """
+        y = np.clip(100 * self.amplitude_decay_fraction, -_AD_SHOWN, _AD_SHOWN)
+        return self._draw(ax, artists, y, "amplitude decay per period (%)", style)
+
+
+def scheme_accuracy(method: str, dt_over_T, damping_ratio: float = 0.0, **params) -> SchemeAccuracy:
+    """The accuracy chart of a scheme on the test oscillator: ρ, period elongation and amplitude decay.
+
+    Bathe's Figs. 9.2–9.3 {Bathe 1996} for one scheme, from its amplification matrix
+    (:func:`spectral_radius`, :func:`period_elongation`, :func:`amplitude_decay`,
+    :func:`stability_limit`).
+
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    dt_over_T : array_like, shape (k,)
+        Steps over the undamped natural period, > 0.
+    damping_ratio : float
+        ξ of the oscillator, in [0, 1).
+    **params
+        The scheme's parameters (see :func:`amplification_matrix`).
+
+    Returns
+    -------
+    SchemeAccuracy
+
+    Examples
+    --------
+    >>> chart = scheme_accuracy("central_difference", [0.1, 0.3, 0.4])
+    >>> chart.spectral_radius.round(6).tolist(), round(chart.stability_limit_dt_over_T * np.pi, 9)
+    ([1.0, 1.0, 4.070901], 1.0)
+    """
+    chosen = _parameters(method, params)
+    xi = scalar("damping_ratio", damping_ratio, low=0.0, high=1.0, high_open=True)
+    ratios = array(
+        "dt_over_T", np.atleast_1d(np.asarray(dt_over_T, dtype=float)), ndim=1, low=0.0, low_open=True
+    )
+    return SchemeAccuracy(
+        method,
+        chosen,
+        xi,
+        ratios,
+        np.atleast_1d(spectral_radius(method, ratios, xi, **chosen)),
+        np.atleast_1d(period_elongation(method, ratios, xi, **chosen)),
+        np.atleast_1d(amplitude_decay(method, ratios, xi, **chosen)),
+        stability_limit(method, xi, **chosen),
+    )
+
+
+# ---------------------------------------------------------------------------
+# Order of convergence, measured on the damped oscillator under a constant force
+
+_STUDY_PERIOD = 1.0  # s: T of the oscillator
+_STUDY_DAMPING = 0.05  # ξ
+_STUDY_FORCE = 10.0  # N on the 1 kg mass
+_STUDY_START = (1.0, 2.0)  # x0 (m), v0 (m/s)
+
+
+@dataclass(frozen=True)
+class ConvergenceStudy:
+    """The error of a scheme at several steps on a problem with an exact answer, and the order it shows.
+
+    Attributes
+    ----------
+    method : str
+        The scheme.
+    parameters : dict
+        Its parameters, defaults filled in.
+    step_counts : ndarray of int, shape (k,)
+        Steps over the run.
+    dt_over_T : ndarray, shape (k,)
+        The steps over the oscillator's period.
+    max_error_m : ndarray, shape (k,)
+        Largest |x − x_exact| over the run, m.
+    orders : ndarray, shape (k − 1,)
+        log₂ of successive error ratios over log₂ of the step ratios: the measured order.
+    """
+
+    method: str
+    parameters: dict
+    step_counts: np.ndarray
+    dt_over_T: np.ndarray
+    max_error_m: np.ndarray
+    orders: np.ndarray
+
+
+def convergence_study(
+    method: str, step_counts=(200, 400, 800), duration: float = 2.0, **params
+) -> ConvergenceStudy:
+    """Measure a scheme's order of accuracy against the exact response of a damped oscillator.
+
+    The oscillator has m = 1 kg, T = 1 s and ξ = 0.05, starts from x₀ = 1 m,
+    v₀ = 2 m/s and carries a constant 10 N force, which every scheme samples exactly,
+    so the error against :meth:`raildyn.vibration.SDOF.forced_response` (exact for
+    it) is the scheme's alone. A scheme of order p has a global error ∝ Δt^p, so
+    the measured order is log(e₁/e₂)/log(Δt₁/Δt₂).
+
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    step_counts : sequence of int
+        Steps over the run, at least two, each >= 4, in increasing order.
+    duration : float
+        Length of the run, s (> 0).
+    **params
+        The scheme's parameters (see :func:`amplification_matrix`).
+
+    Returns
+    -------
+    ConvergenceStudy
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        If a run blows up (a step beyond the scheme's stability limit).
+
+    Examples
+    --------
+    >>> study = convergence_study("rk4", (400, 800))
+    >>> round(float(study.orders[0]), 1)
+    4.0
+    """
+    chosen = _parameters(method, params)
+    counts = [integer("step_counts", k, low=4) for k in np.atleast_1d(np.asarray(step_counts)).tolist()]
+    if len(counts) < 2 or any(b <= a for a, b in zip(counts, counts[1:], strict=False)):
+        raise ValueError(f"step_counts must hold at least two increasing counts, got {step_counts!r}")
+    duration = scalar("duration", duration, low=0.0, low_open=True)
+    system = SDOF.from_modal(2 * np.pi / _STUDY_PERIOD, _STUDY_DAMPING)
+    x0, v0 = _STUDY_START
+    errors = []
+    for steps in counts:
+        t = np.linspace(0.0, duration, steps + 1)
+        load = np.full(t.size, _STUDY_FORCE)
+        exact = system.forced_response(t, load, x0=x0, v0=v0)
+        force = (lambda tk, x, v: np.array([_STUDY_FORCE])) if method in FIRST_ORDER else load
+        run = integrate(method, system.mass, system.damping, system.stiffness, t, x0, v0, force, **chosen)
+        errors.append(np.abs(run.x[0] - exact).max())
+    errors = np.array(errors)
+    steps = np.array(counts)
+    orders = np.log(errors[:-1] / errors[1:]) / np.log(steps[1:] / steps[:-1])
+    return ConvergenceStudy(method, chosen, steps, duration / steps / _STUDY_PERIOD, errors, orders)

@@ -16,6 +16,7 @@ the whole history: the same answer to rounding, with O(n) work a step.
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg
@@ -26,13 +27,30 @@ from raildyn._checks import scalar
 from raildyn.integrators._common import (
     IntegrationResult,
     Problem,
-    check_on_divergence,
-    divergence,
+    completed,
+    diverged,
     equilibrium_acceleration,
     problem,
     sampled_load,
     scale,
 )
+from raildyn.vibration import first_order_matrix
+
+__all__ = [
+    "RecursionMatrices",
+    "average_acceleration",
+    "central_difference",
+    "central_difference_step",
+    "hht_alpha",
+    "houbolt",
+    "houbolt_step",
+    "linear_acceleration",
+    "newmark",
+    "newmark_step",
+    "recursion_matrices",
+    "wilson",
+    "wilson_step",
+]
 
 # How often (in steps) the recursion looks for a blow-up: often enough that a state growing even
 # a hundredfold a step is caught long before it overflows, rarely enough to cost nothing.
@@ -71,6 +89,24 @@ def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
     HHT-α {Hilber, Hughes & Taylor 1977} weighs the elastic, damping and applied
     forces between t and t + Δt: M a₊ + (1+α)(C v₊ + K x₊ − f₊) − α(C v + K x − f) = 0,
     with Newmark's updates x₊ = x + Δt v + Δt²[(½−β) a + β a₊], v₊ = v + Δt[(1−γ) a + γ a₊].
+
+    Parameters
+    ----------
+    M, C, K : ndarray, shape (n, n) or (k, n, n)
+        Mass (kg), damping (N·s/m) and stiffness (N/m), already checked; a leading batch
+        axis runs k systems at once (the test oscillator at k steps, for the analysis).
+    h : float or ndarray, shape (k, 1, 1)
+        Time step, s.
+    gamma, beta : float
+        Newmark's parameters.
+    alpha : float
+        The HHT weight, in [−⅓, 0]; 0 for Newmark.
+
+    Returns
+    -------
+    callable
+        ``step(Z, F0, F1) -> Z₊`` on column blocks: states Z (s, c), loads F0 = f(t) and
+        F1 = f(t + Δt) (n, c), in N.
     """
     n = M.shape[-1]
     solve = _solver(M + (1 + alpha) * (gamma * h * C + beta * h * h * K))
@@ -88,7 +124,24 @@ def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
 
 
 def wilson_step(M, C, K, h, theta) -> Step:
-    """Wilson-θ on (x, v, a): linear acceleration over τ = θΔt, equilibrium at t + τ {Bathe 1996, Tab 9.2}."""
+    """Wilson-θ on (x, v, a): linear acceleration over τ = θΔt, equilibrium at t + τ {Bathe 1996, Tab 9.2}.
+
+    Parameters
+    ----------
+    M, C, K : ndarray, shape (n, n) or (k, n, n)
+        Mass (kg), damping (N·s/m) and stiffness (N/m), already checked; a leading batch
+        axis runs k systems at once (the test oscillator at k steps, for the analysis).
+    h : float or ndarray, shape (k, 1, 1)
+        Time step, s.
+    theta : float
+        Wilson's θ (τ = θΔt).
+
+    Returns
+    -------
+    callable
+        ``step(Z, F0, F1) -> Z₊`` on column blocks: states Z (s, c), loads F0 = f(t) and
+        F1 = f(t + Δt) (n, c), in N.
+    """
     n = M.shape[-1]
     tau = theta * h
     a0, a1 = 6 / tau**2, 3 / tau
@@ -110,7 +163,22 @@ def wilson_step(M, C, K, h, theta) -> Step:
 
 
 def central_difference_step(M, C, K, h) -> Step:
-    """Central difference on (x_n, x_{n−1}); equilibrium at t_n {Bathe 1996, Table 9.1}."""
+    """Central difference on (x_n, x_{n−1}); equilibrium at t_n {Bathe 1996, Table 9.1}.
+
+    Parameters
+    ----------
+    M, C, K : ndarray, shape (n, n) or (k, n, n)
+        Mass (kg), damping (N·s/m) and stiffness (N/m), already checked; a leading batch
+        axis runs k systems at once (the test oscillator at k steps, for the analysis).
+    h : float or ndarray, shape (k, 1, 1)
+        Time step, s.
+
+    Returns
+    -------
+    callable
+        ``step(Z, F0, F1) -> Z₊`` on column blocks: states Z (s, c), loads F0 = f(t) and
+        F1 = f(t + Δt) (n, c), in N.
+    """
     n = M.shape[-1]
     solve = _solver(M / h**2 + C / (2 * h))
     stiff = K - 2 * M / h**2
@@ -124,7 +192,22 @@ def central_difference_step(M, C, K, h) -> Step:
 
 
 def houbolt_step(M, C, K, h) -> Step:
-    """Houbolt on (x_n, x_{n−1}, x_{n−2}): backward differences, equilibrium at t_{n+1} {Houbolt 1950}."""
+    """Houbolt on (x_n, x_{n−1}, x_{n−2}): backward differences, equilibrium at t_{n+1} {Houbolt 1950}.
+
+    Parameters
+    ----------
+    M, C, K : ndarray, shape (n, n) or (k, n, n)
+        Mass (kg), damping (N·s/m) and stiffness (N/m), already checked; a leading batch
+        axis runs k systems at once (the test oscillator at k steps, for the analysis).
+    h : float or ndarray, shape (k, 1, 1)
+        Time step, s.
+
+    Returns
+    -------
+    callable
+        ``step(Z, F0, F1) -> Z₊`` on column blocks: states Z (s, c), loads F0 = f(t) and
+        F1 = f(t + Δt) (n, c), in N.
+    """
     n = M.shape[-1]
     a0, a1, a2, a3 = 2 / h**2, 11 / (6 * h), 5 / h**2, 3 / h
     a4, a5, a6, a7 = -2 * a0, -a3 / 2, a0 / 2, a3 / 9
@@ -138,14 +221,53 @@ def houbolt_step(M, C, K, h) -> Step:
     return step
 
 
-def recursion_matrices(step: Step, size: int, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """A, B₀, B₁ of a linear step, found by applying it to identity blocks."""
+@dataclass(frozen=True)
+class RecursionMatrices:
+    """The matrices of a linear step z₊ = A z + B₀ f(t) + B₁ f(t + Δt).
+
+    Attributes
+    ----------
+    A : ndarray, shape (s, s) or (k, s, s)
+        The amplification matrix (dimensionless in consistent units of the state).
+    B0, B1 : ndarray, shape (s, n) or (k, s, n)
+        The response of the state to a unit load at the start and at the end of the step,
+        in the state's units per N.
+    """
+
+    A: np.ndarray
+    B0: np.ndarray
+    B1: np.ndarray
+
+
+def recursion_matrices(step: Step, size: int, n: int) -> RecursionMatrices:
+    """A, B₀, B₁ of a linear step, found by applying it to identity blocks.
+
+    Parameters
+    ----------
+    step : callable
+        A step from :func:`newmark_step`, :func:`wilson_step`, :func:`central_difference_step`
+        or :func:`houbolt_step`.
+    size : int
+        Length s of the scheme's state (2n or 3n).
+    n : int
+        Degrees of freedom.
+
+    Returns
+    -------
+    RecursionMatrices
+
+    Examples
+    --------
+    >>> step = central_difference_step(np.eye(1), np.zeros((1, 1)), np.eye(1), 0.1)
+    >>> recursion_matrices(step, 2, 1).A.round(6).tolist()  # [[2 − ω²Δt², −1], [1, 0]]
+    [[1.99, -1.0], [1.0, 0.0]]
+    """
     eye, zs, zn = np.eye(size), np.zeros((n, size)), np.zeros((size, n))
     zf = np.zeros((n, n))
     A = step(eye, zs, zs)
     B0 = step(zn, np.eye(n), zf)
     B1 = step(zn, zf, np.eye(n))
-    return A, B0, B1
+    return RecursionMatrices(A, B0, B1)
 
 
 def _recur(A, B0, B1, z0, load, steps: int, bound: float):
@@ -297,22 +419,16 @@ def _modal_two_step(p: Problem, load, gamma, beta, modes, bound):
     return X[:done], (phi @ Qd[:, :done]).T, (phi @ Qdd[:, :done]).T, bad
 
 
-def _finish(name, p: Problem, x, v, a, bad, on_divergence, limit_params, iterations=0) -> IntegrationResult:
-    """Package the rows (m, n) into the result, or raise / stop on a blow-up."""
+def _finish(name, p: Problem, x, v, a, bad, limit_params) -> IntegrationResult:
+    """Package the rows (m, n) into the result, or raise SolverError (holding the completed part)."""
     if bad is not None:
-        err = divergence(name, p, bad, limit_params)
-        if on_divergence == "raise":
-            raise err
-        m = min(len(x), len(v), len(a))
-        return IntegrationResult(
-            p.t[:m], x[:m].T, v[:m].T, a[:m].T, name, max(m - 1, 0), iterations, False, str(err)
-        )
-    m = p.t.size
-    return IntegrationResult(p.t, x[:m].T, v[:m].T, a[:m].T, name, m - 1, iterations, True, "completed")
+        raise diverged(name, p, bad, x, v, a, limit_params)
+    return completed(name, p, x, v, a)
 
 
 # ---------------------------------------------------------------------------
-# Public integrators
+# Public integrators. Each raises raildyn.errors.SolverError, naming the scheme's stability limit and
+# holding the completed part of the run as ``partial``, if the run blows up.
 
 
 def _check_newmark(gamma, beta):
@@ -321,9 +437,7 @@ def _check_newmark(gamma, beta):
     return gamma, beta
 
 
-def newmark(
-    M, C, K, t, x0, v0, force=None, *, gamma=0.5, beta=0.25, on_divergence="raise"
-) -> IntegrationResult:
+def newmark(M, C, K, t, x0, v0, force=None, *, gamma=0.5, beta=0.25) -> IntegrationResult:
     """Newmark-β integration of ``M x'' + C x' + K x = f(t)`` {Newmark 1959}.
 
     Δt is the spacing of ``t``. γ = ½, β = ¼ is the average (constant) acceleration
@@ -343,12 +457,16 @@ def newmark(
         f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
     gamma, beta : float
         Newmark's parameters, γ in [½, 1.5], β in [0, 1].
-    on_divergence : {"raise", "stop"}
-        Raise :class:`DivergenceError`, or return the completed part with ``success=False``.
 
     Returns
     -------
     IntegrationResult
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        If the run blows up: the message names the step, the time and the stability
+        limit; ``partial`` holds the steps completed before.
 
     Examples
     --------
@@ -358,12 +476,11 @@ def newmark(
     1.0
     """
     gamma, beta = _check_newmark(gamma, beta)
-    return _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, 0.0, "newmark", on_divergence)
+    return _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, 0.0, "newmark")
 
 
-def _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, name, on_divergence) -> IntegrationResult:
+def _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, name) -> IntegrationResult:
     """Newmark (α = 0) or HHT-α with checked parameters; the public functions below name the preset."""
-    on_divergence = check_on_divergence(on_divergence)
     p = problem(M, C, K, t, x0, v0)
     load = sampled_load(force, p)
     n, h = p.n, p.h
@@ -373,19 +490,19 @@ def _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, name, on_dive
     modes = _classical_modes(p) if alpha == 0.0 and gamma == 2 * beta and p.t.size > 2 else None
     if modes is not None:
         x, v, a, bad = _modal_two_step(p, load, gamma, beta, modes, bound)
-        return _finish(name, p, x, v, a, bad, on_divergence, params)
-    step = newmark_step(p.M, p.C, p.K, h, gamma, beta, alpha)
-    A, B0, B1 = recursion_matrices(step, 3 * n, n)
+        return _finish(name, p, x, v, a, bad, params)
+    rec = recursion_matrices(newmark_step(p.M, p.C, p.K, h, gamma, beta, alpha), 3 * n, n)
+    A, B0, B1 = rec.A, rec.B0, rec.B1
     if alpha == 0.0 and gamma == 2 * beta and p.t.size > 2:
         x, v, bad = _two_step(p, load, gamma, beta, A, B0, B1, a0, bound)
         # a from equilibrium: differencing v instead would lose digits as 1/(ωΔt) for slow modes.
         a = equilibrium_acceleration(p, x, v, None if load is None else load[: len(x)])
     elif alpha == 0.0:
         # Newmark's a₊ satisfies equilibrium at t + Δt, so a is a function of (x, v, f): eliminating it
-        # leaves a recursion on (x, v) alone, two thirds the size.
-        Minv = np.linalg.inv(p.M)
-        E = np.vstack([np.eye(2 * n), -Minv @ np.hstack([p.K, p.C])])
-        D = np.vstack([np.zeros((2 * n, n)), Minv])
+        # leaves a recursion on (x, v) alone, two thirds the size. The lower rows of the first-order
+        # matrix, −M⁻¹[K, C], give a from (x, v).
+        E = np.vstack([np.eye(2 * n), first_order_matrix(p.M, p.C, p.K)[n:]])
+        D = np.vstack([np.zeros((2 * n, n)), np.linalg.inv(p.M)])
         Ar, B0r, B1r = A[: 2 * n] @ E, A[: 2 * n] @ D + B0[: 2 * n], B1[: 2 * n]
         Z, bad = _recur(Ar, B0r, B1r, np.r_[p.x0, p.v0], load, p.t.size - 1, bound)
         x, v = Z[:, :n], Z[:, n:]
@@ -393,83 +510,202 @@ def _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, name, on_dive
     else:
         Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, bound)
         x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
-    return _finish(name, p, x, v, a, bad, on_divergence, params)
+    return _finish(name, p, x, v, a, bad, params)
 
 
-def average_acceleration(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
-    """Newmark's average acceleration (trapezoidal) method, γ = ½, β = ¼; see :func:`newmark`."""
-    return _newmark_family(M, C, K, t, x0, v0, force, 0.5, 0.25, 0.0, "average_acceleration", on_divergence)
+def average_acceleration(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
+    """Newmark's average acceleration (trapezoidal) method, γ = ½, β = ¼.
+
+    Unconditionally stable, second order, with no numerical damping: the spectral
+    radius is 1 at every step {Bathe 1996, §9.4}. A classically damped system
+    (ΦᵀCΦ diagonal) runs mode by mode; see :func:`newmark`.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like, shape (n,), or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
+
+    Returns
+    -------
+    IntegrationResult
+
+    Examples
+    --------
+    >>> r = average_acceleration(1.0, 0.0, 1.0, np.linspace(0.0, 10.0, 101), 1.0, 0.0)
+    >>> round(float(0.5 * r.v[0, -1] ** 2 + 0.5 * r.x[0, -1] ** 2), 12)  # energy kept exactly
+    0.5
+    """
+    return _newmark_family(M, C, K, t, x0, v0, force, 0.5, 0.25, 0.0, "average_acceleration")
 
 
-def linear_acceleration(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
-    """Newmark's linear acceleration method, γ = ½, β = 1/6 (stable for ω Δt ≤ 2√3); see :func:`newmark`."""
-    return _newmark_family(M, C, K, t, x0, v0, force, 0.5, 1 / 6, 0.0, "linear_acceleration", on_divergence)
+def linear_acceleration(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
+    """Newmark's linear acceleration method, γ = ½, β = 1/6: stable for ω Δt ≤ 2√3.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like, shape (n,), or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
+
+    Returns
+    -------
+    IntegrationResult
+    """
+    return _newmark_family(M, C, K, t, x0, v0, force, 0.5, 1 / 6, 0.0, "linear_acceleration")
 
 
-def hht_alpha(M, C, K, t, x0, v0, force=None, *, alpha=-0.05, on_divergence="raise") -> IntegrationResult:
+def hht_alpha(M, C, K, t, x0, v0, force=None, *, alpha=-0.05) -> IntegrationResult:
     """HHT-α {Hilber, Hughes & Taylor 1977}: γ = ½ − α, β = (1 − α)²/4, α in [−⅓, 0].
 
     Second order and unconditionally stable, with numerical damping that grows
     with Δt/T up to a spectral radius (1 + α)/(1 − α) at Δt/T → ∞; α = 0 is the
-    average acceleration method. Other arguments as :func:`newmark`.
+    average acceleration method.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like, shape (n,), or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
+    alpha : float
+        α in [−⅓, 0].
+
+    Returns
+    -------
+    IntegrationResult
     """
     alpha = scalar("alpha", alpha, low=-1 / 3, high=0.0)
     gamma, beta = 0.5 - alpha, (1 - alpha) ** 2 / 4
     if alpha == 0.0:
-        return average_acceleration(M, C, K, t, x0, v0, force, on_divergence=on_divergence)
-    return _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, "hht_alpha", on_divergence)
+        return average_acceleration(M, C, K, t, x0, v0, force)
+    return _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, "hht_alpha")
 
 
-def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4, on_divergence="raise") -> IntegrationResult:
+def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4) -> IntegrationResult:
     """Wilson-θ {Wilson, Farhoomand & Bathe 1973}: unconditionally stable for θ ≥ 1.37 {Bathe 1996, §9.4}.
 
-    The force at t + θΔt is extrapolated linearly from its samples at t and t + Δt.
-    ``theta`` in [1, 3]; θ = 1 is the linear acceleration method. Other arguments as :func:`newmark`.
+    The force at t + θΔt is extrapolated linearly from its samples at t and t + Δt;
+    θ = 1 is the linear acceleration method.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like, shape (n,), or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
+    theta : float
+        θ in [1, 3].
+
+    Returns
+    -------
+    IntegrationResult
     """
     theta = scalar("theta", theta, low=1.0, high=3.0)
-    on_divergence = check_on_divergence(on_divergence)
     p = problem(M, C, K, t, x0, v0)
     load = sampled_load(force, p)
     n = p.n
     a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
-    A, B0, B1 = recursion_matrices(wilson_step(p.M, p.C, p.K, p.h, theta), 3 * n, n)
-    Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, scale(p, load))
+    rec = recursion_matrices(wilson_step(p.M, p.C, p.K, p.h, theta), 3 * n, n)
+    Z, bad = _recur(rec.A, rec.B0, rec.B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, scale(p, load))
     x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
-    return _finish("wilson", p, x, v, a, bad, on_divergence, {"theta": theta})
+    return _finish("wilson", p, x, v, a, bad, {"theta": theta})
 
 
-def central_difference(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+def central_difference(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     """The central difference method: explicit, second order, stable for Δt ≤ T_min/π {Bathe 1996, §9.2.1}.
 
     It starts from the fictitious x(−Δt) = x₀ − Δt v₀ + ½Δt² a₀, and takes one
     step past the grid so that v and a at the last time use the same centred
-    differences as the rest. Other arguments as :func:`newmark`.
+    differences as the rest.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like, shape (n,), or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
+
+    Returns
+    -------
+    IntegrationResult
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        Past the limit the run blows up; the error names the step, the time and the
+        limit T_min/π, and holds the steps completed before as ``partial``.
+
+    Examples
+    --------
+    >>> from raildyn.errors import SolverError
+    >>> t = np.arange(200) * 0.35  # T = 1 s: past T/π = 0.318 s
+    >>> try:
+    ...     central_difference(1.0, 0.0, (2 * np.pi) ** 2, t, 1.0, 0.0)
+    ... except SolverError as err:
+    ...     print(err.step, err.partial.t.size == err.step, "T_min/pi = 0.31831 s" in str(err))
+    21 True True
     """
-    on_divergence = check_on_divergence(on_divergence)
     p = problem(M, C, K, t, x0, v0)
     load = sampled_load(force, p)
     n, h = p.n, p.h
     a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
-    A, B0, B1 = recursion_matrices(central_difference_step(p.M, p.C, p.K, h), 2 * n, n)
+    rec = recursion_matrices(central_difference_step(p.M, p.C, p.K, h), 2 * n, n)
     padded = None if load is None else np.vstack([load, load[-1:]])
     z0 = np.r_[p.x0, p.x0 - h * p.v0 + 0.5 * h * h * a0]
-    Z, bad = _recur(A, B0, B1, z0, padded, p.t.size, scale(p, load))
+    Z, bad = _recur(rec.A, rec.B0, rec.B1, z0, padded, p.t.size, scale(p, load))
     x_next, x, x_prev = Z[1:, :n], Z[:-1, :n], Z[:-1, n:]
     v = (x_next - x_prev) / (2 * h)
     a = (x_next - 2 * x + x_prev) / h**2
     if bad is not None:
         bad = max(bad - 1, 0)
-    return _finish("central_difference", p, x, v, a, bad, on_divergence, {})
+    return _finish("central_difference", p, x, v, a, bad, {})
 
 
-def houbolt(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+def houbolt(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     """Houbolt's method {Houbolt 1950}: third-order backward differences, unconditionally stable.
 
     A three-step method: the first two steps are taken with the average
     acceleration method (also second order), as Houbolt's own start needs
-    values before t₀. Other arguments as :func:`newmark`.
+    values before t₀.
+
+    Parameters
+    ----------
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like, shape (n,), or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
+
+    Returns
+    -------
+    IntegrationResult
     """
-    on_divergence = check_on_divergence(on_divergence)
     p = problem(M, C, K, t, x0, v0)
     load = sampled_load(force, p)
     n, h, m = p.n, p.h, p.t.size
@@ -477,10 +713,10 @@ def houbolt(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> Integra
         p.M, p.C, p.K, p.t[: min(m, 3)], p.x0, p.v0, None if load is None else load[:3].T
     )
     if m <= 3:
-        return IntegrationResult(p.t, head.x, head.v, head.a, "houbolt", m - 1, 0, True, "completed")
-    A, B0, B1 = recursion_matrices(houbolt_step(p.M, p.C, p.K, h), 3 * n, n)
+        return IntegrationResult(p.t, head.x, head.v, head.a, "houbolt", m - 1, 0)
+    rec = recursion_matrices(houbolt_step(p.M, p.C, p.K, h), 3 * n, n)
     z2 = np.r_[head.x[:, 2], head.x[:, 1], head.x[:, 0]]
-    Z, bad = _recur(A, B0, B1, z2, None if load is None else load[2:], m - 3, scale(p, load))
+    Z, bad = _recur(rec.A, rec.B0, rec.B1, z2, None if load is None else load[2:], m - 3, scale(p, load))
     xs = np.vstack([head.x[:, :2].T, Z[:, :n]])  # x_0 … x_k
     x3 = xs[3:]
     v = (11 * x3 - 18 * xs[2:-1] + 9 * xs[1:-2] - 2 * xs[:-3]) / (6 * h)
@@ -489,4 +725,4 @@ def houbolt(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> Integra
     a = np.vstack([head.a.T, a])
     if bad is not None:
         bad = bad + 2
-    return _finish("houbolt", p, xs, v, a, bad, on_divergence, {})
+    return _finish("houbolt", p, xs, v, a, bad, {})

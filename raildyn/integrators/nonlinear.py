@@ -6,6 +6,10 @@ with Newton–Raphson iterations solves the implicit equations of each step with
 the tangent of the force, given or found by finite differences. The stiff solver
 hands the same first-order system, with its Jacobian, to scipy's BDF or Radau
 {Hairer & Wanner 1996}.
+
+Every failure (a blow-up, a Newton iteration that does not converge, scipy giving
+up) raises :class:`raildyn.errors.SolverError` with the step, the time, the reason
+and the completed part of the run as ``partial``.
 """
 
 from __future__ import annotations
@@ -15,15 +19,20 @@ import scipy.integrate
 import scipy.linalg
 
 from raildyn._checks import integer, positive, scalar
+from raildyn.errors import SolverError
 from raildyn.integrators._common import (
     IntegrationResult,
-    check_on_divergence,
-    divergence,
+    completed,
+    diverged,
+    force_tangent,
     general_force,
     problem,
     sampled_load,
     scale,
 )
+from raildyn.vibration import first_order_matrix
+
+__all__ = ["abm", "forward_euler", "newmark_newton", "rk4", "stiff"]
 
 
 def _first_order(p, force):
@@ -33,7 +42,9 @@ def _first_order(p, force):
     f = general_force(force, p)
 
     def acceleration(t, x, v):
-        return scipy.linalg.cho_solve(chol, f(t, x, v) - p.C @ v - p.K @ x)
+        # No finiteness check here: a state that blows up becomes non-finite, and the caller
+        # reports that as a SolverError with the step at which it happened.
+        return scipy.linalg.cho_solve(chol, f(t, x, v) - p.C @ v - p.K @ x, check_finite=False)
 
     def rhs(t, y):
         x, v = y[:n], y[n:]
@@ -47,9 +58,8 @@ def _bound(p, force):
     return scale(p, load)
 
 
-def _march(name, p, force, advance, on_divergence) -> IntegrationResult:
+def _march(name, p, force, advance) -> IntegrationResult:
     """Run ``advance(k, Y) -> y_{k+1}`` over the grid, checking every step for a blow-up."""
-    on_divergence = check_on_divergence(on_divergence)
     rhs, acceleration = _first_order(p, force)
     n, m = p.n, p.t.size
     Y = np.empty((m, 2 * n))
@@ -62,23 +72,21 @@ def _march(name, p, force, advance, on_divergence) -> IntegrationResult:
         return rhs(t, y)
 
     bad = None
-    for k in range(m - 1):
-        Y[k + 1] = advance(k, Y, counted)
-        if not np.abs(Y[k + 1]).max() <= bound:
-            bad = k + 1
-            break
+    with np.errstate(over="ignore", invalid="ignore"):  # a blow-up is reported below, not warned about
+        for k in range(m - 1):
+            Y[k + 1] = advance(k, Y, counted)
+            if not np.abs(Y[k + 1]).max() <= bound:
+                bad = k + 1
+                break
     done = m if bad is None else bad
     x, v = Y[:done, :n], Y[:done, n:]
     a = np.array([acceleration(tk, xk, vk) for tk, xk, vk in zip(p.t[:done], x, v, strict=True)])
     if bad is not None:
-        err = divergence(name, p, bad, {})
-        if on_divergence == "raise":
-            raise err
-        return IntegrationResult(p.t[:done], x.T, v.T, a.T, name, done - 1, state["evals"], False, str(err))
-    return IntegrationResult(p.t, x.T, v.T, a.T, name, m - 1, state["evals"], True, "completed")
+        raise diverged(name, p, bad, x, v, a, {}, iterations=state["evals"])
+    return completed(name, p, x, v, a, state["evals"])
 
 
-def forward_euler(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+def forward_euler(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     """Forward (explicit) Euler on y = (x, x'): first order; it amplifies every undamped oscillation.
 
     Parameters
@@ -91,12 +99,17 @@ def forward_euler(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> I
         Initial displacement (m) and velocity (m/s).
     force : None, array_like (n, m) or callable
         f in N: sampled on ``t`` (linear in between), or ``force(t, x, v)`` returning n values.
-    on_divergence : {"raise", "stop"}
 
     Returns
     -------
     IntegrationResult
         ``iterations`` counts the evaluations of the right-hand side.
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        If the run blows up; the message names the step limit set by the eigenvalues of
+        the first-order system, and ``partial`` holds the steps completed before.
     """
     p = problem(M, C, K, t, x0, v0)
     h = p.h
@@ -104,13 +117,39 @@ def forward_euler(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> I
     def advance(k, Y, g):
         return Y[k] + h * g(p.t[k], Y[k])
 
-    return _march("forward_euler", p, force, advance, on_divergence)
+    return _march("forward_euler", p, force, advance)
 
 
-def rk4(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+def rk4(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     """Classical fourth-order Runge–Kutta on y = (x, x'); stable for ωΔt <= 2√2 when undamped.
 
-    Arguments as :func:`forward_euler`.
+    Parameters
+    ----------
+    M, C, K : array_like (n, n) or float
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like (n,) or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f in N: sampled on ``t`` (linear in between), or ``force(t, x, v)`` returning n values.
+
+    Returns
+    -------
+    IntegrationResult
+        ``iterations`` counts the evaluations of the right-hand side (four a step).
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        If the run blows up (see :func:`forward_euler`).
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, 1.0, 101)
+    >>> r = rk4(1.0, 0.0, (2 * np.pi) ** 2, t, 1.0, 0.0, lambda tk, x, v: np.zeros(1))
+    >>> round(float(r.x[0, -1]), 6), r.iterations  # cos 2π after one period
+    (1.0, 400)
     """
     p = problem(M, C, K, t, x0, v0)
     h = p.h
@@ -123,16 +162,37 @@ def rk4(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> Integration
         k4 = g(tk + h, y + h * k3)
         return y + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
 
-    return _march("rk4", p, force, advance, on_divergence)
+    return _march("rk4", p, force, advance)
 
 
-def abm(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> IntegrationResult:
+def abm(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     """Adams–Bashforth–Moulton predictor–corrector, fourth order, in PECE mode.
 
     Predict with the four-step Adams–Bashforth formula, evaluate, correct with the
     three-step Adams–Moulton formula, evaluate: two evaluations a step against
     RK4's four {Hairer, Nørsett & Wanner 1993, §III.1}. The first three steps are
-    taken with RK4. Arguments as :func:`forward_euler`.
+    taken with RK4.
+
+    Parameters
+    ----------
+    M, C, K : array_like (n, n) or float
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like (n,) or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f in N: sampled on ``t`` (linear in between), or ``force(t, x, v)`` returning n values.
+
+    Returns
+    -------
+    IntegrationResult
+        ``iterations`` counts the evaluations of the right-hand side.
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        If the run blows up (see :func:`forward_euler`).
     """
     p = problem(M, C, K, t, x0, v0)
     h = p.h
@@ -153,7 +213,7 @@ def abm(M, C, K, t, x0, v0, force=None, *, on_divergence="raise") -> Integration
         fp = g(tk + h, pred)
         return y + h / 24 * (9 * fp + 19 * f0 - 5 * f1 + f2)
 
-    return _march("abm", p, force, advance, on_divergence)
+    return _march("abm", p, force, advance)
 
 
 def _fd_jacobian(f, t, x, v, fx):
@@ -183,7 +243,6 @@ def newmark_newton(
     beta=0.25,
     tol=1e-10,
     max_iter=20,
-    on_divergence="raise",
 ) -> IntegrationResult:
     """Newmark-β with Newton–Raphson iterations for ``M x'' + C x' + K x = f(t, x, x')``.
 
@@ -193,29 +252,51 @@ def newmark_newton(
 
     Parameters
     ----------
-    M, C, K, t, x0, v0, force
-        As :func:`forward_euler`; ``force(t, x, v)`` may be nonlinear.
+    M, C, K : array_like (n, n) or float
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like (n,) or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f in N: sampled on ``t`` (linear in between), or ``force(t, x, v)``, possibly
+        nonlinear, returning n values.
     jacobian : callable, optional
-        ``jacobian(t, x, v) -> (∂f/∂x, ∂f/∂v)``, each (n, n) (N/m, N·s/m). Without it, forward
-        differences are used (2n extra force evaluations per iteration).
+        ``jacobian(t, x, v)`` returning a :class:`ForceJacobian` or the pair (∂f/∂x, ∂f/∂v),
+        each (n, n) (N/m, N·s/m). Without it, forward differences are used for a callable
+        force (2n extra force evaluations per iteration); a force given as samples (or
+        None) depends on t alone, so its tangent is zero.
     gamma, beta : float
         Newmark's parameters; γ in [½, 1.5], β in (0, 1].
     tol : float
         Convergence when the displacement correction is below tol × (|x₊|∞ + Δt |v₊|∞ + 1e-300).
     max_iter : int
-        Iterations allowed per step; more raises :class:`DivergenceError`.
-    on_divergence : {"raise", "stop"}
+        Iterations allowed per step, >= 1.
 
     Returns
     -------
     IntegrationResult
         ``iterations`` is the total number of Newton iterations.
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        If a step does not converge in ``max_iter`` iterations or the run blows up;
+        ``partial`` holds the steps completed before.
+
+    Examples
+    --------
+    >>> from raildyn.suspension import FrictionDamper
+    >>> damper = FrictionDamper(friction_force=1.0e4, velocity_scale=1.0e-3)
+    >>> t = np.linspace(0.0, 1.0, 101)
+    >>> r = newmark_newton(2.5e4, 0.0, 5.0e6, t, 0.03, 0.0, damper.force, jacobian=damper.jacobian)
+    >>> r.steps, r.iterations > r.steps
+    (100, True)
     """
     gamma = scalar("gamma", gamma, low=0.5, high=1.5)
     beta = scalar("beta", beta, low=0.0, high=1.0, low_open=True)
     tol = positive("tol", tol)
     max_iter = integer("max_iter", max_iter, low=1)
-    on_divergence = check_on_divergence(on_divergence)
     p = problem(M, C, K, t, x0, v0)
     f = general_force(force, p)
     n, h, m = p.n, p.h, p.t.size
@@ -223,7 +304,13 @@ def newmark_newton(
     X[0], V[0] = p.x0, p.v0
     A[0] = np.linalg.solve(p.M, f(p.t[0], p.x0, p.v0) - p.C @ p.v0 - p.K @ p.x0)
     bound = _bound(p, force)
-    iterations, bad, reason = 0, None, ""
+    iterations = 0
+    if jacobian is None and not callable(force):  # f(t) alone: no tangent
+        zero = np.zeros((n, n))
+
+        def jacobian(t, x, v):
+            return zero, zero
+
     for k in range(m - 1):
         t1 = p.t[k + 1]
         x_pred = X[k] + h * V[k] + h * h * (0.5 - beta) * A[k]
@@ -234,8 +321,11 @@ def newmark_newton(
             x, v = x_pred + beta * h * h * a, v_pred + gamma * h * a
             fx = f(t1, x, v)
             r = p.M @ a + p.C @ v + p.K @ x - fx
-            dfdx, dfdv = jacobian(t1, x, v) if jacobian is not None else _fd_jacobian(f, t1, x, v, fx)
-            tangent = p.M + gamma * h * (p.C - np.asarray(dfdv)) + beta * h * h * (p.K - np.asarray(dfdx))
+            if jacobian is not None:
+                dfdx, dfdv = force_tangent(jacobian(t1, x, v), n)
+            else:
+                dfdx, dfdv = _fd_jacobian(f, t1, x, v, fx)
+            tangent = p.M + gamma * h * (p.C - dfdv) + beta * h * h * (p.K - dfdx)
             da = np.linalg.solve(tangent, -r)
             a = a + da
             iterations += 1
@@ -244,19 +334,31 @@ def newmark_newton(
                 converged = True
                 break
         X[k + 1], V[k + 1], A[k + 1] = x_pred + beta * h * h * a, v_pred + gamma * h * a, a
-        if not converged or not np.abs(np.r_[X[k + 1], V[k + 1]]).max() <= bound:
-            bad = k + 1
-            reason = "" if converged else f"; Newton's method did not converge in {max_iter} iterations"
-            break
-    if bad is not None:
-        err = divergence("newmark_newton", p, bad, {"gamma": gamma, "beta": beta}, analysed_as="newmark")
-        err.args = (str(err) + reason,)
-        if on_divergence == "raise":
-            raise err
-        return IntegrationResult(
-            p.t[:bad], X[:bad].T, V[:bad].T, A[:bad].T, "newmark_newton", bad - 1, iterations, False, str(err)
-        )
-    return IntegrationResult(p.t, X.T, V.T, A.T, "newmark_newton", m - 1, iterations, True, "completed")
+        if not converged:
+            partial = IntegrationResult(
+                p.t[: k + 1], X[: k + 1].T, V[: k + 1].T, A[: k + 1].T, "newmark_newton", k, iterations
+            )
+            raise SolverError(
+                f"newmark newton: Newton's method did not converge in {max_iter} iterations with "
+                f"dt = {h:.6g} s (last correction {beta * h * h * np.abs(da).max():.3g} against a "
+                f"tolerance of {tol * size:.3g}); shorten dt, allow more iterations or check the jacobian",
+                step=k + 1,
+                time=float(t1),
+                partial=partial,
+            )
+        if not np.abs(np.r_[X[k + 1], V[k + 1]]).max() <= bound:
+            raise diverged(
+                "newmark_newton",
+                p,
+                k + 1,
+                X[: k + 1],
+                V[: k + 1],
+                A[: k + 1],
+                {"gamma": gamma, "beta": beta},
+                iterations=iterations,
+                analysed_as="newmark",
+            )
+    return completed("newmark_newton", p, X, V, A, iterations)
 
 
 def stiff(
@@ -265,22 +367,47 @@ def stiff(
     """Integrate with scipy's implicit variable-step solvers (``solve_ivp`` with BDF or Radau).
 
     The Jacobian of the first-order system is given to scipy: the linear part
-    [[0, I], [−M⁻¹K, −M⁻¹C]] plus, with ``jacobian``, the force's tangent.
+    [[0, I], [−M⁻¹K, −M⁻¹C]] (:func:`raildyn.vibration.first_order_matrix`) plus,
+    with ``jacobian``, the force's tangent.
 
     Parameters
     ----------
-    M, C, K, t, x0, v0, force, jacobian
-        As :func:`newmark_newton`.
+    M, C, K : array_like (n, n) or float
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s: where the answer is wanted (scipy chooses its own steps).
+    x0, v0 : array_like (n,) or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f in N: sampled on ``t`` (linear in between), or ``force(t, x, v)`` returning n values.
+    jacobian : callable, optional
+        As :func:`newmark_newton`. Without it a callable force leaves scipy to find the
+        Jacobian by finite differences.
     method : {"Radau", "BDF", "LSODA"}
+        scipy's solver.
     rtol, atol : float
         scipy's relative and absolute tolerances (> 0).
 
     Returns
     -------
     IntegrationResult
-        ``steps`` is the number of steps scipy took (not the samples of ``t``),
-        ``iterations`` the number of right-hand-side evaluations; ``success`` and
-        ``message`` are scipy's.
+        On the grid ``t`` (from each step's interpolant); ``steps`` is the number of steps
+        scipy took (not the samples of ``t``), ``iterations`` the number of right-hand-side
+        evaluations.
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        If scipy gives up (a step size that underflows, a state that is not finite): the
+        reason is scipy's message, ``step`` the steps taken, ``time`` where it stopped, and
+        ``partial`` the history at scipy's own steps up to there.
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, 1.0, 11)
+    >>> r = stiff(1.0, 0.0, (2 * np.pi) ** 2, t, 1.0, 0.0, rtol=1e-10, atol=1e-12)
+    >>> round(float(r.x[0, -1]), 7), r.method
+    (1.0, 'stiff_radau')
     """
     if method not in ("Radau", "BDF", "LSODA"):
         raise ValueError(f"method must be 'Radau', 'BDF' or 'LSODA', got {method!r}")
@@ -288,43 +415,44 @@ def stiff(
     p = problem(M, C, K, t, x0, v0)
     n = p.n
     rhs, acceleration = _first_order(p, force)
+    base = first_order_matrix(p.M, p.C, p.K)
     Minv = np.linalg.inv(p.M)
-    base = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ p.K, -Minv @ p.C]])
 
     def jac(tk, y):
         if jacobian is None:
             return base
-        dfdx, dfdv = jacobian(tk, y[:n], y[n:])
+        dfdx, dfdv = force_tangent(jacobian(tk, y[:n], y[n:]), n)
         extra = np.zeros_like(base)
         extra[n:] = Minv @ np.hstack([dfdx, dfdv])
         return base + extra
 
     uses_force_tangent = jacobian is not None or force is None or not callable(force)
-    sol = scipy.integrate.solve_ivp(
-        rhs,
-        (p.t[0], p.t[-1]),
-        np.r_[p.x0, p.v0],
-        method=method,
-        dense_output=True,
-        rtol=rtol,
-        atol=atol,
-        jac=jac if uses_force_tangent else None,
-    )
     name = f"stiff_{method.lower()}"
-    if not sol.success:
-        return IntegrationResult(
-            sol.t,
-            sol.y[:n],
-            sol.y[n:],
-            np.full((n, sol.t.size), np.nan),
-            name,
-            sol.t.size - 1,
-            int(sol.nfev),
-            False,
-            sol.message,
+    with np.errstate(over="ignore", invalid="ignore"):
+        sol = scipy.integrate.solve_ivp(
+            rhs,
+            (p.t[0], p.t[-1]),
+            np.r_[p.x0, p.v0],
+            method=method,
+            dense_output=True,
+            rtol=rtol,
+            atol=atol,
+            jac=jac if uses_force_tangent else None,
+        )
+    finite = np.all(np.isfinite(sol.y), axis=0)
+    if not sol.success or not finite.all():
+        # The history up to the first non-finite state, if any, else all of scipy's steps.
+        stop = int(np.argmin(finite)) if not finite.all() else sol.t.size
+        ts, ys = sol.t[:stop], sol.y[:, :stop]
+        a = np.array([acceleration(tk, ys[:n, k], ys[n:, k]) for k, tk in enumerate(ts)]).reshape(-1, n).T
+        partial = IntegrationResult(ts, ys[:n], ys[n:], a, name, max(stop - 1, 0), int(sol.nfev))
+        reason = sol.message if finite.all() else "the state became non-finite"
+        step = min(stop, sol.t.size - 1)
+        raise SolverError(
+            f"scipy's {method} failed: {reason}", step=step, time=float(sol.t[step]), partial=partial
         )
     # The grid values come from each step's own interpolant, as solve_ivp's t_eval would give.
     y = sol.sol(p.t)
     x, v = y[:n], y[n:]
     a = np.array([acceleration(tk, x[:, k], v[:, k]) for k, tk in enumerate(p.t)]).T
-    return IntegrationResult(p.t, x, v, a, name, sol.t.size - 1, int(sol.nfev), True, sol.message)
+    return IntegrationResult(p.t, x, v, a, name, sol.t.size - 1, int(sol.nfev))

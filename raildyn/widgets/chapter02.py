@@ -2,7 +2,11 @@
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
 models are :mod:`raildyn.integrators` and :class:`raildyn.vibration.SDOF`; this
-module only turns control values into model calls and moves artists.
+module only turns control values into model calls and moves artists. The accuracy
+curves are drawn, and redrawn in place, by the methods of
+:class:`raildyn.integrators.SchemeAccuracy` that the chapter's figures call too. A
+scheme that blows up raises :class:`raildyn.errors.SolverError`; the widget draws
+the part of the run completed before (the error's ``partial``).
 """
 
 from __future__ import annotations
@@ -11,6 +15,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from raildyn import integrators, plots, vibration
+from raildyn.errors import SolverError
 from raildyn.widgets._core import Recipe, slider
 
 # Readable names for the dropdowns, in the order the chapter introduces the schemes.
@@ -58,32 +63,36 @@ def _scheme_response_setup(live, status):
     ax_t.set_ylabel("displacement $x/x_0$")
     ax_t.set_title("free vibration, T = 1 s, $x_0 = 1$, $v_0 = 0$")
     ax_t.legend(loc="upper right")
-    (rho,) = ax_r.semilogx(_RATIOS, np.ones_like(_RATIOS), color=plots.COLORS[0])
+    rho = integrators.scheme_accuracy("central_difference", _RATIOS).plot_spectral_radius(
+        ax_r, color=plots.COLORS[0]
+    )
     (mark,) = ax_r.plot([0.1], [1.0], "o", color=plots.COLORS[1], ms=7)
     ax_r.axhline(1.0, color="0.4", lw=0.8, ls=":")
+    ax_r.set_xscale("log")
     ax_r.set_xlim(_RATIOS[0], _RATIOS[-1])
     ax_r.set_ylim(0.0, 1.6)
-    ax_r.set_xlabel(r"$\Delta t/T$")
-    ax_r.set_ylabel(r"spectral radius $\rho(A)$")
-    live.animate(exact["line"], numeric, rho, mark)
+    live.animate(exact["line"], numeric, rho["line"], mark)
 
     def redraw(v):
         name, ratio, xi = v["method"], v["dt_over_T"], v["damping_ratio"]
         system = vibration.SDOF.from_modal(2 * np.pi, xi)
         exact["line"].set_ydata(system.free_response(system_t, 1.0, 0.0))
         t = np.arange(int(np.floor(_DURATION / ratio + 1e-9)) + 1) * ratio
-        run = integrators.integrate(
-            name, 1.0, system.damping, system.stiffness, t, 1.0, 0.0, on_divergence="stop"
-        )
+        try:
+            run, failure = (
+                integrators.integrate(name, 1.0, system.damping, system.stiffness, t, 1.0, 0.0),
+                None,
+            )
+        except SolverError as err:
+            run, failure = err.partial, err  # draw what was computed before the blow-up
         x = run.x[0]
         numeric.set_data(run.t, np.clip(x, -10.0, 10.0))  # far outside the axes but finite for Agg
-        curve = integrators.spectral_radius(name, _RATIOS, xi)
-        rho.set_ydata(np.minimum(curve, 10.0))
+        integrators.scheme_accuracy(name, _RATIOS, xi).plot_spectral_radius(artists=rho)
         here = float(integrators.spectral_radius(name, ratio, xi))
         mark.set_data([ratio], [min(here, 1.58)])
         error = np.abs(x - system.free_response(run.t, 1.0, 0.0)).max()
         text = f"<b>{LABELS[name]}</b> · Δt/T = {ratio:.2f} · ρ = {here:.4f}"
-        if run.success:
+        if failure is None:
             pe = integrators.period_elongation(name, ratio, xi)
             ad = integrators.amplitude_decay(name, ratio, xi)
             pe_text = "no oscillation" if np.isnan(pe) else f"{100 * pe:+.2f} %"
@@ -92,7 +101,7 @@ def _scheme_response_setup(live, status):
                 f" · amplitude decay per period {100 * ad:+.2f} %"
             )
         else:
-            text += f" · <b>unstable</b>: diverged at step {run.steps + 1} (t = {run.t[-1]:.2f} s)"
+            text += f" · <b>unstable</b>: diverged at step {failure.step} (t = {failure.time:.2f} s)"
         status.value = text
 
     return redraw
@@ -126,28 +135,26 @@ def _accuracy_chart_setup(live, status):
         ax.set_xlim(0, ratios[-1])
         ax.set_xlabel(r"$\Delta t/T$")
     # Grey reference: the average acceleration method (ρ = 1, no decay).
-    ax_pe.plot(
-        ratios, 100 * integrators.period_elongation("average_acceleration", ratios), color="0.75", lw=1
+    integrators.scheme_accuracy("average_acceleration", ratios).plot_period_elongation(
+        ax_pe, color="0.75", lw=1
     )
     ax_rho.axhline(1.0, color="0.4", lw=0.8, ls=":")
-    (rho,) = ax_rho.plot(ratios, np.ones_like(ratios), color=plots.COLORS[0])
-    (pe,) = ax_pe.plot(ratios, np.zeros_like(ratios), color=plots.COLORS[1])
-    (ad,) = ax_ad.plot(ratios, np.zeros_like(ratios), color=plots.COLORS[2])
+    start = integrators.scheme_accuracy("wilson", ratios)
+    rho = start.plot_spectral_radius(ax_rho, color=plots.COLORS[0])
+    pe = start.plot_period_elongation(ax_pe, color=plots.COLORS[1])
+    ad = start.plot_amplitude_decay(ax_ad, color=plots.COLORS[2])
     ax_rho.set_ylim(0.0, 1.6)
-    ax_rho.set_ylabel(r"spectral radius $\rho(A)$")
     ax_pe.set_ylim(-30, 60)
-    ax_pe.set_ylabel("period elongation (%)")
     ax_ad.set_ylim(-20, 60)
-    ax_ad.set_ylabel("amplitude decay per period (%)")
-    live.animate(rho, pe, ad)
+    live.animate(rho["line"], pe["line"], ad["line"])
 
     def redraw(v):
         name, xi = v["method"], v["damping_ratio"]
-        curve = integrators.spectral_radius(name, ratios, xi)
-        rho.set_ydata(np.minimum(curve, 10.0))
-        pe.set_ydata(100 * integrators.period_elongation(name, ratios, xi))
-        ad.set_ydata(np.clip(100 * integrators.amplitude_decay(name, ratios, xi), -1e3, 1e3))
-        limit = integrators.stability_limit(name, xi)
+        chart = integrators.scheme_accuracy(name, ratios, xi)
+        chart.plot_spectral_radius(artists=rho)
+        chart.plot_period_elongation(artists=pe)
+        chart.plot_amplitude_decay(artists=ad)
+        limit = chart.stability_limit_dt_over_T
         if np.isinf(limit):
             rule = "unconditionally stable"
         elif limit == 0:

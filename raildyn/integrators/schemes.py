@@ -1,0 +1,92 @@
+"""The catalogue of time-integration schemes, by name, and the one call that runs any of them.
+
+``METHODS`` names every scheme that both runs (:func:`integrate`) and is analysed
+on the test oscillator (:mod:`raildyn.integrators.analysis`); ``PARAMETERS`` gives
+the parameters each one accepts, with their defaults.
+"""
+
+from __future__ import annotations
+
+from raildyn.integrators import linear, nonlinear
+from raildyn.integrators._common import IntegrationResult
+
+__all__ = ["METHODS", "PARAMETERS", "integrate"]
+
+# Every scheme the analysis knows, by name; the same names select the integrators.
+METHODS = (
+    "central_difference",
+    "houbolt",
+    "wilson",
+    "newmark",
+    "average_acceleration",
+    "linear_acceleration",
+    "hht_alpha",
+    "forward_euler",
+    "rk4",
+    "abm",
+)
+
+# The parameters each scheme accepts, with their defaults.
+PARAMETERS = {
+    "central_difference": {},
+    "houbolt": {},
+    "wilson": {"theta": 1.4},
+    "newmark": {"gamma": 0.5, "beta": 0.25},
+    "average_acceleration": {},
+    "linear_acceleration": {},
+    "hht_alpha": {"alpha": -0.05},
+    "forward_euler": {},
+    "rk4": {},
+    "abm": {},
+}
+
+# Schemes of the first-order form y = (x, x'): their force is f(t, x, v), not f(t).
+FIRST_ORDER = ("forward_euler", "rk4", "abm")
+
+
+def integrate(method: str, M, C, K, t, x0, v0, force=None, **params) -> IntegrationResult:
+    """Run the scheme named ``method`` (one of ``METHODS``) with its parameters.
+
+    Parameters
+    ----------
+    method : str
+        One of ``METHODS``.
+    M, C, K : array_like, shape (n, n), or float
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+    t : array_like, shape (m,)
+        Uniform time grid, s.
+    x0, v0 : array_like, shape (n,), or float
+        Initial displacement (m) and velocity (m/s).
+    force : None, array_like (n, m) or callable
+        f in N, following the scheme: sampled on ``t`` for every scheme; as a callable,
+        ``force(t)`` for the linear schemes and ``force(t, x, v)`` for the first-order
+        ones (``FIRST_ORDER``).
+    **params
+        The scheme's parameters (``PARAMETERS``): ``theta`` (wilson), ``gamma`` and
+        ``beta`` (newmark), ``alpha`` (hht_alpha).
+
+    Returns
+    -------
+    IntegrationResult
+
+    Raises
+    ------
+    raildyn.errors.SolverError
+        If the run blows up (see each scheme).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> r = integrate("wilson", 1.0, 0.0, 1.0, np.linspace(0, 1, 11), 1.0, 0.0, theta=1.4)
+    >>> r.method, r.steps
+    ('wilson', 10)
+    """
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    unknown = sorted(set(params) - set(PARAMETERS[method]))
+    if unknown:
+        raise ValueError(
+            f"{method} takes the parameters {sorted(PARAMETERS[method]) or 'none'}, got {unknown}"
+        )
+    module = nonlinear if method in FIRST_ORDER else linear
+    return getattr(module, method)(M, C, K, t, x0, v0, force, **params)
