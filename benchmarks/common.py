@@ -11,6 +11,10 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+import ipywidgets as widgets
+
+from raildyn.widgets import LiveFigure, Recipe
+
 
 @dataclass
 class Case:
@@ -37,17 +41,30 @@ def timed(fn: Callable[[int], object], repeats: int) -> list[float]:
     return times
 
 
+def fresh_frame(recipe: Recipe, **values) -> bytes:
+    """One frame of a widget drawn on a brand-new figure: the naive baseline of the widget cases.
+
+    The same model and plot code as the live widget (the recipe's ``setup`` and
+    its ``redraw``), but a new figure, new axes and a full draw for every change,
+    the way ``ipywidgets.interact`` redraws.
+    """
+    live = LiveFigure(**recipe.figure)
+    redraw = recipe.setup(live, widgets.HTML())
+    redraw({**recipe.defaults(), **values})
+    return live.render()
+
+
 def widget_case(
     label: str, recipe, control: str, values: list, repeats: int, goal: str = "median ≤ 50 ms, ≥ 3× faster"
 ) -> Case:
     """A widget's update (model + redraw of the same figure) against a new figure per change.
 
-    The baseline is ``Recipe.fresh_frame``: the same model and plot code on a
+    The baseline is :func:`fresh_frame`: the same model and plot code on a
     brand-new figure each time, the way ``interact`` redraws.
     """
     _, update = recipe.build()
     moves = [{control: v} for v in values]
     update(**moves[-1])  # warm the caches before timing
     live = timed(lambda i: update(**moves[i % len(moves)]), repeats)
-    naive = timed(lambda i: recipe.fresh_frame(**moves[i % len(moves)]), repeats)
+    naive = timed(lambda i: fresh_frame(recipe, **moves[i % len(moves)]), repeats)
     return Case(f"widget {label}", live, naive, goal, "new figure per change")

@@ -224,8 +224,9 @@ class Recipe:
 
     ``setup(live, status)`` draws the fixed parts of the figure once, creates the
     artists that move, and returns ``redraw(values)``. Keeping the three apart
-    lets :meth:`build` make the live widget and :meth:`fresh_frame` draw one
-    frame from nothing (the way ``interact`` redraws), with the same code.
+    lets :meth:`build` make the live widget and :meth:`static_html` the
+    kernel-free copy with the same code (and lets the benchmarks draw one frame
+    from nothing, the way ``interact`` redraws: ``benchmarks/common.py``).
     """
 
     controls: Callable[[], dict]
@@ -258,13 +259,6 @@ class Recipe:
     def defaults(self) -> dict:
         """The starting value of every control."""
         return {name: control.value for name, control in self.controls().items()}
-
-    def fresh_frame(self, **values) -> bytes:
-        """One frame drawn on a brand-new figure: the naive baseline of the benchmarks."""
-        live = LiveFigure(**self.figure)
-        redraw = self.setup(live, widgets.HTML())
-        redraw({**self.defaults(), **values})
-        return live.render()
 
 
 def _nearest(values, value) -> int:
