@@ -13,11 +13,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn.constants import GRAVITY
+from raildyn.integrators import stable_step
 from raildyn.vehicles import response as resp
 from raildyn.vehicles.freight import (
     GDU_ORE_CAR,
     FreightCar,
-    rk4_step_limit,
     rock_and_roll,
     wedge_energy_per_cycle,
     wedge_friction_force,
@@ -207,8 +207,9 @@ def test_rock_and_roll_refuses_a_step_at_which_rk4_goes_unstable():
     # The limit is RK4's: the spectral radius of the step matrix P = Σ (hA)^k/k!, k ≤ 4, of the
     # linearised car crosses 1 there (computed here from the matrix, not from its eigenvalues).
     sticking = CAR.replace(equivalent_damping=CAR.wedge_friction / 0.002)
-    limit = rk4_step_limit(sticking)
-    A = sticking.matrices(1.0).state_matrix()
+    mats = sticking.matrices(1.0)
+    limit = stable_step("rk4", mats.M, mats.C, mats.K)
+    A = mats.state_matrix()
 
     def radius(h):
         P, term = np.eye(A.shape[0]), np.eye(A.shape[0])

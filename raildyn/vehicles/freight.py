@@ -38,7 +38,7 @@ from raildyn import _checks
 from raildyn import track as _track
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
-from raildyn.integrators import rk4
+from raildyn.integrators import rk4, stable_step
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.suspension import coulomb_friction
 from raildyn.vehicles.vertical import BodyFrequencies
@@ -49,7 +49,6 @@ __all__ = [
     "FreightCar",
     "RockAndRoll",
     "gdu_ore_car",
-    "rk4_step_limit",
     "rock_and_roll",
     "wedge_energy_per_cycle",
     "wedge_friction_force",
@@ -251,7 +250,7 @@ def rock_and_roll(
     cycles : int
         Rail lengths run at the lowest speed (≥ 4).
     dt : float, optional
-        Time step, s. Default: 8 ms, or 0.9 of the stability limit below (:func:`rk4_step_limit`)
+        Time step, s. Default: 8 ms, or 0.9 of the stability limit below (:func:`raildyn.integrators.stable_step`)
         where that is smaller (stiff wedges).
     velocity_scale : float
         v_ε of the smooth friction law, m/s.
@@ -266,7 +265,8 @@ def rock_and_roll(
     cycles = _checks.integer("cycles", cycles, low=4)
     eps = _checks.positive("velocity_scale", velocity_scale)
     L = _checks.positive("rail_length", rail_length)
-    limit = rk4_step_limit(car.replace(equivalent_damping=car.wedge_friction / eps))
+    sticking = car.replace(equivalent_damping=car.wedge_friction / eps).matrices(1.0)
+    limit = stable_step("rk4", sticking.M, sticking.C, sticking.K)
     dt = min(0.008, 0.9 * limit) if dt is None else _checks.positive("dt", dt)
     if dt > limit:
         raise ValueError(
@@ -315,42 +315,6 @@ def rock_and_roll(
     tail = t >= 0.75 * t[-1]
     amp = 0.5 * (roll[:, tail].max(axis=1) - roll[:, tail].min(axis=1))
     return RockAndRoll(V, amp, car.roll_resonance_speed(L), t, roll)
-
-
-def rk4_step_limit(car: FreightCar) -> float:
-    """The largest time step (s) at which classical RK4 is stable on the car's linear model.
-
-    RK4 multiplies each mode by R(z) = 1 + z + z²/2 + z³/6 + z⁴/24 per step,
-    z = λ Δt; the run is stable while |R(z)| ≤ 1 for every eigenvalue λ of the
-    first-order system (Butcher 2008, §238). The step is found by bisection.
-
-    Parameters
-    ----------
-    car : FreightCar
-        Its ``equivalent_damping`` stands for the wedges.
-
-    Returns
-    -------
-    float
-        s.
-
-    Examples
-    --------
-    >>> round(float(rk4_step_limit(FreightCar(equivalent_damping=3.0e6))), 4)
-    0.0138
-    """
-    lam = np.linalg.eigvals(car.matrices(1.0).state_matrix())
-    lam = lam[np.abs(lam) > 0]
-
-    def stable(h):
-        z = lam * h
-        return np.all(np.abs(1 + z + z**2 / 2 + z**3 / 6 + z**4 / 24) <= 1 + 1e-12)
-
-    lo, hi = 0.0, 2.9 / np.abs(lam).max()  # |R| > 1 beyond |z| = 2.83 in every direction
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if stable(mid) else (lo, mid)
-    return lo
 
 
 def wedge_energy_per_cycle(
