@@ -250,8 +250,8 @@ def rock_and_roll(
     cycles : int
         Rail lengths run at the lowest speed (≥ 4).
     dt : float, optional
-        Time step, s. Default: 8 ms, or 0.9 of the stability limit below (:func:`raildyn.integrators.stable_step`)
-        where that is smaller (stiff wedges).
+        Time step, s. Default: 8 ms, or 0.9 of the stability limit below
+        (:func:`raildyn.integrators.stable_step`) where that is smaller (stiff wedges).
     velocity_scale : float
         v_ε of the smooth friction law, m/s.
     progress : bool
