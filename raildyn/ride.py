@@ -23,6 +23,17 @@ import numpy as np
 from raildyn import _checks
 from raildyn import random_vibration as rv
 
+__all__ = [
+    "RideQuality",
+    "iso2631_weighting",
+    "ride_quality",
+    "ride_quality_history",
+    "sperling_correction",
+    "sperling_harmonic",
+    "sperling_index",
+    "sperling_weighting",
+]
+
 # Sperling's correction factor F(f) (Sperling 1941, as tabulated by Garg & Dukkipati 1984, ch. 6).
 _SPERLING_F = {
     "vertical": ((0.5, 5.9, lambda f: 0.325 * f**2), (5.9, 20.0, lambda f: 400.0 / f**2), 20.0),
@@ -50,14 +61,50 @@ def _direction(direction: str) -> str:
 
 
 def sperling_correction(frequency, direction: str = "vertical") -> np.ndarray:
-    """Sperling's correction factor F(f) (dimensionless) for f in Hz, 0.5 <= f."""
+    """Sperling's correction factor F(f), tabulated by frequency (Sperling 1941; book ch. 6).
+
+    Parameters
+    ----------
+    frequency : array_like
+        f, Hz, >= 0.5.
+    direction : {"vertical", "lateral"}
+        Which table.
+
+    Returns
+    -------
+    ndarray
+        F(f), dimensionless.
+
+    Examples
+    --------
+    >>> sperling_correction([1.0, 10.0, 30.0]).round(3).tolist()
+    [0.325, 4.0, 1.0]
+    """
     f = _checks.array("frequency", frequency, low=0.5)
     (a0, a1, low), (_, b1, high), top = _SPERLING_F[_direction(direction)]
     return np.where(f < a1, low(f), np.where(f < b1, high(f), 1.0))
 
 
 def sperling_weighting(frequency, direction: str = "vertical") -> np.ndarray:
-    """|B(f)|: Sperling's weighting filter (dimensionless), f in Hz >= 0."""
+    """|B(f)|: the rational fit of Sperling's weighting filter.
+
+    Parameters
+    ----------
+    frequency : array_like
+        f, Hz, >= 0.
+    direction : {"vertical", "lateral"}
+        Which fit.
+
+    Returns
+    -------
+    ndarray
+        |B(f)|, dimensionless.
+
+    Examples
+    --------
+    >>> float(sperling_weighting(0.0))
+    0.0
+    """
     f = _checks.array("frequency", frequency, low=0.0)
     c, n1, n2, d1, d2, d3 = _SPERLING_B[_direction(direction)]
     num = n1 * f**2 + (n2 * f**2) ** 2
@@ -66,14 +113,52 @@ def sperling_weighting(frequency, direction: str = "vertical") -> np.ndarray:
 
 
 def sperling_harmonic(amplitude, frequency, direction: str = "vertical") -> np.ndarray:
-    """Wz of a harmonic acceleration of peak ``amplitude`` (m/s²) at ``frequency`` (Hz), from F(f)."""
+    """Sperling's index Wz = 0.896 (a³ F(f)/f)^{1/10} of a harmonic acceleration, from the table F(f).
+
+    Parameters
+    ----------
+    amplitude : array_like
+        Peak acceleration a, m/s², >= 0 (converted to cm/s² inside, as Sperling's formula wants).
+    frequency : array_like
+        f, Hz, >= 0.5.
+    direction : {"vertical", "lateral"}
+        Which table of F(f).
+
+    Returns
+    -------
+    ndarray
+        Wz (1 very good … 4.5 dangerous).
+
+    Examples
+    --------
+    >>> round(float(sperling_harmonic(0.3, 4.0)), 3)
+    2.552
+    """
     a = _checks.array("amplitude", amplitude, low=0.0) * 100.0  # cm/s²
     f = _checks.array("frequency", frequency, low=0.5)
     return 0.896 * (a**3 * sperling_correction(f, direction) / f) ** 0.1
 
 
 def iso2631_weighting(frequency, weighting: str = "Wk") -> np.ndarray:
-    """Complex ISO 2631-1 weighting W(i2πf) (dimensionless), f in Hz >= 0; ``weighting`` "Wk" or "Wd"."""
+    """Complex ISO 2631-1 frequency weighting W(i2πf) (ISO 2631-1:1997, annex A).
+
+    Parameters
+    ----------
+    frequency : array_like
+        f, Hz, >= 0.
+    weighting : {"Wk", "Wd"}
+        W_k (vertical) or W_d (horizontal).
+
+    Returns
+    -------
+    complex ndarray
+        W, dimensionless.
+
+    Examples
+    --------
+    >>> round(float(abs(iso2631_weighting(6.3))), 2)  # W_k is near 1 around 4-8 Hz
+    1.05
+    """
     f = _checks.array("frequency", frequency, low=0.0)
     if weighting not in _ISO:
         raise ValueError(f"weighting must be 'Wk' or 'Wd'; got {weighting!r}")
@@ -114,13 +199,51 @@ class RideQuality:
 
 
 def sperling_index(weighted_rms) -> float:
-    """Wz = (100√2 σ_w)^{0.3} for a Sperling-weighted RMS σ_w in m/s² (module docstring)."""
+    """Sperling's ride index of a random acceleration, Wz = (100√2 σ_w)^{0.3} (module docstring).
+
+    Parameters
+    ----------
+    weighted_rms : float
+        σ_w, the RMS weighted by Sperling's B(f), m/s², >= 0.
+
+    Returns
+    -------
+    float
+        Wz.
+
+    Examples
+    --------
+    >>> round(sperling_index(1 / (100 * 2**0.5)), 12)
+    1.0
+    """
     s = _checks.nonnegative("weighted_rms", weighted_rms)
     return float((100.0 * np.sqrt(2.0) * s) ** 0.3)
 
 
 def ride_quality(psd, omega, direction: str = "vertical") -> RideQuality:
-    """Ride measures of a one-sided acceleration PSD (m²/s⁴ per rad/s) on a grid ω (rad/s)."""
+    """Ride measures of a one-sided acceleration spectrum.
+
+    Parameters
+    ----------
+    psd : array_like, shape (n,)
+        One-sided PSD of the acceleration, (m/s²)² per rad/s, >= 0.
+    omega : array_like, shape (n,)
+        Circular frequencies, rad/s, >= 0, strictly increasing.
+    direction : {"vertical", "lateral"}
+        Sperling's vertical or lateral weighting; ISO W_k or W_d.
+
+    Returns
+    -------
+    RideQuality
+        Unweighted and weighted RMS (m/s²) and Sperling's Wz.
+
+    Examples
+    --------
+    >>> w = np.linspace(0.0, 200.0, 2001)
+    >>> q = ride_quality(np.full(w.size, 1e-4), w)
+    >>> round(q.rms, 4)  # √(1e-4 × 200)
+    0.1414
+    """
     S = np.asarray(psd, dtype=float)
     w = np.asarray(omega, dtype=float)
     f = _checks.array("omega", omega, ndim=1, low=0.0) / (2 * np.pi)
@@ -134,7 +257,29 @@ def ride_quality(psd, omega, direction: str = "vertical") -> RideQuality:
 
 
 def ride_quality_history(acceleration, dt, direction: str = "vertical") -> RideQuality:
-    """Ride measures of an acceleration history (m/s²) sampled every dt s, weighted by FFT."""
+    """Ride measures of an acceleration history, weighted by FFT.
+
+    Parameters
+    ----------
+    acceleration : array_like, shape (n,)
+        Acceleration, m/s², sampled uniformly; n >= 4 (the mean is removed).
+    dt : float
+        Sampling interval, s, > 0.
+    direction : {"vertical", "lateral"}
+        Sperling's vertical or lateral weighting; ISO W_k or W_d.
+
+    Returns
+    -------
+    RideQuality
+        Unweighted and weighted RMS (m/s²) and Sperling's Wz.
+
+    Examples
+    --------
+    >>> t = np.arange(4000) * 0.005
+    >>> q = ride_quality_history(np.sin(2 * np.pi * 2.0 * t), 0.005)
+    >>> round(q.rms, 4)  # a unit sine: 1/√2
+    0.7071
+    """
     a = _checks.array("acceleration", acceleration, ndim=1)
     dt = _checks.positive("dt", dt)
     if a.size < 4:

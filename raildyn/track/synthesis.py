@@ -509,7 +509,7 @@ def axle_filter_wavelengths(axle_spacing: float, count: int) -> np.ndarray:
     Each axle meets the same track d apart; where d is an odd number of half
     wavelengths the two see opposite irregularities and their mean (the bounce
     of a bogie or a car) is zero, whatever the speed. At speed V these are the
-    frequencies V/λ_j (:func:`passing_frequency`), i.e. the
+    frequencies V/λ_j (:func:`~raildyn.track.deterministic.passing_frequency`), i.e. the
     :func:`raildyn.random_vibration.cancellation_frequencies` for τ = d/V.
 
     Parameters
