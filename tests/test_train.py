@@ -8,8 +8,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import train
+from raildyn.constants import GRAVITY
 from raildyn.train.resistance import MPH, SHORT_TON
-from raildyn.train.vehicles import FT, LBF, G
+from raildyn.train.vehicles import FT, LBF
 
 HOPPER = train.VEHICLES["loaded hopper"]
 LOCO = train.VEHICLES["SD40-2"]
@@ -97,14 +98,14 @@ def test_quasi_static_forces_are_resistance_behind_each_coupler(grade, cars):
     net = resistance - np.where(c.locomotive, notch / 8 * per_loco, 0.0)
     behind = np.cumsum(net[::-1])[::-1][1:]
     # Independent sums of the same numbers: agreement to rounding.
-    np.testing.assert_allclose(result.forces, behind, rtol=1e-9)
+    np.testing.assert_allclose(result.coupler_force, behind, rtol=1e-9)
 
 
 def test_quasi_static_acceleration_is_net_force_over_mass():
     model = dataclasses.replace(_steady_model(), notch=8)
     qs = model.quasi_static(10.0)
-    assert qs.acceleration == pytest.approx(qs.external.sum() / model.consist.total_mass)
-    assert qs.forces[0] > 0  # the locomotives pull the train
+    assert qs.acceleration == pytest.approx(qs.external_force.sum() / model.consist.total_mass)
+    assert qs.coupler_force[0] > 0  # the locomotives pull the train
 
 
 def _kernel_cases():
@@ -171,11 +172,7 @@ def _run_from(model, y0, duration, samples=2001):
         atol=1e-10,
         vectorized=True,
     )
-    n = model.size
-    v = sol.y[n:]
-    return train.TrainRun(
-        sol.t, model.positions(sol.y), v, model.gear.force(sol.y[1:n], v[:-1] - v[1:]), True, "", sol.nfev
-    )
+    return model.run_from_states(sol.t, sol.y, sol.nfev)
 
 
 def test_no_coupler_force_while_gaps_open():
@@ -208,8 +205,8 @@ def test_simulation_converges_with_tolerance():
     model = train.braking_model(20, 1)
     a = train.simulate(model, 20.0, 20.0, initial_extension=0.0125, samples=4001)
     b = train.simulate(model, 20.0, 20.0, initial_extension=0.0125, samples=4001, rtol=1e-9)
-    assert a.peak()[0] == pytest.approx(b.peak()[0], rel=5e-3)
-    assert a.peak()[1] == b.peak()[1]
+    assert a.peak.force == pytest.approx(b.peak.force, rel=5e-3)
+    assert a.peak.coupler == b.peak.coupler
 
 
 def test_energy_lost_per_hysteresis_loop_is_loop_area():
@@ -237,7 +234,8 @@ def test_energy_lost_per_hysteresis_loop_is_loop_area():
 
 def test_static_loop_area_matches_loop_energy():
     gear = train.DraftGear()
-    u, f = gear.static_loop(0.06, points=2001)
+    loop = gear.static_loop(0.06, points=2001)
+    u, f = loop.deflection, loop.force
     area = 0.5 * abs(np.dot(u, np.roll(f, -1)) - np.dot(f, np.roll(u, -1)))  # shoelace
     assert area == pytest.approx(gear.loop_energy(0.06), rel=1e-9)
 
@@ -262,7 +260,7 @@ def test_string_lining_tension_on_curve():
     theta = HOPPER.length / (2 * radius)  # the track turns L/(2R) between car centre and joint
     # Equal tensions at both ends: each truck of the middle car carries F sin θ, inward.
     np.testing.assert_allclose(effects.lateral_force[1], -force * np.sin(theta), rtol=1e-12)
-    np.testing.assert_allclose(effects.l_over_v[1], force * np.sin(theta) / (HOPPER.mass * G / 4))
+    np.testing.assert_allclose(effects.l_over_v[1], force * np.sin(theta) / (HOPPER.mass * GRAVITY / 4))
     # A string under tension T on a circle carries T/R per unit length: the middle car, T L/R.
     assert -effects.lateral_force[1].sum() == pytest.approx(force * HOPPER.length / radius, rel=1e-3)
     assert list(effects.mode) == ["string-lining"] * 2
@@ -286,7 +284,7 @@ def test_vertical_unloading_in_sags_and_crests():
     sag = train.coupler_effects(consist, [300e3, 300e3], vertical_curvature=1 / 2000)
     crest = train.coupler_effects(consist, [-300e3, -300e3], vertical_curvature=-1 / 2000)
     assert np.all(sag.unloading[1] > 0) and np.allclose(sag.unloading, crest.unloading)
-    expected = 300e3 * np.sin(HOPPER.length / 4000) / (HOPPER.mass * G / 2)
+    expected = 300e3 * np.sin(HOPPER.length / 4000) / (HOPPER.mass * GRAVITY / 2)
     np.testing.assert_allclose(sag.unloading[1], expected)
 
 
@@ -303,7 +301,7 @@ def test_coupler_force_is_odd_and_between_branches(delta, rate, slack):
     gear = train.DraftGear(slack=slack, smoothing=min(0.001, 0.4 * slack) if slack > 0 else 0.001)
     f = gear.force(delta, rate)
     assert gear.force(-delta, -rate) == pytest.approx(-f, abs=1e-6)
-    u, _ = gear.deflection(delta)
+    u = gear.deflection(delta)
     solid = gear.solid_stiffness * max(u - gear.travel, 0.0)
     lo = gear.unloading_stiffness * u + solid
     hi = gear.loading_stiffness * u + solid
@@ -318,7 +316,9 @@ def test_quasi_static_front_and_rear_balance(cars, speed, notch):
     qs = model.quasi_static(speed)
     m = model.consist.mass
     # The last coupler carries what the last vehicle needs: its own force minus m a.
-    assert qs.forces[-1] == pytest.approx(-(qs.external[-1] - m[-1] * qs.acceleration), rel=1e-9, abs=1e-6)
+    assert qs.coupler_force[-1] == pytest.approx(
+        -(qs.external_force[-1] - m[-1] * qs.acceleration), rel=1e-9, abs=1e-6
+    )
 
 
 # --- bad input -----------------------------------------------------------------------------------
@@ -351,3 +351,248 @@ def test_bad_input():
         train.coupler_angles(train.make_consist("3 loaded hopper"), [0.01])
     with pytest.raises(ValueError, match="duration"):
         train.simulate(train.braking_model(2, 1), -1.0, 10.0)
+
+
+# --- regressions and the shape of the API (issue 14) -------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "state",
+    [np.zeros(3), np.zeros(205), np.zeros((3, 4)), np.zeros((204, 2, 2)), np.zeros(())],
+    ids=["short", "long", "short batch", "3-D", "scalar"],
+)
+def test_rhs_refuses_a_state_of_the_wrong_shape(state):
+    # The compiled kernel read past the end of a 3-entry state and returned 204 numbers that
+    # changed from call to call. The shape is now checked before any compiled code runs.
+    model = train.braking_model(100, 2)
+    for rhs in (model.rhs, model.rhs_numpy):
+        with pytest.raises(ValueError, match=r"state y must have shape \(204") as info:
+            rhs(1.0, state)
+        assert str(np.shape(state)) in str(info.value)
+
+
+def test_rhs_refuses_a_non_finite_state():
+    model = train.braking_model(10, 1)
+    y = model.initial_state(20.0)
+    y[3] = np.nan
+    with pytest.raises(ValueError, match="state y must contain only finite numbers"):
+        model.rhs(0.0, y)
+    with pytest.raises(ValueError, match="state y must contain only finite numbers"):
+        model.rhs(0.0, np.column_stack([model.initial_state(20.0), y]))
+    with pytest.raises(ValueError, match="t must be a finite number"):
+        model.rhs(np.inf, model.initial_state(20.0))
+
+
+def test_rhs_of_a_right_state_is_repeatable():
+    model = train.braking_model(100, 2)
+    y = model.initial_state(20.0, 0.01)
+    first = model.rhs(1.0, y)
+    assert first.shape == (204,)
+    np.testing.assert_array_equal(model.rhs(1.0, y), first)
+    np.testing.assert_array_equal(model.rhs(1.0, list(y)), first)  # a list is converted
+
+
+def test_simulation_running_into_an_overflow_raises_solver_error_at_that_time():
+    # Beyond 200 m the route has a curvature (1e308 /m) whose resistance overflows to infinity.
+    # Trial steps that overshoot are rejected; when the front vehicle's centre gets there the
+    # step shrinks to nothing and the run stops with SolverError at the time it arrived.
+    from raildyn.errors import SolverError
+
+    route = train.Route((0.0, 200.0), (0.0, 0.0), curvature=(0.0, 1e308))
+    with pytest.raises(SolverError, match="not finite") as info:
+        train.simulate(train.braking_model(5, 1, route=route), 20.0, 20.0, samples=201)
+    err = info.value
+    assert not hasattr(train.TrainRun, "success")
+    # The same train on level track, identical until it reaches 200 m, sampled every 1 ms.
+    level = train.simulate(train.braking_model(5, 1), 20.0, 20.0, samples=20001)
+    arrival = np.interp(err.time, level.t, level.position[0])
+    # Where it stopped, to within what it travels in 1 ms (the run's step there is far smaller).
+    assert arrival == pytest.approx(200.0, abs=0.02)
+    assert err.partial.t[-1] <= err.time < err.partial.t[-1] + 0.1  # the last output before the stop
+    np.testing.assert_allclose(err.partial.speed, level.speed[:, : err.partial.t.size * 100 : 100], rtol=1e-5)
+
+
+def test_simulation_solver_stop_raises_solver_error():
+    # A largest step below the spacing of floating-point numbers: solve_ivp cannot take one.
+    from raildyn.errors import SolverError
+
+    with pytest.raises(SolverError, match="step size is less than spacing") as info:
+        train.simulate(train.braking_model(2, 1), 1.0, 20.0, max_step=1e-323)
+    assert info.value.time == pytest.approx(0.0, abs=1e-300)
+    assert info.value.partial is None or info.value.partial.t[-1] == 0.0
+    with pytest.raises(SolverError, match="not finite at the start") as info:
+        train.simulate(train.braking_model(2, 1), 1.0, 1e160)  # v² overflows in the air resistance
+    assert info.value.time == 0.0 and info.value.step == 0
+
+
+def test_simulate_checks_its_tolerances_and_method():
+    model = train.braking_model(2, 1)
+    with pytest.raises(ValueError, match="atol"):
+        train.simulate(model, 1.0, 10.0, atol=0.0)  # solve_ivp hangs on zero states with atol = 0
+    with pytest.raises(ValueError, match=r"atol must have shape \(6"):
+        train.simulate(model, 1.0, 10.0, atol=np.ones(5))
+    with pytest.raises(ValueError, match="rtol"):
+        train.simulate(model, 1.0, 10.0, rtol=1e-20)
+    with pytest.raises(ValueError, match="method must be one of"):
+        train.simulate(model, 1.0, 10.0, method="Euler")
+    with pytest.raises(ValueError, match="max_step"):
+        train.simulate(model, 1.0, 10.0, max_step=0.0)
+    with pytest.raises(TypeError, match="gear must be a DraftGear"):
+        train.TrainModel(model.consist, gear=0.025)
+
+
+def test_dynamic_brake_corner_speeds_have_one_definition(monkeypatch):
+    # The compiled kernel reads the corner speeds that forces.py defines, through the model:
+    # change them there and the kernel, the numpy reference and the law all move together.
+    from raildyn.train import _kernel, forces
+
+    assert not hasattr(_kernel, "DYNAMIC_PEAK") and not hasattr(_kernel, "DYNAMIC_FADE")
+    assert (forces.DYNAMIC_BRAKE_PEAK_SPEED, forces.DYNAMIC_BRAKE_FADE_SPEED) == (8.0, 20.0)
+    monkeypatch.setattr(forces, "DYNAMIC_BRAKE_PEAK_SPEED", 5.0)
+    monkeypatch.setattr(forces, "DYNAMIC_BRAKE_FADE_SPEED", 12.0)
+    model = dataclasses.replace(
+        train.braking_model(3, 1), air_brake=None, dynamic_brake=1.0, resistance=False, gear=train.DraftGear()
+    )
+    for speed in (4.0, 6.0, 15.0):  # below the new peak, between the two peaks, above the new fade
+        y = model.initial_state(speed)
+        fast, ref = model.rhs(0.0, y), model.rhs_numpy(0.0, y)
+        np.testing.assert_allclose(fast, ref, rtol=1e-12)
+        expected = train.dynamic_brake_force(
+            speed, 1.0, LOCO.max_dynamic_brake, peak_speed=5.0, fade_speed=12.0
+        )
+        # The locomotive (vehicle 0) alone carries the brake; couplers centred, no force in them.
+        assert -fast[model.size] * LOCO.mass == pytest.approx(expected, rel=1e-12)
+
+
+def test_coupler_offsets_are_the_joints_between_vehicles():
+    consist = train.make_consist("2 SD40-2 + 3 loaded hopper + 1 empty hopper")
+    offsets = consist.coupler_offsets
+    assert offsets.shape == (consist.couplers,)
+    centres, half = consist.centre_offsets, 0.5 * consist.length
+    np.testing.assert_allclose(offsets, centres[:-1] + half[:-1], rtol=1e-15)
+    np.testing.assert_allclose(offsets, centres[1:] - half[1:], rtol=1e-15)
+    assert offsets[0] == pytest.approx(LOCO.length)
+    model = train.braking_model(4, 2)
+    np.testing.assert_array_equal(model.quasi_static(10.0).coupler_offsets, model.consist.coupler_offsets)
+    run = train.simulate(model, 1.0, 10.0, samples=3)
+    np.testing.assert_array_equal(run.coupler_offsets, model.consist.coupler_offsets)
+
+
+def test_frozen_dataclasses_declare_every_attribute():
+    # No hidden attributes: whatever an instance holds is a declared field.
+    model = train.braking_model(3, 1, route=train.Route((0.0, 50.0), (0.0, 0.01)))
+    run = train.simulate(model, 2.0, 10.0, samples=5)
+    objects = [model, model.consist, model.route, model.gear, model.air_brake, run, run.peak]
+    objects += [model.quasi_static(5.0), model.gear.static_loop(0.05)]
+    objects += [train.coupler_effects(model.consist, [1e5, 1e5, 1e5], curvature=0.002)]
+    for obj in objects:
+        assert dataclasses.is_dataclass(obj) and obj.__dataclass_params__.frozen, type(obj).__name__
+        declared = {f.name for f in dataclasses.fields(obj)}
+        assert set(vars(obj)) <= declared, (type(obj).__name__, set(vars(obj)) - declared)
+    assert not hasattr(train.Consist, "__getattr__") or train.Consist.__getattr__ is object.__getattr__
+
+
+def test_peak_is_a_result_with_its_place_and_kind():
+    run = train.simulate(train.braking_model(10, 1), 20.0, 15.0, initial_extension=0.0125, samples=401)
+    peak = run.peak
+    j, k = np.unravel_index(np.argmax(np.abs(run.coupler_force)), run.coupler_force.shape)
+    assert (peak.force, peak.coupler, peak.time) == (run.coupler_force[j, k], j, run.t[k])
+    assert peak.offset == run.coupler_offsets[j]
+    assert peak.kind == ("buff" if peak.force < 0 else "draft")
+    assert train.CouplerPeak(1.0, 0, 1.0, 0.0).kind == "draft"
+    assert train.CouplerPeak(-1.0, 0, 1.0, 0.0).kind == "buff"
+
+
+def test_stop_time_is_the_first_sample_below_the_threshold_or_none():
+    run = train.simulate(train.braking_model(10, 1), 60.0, 15.0, samples=601)
+    stop = run.stop_time()
+    k = int(np.searchsorted(run.t, stop))
+    assert run.t[k] == stop and abs(run.speed[0, k]) < 0.01 <= abs(run.speed[0, k - 1])
+    assert run.stop_time(vehicle=-1, threshold=0.5) < stop
+    # A run that has not stopped: None, not the first time of the run (which argmax would give).
+    assert train.simulate(train.braking_model(10, 1), 5.0, 15.0, samples=51).stop_time() is None
+    with pytest.raises(ValueError, match="vehicle"):
+        run.stop_time(vehicle=11)
+    with pytest.raises(ValueError, match="threshold"):
+        run.stop_time(threshold=0.0)
+
+
+def test_balancing_speed_is_where_traction_meets_resistance_and_grade():
+    consist = train.make_consist("2 SD40-2 + 60 loaded hopper")
+    climb = train.TrainModel(consist, route=train.Route((0.0,), (0.01,)), notch=8)
+    v = climb.balancing_speed()
+    assert abs(climb.quasi_static(v).acceleration) < 1e-9
+    # Independently: two locomotives' effort equals the Davis and grade resistance of the train.
+    pull = 2 * train.tractive_effort(v, 8, LOCO.max_tractive_effort, LOCO.rail_power)
+    resist = sum(
+        train.davis_resistance(v, u.mass, u.axles, u.frontal_area, kind=u.kind) for u in consist.vehicles
+    ) + float(train.grade_force(consist.mass, 0.01).sum())
+    # Brent's method stops within 1e-9 m/s; the slope of the net force is ~1e5 N per m/s.
+    assert pull == pytest.approx(resist, rel=1e-7)
+    with pytest.raises(ValueError, match="bracket the balancing speed"):
+        climb.balancing_speed(20.0, 30.0)
+
+
+def test_limiting_coupler_force_gives_the_l_over_v_asked_for():
+    hoppers = train.make_consist("3 loaded hopper")
+    f = train.limiting_coupler_force(hoppers, 1 / 150, 0.5)
+    theta = train.coupler_angles(hoppers, 1 / 150)[0]
+    assert f == pytest.approx(0.5 * HOPPER.mass * GRAVITY / 4 / np.sin(theta), rel=1e-12)
+    check = train.coupler_effects(hoppers, [f, f], curvature=1 / 150).l_over_v[1]
+    assert check.max() == pytest.approx(0.5, rel=1e-12)
+    # An empty hopper between two loaded ones: the same geometry, a lighter car.
+    mixed = train.make_consist("loaded hopper + empty hopper + loaded hopper")
+    empty = train.VEHICLES["empty hopper"]
+    assert train.limiting_coupler_force(mixed, 1 / 150, 0.5) == pytest.approx(f * empty.mass / HOPPER.mass)
+    with pytest.raises(ValueError, match="curvature"):
+        train.limiting_coupler_force(hoppers, 0.0, 0.5)
+    with pytest.raises(ValueError, match="l_over_v"):
+        train.limiting_coupler_force(hoppers, 0.01, -0.5)
+
+
+def test_run_envelope_plot_draws_and_moves_the_same_artists():
+    import matplotlib.pyplot as plt
+
+    model = train.braking_model(10, 1)
+    a = train.simulate(model, 10.0, 15.0, initial_extension=0.0125, samples=101)
+    b = train.simulate(model, 10.0, 10.0, initial_extension=-0.0125, samples=101)
+    fig, ax = plt.subplots()
+    artists = a.plot_envelope(ax)
+    assert set(artists) == {"draft", "buff", "peak"}
+    np.testing.assert_array_equal(artists["draft"].get_xdata(), model.consist.coupler_offsets)
+    np.testing.assert_array_equal(artists["draft"].get_ydata(), a.max_tension / 1e3)
+    np.testing.assert_array_equal(artists["buff"].get_ydata(), -a.max_compression / 1e3)
+    lines = len(ax.lines)
+    moved = b.plot_envelope(artists=artists)
+    assert moved is artists and len(ax.lines) == lines  # updated in place, nothing new drawn
+    np.testing.assert_array_equal(artists["buff"].get_ydata(), -b.max_compression / 1e3)
+    assert artists["peak"].get_xdata()[0] == b.peak.offset
+    assert artists["peak"].get_ydata()[0] == b.peak.force / 1e3
+    wave = a.plot_wave(limit=500.0)
+    assert wave["mesh"].get_clim() == (-500.0, 500.0)
+    plt.close("all")
+
+
+def test_quasi_static_and_loop_plots_draw_their_data():
+    import matplotlib.pyplot as plt
+
+    qs = train.braking_model(10, 2).quasi_static(10.0)
+    line = qs.plot(label="level")["line"]
+    np.testing.assert_array_equal(line.get_xdata(), qs.coupler_offsets)
+    np.testing.assert_array_equal(line.get_ydata(), qs.coupler_force / 1e3)
+    loop = train.DraftGear().static_loop(0.06)
+    assert loop.energy == train.DraftGear().loop_energy(0.06)
+    drawn = loop.plot()["line"]
+    np.testing.assert_array_equal(drawn.get_xdata(), 1e3 * loop.deflection)
+    plt.close("all")
+
+
+def test_run_from_states_checks_its_input():
+    model = train.braking_model(2, 1)
+    y = np.column_stack([model.initial_state(10.0)] * 3)
+    run = model.run_from_states([0.0, 1.0, 2.0], y, 7)
+    assert run.evaluations == 7 and run.speed.shape == (3, 3)
+    with pytest.raises(ValueError, match=r"y must have shape \(6, 2\)"):
+        model.run_from_states([0.0, 1.0], y)
+    with pytest.raises(ValueError, match="strictly increasing"):
+        model.run_from_states([0.0, 2.0, 1.0], y)

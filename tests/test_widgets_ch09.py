@@ -10,7 +10,8 @@ from raildyn.widgets import chapter09
 def test_braking_widget_reports_the_model_peak():
     container, update = chapter09.braking_run_widget()
     update(slack_mm=25.0, cars=50, signal_speed=250.0, speed_kmh=72.0)
-    force, coupler, _ = chapter09.braking_run(50, 25.0, 250.0, 72.0).peak()
+    peak = chapter09.braking_run(50, 25.0, 250.0, 72.0).peak
+    force, coupler = peak.force, peak.coupler
     status = container.children[-2].children[-1].value
     assert f"peak {abs(force) / 1e3:.0f} kN" in status and f"coupler {coupler} " in status
 
@@ -27,3 +28,25 @@ def test_string_lining_marker_is_on_the_curve():
 def test_static_grids_are_small():
     for recipe in (chapter09.BRAKING_RUN, chapter09.STRING_LINING):
         assert len(recipe.static) == 1 and 8 <= len(next(iter(recipe.static.values()))) <= 16
+
+
+def test_braking_widget_envelope_is_the_runs_own_plot_moved_in_place():
+    # The envelope is drawn by TrainRun.plot_envelope and moved in place on later changes:
+    # its x data are the coupler positions of the consist chosen, its y data the run's envelope.
+    container, update = chapter09.braking_run_widget()
+    ax = container.live.figure.axes[0]
+    lines = list(ax.lines)
+    update(cars=20, slack_mm=50.0, signal_speed=150.0, speed_kmh=40.0)
+    assert list(ax.lines) == lines
+    run = chapter09.braking_run(20, 50.0, 150.0, 40.0)
+    draft, buff, peak = lines[:3]
+    np.testing.assert_array_equal(
+        draft.get_xdata(), train.make_consist("2 SD40-2 + 20 loaded hopper").coupler_offsets
+    )
+    np.testing.assert_array_equal(draft.get_ydata(), run.max_tension / 1e3)
+    np.testing.assert_array_equal(buff.get_ydata(), -run.max_compression / 1e3)
+    assert peak.get_xdata()[0] == run.peak.offset
+    status = container.children[-2].children[-1].value
+    assert (
+        f"{run.peak.kind} at coupler {run.peak.coupler} ({run.peak.offset:.0f} m behind the front)" in status
+    )

@@ -56,7 +56,6 @@ def quasi_static_forces() -> Figure:
     consist = train.make_consist("2 SD40-2 + 100 loaded hopper")
     fig = new_figure(figsize=(6.5, 3.6))
     ax = fig.subplots()
-    where = np.cumsum(consist.length)[:-1]
     routes = {
         "level": train.Route.level(),
         "crest": train.Route((0.0, 1000.0), (0.005, -0.005)),
@@ -65,12 +64,9 @@ def quasi_static_forces() -> Figure:
     for k, (name, route) in enumerate(routes.items()):
         model = train.TrainModel(consist, route=route, notch=8, front_start=1800.0)
         qs = model.quasi_static(30 / 3.6)
-        label = f"{name}, a = {qs.acceleration:+.3f} m/s²"
-        ax.plot(where, qs.forces / 1e3, color=plots.COLORS[k], label=label)
+        qs.plot(ax, label=f"{name}, a = {qs.acceleration:+.3f} m/s²", color=plots.COLORS[k])
     ax.axhline(0, color="0.4", lw=0.8)
     ax.axvline(800.0, color="0.6", ls=":", lw=1)
-    ax.set_xlabel("coupler position behind the front (m)")
-    ax.set_ylabel("coupler force (kN, + draft)")
     ax.legend(loc="upper right")
     return fig
 
@@ -85,17 +81,14 @@ def draft_gear_loop() -> Figure:
     gear = train.DraftGear()
     fig = new_figure(figsize=(5.5, 3.6))
     ax = fig.subplots()
-    u, f = gear.static_loop(0.06)
-    ax.fill(1e3 * u, f / 1e3, color=plots.COLORS[0], alpha=0.2)
-    ax.plot(1e3 * u, f / 1e3, color=plots.COLORS[0])
+    loop = gear.static_loop(0.06)
+    loop.plot(ax)
     d = np.linspace(-0.1, 0.1, 801)
     ax.plot(
-        1e3 * (np.abs(d) - gear.slack / 2).clip(0),
+        1e3 * gear.deflection(d),
         np.abs(gear.force(d, np.sign(d))) / 1e3,
         color="0.6",
         lw=0.8,
     )
-    ax.set_xlabel("draft-gear deflection (mm)")
-    ax.set_ylabel("force (kN)")
-    ax.set_title(f"energy absorbed {gear.loop_energy(0.06) / 1e3:.1f} kJ per cycle to 60 mm")
+    ax.set_title(f"energy absorbed {loop.energy / 1e3:.1f} kJ per cycle to 60 mm")
     return fig

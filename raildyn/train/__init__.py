@@ -8,12 +8,38 @@
 * :mod:`~raildyn.train.lateral` — lateral and vertical components of coupler forces: L/V, wheel unloading.
 
 SI units throughout (m, kg, s, N); ``davis_resistance(..., units="US")`` speaks lbf, tons, mph, ft².
+
+Every analysis returns a frozen dataclass (``TrainRun``, ``CouplerPeak``, ``QuasiStatic``,
+``CouplerEffects``, ``DraftGearLoop``); those worth a picture draw it with ``plot``/``plot_*``
+methods, which the figures and widgets of chapter 9 call. ``simulate`` raises
+:class:`raildyn.errors.SolverError` when it cannot finish; a returned run is a success.
+
+Examples
+--------
+>>> from raildyn import train
+>>> run = train.simulate(train.braking_model(10, 1), 20.0, 20.0, samples=201)
+>>> run.coupler_force.shape, run.peak.kind
+((10, 201), 'buff')
 """
 
-from raildyn.train.couplers import DraftGear
-from raildyn.train.forces import NOTCHES, AirBrake, dynamic_brake_force, tractive_effort
-from raildyn.train.lateral import CouplerEffects, coupler_angles, coupler_effects
-from raildyn.train.longitudinal import QuasiStatic, TrainModel, TrainRun, braking_model, simulate
+from raildyn.train.couplers import DraftGear, DraftGearLoop
+from raildyn.train.forces import (
+    DYNAMIC_BRAKE_FADE_SPEED,
+    DYNAMIC_BRAKE_PEAK_SPEED,
+    NOTCHES,
+    AirBrake,
+    dynamic_brake_force,
+    tractive_effort,
+)
+from raildyn.train.lateral import CouplerEffects, coupler_angles, coupler_effects, limiting_coupler_force
+from raildyn.train.longitudinal import (
+    CouplerPeak,
+    QuasiStatic,
+    TrainModel,
+    TrainRun,
+    braking_model,
+    simulate,
+)
 from raildyn.train.resistance import (
     MODIFIED_DAVIS_K,
     Route,
@@ -24,13 +50,17 @@ from raildyn.train.resistance import (
 from raildyn.train.vehicles import VEHICLES, Consist, Vehicle, make_consist
 
 __all__ = [
+    "DYNAMIC_BRAKE_FADE_SPEED",
+    "DYNAMIC_BRAKE_PEAK_SPEED",
     "MODIFIED_DAVIS_K",
     "NOTCHES",
     "VEHICLES",
     "AirBrake",
     "Consist",
     "CouplerEffects",
+    "CouplerPeak",
     "DraftGear",
+    "DraftGearLoop",
     "QuasiStatic",
     "Route",
     "TrainModel",
@@ -43,6 +73,7 @@ __all__ = [
     "davis_resistance",
     "dynamic_brake_force",
     "grade_force",
+    "limiting_coupler_force",
     "make_consist",
     "simulate",
     "tractive_effort",

@@ -11,6 +11,12 @@ Everything the loop needs is packed into three float arrays (so a call unboxes
 few arguments): ``table`` has one column per vehicle and the rows named by the
 ``ROW_*`` constants; ``scalars`` holds the coupler law, the brake, the driver's
 settings and flags (``S_*``); ``route`` is ``[positions, grade, curvature]``.
+The dynamic brake's corner speeds come in ``scalars`` too, from
+:data:`raildyn.train.forces.DYNAMIC_BRAKE_PEAK_SPEED` and ``..._FADE_SPEED`` (their one
+definition), and the throttle as the fraction ``notch / NOTCHES``.
+
+Nothing here checks its input: ``TrainModel.rhs`` checks the shape and finiteness of
+the state before it calls :func:`rhs`, which trusts ``y`` to hold ``2 n`` numbers.
 """
 
 from __future__ import annotations
@@ -20,16 +26,17 @@ import math
 import numba
 import numpy as np
 
+__all__ = ["ROWS", "SCALARS", "all_finite", "coupler_force", "rhs"]
+
 # Rows of ``table`` (one column per vehicle).
 (ROW_INV_MASS, ROW_A0, ROW_A1, ROW_A2, ROW_CURVE, ROW_WEIGHT, ROW_BRAKE, ROW_ARRIVAL,
  ROW_SPACING, ROW_POWER, ROW_EFFORT, ROW_DYNAMIC) = range(ROWS := 12)  # fmt: skip
 
-# Entries of ``scalars``; the last four are flags (1.0 or 0.0).
+# Entries of ``scalars``; the last four are flags (1.0 or 0.0). S_THROTTLE is notch / NOTCHES;
+# S_DYNAMIC_PEAK and S_DYNAMIC_FADE are the dynamic brake's corner speeds (m/s).
 (S_SLACK, S_K_LOAD, S_K_UNLOAD, S_TRAVEL, S_K_SOLID, S_SMOOTHING, S_TRANSITION, S_CREEP,
- S_BRAKE_START, S_BUILD_UP, S_NOTCH, S_DYNAMIC,
- S_RESISTANCE, S_BRAKE, S_TRACTION, S_ROUTE) = range(SCALARS := 16)  # fmt: skip
-NOTCH_FRACTION_PER_STEP = 1.0 / 8.0  # forces.NOTCHES = 8
-DYNAMIC_PEAK, DYNAMIC_FADE = 8.0, 20.0  # m/s, the corner speeds of forces.dynamic_brake_force
+ S_BRAKE_START, S_BUILD_UP, S_THROTTLE, S_DYNAMIC, S_DYNAMIC_PEAK, S_DYNAMIC_FADE,
+ S_RESISTANCE, S_BRAKE, S_TRACTION, S_ROUTE) = range(SCALARS := 18)  # fmt: skip
 
 
 @numba.njit(cache=True, fastmath=False)
@@ -52,6 +59,15 @@ def coupler_force(delta, rate, s):
     if s[S_K_SOLID] > 0.0:
         force += s[S_K_SOLID] * max(u - s[S_TRAVEL], 0.0)
     return sign * force
+
+
+@numba.njit(cache=True)
+def all_finite(a):
+    """True if every entry of the 1-D array ``a`` is finite (0.4 µs for 300 entries; numpy takes 2 µs)."""
+    for x in a:
+        if not math.isfinite(x):
+            return False
+    return True
 
 
 @numba.njit(cache=True)
@@ -92,8 +108,8 @@ def rhs(t, y, table, scalars, route):
             total -= table[ROW_WEIGHT, i] * grade / math.sqrt(1.0 + grade * grade)
         if s[S_TRACTION] > 0.0:
             limit = table[ROW_POWER, i] / max(speed, 1e-6)
-            traction = s[S_NOTCH] * NOTCH_FRACTION_PER_STEP * min(table[ROW_EFFORT, i], limit)
-            shape = min(speed / DYNAMIC_PEAK, min(1.0, DYNAMIC_FADE / max(speed, 1e-12)))
+            traction = s[S_THROTTLE] * min(table[ROW_EFFORT, i], limit)
+            shape = min(speed / s[S_DYNAMIC_PEAK], min(1.0, s[S_DYNAMIC_FADE] / max(speed, 1e-12)))
             dynamic = s[S_DYNAMIC] * table[ROW_DYNAMIC, i] * shape
             total += traction - math.tanh(v / creep) * dynamic
         force[i] += total

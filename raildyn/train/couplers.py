@@ -18,9 +18,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import matplotlib
 import numpy as np
 
-from raildyn import _checks
+from raildyn import _checks, plots
+
+__all__ = ["DraftGear", "DraftGearLoop"]
 
 
 @dataclass(frozen=True)
@@ -78,7 +81,24 @@ class DraftGear:
         _checks.positive("transition_rate", self.transition_rate)
 
     def deflection(self, extension):
-        """Draft-gear deflection magnitude u >= 0 and du/d|δ| for a coupler extension δ (m)."""
+        """Draft-gear deflection for a coupler extension, with the gap corner rounded.
+
+        Parameters
+        ----------
+        extension : float or array
+            Coupler extension δ, m (see ``force``).
+
+        Returns
+        -------
+        ndarray
+            Deflection u >= 0, m, the shape of ``extension``: 0 inside the gap,
+            ``|δ| − slack/2`` beyond the blend, ``(|δ| − slack/2 + ε)²/(4ε)`` within it.
+        """
+        u, _ = self._deflection_and_slope(_checks.array("extension", extension))
+        return u
+
+    def _deflection_and_slope(self, extension):
+        """Deflection u >= 0 (m) and du/d|δ| for a coupler extension δ (m)."""
         if self.slack == 0:
             # No gap, no corner to smooth: the gear deflects from δ = 0.
             return np.abs(extension), np.ones(np.shape(extension))
@@ -89,18 +109,31 @@ class DraftGear:
         return u, b * (0.5 / eps)
 
     def force(self, extension, rate):
-        """Coupler force, N (+ draft/tension, − buff/compression), vectorised.
+        """Coupler force, vectorised over couplers and times.
 
         Parameters
         ----------
-        extension : array
+        extension : float or array
             δ = (separation of the two vehicle centres) − (its value with the slack
             centred), m; > 0 pulls the vehicles apart.
-        rate : array
-            dδ/dt, m/s.
+        rate : float or array
+            dδ/dt, m/s; broadcasts against ``extension``.
+
+        Returns
+        -------
+        ndarray
+            Force, N (+ draft/tension, − buff/compression).
+
+        Examples
+        --------
+        >>> gear = DraftGear(slack=0.02)
+        >>> gear.force([0.005, 0.03], [0.0, 1.0]) / 1e3  # inside the gap; loading, 20 mm past it
+        array([  0., 500.])
         """
+        extension = _checks.array("extension", extension)
+        rate = _checks.array("rate", rate)
         s = np.sign(extension)
-        u, slope = self.deflection(extension)
+        u, slope = self._deflection_and_slope(extension)
         # k_u + (k_l − k_u)(1 + tanh)/2, written as mean ± half difference
         mean = 0.5 * (self.loading_stiffness + self.unloading_stiffness)
         half = 0.5 * (self.loading_stiffness - self.unloading_stiffness)
@@ -111,21 +144,89 @@ class DraftGear:
         return s * force
 
     def loop_energy(self, amplitude: float) -> float:
-        """Energy absorbed by one slow load–unload cycle from 0 to deflection ``amplitude``, J.
+        """Energy absorbed by one slow load–unload cycle from 0 to deflection ``amplitude``.
 
         The area between the loading and unloading branches, ``(k_l − k_u) U²/2``
         while ``U`` is within the travel (the solid part is elastic).
+
+        Parameters
+        ----------
+        amplitude : float
+            Largest deflection U of the cycle, m (>= 0).
+
+        Returns
+        -------
+        float
+            Energy, J.
         """
         amplitude = _checks.nonnegative("amplitude", amplitude)
         u = min(amplitude, self.travel)
         return 0.5 * (self.loading_stiffness - self.unloading_stiffness) * u**2
 
-    def static_loop(self, amplitude: float, points: int = 200):
-        """The load–unload loop to ``amplitude`` (m): deflection and force arrays (m, N), closed."""
+    def static_loop(self, amplitude: float, points: int = 200) -> DraftGearLoop:
+        """The slow load–unload loop of the gear to a deflection ``amplitude``.
+
+        Parameters
+        ----------
+        amplitude : float
+            Largest deflection, m (> 0).
+        points : int
+            Points on each branch (>= 2).
+
+        Returns
+        -------
+        DraftGearLoop
+            The closed loop (loading branch up, unloading branch down) and its energy.
+        """
         amplitude = _checks.positive("amplitude", amplitude)
+        points = _checks.integer("points", points, low=2)
         up = np.linspace(0.0, amplitude, points)
         down = up[::-1]
         solid = self.solid_stiffness * np.maximum(up - self.travel, 0.0)
         f_up = self.loading_stiffness * up + solid
         f_down = self.unloading_stiffness * down + solid[::-1]
-        return np.r_[up, down, 0.0], np.r_[f_up, f_down, 0.0]
+        return DraftGearLoop(
+            deflection=np.r_[up, down, 0.0],
+            force=np.r_[f_up, f_down, 0.0],
+            energy=self.loop_energy(amplitude),
+        )
+
+
+@dataclass(frozen=True)
+class DraftGearLoop:
+    """A slow load–unload loop of a draft gear.
+
+    Attributes
+    ----------
+    deflection : ndarray (2 points + 1,)
+        Deflection around the closed loop, m.
+    force : ndarray, shape of ``deflection``
+        Force around the loop, N.
+    energy : float
+        Energy absorbed per cycle (the area of the loop), J.
+    """
+
+    deflection: np.ndarray
+    force: np.ndarray
+    energy: float
+
+    def plot(self, ax=None) -> dict:
+        """Draw the loop (kN against mm) with its area shaded.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default.
+
+        Returns
+        -------
+        dict
+            The artists: ``line`` (the loop) and ``area`` (the shaded energy).
+        """
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            (area,) = ax.fill(1e3 * self.deflection, self.force / 1e3, color=plots.COLORS[0], alpha=0.2)
+            (line,) = ax.plot(1e3 * self.deflection, self.force / 1e3, color=plots.COLORS[0])
+            ax.set_xlabel("draft-gear deflection (mm)")
+            ax.set_ylabel("force (kN)")
+        return {"line": line, "area": area}

@@ -24,14 +24,33 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.train.vehicles import Consist, G
+from raildyn.constants import GRAVITY
+from raildyn.train.vehicles import Consist
+
+__all__ = ["CouplerEffects", "coupler_angles", "coupler_effects", "limiting_coupler_force"]
 
 
 def coupler_angles(consist: Consist, curvature) -> np.ndarray:
-    """Angle between each coupler and the bodies it joins, rad (shape (n−1,)).
+    """Angle between each coupler and the bodies it joins, ``θ = κ (L_i + L_{i+1})/4``.
 
-    ``curvature`` (1/m): a number, or one value per coupler (its sign gives the
-    sign of the angle).
+    Parameters
+    ----------
+    consist : Consist
+        The vehicles, front first.
+    curvature : float or array (n−1,)
+        Track curvature κ at the couplers, 1/m: a number, or one value per coupler
+        (its sign gives the sign of the angle).
+
+    Returns
+    -------
+    ndarray (n−1,)
+        Angles, rad, front coupler first.
+
+    Examples
+    --------
+    >>> from raildyn.train import make_consist
+    >>> coupler_angles(make_consist("3 loaded hopper"), 1 / 200).round(4)  # rad
+    array([0.0404, 0.0404])
     """
     if not isinstance(consist, Consist):
         raise TypeError(f"consist must be a Consist, got {type(consist).__name__}")
@@ -87,6 +106,7 @@ def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=
     Parameters
     ----------
     consist : Consist
+        The vehicles, front first.
     forces : array (n−1,)
         Coupler forces, N.
     curvature : float or array (n−1,)
@@ -94,6 +114,11 @@ def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=
         given relative to the outside of the curve).
     vertical_curvature : float or array (n−1,)
         1/m, + in a sag, − on a crest.
+
+    Returns
+    -------
+    CouplerEffects
+        Truck forces, L/V, unloading and the mode of each coupler.
 
     Examples
     --------
@@ -103,6 +128,8 @@ def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=
     >>> bool(e.lateral_force[1, 0] < 0)  # tension pulls the middle car toward the inside
     True
     """
+    if not isinstance(consist, Consist):
+        raise TypeError(f"consist must be a Consist, got {type(consist).__name__}")
     f = _checks.array("forces", forces, shape=(consist.couplers,))
     theta = np.abs(coupler_angles(consist, curvature))
     phi = coupler_angles(consist, vertical_curvature)
@@ -110,10 +137,59 @@ def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=
     lateral = _truck_loads(consist, lateral_end)
     # In a sag (φ > 0) the coupler line lies below the bodies, so tension lifts the car ends.
     vertical = _truck_loads(consist, f * np.sin(phi))
-    weight = consist.mass * G
+    weight = consist.mass * GRAVITY
     l_over_v = np.abs(lateral) / (weight[:, None] / 4)
     unloading = vertical / (weight[:, None] / 2)
     mode = np.where(
         (theta > 0) & (f > 0), "string-lining", np.where((theta > 0) & (f < 0), "jack-knifing", "")
     )
     return CouplerEffects(lateral, l_over_v, vertical, unloading, mode)
+
+
+def limiting_coupler_force(consist: Consist, curvature, l_over_v: float, vehicle: int = 1) -> float:
+    """The coupler force, the same in every coupler, that brings one vehicle's truck-side L/V to a limit.
+
+    The L/V of :func:`coupler_effects` is proportional to the size of the coupler
+    force (draft and buff alike), so the force is ``l_over_v`` over the L/V of the
+    vehicle's worse truck at 1 N. For the middle of three equal vehicles this is
+    ``F = (L/V)(m g/4)/sin θ``.
+
+    Parameters
+    ----------
+    consist : Consist
+        The vehicles, front first (at least two).
+    curvature : float or array (n−1,)
+        Horizontal curvature at the couplers, 1/m (not zero everywhere).
+    l_over_v : float
+        The truck-side L/V to reach (> 0).
+    vehicle : int
+        Index of the vehicle, 0 at the front; negative counts from the rear.
+
+    Returns
+    -------
+    float
+        Size of the coupler force, N (> 0): a tension string-lines the vehicle, a
+        compression of the same size jack-knifes it.
+
+    Examples
+    --------
+    >>> from raildyn.train import make_consist
+    >>> round(limiting_coupler_force(make_consist("3 loaded hopper"), 1 / 150, 0.5) / 1e3)  # kN
+    2955
+    """
+    if not isinstance(consist, Consist):
+        raise TypeError(f"consist must be a Consist, got {type(consist).__name__}")
+    if consist.couplers < 1:
+        raise ValueError(f"consist must hold at least two vehicles, got {len(consist)}")
+    limit = _checks.positive("l_over_v", l_over_v)
+    n = len(consist)
+    vehicle = _checks.integer("vehicle", vehicle, low=-n, high=n - 1)
+    per_newton = (
+        coupler_effects(consist, np.ones(consist.couplers), curvature=curvature).l_over_v[vehicle].max()
+    )
+    if per_newton == 0.0:
+        raise ValueError(
+            f"curvature must turn the track at the couplers of vehicle {vehicle}; got {curvature!r}, "
+            "where coupler forces have no lateral component"
+        )
+    return float(limit / per_newton)

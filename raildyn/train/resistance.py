@@ -8,15 +8,29 @@ from SI at the edge. A :class:`Route` is grade and curvature against position.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from raildyn import _checks
-from raildyn.train.vehicles import FT, LB, LBF, G
+from raildyn.constants import GRAVITY
+from raildyn.train.vehicles import FT, LB, LBF
 
-SHORT_TON = 2000 * LB  # kg
-MPH = 1609.344 / 3600  # m/s per mph (exact)
+__all__ = [
+    "CURVE_RESISTANCE",
+    "MODIFIED_DAVIS_K",
+    "MPH",
+    "SHORT_TON",
+    "Route",
+    "curve_resistance",
+    "davis_resistance",
+    "grade_force",
+]
+
+#: kg per short ton (2000 lb, exact).
+SHORT_TON = 2000 * LB
+#: m/s per mile per hour (exact).
+MPH = 1609.344 / 3600
 
 # Original Davis coefficients by vehicle kind {davis1926}: b in lb/ton per mph, C in lb/ton per
 # (ft²·mph²/(ton-per-axle·axles)). Freight cars b = 0.045, C = 0.0005; locomotives and passenger
@@ -24,10 +38,12 @@ MPH = 1609.344 / 3600  # m/s per mph (exact)
 _DAVIS_ORIGINAL = {"freight": (0.045, 0.0005), "locomotive": (0.03, 0.0024), "passenger": (0.03, 0.00034)}
 # Modified (AREA Committee 16) form: R = 0.6 + 20/w + 0.01 V + K V²/(w n), with K = 0.07 for
 # conventional equipment, 0.0935 for containers and 0.16 for trailers on flat cars {hay1982}.
+#: Drag coefficient K of the modified Davis formula by kind of equipment {hay1982}.
 MODIFIED_DAVIS_K = {"conventional": 0.07, "container": 0.0935, "trailer on flat car": 0.16}
 
 # AREA curve resistance: 0.8 lb per ton per degree of curve {hay1982}. A degree of curve (arc
 # definition, 100 ft of arc) is D = 18000/(π R_ft), so per unit curvature in SI:
+#: Curve resistance per unit mass and unit curvature, N/(kg·m⁻¹) (AREA 0.8 lb/ton per degree {hay1982}).
 CURVE_RESISTANCE = 0.8 * LBF / SHORT_TON * 18000 / np.pi * FT  # N per kg per (1/m)
 
 
@@ -68,7 +84,9 @@ def davis_resistance(
     kind : {"freight", "locomotive", "passenger"}
         Original-form coefficients.
     form : {"original", "modified"}
+        Which Davis formula.
     units : {"SI", "US"}
+        Units of the arguments and of the result.
     drag_coefficient : float, optional
         Overrides C (original) or K (modified; default 0.07, conventional equipment).
 
@@ -113,19 +131,46 @@ def davis_resistance(
 
 
 def grade_force(mass, grade):
-    """Gravity component along the track, N, positive resisting an uphill climb.
+    """Gravity component along the track, positive resisting an uphill climb.
 
     ``F = m g sin(arctan(grade))`` with ``grade`` the rise over run (0.01 = 1 %).
+
+    Parameters
+    ----------
+    mass : float or array
+        Mass, kg (> 0).
+    grade : float or array
+        Rise over run, + uphill in the direction of travel; broadcasts against ``mass``.
+
+    Returns
+    -------
+    ndarray
+        Force along the track, N (+ resisting the motion).
+
+    Examples
+    --------
+    >>> float(grade_force(1000.0, 0.01).round(2))  # one tonne on a 1 % climb
+    98.06
     """
     m = _checks.array("mass", mass, low=0.0, low_open=True)
     gr = _checks.array("grade", grade)
-    return m * G * gr / np.sqrt(1.0 + gr**2)
+    return m * GRAVITY * gr / np.sqrt(1.0 + gr**2)
 
 
 def curve_resistance(mass, curvature):
-    """Curve resistance, N: the AREA 0.8 lb/ton per degree of curve {hay1982} written per 1/m.
+    """Curve resistance: the AREA 0.8 lb/ton per degree of curve {hay1982} written per 1/m.
 
-    ``curvature`` is 1/R in 1/m (its sign, the direction of the curve, is ignored).
+    Parameters
+    ----------
+    mass : float or array
+        Mass, kg (> 0).
+    curvature : float or array
+        1/R, 1/m (its sign, the direction of the curve, is ignored); broadcasts against ``mass``.
+
+    Returns
+    -------
+    ndarray
+        Resistance, N (>= 0).
     """
     m = _checks.array("mass", mass, low=0.0, low_open=True)
     k = np.abs(_checks.array("curvature", curvature))
@@ -137,16 +182,31 @@ class Route:
     """Grade and curvature against position along the line.
 
     Segment ``k`` runs from ``positions[k]`` to ``positions[k+1]`` (the last one
-    without end, and the first one also backwards) with constant ``grade[k]``
-    (rise over run, + uphill in the direction of travel), horizontal curvature
-    ``curvature[k]`` (1/m, + to the left) and vertical curvature
-    ``vertical_curvature[k]`` (1/m, + for a sag, − for a crest).
+    without end, and the first one also backwards) with constant ``grade[k]``,
+    horizontal curvature ``curvature[k]`` and vertical curvature
+    ``vertical_curvature[k]``.
+
+    Parameters
+    ----------
+    positions : sequence of float
+        Start of each segment along the line, m; strictly increasing.
+    grade : sequence of float
+        Rise over run of each segment, + uphill in the direction of travel.
+    curvature : sequence of float, optional
+        Horizontal curvature of each segment, 1/m (+ to the left); 0 by default.
+    vertical_curvature : sequence of float, optional
+        Vertical curvature of each segment, 1/m (+ for a sag, − for a crest); 0 by default.
     """
 
     positions: tuple
     grade: tuple
     curvature: tuple | None = None
     vertical_curvature: tuple | None = None
+    # The segment table as arrays, set in __post_init__: starts (m) and [grade, curvature,
+    # vertical curvature] by segment.
+    _x: np.ndarray = field(init=False, repr=False, compare=False)
+    _table: np.ndarray = field(init=False, repr=False, compare=False)
+    _level: bool = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         x = _checks.array("positions", self.positions, ndim=1)
@@ -165,25 +225,65 @@ class Route:
 
     @property
     def is_level(self) -> bool:
-        """True when the route is level tangent track everywhere."""
+        """True when the route is level tangent track everywhere (no grade, no horizontal curve)."""
         return self._level
 
     @classmethod
     def level(cls) -> Route:
-        """Level tangent track everywhere."""
+        """Level tangent track everywhere.
+
+        Returns
+        -------
+        Route
+            One segment with no grade and no curvature.
+        """
         return cls((0.0,), (0.0,))
 
     def _segment(self, position):
+        position = _checks.array("position", position)
         return np.clip(np.searchsorted(self._x, position, side="right") - 1, 0, self._x.size - 1)
 
     def grade_at(self, position) -> np.ndarray:
-        """Grade at ``position`` (m; any shape)."""
+        """Grade at a position along the line.
+
+        Parameters
+        ----------
+        position : float or array
+            Position along the line, m.
+
+        Returns
+        -------
+        ndarray
+            Rise over run, the shape of ``position``.
+        """
         return self._table[0][self._segment(position)]
 
     def curvature_at(self, position) -> np.ndarray:
-        """Horizontal curvature at ``position``, 1/m."""
+        """Horizontal curvature at a position along the line.
+
+        Parameters
+        ----------
+        position : float or array
+            Position along the line, m.
+
+        Returns
+        -------
+        ndarray
+            Curvature, 1/m (+ to the left), the shape of ``position``.
+        """
         return self._table[1][self._segment(position)]
 
     def vertical_curvature_at(self, position) -> np.ndarray:
-        """Vertical curvature at ``position``, 1/m (+ sag)."""
+        """Vertical curvature at a position along the line.
+
+        Parameters
+        ----------
+        position : float or array
+            Position along the line, m.
+
+        Returns
+        -------
+        ndarray
+            Curvature, 1/m (+ sag, − crest), the shape of ``position``.
+        """
         return self._table[2][self._segment(position)]

@@ -15,12 +15,18 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from raildyn import _checks
+from raildyn.constants import GRAVITY
 
-LB = 0.45359237  # kg per pound (exact)
-FT = 0.3048  # m per foot (exact)
-LBF = 4.4482216152605  # N per pound-force (exact)
-HP = 745.69987158227  # W per mechanical horsepower
-G = 9.80665  # m/s², standard gravity
+__all__ = ["DAVIS_KINDS", "FT", "HP", "LB", "LBF", "VEHICLES", "Consist", "Vehicle", "make_consist"]
+
+#: kg per pound (exact, international pound).
+LB = 0.45359237
+#: m per foot (exact, international foot).
+FT = 0.3048
+#: N per pound-force (exact: one pound under standard gravity).
+LBF = LB * GRAVITY
+#: W per mechanical horsepower (550 ft·lbf/s).
+HP = 550 * FT * LBF
 
 
 @dataclass(frozen=True)
@@ -30,6 +36,7 @@ class Vehicle:
     Parameters
     ----------
     name : str
+        Name of the vehicle type, as :func:`make_consist` looks it up.
     mass : float
         Mass on the rails, kg (> 0).
     length : float
@@ -79,10 +86,11 @@ class Vehicle:
 
     @property
     def weight(self) -> float:
-        """Weight m·g, N."""
-        return self.mass * G
+        """Weight m·g, N (standard gravity, ``raildyn.constants.GRAVITY``)."""
+        return self.mass * GRAVITY
 
 
+#: The vehicle kinds the original Davis formula has coefficients for.
 DAVIS_KINDS = ("locomotive", "freight", "passenger")
 
 # Emergency brake retarding force of a wagon: a net braking ratio (shoe force over
@@ -111,7 +119,7 @@ VEHICLES: dict[str, Vehicle] = {
         max_tractive_effort=115_000 * LBF,
         rail_power=_TRANSMISSION_EFFICIENCY * 3000 * HP,
         max_dynamic_brake=360e3,
-        brake_force=_BRAKE_FRACTION * 368_000 * LB * G,
+        brake_force=_BRAKE_FRACTION * 368_000 * LB * GRAVITY,
     ),
     # Loaded 4-axle coal hopper at the AAR 286,000 lb gross rail load {railroadnet_286k}; length over the
     # pulling faces 53 ft and truck centres 40 ft 8 in are assumed typical values; frontal area
@@ -123,7 +131,7 @@ VEHICLES: dict[str, Vehicle] = {
         axles=4,
         frontal_area=90 * FT**2,
         truck_centres=(40 + 8 / 12) * FT,
-        brake_force=_BRAKE_FRACTION * 286_000 * LB * G,
+        brake_force=_BRAKE_FRACTION * 286_000 * LB * GRAVITY,
     ),
     # The same hopper empty: 63,000 lb light weight (assumed typical); the brake rigging is
     # the same, so the empty car keeps a lower absolute brake force (AAR empty-car ratio
@@ -135,7 +143,7 @@ VEHICLES: dict[str, Vehicle] = {
         axles=4,
         frontal_area=90 * FT**2,
         truck_centres=(40 + 8 / 12) * FT,
-        brake_force=0.25 * 0.35 * 63_000 * LB * G,
+        brake_force=0.25 * 0.35 * 63_000 * LB * GRAVITY,
     ),
 }
 
@@ -144,14 +152,41 @@ VEHICLES: dict[str, Vehicle] = {
 class Consist:
     """An ordered train of vehicles, front (index 0) to rear.
 
-    Attributes are numpy arrays over the vehicles (shape ``(n,)``), SI units.
+    Parameters
+    ----------
+    vehicles : tuple of Vehicle
+        The vehicles, front first (at least one).
+    description : str
+        How the consist was described (``make_consist``'s text), for display.
+
+    Attributes
+    ----------
+    mass, length, axles, frontal_area, truck_centres : ndarray (n,)
+        Each vehicle's value of the :class:`Vehicle` field of the same name (kg, m, -, m², m).
+    max_tractive_effort, rail_power, max_dynamic_brake, brake_force : ndarray (n,)
+        Each vehicle's traction and brake capability (N, W, N, N).
+    locomotive : ndarray of bool (n,)
+        True where the vehicle is a locomotive.
     """
 
     vehicles: tuple[Vehicle, ...]
     description: str = ""
-    _arrays: dict = field(default_factory=dict, repr=False, compare=False)
+    # Per-vehicle arrays, derived from ``vehicles`` in __post_init__.
+    mass: np.ndarray = field(init=False, repr=False, compare=False)
+    length: np.ndarray = field(init=False, repr=False, compare=False)
+    axles: np.ndarray = field(init=False, repr=False, compare=False)
+    frontal_area: np.ndarray = field(init=False, repr=False, compare=False)
+    truck_centres: np.ndarray = field(init=False, repr=False, compare=False)
+    max_tractive_effort: np.ndarray = field(init=False, repr=False, compare=False)
+    rail_power: np.ndarray = field(init=False, repr=False, compare=False)
+    max_dynamic_brake: np.ndarray = field(init=False, repr=False, compare=False)
+    brake_force: np.ndarray = field(init=False, repr=False, compare=False)
+    locomotive: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
+        if not isinstance(self.vehicles, tuple | list):
+            raise TypeError(f"vehicles must be a tuple of Vehicle, got {type(self.vehicles).__name__}")
+        object.__setattr__(self, "vehicles", tuple(self.vehicles))
         if len(self.vehicles) < 1:
             raise ValueError("a consist needs at least one vehicle, got 0")
         for i, v in enumerate(self.vehicles):
@@ -160,17 +195,11 @@ class Consist:
         names = ("mass", "length", "axles", "frontal_area", "truck_centres", "max_tractive_effort")
         names += ("rail_power", "max_dynamic_brake", "brake_force")
         for name in names:
-            self._arrays[name] = np.array([getattr(v, name) for v in self.vehicles], dtype=float)
-        self._arrays["locomotive"] = np.array([v.kind == "locomotive" for v in self.vehicles])
+            object.__setattr__(self, name, np.array([getattr(v, name) for v in self.vehicles], dtype=float))
+        object.__setattr__(self, "locomotive", np.array([v.kind == "locomotive" for v in self.vehicles]))
 
     def __len__(self) -> int:
         return len(self.vehicles)
-
-    def __getattr__(self, name):
-        arrays = self.__dict__.get("_arrays", {})
-        if name in arrays:
-            return arrays[name]
-        raise AttributeError(name)
 
     @property
     def total_mass(self) -> float:
@@ -189,12 +218,41 @@ class Consist:
         return ends - 0.5 * self.length
 
     @property
+    def coupler_offsets(self) -> np.ndarray:
+        """Distance of each coupler (the joint between vehicles j and j+1) behind the front, m.
+
+        Shape ``(n−1,)``, front coupler first; with the slack centred. The one place
+        that places the couplers along the train: runs, quasi-static results, figures
+        and widgets all read it.
+
+        Examples
+        --------
+        >>> make_consist("3 loaded hopper").coupler_offsets.round(2)
+        array([16.15, 32.31])
+        """
+        return np.cumsum(self.length)[:-1]
+
+    @property
     def couplers(self) -> int:
         """Number of couplers between vehicles (n − 1)."""
         return len(self.vehicles) - 1
 
     def with_vehicle(self, index: int, **changes) -> Consist:
-        """A copy with vehicle ``index`` changed (``dataclasses.replace`` keywords)."""
+        """A copy with one vehicle changed.
+
+        Parameters
+        ----------
+        index : int
+            Index of the vehicle, 0 at the front.
+        **changes
+            :class:`Vehicle` fields and their new values (``dataclasses.replace`` keywords).
+
+        Returns
+        -------
+        Consist
+            The same consist with the one vehicle replaced.
+        """
+        index = _checks.integer("index", index, low=-len(self), high=len(self) - 1)
         vehicles = list(self.vehicles)
         vehicles[index] = replace(vehicles[index], **changes)
         return Consist(tuple(vehicles), self.description)
@@ -217,6 +275,7 @@ def make_consist(description: str, vehicles: dict[str, Vehicle] | None = None) -
     Returns
     -------
     Consist
+        The vehicles in order, front first.
 
     Examples
     --------

@@ -16,13 +16,32 @@ import numpy as np
 from raildyn import plots, train
 from raildyn.widgets._core import Recipe, slider
 
+__all__ = ["braking_run", "braking_run_widget", "string_lining"]
+
 DURATION = 40.0  # s of the braking run shown: the application, the run-in and the settling
 SLACK_GRID = [0, 10, 20, 30, 40, 50, 60, 75]  # mm, precomputed for the page without a kernel
 
 
 @lru_cache(maxsize=64)
 def braking_run(cars: int, slack_mm: float, signal_speed: float, speed_kmh: float) -> train.TrainRun:
-    """The emergency braking run of 2 SD40-2 + ``cars`` loaded hoppers, stretched at the start (cached)."""
+    """The emergency braking run of 2 SD40-2 + ``cars`` loaded hoppers, stretched at the start (cached).
+
+    Parameters
+    ----------
+    cars : int
+        Number of loaded hoppers (>= 1).
+    slack_mm : float
+        Slack of every coupler, mm (>= 0); the run starts with every coupler stretched.
+    signal_speed : float
+        Speed of the brake-pipe signal, m/s (> 0).
+    speed_kmh : float
+        Initial speed of the train, km/h.
+
+    Returns
+    -------
+    raildyn.train.TrainRun
+        The first ``DURATION`` seconds after the emergency application, 401 samples.
+    """
     model = train.braking_model(cars, 2, slack=slack_mm / 1000, propagation_speed=signal_speed)
     return train.simulate(model, DURATION, speed_kmh / 3.6, initial_extension=slack_mm / 2000, samples=401)
 
@@ -51,15 +70,9 @@ def _braking_setup(live, status):
     ax_env, ax_t = live.axes[0]
     for value in SLACK_GRID:  # precompute the grid of the static page and of a quick drag
         braking_run(50, float(value), 250.0, 72.0)
-    (draft,) = ax_env.plot([], [], color=plots.COLORS[0], label="largest draft (tension)")
-    (buff,) = ax_env.plot([], [], color=plots.COLORS[1], label="largest buff (compression)")
-    (peak_mark,) = ax_env.plot([], [], "o", color="k", mfc="w", mew=2, ms=7, label="peak")
-    ax_env.axhline(0, color="0.4", lw=0.8)
+    envelope = braking_run(50, 25.0, 250.0, 72.0).plot_envelope(ax_env)  # drawn once, then moved
     ax_env.set_xlim(0, 1800)
     ax_env.set_ylim(-1600, 700)
-    ax_env.set_xlabel("coupler position behind the front (m)")
-    ax_env.set_ylabel("coupler force envelope (kN)")
-    ax_env.legend(loc="lower right")
     (front,) = ax_t.plot([], [], color=plots.COLORS[2], lw=1.0, label="coupler 1 (behind the locomotives)")
     (worst,) = ax_t.plot([], [], color="k", label="coupler with the peak")
     (rear,) = ax_t.plot([], [], color=plots.COLORS[3], lw=1.0, label="last coupler")
@@ -69,26 +82,23 @@ def _braking_setup(live, status):
     ax_t.set_xlabel("time after the emergency application (s)")
     ax_t.set_ylabel("coupler force (kN)")
     ax_t.legend(loc="lower right")
-    live.animate(draft, buff, peak_mark, front, worst, rear)
+    live.animate(*envelope.values(), front, worst, rear)
 
     def redraw(v):
         run = braking_run(
             int(v["cars"]), float(v["slack_mm"]), float(v["signal_speed"]), float(v["speed_kmh"])
         )
-        consist = train.make_consist(f"2 SD40-2 + {int(v['cars'])} loaded hopper")
-        where = np.cumsum(consist.length)[:-1]
-        draft.set_data(where, run.max_tension / 1e3)
-        buff.set_data(where, -run.max_compression / 1e3)
-        force, j, t_peak = run.peak()
-        peak_mark.set_data([where[j]], [force / 1e3])
+        run.plot_envelope(artists=envelope)
+        peak = run.peak
         front.set_data(run.t, run.coupler_force[1] / 1e3)
-        worst.set_data(run.t, run.coupler_force[j] / 1e3)
+        worst.set_data(run.t, run.coupler_force[peak.coupler] / 1e3)
         rear.set_data(run.t, run.coupler_force[-1] / 1e3)
-        kind = "buff" if force < 0 else "draft"
+        consist = train.make_consist(f"2 SD40-2 + {int(v['cars'])} loaded hopper")
+        brake = train.AirBrake(propagation_speed=float(v["signal_speed"]))
         status.value = (
-            f"peak {abs(force) / 1e3:.0f} kN {kind} at coupler {j} ({where[j]:.0f} m behind the front) "
-            f"at t = {t_peak:.1f} s · the brake signal reaches the rear after "
-            f"{consist.train_length / v['signal_speed']:.1f} s"
+            f"peak {abs(peak.force) / 1e3:.0f} kN {peak.kind} at coupler {peak.coupler} "
+            f"({peak.offset:.0f} m behind the front) at t = {peak.time:.1f} s · the brake signal reaches "
+            f"the rear after {brake.arrival(consist.train_length):.1f} s"
         )
 
     return redraw
@@ -109,6 +119,14 @@ def braking_run_widget():
     Controls: number of wagons, slack per coupler (mm), brake-signal speed (m/s)
     and initial speed (km/h); each new combination is one whole-train integration
     (debounced: it runs when a slider is released), repeated ones come from a cache.
+    The envelope is drawn by ``TrainRun.plot_envelope`` and moved in place.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return BRAKING_RUN.build()
 
@@ -175,5 +193,12 @@ def string_lining():
 
     Controls: curve radius (m) and coupler force (kN, + draft). Grey curves:
     R = 150, 300 and 600 m.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return STRING_LINING.build()
