@@ -377,15 +377,49 @@ class LinearModel(Protocol):
         ...
 
     def matrices(self, speed) -> SystemMatrices:
-        """M, C(V), K, G_K, G_C at speed V (m/s)."""
+        """M, C(V), K, G_K, G_C at speed V.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+
+        Returns
+        -------
+        SystemMatrices
+        """
         ...
 
     def state_space(self, speed, outputs=None, derivative: int = 0):
-        """A ``control.StateSpace`` from the track inputs to the outputs at speed V (m/s)."""
+        """A ``control.StateSpace`` from the track inputs to the outputs at speed V.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+        outputs : sequence, optional
+            Output specifications (coordinate labels by default).
+        derivative : {0, 1, 2}
+            Displacement, velocity or acceleration outputs.
+
+        Returns
+        -------
+        control.StateSpace
+        """
         ...
 
     def replace(self, **changes) -> LinearModel:
-        """A validated copy with some parameters changed."""
+        """A validated copy with some parameters changed.
+
+        Parameters
+        ----------
+        **changes
+            Parameter names and their new values.
+
+        Returns
+        -------
+        LinearModel
+        """
         ...
 
 
