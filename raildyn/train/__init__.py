@@ -5,6 +5,7 @@
 * :mod:`~raildyn.train.couplers` — slack and friction draft gear with loading/unloading branches;
 * :mod:`~raildyn.train.forces` — tractive effort by notch, dynamic brake, travelling air-brake signal;
 * :mod:`~raildyn.train.longitudinal` — the whole-train equations, ``simulate`` and quasi-static forces;
+* ``raildyn.train.results`` — what the analyses return: ``TrainRun``, ``CouplerPeak``, ``QuasiStatic``;
 * :mod:`~raildyn.train.lateral` — lateral and vertical components of coupler forces: L/V, wheel unloading.
 
 SI units throughout (m, kg, s, N); ``davis_resistance(..., units="US")`` speaks lbf, tons, mph, ft².
@@ -32,14 +33,7 @@ from raildyn.train.forces import (
     tractive_effort,
 )
 from raildyn.train.lateral import CouplerEffects, coupler_angles, coupler_effects, limiting_coupler_force
-from raildyn.train.longitudinal import (
-    CouplerPeak,
-    QuasiStatic,
-    TrainModel,
-    TrainRun,
-    braking_model,
-    simulate,
-)
+from raildyn.train.longitudinal import TrainModel, braking_model, simulate
 from raildyn.train.resistance import (
     MODIFIED_DAVIS_K,
     Route,
@@ -47,6 +41,7 @@ from raildyn.train.resistance import (
     davis_resistance,
     grade_force,
 )
+from raildyn.train.results import CouplerPeak, QuasiStatic, TrainRun
 from raildyn.train.vehicles import VEHICLES, Consist, Vehicle, make_consist
 
 __all__ = [

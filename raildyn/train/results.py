@@ -1,0 +1,239 @@
+"""What an analysis of a train returns: quasi-static forces, simulated runs and their peaks.
+
+Each result is a frozen dataclass with SI fields; those worth a picture draw it
+with a ``plot``/``plot_*`` method that takes ``ax=None`` and returns its artists,
+so that the figures and the widgets of chapter 9 draw them the same way and a
+widget can move the artists in place. A :class:`TrainRun` that exists is a
+success: ``raildyn.train.simulate`` raises ``raildyn.errors.SolverError`` when it
+cannot finish.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import matplotlib
+import numpy as np
+
+from raildyn import _checks, plots
+
+__all__ = ["CouplerPeak", "QuasiStatic", "TrainRun"]
+
+
+@dataclass(frozen=True)
+class QuasiStatic:
+    """Quasi-static state of a train.
+
+    Attributes
+    ----------
+    coupler_force : ndarray (n−1,)
+        Coupler forces, N (+ tension), front coupler first.
+    acceleration : float
+        Common acceleration, m/s².
+    external_force : ndarray (n,)
+        Net external force on each vehicle, N.
+    position : ndarray (n,)
+        Route positions of the vehicle centres, m.
+    coupler_offsets : ndarray (n−1,)
+        Distance of each coupler behind the front of the train, m
+        (``Consist.coupler_offsets``).
+    """
+
+    coupler_force: np.ndarray
+    acceleration: float
+    external_force: np.ndarray
+    position: np.ndarray
+    coupler_offsets: np.ndarray
+
+    def plot(self, ax=None, *, label: str | None = None, color=None) -> dict:
+        """Draw the coupler forces (kN) along the train (m behind the front).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default.
+        label : str, optional
+            Legend label of the line.
+        color : matplotlib colour, optional
+            Colour of the line; the first house colour by default.
+
+        Returns
+        -------
+        dict
+            The artists: ``line``.
+        """
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            (line,) = ax.plot(
+                self.coupler_offsets,
+                self.coupler_force / 1e3,
+                color=plots.COLORS[0] if color is None else color,
+                label=label,
+            )
+            ax.set_xlabel("coupler position behind the front (m)")
+            ax.set_ylabel("coupler force (kN, + draft)")
+        return {"line": line}
+
+
+@dataclass(frozen=True)
+class CouplerPeak:
+    """The coupler force of largest magnitude in a run.
+
+    Attributes
+    ----------
+    force : float
+        The force, N (+ draft/tension, − buff/compression).
+    coupler : int
+        Index of the coupler, 0 behind the front vehicle.
+    offset : float
+        Distance of that coupler behind the front of the train, m.
+    time : float
+        Time at which it occurs, s.
+    """
+
+    force: float
+    coupler: int
+    offset: float
+    time: float
+
+    @property
+    def kind(self) -> str:
+        """``"draft"`` for a tension, ``"buff"`` for a compression."""
+        return "buff" if self.force < 0 else "draft"
+
+
+@dataclass(frozen=True)
+class TrainRun:
+    """A simulated run: a returned run is always a success (failures raise ``SolverError``).
+
+    Attributes
+    ----------
+    t : ndarray (m,)
+        Times, s.
+    position : ndarray (n, m)
+        Route positions of the vehicle centres, m.
+    speed : ndarray (n, m)
+        Vehicle speeds, m/s.
+    coupler_force : ndarray (n−1, m)
+        Coupler forces, N (+ tension).
+    coupler_offsets : ndarray (n−1,)
+        Distance of each coupler behind the front of the train, m
+        (``Consist.coupler_offsets``).
+    evaluations : int
+        Right-hand-side calls made by the integrator.
+    """
+
+    t: np.ndarray
+    position: np.ndarray
+    speed: np.ndarray
+    coupler_force: np.ndarray
+    coupler_offsets: np.ndarray
+    evaluations: int
+
+    @property
+    def max_tension(self) -> np.ndarray:
+        """Largest draft force of each coupler over the run, N (shape (n−1,))."""
+        return self.coupler_force.max(axis=1)
+
+    @property
+    def max_compression(self) -> np.ndarray:
+        """Largest buff force of each coupler over the run, N, as a positive number (shape (n−1,))."""
+        return -self.coupler_force.min(axis=1)
+
+    @property
+    def peak(self) -> CouplerPeak:
+        """The coupler force of largest magnitude: its value, coupler, place and time."""
+        j, k = np.unravel_index(np.argmax(np.abs(self.coupler_force)), self.coupler_force.shape)
+        return CouplerPeak(
+            force=float(self.coupler_force[j, k]),
+            coupler=int(j),
+            offset=float(self.coupler_offsets[j]),
+            time=float(self.t[k]),
+        )
+
+    def stop_time(self, vehicle: int = 0, threshold: float = 0.01) -> float | None:
+        """First time a vehicle's speed falls below ``threshold``.
+
+        Parameters
+        ----------
+        vehicle : int
+            Index of the vehicle, 0 at the front; negative counts from the rear.
+        threshold : float
+            Speed taken as stopped, m/s (> 0).
+
+        Returns
+        -------
+        float or None
+            Time, s; None if the vehicle is still moving at the end of the run.
+        """
+        n = self.speed.shape[0]
+        vehicle = _checks.integer("vehicle", vehicle, low=-n, high=n - 1)
+        threshold = _checks.positive("threshold", threshold)
+        below = np.abs(self.speed[vehicle]) < threshold
+        return float(self.t[np.argmax(below)]) if below.any() else None
+
+    def plot_envelope(self, ax=None, *, artists: dict | None = None) -> dict:
+        """Draw the coupler-force envelope along the train (kN against m behind the front), with the peak.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default. Ignored when ``artists`` is given.
+        artists : dict, optional
+            The artists an earlier call returned: they are moved to this run's
+            data in place (``set_data``), nothing is drawn anew.
+
+        Returns
+        -------
+        dict
+            The artists: ``draft`` (largest tension), ``buff`` (largest compression, drawn
+            negative) and ``peak`` (a marker on the force of largest magnitude).
+        """
+        x = self.coupler_offsets
+        peak = self.peak
+        data = {
+            "draft": (x, self.max_tension / 1e3),
+            "buff": (x, -self.max_compression / 1e3),
+            "peak": ([peak.offset], [peak.force / 1e3]),
+        }
+        if artists is not None:
+            for name, (u, w) in data.items():
+                artists[name].set_data(u, w)
+            return artists
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            (draft,) = ax.plot(*data["draft"], color=plots.COLORS[0], label="largest draft (tension)")
+            (buff,) = ax.plot(*data["buff"], color=plots.COLORS[1], label="largest buff (compression)")
+            (mark,) = ax.plot(*data["peak"], "o", color="k", mfc="w", mew=2, ms=7, label="peak")
+            ax.axhline(0, color="0.4", lw=0.8)
+            ax.set_xlabel("coupler position behind the front (m)")
+            ax.set_ylabel("coupler force envelope (kN)")
+            ax.legend(loc="lower right")
+        return {"draft": draft, "buff": buff, "peak": mark}
+
+    def plot_wave(self, ax=None, *, limit: float | None = None) -> dict:
+        """Draw the coupler force (kN) over time and position along the train as a colour map.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default.
+        limit : float, optional
+            Force at the ends of the colour scale, kN (> 0); the largest magnitude by default.
+
+        Returns
+        -------
+        dict
+            The artists: ``mesh`` (the colour map) and ``colorbar``.
+        """
+        peak = abs(self.peak.force) / 1e3
+        limit = (peak if peak > 0 else 1.0) if limit is None else _checks.positive("limit", limit)
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            mesh = ax.pcolormesh(
+                self.t, self.coupler_offsets, self.coupler_force / 1e3, cmap="RdBu_r", vmin=-limit, vmax=limit
+            )
+            bar = ax.figure.colorbar(mesh, ax=ax, label="coupler force (kN, + draft)")
+            ax.set_xlabel("time (s)")
+            ax.set_ylabel("coupler position behind the front (m)")
+        return {"mesh": mesh, "colorbar": bar}
