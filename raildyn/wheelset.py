@@ -101,9 +101,9 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
 def _hertz_kalker(wheel_load, rolling_radius):
     """Kalker's coefficients of a wheel of radius r₀ on a rail crowned with the same radius, per wheel.
 
-    The patch is Hertz's (:func:`raildyn.contact.hertz_contact`, curvature 1/r₀ along
+    The patch is Hertz's (:func:`raildyn.contact.hertz.hertz_contact`, curvature 1/r₀ along
     and across the track: a circle) and the coefficients are Kalker's
-    (:func:`raildyn.contact.creep_coefficients`), both for the steel of
+    (:func:`raildyn.contact.creep.creep_coefficients`), both for the steel of
     :mod:`raildyn.constants`.
     """
     patch = hertz_contact(
@@ -132,7 +132,7 @@ class Wheelset(LinearModelBase):
     1998) on a cone; the conicity (0.15) and contact half-spacing (0.75 m, the
     usual value for standard gauge) are our choice, not the benchmark's, which
     specifies real profiles. Creep coefficients are per contact patch: Kalker's
-    (:func:`raildyn.contact.creep_coefficients`) on Hertz's patch under half the
+    (:func:`raildyn.contact.creep.creep_coefficients`) on Hertz's patch under half the
     axle load, wheel radius 0.46 m on a rail crowned with the same radius.
 
     Attributes
@@ -433,7 +433,7 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     """Lateral force (N) and yaw moment (N·m) of the rails on a wheelset, nonlinear; arrays broadcast.
 
     Creepages of the left/right wheel: ξx = ∓(aψ̇/V + Δr(y)/(2r₀)), ξy = ẏ/V − ψ,
-    spin ψ̇/V (those of :func:`raildyn.contact.wheelset_creepages` with
+    spin ψ̇/V (those of :func:`raildyn.contact.creep.wheelset_creepages` with
     r_L,R = r₀ ± Δr/2 and no contact-angle spin, written out here because this
     runs inside every step of a hunting simulation). Each wheel's longitudinal and
     lateral linear force is reduced by :func:`saturation_factor` at μ W/2;
