@@ -1,6 +1,6 @@
 """The catalogue of time-integration schemes, by name, and the one call that runs any of them.
 
-``METHODS`` names every scheme that both runs (:func:`integrate`) and is analysed
+``METHODS`` names every scheme that both runs (:func:`~raildyn.integrators.integrate`) and is analysed
 on the test oscillator (:mod:`raildyn.integrators.analysis`); ``PARAMETERS`` gives
 the parameters each one accepts, with their defaults.
 """

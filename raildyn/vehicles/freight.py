@@ -10,7 +10,7 @@ of gravity h above it, so that its weight lowers the roll stiffness by m g h.
 Three coordinates: body z, θ (pitch, front up) and φ (roll, left side up).
 Eight inputs: the left and right rail under each of the four axles.
 
-* :meth:`FreightCar.linear` — the linear model (wedges replaced by an
+* :meth:`FreightCar.linear_system` — the linear model (wedges replaced by an
   equivalent viscous damper, optional) for FRFs and spectra;
 * :func:`rock_and_roll` — the nonlinear run over staggered jointed rail at many
   speeds at once: the steady roll amplitude against speed.
