@@ -49,3 +49,37 @@ def test_show_gives_a_captioned_picture_for_notebooks():
     bundle = figures.show("fig1.4")._repr_mimebundle_()
     assert bundle["image/png"] and "book Fig. 1.4" in bundle["text/html"]
     assert bundle["text/html"].count("<img") == 1
+
+
+def test_save_all_writes_the_chosen_ids_format_by_format_into_a_new_directory(tmp_path):
+    out = tmp_path / "new" / "dir"  # created with its parents
+    written = figures.save_all(out, formats=("png", "svg"), ids=["fig1.5", "fig1.4"], progress=False)
+    # in the order asked for, figure by figure and format by format
+    assert written == [out / "fig1.5.png", out / "fig1.5.svg", out / "fig1.4.png", out / "fig1.4.svg"]
+    assert all(path.stat().st_size > 1_000 for path in written)
+
+
+def test_register_refuses_an_id_registered_twice():
+    with pytest.raises(ValueError, match="'fig1.4' is registered twice"):
+        figures.register("fig1.4", "again", chapter=1)(figures.new_figure)
+    assert figures.REGISTRY["fig1.4"].caption != "again"
+
+
+def test_new_figure_is_constrained_and_takes_figure_arguments():
+    fig = figures.new_figure(figsize=(4.0, 3.0))
+    assert isinstance(fig, Figure) and fig.get_layout_engine() is not None
+    assert tuple(fig.get_size_inches()) == (4.0, 3.0)
+
+
+def test_the_registry_exports_what_notebooks_and_plug_ins_use():
+    # notebooks call show/make; the chNN plug-ins register and draw on new_figure
+    assert {
+        "REGISTRY",
+        "FigureSpec",
+        "FigureView",
+        "make",
+        "new_figure",
+        "register",
+        "save_all",
+        "show",
+    } <= set(figures.__all__)

@@ -1,5 +1,6 @@
 """Chapter 6 widgets driven without a browser: the status lines carry the models' numbers."""
 
+import dataclasses
 import re
 
 import numpy as np
@@ -21,9 +22,11 @@ def test_ride_status_gives_the_frequency_domain_index_and_a_matching_run():
     rms_fd, rms_td = (float(x) for x in re.findall(r"RMS ([0-9.]+) m/s²", text))
     wz_fd, wz_td = (float(x) for x in re.findall(r"Wz ([0-9.]+)", text))
     w = np.linspace(0.2, 2 * np.pi * 30, 3000)
-    spec = response_spectrum(
-        MANCHESTER_VERTICAL.linear_system(), lambda o: track.fra_psd("vertical", 4, o), 120 / 3.6, w, "body z", 2
-    )
+
+    def fra4(omega):
+        return track.fra_psd("vertical", 4, omega)
+
+    spec = response_spectrum(MANCHESTER_VERTICAL.linear_system(), fra4, 120 / 3.6, w, "body z", 2)
     want = ride.ride_quality(spec.psd, w)
     # printed to 3 decimals and 2 decimals; grids of 1200 and 3000 points agree to < 0.1 %
     assert rms_fd == pytest.approx(want.rms, abs=2e-3)
@@ -45,3 +48,36 @@ def test_rock_widget_marks_the_resonance_speed(label):
     # the sweep's largest amplitude lies within one grid step (2.5 km/h) of the marked resonance
     peak = chapter06._ROCK_SPEEDS_KMH[int(np.argmax(amp))]
     assert abs(peak - resonance) <= 2.5
+
+
+def test_ride_run_gives_a_frozen_result_whose_measures_are_those_of_its_parts():
+    run = chapter06.ride_run("FRA class 4", 120.0, 3)
+    assert isinstance(run, chapter06.RideRun)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        run.t = None
+    # the run starts at 0 once the settling is dropped, one acceleration per time
+    assert run.t[0] == pytest.approx(0.0, abs=1e-9) and run.t.shape == run.acceleration.shape
+    assert run.spectrum.speed == pytest.approx(120.0 / 3.6, rel=1e-12)
+    # the measures are recomputed from the fields the result carries (same code, same data: 1e-9)
+    fd = ride.ride_quality(run.spectrum.psd, run.spectrum.omega)
+    assert fd.rms == pytest.approx(run.frequency_domain.rms, rel=1e-9)
+    assert fd.wz == pytest.approx(run.frequency_domain.wz, rel=1e-9)
+    td = ride.ride_quality_history(run.acceleration, 0.01)  # the run's 10 ms step
+    assert td.rms == pytest.approx(run.time_domain.rms, rel=1e-9)
+    assert td.wz == pytest.approx(run.time_domain.wz, rel=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("changes", "error", "match"),
+    [
+        ({"track_label": "FRA class 9"}, ValueError, "track_label must be one of"),
+        ({"speed_kmh": 0.0}, ValueError, "speed_kmh"),
+        ({"speed_kmh": float("nan")}, ValueError, "speed_kmh"),
+        ({"seed": -1}, ValueError, "seed"),
+        ({"seed": 1.5}, TypeError, "seed"),
+    ],
+)
+def test_ride_run_refuses_bad_input_naming_the_parameter(changes, error, match):
+    args = {"track_label": "FRA class 4", "speed_kmh": 120.0, "seed": 1} | changes
+    with pytest.raises(error, match=match):
+        chapter06.ride_run(**args)

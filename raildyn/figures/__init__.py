@@ -27,6 +27,8 @@ from matplotlib.figure import Figure
 from raildyn import plots
 from raildyn._progress import progress_bar
 
+__all__ = ["REGISTRY", "FigureSpec", "FigureView", "make", "new_figure", "register", "save_all", "show"]
+
 
 @dataclass(frozen=True)
 class FigureSpec:
@@ -41,8 +43,9 @@ class FigureSpec:
     book_figure : str or None
         The figure number in Garg & Dukkipati (1984), where it mirrors one.
     chapter : int
+        The book's chapter the figure belongs to.
     draw : callable
-        Builds and returns the figure.
+        ``draw()`` builds and returns the figure (a ``matplotlib.figure.Figure``).
     """
 
     id: str
@@ -52,11 +55,33 @@ class FigureSpec:
     draw: Callable[[], Figure]
 
 
+#: Every registered figure, by id; filled by :func:`register` when ``raildyn.figures`` is imported.
+#:
+#: :meta hide-value:
 REGISTRY: dict[str, FigureSpec] = {}
 
 
 def register(id: str, caption: str, *, chapter: int, book_figure: str | None = None):
-    """Decorator adding a figure function to ``REGISTRY`` under ``id``."""
+    """Decorator adding a figure function to ``REGISTRY`` under ``id``.
+
+    Parameters
+    ----------
+    id : str
+        Stable identifier of the figure, also its file name (``fig1.4``); unique.
+    caption : str
+        What the figure shows, in the companion's words.
+    chapter : int
+        The book's chapter the figure belongs to.
+    book_figure : str or None, optional
+        The figure number in Garg & Dukkipati (1984), where the figure mirrors one.
+
+    Returns
+    -------
+    callable
+        The decorator: it registers ``draw`` (a function of no arguments returning a
+        ``matplotlib.figure.Figure``) and returns it unchanged. It raises ``ValueError``
+        if ``id`` is registered already.
+    """
 
     def add(draw: Callable[[], Figure]) -> Callable[[], Figure]:
         if id in REGISTRY:
@@ -68,7 +93,26 @@ def register(id: str, caption: str, *, chapter: int, book_figure: str | None = N
 
 
 def make(id: str) -> Figure:
-    """Build the registered figure ``id`` and return it."""
+    """Build the registered figure ``id`` and return it.
+
+    The figure is drawn inside ``matplotlib.rc_context(raildyn.plots.STYLE)``, so
+    matplotlib's defaults are left as they were.
+
+    Parameters
+    ----------
+    id : str
+        A key of ``REGISTRY`` (``"fig1.4"``).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        A new figure, not attached to pyplot.
+
+    Raises
+    ------
+    ValueError
+        If ``id`` is not registered; the message lists the registered ids.
+    """
     if id not in REGISTRY:
         raise ValueError(f"unknown figure id {id!r}; registered: {sorted(REGISTRY)}")
     with matplotlib.rc_context(plots.STYLE):
@@ -80,6 +124,13 @@ class FigureView:
 
     Jupyter shows the ``text/html`` part (picture and caption); the book prefers
     it too. The ``image/png`` part serves front ends without HTML.
+
+    Parameters
+    ----------
+    spec : FigureSpec
+        The registered figure: its id, caption and book figure number.
+    figure : matplotlib.figure.Figure
+        The figure drawn by ``spec.draw``.
     """
 
     def __init__(self, spec: FigureSpec, figure: Figure):
@@ -104,7 +155,19 @@ class FigureView:
 
 
 def show(id: str) -> FigureView:
-    """The registered figure ``id`` with its caption, for display in a notebook."""
+    """The registered figure ``id`` with its caption, for display in a notebook.
+
+    Parameters
+    ----------
+    id : str
+        A key of ``REGISTRY`` (``"fig1.4"``).
+
+    Returns
+    -------
+    FigureView
+        The figure built by :func:`make` with its caption; Jupyter and the book
+        display it as a captioned picture.
+    """
     figure = make(id)
     return FigureView(REGISTRY[id], figure)
 
@@ -116,7 +179,26 @@ def save_all(
     ids: Iterable[str] | None = None,
     progress: bool = True,
 ) -> list[Path]:
-    """Write the registered figures (all, or ``ids``) to ``out``; return the paths written."""
+    """Write the registered figures (all, or ``ids``) to ``out``; return the paths written.
+
+    Parameters
+    ----------
+    out : str or pathlib.Path
+        Directory to write to; created (with its parents) if missing.
+    formats : iterable of str, optional
+        File formats matplotlib can write (``"png"``, ``"pdf"``, ``"svg"``); one file
+        per figure and format, ``<id>.<format>``, at 150 dpi.
+    ids : iterable of str or None, optional
+        The ids to write, in this order; None (the default) writes every registered
+        figure, sorted by id.
+    progress : bool, optional
+        Show a progress bar (default True).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written, figure by figure and format by format.
+    """
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     chosen = sorted(REGISTRY) if ids is None else list(ids)
@@ -131,7 +213,18 @@ def save_all(
 
 
 def new_figure(**kwargs) -> Figure:
-    """A new figure with the constrained layout, for a registered figure function to draw on."""
+    """A new figure with the constrained layout, for a registered figure function to draw on.
+
+    Parameters
+    ----------
+    **kwargs
+        Passed on to ``matplotlib.figure.Figure`` (``figsize``, ``dpi``, ...).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        A new figure, not attached to pyplot (so no display is needed).
+    """
     return Figure(layout="constrained", **kwargs)
 
 

@@ -18,6 +18,8 @@ from raildyn import integrators, plots, vibration
 from raildyn.errors import SolverError
 from raildyn.widgets._core import Recipe, slider
 
+__all__ = ["accuracy_chart", "scheme_response"]
+
 # Readable names for the dropdowns, in the order the chapter introduces the schemes.
 LABELS = {
     "central_difference": "central difference",
@@ -124,6 +126,13 @@ def scheme_response():
     of the scheme against Δt/T with the current step marked. The status line
     gives the largest error, the period elongation and the amplitude decay, or
     the step at which an unstable run blew up.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return SCHEME_RESPONSE.build()
 
@@ -184,5 +193,12 @@ def accuracy_chart():
     The three accuracy measures of Bathe's Figs. 9.2–9.3 for one scheme at a time,
     with the damping factor ξ of the oscillator as a second control; the status
     line gives the stability limit found on the amplification matrix.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return ACCURACY_CHART.build()

@@ -12,6 +12,8 @@ import numpy as np
 from raildyn import plots, stability, wheelset
 from raildyn.widgets._core import Recipe, slider
 
+__all__ = ["klingel", "wheelset_roots"]
+
 _DISTANCE = np.linspace(0.0, 120.0, 1200)  # m of track: a fixed axis keeps the cached picture valid
 
 
@@ -64,6 +66,13 @@ def klingel():
     Controls: conicity λ, rolling radius r₀ (mm) and the bogie's half wheelbase
     b (m); the contact points are 2a = 1.5 m apart. The status line gives both
     wavelengths and the sway frequency at 100 km/h.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return KLINGEL.build()
 
@@ -153,6 +162,13 @@ def wheelset_roots():
     marked. Controls: conicity λ, primary yaw stiffness k_ψ (MN·m/rad) and
     lateral stiffness k_y (MN/m). With both stiffnesses at 0 the free wheelset
     is unstable at every speed.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return WHEELSET_ROOTS.build()
 

@@ -8,21 +8,25 @@ mm, degrees, kN.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import lru_cache
 
 import ipywidgets as widgets
 import numpy as np
 
-from raildyn import plots, ride, track
+from raildyn import _checks, plots, ride, track
 from raildyn.vehicles import (
     GDU_ORE_CAR,
     MANCHESTER_VERTICAL,
     FreightCar,
+    ResponseSpectrum,
     periodic_profile,
     response_spectrum,
     rock_and_roll,
     time_response,
 )
+
+__all__ = ["RideRun", "ride_quality", "ride_run", "rock_and_roll_widget"]
 
 TRACKS = {f"FRA class {c}": ("fra", c) for c in track.FRA_CLASSES} | {
     "German low": ("german", "low"),
@@ -52,8 +56,60 @@ def _track_sample(track_label: str, seed: int) -> np.ndarray:
     return track.synthesize_irregularity(psd, _RUN_LENGTH, _DX, _BAND, seed).z.reshape(-1)
 
 
-def ride_run(track_label: str, speed_kmh: float, seed: int):
-    """Frequency-domain spectrum and ride measures beside a seeded time run (body centre, vertical)."""
+@dataclass(frozen=True)
+class RideRun:
+    """The ride of the Manchester vertical car at one speed on one track, two ways.
+
+    Attributes
+    ----------
+    spectrum : raildyn.vehicles.ResponseSpectrum
+        The car-body (centre) vertical acceleration spectrum, one-sided per rad/s,
+        on 0.05–30 Hz.
+    frequency_domain : raildyn.ride.RideQuality
+        RMS, Sperling's Wz and the ISO 2631 weighted RMS of ``spectrum``.
+    t : ndarray, shape (n,)
+        Time of the seeded run, s, from 0 (the first 10 s, the settling, are dropped).
+    acceleration : ndarray, shape (n,)
+        The car-body (centre) vertical acceleration along the run, m/s².
+    time_domain : raildyn.ride.RideQuality
+        The same measures of ``acceleration``.
+    """
+
+    spectrum: ResponseSpectrum
+    frequency_domain: ride.RideQuality
+    t: np.ndarray
+    acceleration: np.ndarray
+    time_domain: ride.RideQuality
+
+
+def ride_run(track_label: str, speed_kmh: float, seed: int) -> RideRun:
+    """Frequency-domain spectrum and ride measures beside a seeded time run (body centre, vertical).
+
+    The car is ``raildyn.vehicles.MANCHESTER_VERTICAL``. The spectrum comes from
+    :func:`raildyn.vehicles.response.response_spectrum` and :func:`raildyn.ride.ride_quality`;
+    the run from :func:`raildyn.vehicles.response.time_response` along a 1.5 km track
+    synthesized from the same spectrum (wavelengths 1–300 m, 0.25 m samples), repeated
+    periodically, and :func:`raildyn.ride.ride_quality_history`.
+
+    Parameters
+    ----------
+    track_label : str
+        A key of ``TRACKS``: ``"FRA class 1"`` … ``"FRA class 6"``, ``"German low"``,
+        ``"German high"``.
+    speed_kmh : float
+        Speed of the car, km/h (> 0).
+    seed : int
+        Seed of the synthesized track (>= 0); the same seed gives the same run.
+
+    Returns
+    -------
+    RideRun
+        The spectrum and its ride measures, and the run and its measures.
+    """
+    if not isinstance(track_label, str) or track_label not in TRACKS:
+        raise ValueError(f"track_label must be one of {list(TRACKS)}, got {track_label!r}")
+    speed_kmh = _checks.positive("speed_kmh", speed_kmh)
+    seed = _checks.integer("seed", seed, low=0)
     spectrum, grade = TRACKS[track_label]
     V = speed_kmh / 3.6
     psd = track.track_psd(spectrum, "vertical", grade)
@@ -62,12 +118,12 @@ def ride_run(track_label: str, speed_kmh: float, seed: int):
     fd = ride.ride_quality(spec.psd, w)
     # The time run: the same spectrum, limited to the synthesized band, along a periodic sample.
     z = _track_sample(track_label, seed)
-    profile, slope = periodic_profile(z, _DX)
-    t = np.arange(0.0, _SETTLE + z.size * _DX / V, _DT)
-    run = time_response(_VEHICLE, profile, V, t, "body z", derivative=2, profile_rate=slope)
+    sample = periodic_profile(z, _DX)
+    t = np.arange(0.0, _SETTLE + sample.period / V, _DT)
+    run = time_response(_VEHICLE, sample.height, V, t, "body z", derivative=2, profile_rate=sample.slope)
     keep = t >= _SETTLE
     td = ride.ride_quality_history(run.y[keep], _DT)
-    return spec, fd, t[keep] - _SETTLE, run.y[keep], td
+    return RideRun(spec, fd, t[keep] - _SETTLE, run.y[keep], td)
 
 
 def _ride_setup(live, status):
@@ -88,8 +144,9 @@ def _ride_setup(live, status):
     live.animate(psd_line, weighted, hist)
 
     def redraw(v):
-        spec, fd, t, a, td = ride_run(v["track"], v["speed_kmh"], v["seed"])
-        per_hz = 2 * np.pi * spec.psd
+        run = ride_run(v["track"], v["speed_kmh"], v["seed"])
+        fd, t, a, td = run.frequency_domain, run.t, run.acceleration, run.time_domain
+        per_hz = 2 * np.pi * run.spectrum.psd
         psd_line.set_ydata(np.maximum(per_hz, 1e-12))
         weighted.set_ydata(np.maximum(ride.sperling_weighting(_F) ** 2 * per_hz, 1e-12))
         shown = t <= t_max
@@ -125,6 +182,13 @@ def ride_quality():
     acceleration PSD per Hz and its Sperling-weighted part; right: a seeded time
     run over a synthesized track of the same quality. The status line gives the
     frequency-domain RMS, Wz and ISO 2631 weighted RMS beside the run's.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return RIDE.build()
 
@@ -147,7 +211,7 @@ def _rock_controls():
 
 
 @lru_cache(maxsize=32)
-def rock_sweep(car_label: str, friction_kn: float, depth_mm: float):
+def _rock_sweep(car_label: str, friction_kn: float, depth_mm: float):
     """Roll amplitude (deg) over the widget's speeds, and the resonance speed (km/h)."""
     car = FREIGHT_CARS[car_label].replace(wedge_friction=1e3 * friction_kn)
     r = rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=12)
@@ -155,7 +219,7 @@ def rock_sweep(car_label: str, friction_kn: float, depth_mm: float):
 
 
 @lru_cache(maxsize=64)
-def rock_history(car_label: str, speed_kmh: float, friction_kn: float, depth_mm: float):
+def _rock_history(car_label: str, speed_kmh: float, friction_kn: float, depth_mm: float):
     car = FREIGHT_CARS[car_label].replace(wedge_friction=1e3 * friction_kn)
     cycles = max(12, int(np.ceil(30.0 * speed_kmh / 3.6 / track.RAIL_LENGTH)))  # about 30 s shown
     r = rock_and_roll(car, [speed_kmh / 3.6], depth=1e-3 * depth_mm, cycles=cycles)
@@ -180,10 +244,10 @@ def _rock_setup(live, status):
     live.animate(curve, resonance, marker, hist)
 
     def redraw(v):
-        amp, v_res = rock_sweep(v["car"], v["friction_kn"], v["depth_mm"])
+        amp, v_res = _rock_sweep(v["car"], v["friction_kn"], v["depth_mm"])
         curve.set_ydata(amp)
         resonance.set_xdata([v_res, v_res])
-        t, roll = rock_history(v["car"], v["speed_kmh"], v["friction_kn"], v["depth_mm"])
+        t, roll = _rock_history(v["car"], v["speed_kmh"], v["friction_kn"], v["depth_mm"])
         shown = t <= 30
         hist.set_data(t[shown], roll[shown])
         tail = t >= 0.75 * t[-1]
@@ -220,5 +284,12 @@ def rock_and_roll_widget():
     speed (km/h), wedge friction per nest (kN), joint dip depth (mm).
     Left: steady roll amplitude over 20–70 km/h with the roll resonance of the
     springs alone dotted and the chosen speed marked; right: the roll history.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return ROCK.build()
