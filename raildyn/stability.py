@@ -60,13 +60,42 @@ def _speeds(speeds) -> np.ndarray:
 
 
 def eigenvalues_against_speed(model, speeds) -> np.ndarray:
-    """All 2n eigenvalues (1/s) at each speed (m/s), shape (n_speeds, 2n), from one batched eigvals call."""
+    """All 2n eigenvalues at each speed, from one batched ``numpy.linalg.eigvals`` call.
+
+    The state matrix A(V) = [[0, I], [−M⁻¹K, −M⁻¹(C₀ + C₁/V)]] of
+    M q̈ + (C₀ + C₁/V) q̇ + K q = 0 (book chapter 7) at every speed.
+
+    Parameters
+    ----------
+    model : LinearModel or LinearSystem
+        A linear model of :mod:`raildyn.wheelset` or :mod:`raildyn.vehicles`, or its system.
+    speeds : array_like, shape (n_speeds,)
+        Speeds V, m/s (> 0: the creep damping divides by V).
+
+    Returns
+    -------
+    ndarray of complex, shape (n_speeds, 2n)
+        The eigenvalues λ, 1/s, in no particular order at each speed.
+    """
     V = _speeds(speeds)
     return np.linalg.eigvals(as_linear_system(model).state_matrices(V))
 
 
 def largest_real_part(model, speeds) -> np.ndarray:
-    """max Re λ (1/s) at each speed: positive where the model is unstable."""
+    """The largest real part of the eigenvalues at each speed: positive where the model is unstable.
+
+    Parameters
+    ----------
+    model : LinearModel or LinearSystem
+        A linear model, or its system.
+    speeds : array_like, shape (n_speeds,)
+        Speeds V, m/s (> 0).
+
+    Returns
+    -------
+    ndarray, shape (n_speeds,)
+        max Re λ, 1/s.
+    """
     return eigenvalues_against_speed(model, speeds).real.max(axis=1)
 
 
@@ -75,7 +104,23 @@ def largest_real_part(model, speeds) -> np.ndarray:
 
 
 def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Modal assurance criterion between the columns of a and b: |aᴴb|²/(|a|²|b|²), shape (ka, kb)."""
+    """Modal assurance criterion between the columns of two sets of (complex) vectors.
+
+    MAC(aᵢ, bⱼ) = |aᵢᴴ bⱼ|² / (|aᵢ|² |bⱼ|²): 1 for vectors that differ by a complex factor,
+    0 for orthogonal ones.
+
+    Parameters
+    ----------
+    a : array_like, shape (p, ka)
+        Vectors as columns (any unit; the criterion is dimensionless).
+    b : array_like, shape (p, kb)
+        Vectors as columns, of the same length p.
+
+    Returns
+    -------
+    ndarray, shape (ka, kb)
+        The criterion, between 0 and 1, of every column of ``a`` with every column of ``b``.
+    """
     a = np.asarray(a, dtype=complex)
     b = np.asarray(b, dtype=complex)
     num = np.abs(a.conj().T @ b) ** 2
@@ -93,13 +138,17 @@ def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> tuple[np.ndarra
 
     Parameters
     ----------
-    eigenvalues : complex ndarray (n_speeds, m)
-    vectors : complex ndarray (n_speeds, p, m)
-        Column k of ``vectors[i]`` belongs to ``eigenvalues[i, k]``.
+    eigenvalues : complex ndarray, shape (n_speeds, m)
+        Eigenvalues at each speed, 1/s.
+    vectors : complex ndarray, shape (n_speeds, p, m)
+        Eigenvectors (any unit): column k of ``vectors[i]`` belongs to ``eigenvalues[i, k]``.
 
     Returns
     -------
-    eigenvalues, vectors : the same arrays with columns permuted at each speed.
+    eigenvalues : complex ndarray, shape (n_speeds, m)
+        The eigenvalues, 1/s, with the columns permuted at each speed.
+    vectors : complex ndarray, shape (n_speeds, p, m)
+        The eigenvectors, permuted alike.
     """
     lam = np.array(eigenvalues, dtype=complex, copy=True)
     vec = np.array(vectors, dtype=complex, copy=True)
@@ -123,7 +172,7 @@ class ModeSweep:
         m/s.
     eigenvalues : complex ndarray (n_speeds, k)
         λ, 1/s; only the roots with Im λ ≥ 0 at the first speed are kept (one of each pair).
-    frequencies : ndarray (n_speeds, k)
+    frequencies_hz : ndarray (n_speeds, k)
         Damped frequency |Im λ|/2π, Hz.
     damping_ratios : ndarray (n_speeds, k)
         ξ = −Re λ/|λ| (negative when the mode is unstable).
@@ -138,11 +187,159 @@ class ModeSweep:
 
     speeds: np.ndarray
     eigenvalues: np.ndarray
-    frequencies: np.ndarray
+    frequencies_hz: np.ndarray
     damping_ratios: np.ndarray
     shapes: np.ndarray
     labels: tuple
     coordinates: tuple
+
+    @property
+    def hunting_mode(self) -> int:
+        """Column of the mode least damped at the highest speed (the hunting mode of a vehicle)."""
+        return int(np.argmin(self.damping_ratios[-1]))
+
+    def plot(
+        self,
+        ax=None,
+        *,
+        critical: CriticalSpeed | None = None,
+        artists: dict | None = None,
+        real_limits: tuple[float, float] | None = (-25.0, 5.0),
+        imag_limits: tuple[float, float] | None = (0.0, 70.0),
+        damping_limits: tuple[float, float] | None = (-0.15, 0.5),
+    ) -> dict:
+        """Draw the roots against speed (left) and the damping factor of every mode (right).
+
+        Left: every root λ of the sweep in the complex plane, coloured by speed (km/h). Right:
+        the damping factor ξ of each mode against speed (km/h), grey, with the mode least
+        damped at the highest speed (:attr:`hunting_mode`) in colour and the critical speed
+        marked on ξ = 0 with its speed and frequency. The default windows show the roots
+        that decide a railway vehicle's stability: near the imaginary axis and below about
+        11 Hz (70 rad/s).
+
+        Parameters
+        ----------
+        ax : sequence of two matplotlib Axes, optional
+            The axes of the roots and of the damping factors; a new figure with two axes side
+            by side if None. Ignored when ``artists`` is given.
+        critical : CriticalSpeed, optional
+            The critical speed to mark (from :func:`critical_speed` on the same model); nothing
+            is marked if None or if it was not found.
+        artists : dict, optional
+            The artists an earlier call returned: they are moved to this sweep's data in place
+            (``set_offsets``, ``set_data``, ``set_text``) and nothing is drawn anew; the sweep
+            must have as many modes as the one drawn first.
+        real_limits : (float, float) or None
+            Range of Re λ shown, 1/s; None to fit the data.
+        imag_limits : (float, float) or None
+            Range of Im λ shown, rad/s; None to fit the data.
+        damping_limits : (float, float) or None
+            Range of ξ shown (dimensionless); None to fit the data.
+
+        Returns
+        -------
+        dict
+            The artists: ``roots`` (the ``PathCollection`` of the roots), ``colorbar`` (its
+            speed scale), ``modes`` (one ``Line2D`` per mode), ``hunting`` (the ``Line2D`` of
+            the hunting mode), ``critical`` (the marker, a ``Line2D``, empty when there is no
+            crossing) and ``critical_text`` (its ``Annotation``: speed in km/h and frequency
+            in Hz).
+
+        Examples
+        --------
+        >>> from matplotlib.figure import Figure
+        >>> from raildyn.wheelset import Wheelset
+        >>> ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
+        >>> sweep = mode_sweep(ws, np.linspace(2.0, 100.0, 50))
+        >>> drawn = sweep.plot(Figure().subplots(1, 2), critical=critical_speed(ws, (2.0, 100.0)))
+        >>> drawn["critical_text"].get_text()
+        '197 km/h, 5.31 Hz'
+        """
+        kmh = 3.6 * self.speeds
+        lam = self.eigenvalues
+        offsets = np.column_stack([lam.real.ravel(), lam.imag.ravel()])
+        colours = np.repeat(kmh, lam.shape[1])
+        worst = self.hunting_mode
+        if critical is not None and critical.found:
+            mark = ([3.6 * critical.speed], [0.0])
+            text = f"{3.6 * critical.speed:.0f} km/h, {critical.frequency_hz:.2f} Hz"
+        else:
+            mark, text = ([], []), ""
+        if artists is not None:
+            if len(artists["modes"]) != lam.shape[1]:
+                raise ValueError(
+                    f"artists were drawn for {len(artists['modes'])} modes; this sweep has {lam.shape[1]}"
+                )
+            artists["roots"].set_offsets(offsets)
+            artists["roots"].set_array(colours)
+            for line, xi in zip(artists["modes"], self.damping_ratios.T, strict=True):
+                line.set_data(kmh, xi)
+            artists["hunting"].set_data(kmh, self.damping_ratios[:, worst])
+            artists["critical"].set_data(*mark)
+            _place_critical_text(artists["critical_text"], mark, text)
+            return artists
+        import matplotlib
+
+        from raildyn import plots
+
+        if ax is None:
+            import matplotlib.pyplot as plt
+
+            with matplotlib.rc_context(plots.STYLE):
+                _, ax = plt.subplots(1, 2, figsize=(10.0, 3.8), layout="constrained")
+        ax_s, ax_d = ax
+        with matplotlib.rc_context(plots.STYLE):
+            roots = ax_s.scatter(
+                offsets[:, 0], offsets[:, 1], s=2, c=colours, cmap="viridis", vmin=kmh[0], vmax=kmh[-1]
+            )
+            bar = ax_s.figure.colorbar(roots, ax=ax_s, label="speed (km/h)")
+            ax_s.axvline(0.0, color="k", lw=0.8)
+            ax_s.set_xlabel("Re λ (1/s)")
+            ax_s.set_ylabel("Im λ (rad/s)")
+            modes = [ax_d.plot(kmh, xi, color="0.75", lw=0.8)[0] for xi in self.damping_ratios.T]
+            (hunting,) = ax_d.plot(
+                kmh, self.damping_ratios[:, worst], color=plots.COLORS[1], lw=2, label="hunting mode"
+            )
+            (marker,) = ax_d.plot(*mark, "v", color="k", ms=8, label="critical speed")
+            note = ax_d.annotate(
+                "",
+                (0.0, 0.0),
+                xytext=(0.0, 8.0),
+                textcoords="offset points",
+                va="bottom",
+                bbox={"fc": "white", "ec": "none", "alpha": 0.8, "pad": 1.0},
+            )
+            _place_critical_text(note, mark, text)
+            ax_d.axhline(0.0, color="k", lw=0.8)
+            ax_d.set_xlim(0.0, kmh[-1])
+            ax_d.set_xlabel("speed (km/h)")
+            ax_d.set_ylabel("damping factor ξ")
+            ax_d.legend(loc="upper right")
+        if real_limits is not None:
+            ax_s.set_xlim(*real_limits)
+        if imag_limits is not None:
+            ax_s.set_ylim(*imag_limits)
+        if damping_limits is not None:
+            ax_d.set_ylim(*damping_limits)
+        return {
+            "roots": roots,
+            "colorbar": bar,
+            "modes": modes,
+            "hunting": hunting,
+            "critical": marker,
+            "critical_text": note,
+        }
+
+
+def _place_critical_text(note, mark, text: str) -> None:
+    """Move the critical speed's annotation to the marker, on the side of it with more room."""
+    note.set_text(text)
+    if not text:
+        return
+    x = mark[0][0]
+    note.xy = (x, 0.0)
+    low, high = note.axes.get_xlim()
+    note.set_horizontalalignment("right" if x > 0.5 * (low + high) else "left")
 
 
 def mode_sweep(model, speeds) -> ModeSweep:
@@ -154,8 +351,29 @@ def mode_sweep(model, speeds) -> ModeSweep:
     Parameters
     ----------
     model : LinearModel or LinearSystem
-    speeds : array_like (n_speeds,)
-        Increasing speeds, m/s (> 0).
+        A linear model of :mod:`raildyn.wheelset` or :mod:`raildyn.vehicles`, or its system.
+    speeds : array_like, shape (n_speeds,)
+        Strictly increasing speeds, m/s (> 0).
+
+    Returns
+    -------
+    ModeSweep
+        Eigenvalues (1/s), damped frequencies (Hz), damping factors and shapes, one column per
+        mode; draw them with :meth:`ModeSweep.plot`.
+
+    Examples
+    --------
+    The suspended wheelset of chapter 5: its kinematic oscillation (the second mode) loses
+    its damping as the speed rises and is unstable at 80 m/s.
+
+    >>> from raildyn.wheelset import Wheelset
+    >>> sweep = mode_sweep(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), [20.0, 50.0, 80.0])
+    >>> sweep.labels
+    ('wheelset ψ', 'wheelset y')
+    >>> sweep.damping_ratios[:, 1].round(3)
+    array([ 0.143,  0.024, -0.127])
+    >>> sweep.frequencies_hz[-1].round(2)
+    array([6.87, 6.98])
     """
     system = as_linear_system(model)
     V = _speeds(speeds)
@@ -198,8 +416,8 @@ class CriticalSpeed:
         V_c, m/s: the lowest speed where max Re λ crosses zero upwards.
         ``inf`` when stable over the whole range; the lower end of the range
         when unstable already there (see ``status``).
-    frequency : float
-        Frequency of the mode that loses stability, Hz (nan when none does).
+    frequency_hz : float
+        Frequency of the mode that loses stability, |Im λ|/2π, Hz (nan when none does).
     eigenvalue : complex
         That mode's eigenvalue at V_c, 1/s.
     status : str
@@ -207,13 +425,19 @@ class CriticalSpeed:
     """
 
     speed: float
-    frequency: float
+    frequency_hz: float
     eigenvalue: complex
     status: str
 
     @property
     def found(self) -> bool:
+        """True when the largest real part crosses zero inside the range (``status`` "crossing")."""
         return self.status == "crossing"
+
+    @property
+    def frequency(self) -> float:
+        """The same as :attr:`frequency_hz`, Hz (the former name, kept for callers not yet moved)."""
+        return self.frequency_hz
 
 
 def _range(speed_range) -> tuple[float, float]:
@@ -234,6 +458,7 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     Parameters
     ----------
     model : LinearModel or LinearSystem
+        A linear model of :mod:`raildyn.wheelset` or :mod:`raildyn.vehicles`, or its system.
     speed_range : (float, float)
         Lowest and highest speed, m/s (0 < low < high).
     tol : float
@@ -241,12 +466,18 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     scan : int
         Number of speeds in the coarse scan (≥ 8).
 
+    Returns
+    -------
+    CriticalSpeed
+        V_c (m/s), the frequency (Hz) and eigenvalue (1/s) of the mode that loses stability
+        there, and whether a crossing was found in the range.
+
     Examples
     --------
     >>> from raildyn.wheelset import Wheelset
     >>> cs = critical_speed(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), (1.0, 200.0))
-    >>> cs.status, round(cs.speed, 1)
-    ('crossing', 54.6)
+    >>> cs.status, round(cs.speed, 1), round(cs.frequency_hz, 2)
+    ('crossing', 54.6, 5.31)
     """
     system = as_linear_system(model)
     low, high = _range(speed_range)
@@ -285,6 +516,7 @@ class CriticalSpeedMap:
     speeds : ndarray (len(y), len(x))
         V_c, m/s (inf where stable over the range).
     x_name, y_name : str
+        Names of the two parameters (with their units), used as axis labels.
     """
 
     x: np.ndarray
@@ -292,6 +524,106 @@ class CriticalSpeedMap:
     speeds: np.ndarray
     x_name: str
     y_name: str
+
+    def plot(self, ax=None, *, levels=None, cmap: str = "viridis") -> dict:
+        """Draw the critical speed (km/h) as filled contours over the two parameters.
+
+        Critical speeds above the highest level (and ``inf``, no crossing in the range) are
+        shown in the colour of the highest level.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default.
+        levels : array_like, optional
+            Contour levels, km/h; by default 50 km/h apart up to the largest finite critical speed.
+        cmap : str
+            Colour map.
+
+        Returns
+        -------
+        dict
+            The artists: ``contours`` (the ``QuadContourSet``) and ``colorbar``.
+        """
+        import matplotlib
+
+        from raildyn import plots
+
+        kmh = 3.6 * self.speeds
+        finite = kmh[np.isfinite(kmh)]
+        if levels is None:
+            top = finite.max() if finite.size else 50.0
+            levels = np.arange(0.0, 50.0 * np.ceil(top / 50.0) + 50.0, 50.0)
+        levels = array("levels", np.atleast_1d(levels), ndim=1)
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            contours = ax.contourf(self.x, self.y, np.minimum(kmh, levels[-1]), levels=levels, cmap=cmap)
+            bar = ax.figure.colorbar(contours, ax=ax, label="critical speed (km/h)")
+            ax.set_xlabel(self.x_name)
+            ax.set_ylabel(self.y_name)
+        return {"contours": contours, "colorbar": bar}
+
+    def plot_curves(self, ax=None, *, artists: dict | None = None, **style) -> dict:
+        """Draw the critical speed (km/h) against the first parameter, one line per value of the second.
+
+        Where there is no crossing in the range (``inf``) the line is left blank.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default. Ignored when ``artists`` is given.
+        artists : dict, optional
+            The artists an earlier call returned: their data are replaced in place
+            (``set_data``) and nothing is drawn anew.
+        **style
+            Passed to ``Axes.plot`` (``label``, ``color``, ``marker``, ``ls``...). Without a
+            ``label``, each line is labelled with its value of the second parameter.
+
+        Returns
+        -------
+        dict
+            ``{"lines": [Line2D, ...]}``, one line per value of ``y``.
+
+        Examples
+        --------
+        >>> from matplotlib.figure import Figure
+        >>> from raildyn.wheelset import Wheelset
+        >>> grid = critical_speed_map(
+        ...     lambda lam, k: Wheelset(conicity=lam, yaw_stiffness=k, lateral_stiffness=1.0e6),
+        ...     [0.1, 0.2],
+        ...     [2.0e6],
+        ...     (1.0, 200.0),
+        ...     x_name="conicity λ",
+        ...     y_name="k_ψ (N·m/rad)",
+        ...     progress=False,
+        ... )
+        >>> line = grid.plot_curves(Figure().subplots(), label="wheelset")["lines"][0]
+        >>> line.get_ydata().round(0)
+        array([244., 169.])
+        """
+        kmh = 3.6 * self.speeds
+        rows = np.where(np.isfinite(kmh), kmh, np.nan)
+        if artists is not None:
+            if len(artists["lines"]) != rows.shape[0]:
+                raise ValueError(
+                    f"artists were drawn for {len(artists['lines'])} lines; this map has {rows.shape[0]}"
+                )
+            for line, row in zip(artists["lines"], rows, strict=True):
+                line.set_data(self.x, row)
+            return artists
+        import matplotlib
+
+        from raildyn import plots
+
+        ax = plots.axes_or_new(ax)
+        lines = []
+        with matplotlib.rc_context(plots.STYLE):
+            for y, row in zip(self.y, rows, strict=True):
+                kwargs = {"label": f"{self.y_name} = {y:g}"} | style
+                lines.append(ax.plot(self.x, row, **kwargs)[0])
+            ax.set_xlabel(self.x_name)
+            ax.set_ylabel("critical speed (km/h)")
+        return {"lines": lines}
 
 
 def critical_speed_map(
@@ -303,13 +635,40 @@ def critical_speed_map(
     x_name: str = "x",
     y_name: str = "y",
     tol: float = 0.05,
+    scan: int = 64,
     progress: bool = True,
 ) -> CriticalSpeedMap:
     """Critical speed for every pair of parameters: ``factory(x_i, y_j)`` gives the model.
 
     Example: critical speed against conicity and primary yaw stiffness,
-    ``factory = lambda lam, k: car.replace(conicity=lam, primary_yaw_stiffness=k)``.
-    Shows a tqdm bar when ``progress`` is true.
+    ``factory = lambda lam, k: car.replace(conicity=lam, yaw_stiffness=k)``.
+    Each model goes through :func:`critical_speed`.
+
+    Parameters
+    ----------
+    factory : callable
+        ``factory(x_value, y_value)`` returns a linear model (or system).
+    x : array_like, shape (nx,)
+        Values of the first parameter (its own unit).
+    y : array_like, shape (ny,)
+        Values of the second parameter (its own unit).
+    speed_range : (float, float)
+        Lowest and highest speed searched, m/s (0 < low < high).
+    x_name : str
+        Name (and unit) of the first parameter, for the plots.
+    y_name : str
+        Name (and unit) of the second parameter.
+    tol : float
+        Absolute tolerance on each critical speed, m/s.
+    scan : int
+        Number of speeds in each coarse scan (≥ 8).
+    progress : bool
+        Show a progress bar.
+
+    Returns
+    -------
+    CriticalSpeedMap
+        The critical speeds, m/s, shape (ny, nx) (``inf`` where stable over the range).
     """
     xs = array("x", np.atleast_1d(x), ndim=1)
     ys = array("y", np.atleast_1d(y), ndim=1)
@@ -320,7 +679,7 @@ def critical_speed_map(
     if progress:
         pairs = progress_bar(pairs, desc="critical speed map")
     for j, i in pairs:
-        out[j, i] = critical_speed(factory(xs[i], ys[j]), speed_range, tol=tol).speed
+        out[j, i] = critical_speed(factory(xs[i], ys[j]), speed_range, tol=tol, scan=scan).speed
     return CriticalSpeedMap(xs, ys, out, x_name, y_name)
 
 
@@ -351,8 +710,9 @@ class LimitCycle:
     amplitude : float
         Half the peak-to-peak lateral displacement of the first wheelset over
         the last quarter of the run, m.
-    frequency : float
-        Hz, from the upward crossings of the mean (nan when there is no oscillation).
+    frequency_hz : float
+        Frequency of the oscillation, Hz, from the upward crossings of the mean (nan when there
+        is no oscillation).
     growth : float
         Amplitude over the last quarter divided by that over the quarter before:
         below 1 while the motion is still dying away.
@@ -362,12 +722,23 @@ class LimitCycle:
 
     speed: float
     amplitude: float
-    frequency: float
+    frequency_hz: float
     growth: float
     state: np.ndarray
 
     def hunting(self, threshold: float = 2.0e-4) -> bool:
-        """True when the oscillation is above ``threshold`` (m) and no longer decaying."""
+        """Whether the motion is a sustained oscillation: above ``threshold`` and no longer decaying.
+
+        Parameters
+        ----------
+        threshold : float
+            Amplitude below which the motion counts as decayed, m (default 0.2 mm).
+
+        Returns
+        -------
+        bool
+            True when ``amplitude > threshold`` and ``growth > 0.95``.
+        """
         return self.amplitude > threshold and self.growth > 0.95
 
 
@@ -390,9 +761,10 @@ def limit_cycle_amplitude(
     Parameters
     ----------
     model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
-        giving ``rhs``, ``state_size`` and ``lateral_index``.
+        The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
+        ``lateral_index``.
     speed : float
-        m/s (> 0).
+        Speed V, m/s (> 0).
     initial_displacement : float
         Starting lateral displacement of the first wheelset, m (default 12 mm:
         beyond the flangeway clearance, so that a large limit cycle is found
@@ -405,6 +777,27 @@ def limit_cycle_amplitude(
         Largest solver step, s.
     rtol : float
         Relative tolerance of the solver.
+
+    Returns
+    -------
+    LimitCycle
+        Amplitude (m), frequency (Hz), growth over the last two quarters and final state.
+
+    Raises
+    ------
+    SolverError
+        If the integration fails.
+
+    Examples
+    --------
+    The suspended wheelset of chapter 5 at 60 m/s, above its linear critical speed of
+    54.6 m/s: from 12 mm it settles on a limit cycle of about 10 mm at 5.7 Hz.
+
+    >>> from raildyn.wheelset import NonlinearWheelset, Wheelset
+    >>> model = NonlinearWheelset(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6))
+    >>> cycle = limit_cycle_amplitude(model, 60.0, duration=2.0)
+    >>> cycle.hunting(), round(1e3 * cycle.amplitude, 1), round(cycle.frequency_hz, 1)
+    (True, 10.3, 5.7)
     """
     V = scalar("speed", speed, low=0.0, low_open=True)
     positive("duration", duration)
@@ -424,10 +817,10 @@ def limit_cycle_amplitude(
     growth = amplitude / previous if previous > 0 else 1.0
     tail, tt = x[last], t[last]
     crossings = np.flatnonzero(np.diff(np.sign(tail - tail.mean())) > 0)
-    frequency = np.nan
+    frequency_hz = np.nan
     if amplitude > 1e-6 and crossings.size >= 2:
-        frequency = (crossings.size - 1) / (tt[crossings[-1]] - tt[crossings[0]])
-    return LimitCycle(V, float(amplitude), float(frequency), float(growth), y[:, -1].copy())
+        frequency_hz = (crossings.size - 1) / (tt[crossings[-1]] - tt[crossings[0]])
+    return LimitCycle(V, float(amplitude), float(frequency_hz), float(growth), y[:, -1].copy())
 
 
 @dataclass(frozen=True)
@@ -440,8 +833,8 @@ class BifurcationDiagram:
         m/s, decreasing (the order of the ramp).
     amplitudes : ndarray
         Lateral amplitude of the first wheelset, m.
-    frequencies : ndarray
-        Hz.
+    frequencies_hz : ndarray
+        Frequency of the motion at each speed, Hz (nan where there is no oscillation).
     hunting : ndarray of bool
         Whether the motion at each speed is a sustained oscillation.
     nonlinear_critical_speed : float
@@ -453,10 +846,57 @@ class BifurcationDiagram:
 
     speeds: np.ndarray
     amplitudes: np.ndarray
-    frequencies: np.ndarray
+    frequencies_hz: np.ndarray
     hunting: np.ndarray
     nonlinear_critical_speed: float
     threshold: float
+
+    def plot(self, ax=None, *, linear_critical_speed: float | None = None) -> dict:
+        """Draw the amplitude (mm) against speed (km/h), with the nonlinear and linear critical speeds.
+
+        Filled markers joined by a line: sustained hunting; open markers: motion that dies away.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default.
+        linear_critical_speed : float, optional
+            The linear critical speed of the same vehicle, m/s (finite, > 0; from
+            :func:`critical_speed`), drawn as a dashed line; left out if None.
+
+        Returns
+        -------
+        dict
+            The artists: ``cycles`` and ``decaying`` (``Line2D``), and the vertical lines
+            ``nonlinear`` (when the nonlinear critical speed is finite) and ``linear`` (when
+            ``linear_critical_speed`` is given).
+        """
+        import matplotlib
+
+        from raildyn import plots
+
+        V, amp, hunt = 3.6 * self.speeds, 1e3 * self.amplitudes, self.hunting
+        ax = plots.axes_or_new(ax)
+        out = {}
+        with matplotlib.rc_context(plots.STYLE):
+            (out["cycles"],) = ax.plot(V[hunt], amp[hunt], "o-", color=plots.COLORS[0], label="limit cycle")
+            (out["decaying"],) = ax.plot(
+                V[~hunt], amp[~hunt], "o", mfc="none", color=plots.COLORS[0], label="motion dies away"
+            )
+            if linear_critical_speed is not None:
+                vc = 3.6 * scalar("linear_critical_speed", linear_critical_speed, low=0.0, low_open=True)
+                out["linear"] = ax.axvline(
+                    vc, color=plots.COLORS[1], ls="--", label=f"linear V_c {vc:.0f} km/h"
+                )
+            vnl = 3.6 * self.nonlinear_critical_speed
+            if np.isfinite(vnl):
+                out["nonlinear"] = ax.axvline(
+                    vnl, color=plots.COLORS[2], ls=":", label=f"nonlinear V_c {vnl:.0f} km/h"
+                )
+            ax.set_xlabel("speed (km/h)")
+            ax.set_ylabel("amplitude of $y$ (mm)")
+            ax.legend(loc="center right")
+        return out
 
 
 def bifurcation_diagram(
@@ -479,6 +919,37 @@ def bifurcation_diagram(
     subcritical Hopf bifurcation). Where the branch ends, ``refine`` bisection
     steps between the last hunting and the first decaying speed locate the
     nonlinear critical speed.
+
+    Parameters
+    ----------
+    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
+        The nonlinear model, as for :func:`limit_cycle_amplitude`.
+    speeds : array_like, shape (n_speeds,)
+        Speeds of the ramp, m/s (> 0), in any order: they are run from the highest down.
+    initial_displacement : float
+        Starting lateral displacement of the first wheelset at the highest speed (and after
+        a speed where the motion died away), m.
+    duration : float
+        Simulated time at each speed, s.
+    max_step : float
+        Largest solver step, s.
+    threshold : float
+        Amplitude below which the motion counts as decayed, m.
+    refine : int
+        Number of bisection steps on the nonlinear critical speed (≥ 0).
+    progress : bool
+        Show a progress bar.
+
+    Returns
+    -------
+    BifurcationDiagram
+        Amplitudes (m), frequencies (Hz) and hunting flags along the ramp, and the nonlinear
+        critical speed (m/s); draw it with :meth:`BifurcationDiagram.plot`.
+
+    Raises
+    ------
+    SolverError
+        If an integration fails.
     """
     V = np.sort(_speeds(speeds))[::-1]
     positive("threshold", threshold)
@@ -516,7 +987,7 @@ def bifurcation_diagram(
                     low = mid
             vnl = float(high)
     amp = np.array([c.amplitude for c in cycles])
-    freq = np.array([c.frequency for c in cycles])
+    freq = np.array([c.frequency_hz for c in cycles])
     return BifurcationDiagram(V, amp, freq, hunting, vnl, threshold)
 
 
@@ -577,16 +1048,33 @@ def periodic_orbit(
 
     Parameters
     ----------
-    model : nonlinear model with ``at_speed``, ``rhs``, ``state_size``, ``lateral_index``
+    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
+        The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
+        ``lateral_index``.
     speed : float
-        m/s.
-    state : array_like
-        Guess of a point on the orbit (for instance the end of a
-        :func:`limit_cycle_amplitude` run).
+        Speed V, m/s (> 0).
+    state : array_like, shape (state_size,)
+        Guess of a point on the orbit (for instance the ``state`` at the end of a
+        :func:`limit_cycle_amplitude` run), in the units of the model's state.
     period : float
-        Guess of T, s (1/frequency of the settled motion).
+        Guess of T, s (1 / ``frequency_hz`` of the settled motion).
     tol : float
-        Convergence on the relative size of the Newton step.
+        Convergence on the relative size of the Newton step (dimensionless).
+    max_iter : int
+        Largest number of Newton steps (≥ 1).
+    rtol : float
+        Relative tolerance of the DOP853 integrations.
+
+    Returns
+    -------
+    PeriodicOrbit
+        The period (s), a point of the orbit, its amplitude (m), Floquet multipliers and the
+        residual of the periodicity condition.
+
+    Raises
+    ------
+    SolverError
+        If an integration fails or Newton's method does not converge in ``max_iter`` steps.
 
     Notes
     -----

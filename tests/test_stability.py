@@ -8,8 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import stability, vibration
-from raildyn.vehicles import Bogie, Car
 from raildyn.linear_model import LinearSystem
+from raildyn.vehicles import Bogie, Car
 from raildyn.wheelset import NonlinearWheelset, Wheelset
 
 SOFT = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # a wheelset that hunts below 60 m/s
@@ -68,12 +68,12 @@ def test_mode_tracking_keeps_labels_through_a_crossing():
     j2 = sweep.labels.index("q2")
     expected1 = np.sqrt(4.0 - 2.25 / speeds**2) / (2 * np.pi)
     # Each column stays on its own coordinate and follows its own closed-form frequency (1e-10 Hz).
-    np.testing.assert_allclose(sweep.frequencies[:, j1], expected1, atol=1e-10)
-    np.testing.assert_allclose(sweep.frequencies[:, j2], np.sqrt(3.0) / (2 * np.pi), atol=1e-10)
+    np.testing.assert_allclose(sweep.frequencies_hz[:, j1], expected1, atol=1e-10)
+    np.testing.assert_allclose(sweep.frequencies_hz[:, j2], np.sqrt(3.0) / (2 * np.pi), atol=1e-10)
     assert np.all(np.abs(sweep.shapes[:, 1, j1]) < 1e-12)
     # The naive order by frequency does swap at the crossing, so the test has teeth.
-    naive = np.sort(sweep.frequencies, axis=1)
-    assert not np.allclose(naive[:, 0], sweep.frequencies[:, j1])
+    naive = np.sort(sweep.frequencies_hz, axis=1)
+    assert not np.allclose(naive[:, 0], sweep.frequencies_hz[:, j1])
 
 
 def test_mode_labels_follow_kinetic_energy_not_amplitude():
@@ -86,7 +86,7 @@ def test_mode_labels_follow_kinetic_energy_not_amplitude():
     assert np.argmax(np.abs(phi[:, 0])) == 1 and np.argmax(energy[:, 0]) == 0  # the case has teeth
     system = LinearSystem(M, np.zeros((2, 2)), np.zeros((2, 2)), K, labels=("y", "ψ"))
     sweep = stability.mode_sweep(system, [1.0, 2.0])
-    np.testing.assert_allclose(sweep.frequencies[0], np.sqrt(w2) / (2 * np.pi), rtol=1e-10)
+    np.testing.assert_allclose(sweep.frequencies_hz[0], np.sqrt(w2) / (2 * np.pi), rtol=1e-10)
     assert sweep.labels == ("y", "ψ")
 
 
@@ -113,7 +113,7 @@ def test_critical_speed_of_negative_damping_oscillator(c0, c1):
     cs = stability.critical_speed(_negative_damping_oscillator(c0, c1), (1.0, 2.0 * expected + 10.0))
     assert cs.found
     assert abs(cs.speed - expected) <= 0.01
-    assert cs.frequency == pytest.approx(2.0 / (2 * np.pi), rel=1e-3)
+    assert cs.frequency_hz == pytest.approx(2.0 / (2 * np.pi), rel=1e-3)
 
 
 def test_critical_speed_brackets_the_sign_change():
@@ -186,7 +186,7 @@ def test_limit_cycle_amplitude_converged_in_step_size():
     fine = stability.limit_cycle_amplitude(model, 60.0, max_step=1e-3)
     assert coarse.hunting() and fine.hunting()
     assert fine.amplitude == pytest.approx(coarse.amplitude, rel=5e-3)
-    assert fine.frequency == pytest.approx(coarse.frequency, rel=5e-3)
+    assert fine.frequency_hz == pytest.approx(coarse.frequency_hz, rel=5e-3)
 
 
 def test_limit_cycle_decays_well_below_the_critical_speed():
@@ -224,9 +224,9 @@ def test_shooting_finds_the_cycle_that_direct_integration_settles_on():
     # crossings (2 ms in 0.17 s); 1e-3 covers both.
     model = NonlinearWheelset(SOFT)
     run = stability.limit_cycle_amplitude(model, 60.0)
-    orbit = stability.periodic_orbit(model, 60.0, run.state, 1.0 / run.frequency)
+    orbit = stability.periodic_orbit(model, 60.0, run.state, 1.0 / run.frequency_hz)
     assert orbit.amplitude == pytest.approx(run.amplitude, rel=1e-3)
-    assert orbit.period == pytest.approx(1.0 / run.frequency, rel=1e-3)
+    assert orbit.period == pytest.approx(1.0 / run.frequency_hz, rel=1e-3)
     assert orbit.residual < 1e-8
     # An autonomous system always has the multiplier 1 (a shift along the orbit); finite
     # differences with steps of 1e-5 relative give it to about 1e-3.

@@ -2,10 +2,12 @@
 
 import re
 
+import numpy as np
 import pytest
 
-from raildyn import stability, wheelset
-from raildyn.widgets import chapter05
+from raildyn import figures, stability, wheelset
+from raildyn.vehicles import Car
+from raildyn.widgets import chapter05, chapter07
 
 
 def _status(container):
@@ -33,3 +35,53 @@ def test_free_wheelset_is_reported_unstable():
     container, update = chapter05.wheelset_roots()
     update(yaw_stiffness=0.0, lateral_stiffness=0.0)
     assert "unstable at the lowest speed" in _status(container)
+
+
+# ---------------------------------------------------------------------------
+# Chapter 7
+
+
+def test_car_roots_status_and_chart_give_the_critical_speed():
+    container, update = chapter07.car_roots()
+    update(conicity=0.2, yaw_stiffness=20.0)
+    car = Car().replace(conicity=0.2, yaw_stiffness=20.0e6)
+    # The widget's root is found to 0.05 m/s over its own speed range; the same call here.
+    cs = stability.critical_speed(car, (5.0, 150.0), tol=0.05)
+    shown = re.search(r"critical speed ([\d.]+) m/s = \d+ km/h, hunting at ([\d.]+) Hz", _status(container))
+    assert float(shown.group(1)) == pytest.approx(cs.speed, abs=0.1)
+    assert float(shown.group(2)) == pytest.approx(cs.frequency_hz, abs=0.01)
+    # The chart (ModeSweep.plot, moved in place) marks the same speed and names it beside the marker.
+    ax_d = container.live.figure.axes[1]
+    assert [t.get_text() for t in ax_d.texts] == [f"{3.6 * cs.speed:.0f} km/h, {cs.frequency_hz:.2f} Hz"]
+
+
+def test_car_roots_draws_the_chart_of_figure_7_1():
+    # One method draws both: the same windows, labels and artists in the widget and the figure.
+    container, _ = chapter07.car_roots()
+    widget = container.live.figure.axes
+    figure = figures.make("fig7.1").axes
+    for mine, theirs in zip(widget[:2], figure[:2], strict=True):
+        assert mine.get_xlabel() == theirs.get_xlabel() and mine.get_ylabel() == theirs.get_ylabel()
+        assert mine.get_ylim() == theirs.get_ylim()
+        assert len(mine.lines) == len(theirs.lines) and len(mine.texts) == len(theirs.texts)
+    assert widget[0].get_xlim() == figure[0].get_xlim()
+
+
+def test_critical_curve_follows_the_critical_speed_map():
+    container, update = chapter07.critical_curve()
+    update(yaw_stiffness=20.0, secondary_yaw_stiffness=1.0)
+    conicities = chapter07._CONICITIES
+    base = Car().replace(secondary_yaw_stiffness=1.0e6)
+    expected = stability.critical_speed_map(
+        lambda lam, k: base.replace(conicity=lam, yaw_stiffness=k),
+        conicities,
+        [20.0e6],
+        (1.0, 200.0),
+        tol=0.1,
+        scan=16,
+        progress=False,
+    )
+    car_line = container.live.figure.axes[0].lines[0]
+    np.testing.assert_allclose(car_line.get_ydata(), 3.6 * expected.speeds[0], rtol=1e-12)
+    i = int(np.argmin(np.abs(conicities - 0.15)))
+    assert f"car {3.6 * expected.speeds[0, i]:.0f} km/h" in _status(container)

@@ -2,10 +2,15 @@
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
 models are :mod:`raildyn.vehicles` and :mod:`raildyn.stability`; this
-module only turns control values into model calls and moves artists.
+module only turns control values into model calls. The charts are drawn, and
+moved in place, by the methods of the results that the chapter's figures call
+too: :meth:`raildyn.stability.ModeSweep.plot` and
+:meth:`raildyn.stability.CriticalSpeedMap.plot_curves`.
 """
 
 from __future__ import annotations
+
+from functools import lru_cache
 
 import numpy as np
 
@@ -13,20 +18,23 @@ from raildyn import plots, stability
 from raildyn.vehicles import Car
 from raildyn.widgets._core import Recipe, slider
 
+__all__ = ["car_roots", "critical_curve"]
+
 _SPEEDS = np.linspace(5.0, 150.0, 60)  # m/s; enough points for smooth curves, few enough for 100 ms
 _CAR = Car()
 
 
-def _car(values) -> Car:
-    return _CAR.replace(
-        conicity=values["conicity"],
-        yaw_stiffness=1e6 * values.get("yaw_stiffness", _CAR.wheelset.yaw_stiffness / 1e6),
-    )
+@lru_cache(maxsize=64)
+def _car_roots(conicity: float, yaw_stiffness: float):
+    """Mode sweep and critical speed of the car (yaw stiffness in MN·m/rad), shared by setup and redraw."""
+    system = _CAR.replace(conicity=conicity, yaw_stiffness=1e6 * yaw_stiffness).linear_system()
+    sweep = stability.mode_sweep(system, _SPEEDS)
+    return sweep, stability.critical_speed(system, (_SPEEDS[0], _SPEEDS[-1]), tol=0.05)
 
 
 def _car_roots_controls():
     return {
-        "conicity": slider("conicity λ", 0.15, 0.02, 0.5, 0.01),
+        "conicity": slider("conicity λ", _CAR.wheelset.conicity, 0.02, 0.5, 0.01),
         "yaw_stiffness": slider(
             "primary k_ψ (MN·m/rad)", _CAR.wheelset.yaw_stiffness / 1e6, 2.0, 120.0, 1.0, fmt=".0f"
         ),
@@ -34,54 +42,19 @@ def _car_roots_controls():
 
 
 def _car_roots_setup(live, status):
-    ax_s, ax_d = live.axes[0]
-    n = _CAR.linear_system().size  # one root of each pair: the upper half-plane is drawn
-    roots = ax_s.scatter(
-        np.zeros(n * _SPEEDS.size),
-        np.zeros(n * _SPEEDS.size),
-        s=2,
-        c=np.zeros(n * _SPEEDS.size),
-        cmap="viridis",
-        vmin=0,
-        vmax=_SPEEDS[-1] * 3.6,
-    )
-    ax_s.axvline(0.0, color="k", lw=0.8)
-    ax_s.set_xlim(-25, 5)
-    ax_s.set_ylim(0, 70)
-    ax_s.set_xlabel("Re λ (1/s)")
-    ax_s.set_ylabel("Im λ (rad/s)")
-    live.figure.colorbar(roots, ax=ax_s, label="speed (km/h)")
-    modes = [ax_d.plot(_SPEEDS * 3.6, 0 * _SPEEDS, color="0.75", lw=0.8)[0] for _ in range(n)]
-    (hunting,) = ax_d.plot(_SPEEDS * 3.6, 0 * _SPEEDS, color=plots.COLORS[1], lw=2, label="hunting mode")
-    (mark,) = ax_d.plot([], [], "v", color="k", ms=8, label="critical speed")
-    ax_d.axhline(0.0, color="k", lw=0.8)
-    ax_d.set_xlim(0, _SPEEDS[-1] * 3.6)
-    ax_d.set_ylim(-0.15, 0.5)
-    ax_d.set_xlabel("speed (km/h)")
-    ax_d.set_ylabel("damping factor ξ")
-    ax_d.legend(loc="upper right")
-    live.animate(roots, *modes, hunting, mark)
+    sweep, cs = _car_roots(_CAR.wheelset.conicity, _CAR.wheelset.yaw_stiffness / 1e6)  # the defaults
+    chart = sweep.plot(live.axes[0], critical=cs)  # drawn once, then moved in place
+    live.animate(chart["roots"], *chart["modes"], chart["hunting"], chart["critical"], chart["critical_text"])
 
     def redraw(v):
-        car = _car(v)
-        system = car.linear_system()
-        sweep = stability.mode_sweep(system, _SPEEDS)
-        lam = sweep.eigenvalues
-        roots.set_offsets(np.column_stack([lam.real.ravel(), lam.imag.ravel()]))
-        roots.set_array(np.repeat(_SPEEDS * 3.6, lam.shape[1]))
-        for line, xi in zip(modes, sweep.damping_ratios.T, strict=True):
-            line.set_ydata(xi)
-        worst = int(np.argmin(sweep.damping_ratios[-1]))
-        hunting.set_ydata(sweep.damping_ratios[:, worst])
-        cs = stability.critical_speed(system, (_SPEEDS[0], _SPEEDS[-1]), tol=0.05)
+        sweep, cs = _car_roots(float(v["conicity"]), float(v["yaw_stiffness"]))
+        sweep.plot(critical=cs, artists=chart)
         if cs.found:
-            mark.set_data([cs.speed * 3.6], [0.0])
             status.value = (
                 f"critical speed {cs.speed:.1f} m/s = {cs.speed * 3.6:.0f} km/h, hunting at "
-                f"{cs.frequency:.2f} Hz"
+                f"{cs.frequency_hz:.2f} Hz"
             )
         else:
-            mark.set_data([], [])
             status.value = (
                 f"critical speed: {cs.status} ({_SPEEDS[0] * 3.6:.0f}–{_SPEEDS[-1] * 3.6:.0f} km/h)"
             )
@@ -103,8 +76,17 @@ def car_roots():
 
     Left: the roots coloured by speed; right: the damping factor of every mode
     against speed (modes followed by MAC), the one least damped at the top
-    speed in colour, and the critical speed marked. Controls: conicity λ and
-    the primary yaw stiffness of each wheelset k_ψ (MN·m/rad).
+    speed in colour, and the critical speed marked with its frequency. Controls:
+    conicity λ and the primary yaw stiffness of each wheelset k_ψ (MN·m/rad).
+    The chart is :meth:`raildyn.stability.ModeSweep.plot`, moved in place.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``conicity``, ``yaw_stiffness``), redraws and
+        returns the PNG frame.
     """
     return CAR_ROOTS.build()
 
@@ -112,34 +94,51 @@ def car_roots():
 _CONICITIES = np.linspace(0.03, 0.5, 10)
 
 
+def _critical_curves(yaw_stiffness: float, secondary_yaw_stiffness: float):
+    """Critical-speed maps of the car and of its bogie against conicity (stiffnesses in MN·m/rad)."""
+    base = _CAR.replace(secondary_yaw_stiffness=1e6 * secondary_yaw_stiffness)
+
+    def car(lam, k):
+        return base.replace(conicity=lam, yaw_stiffness=1e6 * k)
+
+    def bogie(lam, k):
+        return car(lam, k).bogie
+
+    def curve(factory):
+        return stability.critical_speed_map(
+            factory,
+            _CONICITIES,
+            [yaw_stiffness],
+            (1.0, 200.0),
+            x_name="conicity λ",
+            y_name="primary k_ψ (MN·m/rad)",
+            tol=0.1,
+            scan=16,
+            progress=False,
+        )
+
+    return curve(car), curve(bogie)
+
+
 def _critical_curve_setup(live, status):
     (ax,) = live.axes[0]
-    (car_line,) = ax.plot(_CONICITIES, 0 * _CONICITIES, "o-", color=plots.COLORS[0], label="car")
-    (bogie_line,) = ax.plot(
-        _CONICITIES, 0 * _CONICITIES, "s--", color=plots.COLORS[1], label="bogie under a still body"
+    car, bogie = _critical_curves(_CAR.wheelset.yaw_stiffness / 1e6, _CAR.bogie.secondary_yaw_stiffness / 1e6)
+    car_lines = car.plot_curves(ax, marker="o", color=plots.COLORS[0], label="car")
+    bogie_lines = bogie.plot_curves(
+        ax, marker="s", ls="--", color=plots.COLORS[1], label="bogie under a still body"
     )
     ax.set_xlim(0, 0.52)
     ax.set_ylim(0, 600)
-    ax.set_xlabel("conicity λ")
-    ax.set_ylabel("critical speed (km/h)")
     ax.legend(loc="upper right")
-    live.animate(car_line, bogie_line)
+    live.animate(*car_lines["lines"], *bogie_lines["lines"])
 
     def redraw(v):
-        base = _CAR.replace(
-            yaw_stiffness=1e6 * v["yaw_stiffness"],
-            secondary_yaw_stiffness=1e6 * v["secondary_yaw_stiffness"],
-        )
-        car_v, bogie_v = [], []
-        for lam in _CONICITIES:
-            car = base.replace(conicity=lam)
-            car_v.append(stability.critical_speed(car, (1.0, 200.0), tol=0.1, scan=16).speed)
-            bogie_v.append(stability.critical_speed(car.bogie, (1.0, 200.0), tol=0.1, scan=16).speed)
-        car_v, bogie_v = 3.6 * np.array(car_v), 3.6 * np.array(bogie_v)
-        car_line.set_ydata(np.where(np.isfinite(car_v), car_v, np.nan))
-        bogie_line.set_ydata(np.where(np.isfinite(bogie_v), bogie_v, np.nan))
+        car, bogie = _critical_curves(float(v["yaw_stiffness"]), float(v["secondary_yaw_stiffness"]))
+        car.plot_curves(artists=car_lines)
+        bogie.plot_curves(artists=bogie_lines)
         i = int(np.argmin(np.abs(_CONICITIES - 0.15)))
-        status.value = f"at λ ≈ {_CONICITIES[i]:.2f}: car {car_v[i]:.0f} km/h, bogie {bogie_v[i]:.0f} km/h"
+        car_v, bogie_v = 3.6 * car.speeds[0, i], 3.6 * bogie.speeds[0, i]
+        status.value = f"at λ ≈ {_CONICITIES[i]:.2f}: car {car_v:.0f} km/h, bogie {bogie_v:.0f} km/h"
 
     return redraw
 
@@ -165,7 +164,16 @@ def critical_curve():
 
     Controls: primary yaw stiffness k_ψ of each wheelset (MN·m/rad) and the
     secondary yaw stiffness of each bogie (MN·m/rad). Speeds above 720 km/h
-    (no crossing below 200 m/s) are left blank.
+    (no crossing below 200 m/s) are left blank. The curves are
+    :meth:`raildyn.stability.CriticalSpeedMap.plot_curves`, moved in place.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``yaw_stiffness``, ``secondary_yaw_stiffness``),
+        redraws and returns the PNG frame.
     """
     return CRITICAL_CURVE.build()
 
