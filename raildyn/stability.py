@@ -436,7 +436,7 @@ class CriticalSpeed:
 
     @property
     def frequency(self) -> float:
-        """The same as :attr:`frequency_hz`, Hz (the former name, kept for callers not yet moved)."""
+        """The same as ``frequency_hz``, Hz (the former name, kept for callers not yet moved)."""
         return self.frequency_hz
 
 
