@@ -7,6 +7,7 @@ bad number never travels on to become a silent NaN.
 
 from __future__ import annotations
 
+import math
 import numbers
 
 import numpy as np
@@ -26,20 +27,28 @@ def scalar(name: str, value, *, low=None, high=None, low_open=False, high_open=F
 
     ``low_open`` / ``high_open`` make the matching bound strict.
     """
-    if isinstance(value, bool) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
+    # The common case first and cheaply (this runs inside right-hand sides): a plain float or int.
+    if type(value) is not float and (
+        isinstance(value, bool) or not isinstance(value, (numbers.Real, np.floating, np.integer))
+    ):
         if not (isinstance(value, np.ndarray) and value.ndim == 0):
             raise TypeError(f"{name} must be a real number, got {value!r} of type {type(value).__name__}")
     x = float(value)
+    if not math.isfinite(x):
+        raise ValueError(f"{name} must be a finite number in {_interval(low, high, low_open, high_open)}, "
+                         f"got {value!r}")  # fmt: skip
+    if (low is not None and (x < low or (low_open and x == low))) or (
+        high is not None and (x > high or (high_open and x == high))
+    ):
+        raise ValueError(f"{name} must be in {_interval(low, high, low_open, high_open)}, got {value!r}")
+    return x
+
+
+def _interval(low, high, low_open, high_open) -> str:
+    """The allowed interval in words, for an error message."""
     lo = "(" if low_open else "["
     hi = ")" if high_open else "]"
-    allowed = f"{lo}{'-inf' if low is None else low}, {'inf' if high is None else high}{hi}"
-    if not np.isfinite(x):
-        raise ValueError(f"{name} must be a finite number in {allowed}, got {value!r}")
-    if low is not None and (x < low or (low_open and x == low)):
-        raise ValueError(f"{name} must be in {allowed}, got {value!r}")
-    if high is not None and (x > high or (high_open and x == high)):
-        raise ValueError(f"{name} must be in {allowed}, got {value!r}")
-    return x
+    return f"{lo}{'-inf' if low is None else low}, {'inf' if high is None else high}{hi}"
 
 
 def positive(name: str, value) -> float:
@@ -68,11 +77,11 @@ def array(name: str, value, *, ndim=None, shape=None, low=None, low_open=False, 
         if not fits:
             want = "(" + ", ".join("any" if s is None else str(s) for s in shape) + ")"
             raise ValueError(f"{name} must have shape {want}, got shape {arr.shape}")
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():
         raise ValueError(f"{name} must contain only finite numbers, got {_show(value)}")
     if low is not None:
         bad = arr <= low if low_open else arr < low
-        if np.any(bad):
+        if bad.any():
             op = ">" if low_open else ">="
             first = arr[bad].flat[0]
             raise ValueError(f"{name} must be {op} {low} everywhere, got {first!r} in {_show(value)}")

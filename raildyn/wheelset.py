@@ -28,7 +28,7 @@ import numpy as np
 
 from raildyn._checks import nonnegative, positive, scalar
 from raildyn.constants import GRAVITY, STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS, STEEL_YOUNGS_MODULUS
-from raildyn.contact.creep import creep_coefficients
+from raildyn.contact.creep import creep_coefficients, saturation_factor, wheelset_creepages
 from raildyn.contact.hertz import hertz_contact
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 
@@ -47,7 +47,6 @@ __all__ = [
     "creep_terms",
     "kinematic_wavelength",
     "rigid_bogie_wavelength",
-    "saturation_factor",
     "wickens_critical_speed",
 ]
 
@@ -66,6 +65,11 @@ def kinematic_wavelength(rolling_radius, half_gauge, conicity) -> float:
     conicity : float
         Equivalent conicity λ (> 0), dimensionless.
 
+    Returns
+    -------
+    float
+        L, m.
+
     Examples
     --------
     >>> round(kinematic_wavelength(0.46, 0.75, 0.05), 3)
@@ -83,6 +87,18 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
     L = 2π √(r₀ a / λ · (1 + b²/a²)), with b the half wheelbase (Wickens 2003,
     ch. 2): the rigid frame forces each wheelset to slide laterally as it yaws,
     which lengthens the wave.
+
+    Parameters
+    ----------
+    rolling_radius, half_gauge, conicity : float
+        r₀ (m), a (m) and λ, as for :func:`kinematic_wavelength`.
+    semi_wheelbase : float
+        b, half the distance between the two axles, m (> 0).
+
+    Returns
+    -------
+    float
+        L, m.
 
     Examples
     --------
@@ -209,6 +225,15 @@ class Wheelset(LinearModelBase):
 
         A contact angle or ε that followed the conicity keeps following it when
         only the conicity changes.
+
+        Parameters
+        ----------
+        **changes
+            Field names and their new values.
+
+        Returns
+        -------
+        Wheelset
         """
         from dataclasses import replace
 
@@ -353,6 +378,16 @@ def wickens_critical_speed(params: Wheelset) -> float:
     (Wickens 1965; Wickens 2003, ch. 3). Independent of the creep coefficients
     as long as they are equal; with f₁₁ ≠ f₂₂ the same expansion weights k_ψ
     and I by f₂₂ and a²k_y and m a² by f₁₁.
+
+    Parameters
+    ----------
+    params : Wheelset
+        Its conicity must be > 0.
+
+    Returns
+    -------
+    float
+        V_c, m/s (0 with no suspension stiffness).
     """
     a, r0, lam = params.half_gauge, params.rolling_radius, positive("conicity", params.conicity)
     stiffness = params.yaw_stiffness + a**2 * params.lateral_stiffness
@@ -408,35 +443,14 @@ class WheelRailContact:
                 raise TypeError(f"{name} must be a callable of y or None, got {value!r}")
 
 
-def saturation_factor(force, limit) -> np.ndarray:
-    """Shen–Hedrick–Elkins reduction of a linear creep force magnitude F to μN (Shen et al. 1983).
-
-    Parameters
-    ----------
-    force : array_like
-        |F| of the linear law, N.
-    limit : float
-        μN, N.
-
-    Returns
-    -------
-    ndarray
-        F_sat/F with F_sat = μN(u − u²/3 + u³/27) for u = F/(μN) < 3 and μN beyond.
-    """
-    force = np.abs(np.asarray(force, dtype=float))
-    u = force / limit
-    sat = np.where(u < 3.0, u - u**2 / 3.0 + u**3 / 27.0, 1.0)
-    return np.divide(sat, u, out=np.ones_like(u), where=u > 0)
-
-
 def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
     """Lateral force (N) and yaw moment (N·m) of the rails on a wheelset, nonlinear; arrays broadcast.
 
-    Creepages of the left/right wheel: ξx = ∓(aψ̇/V + Δr(y)/(2r₀)), ξy = ẏ/V − ψ,
-    spin ψ̇/V (those of :func:`raildyn.contact.creep.wheelset_creepages` with
-    r_L,R = r₀ ± Δr/2 and no contact-angle spin, written out here because this
-    runs inside every step of a hunting simulation). Each wheel's longitudinal and
-    lateral linear force is reduced by :func:`saturation_factor` at μ W/2;
+    The creepages are those of :func:`raildyn.contact.creep.wheelset_creepages` with
+    r_L,R = r₀ ± Δr(y)/2 and no contact-angle spin: ξx = ∓(aψ̇/V + Δr/(2r₀)),
+    ξy = ẏ/V − ψ, spin ψ̇/V on the left/right wheel. Each wheel's longitudinal and
+    lateral linear force is reduced by :func:`raildyn.contact.creep.saturation_factor`
+    at μ W/2;
     gravity acts through the contact-angle difference, and the flange as a
     spring beyond the clearance. For small motion the result equals the linear
     forces of :func:`creep_terms`.
@@ -463,14 +477,14 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
         dd = 2.0 * ws.contact_angle_parameter * np.asarray(y, dtype=float) / a
     else:
         dd = contact.contact_angle_difference(y)
-    xi_x = -(a * psidot / speed + dr / (2.0 * r0))  # left wheel; the right one has the opposite sign
-    xi_y = ydot / speed - psi
-    spin = psidot / speed
+    creep = wheelset_creepages(speed, ydot, psi, psidot, r0 + dr / 2.0, r0 - dr / 2.0, r0, a, check=False)
+    # The left wheel's; the right one's longitudinal creepage is opposite, its others are the same.
+    xi_x, xi_y, spin = creep.longitudinal[0], creep.lateral[0], creep.spin[0]
     fx = -ws.f11 * xi_x
     fy = -ws.f22 * xi_y - ws.f23 * spin
     limit = contact.friction * W / 2.0
     # The two wheels have the same lateral and opposite longitudinal force, so the same magnitude.
-    scale = saturation_factor(np.hypot(fx, fy), limit)
+    scale = saturation_factor(np.hypot(fx, fy), limit, check=False)
     lateral = 2.0 * scale * fy - W / 2.0 * dd
     yaw = -2.0 * a * scale * fx + 2.0 * (ws.f23 * xi_y - ws.f33 * spin) + W * a * ws.contact_angle * psi
     excess = np.abs(y) - contact.flange_clearance
@@ -496,11 +510,34 @@ class NonlinearWheelset:
     lateral_index = 0  # the state entry of the lateral displacement followed in hunting studies
 
     def at_speed(self, speed) -> NonlinearWheelset:
-        """The same wheelset at another speed (m/s)."""
+        """The same wheelset at another speed.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+
+        Returns
+        -------
+        NonlinearWheelset
+        """
         return NonlinearWheelset(self.wheelset, self.contact, speed)
 
     def rhs(self, t, state):
-        """Time derivative of the state (vectorised over trailing columns)."""
+        """Time derivative of the state (vectorised over trailing columns).
+
+        Parameters
+        ----------
+        t : float
+            s (the model is autonomous: unused).
+        state : ndarray, (4,) or (4, k)
+            [y, ψ, ẏ, ψ̇].
+
+        Returns
+        -------
+        ndarray, like ``state``
+            [ẏ, ψ̇, ÿ, ψ̈].
+        """
         ws = self.wheelset
         y, psi, ydot, psidot = state
         fy, mz = contact_forces(ws, self.contact, y, psi, ydot, psidot, self.speed)
@@ -558,11 +595,34 @@ class NonlinearLateral:
         return self.system.wheelsets[0][0]
 
     def at_speed(self, speed) -> NonlinearLateral:
-        """The same model at another speed (m/s)."""
+        """The same model at another speed.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+
+        Returns
+        -------
+        NonlinearLateral
+        """
         return NonlinearLateral(self.system, self.contact, speed)
 
     def rhs(self, t, state):
-        """Time derivative of [q; q̇]."""
+        """Time derivative of [q; q̇].
+
+        Parameters
+        ----------
+        t : float
+            s (the model is autonomous: unused).
+        state : ndarray, (2n,) or (2n, k)
+            [q; q̇].
+
+        Returns
+        -------
+        ndarray, like ``state``
+            [q̇; q̈].
+        """
         n = self.system.size
         q, qdot = state[:n], state[n:]
         force = -self.system.C0 @ qdot - self._K_suspension @ q

@@ -29,6 +29,7 @@ from raildyn.contact.creep import (
     kalker_linear,
     polach,
     polach_adhesion,
+    saturation_factor,
     shen_hedrick_elkins,
     wheelset_creepages,
 )
@@ -87,6 +88,7 @@ __all__ = [
     "POLACH_WET",
     "rolling_radius_difference",
     "s1002_wheel",
+    "saturation_factor",
     "shen_hedrick_elkins",
     "uic60_rail",
     "wheelset_creepages",

@@ -37,6 +37,7 @@ __all__ = [
     "kalker_linear",
     "polach",
     "polach_adhesion",
+    "saturation_factor",
     "shen_hedrick_elkins",
     "wheelset_creepages",
 ]
@@ -379,6 +380,39 @@ def johnson_vermeulen(longitudinal, lateral, normal_load, friction, coefficients
     return CreepForces(fx=_out(-scale * lin_x), fy=_out(-scale * lin_y))
 
 
+def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
+    """Shen–Hedrick–Elkins reduction of a linear creep force F towards μN (Shen et al. 1983): F_sat/F.
+
+    With u = F/(μN), F_sat = μN(u − u²/3 + u³/27) for u < 3 and μN beyond. The one
+    statement of the law in raildyn: :func:`shen_hedrick_elkins` and the nonlinear
+    wheelset (:func:`raildyn.wheelset.contact_forces`) both scale by it.
+
+    Parameters
+    ----------
+    force : array_like
+        Magnitude |F| of the linear (Kalker) force, N.
+    limit : float
+        μN, N (> 0).
+    check : bool
+        Check the input (default); False for a caller that has (as :func:`wheelset_creepages`).
+
+    Returns
+    -------
+    ndarray
+        F_sat/F, in (0, 1]; 1 where F = 0.
+
+    Examples
+    --------
+    >>> float(saturation_factor(3.0e4, 1.0e4))  # u = 3: fully saturated, F_sat = μN
+    0.3333333333333333
+    """
+    if check:
+        force, limit = _checks.array("force", force), _checks.positive("limit", limit)
+    u = np.abs(force) / limit
+    sat = np.where(u < 3.0, u - u**2 / 3.0 + u**3 / 27.0, 1.0)
+    return np.divide(sat, u, out=np.ones_like(u), where=u > 0)
+
+
 def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coefficients: CreepCoefficients):
     """Kalker's linear forces bounded by the heuristic saturation of Shen, Hedrick and Elkins (1983).
 
@@ -414,9 +448,7 @@ def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coef
     n = _checks.positive("normal_load", normal_load)
     mu = _friction(friction)
     lin = kalker_linear(longitudinal, lateral, spin, coefficients)
-    beta = np.asarray(lin.resultant) / (mu * n)
-    sat = np.where(beta <= 3.0, beta - beta**2 / 3 + beta**3 / 27, 1.0)
-    scale = np.where(beta > 0, sat / np.where(beta > 0, beta, 1.0), 1.0)
+    scale = saturation_factor(lin.resultant, mu * n)
     return CreepForces(
         fx=_out(scale * lin.fx),
         fy=_out(scale * lin.fy),
@@ -677,6 +709,8 @@ def wheelset_creepages(
     half_gauge,
     contact_angle_left=0.0,
     contact_angle_right=0.0,
+    *,
+    check: bool = True,
 ) -> WheelsetCreepages:
     """Creepages of a wheelset on straight track (Garg & Dukkipati 1984, ch. 4–5).
 
@@ -703,6 +737,10 @@ def wheelset_creepages(
         l (m), half the lateral distance between the contact points.
     contact_angle_left, contact_angle_right : float or array_like
         δ_L, δ_R (rad).
+    check : bool
+        Check the input (default). A caller that has checked it already, such as
+        the right-hand side of :class:`raildyn.wheelset.NonlinearLateral` evaluated
+        thousands of times a run, passes False: bad input then gives bad numbers.
 
     Returns
     -------
@@ -717,6 +755,10 @@ def wheelset_creepages(
     >>> np.round(c.longitudinal * 1e4, 4).tolist()
     [-3.2609, 3.2609]
     """
+    if not check:
+        return _wheelset_creepages(speed, lateral_velocity, yaw_angle, yaw_rate, rolling_radius_left,
+                                   rolling_radius_right, nominal_radius, half_gauge, contact_angle_left,
+                                   contact_angle_right)  # fmt: skip
     v = _checks.positive("speed", speed)
     r0 = _checks.positive("nominal_radius", nominal_radius)
     l_half = _checks.positive("half_gauge", half_gauge)
@@ -727,8 +769,19 @@ def wheelset_creepages(
     r_r = _checks.array("rolling_radius_right", rolling_radius_right, low=0.0, low_open=True)
     d_l = _checks.array("contact_angle_left", contact_angle_left)
     d_r = _checks.array("contact_angle_right", contact_angle_right)
-    y_dot, psi, psi_dot, r_l, r_r, d_l, d_r = np.broadcast_arrays(y_dot, psi, psi_dot, r_l, r_r, d_l, d_r)
-    xi = np.stack([(r0 - r_l) / r0 - l_half * psi_dot / v, (r0 - r_r) / r0 + l_half * psi_dot / v])
-    eta = np.stack([y_dot / v - psi] * 2)
-    phi = np.stack([psi_dot / v - np.sin(d_l) / r_l, psi_dot / v + np.sin(d_r) / r_r])
+    return _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r)
+
+
+def _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r) -> WheelsetCreepages:
+    """The creepages of :func:`wheelset_creepages` from checked arrays."""
+    # Filled in place rather than by broadcast_arrays and stack: the nonlinear wheelset calls this
+    # at every evaluation of its right-hand side.
+    shape = (2, *np.broadcast_shapes(*(np.shape(x) for x in (y_dot, psi, psi_dot, r_l, r_r, d_l, d_r))))
+    yaw = l_half * psi_dot / v
+    xi, eta, phi = np.empty(shape), np.empty(shape), np.empty(shape)
+    xi[0] = (r0 - r_l) / r0 - yaw
+    xi[1] = (r0 - r_r) / r0 + yaw
+    eta[:] = y_dot / v - psi
+    phi[0] = psi_dot / v - np.sin(d_l) / r_l
+    phi[1] = psi_dot / v + np.sin(d_r) / r_r
     return WheelsetCreepages(longitudinal=xi, lateral=eta, spin=phi)
