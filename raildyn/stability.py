@@ -1104,26 +1104,37 @@ def periodic_orbit(
         x = sol.y_events[0][0].copy()
     x[iv] = 0.0
 
-    def flow(x0, t_end):
-        sol = scipy.integrate.solve_ivp(m.rhs, (0.0, t_end), x0, method="DOP853", rtol=rtol, atol=1e-12)
+    def flow(starts, t_end):
+        """φ_t(x₀) for each column of ``starts``, integrated as one system.
+
+        The columns share one sequence of adaptive steps, so the differences between
+        neighbouring trajectories that the finite differences below take carry the
+        truncation error of the perturbation, not the noise of two step sequences.
+        """
+        k = starts.shape[1]
+
+        def rhs(t, z):
+            return m.rhs(t, z.reshape(n, k)).reshape(-1)
+
+        sol = scipy.integrate.solve_ivp(
+            rhs, (0.0, t_end), starts.reshape(-1), method="DOP853", rtol=rtol, atol=1e-12
+        )
         if not sol.success:
             raise SolverError(
                 f"shooting integration failed at V = {V:.2f} m/s: {sol.message}", time=float(sol.t[-1])
             )
-        return sol.y[:, -1]
+        return sol.y[:, -1].reshape(n, k)
 
     # Finite-difference steps relative to each entry, with a floor so that an entry near 0 (such
     # as the lateral velocity on the section) is not perturbed below the integration noise.
     scale = np.maximum(np.abs(x), 1e-2 * np.abs(x).max())
+    h = 1e-5 * scale
     for _ in range(integer("max_iter", max_iter, low=1)):
-        end = flow(x, T)
-        residual = end - x
+        starts = np.column_stack([x] + [x + h[i] * np.eye(n)[i] for i in free])
+        ends = flow(starts, T)
+        end, residual = ends[:, 0], ends[:, 0] - x
         J = np.empty((n, n))
-        for col, i in enumerate(free):
-            h = 1e-5 * scale[i]
-            xp = x.copy()
-            xp[i] += h
-            J[:, col] = (flow(xp, T) - xp - residual) / h
+        J[:, :-1] = (ends[:, 1:] - starts[:, 1:] - residual[:, None]) / h[free]
         J[:, -1] = m.rhs(T, end)  # d/dT of φ_T(x₀)
         step = np.linalg.solve(J, -residual)
         x[free] += step[:-1]
@@ -1132,14 +1143,12 @@ def periodic_orbit(
             break
     else:
         raise SolverError(f"shooting did not converge in {max_iter} iterations at V = {V:.2f} m/s")
-    # Monodromy matrix and one period of the orbit, for the multipliers and the amplitude.
-    end = flow(x, T)
-    monodromy = np.empty((n, n))
-    for i in range(n):
-        h = 1e-5 * scale[i]
-        xp = x.copy()
-        xp[i] += h
-        monodromy[:, i] = (flow(xp, T) - end) / h
+    # Monodromy matrix (central differences, all trajectories on one step sequence) and one period of
+    # the orbit, for the multipliers and the amplitude.
+    shifts = np.diag(h)
+    ends = flow(np.column_stack([x[:, None] + shifts, x[:, None] - shifts, x]), T)
+    monodromy = (ends[:, :n] - ends[:, n : 2 * n]) / (2 * h)
+    end = ends[:, -1]
     sol = scipy.integrate.solve_ivp(
         m.rhs, (0.0, T), x, method="DOP853", rtol=rtol, atol=1e-12, max_step=T / 200
     )
