@@ -126,7 +126,8 @@ def test_gdu_ore_car_values_match_the_source():
     # centre of gravity 2.152 m above the rail, spring tops at seat 0.238 + loaded length 0.267
     assert c.cg_height == pytest.approx(2.152 - 0.238 - 0.267, abs=1e-12)
     # two wedges of 344 kN/m springs, 0.1857 -> 0.1381 m, on a 37.5° slope with μ = 0.10
-    down, up = wedge_friction_force(344000.0 * (0.1857 - 0.1381), np.radians(37.5), 0.10)
+    wedges = wedge_friction_force(344000.0 * (0.1857 - 0.1381), np.radians(37.5), 0.10)
+    down, up = wedges.bolster_down, wedges.bolster_up
     assert c.wedge_friction == pytest.approx(0.5 * (down + up), rel=1e-12)
     assert 4.3e3 < c.wedge_friction < 4.4e3
 
@@ -162,7 +163,8 @@ def test_gdu_inertia_reading_agrees_with_the_authors_labelled_set():
 def test_property_wedge_friction_balances_the_wedge(P, alpha, mu, n):
     if np.tan(alpha) <= mu + 0.05:
         return
-    down, up = wedge_friction_force(P, alpha, mu, wedges=n)
+    wedges = wedge_friction_force(P, alpha, mu, wedges=n)
+    down, up = wedges.bolster_down, wedges.bolster_up
     for sign, got in ((1.0, down), (-1.0, up)):
         # unknowns: column normal N, slope normal N_b; horizontal N = N_b cos α; vertical
         # P + sign·μN = N_b sin α (column friction with the spring when the bolster goes down)
@@ -226,3 +228,21 @@ def test_rock_and_roll_refuses_a_step_at_which_rk4_goes_unstable():
     fine = rock_and_roll(CAR, [8.0], cycles=8, dt=0.9 * limit / 4).roll_amplitude[0]
     assert np.isfinite(near) and near < 0.05
     assert near == pytest.approx(fine, rel=0.01)
+
+
+def test_rock_and_roll_plot_draws_degrees_against_kmh_and_moves_in_place():
+    import matplotlib.pyplot as plt
+
+    a = rock_and_roll(CAR, [6.0, 9.0], cycles=4)
+    b = rock_and_roll(CAR.replace(wedge_friction=2e3), [6.0, 9.0], cycles=4)
+    fig, ax = plt.subplots()
+    artists = a.plot(ax)
+    x, y = artists["curve"].get_data()
+    np.testing.assert_allclose(x, [21.6, 32.4], rtol=1e-15)
+    np.testing.assert_allclose(y, np.degrees(a.roll_amplitude), rtol=1e-15)
+    assert artists["resonance"].get_xdata()[0] == pytest.approx(3.6 * CAR.roll_resonance_speed(), rel=1e-15)
+    curve = artists["curve"]
+    assert b.plot(artists=artists)["curve"] is curve
+    np.testing.assert_allclose(curve.get_ydata(), np.degrees(b.roll_amplitude), rtol=1e-15)
+    assert "resonance" not in a.plot(ax, resonance=False)
+    plt.close(fig)

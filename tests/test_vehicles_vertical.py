@@ -323,7 +323,8 @@ def test_periodic_profile_slope_is_the_exact_derivative_and_repeats():
     dx, n = 0.25, 400  # one 100 m period
     x = np.arange(n) * dx
     z = 0.003 * np.sin(2 * np.pi * x / 20.0) + 0.001 * np.cos(2 * np.pi * x / 12.5)
-    profile, slope = periodic_profile(z, dx)
+    sample = periodic_profile(z, dx)
+    profile, slope = sample.height, sample.slope
     exact = 0.003 * 2 * np.pi / 20.0 * np.cos(2 * np.pi * x / 20.0) - 0.001 * 2 * np.pi / 12.5 * np.sin(
         2 * np.pi * x / 12.5
     )
@@ -355,3 +356,22 @@ def test_every_manchester_inertia_turns_about_its_own_axis():
     for label in ("bogie1 θ", "bogie2 θ"):
         i = MANCHESTER_VERTICAL.linear_system().labels.index(label)
         assert M[i, i] == frame_y
+
+
+def test_response_spectrum_plot_draws_the_psd_per_hz_and_moves_in_place():
+    """The chart of figure 6.ride and the ride widget: PSD per Hz = 2π × PSD per rad/s (the
+    package's conversion; exact), against f = ω/2π; a second spectrum moves the same line."""
+    import matplotlib.pyplot as plt
+
+    w = np.linspace(1.0, 100.0, 50)
+    slow = resp.response_spectrum(CAR, FRA4, 20.0, w)
+    fast = resp.response_spectrum(CAR, FRA4, 40.0, w)
+    fig, ax = plt.subplots()
+    artists = slow.plot(ax)
+    x, y = artists["line"].get_data()
+    np.testing.assert_allclose(x, w / (2 * np.pi), rtol=1e-15)
+    np.testing.assert_allclose(y, 2 * np.pi * slow.psd, rtol=1e-15)
+    line = artists["line"]
+    assert fast.plot(artists=artists)["line"] is line
+    np.testing.assert_allclose(line.get_ydata(), 2 * np.pi * fast.psd, rtol=1e-15)
+    plt.close(fig)

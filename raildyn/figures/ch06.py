@@ -25,10 +25,8 @@ def ride_spectra() -> Figure:
     w = 2 * np.pi * f
     for i, kmh in enumerate((80, 120, 160)):
         spec = response_spectrum(vehicle, track.track_psd("fra", "vertical", 4), kmh / 3.6, w)
-        ax_s.semilogy(f, 2 * np.pi * spec.psd, color=plots.COLORS[i], label=f"{kmh} km/h")
+        spec.plot(ax_s, color=plots.COLORS[i], label=f"{kmh} km/h")
     ax_s.set_ylim(1e-6, 1.0)
-    ax_s.set_xlabel("frequency (Hz)")
-    ax_s.set_ylabel(r"PSD ((m/s$^2$)$^2$/Hz)")
     ax_s.legend()
     speeds = np.linspace(40.0, 200.0, 17)
     grades = [("fra", c) for c in (3, 4, 5, 6)] + [("german", "high"), ("german", "low")]
@@ -61,16 +59,7 @@ def rock_figure() -> Figure:
     speeds = np.linspace(20.0, 70.0, 16) / 3.6
     for i, friction in enumerate((2e3, 6e3, 15e3)):
         r = rock_and_roll(FreightCar(wedge_friction=friction), speeds, cycles=12)
-        ax.plot(
-            3.6 * speeds,
-            np.degrees(r.roll_amplitude),
-            "o-",
-            ms=3,
-            color=plots.COLORS[i],
-            label=f"{friction / 1e3:.0f} kN per nest",
-        )
-    ax.axvline(3.6 * FreightCar().roll_resonance_speed(), color="k", ls=":", lw=1)
-    ax.set_xlabel("speed (km/h)")
-    ax.set_ylabel("roll amplitude (deg)")
+        # the springs alone set the resonance, the same for every friction: marked once
+        r.plot(ax, color=plots.COLORS[i], label=f"{friction / 1e3:.0f} kN per nest", resonance=i == 0)
     ax.legend()
     return fig

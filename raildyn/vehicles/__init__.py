@@ -7,6 +7,7 @@ from raildyn.vehicles.freight import (
     GDU_ORE_CAR,
     FreightCar,
     RockAndRoll,
+    WedgeFriction,
     gdu_ore_car,
     rock_and_roll,
     wedge_energy_per_cycle,
@@ -15,6 +16,7 @@ from raildyn.vehicles.freight import (
 from raildyn.vehicles.lateral import COOPERRIDER_CAR, MANCHESTER_CAR, Bogie, Car, cooperrider_car
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
 from raildyn.vehicles.response import (
+    PeriodicProfile,
     ResponseSpectrum,
     TimeResponse,
     periodic_profile,
@@ -36,10 +38,12 @@ __all__ = [
     "GDU_ORE_CAR",
     "Locomotive",
     "MANCHESTER_VERTICAL",
+    "PeriodicProfile",
     "ResponseSpectrum",
     "RockAndRoll",
     "TimeResponse",
     "VerticalCar",
+    "WedgeFriction",
     "cooperrider_car",
     "gdu_ore_car",
     "periodic_profile",

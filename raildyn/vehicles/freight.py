@@ -32,9 +32,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import matplotlib
 import numpy as np
 
-from raildyn import _checks
+from raildyn import _checks, plots
 from raildyn import track as _track
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
@@ -48,6 +49,7 @@ __all__ = [
     "LABELS",
     "FreightCar",
     "RockAndRoll",
+    "WedgeFriction",
     "gdu_ore_car",
     "rock_and_roll",
     "wedge_energy_per_cycle",
@@ -139,13 +141,35 @@ class FreightCar(LinearModelBase):
         )
 
     def roll_resonance_speed(self, rail_length: float = _track.RAIL_LENGTH) -> float:
-        """Speed (m/s) at which staggered joints, one cross-level cycle per rail length, meet the roll
-        frequency: V = f_roll L."""
+        """Speed at which staggered joints, one cross-level cycle per rail length, meet the roll
+        frequency: V = f_roll L.
+
+        Parameters
+        ----------
+        rail_length : float
+            L, m.
+
+        Returns
+        -------
+        float
+            V, m/s.
+        """
         return self.natural_frequencies().roll_hz * _checks.positive("rail_length", rail_length)
 
     def roll_input_factor(self, rail_length: float = _track.RAIL_LENGTH) -> float:
         """|cos(2π s/L)|: the share of a cross-level wave of length L that the two trucks, 2s apart,
-        pass on to the body's roll (their inputs cancel when 2s = L/2)."""
+        pass on to the body's roll (their inputs cancel when 2s = L/2).
+
+        Parameters
+        ----------
+        rail_length : float
+            L, m.
+
+        Returns
+        -------
+        float
+            In [0, 1].
+        """
         L = _checks.positive("rail_length", rail_length)
         return float(abs(np.cos(2 * np.pi * self.semi_truck_spacing / L)))
 
@@ -155,7 +179,14 @@ class FreightCar(LinearModelBase):
         return np.array([0.0, 2 * a, 2 * s, 2 * s + 2 * a])
 
     def nests(self) -> list[tuple[np.ndarray, np.ndarray]]:
-        """Per nest (g, h): its deflection is g·q − h·w (w: 8 rail heights, axle by axle, left first)."""
+        """The geometry of each spring nest.
+
+        Returns
+        -------
+        list of (ndarray (3,), ndarray (8,))
+            Per nest (g, h): its deflection is g·q − h·w (w: 8 rail heights, axle by
+            axle, left first), front truck first, left side first.
+        """
         s, b = self.semi_truck_spacing, self.semi_spring_spacing
         out = []
         for truck, x in enumerate((s, -s)):
@@ -211,6 +242,48 @@ class RockAndRoll:
     resonance_speed: float
     t: np.ndarray
     roll: np.ndarray
+
+    def plot(
+        self, ax=None, *, artists: dict | None = None, label: str | None = None, color=None, resonance=True
+    ) -> dict:
+        """Draw the roll amplitude (deg) against speed (km/h), with the springs' roll resonance.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default. Ignored when ``artists`` is given.
+        artists : dict, optional
+            The artists an earlier call returned: they are moved to this result.
+        label : str, optional
+            Legend entry of the curve.
+        color : optional
+            Curve colour; the house palette's first by default.
+        resonance : bool
+            Mark the resonance speed V = f_φ L with a dotted line.
+
+        Returns
+        -------
+        dict
+            The artists: ``curve`` and, with ``resonance``, ``resonance``.
+        """
+        kmh = 3.6 * self.speeds
+        amplitude = np.degrees(self.roll_amplitude)
+        if artists is not None:
+            artists["curve"].set_data(kmh, amplitude)
+            if "resonance" in artists:
+                artists["resonance"].set_xdata([3.6 * self.resonance_speed] * 2)
+            return artists
+        ax = plots.axes_or_new(ax)
+        out = {}
+        with matplotlib.rc_context(plots.STYLE):
+            (out["curve"],) = ax.plot(kmh, amplitude, "o-", ms=3, label=label,
+                                      color=plots.COLORS[0] if color is None else color)  # fmt: skip
+            if resonance:
+                out["resonance"] = ax.axvline(3.6 * self.resonance_speed, color="k", ls=":", lw=1,
+                                              label="roll resonance $f_\\phi L$")  # fmt: skip
+            ax.set_xlabel("speed (km/h)")
+            ax.set_ylabel("roll amplitude (deg)")
+        return out
 
 
 def rock_and_roll(
@@ -320,9 +393,27 @@ def rock_and_roll(
 def wedge_energy_per_cycle(
     friction_force, amplitude, frequency, *, velocity_scale=None, n: int = 20_000
 ) -> float:
-    """Energy (J) a wedge dissipates over one cycle of imposed motion X sin ωt: ∮ F(v) v dt.
+    """Energy a wedge dissipates over one cycle of imposed motion X sin ωt: ∮ F(v) v dt.
 
-    ``frequency`` in Hz; with the ideal law (no ``velocity_scale``) the result is 4 F X.
+    With the ideal law (no ``velocity_scale``) the result is 4 F X.
+
+    Parameters
+    ----------
+    friction_force : float
+        F, N (≥ 0).
+    amplitude : float
+        X, m (> 0).
+    frequency : float
+        Hz (> 0).
+    velocity_scale : float, optional
+        v_ε of the smooth law F tanh(v/v_ε), m/s; None for the ideal law.
+    n : int
+        Midpoint samples over the cycle (≥ 16).
+
+    Returns
+    -------
+    float
+        J.
     """
     F = _checks.nonnegative("friction_force", friction_force)
     X = _checks.positive("amplitude", amplitude)
@@ -335,10 +426,29 @@ def wedge_energy_per_cycle(
     return float(np.sum(force * v) * T / n)
 
 
+@dataclass(frozen=True)
+class WedgeFriction:
+    """Column friction of the wedges of one nest, N, in each direction of the bolster's motion.
+
+    Attributes
+    ----------
+    bolster_down, bolster_up : float
+        N.
+    """
+
+    bolster_down: float
+    bolster_up: float
+
+    @property
+    def mean(self) -> float:
+        """The symmetric friction force that stands for both, N."""
+        return 0.5 * (self.bolster_down + self.bolster_up)
+
+
 def wedge_friction_force(
     spring_force, slope_angle, friction_coefficient, *, wedges: int = 2
-) -> tuple[float, float]:
-    """Column friction (N) of the spring-loaded wedges of one nest: (bolster moving down, moving up).
+) -> WedgeFriction:
+    """Column friction of the spring-loaded wedges of one nest, bolster moving down and moving up.
 
     A constant-damping wedge sits between the vertical column face of the side
     frame and a slope of the bolster inclined ``slope_angle`` (rad) from the
@@ -352,6 +462,21 @@ def wedge_friction_force(
     the upper sign when the bolster moves down (friction on the wedge acts up,
     with the spring), the lower when it moves up. The two friction forces μN of
     ``wedges`` wedges are returned. A slope with tan α <= μ locks the wedge.
+
+    Parameters
+    ----------
+    spring_force : float
+        P, the wedge spring's force, N (≥ 0).
+    slope_angle : float
+        α, rad, in (0, π/2).
+    friction_coefficient : float
+        μ at the column (≥ 0).
+    wedges : int
+        Wedges per nest (≥ 1).
+
+    Returns
+    -------
+    WedgeFriction
     """
     P = _checks.nonnegative("spring_force", spring_force)
     alpha = _checks.scalar("slope_angle", slope_angle, low=0.0, high=np.pi / 2, low_open=True, high_open=True)
@@ -364,7 +489,7 @@ def wedge_friction_force(
         )
     down = n * mu * P / (np.tan(alpha) - mu)
     up = n * mu * P / (np.tan(alpha) + mu)
-    return float(down), float(up)
+    return WedgeFriction(float(down), float(up))
 
 
 # The loaded Vale GDU iron-ore gondola (1.6 m gauge) on AmstedMaxion Ride Control trucks, from the
@@ -423,12 +548,14 @@ def gdu_ore_car() -> FreightCar:
     Left out: the bolsters and wedges (0.4 t a truck) that ride on the springs
     with the body, and the 1 % of roll stiffness the width of each 3 × 3 nest
     adds about its own centre.
+
+    Returns
+    -------
+    FreightCar
     """
     nest = _GDU_SPRINGS_PER_NEST * _GDU_SPRING_RATE
     preload = _GDU_WEDGE_SPRING * (_GDU_WEDGE_FREE - _GDU_WEDGE_DESIGN)
-    down, up = wedge_friction_force(
-        preload, _GDU_WEDGE_ANGLE, _GDU_WEDGE_FRICTION, wedges=_GDU_WEDGES_PER_NEST
-    )
+    wedges = wedge_friction_force(preload, _GDU_WEDGE_ANGLE, _GDU_WEDGE_FRICTION, wedges=_GDU_WEDGES_PER_NEST)
     return FreightCar(
         body_mass=_GDU_BODY_MASS,
         body_pitch_inertia=_GDU_PITCH_INERTIA,
@@ -438,7 +565,7 @@ def gdu_ore_car() -> FreightCar:
         semi_truck_wheelbase=_GDU_WHEELBASE / 2,
         semi_spring_spacing=_GDU_NEST_SPACING / 2,
         nest_stiffness=nest,
-        wedge_friction=0.5 * (down + up),
+        wedge_friction=wedges.mean,
     )
 
 

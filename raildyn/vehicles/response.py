@@ -26,14 +26,16 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
+import matplotlib
 import numpy as np
 
-from raildyn import _checks
+from raildyn import _checks, plots
 from raildyn import random_vibration as rv
 from raildyn import track as _track
 from raildyn.linear_model import INPUT_KINDS, LinearSystem, as_linear_system
 
 __all__ = [
+    "PeriodicProfile",
     "ResponseSpectrum",
     "TimeResponse",
     "periodic_profile",
@@ -129,6 +131,43 @@ class ResponseSpectrum:
     def frequency_hz(self) -> np.ndarray:
         """The grid in Hz."""
         return self.omega / (2 * np.pi)
+
+    @property
+    def psd_per_hz(self) -> np.ndarray:
+        """The one-sided PSD per Hz, (unit)²/Hz, the form ride standards plot."""
+        return rv.convert_psd(self.psd, from_sided="one", from_unit="rad/s", to_unit="Hz")
+
+    def plot(self, ax=None, *, artists: dict | None = None, label: str | None = None, color=None) -> dict:
+        """Draw the PSD per Hz against frequency in Hz, on a logarithmic axis.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default. Ignored when ``artists`` is given.
+        artists : dict, optional
+            The artists an earlier call returned: they are moved to this spectrum.
+        label : str, optional
+            Legend entry.
+        color : optional
+            Line colour; the house palette's first by default.
+
+        Returns
+        -------
+        dict
+            The artists: ``line``.
+        """
+        floor = 1e-12  # (unit)²/Hz: a logarithmic axis cannot show a zero
+        y = np.maximum(self.psd_per_hz, floor)
+        if artists is not None:
+            artists["line"].set_data(self.frequency_hz, y)
+            return artists
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            (line,) = ax.semilogy(self.frequency_hz, y, color=plots.COLORS[0] if color is None else color,
+                                  label=label)  # fmt: skip
+            ax.set_xlabel("frequency (Hz)")
+            ax.set_ylabel(r"PSD ((m/s$^2$)$^2$/Hz)")
+        return {"line": line}
 
 
 def _spectra(psd, component) -> dict:
@@ -255,31 +294,99 @@ class TimeResponse:
     inputs: np.ndarray
 
 
-def periodic_profile(height, dx) -> tuple[Callable, Callable]:
-    """A track profile sampled over one period, and its slope, as ``profile(x, rails)`` callables.
+@dataclass(frozen=True)
+class PeriodicProfile:
+    """A track profile sampled over one period, with its exact slope.
+
+    Attributes
+    ----------
+    heights : ndarray, (n,)
+        The samples, m, every ``dx`` from x = 0.
+    slopes : ndarray, (n,)
+        dz/dx at the samples, the derivative of the sample's Fourier series.
+    dx : float
+        m.
+    """
+
+    heights: np.ndarray
+    slopes: np.ndarray
+    dx: float
+
+    @property
+    def period(self) -> float:
+        """n·dx, m."""
+        return self.heights.size * self.dx
+
+    def _along(self, values, x) -> np.ndarray:
+        grid = np.arange(values.size) * self.dx
+        return np.interp(np.mod(x, self.period), grid, values, period=self.period)
+
+    def height(self, x, rails=None) -> np.ndarray:
+        """The profile at distances x (m), the signature :func:`time_response` takes.
+
+        Parameters
+        ----------
+        x : array_like
+            m; beyond one period the profile repeats.
+        rails : array_like, optional
+            Ignored: both rails alike.
+
+        Returns
+        -------
+        ndarray
+            m, shaped like ``x``.
+        """
+        return self._along(self.heights, x)
+
+    def slope(self, x, rails=None) -> np.ndarray:
+        """dz/dx at distances x (m), for ``profile_rate`` of :func:`time_response`.
+
+        Parameters
+        ----------
+        x : array_like
+            m.
+        rails : array_like, optional
+            Ignored.
+
+        Returns
+        -------
+        ndarray
+            Shaped like ``x``.
+        """
+        return self._along(self.slopes, x)
+
+
+def periodic_profile(height, dx) -> PeriodicProfile:
+    """A track profile sampled over one period, and its slope.
 
     ``height`` (m) is sampled every ``dx`` (m) over exactly one period of length
     n·dx (a synthesized sample is periodic); beyond it the profile repeats. The
     slope is the exact derivative of the sample's Fourier series, so the damper
-    inputs of :func:`time_response` carry no finite-difference error. The two
-    callables take distances x (m) and ignore ``rails`` (both rails alike).
+    inputs of :func:`time_response` carry no finite-difference error.
 
+    Parameters
+    ----------
+    height : array_like, (n,)
+        m.
+    dx : float
+        Sample spacing, m (> 0).
+
+    Returns
+    -------
+    PeriodicProfile
+
+    Examples
+    --------
     >>> z = 0.01 * np.sin(2 * np.pi * np.arange(100) * 0.5 / 25.0)
-    >>> profile, slope = periodic_profile(z, 0.5)
-    >>> round(float(slope(np.array([0.0]), None)[0]), 6)  # 0.01 · 2π/25
+    >>> track = periodic_profile(z, 0.5)
+    >>> round(float(track.slope(np.array([0.0]))[0]), 6)  # 0.01 · 2π/25
     0.002513
     """
     z = _checks.array("height", height, ndim=1)
     dx = _checks.positive("dx", dx)
     n = z.size
-    period = n * dx
     rate = np.fft.irfft(2j * np.pi * np.fft.rfftfreq(n, dx) * np.fft.rfft(z), n=n)
-    x = np.arange(n) * dx
-
-    def along(values):
-        return lambda xx, rails: np.interp(np.mod(xx, period), x, values, period=period)
-
-    return along(z), along(rate)
+    return PeriodicProfile(z, rate, dx)
 
 
 def time_response(

@@ -142,13 +142,13 @@ def _ride_setup(live, status):
     ax_t.set_xlabel("time (s)")
     ax_t.set_ylabel(r"acceleration (m/s$^2$)")
     live.animate(psd_line, weighted, hist)
+    spectrum = {"line": psd_line}  # moved by ResponseSpectrum.plot, the chart of figure 6.ride
 
     def redraw(v):
         run = ride_run(v["track"], v["speed_kmh"], v["seed"])
         fd, t, a, td = run.frequency_domain, run.t, run.acceleration, run.time_domain
-        per_hz = 2 * np.pi * run.spectrum.psd
-        psd_line.set_ydata(np.maximum(per_hz, 1e-12))
-        weighted.set_ydata(np.maximum(ride.sperling_weighting(_F) ** 2 * per_hz, 1e-12))
+        run.spectrum.plot(artists=spectrum)
+        weighted.set_ydata(np.maximum(ride.sperling_weighting(_F) ** 2 * run.spectrum.psd_per_hz, 1e-12))
         shown = t <= t_max
         hist.set_data(t[shown], a[shown])
         status.value = (
@@ -212,18 +212,16 @@ def _rock_controls():
 
 @lru_cache(maxsize=32)
 def _rock_sweep(car_label: str, friction_kn: float, depth_mm: float):
-    """Roll amplitude (deg) over the widget's speeds, and the resonance speed (km/h)."""
+    """The steady roll over the widget's speeds."""
     car = FREIGHT_CARS[car_label].replace(wedge_friction=1e3 * friction_kn)
-    r = rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=12)
-    return np.degrees(r.roll_amplitude), 3.6 * r.resonance_speed
+    return rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=12)
 
 
 @lru_cache(maxsize=64)
 def _rock_history(car_label: str, speed_kmh: float, friction_kn: float, depth_mm: float):
     car = FREIGHT_CARS[car_label].replace(wedge_friction=1e3 * friction_kn)
     cycles = max(12, int(np.ceil(30.0 * speed_kmh / 3.6 / track.RAIL_LENGTH)))  # about 30 s shown
-    r = rock_and_roll(car, [speed_kmh / 3.6], depth=1e-3 * depth_mm, cycles=cycles)
-    return r.t, np.degrees(r.roll[0])
+    return rock_and_roll(car, [speed_kmh / 3.6], depth=1e-3 * depth_mm, cycles=cycles)
 
 
 def _rock_setup(live, status):
@@ -242,16 +240,16 @@ def _rock_setup(live, status):
     ax_t.set_xlabel("time (s)")
     ax_t.set_ylabel("body roll (deg)")
     live.animate(curve, resonance, marker, hist)
+    sweep_artists = {"curve": curve, "resonance": resonance}  # moved by RockAndRoll.plot (figure 6.rock)
 
     def redraw(v):
-        amp, v_res = _rock_sweep(v["car"], v["friction_kn"], v["depth_mm"])
-        curve.set_ydata(amp)
-        resonance.set_xdata([v_res, v_res])
-        t, roll = _rock_history(v["car"], v["speed_kmh"], v["friction_kn"], v["depth_mm"])
-        shown = t <= 30
-        hist.set_data(t[shown], roll[shown])
-        tail = t >= 0.75 * t[-1]
-        here = 0.5 * (roll[tail].max() - roll[tail].min())
+        sweep = _rock_sweep(v["car"], v["friction_kn"], v["depth_mm"])
+        sweep.plot(artists=sweep_artists)
+        v_res = 3.6 * sweep.resonance_speed
+        run = _rock_history(v["car"], v["speed_kmh"], v["friction_kn"], v["depth_mm"])
+        shown = run.t <= 30
+        hist.set_data(run.t[shown], np.degrees(run.roll[0][shown]))
+        here = float(np.degrees(run.roll_amplitude[0]))
         marker.set_data([v["speed_kmh"]], [here])
         status.value = (
             f"roll resonance (springs alone) at {v_res:.0f} km/h; at {v['speed_kmh']:.0f} km/h the steady "
