@@ -45,33 +45,6 @@ ROOT = Path(__file__).resolve().parents[1]
 API_PAGE = ROOT / "book" / "api.md"
 CODES = ("PR01", "PR02", "RT01")
 
-# Modules whose numpydoc Parameters/Returns sections are not complete yet (issue 14, item 5):
-# each is skipped for 6.c only, and an entry leaves this set when its module passes. Chapter 2
-# (integrators, suspension), chapters 1, 3 and 4 and the linear-model protocol pass already.
-AWAITING_DOCSTRINGS = {
-    "raildyn.wheelset",
-    "raildyn.stability",
-    "raildyn.vehicles",
-    # not in the brief's list, failing at the time of writing:
-    "raildyn.figures",  # register, make, show, save_all, new_figure: no Parameters/Returns
-    "raildyn.widgets.chapter02",  # the factories: Returns
-    "raildyn.widgets.chapter05",
-    "raildyn.widgets.chapter06",  # also ride_run: Parameters
-    "raildyn.widgets.chapter07",
-}
-
-# Public modules without ``__all__`` when this test was written, all outside its owner's files;
-# each entry is an expected failure that turns into a failure (strict) once the module has its
-# ``__all__``, so that the entry is removed. The lead removes this set this session.
-AWAITING_ALL = {
-    "raildyn",  # the package root: ``__all__: list[str] = []`` (it exports only __version__)
-    "raildyn.figures",  # the registry: FigureSpec, FigureView, make, show, save_all, register
-    "raildyn.widgets.chapter02",
-    "raildyn.widgets.chapter05",
-    "raildyn.widgets.chapter06",
-    "raildyn.widgets.chapter07",
-}
-
 # The main entry point of each chapter whose models live in these modules: its docstring has an
 # Examples section, which runs here (and under pytest's --doctest-modules).
 MAIN_ENTRY_POINTS = [
@@ -96,8 +69,18 @@ MAIN_ENTRY_POINTS = [
     "raildyn.contact.fastsim",
     "raildyn.contact.contact_geometry",
     "raildyn.contact.lateral_creep_curves",
-    # chapter 6 (ride comfort)
+    # chapter 5
+    "raildyn.wheelset.kinematic_wavelength",
+    "raildyn.wheelset.Wheelset.linear_system",
+    # chapters 5–7: the one protocol of every linear model
+    "raildyn.linear_model.Assembler",
+    # chapter 6 (vehicle response, ride comfort)
+    "raildyn.vehicles.response.periodic_profile",
     "raildyn.ride.ride_quality",
+    # chapter 7
+    "raildyn.stability.mode_sweep",
+    "raildyn.stability.critical_speed",
+    "raildyn.stability.limit_cycle_amplitude",
 ]
 
 
@@ -186,16 +169,7 @@ def _documented_objects(page: dict) -> set[int]:
 # --------------------------------------------------------------------------- a. __all__
 
 
-def _all_params():
-    for name in PUBLIC:
-        marks = []
-        if name in AWAITING_ALL:
-            reason = "awaiting __all__ (the lead removes this entry)"
-            marks.append(pytest.mark.xfail(strict=True, reason=reason))
-        yield pytest.param(name, marks=marks, id=name)
-
-
-@pytest.mark.parametrize("name", list(_all_params()))
+@pytest.mark.parametrize("name", PUBLIC)
 def test_every_public_module_defines_all(name):
     module = _module(name)
     assert hasattr(module, "__all__"), f"{name} defines no __all__"
@@ -204,12 +178,6 @@ def test_every_public_module_defines_all(name):
     assert len(set(names)) == len(names), f"{name}.__all__ repeats a name"
     missing = [n for n in names if not hasattr(module, n)]
     assert not missing, f"{name}.__all__ names what the module does not have: {missing}"
-
-
-def test_awaiting_sets_name_real_public_modules():
-    assert AWAITING_ALL <= set(PUBLIC)
-    for entry in AWAITING_DOCSTRINGS:
-        assert any(m == entry or m.startswith(entry + ".") for m in PUBLIC), entry
 
 
 # --------------------------------------------------------------------------- b. the API page
@@ -225,8 +193,6 @@ def test_api_page_documents_exactly_the_public_modules_with_public_names():
 
 @pytest.mark.parametrize("name", PUBLIC)
 def test_every_public_name_is_on_the_api_page(name):
-    if name in AWAITING_ALL:
-        pytest.skip("no __all__ yet: its public names are not defined")
     page = _api_page()
     module = _module(name)
     documented = _documented_objects(page)
@@ -259,14 +225,8 @@ def _targets(module) -> list[str]:
     return out
 
 
-def _awaiting_docstrings(name: str) -> bool:
-    return any(name == entry or name.startswith(entry + ".") for entry in AWAITING_DOCSTRINGS)
-
-
 @pytest.mark.parametrize("name", PUBLIC)
 def test_numpydoc_parameters_and_returns(name):
-    if _awaiting_docstrings(name):
-        pytest.skip("docstrings being reworked this session (AWAITING_DOCSTRINGS)")
     problems = []
     for target in _targets(_module(name)):
         report = numpydoc.validate.validate(target)
