@@ -434,11 +434,6 @@ class CriticalSpeed:
         """True when the largest real part crosses zero inside the range (``status`` "crossing")."""
         return self.status == "crossing"
 
-    @property
-    def frequency(self) -> float:
-        """The same as ``frequency_hz``, Hz (the former name, kept for callers not yet moved)."""
-        return self.frequency_hz
-
 
 def _range(speed_range) -> tuple[float, float]:
     r = np.asarray(speed_range, dtype=float).ravel()

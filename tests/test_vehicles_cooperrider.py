@@ -120,7 +120,7 @@ def _hunting_and_kinematic_limits(car):
     rigid = cs.speed / rigid_bogie_wavelength(
         ws.rolling_radius, ws.half_gauge, ws.conicity, car.bogie.semi_wheelbase
     )
-    return cs.frequency, rigid, free
+    return cs.frequency_hz, rigid, free
 
 
 @pytest.mark.parametrize("car", [MANCHESTER_CAR, COOPERRIDER_CAR], ids=["manchester", "cooperrider"])

@@ -88,55 +88,32 @@ def _wheelset_roots_controls():
     }
 
 
-def _wheelset_roots_setup(live, status):
-    ax_s, ax_d = live.axes[0]
-    roots = ax_s.scatter(
-        np.zeros(4 * _SPEEDS.size),
-        np.zeros(4 * _SPEEDS.size),
-        s=3,
-        c=np.zeros(4 * _SPEEDS.size),
-        cmap="viridis",
-        vmin=0,
-        vmax=_SPEEDS[-1] * 3.6,
+def _wheelset(values) -> wheelset.Wheelset:
+    return wheelset.Wheelset(
+        conicity=float(values["conicity"]),
+        yaw_stiffness=1e6 * float(values["yaw_stiffness"]),
+        lateral_stiffness=1e6 * float(values["lateral_stiffness"]),
     )
-    ax_s.axvline(0.0, color="k", lw=0.8)
-    ax_s.set_xlim(-100, 10)
-    ax_s.set_ylim(0, 80)
-    ax_s.set_xlabel("Re λ (1/s)")
-    ax_s.set_ylabel("Im λ (rad/s)")
-    live.figure.colorbar(roots, ax=ax_s, label="speed (km/h)")
-    lines = [
-        ax_d.plot(_SPEEDS * 3.6, 0 * _SPEEDS, color=plots.COLORS[j], label=f"mode {j + 1}")[0]
-        for j in range(2)
-    ]
-    (mark,) = ax_d.plot([], [], "v", color="k", ms=8, label="critical speed")
-    ax_d.axhline(0.0, color="k", lw=0.8)
-    ax_d.set_xlim(0, _SPEEDS[-1] * 3.6)
-    ax_d.set_ylim(-0.3, 1.05)
-    ax_d.set_xlabel("speed (km/h)")
-    ax_d.set_ylabel("damping factor ξ")
-    ax_d.legend(loc="upper right")
-    live.animate(roots, *lines, mark)
+
+
+def _wheelset_roots_setup(live, status):
+    defaults = {name: control.value for name, control in _wheelset_roots_controls().items()}
+    # The chart of every lateral model, ModeSweep.plot (as figure 7.1 and the car widget), drawn once
+    # with this chapter's windows and then moved in place.
+    chart = stability.mode_sweep(_wheelset(defaults), _SPEEDS).plot(
+        live.axes[0], real_limits=(-100.0, 10.0), imag_limits=(0.0, 80.0), damping_limits=(-0.3, 1.05)
+    )
+    live.animate(chart["roots"], *chart["modes"], chart["hunting"], chart["critical"], chart["critical_text"])
 
     def redraw(v):
-        ws = wheelset.Wheelset(
-            conicity=v["conicity"],
-            yaw_stiffness=1e6 * v["yaw_stiffness"],
-            lateral_stiffness=1e6 * v["lateral_stiffness"],
-        )
-        sweep = stability.mode_sweep(ws, _SPEEDS)
-        lam = stability.eigenvalues_against_speed(ws, _SPEEDS)
-        roots.set_offsets(np.column_stack([lam.real.ravel(), lam.imag.ravel()]))
-        roots.set_array(np.repeat(_SPEEDS * 3.6, lam.shape[1]))
-        # Each line follows one mode across speed (MAC tracking), labelled by its main coordinate.
-        for j, line in enumerate(lines):
-            line.set_ydata(sweep.damping_ratios[:, j])
+        ws = _wheelset(v)
         cs = stability.critical_speed(ws, (_SPEEDS[0], _SPEEDS[-1]), tol=0.05)
+        stability.mode_sweep(ws, _SPEEDS).plot(critical=cs, artists=chart)
         if cs.found:
-            mark.set_data([cs.speed * 3.6], [0.0])
-            text = f"critical speed {cs.speed:.1f} m/s = {cs.speed * 3.6:.0f} km/h at {cs.frequency:.2f} Hz"
+            text = (
+                f"critical speed {cs.speed:.1f} m/s = {cs.speed * 3.6:.0f} km/h at {cs.frequency_hz:.2f} Hz"
+            )
         else:
-            mark.set_data([], [])
             text = "critical speed: " + cs.status
         if v["yaw_stiffness"] + v["lateral_stiffness"] > 0:
             text += f" · Wickens' high-creep limit {wheelset.wickens_critical_speed(ws) * 3.6:.0f} km/h"
