@@ -38,6 +38,7 @@ from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 
 __all__ = [
     "CreepTerms",
+    "KinematicOscillation",
     "NonlinearLateral",
     "NonlinearWheelset",
     "WheelRailContact",
@@ -45,6 +46,7 @@ __all__ = [
     "add_wheelset",
     "contact_forces",
     "creep_terms",
+    "kinematic_oscillation",
     "kinematic_wavelength",
     "rigid_bogie_wavelength",
     "wickens_critical_speed",
@@ -108,6 +110,92 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
     b = positive("semi_wheelbase", semi_wheelbase)
     a = positive("half_gauge", half_gauge)
     return kinematic_wavelength(rolling_radius, half_gauge, conicity) * float(np.sqrt(1.0 + (b / a) ** 2))
+
+
+@dataclass(frozen=True)
+class KinematicOscillation:
+    """Klingel's kinematic oscillation of a free wheelset and of two wheelsets held in a rigid bogie.
+
+    Attributes
+    ----------
+    wavelength : float
+        Of the free wheelset, 2π√(r₀a/λ), m.
+    rigid_bogie_wavelength : float
+        Of the rigid bogie, 2π√(r₀a/λ · (1 + b²/a²)), m.
+    """
+
+    wavelength: float
+    rigid_bogie_wavelength: float
+
+    def plot(self, ax=None, *, artists: dict | None = None, distance=None, amplitude: float = 5.0) -> dict:
+        """Draw both paths, y = A sin(2πx/L), against the distance along the track.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default. Ignored when ``artists`` is given.
+        artists : dict, optional
+            The artists an earlier call returned: they are moved to these wavelengths.
+        distance : array_like, optional
+            x, m; 0 to 60 m by default (with ``artists``: the distances drawn first).
+        amplitude : float
+            A, mm.
+
+        Returns
+        -------
+        dict
+            The artists: ``free`` and ``bogie``.
+        """
+        import matplotlib
+
+        from raildyn import plots
+
+        if artists is not None:
+            x = artists["free"].get_xdata()
+        else:
+            x = np.linspace(0.0, 60.0, 1200) if distance is None else np.asarray(distance, dtype=float)
+        paths = {
+            "free": amplitude * np.sin(2 * np.pi * x / self.wavelength),
+            "bogie": amplitude * np.sin(2 * np.pi * x / self.rigid_bogie_wavelength),
+        }
+        if artists is not None:
+            for name, y in paths.items():
+                artists[name].set_ydata(y)
+            return artists
+        ax = plots.axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            (free,) = ax.plot(x, paths["free"], color=plots.COLORS[0], label="free wheelset (Klingel)")
+            (bogie,) = ax.plot(x, paths["bogie"], "--", color=plots.COLORS[1], label="rigid bogie")
+            ax.set_xlim(x[0], x[-1])
+            ax.set_xlabel("distance along the track $x$ (m)")
+            ax.set_ylabel("lateral displacement $y$ (mm)")
+        return {"free": free, "bogie": bogie}
+
+
+def kinematic_oscillation(rolling_radius, half_gauge, conicity, semi_wheelbase) -> KinematicOscillation:
+    """Both kinematic wavelengths at once: :func:`kinematic_wavelength` and :func:`rigid_bogie_wavelength`.
+
+    Parameters
+    ----------
+    rolling_radius, half_gauge, conicity : float
+        r₀ (m), a (m) and λ.
+    semi_wheelbase : float
+        b, m.
+
+    Returns
+    -------
+    KinematicOscillation
+
+    Examples
+    --------
+    >>> k = kinematic_oscillation(0.46, 0.75, 0.15, 1.28)
+    >>> round(k.wavelength, 2), round(k.rigid_bogie_wavelength, 2)
+    (9.53, 18.85)
+    """
+    return KinematicOscillation(
+        kinematic_wavelength(rolling_radius, half_gauge, conicity),
+        rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase),
+    )
 
 
 # ---------------------------------------------------------------------------

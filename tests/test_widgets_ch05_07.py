@@ -85,3 +85,17 @@ def test_critical_curve_follows_the_critical_speed_map():
     np.testing.assert_allclose(car_line.get_ydata(), 3.6 * expected.speeds[0], rtol=1e-12)
     i = int(np.argmin(np.abs(conicities - 0.15)))
     assert f"car {3.6 * expected.speeds[0, i]:.0f} km/h" in _status(container)
+
+
+def test_klingel_widget_and_figure_draw_the_same_kinematic_oscillation():
+    # One chart, KinematicOscillation.plot: the widget moves the figure's lines to its wavelengths.
+    container, update = chapter05.klingel()
+    update(conicity=0.15, rolling_radius_mm=460.0, semi_wheelbase=1.28)
+    k = wheelset.kinematic_oscillation(0.46, 0.75, 0.15, 1.28)
+    fig = figures.make("fig5.1")
+    figure_free = fig.axes[0].get_lines()[0]
+    x = figure_free.get_xdata()
+    np.testing.assert_allclose(
+        figure_free.get_ydata(), 5.0 * np.sin(2 * np.pi * x / k.wavelength), atol=1e-12
+    )
+    assert f"{k.wavelength:.2f} m" in _status(container)

@@ -20,18 +20,12 @@ _SOFT = wheelset.Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
     chapter=5,
 )
 def klingel_path() -> Figure:
-    x = np.linspace(0.0, 60.0, 1200)
-    L = wheelset.kinematic_wavelength(0.46, 0.75, 0.15)
-    Lb = wheelset.rigid_bogie_wavelength(0.46, 0.75, 0.15, 1.28)
+    k = wheelset.kinematic_oscillation(0.46, 0.75, 0.15, 1.28)
     fig = new_figure(figsize=(7.0, 3.0))
     ax = fig.subplots()
-    ax.plot(x, 5 * np.sin(2 * np.pi * x / L), color=plots.COLORS[0], label=f"free wheelset, L = {L:.2f} m")
-    ax.plot(
-        x, 5 * np.sin(2 * np.pi * x / Lb), "--", color=plots.COLORS[1], label=f"rigid bogie, L = {Lb:.2f} m"
-    )
-    ax.set_xlabel("distance along the track $x$ (m)")
-    ax.set_ylabel("lateral displacement $y$ (mm)")
-    ax.set_xlim(0, x[-1])
+    chart = k.plot(ax)
+    chart["free"].set_label(f"free wheelset, L = {k.wavelength:.2f} m")
+    chart["bogie"].set_label(f"rigid bogie, L = {k.rigid_bogie_wavelength:.2f} m")
     ax.legend(loc="upper right")
     return fig
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from raildyn import plots, stability, wheelset
+from raildyn import stability, wheelset
 from raildyn.widgets._core import Recipe, slider
 
 __all__ = ["klingel", "wheelset_roots"]
@@ -28,21 +28,17 @@ def _klingel_controls():
 def _klingel_setup(live, status):
     (ax,) = live.axes[0]
     a = 0.75  # m, half the distance between the contact points
-    (free,) = ax.plot(_DISTANCE, 0 * _DISTANCE, color=plots.COLORS[0], label="free wheelset (Klingel)")
-    (bogie,) = ax.plot(_DISTANCE, 0 * _DISTANCE, color=plots.COLORS[1], ls="--", label="rigid bogie")
-    ax.set_xlim(0, _DISTANCE[-1])
+    # The chart of figure 5.1, KinematicOscillation.plot, drawn once and moved in place.
+    chart = wheelset.kinematic_oscillation(0.46, a, 0.15, 1.28).plot(ax, distance=_DISTANCE)
     ax.set_ylim(-6.5, 6.5)
-    ax.set_xlabel("distance along the track $x$ (m)")
-    ax.set_ylabel("lateral displacement $y$ (mm)")
     ax.legend(loc="upper right")
-    live.animate(free, bogie)
+    live.animate(chart["free"], chart["bogie"])
 
     def redraw(v):
         r0 = v["rolling_radius_mm"] / 1000.0
-        L = wheelset.kinematic_wavelength(r0, a, v["conicity"])
-        Lb = wheelset.rigid_bogie_wavelength(r0, a, v["conicity"], v["semi_wheelbase"])
-        free.set_ydata(5.0 * np.sin(2 * np.pi * _DISTANCE / L))
-        bogie.set_ydata(5.0 * np.sin(2 * np.pi * _DISTANCE / Lb))
+        k = wheelset.kinematic_oscillation(r0, a, v["conicity"], v["semi_wheelbase"])
+        k.plot(artists=chart)
+        L, Lb = k.wavelength, k.rigid_bogie_wavelength
         status.value = (
             f"Klingel wavelength 2π√(r₀a/λ) = {L:.2f} m · rigid bogie 2π√(r₀a/λ·(1+b²/a²)) = {Lb:.2f} m "
             f"· at 100 km/h the wheelset sways at {100 / 3.6 / L:.2f} Hz"
