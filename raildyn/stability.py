@@ -36,6 +36,7 @@ __all__ = [
     "CriticalSpeedMap",
     "LimitCycle",
     "ModeSweep",
+    "NonlinearRun",
     "PeriodicOrbit",
     "bifurcation_diagram",
     "critical_speed",
@@ -45,6 +46,7 @@ __all__ = [
     "limit_cycle_amplitude",
     "mac",
     "mode_sweep",
+    "simulate",
     "periodic_orbit",
     "track_modes",
 ]
@@ -682,16 +684,114 @@ def critical_speed_map(
 # Nonlinear hunting
 
 
-def _settle(model, speed: float, y0: np.ndarray, duration: float, max_step: float, rtol: float):
-    """Integrate the nonlinear model from y0 for ``duration`` seconds (RK45); (t, states)."""
+@dataclass(frozen=True)
+class NonlinearRun:
+    """A time history of a nonlinear lateral model.
+
+    Attributes
+    ----------
+    speed : float
+        m/s.
+    t : ndarray, (n_t,)
+        s.
+    states : ndarray, (state_size, n_t)
+        The model's state at each time, in its units (m, rad, m/s, rad/s).
+    lateral_index : int
+        Row of the first wheelset's lateral displacement.
+    """
+
+    speed: float
+    t: np.ndarray
+    states: np.ndarray
+    lateral_index: int
+
+    @property
+    def lateral(self) -> np.ndarray:
+        """The first wheelset's lateral displacement, m."""
+        return self.states[self.lateral_index]
+
+    def plot(self, ax=None, *, flange_clearance: float | None = None) -> dict:
+        """Draw the first wheelset's lateral displacement (mm) against time, with the flangeway clearance.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default.
+        flange_clearance : float, optional
+            m; marked at ±δ_f when given.
+
+        Returns
+        -------
+        dict
+            The artists: ``line`` and, with a clearance, ``flange`` (two lines).
+        """
+        import matplotlib
+
+        from raildyn import plots
+
+        ax = plots.axes_or_new(ax)
+        out = {}
+        with matplotlib.rc_context(plots.STYLE):
+            (out["line"],) = ax.plot(self.t, 1e3 * self.lateral, color=plots.COLORS[0])
+            if flange_clearance is not None:
+                d = 1e3 * flange_clearance
+                out["flange"] = [
+                    ax.axhline(sign * d, color=plots.COLORS[1], ls="--", lw=1) for sign in (1, -1)
+                ]
+                ax.text(0.05, d + 0.5, "flange contact", color=plots.COLORS[1])
+            ax.set_xlabel("time $t$ (s)")
+            ax.set_ylabel("lateral displacement $y$ (mm)")
+            ax.set_xlim(0, self.t[-1])
+        return out
+
+
+def simulate(model, speed, initial_state, duration, *, max_step: float = 2.0e-3, rtol: float = 1.0e-6):
+    """Integrate a nonlinear lateral model at speed V from a state, by RK45 (scipy).
+
+    Parameters
+    ----------
+    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
+        ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and ``lateral_index``.
+    speed : float
+        V, m/s (> 0).
+    initial_state : array_like, (state_size,)
+        In the units of the model's state.
+    duration : float
+        s (> 0).
+    max_step : float
+        Largest step, s (> 0).
+    rtol : float
+        Relative tolerance of the integration, in (0, 1).
+
+    Returns
+    -------
+    NonlinearRun
+
+    Raises
+    ------
+    SolverError
+        If the integration fails.
+
+    Examples
+    --------
+    >>> from raildyn.wheelset import NonlinearWheelset, Wheelset
+    >>> run = simulate(NonlinearWheelset(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)), 60.0,
+    ...                [1e-3, 0.0, 0.0, 0.0], 0.5)
+    >>> run.states.shape[0], float(run.t[-1])
+    (4, 0.5)
+    """
     import scipy.integrate
 
-    sol = scipy.integrate.solve_ivp(
-        model.rhs, (0.0, duration), y0, method="RK45", rtol=rtol, atol=1e-9, max_step=max_step
-    )
+    V = scalar("speed", speed, low=0.0, low_open=True)
+    T = positive("duration", duration)
+    h = positive("max_step", max_step)
+    r = scalar("rtol", rtol, low=0.0, high=1.0, low_open=True, high_open=True)
+    m = model.at_speed(V)
+    y0 = array("initial_state", initial_state, shape=(m.state_size,))
+    sol = scipy.integrate.solve_ivp(m.rhs, (0.0, T), y0, method="RK45", rtol=r, atol=1e-9, max_step=h)
     if not sol.success:
-        raise SolverError(f"integration failed at V = {speed:.2f} m/s: {sol.message}", time=float(sol.t[-1]))
-    return sol.t, sol.y
+        raise SolverError(f"integration failed at V = {V:.2f} m/s: {sol.message}", time=float(sol.t[-1]))
+    return NonlinearRun(V, sol.t, sol.y, m.lateral_index)
 
 
 @dataclass(frozen=True)
@@ -803,8 +903,8 @@ def limit_cycle_amplitude(
         y0[m.lateral_index] = scalar("initial_displacement", initial_displacement)
     else:
         y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    t, y = _settle(m, V, y0, duration, max_step, rtol)
-    x = y[m.lateral_index]
+    run = simulate(m, V, y0, duration, max_step=max_step, rtol=rtol)
+    t, y, x = run.t, run.states, run.lateral
     last = t >= 0.75 * duration
     before = (t >= 0.5 * duration) & ~last
     amplitude = 0.5 * (x[last].max() - x[last].min())

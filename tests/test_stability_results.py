@@ -208,3 +208,20 @@ def test_bifurcation_diagram_plot_splits_hunting_from_decaying_runs():
     assert set(never.plot(Figure().subplots())) == {"cycles", "decaying"}
     with pytest.raises(ValueError, match="linear_critical_speed"):
         diagram.plot(Figure().subplots(), linear_critical_speed=np.inf)
+
+
+def test_simulate_is_the_run_limit_cycle_amplitude_measures():
+    # One integration for the figures and the limit-cycle measure: the run's last quarter gives the
+    # amplitude that limit_cycle_amplitude reports (the same numbers, so 1e-12).
+    model = NonlinearWheelset(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6))
+    start = np.array([12e-3, 0.0, 0.0, 0.0])
+    run = stability.simulate(model, 60.0, start, 2.0)
+    cycle = stability.limit_cycle_amplitude(model, 60.0, duration=2.0, initial_state=start)
+    tail = run.t >= 1.5
+    assert 0.5 * np.ptp(run.lateral[tail]) == pytest.approx(cycle.amplitude, rel=1e-12)
+    drawn = run.plot(flange_clearance=9.1e-3)
+    np.testing.assert_allclose(drawn["line"].get_ydata(), 1e3 * run.lateral)
+    with pytest.raises(ValueError, match="duration"):
+        stability.simulate(model, 60.0, start, 0.0)
+    with pytest.raises(ValueError, match="initial_state"):
+        stability.simulate(model, 60.0, start[:3], 1.0)

@@ -68,18 +68,8 @@ def wheelset_damping() -> Figure:
     chapter=5,
 )
 def nonlinear_limit_cycle() -> Figure:
-    import scipy.integrate
-
     model = wheelset.NonlinearWheelset(_SOFT, wheelset.WheelRailContact(), 60.0)
-    sol = scipy.integrate.solve_ivp(model.rhs, (0, 4.0), [1e-3, 0, 0, 0], max_step=2e-3, rtol=1e-6, atol=1e-9)
+    run = stability.simulate(model, 60.0, [1e-3, 0.0, 0.0, 0.0], 4.0)
     fig = new_figure(figsize=(7.0, 3.0))
-    ax = fig.subplots()
-    ax.plot(sol.t, 1e3 * sol.y[0], color=plots.COLORS[0])
-    clearance = model.contact.flange_clearance * 1e3
-    for sign in (1, -1):
-        ax.axhline(sign * clearance, color=plots.COLORS[1], ls="--", lw=1)
-    ax.text(0.05, clearance + 0.5, "flange contact", color=plots.COLORS[1])
-    ax.set_xlabel("time $t$ (s)")
-    ax.set_ylabel("lateral displacement $y$ (mm)")
-    ax.set_xlim(0, sol.t[-1])
+    run.plot(fig.subplots(), flange_clearance=model.contact.flange_clearance)
     return fig
