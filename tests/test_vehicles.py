@@ -6,8 +6,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import stability
-from raildyn.vehicles import MANCHESTER_CAR, Bogie, Car
 from raildyn.constants import GRAVITY
+from raildyn.vehicles import MANCHESTER_CAR, Bogie, Car
 from raildyn.wheelset import Wheelset
 
 

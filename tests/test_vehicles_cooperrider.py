@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from raildyn import stability
+from raildyn.constants import GRAVITY
 from raildyn.contact import kalker_coefficients
 from raildyn.vehicles import COOPERRIDER_CAR, MANCHESTER_CAR, cooperrider_car
-from raildyn.constants import GRAVITY
 from raildyn.wheelset import kinematic_wavelength, rigid_bogie_wavelength
 
 
