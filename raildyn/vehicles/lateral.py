@@ -42,8 +42,28 @@ _B1 = 1.0
 _B2 = 1.0
 
 
+class _OnTheRails(LinearModelBase):
+    """A lateral vehicle whose wheelsets run on the rails: the linear protocol and its nonlinear twin."""
+
+    def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
+        """The vehicle with nonlinear wheel–rail contact at ``speed``.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s.
+        contact : WheelRailContact, optional
+            The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
+
+        Returns
+        -------
+        NonlinearLateral
+        """
+        return NonlinearLateral(self.linear_system(), contact or WheelRailContact(), speed)
+
+
 @dataclass(frozen=True)
-class Bogie(LinearModelBase):
+class Bogie(_OnTheRails):
     """A two-axle bogie: frame and wheelsets, primary and secondary suspension (Manchester vehicle).
 
     The primary suspension of each wheelset is the one in its
@@ -160,25 +180,9 @@ class Bogie(LinearModelBase):
         kinds = ("alignment",) * 2 + ("cross_level",) * 2
         return asm.system(input_positions=np.tile([0.0, 2 * b], 2), input_kinds=kinds)
 
-    def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The bogie with nonlinear wheel–rail contact at ``speed``.
-
-        Parameters
-        ----------
-        speed : float
-            V, m/s.
-        contact : WheelRailContact, optional
-            The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
-
-        Returns
-        -------
-        NonlinearLateral
-        """
-        return NonlinearLateral(self.linear_system(), contact or WheelRailContact(), speed)
-
 
 @dataclass(frozen=True)
-class Car(LinearModelBase):
+class Car(_OnTheRails):
     """A passenger car: body (lateral, yaw, roll) on two bogies; the Manchester benchmark vehicle.
 
     Attributes
@@ -281,22 +285,6 @@ class Car(LinearModelBase):
         asm.block(["body φ"], K=[[-self.body_mass * GRAVITY * h]])
         kinds = ("alignment",) * 4 + ("cross_level",) * 4
         return asm.system(input_positions=np.tile(self.axle_positions, 2), input_kinds=kinds)
-
-    def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The car with nonlinear wheel–rail contact at ``speed``.
-
-        Parameters
-        ----------
-        speed : float
-            V, m/s.
-        contact : WheelRailContact, optional
-            The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
-
-        Returns
-        -------
-        NonlinearLateral
-        """
-        return NonlinearLateral(self.linear_system(), contact or WheelRailContact(), speed)
 
 
 MANCHESTER_CAR = Car()

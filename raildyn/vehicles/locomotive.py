@@ -20,8 +20,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.constants import GRAVITY
-from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
+from raildyn.linear_model import LinearModelBase, LinearSystem
+from raildyn.vehicles.vertical import body_on_two_trucks
 
 __all__ = ["DEFAULT_LOCOMOTIVE", "LABELS", "Locomotive"]
 
@@ -87,23 +87,12 @@ class Locomotive(LinearModelBase):
         -------
         LinearSystem
         """
-        asm = Assembler(LABELS, 6)
-        asm.mass("body z", self.body_mass)
-        asm.mass("body θ", self.body_pitch_inertia)
-        a, s = self.axle_spacing, self.semi_truck_spacing
-        j = 0
-        for tag, xt in (("1", s), ("2", -s)):
-            z, th = f"truck{tag} z", f"truck{tag} θ"
-            asm.mass(z, self.truck_mass)
-            asm.mass(th, self.truck_pitch_inertia)
-            asm.element(
-                {z: 1.0, "body z": -1.0, "body θ": -xt}, self.secondary_stiffness, self.secondary_damping
-            )
-            for xa in (a, 0.0, -a):
-                asm.element({z: 1.0, th: xa}, self.primary_stiffness, self.primary_damping, inputs={j: 1.0})
-                j += 1
-        weight = -GRAVITY * np.diag(asm.M) * np.array([1, 0, 1, 0, 1, 0])
-        return asm.system(input_positions=self.axle_positions, gravity_load=weight)
+        a = self.axle_spacing
+        return body_on_two_trucks(
+            LABELS, self.body_mass, self.body_pitch_inertia, self.truck_mass, self.truck_pitch_inertia,
+            self.semi_truck_spacing, (a, 0.0, -a), self.primary_stiffness, self.primary_damping,
+            self.secondary_stiffness, self.secondary_damping, self.axle_positions,
+        )  # fmt: skip
 
 
 DEFAULT_LOCOMOTIVE = Locomotive()

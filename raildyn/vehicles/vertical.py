@@ -20,7 +20,7 @@ from raildyn.constants import GRAVITY
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.vehicles.lateral import Bogie, Car
 
-__all__ = ["LABELS", "MANCHESTER_VERTICAL", "BodyFrequencies", "VerticalCar"]
+__all__ = ["LABELS", "MANCHESTER_VERTICAL", "BodyFrequencies", "VerticalCar", "body_on_two_trucks"]
 
 _CAR, _BOGIE = Car(), Bogie()
 
@@ -41,6 +41,68 @@ class BodyFrequencies:
     bounce_hz: float
     pitch_hz: float
     roll_hz: float | None = None
+
+
+def body_on_two_trucks(
+    labels,
+    body_mass,
+    body_pitch_inertia,
+    truck_mass,
+    truck_pitch_inertia,
+    semi_truck_spacing,
+    axle_offsets,
+    primary_stiffness,
+    primary_damping,
+    secondary_stiffness,
+    secondary_damping,
+    axle_positions,
+) -> LinearSystem:
+    """A body bouncing and pitching on two trucks, each on its axles: the vertical car and the locomotive.
+
+    Coordinates (``labels``): body z, θ, then each truck's z, θ, front truck first. The
+    secondary joins each truck's centre to the body at x = ±s; the primary joins each
+    axle, ``axle_offsets`` ahead of its truck's centre, to the rail height under it
+    (rigid wheel–rail contact), leading axle first: input j is axle j.
+
+    Parameters
+    ----------
+    labels : sequence of 6 str
+    body_mass, truck_mass : float
+        kg.
+    body_pitch_inertia, truck_pitch_inertia : float
+        kg·m².
+    semi_truck_spacing : float
+        s, m.
+    axle_offsets : sequence of float
+        Axle positions ahead of the truck's centre, m, leading first.
+    primary_stiffness, primary_damping : float
+        Per axle, N/m and N·s/m.
+    secondary_stiffness, secondary_damping : float
+        Per truck, N/m and N·s/m.
+    axle_positions : ndarray
+        Distance of each axle behind the leading one, m (the inputs' positions).
+
+    Returns
+    -------
+    LinearSystem
+    """
+    asm = Assembler(labels, 2 * len(axle_offsets))
+    body_z, body_pitch = labels[0], labels[1]
+    asm.mass(body_z, body_mass)
+    asm.mass(body_pitch, body_pitch_inertia)
+    j = 0
+    for (z, th), x_truck in zip(
+        (labels[2:4], labels[4:6]), (semi_truck_spacing, -semi_truck_spacing), strict=True
+    ):
+        asm.mass(z, truck_mass)
+        asm.mass(th, truck_pitch_inertia)
+        # secondary: the truck centre against the body at x = ±s
+        asm.element({z: 1.0, body_z: -1.0, body_pitch: -x_truck}, secondary_stiffness, secondary_damping)
+        for x_axle in axle_offsets:
+            asm.element({z: 1.0, th: x_axle}, primary_stiffness, primary_damping, inputs={j: 1.0})
+            j += 1
+    weight = -GRAVITY * np.diag(asm.M) * np.array([1, 0, 1, 0, 1, 0])
+    return asm.system(input_positions=axle_positions, gravity_load=weight)
 
 
 @dataclass(frozen=True)
@@ -109,24 +171,12 @@ class VerticalCar(LinearModelBase):
         -------
         LinearSystem
         """
-        asm = Assembler(LABELS, 4)
-        asm.mass("body z", self.body_mass)
-        asm.mass("body θ", self.body_pitch_inertia)
-        b, s = self.semi_wheelbase, self.semi_bogie_spacing
-        j = 0
-        for tag, xb in (("1", s), ("2", -s)):
-            z, th = f"bogie{tag} z", f"bogie{tag} θ"
-            asm.mass(z, self.bogie_mass)
-            asm.mass(th, self.bogie_pitch_inertia)
-            # secondary: the bogie centre against the body at x = ±l
-            asm.element(
-                {z: 1.0, "body z": -1.0, "body θ": -xb}, self.secondary_stiffness, self.secondary_damping
-            )
-            for xw in (b, -b):  # leading wheelset of the bogie first
-                asm.element({z: 1.0, th: xw}, self.primary_stiffness, self.primary_damping, inputs={j: 1.0})
-                j += 1
-        weight = -GRAVITY * np.diag(asm.M) * np.array([1, 0, 1, 0, 1, 0])
-        return asm.system(input_positions=self.axle_positions, gravity_load=weight)
+        b = self.semi_wheelbase
+        return body_on_two_trucks(
+            LABELS, self.body_mass, self.body_pitch_inertia, self.bogie_mass, self.bogie_pitch_inertia,
+            self.semi_bogie_spacing, (b, -b), self.primary_stiffness, self.primary_damping,
+            self.secondary_stiffness, self.secondary_damping, self.axle_positions,
+        )  # fmt: skip
 
     def body_frequencies(self) -> BodyFrequencies:
         """Closed-form undamped body bounce and pitch frequencies on the secondary, bogies held.
