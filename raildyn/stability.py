@@ -36,6 +36,7 @@ __all__ = [
     "CriticalSpeedMap",
     "LimitCycle",
     "ModeSweep",
+    "TrackedModes",
     "NonlinearRun",
     "PeriodicOrbit",
     "bifurcation_diagram",
@@ -130,7 +131,23 @@ def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return num / np.maximum(den, np.finfo(float).tiny)
 
 
-def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+@dataclass(frozen=True)
+class TrackedModes:
+    """Eigenvalues and vectors with each column following one mode across the speeds.
+
+    Attributes
+    ----------
+    eigenvalues : complex ndarray, shape (n_speeds, m)
+        1/s.
+    vectors : complex ndarray, shape (n_speeds, p, m)
+        Column k of ``vectors[i]`` belongs to ``eigenvalues[i, k]``.
+    """
+
+    eigenvalues: np.ndarray
+    vectors: np.ndarray
+
+
+def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> TrackedModes:
     """Reorder eigenvalues (and vectors) at each speed so that column j follows one mode.
 
     At each step the assignment that maximises the MAC of the state vectors
@@ -147,10 +164,8 @@ def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> tuple[np.ndarra
 
     Returns
     -------
-    eigenvalues : complex ndarray, shape (n_speeds, m)
-        The eigenvalues, 1/s, with the columns permuted at each speed.
-    vectors : complex ndarray, shape (n_speeds, p, m)
-        The eigenvectors, permuted alike.
+    TrackedModes
+        The eigenvalues and vectors with the columns permuted at each speed.
     """
     lam = np.array(eigenvalues, dtype=complex, copy=True)
     vec = np.array(vectors, dtype=complex, copy=True)
@@ -161,7 +176,7 @@ def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> tuple[np.ndarra
         _, order = scipy.optimize.linear_sum_assignment((1.0 - similarity) + 0.5 * distance)
         lam[i] = lam[i, order]
         vec[i] = vec[i][:, order]
-    return lam, vec
+    return TrackedModes(lam, vec)
 
 
 @dataclass(frozen=True)
@@ -383,7 +398,8 @@ def mode_sweep(model, speeds) -> ModeSweep:
         raise ValueError("speeds must be strictly increasing for mode tracking")
     n = system.size
     lam, vec = np.linalg.eig(system.state_matrices(V))
-    lam, vec = track_modes(lam, vec)
+    tracked = track_modes(lam, vec)
+    lam, vec = tracked.eigenvalues, tracked.vectors
     # One root of each conjugate pair: the n roots highest in the upper half-plane at the first
     # speed (real roots fill in when some modes are overdamped), ordered by frequency.
     keep = np.argsort(-lam[0].imag, kind="stable")[:n]
