@@ -440,12 +440,36 @@ class CriticalSpeed:
         That mode's eigenvalue at V_c, 1/s.
     status : str
         "crossing", "stable over the range" or "unstable at the lowest speed".
+    mode_shape : complex ndarray (n,)
+        The displacement part of that mode's eigenvector at V_c, largest entry 1 (as
+        :attr:`ModeSweep.shapes`); NaN when no mode loses stability in the range.
+    coordinates : tuple of str
+        Name of each entry of ``mode_shape``.
     """
 
     speed: float
     frequency_hz: float
     eigenvalue: complex
     status: str
+    mode_shape: np.ndarray
+    coordinates: tuple
+
+    def amplitude(self, coordinate: str) -> float:
+        """|entry| of the hunting mode's shape on one coordinate (largest entry of the shape 1).
+
+        Parameters
+        ----------
+        coordinate : str
+            One of ``coordinates``.
+
+        Returns
+        -------
+        float
+            In the coordinate's unit per unit of the largest entry (m or rad).
+        """
+        if coordinate not in self.coordinates:
+            raise ValueError(f"coordinate must be one of {self.coordinates}, got {coordinate!r}")
+        return float(abs(self.mode_shape[self.coordinates.index(coordinate)]))
 
     @property
     def found(self) -> bool:
@@ -499,23 +523,35 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     V = np.linspace(low, high, scan)
     g = largest_real_part(system, V)
 
+    n = system.size
+
     def at(speed):
         lam = eigenvalues_against_speed(system, [speed])[0]
         j = int(np.argmax(lam.real))
         return lam[j]
 
+    def result(speed, status):
+        lam, vec = np.linalg.eig(system.state_matrices([speed])[0])
+        j = int(np.argmax(lam.real))
+        shape = vec[:n, j] / vec[:n, j][np.argmax(np.abs(vec[:n, j]))]
+        frequency = float(abs(lam[j].imag) / (2 * np.pi))
+        return CriticalSpeed(float(speed), frequency, complex(lam[j]), status, shape, system.labels)
+
     if g[0] >= 0.0:
-        lam = at(low)
-        return CriticalSpeed(
-            low, float(abs(lam.imag) / (2 * np.pi)), complex(lam), "unstable at the lowest speed"
-        )
+        return result(low, "unstable at the lowest speed")
     up = np.flatnonzero((g[:-1] < 0.0) & (g[1:] >= 0.0))
     if up.size == 0:
-        return CriticalSpeed(np.inf, np.nan, complex(np.nan, np.nan), "stable over the range")
+        return CriticalSpeed(
+            np.inf,
+            np.nan,
+            complex(np.nan, np.nan),
+            "stable over the range",
+            np.full(n, np.nan + 0j),
+            system.labels,
+        )
     i = int(up[0])
     speed = scipy.optimize.brentq(lambda v: at(v).real, V[i], V[i + 1], xtol=tol)
-    lam = at(speed)
-    return CriticalSpeed(float(speed), float(abs(lam.imag) / (2 * np.pi)), complex(lam), "crossing")
+    return result(speed, "crossing")
 
 
 @dataclass(frozen=True)

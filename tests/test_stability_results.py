@@ -225,3 +225,26 @@ def test_simulate_is_the_run_limit_cycle_amplitude_measures():
         stability.simulate(model, 60.0, start, 0.0)
     with pytest.raises(ValueError, match="initial_state"):
         stability.simulate(model, 60.0, start[:3], 1.0)
+
+
+def test_critical_speed_carries_the_shape_of_the_mode_that_loses_stability():
+    # The shape at V_c against the eigenvector found independently by scipy.linalg.eig of the
+    # state matrix at that speed (same normalisation: largest displacement entry 1): 1e-8.
+    import scipy.linalg
+
+    from raildyn.vehicles import Car
+
+    car = Car()
+    crit = stability.critical_speed(car, (1.0, 200.0))
+    mats = car.matrices(crit.speed)
+    lam, vec = scipy.linalg.eig(mats.state_matrix())
+    j = int(np.argmin(np.abs(lam - crit.eigenvalue)))
+    n = mats.M.shape[0]
+    ref = vec[:n, j] / vec[:n, j][np.argmax(np.abs(vec[:n, j]))]
+    np.testing.assert_allclose(crit.mode_shape, ref, atol=1e-8)
+    assert crit.coordinates == car.linear_system().labels
+    assert max(crit.amplitude(name) for name in crit.coordinates) == pytest.approx(1.0, rel=1e-12)
+    with pytest.raises(ValueError, match="coordinate"):
+        crit.amplitude("roof z")
+    none = stability.critical_speed(car, (1.0, 5.0))
+    assert none.status == "stable over the range" and np.all(np.isnan(none.mode_shape))
