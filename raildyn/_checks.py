@@ -218,3 +218,13 @@ def interval(name: str, value, *, unit: str = "", low: float = 0.0) -> tuple[flo
             f"got {value!r} (an empty or impossible band)"
         )
     return lo, hi
+
+
+def speeds(name: str, value) -> np.ndarray:
+    """A non-empty 1-D array of finite speeds, m/s, all > 0 (creep forces divide by V)."""
+    V = array(name, np.atleast_1d(value), ndim=1)
+    if V.size == 0:
+        raise ValueError(f"{name} must hold at least one speed, got an empty array")
+    if np.any(V <= 0):
+        raise ValueError(f"{name} must all be > 0 m/s (creep forces divide by V), got {V[V <= 0][0]!r}")
+    return V

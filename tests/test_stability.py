@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import stability, vibration
-from raildyn.linear_model import LinearSystem
+from raildyn.linear_model import LinearSystem, as_linear_system
 from raildyn.vehicles import Bogie, Car
 from raildyn.wheelset import NonlinearWheelset, Wheelset
 
@@ -31,7 +31,7 @@ def test_batched_eigenvalues_agree_with_python_control_poles(model):
     # poles agree to 1e-8 of the largest, the accuracy of a balanced nonsymmetric eigen-solver.
     speeds = [5.0, 40.0, 90.0]
     batched = stability.eigenvalues_against_speed(model, speeds)
-    system = stability.as_linear_system(model)
+    system = as_linear_system(model)
     for V, lam in zip(speeds, batched, strict=True):
         mats = system.matrices(V)
         M, C, K = mats.M, mats.C, mats.K
@@ -46,7 +46,7 @@ def test_batched_eigenvalues_agree_with_complex_modes(speed, conicity):
     # raildyn.vibration.complex_modes solves each speed on its own (scipy.linalg.eig).
     ws = SOFT.replace(conicity=conicity)
     lam = stability.eigenvalues_against_speed(ws, [speed])[0]
-    mats = stability.as_linear_system(ws).matrices(speed)
+    mats = as_linear_system(ws).matrices(speed)
     M, C, K = mats.M, mats.C, mats.K
     ref = vibration.complex_modes(M, C, K).eigenvalues
     np.testing.assert_allclose(np.sort_complex(lam), np.sort_complex(ref), atol=1e-9 * np.abs(ref).max())

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import contact, stability
-from raildyn.linear_model import LinearSystem
+from raildyn.linear_model import LinearSystem, as_linear_system
 from raildyn.vehicles import Bogie
 from raildyn.wheelset import (
     NonlinearLateral,
@@ -276,7 +276,7 @@ def test_bad_input():
     with pytest.raises(ValueError, match="speed"):
         NonlinearWheelset(speed=0.0)
     with pytest.raises(TypeError, match="LinearModel"):
-        stability.as_linear_system("wheelset")
+        as_linear_system("wheelset")
 
 
 def test_lateral_system_speeds_must_be_positive():

@@ -1,8 +1,8 @@
 """Chapter 7 figures: the car's roots against speed, a critical-speed map and a bifurcation diagram.
 
 Each chart is drawn by the method of its result in :mod:`raildyn.stability`
-(:meth:`~raildyn.stability.ModeSweep.plot`, :meth:`~raildyn.stability.CriticalSpeedMap.plot`,
-:meth:`~raildyn.stability.BifurcationDiagram.plot`), which the chapter's widgets call too.
+(:meth:`~raildyn.stability.linear.ModeSweep.plot`, :meth:`~raildyn.stability.linear.CriticalSpeedMap.plot`,
+:meth:`~raildyn.stability.nonlinear.BifurcationDiagram.plot`), which the chapter's widgets call too.
 """
 
 from __future__ import annotations

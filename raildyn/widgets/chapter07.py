@@ -4,8 +4,8 @@ Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
 models are :mod:`raildyn.vehicles` and :mod:`raildyn.stability`; this
 module only turns control values into model calls. The charts are drawn, and
 moved in place, by the methods of the results that the chapter's figures call
-too: :meth:`raildyn.stability.ModeSweep.plot` and
-:meth:`raildyn.stability.CriticalSpeedMap.plot_curves`.
+too: :meth:`raildyn.stability.linear.ModeSweep.plot` and
+:meth:`raildyn.stability.linear.CriticalSpeedMap.plot_curves`.
 """
 
 from __future__ import annotations
@@ -78,7 +78,7 @@ def car_roots():
     against speed (modes followed by MAC), the one least damped at the top
     speed in colour, and the critical speed marked with its frequency. Controls:
     conicity λ and the primary yaw stiffness of each wheelset k_ψ (MN·m/rad).
-    The chart is :meth:`raildyn.stability.ModeSweep.plot`, moved in place.
+    The chart is :meth:`raildyn.stability.linear.ModeSweep.plot`, moved in place.
 
     Returns
     -------
@@ -165,7 +165,7 @@ def critical_curve():
     Controls: primary yaw stiffness k_ψ of each wheelset (MN·m/rad) and the
     secondary yaw stiffness of each bogie (MN·m/rad). Speeds above 720 km/h
     (no crossing below 200 m/s) are left blank. The curves are
-    :meth:`raildyn.stability.CriticalSpeedMap.plot_curves`, moved in place.
+    :meth:`raildyn.stability.linear.CriticalSpeedMap.plot_curves`, moved in place.
 
     Returns
     -------

@@ -1,0 +1,64 @@
+"""Lateral stability (book chapter 7): eigenvalues against speed, mode tracking, critical speed, hunting.
+
+The linear models of :mod:`raildyn.wheelset` and :mod:`raildyn.vehicles`
+follow the one protocol (:class:`raildyn.linear_model.LinearModel`), and their
+systems read M q̈ + (C₀ + C₁/V) q̇ + K q = 0 without the track,
+so the state matrix at every speed of a sweep is built at once and all
+eigenvalues come from one batched ``numpy.linalg`` call.
+
+* :func:`eigenvalues_against_speed` — every eigenvalue at every speed;
+* :func:`mode_sweep` — eigenvalues, frequencies and damping ratios with each
+  mode followed across speed by its modal assurance criterion (MAC), so
+  that crossing branches keep their labels;
+* :func:`critical_speed` — the lowest speed at which the largest real part
+  becomes positive, by a batched coarse scan and Brent's method;
+* :func:`critical_speed_map` — the critical speed over a grid of two parameters;
+* :func:`limit_cycle_amplitude`, :func:`bifurcation_diagram` — nonlinear hunting:
+  the amplitude of the limit cycle against speed and the nonlinear critical speed.
+"""
+
+from raildyn.stability.linear import (
+    CriticalSpeed,
+    CriticalSpeedMap,
+    ModeSweep,
+    TrackedModes,
+    critical_speed,
+    critical_speed_map,
+    eigenvalues_against_speed,
+    largest_real_part,
+    mac,
+    mode_sweep,
+    track_modes,
+)
+from raildyn.stability.nonlinear import (
+    BifurcationDiagram,
+    LimitCycle,
+    NonlinearRun,
+    PeriodicOrbit,
+    bifurcation_diagram,
+    limit_cycle_amplitude,
+    periodic_orbit,
+    simulate,
+)
+
+__all__ = [
+    "BifurcationDiagram",
+    "CriticalSpeed",
+    "CriticalSpeedMap",
+    "LimitCycle",
+    "ModeSweep",
+    "NonlinearRun",
+    "PeriodicOrbit",
+    "TrackedModes",
+    "bifurcation_diagram",
+    "critical_speed",
+    "critical_speed_map",
+    "eigenvalues_against_speed",
+    "largest_real_part",
+    "limit_cycle_amplitude",
+    "mac",
+    "mode_sweep",
+    "periodic_orbit",
+    "simulate",
+    "track_modes",
+]

@@ -1,0 +1,606 @@
+"""Nonlinear hunting (book chapter 7): time runs, limit cycles, the bifurcation diagram, periodic orbits.
+
+The nonlinear models (:class:`raildyn.wheelset.NonlinearWheelset`,
+:class:`raildyn.wheelset.NonlinearLateral`) expose ``rhs(t, state)``; these
+functions integrate them with scipy and measure the steady hunting.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn._checks import array, integer, positive, scalar
+from raildyn._progress import progress_bar
+from raildyn.errors import SolverError
+
+__all__ = [
+    "BifurcationDiagram",
+    "LimitCycle",
+    "NonlinearRun",
+    "PeriodicOrbit",
+    "bifurcation_diagram",
+    "limit_cycle_amplitude",
+    "periodic_orbit",
+    "simulate",
+]
+
+
+# ---------------------------------------------------------------------------
+# Nonlinear hunting
+
+
+@dataclass(frozen=True)
+class NonlinearRun:
+    """A time history of a nonlinear lateral model.
+
+    Attributes
+    ----------
+    speed : float
+        m/s.
+    t : ndarray, (n_t,)
+        s.
+    states : ndarray, (state_size, n_t)
+        The model's state at each time, in its units (m, rad, m/s, rad/s).
+    lateral_index : int
+        Row of the first wheelset's lateral displacement.
+    """
+
+    speed: float
+    t: np.ndarray
+    states: np.ndarray
+    lateral_index: int
+
+    @property
+    def lateral(self) -> np.ndarray:
+        """The first wheelset's lateral displacement, m."""
+        return self.states[self.lateral_index]
+
+    def plot(self, ax=None, *, flange_clearance: float | None = None) -> dict:
+        """Draw the first wheelset's lateral displacement (mm) against time, with the flangeway clearance.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default.
+        flange_clearance : float, optional
+            m; marked at ±δ_f when given.
+
+        Returns
+        -------
+        dict
+            The artists: ``line`` and, with a clearance, ``flange`` (two lines).
+        """
+        import matplotlib
+
+        from raildyn import plots
+
+        ax = plots.axes_or_new(ax)
+        out = {}
+        with matplotlib.rc_context(plots.STYLE):
+            (out["line"],) = ax.plot(self.t, 1e3 * self.lateral, color=plots.COLORS[0])
+            if flange_clearance is not None:
+                d = 1e3 * flange_clearance
+                out["flange"] = [
+                    ax.axhline(sign * d, color=plots.COLORS[1], ls="--", lw=1) for sign in (1, -1)
+                ]
+                ax.text(0.05, d + 0.5, "flange contact", color=plots.COLORS[1])
+            ax.set_xlabel("time $t$ (s)")
+            ax.set_ylabel("lateral displacement $y$ (mm)")
+            ax.set_xlim(0, self.t[-1])
+        return out
+
+
+def simulate(model, speed, initial_state, duration, *, max_step: float = 2.0e-3, rtol: float = 1.0e-6):
+    """Integrate a nonlinear lateral model at speed V from a state, by RK45 (scipy).
+
+    Parameters
+    ----------
+    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
+        ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and ``lateral_index``.
+    speed : float
+        V, m/s (> 0).
+    initial_state : array_like, (state_size,)
+        In the units of the model's state.
+    duration : float
+        s (> 0).
+    max_step : float
+        Largest step, s (> 0).
+    rtol : float
+        Relative tolerance of the integration, in (0, 1).
+
+    Returns
+    -------
+    NonlinearRun
+
+    Raises
+    ------
+    SolverError
+        If the integration fails.
+
+    Examples
+    --------
+    >>> from raildyn.wheelset import NonlinearWheelset, Wheelset
+    >>> run = simulate(NonlinearWheelset(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)), 60.0,
+    ...                [1e-3, 0.0, 0.0, 0.0], 0.5)
+    >>> run.states.shape[0], float(run.t[-1])
+    (4, 0.5)
+    """
+    import scipy.integrate
+
+    V = scalar("speed", speed, low=0.0, low_open=True)
+    T = positive("duration", duration)
+    h = positive("max_step", max_step)
+    r = scalar("rtol", rtol, low=0.0, high=1.0, low_open=True, high_open=True)
+    m = model.at_speed(V)
+    y0 = array("initial_state", initial_state, shape=(m.state_size,))
+    sol = scipy.integrate.solve_ivp(m.rhs, (0.0, T), y0, method="RK45", rtol=r, atol=1e-9, max_step=h)
+    if not sol.success:
+        raise SolverError(f"integration failed at V = {V:.2f} m/s: {sol.message}", time=float(sol.t[-1]))
+    return NonlinearRun(V, sol.t, sol.y, m.lateral_index)
+
+
+@dataclass(frozen=True)
+class LimitCycle:
+    """Steady lateral oscillation of a nonlinear model at one speed.
+
+    Attributes
+    ----------
+    speed : float
+        m/s.
+    amplitude : float
+        Half the peak-to-peak lateral displacement of the first wheelset over
+        the last quarter of the run, m.
+    frequency_hz : float
+        Frequency of the oscillation, Hz, from the upward crossings of the mean (nan when there
+        is no oscillation).
+    growth : float
+        Amplitude over the last quarter divided by that over the quarter before:
+        below 1 while the motion is still dying away.
+    state : ndarray
+        The state at the end of the run (to start the next speed of a ramp from).
+    """
+
+    speed: float
+    amplitude: float
+    frequency_hz: float
+    growth: float
+    state: np.ndarray
+
+    def hunting(self, threshold: float = 2.0e-4) -> bool:
+        """Whether the motion is a sustained oscillation: above ``threshold`` and no longer decaying.
+
+        Parameters
+        ----------
+        threshold : float
+            Amplitude below which the motion counts as decayed, m (default 0.2 mm).
+
+        Returns
+        -------
+        bool
+            True when ``amplitude > threshold`` and ``growth > 0.95``.
+        """
+        return self.amplitude > threshold and self.growth > 0.95
+
+
+def limit_cycle_amplitude(
+    model,
+    speed,
+    *,
+    initial_displacement: float = 12.0e-3,
+    initial_state=None,
+    duration: float = 8.0,
+    max_step: float = 2.0e-3,
+    rtol: float = 1e-6,
+) -> LimitCycle:
+    """Amplitude of the steady hunting of a nonlinear model at one speed, by direct integration.
+
+    Starts from a lateral displacement of the first wheelset (or from
+    ``initial_state``) and integrates ``duration`` seconds with RK45; the
+    amplitude is taken over the last quarter of the run.
+
+    Parameters
+    ----------
+    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
+        The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
+        ``lateral_index``.
+    speed : float
+        Speed V, m/s (> 0).
+    initial_displacement : float
+        Starting lateral displacement of the first wheelset, m (default 12 mm:
+        beyond the flangeway clearance, so that a large limit cycle is found
+        where one exists).
+    initial_state : array_like, optional
+        Full starting state, instead of ``initial_displacement``.
+    duration : float
+        Simulated time, s.
+    max_step : float
+        Largest solver step, s.
+    rtol : float
+        Relative tolerance of the solver.
+
+    Returns
+    -------
+    LimitCycle
+        Amplitude (m), frequency (Hz), growth over the last two quarters and final state.
+
+    Raises
+    ------
+    SolverError
+        If the integration fails.
+
+    Examples
+    --------
+    The suspended wheelset of chapter 5 at 60 m/s, above its linear critical speed of
+    54.6 m/s: from 12 mm it settles on a limit cycle of about 10 mm at 5.7 Hz.
+
+    >>> from raildyn.wheelset import NonlinearWheelset, Wheelset
+    >>> model = NonlinearWheelset(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6))
+    >>> cycle = limit_cycle_amplitude(model, 60.0, duration=2.0)
+    >>> cycle.hunting(), round(1e3 * cycle.amplitude, 1), round(cycle.frequency_hz, 1)
+    (True, 10.3, 5.7)
+    """
+    V = scalar("speed", speed, low=0.0, low_open=True)
+    positive("duration", duration)
+    positive("max_step", max_step)
+    m = model.at_speed(V)
+    if initial_state is None:
+        y0 = np.zeros(m.state_size)
+        y0[m.lateral_index] = scalar("initial_displacement", initial_displacement)
+    else:
+        y0 = array("initial_state", initial_state, shape=(m.state_size,))
+    run = simulate(m, V, y0, duration, max_step=max_step, rtol=rtol)
+    t, y, x = run.t, run.states, run.lateral
+    last = t >= 0.75 * duration
+    before = (t >= 0.5 * duration) & ~last
+    amplitude = 0.5 * (x[last].max() - x[last].min())
+    previous = 0.5 * (x[before].max() - x[before].min())
+    growth = amplitude / previous if previous > 0 else 1.0
+    tail, tt = x[last], t[last]
+    crossings = np.flatnonzero(np.diff(np.sign(tail - tail.mean())) > 0)
+    frequency_hz = np.nan
+    if amplitude > 1e-6 and crossings.size >= 2:
+        frequency_hz = (crossings.size - 1) / (tt[crossings[-1]] - tt[crossings[0]])
+    return LimitCycle(V, float(amplitude), float(frequency_hz), float(growth), y[:, -1].copy())
+
+
+@dataclass(frozen=True)
+class BifurcationDiagram:
+    """Limit-cycle amplitude against speed and the nonlinear critical speed.
+
+    Attributes
+    ----------
+    speeds : ndarray
+        m/s, decreasing (the order of the ramp).
+    amplitudes : ndarray
+        Lateral amplitude of the first wheelset, m.
+    frequencies_hz : ndarray
+        Frequency of the motion at each speed, Hz (nan where there is no oscillation).
+    hunting : ndarray of bool
+        Whether the motion at each speed is a sustained oscillation.
+    nonlinear_critical_speed : float
+        Lowest speed at which a limit cycle persists, m/s, refined by bisection
+        between the grid speeds (inf if there is none on the grid).
+    threshold : float
+        Amplitude below which the motion counts as decayed, m.
+    """
+
+    speeds: np.ndarray
+    amplitudes: np.ndarray
+    frequencies_hz: np.ndarray
+    hunting: np.ndarray
+    nonlinear_critical_speed: float
+    threshold: float
+
+    def plot(self, ax=None, *, linear_critical_speed: float | None = None) -> dict:
+        """Draw the amplitude (mm) against speed (km/h), with the nonlinear and linear critical speeds.
+
+        Filled markers joined by a line: sustained hunting; open markers: motion that dies away.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Axes to draw on; new ones by default.
+        linear_critical_speed : float, optional
+            The linear critical speed of the same vehicle, m/s (finite, > 0; from
+            :func:`~raildyn.stability.linear.critical_speed`), drawn as a dashed line; left out if None.
+
+        Returns
+        -------
+        dict
+            The artists: ``cycles`` and ``decaying`` (``Line2D``), and the vertical lines
+            ``nonlinear`` (when the nonlinear critical speed is finite) and ``linear`` (when
+            ``linear_critical_speed`` is given).
+        """
+        import matplotlib
+
+        from raildyn import plots
+
+        V, amp, hunt = 3.6 * self.speeds, 1e3 * self.amplitudes, self.hunting
+        ax = plots.axes_or_new(ax)
+        out = {}
+        with matplotlib.rc_context(plots.STYLE):
+            (out["cycles"],) = ax.plot(V[hunt], amp[hunt], "o-", color=plots.COLORS[0], label="limit cycle")
+            (out["decaying"],) = ax.plot(
+                V[~hunt], amp[~hunt], "o", mfc="none", color=plots.COLORS[0], label="motion dies away"
+            )
+            if linear_critical_speed is not None:
+                vc = 3.6 * scalar("linear_critical_speed", linear_critical_speed, low=0.0, low_open=True)
+                out["linear"] = ax.axvline(
+                    vc, color=plots.COLORS[1], ls="--", label=f"linear V_c {vc:.0f} km/h"
+                )
+            vnl = 3.6 * self.nonlinear_critical_speed
+            if np.isfinite(vnl):
+                out["nonlinear"] = ax.axvline(
+                    vnl, color=plots.COLORS[2], ls=":", label=f"nonlinear V_c {vnl:.0f} km/h"
+                )
+            ax.set_xlabel("speed (km/h)")
+            ax.set_ylabel("amplitude of $y$ (mm)")
+            ax.legend(loc="center right")
+        return out
+
+
+def bifurcation_diagram(
+    model,
+    speeds,
+    *,
+    initial_displacement: float = 12.0e-3,
+    duration: float = 8.0,
+    max_step: float = 2.0e-3,
+    threshold: float = 2.0e-4,
+    refine: int = 4,
+    progress: bool = True,
+) -> BifurcationDiagram:
+    """Limit-cycle amplitude along a speed ramp-down, and the nonlinear critical speed.
+
+    The highest speed starts from a large lateral displacement of the first
+    wheelset; each lower speed starts from the final state of the one above
+    (a slow ramp-down in steps), so the branch of large limit cycles is
+    followed below the linear critical speed as far as it exists (a
+    subcritical Hopf bifurcation). Where the branch ends, ``refine`` bisection
+    steps between the last hunting and the first decaying speed locate the
+    nonlinear critical speed.
+
+    Parameters
+    ----------
+    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
+        The nonlinear model, as for :func:`limit_cycle_amplitude`.
+    speeds : array_like, shape (n_speeds,)
+        Speeds of the ramp, m/s (> 0), in any order: they are run from the highest down.
+    initial_displacement : float
+        Starting lateral displacement of the first wheelset at the highest speed (and after
+        a speed where the motion died away), m.
+    duration : float
+        Simulated time at each speed, s.
+    max_step : float
+        Largest solver step, s.
+    threshold : float
+        Amplitude below which the motion counts as decayed, m.
+    refine : int
+        Number of bisection steps on the nonlinear critical speed (≥ 0).
+    progress : bool
+        Show a progress bar.
+
+    Returns
+    -------
+    BifurcationDiagram
+        Amplitudes (m), frequencies (Hz) and hunting flags along the ramp, and the nonlinear
+        critical speed (m/s); draw it with :meth:`BifurcationDiagram.plot`.
+
+    Raises
+    ------
+    SolverError
+        If an integration fails.
+    """
+    V = np.sort(_checks.speeds("speeds", speeds))[::-1]
+    positive("threshold", threshold)
+    integer("refine", refine, low=0)
+    items = V
+    if progress:
+        items = progress_bar(V, desc="bifurcation diagram (ramp-down)")
+    cycles, state = [], None
+    for v in items:
+        cycle = limit_cycle_amplitude(
+            model,
+            v,
+            initial_displacement=initial_displacement,
+            initial_state=state,
+            duration=duration,
+            max_step=max_step,
+        )
+        cycles.append(cycle)
+        state = cycle.state if cycle.hunting(threshold) else None
+    hunting = np.array([c.hunting(threshold) for c in cycles])
+    vnl = np.inf
+    if hunting.any():
+        k = int(np.flatnonzero(hunting).max())
+        vnl = float(V[k])
+        if k + 1 < V.size and not hunting[k + 1]:
+            high, low, start = V[k], V[k + 1], cycles[k].state
+            for _ in range(refine):
+                mid = 0.5 * (high + low)
+                trial = limit_cycle_amplitude(
+                    model, mid, initial_state=start, duration=duration, max_step=max_step
+                )
+                if trial.hunting(threshold):
+                    high, start = mid, trial.state
+                else:
+                    low = mid
+            vnl = float(high)
+    amp = np.array([c.amplitude for c in cycles])
+    freq = np.array([c.frequency_hz for c in cycles])
+    return BifurcationDiagram(V, amp, freq, hunting, vnl, threshold)
+
+
+@dataclass(frozen=True)
+class PeriodicOrbit:
+    """A periodic solution of a nonlinear model found by shooting.
+
+    Attributes
+    ----------
+    speed : float
+        m/s.
+    period : float
+        T, s.
+    state : ndarray
+        A point of the orbit, where the first wheelset's lateral velocity is zero.
+    amplitude : float
+        Half the peak-to-peak lateral displacement of the first wheelset over one period, m.
+    multipliers : complex ndarray
+        Floquet multipliers (eigenvalues of the monodromy matrix); the orbit is
+        stable when all but the trivial one (≈ 1) lie inside the unit circle.
+    residual : float
+        Norm of φ_T(x₀) − x₀ at the solution, in units of the state.
+    """
+
+    speed: float
+    period: float
+    state: np.ndarray
+    amplitude: float
+    multipliers: np.ndarray
+    residual: float
+
+    @property
+    def stable(self) -> bool:
+        """All multipliers but the trivial one (the one closest to 1) inside the unit circle."""
+        trivial = int(np.argmin(np.abs(self.multipliers - 1.0)))
+        others = np.delete(self.multipliers, trivial)
+        return bool(np.all(np.abs(others) < 1.0))
+
+
+def periodic_orbit(
+    model,
+    speed,
+    state,
+    period,
+    *,
+    tol: float = 1e-7,
+    max_iter: int = 12,
+    rtol: float = 1e-10,
+) -> PeriodicOrbit:
+    """Periodic orbit through Newton shooting, from a guess of one of its points and of its period.
+
+    Unknowns: the state x₀ with the first wheelset's lateral velocity held at
+    zero (the phase condition) and the period T; equations φ_T(x₀) − x₀ = 0,
+    with the Jacobian by finite differences (one integration per unknown). The
+    monodromy matrix of the converged orbit gives its Floquet multipliers, so
+    unstable orbits — the other branch of a subcritical bifurcation — are found
+    as well as stable ones.
+
+    Parameters
+    ----------
+    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
+        The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
+        ``lateral_index``.
+    speed : float
+        Speed V, m/s (> 0).
+    state : array_like, shape (state_size,)
+        Guess of a point on the orbit (for instance the ``state`` at the end of a
+        :func:`limit_cycle_amplitude` run), in the units of the model's state.
+    period : float
+        Guess of T, s (1 / ``frequency_hz`` of the settled motion).
+    tol : float
+        Convergence on the relative size of the Newton step (dimensionless).
+    max_iter : int
+        Largest number of Newton steps (≥ 1).
+    rtol : float
+        Relative tolerance of the DOP853 integrations.
+
+    Returns
+    -------
+    PeriodicOrbit
+        The period (s), a point of the orbit, its amplitude (m), Floquet multipliers and the
+        residual of the periodicity condition.
+
+    Raises
+    ------
+    SolverError
+        If an integration fails or Newton's method does not converge in ``max_iter`` steps.
+
+    Notes
+    -----
+    The centred state is a trivial solution of the same equations: a guess
+    far from any cycle may converge to it (amplitude 0).
+    """
+    import scipy.integrate
+
+    V = scalar("speed", speed, low=0.0, low_open=True)
+    T = positive("period", period)
+    m = model.at_speed(V)
+    n = m.state_size
+    x = array("state", state, shape=(n,)).copy()
+    iy = m.lateral_index
+    iv = iy + n // 2  # the lateral velocity of the same wheelset
+    free = [i for i in range(n) if i != iv]
+
+    def section(t, z):
+        return z[iv]
+
+    section.direction = -1.0  # a maximum of the lateral displacement
+    # Move the guess along its own trajectory to the section ẏ = 0, so that it meets the phase condition.
+    sol = scipy.integrate.solve_ivp(
+        m.rhs, (0.0, 2.0 * T), x, method="DOP853", rtol=rtol, atol=1e-12, events=section
+    )
+    if sol.t_events[0].size:
+        x = sol.y_events[0][0].copy()
+    x[iv] = 0.0
+
+    def flow(starts, t_end):
+        """φ_t(x₀) for each column of ``starts``, integrated as one system.
+
+        The columns share one sequence of adaptive steps, so the differences between
+        neighbouring trajectories that the finite differences below take carry the
+        truncation error of the perturbation, not the noise of two step sequences.
+        """
+        k = starts.shape[1]
+
+        def rhs(t, z):
+            return m.rhs(t, z.reshape(n, k)).reshape(-1)
+
+        sol = scipy.integrate.solve_ivp(
+            rhs, (0.0, t_end), starts.reshape(-1), method="DOP853", rtol=rtol, atol=1e-12
+        )
+        if not sol.success:
+            raise SolverError(
+                f"shooting integration failed at V = {V:.2f} m/s: {sol.message}", time=float(sol.t[-1])
+            )
+        return sol.y[:, -1].reshape(n, k)
+
+    # Finite-difference steps relative to each entry, with a floor so that an entry near 0 (such
+    # as the lateral velocity on the section) is not perturbed below the integration noise.
+    scale = np.maximum(np.abs(x), 1e-2 * np.abs(x).max())
+    h = 1e-5 * scale
+    for _ in range(integer("max_iter", max_iter, low=1)):
+        starts = np.column_stack([x] + [x + h[i] * np.eye(n)[i] for i in free])
+        ends = flow(starts, T)
+        end, residual = ends[:, 0], ends[:, 0] - x
+        J = np.empty((n, n))
+        J[:, :-1] = (ends[:, 1:] - starts[:, 1:] - residual[:, None]) / h[free]
+        J[:, -1] = m.rhs(T, end)  # d/dT of φ_T(x₀)
+        step = np.linalg.solve(J, -residual)
+        x[free] += step[:-1]
+        T += step[-1]
+        if np.linalg.norm(step[:-1] / scale[free]) < tol and abs(step[-1]) < tol * T:
+            break
+    else:
+        raise SolverError(f"shooting did not converge in {max_iter} iterations at V = {V:.2f} m/s")
+    # Monodromy matrix (central differences, all trajectories on one step sequence) and one period of
+    # the orbit, for the multipliers and the amplitude.
+    shifts = np.diag(h)
+    ends = flow(np.column_stack([x[:, None] + shifts, x[:, None] - shifts, x]), T)
+    monodromy = (ends[:, :n] - ends[:, n : 2 * n]) / (2 * h)
+    end = ends[:, -1]
+    sol = scipy.integrate.solve_ivp(
+        m.rhs, (0.0, T), x, method="DOP853", rtol=rtol, atol=1e-12, max_step=T / 200
+    )
+    lateral = sol.y[iy]
+    return PeriodicOrbit(
+        V,
+        float(T),
+        x,
+        float(0.5 * (lateral.max() - lateral.min())),
+        np.linalg.eigvals(monodromy),
+        float(np.linalg.norm(end - x)),
+    )
