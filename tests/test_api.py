@@ -55,6 +55,10 @@ MAIN_ENTRY_POINTS = [
     "raildyn.vibration.complex_modes",
     "raildyn.random_vibration.response_psd",
     "raildyn.random_vibration.synthesize",
+    # chapter 2
+    "raildyn.integrators.integrate",
+    "raildyn.integrators.newmark",
+    "raildyn.integrators.rk4",
     # chapter 3
     "raildyn.track.fra_psd",
     "raildyn.track.german_psd",
@@ -81,6 +85,10 @@ MAIN_ENTRY_POINTS = [
     "raildyn.stability.mode_sweep",
     "raildyn.stability.critical_speed",
     "raildyn.stability.limit_cycle_amplitude",
+    # chapter 9
+    "raildyn.train.braking_model",
+    "raildyn.train.simulate",
+    "raildyn.train.TrainModel.quasi_static",
 ]
 
 
