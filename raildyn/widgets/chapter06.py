@@ -212,16 +212,10 @@ def _rock_controls():
 
 @lru_cache(maxsize=32)
 def _rock_sweep(car_label: str, friction_kn: float, depth_mm: float):
-    """The steady roll over the widget's speeds."""
+    """The roll over the widget's speeds, integrated together: 14 rail lengths at 20 km/h, so that
+    every history covers the 30 s the right panel shows."""
     car = FREIGHT_CARS[car_label].replace(wedge_friction=1e3 * friction_kn)
-    return rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=12)
-
-
-@lru_cache(maxsize=64)
-def _rock_history(car_label: str, speed_kmh: float, friction_kn: float, depth_mm: float):
-    car = FREIGHT_CARS[car_label].replace(wedge_friction=1e3 * friction_kn)
-    cycles = max(12, int(np.ceil(30.0 * speed_kmh / 3.6 / track.RAIL_LENGTH)))  # about 30 s shown
-    return rock_and_roll(car, [speed_kmh / 3.6], depth=1e-3 * depth_mm, cycles=cycles)
+    return rock_and_roll(car, _ROCK_SPEEDS_KMH / 3.6, depth=1e-3 * depth_mm, cycles=14)
 
 
 def _rock_setup(live, status):
@@ -246,10 +240,12 @@ def _rock_setup(live, status):
         sweep = _rock_sweep(v["car"], v["friction_kn"], v["depth_mm"])
         sweep.plot(artists=sweep_artists)
         v_res = 3.6 * sweep.resonance_speed
-        run = _rock_history(v["car"], v["speed_kmh"], v["friction_kn"], v["depth_mm"])
-        shown = run.t <= 30
-        hist.set_data(run.t[shown], np.degrees(run.roll[0][shown]))
-        here = float(np.degrees(run.roll_amplitude[0]))
+        # The chosen speed is one of the sweep's (a 5 km/h slider on its 2.5 km/h grid): its history
+        # and amplitude come from the same run.
+        k = int(np.argmin(np.abs(_ROCK_SPEEDS_KMH - v["speed_kmh"])))
+        shown = sweep.t <= 30
+        hist.set_data(sweep.t[shown], np.degrees(sweep.roll[k][shown]))
+        here = float(np.degrees(sweep.roll_amplitude[k]))
         marker.set_data([v["speed_kmh"]], [here])
         status.value = (
             f"roll resonance (springs alone) at {v_res:.0f} km/h; at {v['speed_kmh']:.0f} km/h the steady "
