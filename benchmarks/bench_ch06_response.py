@@ -29,13 +29,14 @@ def _psd(w):
 
 def _loop(vehicle) -> np.ndarray:
     out = np.empty(SPEEDS.size)
-    o = np.zeros(vehicle.n)
+    o = np.zeros(vehicle.size)
     o[0] = 1.0
     for i, V in enumerate(SPEEDS):
         tau = vehicle.input_positions / V
         S = np.empty(OMEGA.size)
+        mats = vehicle.matrices(V)
         for k, w in enumerate(OMEGA):
-            Z = vehicle.K - w**2 * vehicle.M + 1j * w * vehicle.C
+            Z = mats.K - w**2 * mats.M + 1j * w * mats.C
             X = np.linalg.solve(Z, vehicle.GK + 1j * w * vehicle.GC)
             H = -(w**2) * (o @ X) @ np.exp(-1j * w * tau)
             S[k] = abs(H) ** 2 * _psd(np.array([w / V]))[0] / V

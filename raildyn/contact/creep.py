@@ -774,14 +774,19 @@ def wheelset_creepages(
 
 def _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r) -> WheelsetCreepages:
     """The creepages of :func:`wheelset_creepages` from checked arrays."""
-    # Filled in place rather than by broadcast_arrays and stack: the nonlinear wheelset calls this
-    # at every evaluation of its right-hand side.
-    shape = (2, *np.broadcast_shapes(*(np.shape(x) for x in (y_dot, psi, psi_dot, r_l, r_r, d_l, d_r))))
-    yaw = l_half * psi_dot / v
-    xi, eta, phi = np.empty(shape), np.empty(shape), np.empty(shape)
-    xi[0] = (r0 - r_l) / r0 - yaw
-    xi[1] = (r0 - r_r) / r0 + yaw
-    eta[:] = y_dot / v - psi
-    phi[0] = psi_dot / v - np.sin(d_l) / r_l
-    phi[1] = psi_dot / v + np.sin(d_r) / r_r
-    return WheelsetCreepages(longitudinal=xi, lateral=eta, spin=phi)
+    yaw, spin = l_half * psi_dot / v, psi_dot / v
+    parts = (
+        (r0 - r_l) / r0 - yaw,
+        (r0 - r_r) / r0 + yaw,
+        y_dot / v - psi,
+        spin - np.sin(d_l) / r_l,
+        spin + np.sin(d_r) / r_r,
+    )
+    # Broadcast only when the shapes differ: the nonlinear wheelset calls this at every evaluation
+    # of its right-hand side, with arrays of one shape.
+    if len({np.shape(p) for p in parts}) > 1:
+        parts = np.broadcast_arrays(*parts)
+    xi_l, xi_r, eta, phi_l, phi_r = parts
+    return WheelsetCreepages(
+        longitudinal=np.array((xi_l, xi_r)), lateral=np.array((eta, eta)), spin=np.array((phi_l, phi_r))
+    )
