@@ -52,7 +52,7 @@ INPUT_KINDS = ("vertical", "alignment", "cross_level")
 (lateral position of the track centreline) or the cross-level (left rail height − right rail height), m."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
 class SystemMatrices:
     """The matrices of a linear model at one speed: M q̈ + C q̇ + K q = G_K w + G_C ẇ.
 
@@ -94,7 +94,7 @@ def _frozen(name: str, value, shape) -> np.ndarray:
     return arr
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
 class LinearSystem:
     """A linear model: M q̈ + (C₀ + C₁/V) q̇ + K q = G_K w(t) + G_C ẇ(t).
 
