@@ -6,15 +6,16 @@ systems read M q̈ + (C₀ + C₁/V) q̇ + K q = 0 without the track,
 so the state matrix at every speed of a sweep is built at once and all
 eigenvalues come from one batched ``numpy.linalg`` call.
 
-* :func:`eigenvalues_against_speed` — every eigenvalue at every speed;
-* :func:`mode_sweep` — eigenvalues, frequencies and damping ratios with each
+* :func:`~raildyn.stability.linear.eigenvalues_against_speed` — every eigenvalue at every speed;
+* :func:`~raildyn.stability.linear.mode_sweep` — eigenvalues, frequencies and damping ratios with each
   mode followed across speed by its modal assurance criterion (MAC), so
   that crossing branches keep their labels;
-* :func:`critical_speed` — the lowest speed at which the largest real part
+* :func:`~raildyn.stability.linear.critical_speed` — the lowest speed at which the largest real part
   becomes positive, by a batched coarse scan and Brent's method;
-* :func:`critical_speed_map` — the critical speed over a grid of two parameters;
-* :func:`limit_cycle_amplitude`, :func:`bifurcation_diagram` — nonlinear hunting:
-  the amplitude of the limit cycle against speed and the nonlinear critical speed.
+* :func:`~raildyn.stability.linear.critical_speed_map` — the critical speed over a grid of two parameters;
+* :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`,
+  :func:`~raildyn.stability.nonlinear.bifurcation_diagram` — nonlinear hunting: the
+  amplitude of the limit cycle against speed and the nonlinear critical speed.
 """
 
 from raildyn.stability.linear import (

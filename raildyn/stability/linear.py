@@ -415,7 +415,7 @@ class CriticalSpeed:
         "crossing", "stable over the range" or "unstable at the lowest speed".
     mode_shape : complex ndarray (n,)
         The displacement part of that mode's eigenvector at V_c, largest entry 1 (as
-        :attr:`ModeSweep.shapes`); NaN when no mode loses stability in the range.
+        ``ModeSweep.shapes``); NaN when no mode loses stability in the range.
     coordinates : tuple of str
         Name of each entry of ``mode_shape``.
     """
