@@ -99,11 +99,15 @@ def track_frf(vehicle, omega, speed, output="body z", derivative: int = 0, compo
     ndarray, complex, (n_ω,)
     """
     system, V = _steady_system(vehicle, speed)
-    tau = _track.axle_delays(system.input_positions, V)
     Hj = system.axle_frf(omega, V, output, derivative)
-    w = np.asarray(omega, dtype=float)
-    phase = np.exp(-1j * w[:, None] * tau[None, :])
-    return np.einsum("kj,j,kj->k", Hj, _rail_weights(system, component), phase)
+    tau = _track.axle_delays(system.input_positions, V)
+    return _delayed_sum(Hj, _rail_weights(system, component), np.asarray(omega, dtype=float), tau)
+
+
+def _delayed_sum(Hj, weights, omega, delays) -> np.ndarray:
+    """Σ_j a_j H_j(ω) e^{−iωτ_j}: each input met τ_j after the leading axle; ``delays`` (q,) or (n_V, q)."""
+    phase = np.exp(-1j * omega[:, None] * delays[..., None, :])  # (..., n_ω, q)
+    return np.einsum("kj,j,...kj->...k", Hj, weights, phase)
 
 
 @dataclass(frozen=True)
@@ -266,11 +270,10 @@ def rms_over_speeds(
     if np.any(system.C1):
         return np.array([response_spectrum(system, spectra, v, w, output, derivative).rms for v in V])
     Hj = system.axle_frf(w, V[0], output, derivative)  # (n_ω, q), the same at every speed
-    tau = system.input_positions[None, :] - system.input_positions[0]
-    phase = np.exp(-1j * w[None, :, None] * tau[:, None, :] / V[:, None, None])  # (n_V, n_ω, q)
+    tau = _track.axle_delays(system.input_positions, 1.0)[None, :] / V[:, None]  # (n_V, q), s
     S = np.zeros((V.size, w.size))
     for name, spectrum in spectra.items():
-        H = np.einsum("kj,j,vkj->vk", Hj, _rail_weights(system, name), phase)
+        H = _delayed_sum(Hj, _rail_weights(system, name), w, tau)  # (n_V, n_ω)
         S = S + np.abs(H) ** 2 * np.asarray(spectrum(w[None, :] / V[:, None])) / V[:, None]
     return np.sqrt(np.trapezoid(S, w, axis=1))
 
