@@ -61,12 +61,17 @@ def nonnegative(name: str, value) -> float:
     return scalar(name, value, low=0.0)
 
 
-def array(name: str, value, *, ndim=None, shape=None, low=None, low_open=False, dtype=float) -> np.ndarray:
+def array(
+    name: str, value, *, ndim=None, shape=None, low=None, low_open=False, dtype=float, allow_empty=True
+) -> np.ndarray:
     """Return ``value`` as a finite numpy array, checking its rank, shape and lower bound.
 
-    ``shape`` may hold ``None`` for a free axis.
+    ``shape`` may hold ``None`` for a free axis; ``allow_empty=False`` refuses an array
+    with no entries (an empty grid would give an empty, silent answer).
     """
-    arr = np.asarray(value, dtype=dtype)
+    arr = _numbers(name, value, dtype)
+    if not allow_empty and arr.size == 0:
+        raise ValueError(f"{name} must not be empty, got an array of shape {arr.shape}")
     if ndim is not None and arr.ndim != ndim:
         raise ValueError(
             f"{name} must be a {ndim}-dimensional array, got {arr.ndim} dimensions: {_show(value)}"
@@ -88,6 +93,19 @@ def array(name: str, value, *, ndim=None, shape=None, low=None, low_open=False, 
     return arr
 
 
+def _numbers(name: str, value, dtype=float) -> np.ndarray:
+    """``value`` as a numeric array; a string, None or an object refused by a TypeError naming ``name``."""
+    if value is None or isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or an array of numbers, got {value!r}")
+    try:
+        return np.asarray(value, dtype=dtype)
+    except (TypeError, ValueError):
+        raise TypeError(
+            f"{name} must be a number or an array of numbers, got {value!r:.80} "
+            f"of type {type(value).__name__}"
+        ) from None
+
+
 def square_matrix(
     name: str, value, *, size=None, symmetric=True, positive_definite=False, positive_semidefinite=False
 ) -> np.ndarray:
@@ -96,7 +114,7 @@ def square_matrix(
     The symmetry tolerance is relative to the largest entry (1e-10), loose enough
     for matrices assembled in floating point and tight enough to catch a typo.
     """
-    arr = np.atleast_2d(np.asarray(value, dtype=float))
+    arr = np.atleast_2d(_numbers(name, value))
     if arr.ndim != 2 or arr.shape[0] != arr.shape[1]:
         raise ValueError(f"{name} must be a square matrix, got shape {np.shape(value)}")
     if size is not None and arr.shape[0] != size:
@@ -154,7 +172,7 @@ def hermitian(name: str, value, *, size=None) -> np.ndarray:
     own, so a matrix whose entries are small (a spectrum far down its slope) is
     held to the same relative standard as a large one.
     """
-    arr = np.asarray(value, dtype=complex)
+    arr = _numbers(name, value, complex)
     if arr.ndim < 2 or arr.shape[-1] != arr.shape[-2]:
         raise ValueError(f"{name} must be an array of square matrices (..., q, q), got shape {arr.shape}")
     if size is not None and arr.shape[-1] != size:
@@ -228,3 +246,106 @@ def speeds(name: str, value) -> np.ndarray:
     if np.any(V <= 0):
         raise ValueError(f"{name} must all be > 0 m/s (creep forces divide by V), got {V[V <= 0][0]!r}")
     return V
+
+
+def tolerance(name: str, value, *, low: float = 1e-13, high: float = 1.0) -> float:
+    """A solver tolerance, finite, in ``[low, high)``.
+
+    The default floor 1e-13 sits above 100 machine epsilons, below which scipy's solvers
+    silently raise a relative tolerance, and a tolerance of 1 or more asks for no accuracy.
+    """
+    return scalar(name, value, low=low, high=high, high_open=True)
+
+
+def choice(name: str, value, options) -> str:
+    """One of the names ``options`` (a TypeError for a non-string, a ValueError listing the names)."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, one of {sorted(options)}, got {value!r}")
+    if value not in options:
+        raise ValueError(f"{name} must be one of {sorted(options)}, got {value!r}")
+    return value
+
+
+def flag(name: str, value) -> bool:
+    """A bool (numpy's included); anything else, even a truthy string, refused."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be True or False, got {value!r}")
+    return bool(value)
+
+
+def instance(name: str, value, kind, what: str | None = None):
+    """``value`` itself if it is an instance of ``kind`` (a class or a tuple of classes)."""
+    if not isinstance(value, kind):
+        if what is None:
+            kinds = kind if isinstance(kind, tuple) else (kind,)
+            what = " or ".join(k.__name__ for k in kinds)
+        raise TypeError(f"{name} must be a {what}, got {value!r:.80} of type {type(value).__name__}")
+    return value
+
+
+def function(name: str, value):
+    """``value`` itself if it can be called (a callback: a force, a spectrum, a profile)."""
+    if not callable(value):
+        raise TypeError(f"{name} must be a callable, got {value!r:.80} of type {type(value).__name__}")
+    return value
+
+
+def returned(name: str, value, *, shape=None, low=None, at: str = "") -> np.ndarray:
+    """Check what the callback ``name`` returned: finite numbers, of ``shape``, and ≥ ``low``.
+
+    ``at`` says where it was called (e.g. ``"t = 0.25 s"``) for the message. A spectrum
+    callback is held to ``low=0``.
+    """
+    where = f" at {at}" if at else ""
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must return numbers, returned {value!r:.80}{where}") from None
+    if shape is not None and arr.shape != tuple(shape):
+        raise ValueError(
+            f"{name} must return an array of shape {tuple(shape)}, returned shape {arr.shape}{where}"
+        )
+    if not np.isfinite(arr).all():
+        raise ValueError(f"{name} returned a non-finite value{where}: {_show(arr)}")
+    if low is not None and arr.size and arr.min() < low:
+        raise ValueError(f"{name} must return values >= {low}, returned {arr.min()!r}{where}")
+    return arr
+
+
+_NUMERIC = ("float", "int", "complex", "ndarray", "np.floating")
+
+
+def fields(obj, *, skip=()) -> None:
+    """Check the numeric fields of a dataclass: finite numbers, or None where the type allows it.
+
+    A field counts as numeric when its annotation names ``float``, ``int``, ``complex`` or
+    ``ndarray``; a string, an object or a None it does not allow is refused by a TypeError,
+    a NaN or an inf by a ValueError, each naming the field. For result dataclasses, whose
+    values raildyn computes: the check keeps a hand-built result honest and costs one pass.
+    """
+    import dataclasses
+
+    for f in dataclasses.fields(obj):
+        ann = f.type if isinstance(f.type, str) else getattr(f.type, "__name__", str(f.type))
+        if f.name in skip or not any(word in ann for word in _NUMERIC):
+            continue
+        value = getattr(obj, f.name)
+        if value is None:
+            if "None" in ann:
+                continue
+            raise TypeError(f"{f.name} must be a number or an array of numbers, got None")
+        if isinstance(value, (bool, np.bool_)) and "bool" not in ann:
+            raise TypeError(f"{f.name} must be a number, got {value!r}")
+        arr = _numbers(f.name, value, complex if "complex" in ann else float)
+        if not np.isfinite(arr).all():
+            raise ValueError(f"{f.name} must contain only finite numbers, got {_show(value)}")
+
+
+def linear_model(name: str, value):
+    """``value`` itself if it follows the linear model protocol (it has ``linear_system()``)."""
+    if not callable(getattr(value, "linear_system", None)):
+        raise TypeError(
+            f"{name} must be a linear model (an object with linear_system(), e.g. raildyn.wheelset."
+            f"Wheelset or raildyn.vehicles.Car), got {value!r:.80} of type {type(value).__name__}"
+        )
+    return value

@@ -1,0 +1,394 @@
+"""The machinery of the project's fuzz test (``tests/test_fuzz.py``): bad values, one at a time.
+
+Every public callable of raildyn (the functions and classes of each public module's
+``__all__``, and the public methods those classes define) has one entry in the registry
+(``tests/fuzz_cases/``): a valid call, built afresh for each try. The test changes one
+argument of that call at a time to a bad value and sorts what happens:
+
+* ``refused``: a ``ValueError`` or ``TypeError`` whose message names the parameter changed
+  (as a word) — the answer the package promises;
+* ``accepted``: a result that is finite and non-empty everywhere, for a change the entry
+  declares valid (the docstring states the range that makes it so, e.g. a damping ≥ 0);
+* ``solver``: :class:`raildyn.errors.SolverError` for a value inside the number domain
+  (zero, negative, huge): the package's one failure policy, a bounded run that says why;
+* everything else is a failure: ``hang`` (over the time limit), ``non-finite`` (a NaN, an
+  inf or an empty array anywhere in the result), ``nonsense`` (a finite result for a change
+  not declared valid), ``obscure`` (any other exception, or a ValueError/TypeError that does
+  not name the parameter).
+
+The bad values follow the kind of the valid one (see :func:`mutations`): for a number
+NaN, ±inf, 0, a negative, 1e300, a string, None and a list; for an integer also a
+fraction and 10**12; for an array a NaN or inf entry, zeros, negatives, 1e300, an empty
+array, an extra axis, a string and None; for a name an unknown name, a number and None;
+for a flag a string and None; for a model or other object a number, a string and None;
+for a callback a non-callable, and a callback whose values are NaN, negative or of the
+wrong shape; for a parameter left at None a string. Every callable also meets an unknown
+keyword. Parameters in :data:`FREE` (text that labels a plot) take anything.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import importlib
+import inspect
+import math
+import numbers
+import re
+import signal
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from test_api import PUBLIC  # noqa: E402  (the one definition of what is public)
+
+from raildyn.errors import SolverError  # noqa: E402
+
+#: Seconds a changed call may take before it counts as a hang; the valid call gets longer
+#: (its first run may compile numba kernels).
+LIMIT = 5.0
+VALID_LIMIT = 60.0
+
+#: Parameters that take any value: text or style that only labels a plot.
+FREE = frozenset({"label", "title", "name", "caption", "color", "description_text"})
+
+#: Changes that stay inside the number domain: a SolverError there is the failure policy at work.
+DOMAIN = frozenset({"zero", "negative", "huge"})
+
+#: Every change the test makes, by name (the keys of ``accepts`` in an entry).
+CHANGES = (
+    "nan", "inf", "-inf", "zero", "negative", "huge", "fraction", "list", "empty", "shape",
+    "string", "none", "type", "unknown", "returns-nan", "returns-negative", "returns-shape",
+)  # fmt: skip
+
+OUTCOMES = ("refused", "accepted", "solver", "hang", "non-finite", "nonsense", "obscure")
+FAILURES = ("hang", "non-finite", "nonsense", "obscure")
+
+UNKNOWN_KEYWORD = "not_a_parameter"
+
+
+@dataclasses.dataclass(frozen=True)
+class Call:
+    """One valid call: positional and keyword arguments, and the instance for a method."""
+
+    args: tuple
+    kwargs: dict
+    instance: object = None
+
+
+def call(*args, **kwargs) -> Call:
+    """A valid call of a function or a class."""
+    return Call(args, kwargs)
+
+
+def on(instance, *args, **kwargs) -> Call:
+    """A valid call of a method of ``instance``."""
+    return Call(args, kwargs, instance)
+
+
+@dataclasses.dataclass(frozen=True)
+class Entry:
+    """The registry's entry for one public callable.
+
+    ``target`` is its public dotted name; ``make`` builds a valid :class:`Call` afresh;
+    ``accepts`` maps a parameter to the changes that are valid for it (a space-separated
+    string of names from :data:`CHANGES`; the key ``"*"`` applies to every parameter, for a
+    result dataclass whose fields hold whatever a model computes); ``skip`` names parameters
+    left unchanged, each with the reason; ``limit`` raises the time limit for a callable
+    whose valid call is slow.
+    """
+
+    target: str
+    make: Callable[[], Call]
+    accepts: dict = dataclasses.field(default_factory=dict)
+    skip: dict = dataclasses.field(default_factory=dict)
+    limit: float = LIMIT
+
+    def __post_init__(self):
+        for param, changes in self.accepts.items():
+            unknown = set(changes.split()) - set(CHANGES)
+            assert not unknown, f"{self.target}: accepts[{param!r}] names unknown changes {unknown}"
+
+
+def fuzz(target: str, make: Callable[[], Call], **options) -> Entry:
+    """Shorthand for :class:`Entry`."""
+    return Entry(target, make, **options)
+
+
+# --------------------------------------------------------------------------- the public callables
+
+
+def resolve(target: str, *, static: bool = True):
+    """The object a public dotted name refers to.
+
+    With ``static`` a method is the function its class defines (its identity); without,
+    what calling it through the class calls (a class method bound to its class).
+    """
+    parts = target.split(".")
+    for cut in range(len(parts), 0, -1):
+        try:
+            obj = importlib.import_module(".".join(parts[:cut]))
+        except ImportError:
+            continue
+        for attr in parts[cut:]:
+            owner = obj
+            obj = (
+                inspect.getattr_static(owner, attr)
+                if static and inspect.isclass(owner)
+                else getattr(owner, attr)
+            )
+        return _function(obj) if static else obj
+    raise LookupError(target)
+
+
+def _function(obj):
+    return obj.__func__ if isinstance(obj, (classmethod, staticmethod)) else obj
+
+
+def public_callables() -> dict[int, str]:
+    """Identity → a public dotted name, for every public function, class and public method."""
+    found: dict[int, str] = {}
+    for module_name in PUBLIC:
+        module = importlib.import_module(module_name)
+        for name in module.__all__:
+            obj = getattr(module, name)
+            if not callable(obj) or id(obj) in found:
+                continue
+            found[id(obj)] = f"{module_name}.{name}"
+            if inspect.isclass(obj):
+                for attr, member in vars(obj).items():
+                    member = _function(member)
+                    if not attr.startswith("_") and inspect.isfunction(member) and id(member) not in found:
+                        found[id(member)] = f"{module_name}.{name}.{attr}"
+    return found
+
+
+# --------------------------------------------------------------------------- the changes
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (numbers.Real, np.floating, np.integer)) and not isinstance(
+        value, (bool, np.bool_)
+    )
+
+
+def _is_integer(value) -> bool:
+    return isinstance(value, (numbers.Integral, np.integer)) and not isinstance(value, (bool, np.bool_))
+
+
+def _is_numeric_array(value) -> bool:
+    if isinstance(value, np.ndarray):
+        return value.dtype.kind in "iufc" and value.ndim > 0
+    if isinstance(value, (list, tuple)) and value:
+        try:
+            arr = np.asarray(value)
+        except (ValueError, TypeError):
+            return False
+        return arr.dtype.kind in "iuf"
+    return False
+
+
+def _returns(fn, change):
+    """A callback like ``fn`` whose values are changed."""
+
+    def changed(*args, **kwargs):
+        out = np.asarray(fn(*args, **kwargs), dtype=float)
+        if change == "returns-nan":
+            return np.full_like(out, np.nan)
+        if change == "returns-negative":
+            return -np.abs(out) - 1.0
+        return np.stack([out, out])
+
+    return changed
+
+
+def mutations(value) -> dict[str, object]:
+    """The bad values for a parameter whose valid value is ``value``, by change name."""
+    if value is None:
+        return {"string": "abc"}
+    if isinstance(value, (bool, np.bool_)):
+        return {"string": "yes", "none": None}
+    if _is_integer(value):
+        return {
+            "nan": math.nan, "zero": 0, "negative": -abs(int(value)) - 1, "huge": 10**12,
+            "fraction": int(value) + 0.5, "string": "abc", "none": None, "list": [value, value],
+        }  # fmt: skip
+    if _is_number(value):
+        v = float(value)
+        return {
+            "nan": math.nan, "inf": math.inf, "-inf": -math.inf, "zero": 0.0,
+            "negative": -abs(v) if v else -1.0, "huge": 1e300, "string": "abc", "none": None,
+            "list": [v, v],
+        }  # fmt: skip
+    if isinstance(value, str):
+        return {"unknown": "no-such-name", "type": 1.0, "none": None}
+    if _is_numeric_array(value):
+        arr = np.array(value, dtype=float)
+        first = np.zeros(arr.size, dtype=bool)
+        first[0] = True
+        first = first.reshape(arr.shape)
+        return {
+            "nan": np.where(first, np.nan, arr), "inf": np.where(first, np.inf, arr),
+            "zero": np.zeros_like(arr), "negative": -np.abs(arr) - (arr == 0),
+            "huge": np.where(first, 1e300, arr), "empty": np.empty((0,) + arr.shape[1:]),
+            "shape": np.stack([arr, arr]), "string": "abc", "none": None,
+        }  # fmt: skip
+    if inspect.isfunction(value) or inspect.ismethod(value) or isinstance(value, np.ufunc):
+        return {
+            "type": 1.0, "returns-nan": _returns(value, "returns-nan"),
+            "returns-negative": _returns(value, "returns-negative"),
+            "returns-shape": _returns(value, "returns-shape"),
+        }  # fmt: skip
+    return {"type": 1.0, "string": "abc", "none": None}
+
+
+# --------------------------------------------------------------------------- running and sorting
+
+
+class Hang(BaseException):
+    """Raised by the timer inside a call that ran past its limit (BaseException: nothing catches it)."""
+
+
+def _on_alarm(signum, frame):
+    raise Hang
+
+
+def _bad_numbers(result, depth=0) -> str | None:
+    """Where the result holds a NaN, an inf or an empty array (None if nowhere)."""
+    if depth > 4 or result is None or isinstance(result, (str, bytes, bool)):
+        return None
+    if isinstance(result, (numbers.Number, np.number)):
+        return None if np.isfinite(complex(result)) else f"the value {result!r}"
+    if isinstance(result, np.ndarray):
+        if result.dtype.kind not in "iufc":
+            return None
+        if result.size == 0:
+            return f"an empty array of shape {result.shape}"
+        return None if np.isfinite(result).all() else "an array holding NaN or inf"
+    if dataclasses.is_dataclass(result) and not isinstance(result, type):
+        for field in dataclasses.fields(result):
+            where = _bad_numbers(getattr(result, field.name), depth + 1)
+            if where:
+                return f"{type(result).__name__}.{field.name}: {where}"
+        return None
+    if isinstance(result, (tuple, list)):
+        for i, item in enumerate(result[:50]):
+            where = _bad_numbers(item, depth + 1)
+            if where:
+                return f"[{i}]: {where}"
+        return None
+    if isinstance(result, dict):
+        for key, item in list(result.items())[:50]:
+            where = _bad_numbers(item, depth + 1)
+            if where:
+                return f"[{key!r}]: {where}"
+    return None
+
+
+def _names(message: str, param: str) -> bool:
+    return re.search(rf"(?<![\w.]){re.escape(param)}(?!\w)", message) is not None
+
+
+def _invoke(fn, c: Call, limit: float):
+    previous = signal.signal(signal.SIGALRM, _on_alarm)
+    signal.setitimer(signal.ITIMER_REAL, limit)
+    try:
+        return fn(*c.args, **c.kwargs)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+def _callable_of(entry: Entry, c: Call):
+    if c.instance is None:
+        return resolve(entry.target, static=False)
+    return getattr(c.instance, entry.target.rsplit(".", 1)[1])
+
+
+@dataclasses.dataclass(frozen=True)
+class Outcome:
+    """What one changed call did."""
+
+    target: str
+    param: str
+    change: str
+    kind: str
+    detail: str
+
+    def __str__(self):
+        return f"{self.target}({self.param}: {self.change}) → {self.kind}: {self.detail}"
+
+
+def _sort(entry: Entry, param: str, change: str, run: Callable[[], object]) -> Outcome:
+    import matplotlib.pyplot as plt
+
+    accepted = change in (entry.accepts.get(param, "") + " " + entry.accepts.get("*", "")).split()
+    try:
+        result = run()
+    except Hang:
+        return Outcome(entry.target, param, change, "hang", f"over {entry.limit} s")
+    except SolverError as err:
+        kind = "solver" if change in DOMAIN else "obscure"
+        return Outcome(entry.target, param, change, kind, f"SolverError: {err}")
+    except (ValueError, TypeError) as err:
+        message = str(err)
+        kind = "refused" if _names(message, param) else "obscure"
+        return Outcome(entry.target, param, change, kind, f"{type(err).__name__}: {message[:300]}")
+    except Exception as err:  # noqa: BLE001 — sorting every other exception is the point
+        return Outcome(entry.target, param, change, "obscure", f"{type(err).__name__}: {str(err)[:300]}")
+    finally:
+        plt.close("all")
+    where = _bad_numbers(result)
+    if where:
+        return Outcome(entry.target, param, change, "non-finite", where)
+    if accepted or change == "huge":
+        # 1e300 may be answered by a formulation that stays finite (issue 15, item 5).
+        return Outcome(entry.target, param, change, "accepted", "a finite result")
+    return Outcome(entry.target, param, change, "nonsense", f"returned {type(result).__name__}, not refused")
+
+
+def valid_result(entry: Entry):
+    """Run the valid call once (compiling what needs compiling) and return its result."""
+    c = entry.make()
+    return _invoke(_callable_of(entry, c), c, VALID_LIMIT)
+
+
+def run(entry: Entry) -> list[Outcome]:
+    """Every changed call of one entry, sorted."""
+    c0 = entry.make()
+    fn = _callable_of(entry, c0)
+    signature = inspect.signature(fn)
+    bound = signature.bind(*c0.args, **c0.kwargs)
+    values = dict(bound.arguments)
+    params = signature.parameters
+    for name, p in params.items():  # the defaults are valid values too
+        if name not in values and p.default is not inspect.Parameter.empty and p.kind != p.VAR_KEYWORD:
+            values[name] = p.default
+    outcomes = []
+    for param, value in values.items():
+        kind = params[param].kind if param in params else None
+        if param in FREE or param in entry.skip or kind in (inspect.Parameter.VAR_POSITIONAL,):
+            continue
+        if kind == inspect.Parameter.VAR_KEYWORD:
+            continue
+        for change, bad in mutations(value).items():
+
+            def changed(param=param, bad=bad):
+                c = entry.make()
+                f = _callable_of(entry, c)
+                b = inspect.signature(f).bind(*c.args, **c.kwargs)
+                b.arguments[param] = bad
+                return _invoke(f, Call(b.args, b.kwargs), entry.limit)
+
+            outcomes.append(_sort(entry, param, change, changed))
+
+    def unknown_keyword():
+        c = entry.make()
+        f = _callable_of(entry, c)
+        return _invoke(f, Call(c.args, {**c.kwargs, UNKNOWN_KEYWORD: 1.0}), entry.limit)
+
+    outcomes.append(_sort(entry, UNKNOWN_KEYWORD, "unknown", unknown_keyword))
+    return outcomes
