@@ -16,6 +16,8 @@ from __future__ import annotations
 import matplotlib
 import numpy as np
 
+from raildyn import _checks
+
 __all__ = ["COLORS", "STYLE", "axes_or_new", "frequency_curves", "spectrum", "time_history"]
 
 STYLE = {
@@ -42,14 +44,17 @@ def axes_or_new(ax):
     Parameters
     ----------
     ax : matplotlib.axes.Axes or None
-        Axes to draw on; None makes a new figure with the house style.
+        Axes to draw on; None makes a new figure with the house style. Anything else
+        is refused with a TypeError naming ``ax``.
 
     Returns
     -------
     matplotlib.axes.Axes
     """
     if ax is not None:
-        return ax
+        from matplotlib.axes import Axes
+
+        return _checks.instance("ax", ax, Axes, "matplotlib.axes.Axes or None")
     import matplotlib.pyplot as plt
 
     with matplotlib.rc_context(STYLE):
