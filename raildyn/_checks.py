@@ -349,3 +349,20 @@ def linear_model(name: str, value):
             f"Wheelset or raildyn.vehicles.Car), got {value!r:.80} of type {type(value).__name__}"
         )
     return value
+
+
+def increasing(name: str, value, *, low=None, low_open: bool = False) -> np.ndarray:
+    """A non-empty 1-D array of finite, strictly increasing numbers, each >= ``low`` (> with ``low_open``).
+
+    For an abscissa that is not a time (a frequency grid, a frequency ratio): :func:`time_grid`
+    is the check for times.
+    """
+    arr = array(name, value, ndim=1, low=low, low_open=low_open, allow_empty=False)
+    steps = np.diff(arr)
+    if np.any(steps <= 0):
+        i = int(np.argmax(steps <= 0))
+        raise ValueError(
+            f"{name} must be strictly increasing; {name}[{i + 1}] = {arr[i + 1]!r} "
+            f"does not exceed {name}[{i}] = {arr[i]!r}"
+        )
+    return arr
