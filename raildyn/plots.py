@@ -70,15 +70,15 @@ def time_history(
     Parameters
     ----------
     t : ndarray, shape (n,)
-        Times, s.
+        Times, s, finite and strictly increasing.
     x : ndarray, shape (n,)
-        Displacements (any unit).
+        Displacements (any unit), finite.
     ax : matplotlib.axes.Axes, optional
         Where to draw; new axes if None.
     label : str, optional
         Legend label of the history.
     envelope : ndarray, shape (n,), optional
-        The envelope, drawn dashed at ±envelope; hidden (NaN) if None.
+        The envelope, finite and >= 0, drawn dashed at ±envelope; hidden (NaN) if None.
     color : color
         Colour of the history.
 
@@ -87,6 +87,10 @@ def time_history(
     dict
         The artists ``line``, ``upper``, ``lower``.
     """
+    t = _checks.time_grid("t", t)
+    x = _checks.array("x", x, shape=t.shape)
+    if envelope is not None:
+        envelope = _checks.array("envelope", envelope, shape=t.shape, low=0.0)
     ax = axes_or_new(ax)
     with matplotlib.rc_context(STYLE):
         (line,) = ax.plot(t, x, color=color, label=label)
@@ -105,9 +109,9 @@ def frequency_curves(r: np.ndarray, curves: dict[str, np.ndarray], *, ax=None, l
     Parameters
     ----------
     r : ndarray, shape (n,)
-        Frequency ratios.
+        Frequency ratios, >= 0 and strictly increasing.
     curves : dict of str to ndarray, shape (n,)
-        The curves by name (their legend labels).
+        The curves by name (their legend labels), finite.
     ax : matplotlib.axes.Axes, optional
         Where to draw; new axes if None.
     logy : bool
@@ -118,10 +122,14 @@ def frequency_curves(r: np.ndarray, curves: dict[str, np.ndarray], *, ax=None, l
     dict
         The lines, by the names of ``curves``.
     """
+    r = _checks.increasing("r", r, low=0.0)
+    _checks.instance("curves", curves, dict, "dict of name to array")
+    values = {name: _checks.array(f"curves[{name!r}]", y, shape=r.shape) for name, y in curves.items()}
+    logy = _checks.flag("logy", logy)
     ax = axes_or_new(ax)
     lines = {}
     with matplotlib.rc_context(STYLE):
-        for i, (name, y) in enumerate(curves.items()):
+        for i, (name, y) in enumerate(values.items()):
             (lines[name],) = ax.plot(r, y, color=COLORS[i % len(COLORS)], label=name)
         if logy:
             ax.set_yscale("log")
@@ -137,9 +145,9 @@ def spectrum(
     Parameters
     ----------
     omega : ndarray, shape (n,)
-        Circular frequencies, rad/s, > 0.
+        Circular frequencies, rad/s, > 0 and strictly increasing.
     psd : ndarray, shape (n,)
-        One-sided PSD per rad/s.
+        One-sided PSD per rad/s, finite and >= 0 (zeros fall off the log axis).
     ax : matplotlib.axes.Axes, optional
         Where to draw; new axes if None.
     label : str, optional
@@ -152,6 +160,8 @@ def spectrum(
     dict
         ``{"line": line}``.
     """
+    omega = _checks.increasing("omega", omega, low=0.0, low_open=True)
+    psd = _checks.array("psd", psd, shape=omega.shape, low=0.0)
     ax = axes_or_new(ax)
     with matplotlib.rc_context(STYLE):
         (line,) = ax.loglog(omega, psd, color=color, label=label)
