@@ -17,6 +17,8 @@ before any computation starts.
 
 from __future__ import annotations
 
+from raildyn import _checks
+
 __all__ = ["SolverError"]
 
 
@@ -26,13 +28,14 @@ class SolverError(ArithmeticError):
     Parameters
     ----------
     reason : str
-        What went wrong, in words (it is also the exception's message).
+        What went wrong, in words (it is also the exception's message); not empty.
     step : int or None
-        Index of the step at which it happened, or None.
+        Index of the step at which it happened, >= 0, or None.
     time : float or None
-        Time (s) at which it happened, or None.
+        Time (s) at which it happened, finite (any sign), or None.
     partial : object or None
-        The part of the result computed before the failure, where that is useful.
+        The part of the result computed before the failure, where that is useful (any
+        object: a diverged history may hold NaN).
 
     Examples
     --------
@@ -44,6 +47,14 @@ class SolverError(ArithmeticError):
     """
 
     def __init__(self, reason: str, *, step: int | None = None, time: float | None = None, partial=None):
+        if not isinstance(reason, str):
+            raise TypeError(f"reason must be a string, got {reason!r:.80} of type {type(reason).__name__}")
+        if not reason:
+            raise ValueError("reason must say what went wrong, got an empty string")
+        if step is not None:
+            step = _checks.integer("step", step, low=0)
+        if time is not None:
+            time = _checks.scalar("time", time)
         where = []
         if step is not None:
             where.append(f"step {step}")
