@@ -1,0 +1,391 @@
+"""Fuzz registry: chapters 5 and 7, the wheelset, the linear model protocol, lateral stability and hunting.
+
+The valid calls are the cheapest meaningful ones: the soft suspended wheelset of chapter 5
+(critical speed 54.6 m/s) at 60 m/s, where it hunts; nonlinear runs of a few tenths of a
+second on coarse steps; two speeds per sweep; a 2 x 2 critical speed map. The plots of
+the results draw on new pyplot figures (closed after each call) or move artists drawn once.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+from fuzzing import call, fuzz, on
+from matplotlib.figure import Figure
+
+from raildyn import stability as st
+from raildyn import wheelset as wh
+from raildyn.linear_model import Assembler, LinearSystem
+from raildyn.vehicles import Bogie, VerticalCar
+
+SOFT = wh.Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # linear critical speed 54.6 m/s
+NW = wh.NonlinearWheelset(SOFT, speed=60.0)
+STATE = np.array([1e-3, 0.0, 0.0, 0.0])
+SPEEDS = [20.0, 60.0]
+RUN = {"duration": 0.2, "max_step": 5e-3}  # a few tenths of a second on coarse steps: cheap
+
+# A 2-DOF system with one track input, every field given.
+M2 = np.diag([2.0, 1.0])
+C2 = np.array([[3.0, -1.0], [-1.0, 1.0]])
+K2 = np.array([[300.0, -100.0], [-100.0, 100.0]])
+G2 = np.array([[0.0], [100.0]])
+
+
+def system2_call():
+    return call(
+        M2, C2, 0.1 * C2, K2, GK=G2, GC=0.01 * G2, labels=("body z", "wheel z"),
+        input_positions=[0.0], input_kinds=("vertical",), input_rails=[1.0], gravity_load=[-19.6, -9.8],
+        wheelsets=(),
+    )  # fmt: skip
+
+
+def system2():
+    c = system2_call()
+    return LinearSystem(*c.args, **c.kwargs)
+
+
+def assembler():
+    return Assembler(["body z", "wheel z"], n_inputs=1)
+
+
+def wheelset_assembler():
+    return Assembler(["wheelset y", "wheelset ψ"], n_inputs=2)
+
+
+@functools.cache
+def sweep():
+    return st.mode_sweep(SOFT, SPEEDS)
+
+
+@functools.cache
+def critical():
+    return st.critical_speed(SOFT, (20.0, 80.0), tol=0.5, scan=8)
+
+
+@functools.cache
+def sweep_artists():
+    return sweep().plot(Figure().subplots(1, 2), critical=critical())
+
+
+def factory(k_y, k_psi):
+    """A wheelset of the given primary lateral and yaw stiffness (N/m, N·m/rad)."""
+    return wh.Wheelset(lateral_stiffness=k_y, yaw_stiffness=k_psi)
+
+
+@functools.cache
+def speed_map():
+    return st.critical_speed_map(factory, [1.0e6, 2.0e6], [2.0e6, 3.0e6], (20.0, 100.0), tol=0.5, scan=8,
+                                 progress=False)  # fmt: skip
+
+
+@functools.cache
+def cycle():
+    return st.limit_cycle_amplitude(NW, 60.0, **RUN)
+
+
+@functools.cache
+def run():
+    return st.simulate(NW, 60.0, STATE, **RUN)
+
+
+@functools.cache
+def diagram():
+    return st.bifurcation_diagram(NW, [70.0, 40.0], duration=0.3, max_step=1e-2, refine=1, progress=False)
+
+
+@functools.cache
+def orbit_guess():
+    """A point of the limit cycle at 60 m/s and its period (s): shooting converges in one step from it."""
+    orbit = st.periodic_orbit(NW, 60.0, [0.0103, -1.1e-4, 0.0, -0.229], 0.1742, rtol=1e-6, tol=1e-4)
+    return orbit.state, orbit.period
+
+
+def orbit():
+    state, period = orbit_guess()
+    return st.PeriodicOrbit(60.0, period, state, 0.0103, np.array([1.0, 0.1, 0.0, 0.0]), 1e-7)
+
+
+ENTRIES = [
+    # ---------------------------------------------------------------- raildyn.linear_model
+    fuzz(
+        "raildyn.linear_model.Assembler",
+        lambda: call(["body z", "wheel z"], n_inputs=1),
+        accepts={"n_inputs": "zero"},
+    ),
+    fuzz(
+        "raildyn.linear_model.Assembler.block",
+        lambda: on(assembler(), ["body z", "wheel z"], C1=np.eye(2), K=np.eye(2)),
+        # a block of creep damping or stiffness holds entries of either sign (creep, gravity)
+        accepts={"C1": "zero negative", "K": "zero negative"},
+    ),
+    fuzz(
+        "raildyn.linear_model.Assembler.element",
+        lambda: on(assembler(), {"body z": 1.0, "wheel z": -1.0}, 1e5, 2e3, inputs={0: 1.0}),
+        accepts={"stiffness": "zero", "damping": "zero"},
+    ),
+    fuzz("raildyn.linear_model.Assembler.index", lambda: on(assembler(), "wheel z")),
+    fuzz("raildyn.linear_model.Assembler.mass", lambda: on(assembler(), "body z", 1000.0)),
+    fuzz("raildyn.linear_model.Assembler.system", lambda: on(assembler(), input_kinds=("vertical",))),
+    fuzz(
+        "raildyn.linear_model.Assembler.track_force",
+        lambda: on(assembler(), "wheel z", 0, 1e7, 1e3),
+        # a force per unit input: either sign (a cross-level pushes the wheelset to the low rail)
+        accepts={"j": "zero", "stiffness": "zero negative", "damping": "zero negative"},
+    ),
+    fuzz("raildyn.linear_model.Assembler.vector", lambda: on(assembler(), {"body z": 1.0})),
+    fuzz(
+        "raildyn.linear_model.LinearSystem",
+        system2_call,
+        # C0, C1 and K hold creep and gravity terms of either sign; G_K, G_C forces of either sign; the
+        # weight is negative downwards; a rail of -1 is the right one, 0 both
+        accepts={
+            "C0": "zero negative",
+            "C1": "zero negative",
+            "K": "zero negative",
+            "GK": "zero negative",
+            "GC": "zero negative",
+            "input_positions": "zero",
+            "input_rails": "zero negative",
+            "gravity_load": "zero negative",
+        },
+    ),  # fmt: skip
+    fuzz(
+        "raildyn.linear_model.LinearSystem.axle_frf",
+        lambda: on(system2(), np.array([1.0, 5.0, 20.0]), 30.0, output="body z"),
+        accepts={"omega": "zero"},
+    ),
+    fuzz("raildyn.linear_model.LinearSystem.linear_system", lambda: on(system2())),
+    fuzz("raildyn.linear_model.LinearSystem.matrices", lambda: on(system2(), 30.0)),
+    fuzz("raildyn.linear_model.LinearSystem.output_vector", lambda: on(system2(), "body z")),
+    fuzz("raildyn.linear_model.LinearSystem.replace", lambda: on(system2(), K=2.0 * K2)),
+    fuzz("raildyn.linear_model.LinearSystem.state_matrices", lambda: on(system2(), [10.0, 30.0])),
+    fuzz("raildyn.linear_model.LinearSystem.state_space", lambda: on(system2(), 30.0, outputs=["body z"])),
+    fuzz("raildyn.linear_model.LinearSystem.static_deflection", lambda: on(system2())),
+    fuzz(
+        "raildyn.linear_model.SystemMatrices",
+        lambda: call(M2, C2, K2, G2, 0.01 * G2, ("body z", "wheel z"), 30.0),
+        # C and K hold creep and gravity terms of either sign, G_K and G_C forces of either sign
+        accepts={"C": "zero negative", "K": "zero negative", "GK": "zero negative", "GC": "zero negative"},
+    ),
+    fuzz("raildyn.linear_model.SystemMatrices.state_matrix", lambda: on(system2().matrices(30.0))),
+    fuzz("raildyn.linear_model.as_linear_system", lambda: call(SOFT)),
+    # The protocol: its methods are called on a model that follows it (a Bogie); the Protocol
+    # class itself cannot be instantiated (see the entry below).
+    fuzz("raildyn.linear_model.LinearModel", lambda: call()),
+    fuzz("raildyn.linear_model.LinearModel.linear_system", lambda: on(Bogie())),
+    fuzz("raildyn.linear_model.LinearModel.matrices", lambda: on(Bogie(), 30.0)),
+    fuzz("raildyn.linear_model.LinearModel.replace", lambda: on(Bogie(), frame_mass=3000.0)),
+    fuzz(
+        "raildyn.linear_model.LinearModel.state_space",
+        lambda: on(Bogie(), 30.0, outputs=["wheelset 1 y"], derivative=0),
+        accepts={"derivative": "zero"},
+    ),
+    # The base class's methods, on a model that inherits them (VerticalCar defines only linear_system).
+    fuzz("raildyn.linear_model.LinearModelBase", lambda: call()),
+    fuzz("raildyn.linear_model.LinearModelBase.linear_system", lambda: on(VerticalCar())),
+    fuzz("raildyn.linear_model.LinearModelBase.matrices", lambda: on(VerticalCar(), 30.0)),
+    fuzz("raildyn.linear_model.LinearModelBase.replace", lambda: on(VerticalCar(), body_mass=30000.0)),
+    fuzz(
+        "raildyn.linear_model.LinearModelBase.state_space",
+        lambda: on(VerticalCar(), 30.0, outputs=["body z"], derivative=1),
+    ),
+    # ---------------------------------------------------------------- raildyn.wheelset
+    fuzz("raildyn.wheelset.kinematic_wavelength", lambda: call(0.46, 0.75, 0.15)),
+    fuzz("raildyn.wheelset.rigid_bogie_wavelength", lambda: call(0.46, 0.75, 0.15, 1.28)),
+    fuzz("raildyn.wheelset.kinematic_oscillation", lambda: call(0.46, 0.75, 0.15, 1.28)),
+    fuzz("raildyn.wheelset.KinematicOscillation", lambda: call(9.5, 18.9)),
+    fuzz(
+        "raildyn.wheelset.KinematicOscillation.plot",
+        lambda: on(wh.KinematicOscillation(9.5, 18.9), distance=np.linspace(0.0, 60.0, 50), amplitude=5.0),
+        accepts={"distance": "zero negative"},  # any distances along the track, m
+    ),
+    fuzz(
+        "raildyn.wheelset.Wheelset",
+        lambda: call(),
+        # a coned wheelset may have no cone, no creep (a test case), no primary suspension
+        accepts={
+            "conicity": "zero",
+            "f11": "zero",
+            "f22": "zero",
+            "f23": "zero",
+            "f33": "zero",
+            "contact_angle": "zero",
+            "contact_angle_parameter": "zero",
+            "lateral_stiffness": "zero",
+            "yaw_stiffness": "zero",
+            "lateral_damping": "zero",
+            "yaw_damping": "zero",
+        },
+    ),  # fmt: skip
+    fuzz("raildyn.wheelset.Wheelset.free", lambda: on(SOFT)),
+    fuzz("raildyn.wheelset.Wheelset.linear_system", lambda: on(SOFT)),
+    fuzz("raildyn.wheelset.Wheelset.replace", lambda: on(SOFT, conicity=0.2)),
+    fuzz(
+        "raildyn.wheelset.CreepTerms",
+        lambda: call(np.eye(2), np.array([[0.0, -1.0], [1.0, 0.5]]), np.diag([1.0, -1.0])),
+        accepts={"C1": "zero negative", "K_creep": "zero negative", "K_gravity": "zero negative"},
+    ),
+    fuzz("raildyn.wheelset.creep_terms", lambda: call(SOFT)),
+    fuzz(
+        "raildyn.wheelset.add_wheelset",
+        lambda: call(wheelset_assembler(), "wheelset y", "wheelset ψ", SOFT, alignment=0, cross_level=1),
+        accepts={"alignment": "zero none", "cross_level": "none"},  # None: the input is not modelled
+    ),
+    fuzz("raildyn.wheelset.wickens_critical_speed", lambda: call(SOFT)),
+    fuzz("raildyn.wheelset.WheelRailContact", lambda: call(), accepts={"flange_stiffness": "zero"}),
+    fuzz(
+        "raildyn.wheelset.contact_forces",
+        lambda: call(SOFT, wh.WheelRailContact(), 1e-3, 1e-3, 0.01, 0.01, 30.0),
+        # displacements and rates of either sign; arrays broadcast
+        accepts={p: "zero negative list" for p in ("y", "psi", "ydot", "psidot")},
+    ),
+    fuzz("raildyn.wheelset.NonlinearWheelset", lambda: call(SOFT, wh.WheelRailContact(), 60.0)),
+    fuzz("raildyn.wheelset.NonlinearWheelset.at_speed", lambda: on(NW, 50.0)),
+    fuzz(
+        "raildyn.wheelset.NonlinearWheelset.rhs",
+        lambda: on(NW, 0.0, STATE),
+        accepts={"t": "zero negative", "state": "zero negative"},  # autonomous; any state near the centre
+    ),
+    fuzz(
+        "raildyn.wheelset.NonlinearLateral",
+        lambda: call(SOFT.linear_system(), wh.WheelRailContact(), 60.0),
+    ),
+    fuzz(
+        "raildyn.wheelset.NonlinearLateral.at_speed",
+        lambda: on(wh.NonlinearLateral(SOFT.linear_system()), 50.0),
+    ),
+    fuzz(
+        "raildyn.wheelset.NonlinearLateral.rhs",
+        lambda: on(wh.NonlinearLateral(SOFT.linear_system()), 0.0, STATE),
+        accepts={"t": "zero negative", "state": "zero negative"},
+    ),
+    # ---------------------------------------------------------------- raildyn.stability (linear)
+    fuzz("raildyn.stability.eigenvalues_against_speed", lambda: call(SOFT, SPEEDS)),
+    fuzz("raildyn.stability.largest_real_part", lambda: call(SOFT, SPEEDS)),
+    fuzz(
+        "raildyn.stability.mac",
+        lambda: call(
+            np.array([[1.0, 0.0], [0.5, 1.0], [0.0, 2.0]]), np.array([[2.0, 1.0], [1.0, 0.0], [0.0, 1.0]])
+        ),
+        accepts={"a": "negative", "b": "negative"},  # a vector and its negative are the same mode
+    ),
+    fuzz(
+        "raildyn.stability.track_modes",
+        # real eigenvalues and vectors (overdamped modes) keep the test's changes real
+        lambda: call(np.array([[-1.0, -2.0], [-1.1, -2.1]]), np.array([np.eye(2), np.eye(2)[::-1]])),
+        accepts={"eigenvalues": "zero negative", "vectors": "negative"},
+    ),
+    fuzz(
+        "raildyn.stability.TrackedModes",
+        lambda: call(np.array([[-1.0, -2.0], [-1.1, -2.1]]), np.array([np.eye(2), np.eye(2)])),
+        accepts={"eigenvalues": "zero negative", "vectors": "zero negative"},
+    ),
+    fuzz("raildyn.stability.mode_sweep", lambda: call(SOFT, SPEEDS)),
+    fuzz(
+        "raildyn.stability.ModeSweep",
+        lambda: call(
+            np.array(SPEEDS),
+            sweep().eigenvalues.real,
+            sweep().frequencies_hz,
+            sweep().damping_ratios,
+            sweep().shapes.real,
+            sweep().labels,
+            sweep().coordinates,
+        ),  # fmt: skip
+        # real parts only, so that the test's changes stay real; damping ratios of either sign
+        accepts={
+            "eigenvalues": "zero negative",
+            "frequencies_hz": "zero",
+            "damping_ratios": "zero negative",
+            "shapes": "zero negative",
+        },  # fmt: skip
+    ),
+    fuzz(
+        "raildyn.stability.ModeSweep.plot",
+        lambda: on(sweep(), critical=critical(), artists=sweep_artists()),
+        accepts={
+            "critical": "none",
+            "real_limits": "negative none",
+            "imag_limits": "none",
+            "damping_limits": "none",
+        },  # fmt: skip
+    ),
+    fuzz("raildyn.stability.critical_speed", lambda: call(SOFT, (20.0, 80.0), tol=0.5, scan=8)),
+    fuzz(
+        "raildyn.stability.CriticalSpeed",
+        lambda: call(
+            54.6, 5.3, complex(0.0, 33.4), "crossing", np.array([1.0, 0.6]), ("wheelset y", "wheelset ψ")
+        ),
+        accepts={"eigenvalue": "zero negative", "mode_shape": "negative"},
+    ),
+    fuzz("raildyn.stability.CriticalSpeed.amplitude", lambda: on(critical(), "wheelset ψ")),
+    fuzz(
+        "raildyn.stability.critical_speed_map",
+        lambda: call(
+            factory,
+            [1.0e6, 2.0e6],
+            [2.0e6],
+            (20.0, 100.0),
+            x_name="k_y",
+            y_name="k_ψ",
+            tol=0.5,
+            scan=8,
+            progress=False,
+        ),
+        accepts={"x": "zero", "x_name": "unknown", "y_name": "unknown"},  # names label the plot
+    ),
+    fuzz(
+        "raildyn.stability.CriticalSpeedMap",
+        lambda: call(np.array([1.0, 2.0]), np.array([3.0]), np.array([[50.0, 60.0]]), "x", "y"),
+        accepts={"x": "zero negative", "y": "zero negative", "x_name": "unknown", "y_name": "unknown"},
+    ),
+    fuzz("raildyn.stability.CriticalSpeedMap.plot", lambda: on(speed_map(), levels=[0.0, 200.0, 400.0])),
+    fuzz("raildyn.stability.CriticalSpeedMap.plot_curves", lambda: on(speed_map(), Figure().subplots())),
+    # ---------------------------------------------------------------- raildyn.stability (nonlinear)
+    fuzz("raildyn.stability.simulate", lambda: call(NW, 60.0, STATE, 0.2, max_step=5e-3, rtol=1e-6)),
+    fuzz(
+        "raildyn.stability.NonlinearRun",
+        lambda: call(60.0, run().t, run().states, 0),
+        accepts={"states": "zero negative", "lateral_index": "zero"},
+    ),
+    fuzz("raildyn.stability.NonlinearRun.plot", lambda: on(run(), flange_clearance=9.1e-3)),
+    fuzz(
+        "raildyn.stability.limit_cycle_amplitude",
+        lambda: call(NW, 60.0, initial_displacement=12e-3, duration=0.2, max_step=5e-3, rtol=1e-6),
+        accepts={"initial_displacement": "negative"},  # a start to the right
+    ),
+    fuzz(
+        "raildyn.stability.LimitCycle",
+        lambda: call(60.0, 0.01, 5.7, 1.0, cycle().state),
+        accepts={"amplitude": "zero", "frequency_hz": "zero", "growth": "zero", "state": "zero negative"},
+    ),
+    fuzz("raildyn.stability.LimitCycle.hunting", lambda: on(cycle(), threshold=2e-4)),
+    fuzz(
+        "raildyn.stability.bifurcation_diagram",
+        lambda: call(NW, [70.0, 40.0], duration=0.3, max_step=1e-2, refine=1, progress=False),
+        accepts={"initial_displacement": "negative", "refine": "zero"},
+    ),
+    fuzz(
+        "raildyn.stability.BifurcationDiagram",
+        lambda: call(
+            np.array([70.0, 40.0]),
+            np.array([0.01, 0.002]),
+            np.array([5.5, 0.0]),
+            np.array([True, False]),
+            55.0,
+            2e-4,
+        ),  # fmt: skip
+        accepts={"amplitudes": "zero", "frequencies_hz": "zero"},
+    ),
+    fuzz("raildyn.stability.BifurcationDiagram.plot", lambda: on(diagram(), linear_critical_speed=54.6)),
+    fuzz(
+        "raildyn.stability.periodic_orbit",
+        lambda: call(NW, 60.0, orbit_guess()[0], orbit_guess()[1], tol=1e-4, max_iter=3, rtol=1e-6),
+    ),
+    fuzz(
+        "raildyn.stability.PeriodicOrbit",
+        lambda: call(60.0, orbit().period, orbit().state, 0.0103, orbit().multipliers, 1e-7),
+        accepts={"state": "zero negative", "multipliers": "zero negative", "residual": "zero"},
+    ),
+]
