@@ -42,6 +42,7 @@ from raildyn.errors import SolverError
 from raildyn.integrators import rk4, stable_step
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.suspension import coulomb_friction
+from raildyn.vehicles.response import _earlier_artists
 from raildyn.vehicles.vertical import BodyFrequencies
 
 __all__ = [
@@ -58,10 +59,18 @@ __all__ = [
 
 LABELS = ("body z", "body θ", "body φ")
 
+#: The longest run of :func:`rock_and_roll`: steps × speeds (each costs about 1.1 kB of tabulated track).
+_MAX_STEP_SPEEDS = 5e5
+
 
 @dataclass(frozen=True)
 class FreightCar(LinearModelBase):
     """A loaded hopper car on two three-piece trucks.
+
+    Every field is finite; masses, inertias, lengths and the nest stiffness are > 0,
+    ``cg_height``, ``wedge_friction`` and ``equivalent_damping`` ≥ 0. The truck's
+    semi-wheelbase is less than the semi truck spacing, and the roll stiffness
+    4 k b² − m g h is > 0 (else the body topples).
 
     Attributes
     ----------
@@ -108,23 +117,29 @@ class FreightCar(LinearModelBase):
                 _checks.nonnegative(name, value)
             else:
                 _checks.positive(name, value)
-        if self.roll_stiffness <= 0:
+        if self.semi_truck_wheelbase >= self.semi_truck_spacing:
             raise ValueError(
-                f"cg_height {self.cg_height!r} m leaves no roll stiffness: 4 k b² = "
-                f"{4 * self.nest_stiffness * self.semi_spring_spacing**2:.4g} N·m/rad <= m g h"
+                f"semi_truck_wheelbase must be less than semi_truck_spacing ({self.semi_truck_spacing!r} m) "
+                f"so that the trucks' axles do not cross, got {self.semi_truck_wheelbase!r}"
+            )
+        if not 0 < self.roll_stiffness < np.inf:
+            raise ValueError(
+                f"nest_stiffness {self.nest_stiffness!r} N/m at semi_spring_spacing "
+                f"{self.semi_spring_spacing!r} m against body_mass {self.body_mass!r} kg at cg_height "
+                f"{self.cg_height!r} m give a roll stiffness 4 k b² − m g h = {self.roll_stiffness:.4g} "
+                "N·m/rad; it must be finite and > 0 (else the body topples)"
             )
 
     @property
     def roll_stiffness(self) -> float:
         """4 k b² − m g h, N·m/rad."""
-        return (
-            4 * self.nest_stiffness * self.semi_spring_spacing**2 - self.body_mass * GRAVITY * self.cg_height
-        )
+        b = self.semi_spring_spacing
+        return 4 * self.nest_stiffness * b * b - self.body_mass * GRAVITY * self.cg_height
 
     @property
     def roll_inertia_spring_plane(self) -> float:
         """Roll inertia about the spring plane, I + m h², kg·m²."""
-        return self.body_roll_inertia + self.body_mass * self.cg_height**2
+        return self.body_roll_inertia + self.body_mass * self.cg_height * self.cg_height
 
     def natural_frequencies(self) -> BodyFrequencies:
         """Undamped bounce, pitch and roll frequencies on the springs alone (wedges sliding freely).
@@ -225,16 +240,16 @@ class RockAndRoll:
 
     Attributes
     ----------
-    speeds : ndarray
-        m/s.
-    roll_amplitude : ndarray
-        Half the peak-to-peak roll over the last cycles, rad, one per speed.
+    speeds : ndarray, (n_speeds,)
+        m/s, > 0, not empty.
+    roll_amplitude : ndarray, (n_speeds,)
+        Half the peak-to-peak roll over the last cycles, rad, ≥ 0, one per speed.
     resonance_speed : float
-        V = f_roll L of the car with free-sliding wedges (springs only), m/s.
-    t : ndarray
-        s.
+        V = f_roll L of the car with free-sliding wedges (springs only), m/s, > 0.
+    t : ndarray, (n_t,)
+        s, strictly increasing.
     roll : ndarray, (n_speeds, n_t)
-        Roll histories, rad.
+        Roll histories, rad, of either sign.
     """
 
     speeds: np.ndarray
@@ -242,6 +257,16 @@ class RockAndRoll:
     resonance_speed: float
     t: np.ndarray
     roll: np.ndarray
+
+    def __post_init__(self):
+        V = _checks.array("speeds", self.speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
+        t = _checks.time_grid("t", self.t)
+        object.__setattr__(self, "speeds", V)
+        object.__setattr__(self, "roll_amplitude", _checks.array("roll_amplitude", self.roll_amplitude,
+                                                                 shape=V.shape, low=0.0))  # fmt: skip
+        object.__setattr__(self, "resonance_speed", _checks.positive("resonance_speed", self.resonance_speed))
+        object.__setattr__(self, "t", t)
+        object.__setattr__(self, "roll", _checks.array("roll", self.roll, shape=(V.size, t.size)))
 
     def plot(
         self, ax=None, *, artists: dict | None = None, label: str | None = None, color=None, resonance=True
@@ -259,17 +284,19 @@ class RockAndRoll:
         color : optional
             Curve colour; the house palette's first by default.
         resonance : bool
-            Mark the resonance speed V = f_φ L with a dotted line.
+            Mark the resonance speed V = f_φ L with a dotted line (ignored when ``artists`` is given:
+            the line is moved if it was drawn).
 
         Returns
         -------
         dict
             The artists: ``curve`` and, with ``resonance``, ``resonance``.
         """
+        resonance = _checks.flag("resonance", resonance)
         kmh = 3.6 * self.speeds
         amplitude = np.degrees(self.roll_amplitude)
         if artists is not None:
-            artists["curve"].set_data(kmh, amplitude)
+            _earlier_artists(artists, ("curve",))["curve"].set_data(kmh, amplitude)
             if "resonance" in artists:
                 artists["resonance"].set_xdata([3.6 * self.resonance_speed] * 2)
             return artists
@@ -311,22 +338,27 @@ def rock_and_roll(
     refused before the run with the largest stable step in the message; a run
     whose roll still becomes non-finite raises :class:`raildyn.errors.SolverError`.
 
+    The run is bounded: its steps times its speeds may not exceed 5 × 10⁵ (the track is
+    tabulated for every speed at every half step, about 1.1 kB per step and speed, so the
+    bound keeps a run within about 0.6 GB and a minute or so); a longer run is refused
+    before it starts.
+
     Parameters
     ----------
     car : FreightCar
     speeds : array_like
-        m/s, > 0.
+        m/s, > 0, not empty.
     depth, half_width : float
-        Dip of each joint (m) and its half-length along the rail (m).
+        Dip of each joint (m, ≥ 0) and its half-length along the rail (m, in (0, L/2]).
     rail_length : float
-        m.
+        L, m, > 0.
     cycles : int
         Rail lengths run at the lowest speed (≥ 4).
     dt : float, optional
-        Time step, s. Default: 8 ms, or 0.9 of the stability limit below
-        (:func:`raildyn.integrators.stable_step`) where that is smaller (stiff wedges).
+        Time step, s (> 0, at most the stability limit below). Default: 8 ms, or 0.9 of the
+        stability limit (:func:`raildyn.integrators.stable_step`) where that is smaller (stiff wedges).
     velocity_scale : float
-        v_ε of the smooth friction law, m/s.
+        v_ε of the smooth friction law, m/s, > 0.
     progress : bool
         Show a progress bar.
 
@@ -334,10 +366,12 @@ def rock_and_roll(
     -------
     RockAndRoll
     """
-    V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True)
+    _checks.instance("car", car, FreightCar)
+    V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
     cycles = _checks.integer("cycles", cycles, low=4)
     eps = _checks.positive("velocity_scale", velocity_scale)
     L = _checks.positive("rail_length", rail_length)
+    progress = _checks.flag("progress", progress)
     sticking = car.replace(equivalent_damping=car.wedge_friction / eps).matrices(1.0)
     limit = stable_step("rk4", sticking.M, sticking.C, sticking.K)
     dt = min(0.008, 0.9 * limit) if dt is None else _checks.positive("dt", dt)
@@ -345,6 +379,13 @@ def rock_and_roll(
         raise ValueError(
             f"dt must be at most {limit:.4g} s for RK4 to stay stable on this car with sticking wedges "
             f"(slope F/v_ε = {car.wedge_friction / eps:.4g} N·s/m per nest), got {dt!r}"
+        )
+    steps = cycles * L / V.min() / dt
+    if steps * V.size > _MAX_STEP_SPEEDS:
+        raise ValueError(
+            f"the run of cycles = {cycles} rail lengths (rail_length = {L!r} m) at the lowest of the "
+            f"speeds, {V.min()!r} m/s, in steps of dt = {dt:.4g} s, for {V.size} speeds, would take "
+            f"{steps:.3g} steps × speeds; at most {_MAX_STEP_SPEEDS:.0e} (about 0.6 GB of tabulated track)"
         )
     lin = car.linear_system()
     n, m = lin.size, V.size
@@ -406,24 +447,37 @@ def wedge_energy_per_cycle(
     frequency : float
         Hz (> 0).
     velocity_scale : float, optional
-        v_ε of the smooth law F tanh(v/v_ε), m/s; None for the ideal law.
+        v_ε of the smooth law F tanh(v/v_ε), m/s (> 0); None for the ideal law.
     n : int
-        Midpoint samples over the cycle (≥ 16).
+        Midpoint samples over the cycle, in [16, 10⁶]: the midpoint rule on this periodic
+        integrand has converged to rounding long before the upper bound, which keeps the
+        work and memory small.
 
     Returns
     -------
     float
         J.
+
+    Raises
+    ------
+    ValueError
+        If the energy overflows a float (F X beyond about 1e307 J).
     """
     F = _checks.nonnegative("friction_force", friction_force)
     X = _checks.positive("amplitude", amplitude)
     w = 2 * np.pi * _checks.positive("frequency", frequency)
-    n = _checks.integer("n", n, low=16)
-    T = 2 * np.pi / w
-    t = (np.arange(n) + 0.5) * T / n  # midpoints: the integrand is periodic
-    v = X * w * np.cos(w * t)
-    force = coulomb_friction(v, F, velocity_scale=velocity_scale)
-    return float(np.sum(force * v) * T / n)
+    if velocity_scale is not None:
+        velocity_scale = _checks.positive("velocity_scale", velocity_scale)
+    n = _checks.integer("n", n, low=16, high=10**6)
+    phase = (np.arange(n) + 0.5) * (2 * np.pi / n)  # ωt at the midpoints: the integrand is periodic
+    force = coulomb_friction(X * w * np.cos(phase), F, velocity_scale=velocity_scale)
+    # ∮ F(v) v dt with v = Xω cos ωt and dt = dφ/ω: X ∮ F(v) cos φ dφ, no product of large numbers.
+    energy = float(X * (np.sum(force * np.cos(phase)) * (2 * np.pi / n)))
+    if not np.isfinite(energy):
+        raise ValueError(
+            f"friction_force {F!r} N times amplitude {X!r} m overflows: the energy is not a finite float"
+        )
+    return energy
 
 
 @dataclass(frozen=True)
@@ -433,11 +487,15 @@ class WedgeFriction:
     Attributes
     ----------
     bolster_down, bolster_up : float
-        N.
+        N, ≥ 0.
     """
 
     bolster_down: float
     bolster_up: float
+
+    def __post_init__(self):
+        for name in ("bolster_down", "bolster_up"):
+            object.__setattr__(self, name, _checks.nonnegative(name, getattr(self, name)))
 
     @property
     def mean(self) -> float:

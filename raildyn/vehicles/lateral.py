@@ -25,7 +25,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from raildyn import contact
+from raildyn import _checks, contact
 from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
@@ -74,15 +74,15 @@ class Bogie(_OnTheRails):
     ----------
     wheelset : Wheelset
     frame_mass : float
-        kg (Iwnicki 1998: 2615 kg).
+        kg, > 0 (Iwnicki 1998: 2615 kg).
     frame_yaw_inertia : float
-        kg·m² (Iwnicki 1998: 3067 kg·m²).
+        kg·m², > 0 (Iwnicki 1998: 3067 kg·m²).
     semi_wheelbase : float
-        b, m (Iwnicki 1998: 2.56 m wheelbase).
+        b, m, > 0 (Iwnicki 1998: 2.56 m wheelbase).
     secondary_lateral_stiffness, secondary_lateral_damping : float
-        Per bogie, N/m and N·s/m (Iwnicki 1998: 160 kN/m and 32 kN·s/m per side).
+        Per bogie, N/m and N·s/m, ≥ 0 (Iwnicki 1998: 160 kN/m and 32 kN·s/m per side).
     secondary_yaw_stiffness, secondary_yaw_damping : float
-        Per bogie, N·m/rad and N·m·s/rad (Iwnicki 1998: longitudinal secondary
+        Per bogie, N·m/rad and N·m·s/rad, ≥ 0 (Iwnicki 1998: longitudinal secondary
         stiffness 160 kN/m per side at 1.0 m from the centre line; no yaw damper).
     """
 
@@ -96,8 +96,7 @@ class Bogie(_OnTheRails):
     secondary_yaw_damping: float = 0.0
 
     def __post_init__(self):
-        if not isinstance(self.wheelset, Wheelset):
-            raise TypeError(f"wheelset must be a Wheelset, got {type(self.wheelset).__name__}")
+        _checks.instance("wheelset", self.wheelset, Wheelset)
         for name in ("frame_mass", "frame_yaw_inertia", "semi_wheelbase"):
             positive(name, getattr(self, name))
         for name in (
@@ -135,22 +134,41 @@ class Bogie(_OnTheRails):
         Parameters
         ----------
         asm : Assembler
+            Holding the bogie's labels for ``tag`` and two inputs (alignment, cross-level)
+            per wheelset.
         tag : str
             Suffix of the bogie's labels ("frame{tag} y", "wheelset{tag}1 y", ...).
         body : dict of str to float
-            The lateral displacement of the secondary seat as coefficients of the body coordinates.
+            The lateral displacement of the secondary seat as finite coefficients of the body
+            coordinates (labels of ``asm``); empty for a body that does not move.
         body_yaw : str or None
-            The body's yaw coordinate, if the body moves.
+            The body's yaw coordinate (a label of ``asm``), if the body moves.
         first_input : int
-            Index of the leading wheelset's alignment input; the trailing one's is next, and
-            their cross-level inputs follow the alignment inputs of every wheelset
-            (``asm.GK.shape[1] // 2`` further on).
+            Index of the leading wheelset's alignment input, in [0, ``asm.GK.shape[1] // 2`` − 2];
+            the trailing one's is next, and their cross-level inputs follow the alignment
+            inputs of every wheelset (``asm.GK.shape[1] // 2`` further on).
         """
+        _checks.instance("asm", asm, Assembler)
+        _checks.instance("tag", tag, str, "str")
+        own = [f"frame{tag} {q}" for q in "yψ"] + [f"wheelset{tag}{k} {q}" for k in (1, 2) for q in "yψ"]
+        missing = [label for label in own if label not in asm.labels]
+        if missing:
+            raise ValueError(
+                f"tag {tag!r} names no bogie of asm: {missing} are not among its labels {asm.labels}"
+            )
+        _checks.instance("body", body, dict, "dict of body label to coefficient")
+        for label, coefficient in body.items():
+            if label not in asm.labels:
+                raise ValueError(f"body must name coordinates of asm {asm.labels}, got the key {label!r}")
+            _checks.scalar(f"body[{label!r}]", coefficient)
+        if body_yaw is not None and body_yaw not in asm.labels:
+            raise ValueError(f"body_yaw must be None or a coordinate of asm {asm.labels}, got {body_yaw!r}")
+        half = asm.GK.shape[1] // 2
+        _checks.integer("first_input", first_input, low=0, high=half - 2)
         ws, b = self.wheelset, self.semi_wheelbase
         fy, fpsi = f"frame{tag} y", f"frame{tag} ψ"
         asm.mass(fy, self.frame_mass)
         asm.mass(fpsi, self.frame_yaw_inertia)
-        half = asm.GK.shape[1] // 2
         for k, x in ((1, b), (2, -b)):
             wy, wpsi = f"wheelset{tag}{k} y", f"wheelset{tag}{k} ψ"
             j = first_input + k - 1
@@ -189,21 +207,24 @@ class Car(_OnTheRails):
     ----------
     bogie : Bogie
     body_mass : float
-        kg (Iwnicki 1998: 32000 kg).
+        kg, > 0 (Iwnicki 1998: 32000 kg).
     body_yaw_inertia : float
-        kg·m² (Iwnicki 1998: 1.97 × 10⁶ kg·m²).
+        kg·m², > 0 (Iwnicki 1998: 1.97 × 10⁶ kg·m²).
     body_roll_inertia : float
-        kg·m² (Iwnicki 1998: 5.68 × 10⁴ kg·m²).
+        kg·m², > 0 (Iwnicki 1998: 5.68 × 10⁴ kg·m²).
     semi_bogie_spacing : float
-        Half the distance between bogie centres, m (Iwnicki 1998: 19 m between centres).
+        Half the distance between bogie centres, m, greater than the bogie's semi-wheelbase
+        (the bogies' wheelsets do not cross) (Iwnicki 1998: 19 m between centres).
     body_height : float
-        Height of the body's centre of gravity above the secondary lateral springs, m
+        Height of the body's centre of gravity above the secondary lateral springs, m, ≥ 0
         (1.8 m above rail, seat at 0.8275 m: 0.9725 m).
     roll_stiffness : float
         Per bogie, N·m/rad: the vertical secondary springs, 430 kN/m per side at
-        1.0 m (Iwnicki 1998), plus the anti-roll bar, 940 kN·m/rad.
+        1.0 m (Iwnicki 1998), plus the anti-roll bar, 940 kN·m/rad. The two bogies'
+        2 k_φ must exceed m g h, the roll moment of the body's weight h above the springs
+        per radian; else the body topples.
     roll_damping : float
-        Per bogie, N·m·s/rad: vertical secondary dampers, 20 kN·s/m per side at 1.0 m.
+        Per bogie, N·m·s/rad, ≥ 0: vertical secondary dampers, 20 kN·s/m per side at 1.0 m.
     """
 
     bogie: Bogie = field(default_factory=Bogie)
@@ -216,12 +237,24 @@ class Car(_OnTheRails):
     roll_damping: float = 2 * 20.0e3 * _B2**2
 
     def __post_init__(self):
-        if not isinstance(self.bogie, Bogie):
-            raise TypeError(f"bogie must be a Bogie, got {type(self.bogie).__name__}")
+        _checks.instance("bogie", self.bogie, Bogie)
         for name in ("body_mass", "body_yaw_inertia", "body_roll_inertia", "semi_bogie_spacing"):
             positive(name, getattr(self, name))
         for name in ("body_height", "roll_stiffness", "roll_damping"):
             nonnegative(name, getattr(self, name))
+        if self.semi_bogie_spacing <= self.bogie.semi_wheelbase:
+            raise ValueError(
+                f"semi_bogie_spacing must exceed the bogie's semi_wheelbase "
+                f"({self.bogie.semi_wheelbase!r} m) so that the bogies' wheelsets do not cross, "
+                f"got {self.semi_bogie_spacing!r}"
+            )
+        toppling = self.body_mass * GRAVITY * self.body_height
+        if 2 * self.roll_stiffness <= toppling:
+            raise ValueError(
+                f"roll_stiffness {self.roll_stiffness!r} N·m/rad per bogie is too soft for body_mass "
+                f"{self.body_mass!r} kg at body_height {self.body_height!r} m: the two bogies' "
+                f"2 k_φ must exceed m g h = {toppling:.4g} N·m/rad, else the body topples"
+            )
 
     def replace(self, **changes) -> Car:
         """A copy with car, bogie or wheelset fields changed.

@@ -32,6 +32,10 @@ LABELS = ("body z", "body θ", "truck1 z", "truck1 θ", "truck2 z", "truck2 θ")
 class Locomotive(LinearModelBase):
     """A six-axle locomotive, vertical.
 
+    Every mass, inertia, length and stiffness is finite and > 0, every damping finite and ≥ 0,
+    and the axle spacing is less than the semi truck spacing (each truck's axles on its own
+    side of the body's centre).
+
     Attributes
     ----------
     body_mass : float

@@ -24,7 +24,7 @@ the delays and the creep damping of the lateral models.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import matplotlib
 import numpy as np
@@ -32,6 +32,7 @@ import numpy as np
 from raildyn import _checks, plots
 from raildyn import random_vibration as rv
 from raildyn import track as _track
+from raildyn.errors import SolverError
 from raildyn.linear_model import INPUT_KINDS, LinearSystem, as_linear_system
 
 __all__ = [
@@ -52,8 +53,7 @@ def _rail_weights(system: LinearSystem, component: str) -> np.ndarray:
     An input of the same kind takes it whole; a rail-height input takes a vertical
     irregularity whole and a cross-level c as ±c/2 on the left/right rail.
     """
-    if component not in INPUT_KINDS:
-        raise ValueError(f"component must be one of {INPUT_KINDS}; got {component!r}")
+    _checks.choice("component", component, INPUT_KINDS)
     kinds = np.array(system.input_kinds)
     weights = (kinds == component).astype(float)
     if component == "cross_level":  # left − right = c: the left rail at +c/2, the right at −c/2
@@ -61,15 +61,47 @@ def _rail_weights(system: LinearSystem, component: str) -> np.ndarray:
     return weights
 
 
-def _steady_system(vehicle, speed) -> tuple[LinearSystem, float]:
+#: Highest circular frequency of a response grid, rad/s (about 160 kHz). The models are rigid bodies on
+#: springs, meant for motions below some 100 Hz; the bound keeps ω²M, and ω² times a response, finite.
+_OMEGA_MAX = 1.0e6
+
+
+def _omega(omega, *, positive: bool) -> np.ndarray:
+    """A non-empty 1-D grid of circular frequencies in [0, _OMEGA_MAX] rad/s (> 0 with ``positive``)."""
+    w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=positive, allow_empty=False)
+    if w.max() > _OMEGA_MAX:
+        raise ValueError(
+            f"omega must be at most {_OMEGA_MAX:g} rad/s (rigid-body models of motions below some 100 Hz), "
+            f"got {w.max()!r}"
+        )
+    return w
+
+
+def _earlier_artists(artists, keys) -> dict:
+    """The ``artists`` dict an earlier ``plot()`` returned, refused by name if it is not one."""
+    _checks.instance("artists", artists, dict, "dict of the artists an earlier plot() returned")
+    missing = [k for k in keys if k not in artists]
+    if missing:
+        raise ValueError(
+            f"artists must hold {list(keys)} as an earlier plot() returned them, lacks {missing}"
+        )
+    return artists
+
+
+def _vehicle(vehicle) -> LinearSystem:
+    """The system of the ``vehicle`` argument, refusing an object that is not a linear model by its name."""
+    return as_linear_system(_checks.linear_model("vehicle", vehicle))
+
+
+def _steady_system(vehicle, speed, name: str = "speed") -> tuple[LinearSystem, float]:
     """The vehicle's system and V, refusing a speed at which the model is unstable (no steady response)."""
-    system = as_linear_system(vehicle)
-    V = _checks.positive("speed", speed)
+    system = _vehicle(vehicle)
+    V = _checks.positive(name, speed)
     if np.any(system.C1):
         growth = np.linalg.eigvals(system.matrices(V).state_matrix()).real.max()
         if growth >= 0:
             raise ValueError(
-                f"speed {V!r} m/s is at or above the critical speed of this vehicle (an eigenvalue has real "
+                f"{name} {V!r} m/s is at or above the critical speed of this vehicle (an eigenvalue has real "
                 f"part {growth:.3g} 1/s >= 0): no steady response"
             )
     return system, V
@@ -85,7 +117,7 @@ def track_frf(vehicle, omega, speed, output="body z", derivative: int = 0, compo
     ----------
     vehicle : LinearModel or LinearSystem
     omega : array_like, (n_ω,)
-        rad/s, ≥ 0.
+        rad/s, in [0, 1e6] (rigid-body models of motions below some 100 Hz), not empty.
     speed : float
         V, m/s (> 0, below the critical speed of a lateral model).
     output : str, (str, float) or array_like
@@ -99,9 +131,10 @@ def track_frf(vehicle, omega, speed, output="body z", derivative: int = 0, compo
     ndarray, complex, (n_ω,)
     """
     system, V = _steady_system(vehicle, speed)
-    Hj = system.axle_frf(omega, V, output, derivative)
+    w = _omega(omega, positive=False)
+    Hj = system.axle_frf(w, V, output, derivative)
     tau = _track.axle_delays(system.input_positions, V)
-    return _delayed_sum(Hj, _rail_weights(system, component), np.asarray(omega, dtype=float), tau)
+    return _delayed_sum(Hj, _rail_weights(system, component), w, tau)
 
 
 def _delayed_sum(Hj, weights, omega, delays) -> np.ndarray:
@@ -116,20 +149,27 @@ class ResponseSpectrum:
 
     Attributes
     ----------
-    omega : ndarray
-        rad/s.
-    psd : ndarray
-        One-sided PSD of the output, (unit)²/(rad/s).
+    omega : ndarray, (n_ω,)
+        rad/s, > 0, not empty.
+    psd : ndarray, (n_ω,)
+        One-sided PSD of the output, (unit)²/(rad/s), ≥ 0.
     rms : float
-        √∫S dω over the grid, in the output unit.
+        √∫S dω over the grid, in the output unit, ≥ 0.
     speed : float
-        m/s.
+        m/s, > 0.
     """
 
     omega: np.ndarray
     psd: np.ndarray
     rms: float
     speed: float
+
+    def __post_init__(self):
+        w = _checks.array("omega", self.omega, ndim=1, low=0.0, low_open=True, allow_empty=False)
+        object.__setattr__(self, "omega", w)
+        object.__setattr__(self, "psd", _checks.array("psd", self.psd, shape=w.shape, low=0.0))
+        object.__setattr__(self, "rms", _checks.nonnegative("rms", self.rms))
+        object.__setattr__(self, "speed", _checks.positive("speed", self.speed))
 
     @property
     def frequency_hz(self) -> np.ndarray:
@@ -163,7 +203,7 @@ class ResponseSpectrum:
         floor = 1e-12  # (unit)²/Hz: a logarithmic axis cannot show a zero
         y = np.maximum(self.psd_per_hz, floor)
         if artists is not None:
-            artists["line"].set_data(self.frequency_hz, y)
+            _earlier_artists(artists, ("line",))["line"].set_data(self.frequency_hz, y)
             return artists
         ax = plots.axes_or_new(ax)
         with matplotlib.rc_context(plots.STYLE):
@@ -175,21 +215,36 @@ class ResponseSpectrum:
 
 
 def _spectra(psd, component) -> dict:
-    """{component: S(Ω)} from one spectrum and its component, or from a mapping of independent components."""
+    """{component: S(Ω)} from one spectrum and its component, or from a mapping of independent components.
+
+    Each S is wrapped so that what it returns is checked where it is used: finite, ≥ 0, shaped like Ω.
+    """
     if isinstance(psd, Mapping):
         if component is not None:
             raise ValueError(f"component must be None when psd is a mapping of components, got {component!r}")
+        if not psd:
+            raise ValueError("psd must hold at least one spectrum, got an empty mapping")
+        for name in psd:
+            if name not in INPUT_KINDS:
+                raise ValueError(f"psd must map components {INPUT_KINDS} to spectra; got the key {name!r}")
+        labels = {name: f"psd[{name!r}]" for name in psd}
         spectra = dict(psd)
     else:
-        spectra = {"vertical" if component is None else component: psd}
-    if not spectra:
-        raise ValueError("psd must hold at least one spectrum")
-    for name, S in spectra.items():
-        if name not in INPUT_KINDS:
-            raise ValueError(f"psd component must be one of {INPUT_KINDS}; got {name!r}")
-        if not callable(S):
-            raise TypeError(f"psd[{name!r}] must be a callable S(Ω) in m²/(rad/m), got {S!r}")
-    return spectra
+        name = "vertical" if component is None else _checks.choice("component", component, INPUT_KINDS)
+        labels, spectra = {name: "psd"}, {name: psd}
+    return {
+        name: _checked_spectrum(labels[name], _checks.function(labels[name], S))
+        for name, S in spectra.items()
+    }
+
+
+def _checked_spectrum(label: str, spectrum: Callable) -> Callable:
+    """S(Ω) whose values are checked where they are used: finite, ≥ 0 and shaped like Ω."""
+
+    def checked(Omega):
+        return _checks.returned(label, spectrum(Omega), shape=np.shape(Omega), low=0.0)
+
+    return checked
 
 
 def response_spectrum(
@@ -216,9 +271,9 @@ def response_spectrum(
         S(Ω), one-sided, m²/(rad/m), of the irregularity named by ``component``
         (default "vertical"); or a mapping {component: S} of independent components.
     speed : float
-        V, m/s.
+        V, m/s (> 0, below the critical speed of a lateral model).
     omega : array_like
-        rad/s, > 0.
+        rad/s, in (0, 1e6] (rigid-body models of motions below some 100 Hz), not empty.
     output : str, (str, float) or array_like
         See :meth:`raildyn.linear_model.LinearSystem.output_vector`.
     derivative : {0, 1, 2}
@@ -229,12 +284,22 @@ def response_spectrum(
     Returns
     -------
     ResponseSpectrum
+
+    Raises
+    ------
+    ValueError
+        If a spectrum returns a non-finite or negative value, or an array not shaped like its Ω.
     """
     system, V = _steady_system(vehicle, speed)
-    w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=True)
+    w = _omega(omega, positive=True)
+    return _response_spectrum(system, _spectra(psd, component), V, w, output, derivative)
+
+
+def _response_spectrum(system, spectra, V, w, output, derivative) -> ResponseSpectrum:
+    """:func:`response_spectrum` for checked arguments (the spectra from :func:`_spectra`)."""
     Hj = system.axle_frf(w, V, output, derivative)
     S = np.zeros(w.size)
-    for name, spectrum in _spectra(psd, component).items():
+    for name, spectrum in spectra.items():
         H = Hj * _rail_weights(system, name)[None, :]
         S_in = _track.excitation_csd(spectrum, w, system.input_positions, V)
         S = S + rv.response_psd(H, S_in)
@@ -256,19 +321,27 @@ def rms_over_speeds(
     vehicle, psd, omega, output, derivative, component
         As for :func:`response_spectrum`.
     speeds : array_like, (n_V,)
-        m/s, > 0.
+        m/s, > 0 (below the critical speed of a lateral model), not empty.
 
     Returns
     -------
     ndarray, (n_V,)
         RMS of the output at each speed, in its unit.
+
+    Raises
+    ------
+    ValueError
+        If a spectrum returns a non-finite or negative value, or an array not shaped like its Ω.
     """
-    system = as_linear_system(vehicle)
-    V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True)
-    w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=True)
+    system = _vehicle(vehicle)
+    V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
+    w = _omega(omega, positive=True)
     spectra = _spectra(psd, component)
     if np.any(system.C1):
-        return np.array([response_spectrum(system, spectra, v, w, output, derivative).rms for v in V])
+        steady = (_steady_system(system, v, "speeds") for v in V)
+        return np.array(
+            [_response_spectrum(sys_v, spectra, v, w, output, derivative).rms for sys_v, v in steady]
+        )
     Hj = system.axle_frf(w, V[0], output, derivative)  # (n_ω, q), the same at every speed
     tau = _track.axle_delays(system.input_positions, 1.0)[None, :] / V[:, None]  # (n_V, q), s
     S = np.zeros((V.size, w.size))
@@ -284,17 +357,26 @@ class TimeResponse:
 
     Attributes
     ----------
-    t : ndarray
-        s.
-    y : ndarray
-        Output (m, m/s or m/s²).
+    t : ndarray, (n_t,)
+        s, strictly increasing.
+    y : ndarray, (n_t,)
+        Output (m, m/s or m/s²), of either sign.
     inputs : ndarray, (n_t, q)
-        Track heights at the inputs, m.
+        Track heights at the inputs, m, of either sign.
     """
 
     t: np.ndarray
     y: np.ndarray
     inputs: np.ndarray
+
+    def __post_init__(self):
+        t = _checks.time_grid("t", self.t)
+        object.__setattr__(self, "t", t)
+        object.__setattr__(self, "y", _checks.array("y", self.y, shape=t.shape))
+        inputs = _checks.array("inputs", self.inputs, shape=(t.size, None))
+        if inputs.shape[1] == 0:
+            raise ValueError(f"inputs must hold at least one input, got shape {inputs.shape}")
+        object.__setattr__(self, "inputs", inputs)
 
 
 @dataclass(frozen=True)
@@ -304,23 +386,36 @@ class PeriodicProfile:
     Attributes
     ----------
     heights : ndarray, (n,)
-        The samples, m, every ``dx`` from x = 0.
-    slopes : ndarray, (n,)
-        dz/dx at the samples, the derivative of the sample's Fourier series.
+        The samples, m (of either sign), every ``dx`` from x = 0; not empty.
     dx : float
-        m.
+        m, > 0.
+    slopes : ndarray, (n,)
+        dz/dx at the samples, the derivative of the sample's Fourier series (computed from
+        ``heights`` and ``dx``, not given).
     """
 
     heights: np.ndarray
-    slopes: np.ndarray
     dx: float
+    slopes: np.ndarray = field(init=False, repr=False)
+
+    def __post_init__(self):
+        z = _checks.array("heights", self.heights, ndim=1, allow_empty=False)
+        dx = _checks.positive("dx", self.dx)
+        n = z.size
+        rate = np.fft.irfft(2j * np.pi * np.fft.rfftfreq(n, dx) * np.fft.rfft(z), n=n)
+        object.__setattr__(self, "heights", z)
+        object.__setattr__(self, "dx", dx)
+        object.__setattr__(self, "slopes", rate)
 
     @property
     def period(self) -> float:
         """n·dx, m."""
         return self.heights.size * self.dx
 
-    def _along(self, values, x) -> np.ndarray:
+    def _along(self, values, x, rails) -> np.ndarray:
+        x = _checks.array("x", x, allow_empty=False)
+        if rails is not None:
+            _checks.array("rails", rails)
         grid = np.arange(values.size) * self.dx
         return np.interp(np.mod(x, self.period), grid, values, period=self.period)
 
@@ -330,16 +425,16 @@ class PeriodicProfile:
         Parameters
         ----------
         x : array_like
-            m; beyond one period the profile repeats.
+            m, finite, of any sign and shape, not empty; beyond one period the profile repeats.
         rails : array_like, optional
-            Ignored: both rails alike.
+            Ignored (both rails alike); numbers if given.
 
         Returns
         -------
         ndarray
             m, shaped like ``x``.
         """
-        return self._along(self.heights, x)
+        return self._along(self.heights, x, rails)
 
     def slope(self, x, rails=None) -> np.ndarray:
         """dz/dx at distances x (m), for ``profile_rate`` of :func:`time_response`.
@@ -347,16 +442,16 @@ class PeriodicProfile:
         Parameters
         ----------
         x : array_like
-            m.
+            m, finite, of any sign and shape, not empty.
         rails : array_like, optional
-            Ignored.
+            Ignored; numbers if given.
 
         Returns
         -------
         ndarray
             Shaped like ``x``.
         """
-        return self._along(self.slopes, x)
+        return self._along(self.slopes, x, rails)
 
 
 def periodic_profile(height, dx) -> PeriodicProfile:
@@ -370,7 +465,7 @@ def periodic_profile(height, dx) -> PeriodicProfile:
     Parameters
     ----------
     height : array_like, (n,)
-        m.
+        m, finite, of either sign; not empty.
     dx : float
         Sample spacing, m (> 0).
 
@@ -385,11 +480,7 @@ def periodic_profile(height, dx) -> PeriodicProfile:
     >>> round(float(track.slope(np.array([0.0]))[0]), 6)  # 0.01 · 2π/25
     0.002513
     """
-    z = _checks.array("height", height, ndim=1)
-    dx = _checks.positive("dx", dx)
-    n = z.size
-    rate = np.fft.irfft(2j * np.pi * np.fft.rfftfreq(n, dx) * np.fft.rfft(z), n=n)
-    return PeriodicProfile(z, rate, dx)
+    return PeriodicProfile(_checks.array("height", height, ndim=1, allow_empty=False), dx)
 
 
 def time_response(
@@ -409,14 +500,15 @@ def time_response(
     profile : callable
         ``profile(x, rails)`` → track input (m) at each input at distances x
         (m, array (n_t, q)); ``rails`` is ``input_rails`` of the vehicle's system
-        broadcast like x. The leading axle is at x = V t.
+        broadcast like x. The leading axle is at x = V t. It must return finite
+        numbers (of either sign) shaped like x.
     profile_rate : callable, optional
-        The slope dz/dx with the same signature; without it the damper inputs
-        use a finite-difference slope.
+        The slope dz/dx with the same signature and the same demands on what it
+        returns; without it the damper inputs use a finite-difference slope.
     speed : float
-        m/s.
+        m/s (> 0, below the critical speed of a lateral model).
     t : array_like
-        Uniform times, s, starting from rest at static equilibrium.
+        Uniform, strictly increasing times, s, starting from rest at static equilibrium.
     output : str, (str, float) or array_like
         See :meth:`raildyn.linear_model.LinearSystem.output_vector`.
     derivative : {0, 1, 2}
@@ -425,20 +517,30 @@ def time_response(
     Returns
     -------
     TimeResponse
+
+    Raises
+    ------
+    ValueError
+        If ``profile`` or ``profile_rate`` returns a non-finite value or an array not shaped like x.
+    raildyn.errors.SolverError
+        If the simulated output is not finite (inputs so large that the history overflows).
     """
     from scipy import signal
 
     vehicle, V = _steady_system(vehicle, speed)
+    profile = _checks.function("profile", profile)
+    if profile_rate is not None:
+        _checks.function("profile_rate", profile_rate)
     tt = _checks.time_grid("t", t, uniform=True)
     d = _checks.integer("derivative", derivative, low=0, high=2)
     o = vehicle.output_vector(output)
     x = V * tt[:, None] - vehicle.input_positions[None, :]
     rails = np.broadcast_to(vehicle.input_rails, x.shape)
-    w = np.asarray(profile(x, rails), dtype=float)
+    w = _checks.returned("profile", profile(x, rails), shape=x.shape)
     if profile_rate is not None:
-        wdot = V * np.asarray(profile_rate(x, rails), dtype=float)
+        wdot = V * _checks.returned("profile_rate", profile_rate(x, rails), shape=x.shape)
     else:
-        wdot = np.gradient(w, tt, axis=0)
+        wdot = np.gradient(w, tt, axis=0) if tt.size > 1 else np.zeros_like(w)
     n, q = vehicle.size, w.shape[1]
     mats = vehicle.matrices(V)
     A = mats.state_matrix()
@@ -449,5 +551,11 @@ def time_response(
         Cs, D = np.concatenate([np.zeros(n), o])[None, :], np.zeros((1, 2 * q))
     else:
         Cs, D = (o @ A[n:])[None, :], (o @ B[n:])[None, :]
-    _, y, _ = signal.lsim((A, B, Cs, D), np.hstack([w, wdot]), tt)
-    return TimeResponse(tt, np.asarray(y, dtype=float).reshape(-1), w)
+    with np.errstate(over="ignore", invalid="ignore"):
+        _, y, _ = signal.lsim((A, B, Cs, D), np.hstack([w, wdot]), tt)
+    y = np.asarray(y, dtype=float).reshape(-1)
+    if not np.all(np.isfinite(y)):
+        step = int(np.argmin(np.isfinite(y)))
+        raise SolverError("the output became non-finite (the track inputs are too large)", step=step,
+                          time=float(tt[step]))  # fmt: skip
+    return TimeResponse(tt, y, w)

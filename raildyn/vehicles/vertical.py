@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from raildyn import _checks
 from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
@@ -34,13 +35,18 @@ class BodyFrequencies:
     Attributes
     ----------
     bounce_hz, pitch_hz : float
+        ≥ 0.
     roll_hz : float or None
-        Where the model has a roll coordinate.
+        ≥ 0, where the model has a roll coordinate.
     """
 
     bounce_hz: float
     pitch_hz: float
     roll_hz: float | None = None
+
+    def __post_init__(self):
+        for name in ("bounce_hz", "pitch_hz") + (() if self.roll_hz is None else ("roll_hz",)):
+            object.__setattr__(self, name, _checks.nonnegative(name, getattr(self, name)))
 
 
 def body_on_two_trucks(
@@ -67,47 +73,83 @@ def body_on_two_trucks(
     Parameters
     ----------
     labels : sequence of 6 str
+        Distinct.
     body_mass, truck_mass : float
-        kg.
+        kg, > 0.
     body_pitch_inertia, truck_pitch_inertia : float
-        kg·m².
+        kg·m², > 0.
     semi_truck_spacing : float
-        s, m.
+        s, m, > 0.
     axle_offsets : sequence of float
-        Axle positions ahead of the truck's centre, m, leading first.
+        Axle positions ahead of the truck's centre, m, leading first: at least two,
+        strictly decreasing (else the truck's pitch stands on nothing) and within
+        (−s, s) (each truck's axles on its own side of the body's centre).
     primary_stiffness, primary_damping : float
-        Per axle, N/m and N·s/m.
+        Per axle, N/m (> 0) and N·s/m (≥ 0).
     secondary_stiffness, secondary_damping : float
-        Per truck, N/m and N·s/m.
+        Per truck, N/m (> 0) and N·s/m (≥ 0).
     axle_positions : ndarray
-        Distance of each axle behind the leading one, m (the inputs' positions).
+        Distance of each axle behind the leading one, m (the inputs' positions): the
+        ones ``semi_truck_spacing`` and ``axle_offsets`` place, to within 1e-9 m per metre.
 
     Returns
     -------
     LinearSystem
     """
-    asm = Assembler(labels, 2 * len(axle_offsets))
+    labels = _checks.instance("labels", labels, (tuple, list), "sequence of 6 distinct str")
+    if len(labels) != 6 or not all(isinstance(label, str) for label in labels) or len(set(labels)) != 6:
+        raise ValueError(f"labels must hold 6 distinct strings, got {labels!r}")
+    for name, value in (
+        ("body_mass", body_mass),
+        ("body_pitch_inertia", body_pitch_inertia),
+        ("truck_mass", truck_mass),
+        ("truck_pitch_inertia", truck_pitch_inertia),
+        ("primary_stiffness", primary_stiffness),
+        ("secondary_stiffness", secondary_stiffness),
+    ):
+        _checks.positive(name, value)
+    primary_damping = _checks.nonnegative("primary_damping", primary_damping)
+    secondary_damping = _checks.nonnegative("secondary_damping", secondary_damping)
+    s = _checks.positive("semi_truck_spacing", semi_truck_spacing)
+    offsets = _checks.array("axle_offsets", axle_offsets, ndim=1)
+    if offsets.size < 2 or np.any(np.diff(offsets) >= 0):
+        raise ValueError(f"axle_offsets must hold at least two offsets, strictly decreasing, got {offsets}")
+    if np.abs(offsets).max() >= s:
+        raise ValueError(
+            f"axle_offsets must lie within (-s, s), s = semi_truck_spacing = {s!r} m (each truck's axles "
+            f"on its own side of the body's centre), got {offsets}"
+        )
+    front = s + offsets  # axle positions ahead of the body's centre
+    want = front[0] - np.concatenate([front, front - 2 * s])
+    got = _checks.array("axle_positions", axle_positions, ndim=1)
+    if got.shape != want.shape or np.abs(got - want).max() > 1e-9 * max(1.0, want.max()):
+        raise ValueError(
+            f"axle_positions must be the distances behind the leading axle that semi_truck_spacing and "
+            f"axle_offsets place, {want}, got {got}"
+        )
+    asm = Assembler(labels, 2 * offsets.size)
     body_z, body_pitch = labels[0], labels[1]
     asm.mass(body_z, body_mass)
     asm.mass(body_pitch, body_pitch_inertia)
     j = 0
-    for (z, th), x_truck in zip(
-        (labels[2:4], labels[4:6]), (semi_truck_spacing, -semi_truck_spacing), strict=True
-    ):
+    for (z, th), x_truck in zip((labels[2:4], labels[4:6]), (s, -s), strict=True):
         asm.mass(z, truck_mass)
         asm.mass(th, truck_pitch_inertia)
         # secondary: the truck centre against the body at x = ±s
         asm.element({z: 1.0, body_z: -1.0, body_pitch: -x_truck}, secondary_stiffness, secondary_damping)
-        for x_axle in axle_offsets:
+        for x_axle in offsets:
             asm.element({z: 1.0, th: x_axle}, primary_stiffness, primary_damping, inputs={j: 1.0})
             j += 1
     weight = -GRAVITY * np.diag(asm.M) * np.array([1, 0, 1, 0, 1, 0])
-    return asm.system(input_positions=axle_positions, gravity_load=weight)
+    return asm.system(input_positions=got, gravity_load=weight)
 
 
 @dataclass(frozen=True)
 class VerticalCar(LinearModelBase):
     """A passenger car in the vertical plane (Manchester benchmark vehicle, Iwnicki 1998).
+
+    Every mass, inertia, length and stiffness is finite and > 0, every damping finite and ≥ 0,
+    and the semi-wheelbase is less than the semi bogie spacing (the bogies' axles do not cross).
 
     Attributes
     ----------

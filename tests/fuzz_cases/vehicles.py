@@ -1,0 +1,202 @@
+"""Fuzz registry: chapter 6, vehicle models (lateral Bogie/Car, VerticalCar, Locomotive, FreightCar)
+and their response to the track (FRFs, spectra, time histories, rock and roll)."""
+
+from __future__ import annotations
+
+import numpy as np
+from fuzzing import call, fuzz, on
+
+from raildyn import vehicles as veh
+from raildyn.linear_model import Assembler
+from raildyn.vehicles import vertical
+
+OMEGA = np.linspace(1.0, 60.0, 12)  # rad/s
+T = np.linspace(0.0, 0.5, 26)  # s, uniform
+Z = 0.01 * np.sin(2 * np.pi * np.arange(16) / 16)  # one period of a track profile, m
+
+
+def spatial_psd(Omega):
+    """A small one-sided spatial track spectrum, m²/(rad/m)."""
+    return 1e-7 / (0.01 + np.asarray(Omega) ** 2)
+
+
+def sine_track(x, rails):
+    """A sinusoidal track profile, m (negative heights are valid)."""
+    return 0.005 * np.sin(2 * np.pi * x / 20.0)
+
+
+def sine_slope(x, rails):
+    """Its slope dz/dx."""
+    return 0.005 * 2 * np.pi / 20.0 * np.cos(2 * np.pi * x / 20.0)
+
+
+def bogie_assembler():
+    labels = ["frame y", "frame ψ", "wheelset1 y", "wheelset1 ψ", "wheelset2 y", "wheelset2 ψ"]
+    return Assembler(labels, n_inputs=4)
+
+
+def spectrum():
+    return veh.response_spectrum(veh.VerticalCar(), spatial_psd, 30.0, OMEGA)
+
+
+def rocking():
+    return veh.rock_and_roll(veh.FreightCar(), [25.0, 30.0], cycles=4)
+
+
+# Result dataclasses hold what a model computes: their own domains (a frequency ≥ 0, a PSD ≥ 0, a
+# response of either sign) are stated in their docstrings and declared here field by field.
+ENTRIES = [
+    # ------------------------------------------------------------------ lateral models
+    fuzz(
+        "raildyn.vehicles.Bogie",
+        lambda: call(),
+        accepts={
+            "secondary_lateral_stiffness": "zero",
+            "secondary_lateral_damping": "zero",
+            "secondary_yaw_stiffness": "zero",
+            "secondary_yaw_damping": "zero",
+        },
+    ),
+    fuzz(
+        "raildyn.vehicles.Bogie.assemble",
+        lambda: on(veh.Bogie(), bogie_assembler(), "", {}, None, 0),
+        accepts={"first_input": "zero"},
+    ),
+    fuzz("raildyn.vehicles.Bogie.linear_system", lambda: on(veh.Bogie())),
+    fuzz("raildyn.vehicles.Bogie.replace", lambda: on(veh.Bogie(), frame_mass=2000.0)),
+    fuzz(
+        "raildyn.vehicles.Car",
+        lambda: call(),
+        accepts={"body_height": "zero", "roll_damping": "zero"},
+    ),
+    fuzz("raildyn.vehicles.Car.linear_system", lambda: on(veh.Car())),
+    fuzz("raildyn.vehicles.Car.replace", lambda: on(veh.Car(), body_mass=30000.0)),
+    fuzz("raildyn.vehicles.cooperrider_car", lambda: call()),
+    # ------------------------------------------------------------------ vertical models
+    fuzz(
+        "raildyn.vehicles.VerticalCar",
+        lambda: call(),
+        accepts={"primary_damping": "zero", "secondary_damping": "zero"},
+    ),
+    fuzz("raildyn.vehicles.VerticalCar.linear_system", lambda: on(veh.VerticalCar())),
+    fuzz("raildyn.vehicles.VerticalCar.body_frequencies", lambda: on(veh.VerticalCar())),
+    fuzz(
+        "raildyn.vehicles.BodyFrequencies",
+        lambda: call(1.0, 2.0, 0.5),
+        accepts={"bounce_hz": "zero", "pitch_hz": "zero", "roll_hz": "zero none"},  # None: no roll coordinate
+    ),
+    fuzz(
+        "raildyn.vehicles.vertical.body_on_two_trucks",
+        lambda: call(
+            vertical.LABELS,
+            32000.0,
+            1.97e6,
+            2615.0,
+            1476.0,
+            9.5,
+            (1.28, -1.28),
+            2.44e6,
+            8.0e3,
+            8.6e5,
+            4.0e4,
+            np.array([0.0, 2.56, 19.0, 21.56]),
+        ),  # fmt: skip
+        accepts={"primary_damping": "zero", "secondary_damping": "zero"},
+    ),
+    fuzz(
+        "raildyn.vehicles.Locomotive",
+        lambda: call(),
+        accepts={"primary_damping": "zero", "secondary_damping": "zero"},
+    ),
+    fuzz("raildyn.vehicles.Locomotive.linear_system", lambda: on(veh.Locomotive())),
+    # ------------------------------------------------------------------ freight car
+    fuzz(
+        "raildyn.vehicles.FreightCar",
+        lambda: call(),
+        accepts={"cg_height": "zero", "wedge_friction": "zero", "equivalent_damping": "zero"},
+    ),
+    fuzz("raildyn.vehicles.FreightCar.linear_system", lambda: on(veh.FreightCar())),
+    fuzz("raildyn.vehicles.FreightCar.natural_frequencies", lambda: on(veh.FreightCar())),
+    fuzz("raildyn.vehicles.FreightCar.nests", lambda: on(veh.FreightCar())),
+    fuzz("raildyn.vehicles.FreightCar.roll_input_factor", lambda: on(veh.FreightCar(), 11.9)),
+    fuzz("raildyn.vehicles.FreightCar.roll_resonance_speed", lambda: on(veh.FreightCar(), 11.9)),
+    fuzz("raildyn.vehicles.gdu_ore_car", lambda: call()),
+    fuzz(
+        "raildyn.vehicles.rock_and_roll",
+        lambda: call(veh.FreightCar(), [25.0, 30.0], cycles=4),
+        accepts={"depth": "zero"},
+    ),
+    fuzz(
+        "raildyn.vehicles.RockAndRoll",
+        lambda: call(np.array([25.0, 30.0]), np.array([0.01, 0.02]), 20.0, T, np.zeros((2, T.size))),
+        accepts={"roll_amplitude": "zero", "roll": "zero negative"},
+    ),
+    fuzz("raildyn.vehicles.RockAndRoll.plot", lambda: on(rocking())),
+    fuzz(
+        "raildyn.vehicles.wedge_energy_per_cycle",
+        lambda: call(6000.0, 0.01, 2.0, velocity_scale=0.002),
+        accepts={"friction_force": "zero", "velocity_scale": "none"},  # None: the ideal Coulomb law
+    ),
+    fuzz(
+        "raildyn.vehicles.wedge_friction_force",
+        lambda: call(16000.0, 0.65, 0.1),
+        accepts={"spring_force": "zero", "friction_coefficient": "zero"},
+    ),
+    fuzz(
+        "raildyn.vehicles.WedgeFriction",
+        lambda: call(4900.0, 3800.0),
+        accepts={"bolster_down": "zero", "bolster_up": "zero"},
+    ),
+    # ------------------------------------------------------------------ response to the track
+    fuzz(
+        "raildyn.vehicles.track_frf",
+        lambda: call(veh.VerticalCar(), OMEGA, 30.0),
+        accepts={"omega": "zero", "derivative": "zero"},
+    ),
+    fuzz(
+        "raildyn.vehicles.response_spectrum",
+        lambda: call(veh.VerticalCar(), spatial_psd, 30.0, OMEGA),
+        accepts={"derivative": "zero"},
+    ),
+    fuzz(
+        "raildyn.vehicles.rms_over_speeds",
+        lambda: call(veh.VerticalCar(), spatial_psd, [20.0, 30.0], OMEGA),
+        accepts={"derivative": "zero"},
+    ),
+    fuzz(
+        "raildyn.vehicles.ResponseSpectrum",
+        lambda: call(OMEGA, np.full(OMEGA.size, 1e-3), 0.05, 30.0),
+        accepts={"psd": "zero", "rms": "zero"},
+    ),
+    fuzz("raildyn.vehicles.ResponseSpectrum.plot", lambda: on(spectrum())),
+    fuzz(
+        "raildyn.vehicles.time_response",
+        lambda: call(veh.VerticalCar(), sine_track, 30.0, T, profile_rate=sine_slope),
+        accepts={
+            "derivative": "zero",
+            "profile": "returns-negative",
+            "profile_rate": "returns-negative",
+        },
+    ),
+    fuzz(
+        "raildyn.vehicles.TimeResponse",
+        lambda: call(T, np.zeros(T.size), np.zeros((T.size, 4))),
+        accepts={"y": "zero negative", "inputs": "zero negative"},
+    ),
+    fuzz("raildyn.vehicles.periodic_profile", lambda: call(Z, 0.5), accepts={"height": "zero negative"}),
+    fuzz(
+        "raildyn.vehicles.PeriodicProfile",
+        lambda: call(Z, 0.5),
+        accepts={"heights": "zero negative"},
+    ),
+    fuzz(
+        "raildyn.vehicles.PeriodicProfile.height",
+        lambda: on(veh.periodic_profile(Z, 0.5), np.array([0.0, 1.0, 2.5])),
+        accepts={"x": "zero negative shape"},
+    ),
+    fuzz(
+        "raildyn.vehicles.PeriodicProfile.slope",
+        lambda: on(veh.periodic_profile(Z, 0.5), np.array([0.0, 1.0, 2.5])),
+        accepts={"x": "zero negative shape"},
+    ),
+]
