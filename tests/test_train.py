@@ -331,7 +331,7 @@ def test_bad_input():
         train.make_consist("0 loaded hopper")
     with pytest.raises(ValueError, match="cars"):
         train.braking_model(cars=0)
-    with pytest.raises(ValueError, match="at least one vehicle"):
+    with pytest.raises(ValueError, match="vehicles must hold 1 to 1000 vehicles, got 0"):
         train.Consist(())
     with pytest.raises(ValueError, match="unknown vehicle type 'tank car'"):
         train.make_consist("2 SD40-2 + 10 tank car")
@@ -392,15 +392,33 @@ def test_rhs_of_a_right_state_is_repeatable():
     np.testing.assert_array_equal(model.rhs(1.0, list(y)), first)  # a list is converted
 
 
+def _overflowing(model, row=None, segment_curvature=None):
+    """``model`` with a force that overflows, set in its compiled tables.
+
+    The public constructors refuse values that make a force overflow (a curvature within
+    ±0.1 1/m, speeds within ±200 m/s), so the solver's failure path is reached by writing
+    one into the tables the compiled right-hand side reads.
+    """
+    from raildyn.train import _kernel
+
+    table, _, route = model._packed
+    if row is not None:
+        table[getattr(_kernel, row)] = 1e308
+    if segment_curvature is not None:
+        route[2, 1] = segment_curvature
+    return model
+
+
 def test_simulation_running_into_an_overflow_raises_solver_error_at_that_time():
     # Beyond 200 m the route has a curvature (1e308 /m) whose resistance overflows to infinity.
     # Trial steps that overshoot are rejected; when the front vehicle's centre gets there the
     # step shrinks to nothing and the run stops with SolverError at the time it arrived.
     from raildyn.errors import SolverError
 
-    route = train.Route((0.0, 200.0), (0.0, 0.0), curvature=(0.0, 1e308))
+    route = train.Route((0.0, 200.0), (0.0, 0.0), curvature=(0.0, 0.01))
+    model = _overflowing(train.braking_model(5, 1, route=route), segment_curvature=1e308)
     with pytest.raises(SolverError, match="not finite") as info:
-        train.simulate(train.braking_model(5, 1, route=route), 20.0, 20.0, samples=201)
+        train.simulate(model, 20.0, 20.0, samples=201)
     err = info.value
     assert not hasattr(train.TrainRun, "success")
     # The same train on level track, identical until it reaches 200 m, sampled every 1 ms.
@@ -421,7 +439,7 @@ def test_simulation_solver_stop_raises_solver_error():
     assert info.value.time == pytest.approx(0.0, abs=1e-300)
     assert info.value.partial is None or info.value.partial.t[-1] == 0.0
     with pytest.raises(SolverError, match="not finite at the start") as info:
-        train.simulate(train.braking_model(2, 1), 1.0, 1e160)  # v² overflows in the air resistance
+        train.simulate(_overflowing(train.braking_model(2, 1), row="ROW_A2"), 1.0, 20.0)  # a2 v² overflows
     assert info.value.time == 0.0 and info.value.step == 0
 
 
@@ -596,3 +614,113 @@ def test_run_from_states_checks_its_input():
         model.run_from_states([0.0, 1.0], y)
     with pytest.raises(ValueError, match="strictly increasing"):
         model.run_from_states([0.0, 2.0, 1.0], y)
+
+
+# --- issue 15: every public call refuses bad input clearly -------------------------------------
+
+
+@pytest.mark.parametrize(
+    "settings",
+    [{"atol": float("nan")}, {"atol": 0.0}, {"atol": 1e-300}, {"rtol": float("inf")}, {"rtol": 0.0}],
+    ids=["atol nan", "atol 0", "atol tiny", "rtol inf", "rtol 0"],
+)
+def test_simulate_refuses_tolerances_that_would_run_forever(settings):
+    # atol = NaN ran forever and atol = 0 or rtol = inf ran past 15 s: now refused up front.
+    (name,) = settings
+    with pytest.raises(ValueError, match=rf"^{name} must"):
+        train.simulate(train.braking_model(3, 1), 2.0, 15.0, **settings)
+
+
+def test_simulate_refuses_a_huge_speed_duration_or_sample_count_naming_it():
+    model = train.braking_model(3, 1)
+    # 1e300 m/s ended in an IndexError while the failure message was written.
+    with pytest.raises(ValueError, match=r"initial_speed must be in \[-200.0, 200.0\], got 1e\+300"):
+        train.simulate(model, 2.0, 1e300)
+    with pytest.raises(ValueError, match="initial_extension must be in"):
+        train.simulate(model, 2.0, 15.0, initial_extension=5.0)
+    with pytest.raises(ValueError, match="duration must be in"):
+        train.simulate(model, 1e300, 15.0)  # ran until the fuzz test's timer stopped it
+    with pytest.raises(ValueError, match="samples must be an integer in"):
+        train.simulate(model, 2.0, 15.0, samples=10**12)  # a MemoryError before
+    with pytest.raises(TypeError, match="method must be a string"):
+        train.simulate(model, 2.0, 15.0, method=None)
+
+
+def test_simulate_is_bounded_by_its_evaluation_budget(monkeypatch):
+    from raildyn.errors import SolverError
+    from raildyn.train import longitudinal
+
+    monkeypatch.setattr(longitudinal, "_MAX_EVALUATIONS", 50)
+    with pytest.raises(SolverError, match="more than 50 right-hand-side calls") as info:
+        train.simulate(train.braking_model(3, 1), 2.0, 15.0, max_step=1e-3)
+    assert 0.0 < info.value.time < 2.0
+
+
+def test_coupler_angles_refuse_a_curve_no_vehicle_fits_on():
+    consist = train.make_consist("3 loaded hopper")
+    # κ = 0.57 1/m gave angles of 9.28 rad; a 16 m hopper cannot sit on a curve of 1.75 m radius.
+    with pytest.raises(ValueError, match=r"curvature must be at most 2/L = 0\.1238 1/m") as info:
+        train.coupler_angles(consist, 0.57)
+    assert "longer than the curve's diameter" in str(info.value)
+    assert np.abs(train.coupler_angles(consist, 2 / HOPPER.length)).max() <= 1.0  # the limit itself
+    with pytest.raises(ValueError, match="vertical_curvature must be at most"):
+        train.coupler_effects(consist, [1e5, 1e5], vertical_curvature=-1.0)
+
+
+def test_route_grade_and_curvature_have_a_stated_limit():
+    with pytest.raises(ValueError, match=r"grade must be within ±0.1"):
+        train.Route((0.0, 100.0), (0.0, 10.0))  # a 1000 % grade was accepted
+    with pytest.raises(ValueError, match=r"curvature must be within ±0.1 1/m"):
+        train.Route((0.0,), (0.0,), curvature=(0.5,))
+    with pytest.raises(TypeError, match="grade must be a sequence"):
+        train.Route((0.0,), None)
+    with pytest.raises(ValueError, match=r"grade must be within ±0.1"):
+        train.grade_force(1e5, -0.2)
+    assert train.Route((0.0,), (-0.1,)).grade_at(5.0) == -0.1
+
+
+def test_davis_resistance_counts_whole_axles():
+    with pytest.raises(ValueError, match="axles must be whole numbers, got 2.5"):
+        train.davis_resistance(20.0, 1e5, 2.5, 9.0)
+    assert train.davis_resistance(20.0, 1e5, 4.0, 9.0) == train.davis_resistance(20.0, 1e5, 4, 9.0)
+    with pytest.raises(ValueError, match=r"speed must be within ±447"):
+        train.davis_resistance(500.0, 143.0, 4, 88.0, units="US")
+
+
+def test_make_consist_has_a_stated_size_limit_and_names_its_description():
+    with pytest.raises(ValueError, match="description asks for more than 1000 vehicles"):
+        train.make_consist("10000000 loaded hopper")  # built ten million vehicles before
+    assert len(train.make_consist("2 SD40-2 + 998 loaded hopper")) == 1000
+    with pytest.raises(ValueError, match="description asks for more than 1000"):
+        train.make_consist("2 SD40-2 + 999 loaded hopper")
+    with pytest.raises(ValueError, match="description names an unknown vehicle type 'tank car'"):
+        train.make_consist("tank car")
+    with pytest.raises(TypeError, match="description must be a string"):
+        train.make_consist(None)
+    with pytest.raises(TypeError, match="vehicles must be a dict"):
+        train.make_consist("loaded hopper", vehicles="abc")
+    with pytest.raises(ValueError, match="cars must be an integer in"):
+        train.braking_model(10**12, 1)
+    with pytest.raises(ValueError, match="locomotives must be an integer in"):
+        train.braking_model(999, 2)
+
+
+def test_user_built_and_result_classes_check_their_fields():
+    with pytest.raises(ValueError, match="davis_form must be one of"):
+        train.TrainModel(train.make_consist("2 loaded hopper"), davis_form="newer")  # blamed "form"
+    with pytest.raises(TypeError, match="description must be a string"):
+        train.Consist((HOPPER,), None)
+    with pytest.raises(ValueError, match="coupler_force must have shape"):
+        train.TrainRun(np.zeros(2), np.zeros((2, 2)), np.zeros((2, 2)), np.zeros((2, 2)), np.zeros(1), 0)
+    with pytest.raises(TypeError, match="evaluations must be an integer"):
+        train.TrainRun(np.zeros(2), np.zeros((2, 2)), np.zeros((2, 2)), np.zeros((1, 2)), np.zeros(1), 1.5)
+    with pytest.raises(ValueError, match="force must be a finite number"):
+        train.CouplerPeak(float("nan"), 0, 1.0, 0.0)
+    with pytest.raises(ValueError, match="extension must be within ±1.0 m"):
+        train.DraftGear().force(1e300, 0.0)  # overflowed to inf
+    with pytest.raises(ValueError, match="x \\(the coupler extensions it gives\\) must be within"):
+        train.braking_model(2, 1).coupler_forces([0.0, -1e300, -2e300], np.zeros(3))
+    with pytest.raises(ValueError, match=r"low must be in \[0.0, 200.0\]"):
+        train.braking_model(2, 1).balancing_speed(1e300)  # blamed high
+    with pytest.raises(ValueError, match="low must be < high"):
+        train.braking_model(2, 1).balancing_speed(30.0, 20.0)

@@ -25,6 +25,23 @@ from raildyn import _checks, plots
 
 __all__ = ["DraftGear", "DraftGearLoop"]
 
+# Largest coupler extension or gear deflection the law takes, m, in either direction. A real
+# coupler has a few centimetres of slack and under 10 cm of gear travel; a metre means the
+# vehicles have parted or overrun each other, where the law does not apply (and the solid
+# branch would overflow for absurd extensions).
+_MAX_EXTENSION = 1.0
+
+
+def _extension(name: str, value) -> np.ndarray:
+    """``value`` as a non-empty finite array of extensions within ±``_MAX_EXTENSION`` (m)."""
+    arr = _checks.array(name, value, allow_empty=False)
+    if np.abs(arr).max() > _MAX_EXTENSION:
+        raise ValueError(
+            f"{name} must be within ±{_MAX_EXTENSION} m (beyond it the vehicles have parted or overrun "
+            f"each other, where the coupler law does not apply), got {arr.flat[np.argmax(np.abs(arr))]!r}"
+        )
+    return arr
+
 
 @dataclass(frozen=True)
 class DraftGear:
@@ -86,7 +103,7 @@ class DraftGear:
         Parameters
         ----------
         extension : float or array
-            Coupler extension δ, m (see ``force``).
+            Coupler extension δ, m (see ``force``), within ±1 m.
 
         Returns
         -------
@@ -94,7 +111,7 @@ class DraftGear:
             Deflection u >= 0, m, the shape of ``extension``: 0 inside the gap,
             ``|δ| − slack/2`` beyond the blend, ``(|δ| − slack/2 + ε)²/(4ε)`` within it.
         """
-        u, _ = self._deflection_and_slope(_checks.array("extension", extension))
+        u, _ = self._deflection_and_slope(_extension("extension", extension))
         return u
 
     def _deflection_and_slope(self, extension):
@@ -115,7 +132,8 @@ class DraftGear:
         ----------
         extension : float or array
             δ = (separation of the two vehicle centres) − (its value with the slack
-            centred), m; > 0 pulls the vehicles apart.
+            centred), m; > 0 pulls the vehicles apart; within ±1 m (beyond it the
+            vehicles have parted or overrun each other).
         rate : float or array
             dδ/dt, m/s; broadcasts against ``extension``.
 
@@ -130,8 +148,18 @@ class DraftGear:
         >>> gear.force([0.005, 0.03], [0.0, 1.0]) / 1e3  # inside the gap; loading, 20 mm past it
         array([  0., 500.])
         """
-        extension = _checks.array("extension", extension)
-        rate = _checks.array("rate", rate)
+        extension = _extension("extension", extension)
+        rate = _checks.array("rate", rate, allow_empty=False)
+        try:
+            np.broadcast_shapes(extension.shape, rate.shape)
+        except ValueError:
+            raise ValueError(
+                f"rate must broadcast against extension; got shapes {rate.shape} and {extension.shape}"
+            ) from None
+        return self._force(extension, rate)
+
+    def _force(self, extension, rate):
+        """:meth:`force` of checked arrays."""
         s = np.sign(extension)
         u, slope = self._deflection_and_slope(extension)
         # k_u + (k_l − k_u)(1 + tanh)/2, written as mean ± half difference
@@ -152,14 +180,14 @@ class DraftGear:
         Parameters
         ----------
         amplitude : float
-            Largest deflection U of the cycle, m (>= 0).
+            Largest deflection U of the cycle, m (0 to 1).
 
         Returns
         -------
         float
             Energy, J.
         """
-        amplitude = _checks.nonnegative("amplitude", amplitude)
+        amplitude = _checks.scalar("amplitude", amplitude, low=0.0, high=_MAX_EXTENSION)
         u = min(amplitude, self.travel)
         return 0.5 * (self.loading_stiffness - self.unloading_stiffness) * u**2
 
@@ -169,17 +197,17 @@ class DraftGear:
         Parameters
         ----------
         amplitude : float
-            Largest deflection, m (> 0).
+            Largest deflection, m (0 < amplitude <= 1).
         points : int
-            Points on each branch (>= 2).
+            Points on each branch (2 to 100000, more than a drawing needs).
 
         Returns
         -------
         DraftGearLoop
             The closed loop (loading branch up, unloading branch down) and its energy.
         """
-        amplitude = _checks.positive("amplitude", amplitude)
-        points = _checks.integer("points", points, low=2)
+        amplitude = _checks.scalar("amplitude", amplitude, low=0.0, high=_MAX_EXTENSION, low_open=True)
+        points = _checks.integer("points", points, low=2, high=100_000)
         up = np.linspace(0.0, amplitude, points)
         down = up[::-1]
         solid = self.solid_stiffness * np.maximum(up - self.travel, 0.0)
@@ -209,6 +237,12 @@ class DraftGearLoop:
     deflection: np.ndarray
     force: np.ndarray
     energy: float
+
+    def __post_init__(self):
+        deflection = _checks.array("deflection", self.deflection, ndim=1, allow_empty=False)
+        object.__setattr__(self, "deflection", deflection)
+        object.__setattr__(self, "force", _checks.array("force", self.force, shape=deflection.shape))
+        object.__setattr__(self, "energy", _checks.scalar("energy", self.energy))
 
     def plot(self, ax=None) -> dict:
         """Draw the loop (kN against mm) with its area shaded.

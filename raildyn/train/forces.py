@@ -71,7 +71,7 @@ def tractive_effort(speed, notch, max_tractive_effort: float, rail_power: float)
     >>> round(tractive_effort(20.0, 4, 500e3, 2e6) / 1e3)  # half of 2 MW / 20 m/s
     50
     """
-    v = np.abs(_checks.array("speed", speed))
+    v = np.abs(_checks.array("speed", speed, allow_empty=False))
     notch = _checks.scalar("notch", notch, low=0, high=NOTCHES)
     f_max = _checks.nonnegative("max_tractive_effort", max_tractive_effort)
     power = _checks.nonnegative("rail_power", rail_power)
@@ -113,7 +113,7 @@ def dynamic_brake_force(speed, level, max_force: float, peak_speed=None, fade_sp
     >>> dynamic_brake_force([4.0, 12.0, 40.0], 1.0, 300e3) / 1e3
     array([150., 300., 150.])
     """
-    v = np.abs(_checks.array("speed", speed))
+    v = np.abs(_checks.array("speed", speed, allow_empty=False))
     level = _checks.scalar("level", level, low=0.0, high=1.0)
     f = _checks.nonnegative("max_force", max_force)
     peak = _checks.positive("peak_speed", DYNAMIC_BRAKE_PEAK_SPEED if peak_speed is None else peak_speed)
@@ -172,7 +172,7 @@ class AirBrake:
         >>> AirBrake(start=1.0, propagation_speed=250.0).arrival(1000.0)
         5.0
         """
-        d = _checks.array("distance", distance, low=0.0)
+        d = _checks.array("distance", distance, low=0.0, allow_empty=False)
         out = self.start + d / self.propagation_speed
         return out if out.ndim else float(out)
 
@@ -191,7 +191,7 @@ class AirBrake:
         float or ndarray
             Fraction of the full brake force, 0 before the signal arrives, rising to ``level``.
         """
-        t = _checks.array("t", t)
+        t = _checks.array("t", t, allow_empty=False)
         since = t - self.arrival(distance)
         out = self.level * -np.expm1(-np.maximum(since, 0.0) / self.build_up_time)
         return out if np.ndim(out) else float(out)

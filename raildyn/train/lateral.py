@@ -39,7 +39,8 @@ def coupler_angles(consist: Consist, curvature) -> np.ndarray:
         The vehicles, front first.
     curvature : float or array (n−1,)
         Track curvature κ at the couplers, 1/m: a number, or one value per coupler
-        (its sign gives the sign of the angle).
+        (its sign gives the sign of the angle). At each coupler ``|κ| L <= 2`` for both
+        vehicle lengths ``L``: a vehicle longer than the curve's diameter cannot sit on it.
 
     Returns
     -------
@@ -52,12 +53,26 @@ def coupler_angles(consist: Consist, curvature) -> np.ndarray:
     >>> coupler_angles(make_consist("3 loaded hopper"), 1 / 200).round(4)  # rad
     array([0.0404, 0.0404])
     """
-    if not isinstance(consist, Consist):
-        raise TypeError(f"consist must be a Consist, got {type(consist).__name__}")
-    k = _checks.array("curvature", curvature)
+    _checks.instance("consist", consist, Consist)
+    return _angles(consist, curvature, "curvature")
+
+
+def _angles(consist: Consist, curvature, name: str) -> np.ndarray:
+    """:func:`coupler_angles` of a checked consist, naming the curvature ``name`` in errors."""
+    k = _checks.array(name, curvature)
     if k.ndim not in (0, 1) or (k.ndim == 1 and k.size != consist.couplers):
-        raise ValueError(f"curvature must be a number or hold {consist.couplers} values, got shape {k.shape}")
+        raise ValueError(f"{name} must be a number or hold {consist.couplers} values, got shape {k.shape}")
     length = consist.length
+    longer = np.maximum(length[:-1], length[1:])
+    fits = np.abs(k) * longer <= 2.0
+    if not fits.all():
+        j = int(np.argmin(fits))
+        kj = float(np.broadcast_to(k, fits.shape)[j])
+        raise ValueError(
+            f"{name} must be at most 2/L = {2.0 / longer[j]:.4g} 1/m in size at coupler {j}, where a vehicle "
+            f"of length L = {longer[j]:.4g} m meets it (a vehicle longer than the curve's diameter cannot "
+            f"sit on the track), got {kj!r}"
+        )
     return k * 0.25 * (length[:-1] + length[1:])
 
 
@@ -99,6 +114,19 @@ class CouplerEffects:
     unloading: np.ndarray
     mode: np.ndarray
 
+    def __post_init__(self):
+        lateral = _checks.array("lateral_force", self.lateral_force, ndim=2, allow_empty=False)
+        n = lateral.shape[0]
+        object.__setattr__(self, "lateral_force", _checks.array("lateral_force", lateral, shape=(n, 2)))
+        for name in ("l_over_v", "vertical_force", "unloading"):
+            object.__setattr__(self, name, _checks.array(name, getattr(self, name), shape=(n, 2)))
+        if not isinstance(self.mode, np.ndarray | list | tuple):
+            raise TypeError(f"mode must be an array of strings, one per coupler, got {self.mode!r:.80}")
+        mode = np.asarray(self.mode)
+        if mode.shape != (n - 1,) or (mode.size and mode.dtype.kind != "U"):
+            raise ValueError(f"mode must hold {n - 1} strings, one per coupler, got {self.mode!r:.80}")
+        object.__setattr__(self, "mode", mode)
+
 
 def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=0.0) -> CouplerEffects:
     """Lateral (L/V) and vertical (unloading) effects of the coupler forces ``forces`` (N, + tension).
@@ -111,9 +139,10 @@ def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=
         Coupler forces, N.
     curvature : float or array (n−1,)
         Horizontal curvature at each coupler, 1/m (magnitude used; the result is
-        given relative to the outside of the curve).
+        given relative to the outside of the curve); within the geometric limit of
+        :func:`~raildyn.train.coupler_angles`.
     vertical_curvature : float or array (n−1,)
-        1/m, + in a sag, − on a crest.
+        1/m, + in a sag, − on a crest; within the same limit.
 
     Returns
     -------
@@ -128,11 +157,10 @@ def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=
     >>> bool(e.lateral_force[1, 0] < 0)  # tension pulls the middle car toward the inside
     True
     """
-    if not isinstance(consist, Consist):
-        raise TypeError(f"consist must be a Consist, got {type(consist).__name__}")
+    _checks.instance("consist", consist, Consist)
     f = _checks.array("forces", forces, shape=(consist.couplers,))
-    theta = np.abs(coupler_angles(consist, curvature))
-    phi = coupler_angles(consist, vertical_curvature)
+    theta = np.abs(_angles(consist, curvature, "curvature"))
+    phi = _angles(consist, vertical_curvature, "vertical_curvature")
     lateral_end = -f * np.sin(theta)  # tension (f > 0) pulls inward
     lateral = _truck_loads(consist, lateral_end)
     # In a sag (φ > 0) the coupler line lies below the bodies, so tension lifts the car ends.
@@ -177,8 +205,7 @@ def limiting_coupler_force(consist: Consist, curvature, l_over_v: float, vehicle
     >>> round(limiting_coupler_force(make_consist("3 loaded hopper"), 1 / 150, 0.5) / 1e3)  # kN
     2955
     """
-    if not isinstance(consist, Consist):
-        raise TypeError(f"consist must be a Consist, got {type(consist).__name__}")
+    _checks.instance("consist", consist, Consist)
     if consist.couplers < 1:
         raise ValueError(f"consist must hold at least two vehicles, got {len(consist)}")
     limit = _checks.positive("l_over_v", l_over_v)

@@ -34,16 +34,29 @@ from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
 from raildyn.train import _kernel
 from raildyn.train import forces as train_forces
-from raildyn.train.couplers import DraftGear
+from raildyn.train.couplers import _MAX_EXTENSION, DraftGear, _extension
 from raildyn.train.forces import NOTCHES, AirBrake, dynamic_brake_force
-from raildyn.train.resistance import CURVE_RESISTANCE, Route, davis_resistance
+from raildyn.train.resistance import _MAX_SPEED, CURVE_RESISTANCE, Route, davis_resistance
 from raildyn.train.results import QuasiStatic, TrainRun
-from raildyn.train.vehicles import Consist, make_consist
+from raildyn.train.vehicles import _MAX_VEHICLES, Consist, make_consist
 
 __all__ = ["TrainModel", "braking_model", "simulate"]
 
 # The methods solve_ivp offers by name.
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+
+# Longest simulated time, s: a day, longer than any journey one run models; at 200 m/s the
+# front position still resolves well under a micrometre in float64.
+_MAX_DURATION = 86_400.0
+# Most output times of a run (its arrays are vehicles x samples).
+_MAX_SAMPLES = 1_000_000
+# Most right-hand-side calls one run may make: about 50 times what an hour of a 100-car
+# emergency stop takes (2e6). It bounds every run, whatever its tolerances and max_step.
+_MAX_EVALUATIONS = 100_000_000
+
+
+class _OverBudget(Exception):
+    """Raised inside solve_ivp's callback when a run has used up ``_MAX_EVALUATIONS``."""
 
 
 @dataclass(frozen=True)
@@ -92,12 +105,11 @@ class TrainModel:
 
     def __post_init__(self):
         for name, kind in (("consist", Consist), ("gear", DraftGear), ("route", Route)):
-            if not isinstance(getattr(self, name), kind):
-                raise TypeError(f"{name} must be a {kind.__name__}, got {type(getattr(self, name)).__name__}")
-        if self.air_brake is not None and not isinstance(self.air_brake, AirBrake):
-            raise TypeError(f"air_brake must be an AirBrake or None, got {type(self.air_brake).__name__}")
-        if not isinstance(self.resistance, bool | np.bool_):
-            raise TypeError(f"resistance must be True or False, got {self.resistance!r}")
+            _checks.instance(name, getattr(self, name), kind)
+        if self.air_brake is not None:
+            _checks.instance("air_brake", self.air_brake, AirBrake, "AirBrake or None")
+        _checks.flag("resistance", self.resistance)
+        _checks.choice("davis_form", self.davis_form, ("original", "modified"))
         _checks.scalar("notch", self.notch, low=0, high=NOTCHES)
         _checks.scalar("dynamic_brake", self.dynamic_brake, low=0.0, high=1.0)
         _checks.positive("creep_speed", self.creep_speed)
@@ -185,12 +197,12 @@ class TrainModel:
     def _state(self, y, name="state y"):
         """``y`` as a finite float array of shape (2n,) or (2n, k); ValueError otherwise."""
         m = 2 * self.size
-        return _checks.array(name, y, shape=(m,) if np.ndim(y) == 1 else (m, None))
+        return _checks.array(name, y, shape=(m,) if np.ndim(y) == 1 else (m, None), allow_empty=False)
 
     def _vehicle_array(self, name, value):
         """``value`` as a finite float array with the vehicle axis first: (n,) or (n, k)."""
         n = self.size
-        return _checks.array(name, value, shape=(n,) if np.ndim(value) == 1 else (n, None))
+        return _checks.array(name, value, shape=(n,) if np.ndim(value) == 1 else (n, None), allow_empty=False)
 
     def initial_state(self, speed: float, extension: float = 0.0) -> np.ndarray:
         """State with every vehicle at ``speed`` and every coupler at ``extension``.
@@ -203,17 +215,18 @@ class TrainModel:
         Parameters
         ----------
         speed : float
-            Speed of every vehicle, m/s.
+            Speed of every vehicle, m/s (negative runs backwards), at most 200 in size
+            (above the wheel–rail speed record).
         extension : float
-            Extension δ of every coupler, m (0 centres the slack).
+            Extension δ of every coupler, m (0 centres the slack), within ±1 m.
 
         Returns
         -------
         ndarray, shape (2n,)
             The state: m, m, m/s.
         """
-        speed = _checks.scalar("speed", speed)
-        extension = _checks.scalar("extension", extension)
+        speed = _checks.scalar("speed", speed, low=-_MAX_SPEED, high=_MAX_SPEED)
+        extension = _checks.scalar("extension", extension, low=-_MAX_EXTENSION, high=_MAX_EXTENSION)
         x0 = self.front_start - self._pre["offset"][0]
         return np.r_[x0, np.full(self.size - 1, extension), np.full(self.size, speed)]
 
@@ -278,7 +291,8 @@ class TrainModel:
             Coupler forces, N (+ tension), front coupler first.
         """
         delta, rate = self.coupler_extension(x, v)
-        return self.gear.force(delta, rate)
+        _extension("x (the coupler extensions it gives)", delta)
+        return self.gear._force(delta, rate)
 
     def external_forces(self, t, x, v) -> np.ndarray:
         """Sum of every force on each vehicle except the couplers.
@@ -291,7 +305,7 @@ class TrainModel:
             Route positions of the vehicle centres, m, shape of ``v``; only read on a
             route with grades or curves (None is accepted on level track).
         v : array, shape (n,) or (n, k)
-            Vehicle speeds, m/s.
+            Vehicle speeds, m/s, at most 200 in size (above the wheel–rail speed record).
 
         Returns
         -------
@@ -300,6 +314,8 @@ class TrainModel:
         """
         t = _checks.scalar("t", t)
         v = self._vehicle_array("v", v)
+        if np.abs(v).max() > _MAX_SPEED:
+            raise ValueError(f"v must be within ±{_MAX_SPEED} m/s, got {v.flat[np.argmax(np.abs(v))]!r}")
         if x is not None or not self.route.is_level:
             x = self._vehicle_array("x", x)
             if x.shape != v.shape:
@@ -406,7 +422,7 @@ class TrainModel:
         n = self.size
         delta, v = y[1:n], y[n:]
         rate = v[:-1] - v[1:]
-        f = self.gear.force(delta, rate)
+        f = self.gear._force(delta, rate)  # trial states may leave the law's domain
         x = None if self.route.is_level else self._positions(y)  # level track needs no positions
         force = self._external_forces(t, x, v)
         force[:-1] -= f
@@ -422,7 +438,8 @@ class TrainModel:
         t : array, shape (m,)
             Times, s, strictly increasing.
         y : array, shape (2n, m)
-            The state at each time, one per column (see :meth:`initial_state`).
+            The state at each time, one per column (see :meth:`initial_state`); coupler
+            extensions within ±1 m.
         evaluations : int
             Right-hand-side calls spent on it (>= 0).
 
@@ -436,11 +453,13 @@ class TrainModel:
         evaluations = _checks.integer("evaluations", evaluations, low=0)
         n = self.size
         delta, v = y[1:n], y[n:]
+        if delta.size:
+            _extension("y (its coupler extensions)", delta)
         return TrainRun(
             t=t,
             position=self._positions(y),
             speed=v,
-            coupler_force=self.gear.force(delta, v[:-1] - v[1:]),
+            coupler_force=self.gear._force(delta, v[:-1] - v[1:]),
             coupler_offsets=self.consist.coupler_offsets,
             evaluations=evaluations,
         )
@@ -457,7 +476,7 @@ class TrainModel:
         Parameters
         ----------
         speed : float
-            Speed of the train, m/s (>= 0).
+            Speed of the train, m/s (0 to 200, above the wheel–rail speed record).
         front_position : float, optional
             Route position of the front coupler face, m; default ``front_start``.
 
@@ -473,7 +492,7 @@ class TrainModel:
         >>> bool(qs.coupler_force[1] > 0), round(qs.acceleration, 3)  # the locomotives pull
         (True, 0.038)
         """
-        speed = _checks.nonnegative("speed", speed)
+        speed = _checks.scalar("speed", speed, low=0.0, high=_MAX_SPEED)
         front = (
             self.front_start if front_position is None else _checks.scalar("front_position", front_position)
         )
@@ -504,7 +523,8 @@ class TrainModel:
         Parameters
         ----------
         low, high : float
-            Speeds that bracket the balancing speed, m/s; 0 <= low < high.
+            Speeds that bracket the balancing speed, m/s; 0 <= low < high <= 200 (above
+            the wheel–rail speed record).
         front_position : float, optional
             Route position of the front coupler face, m; default ``front_start``.
 
@@ -527,8 +547,10 @@ class TrainModel:
         >>> round(3.6 * climb.balancing_speed(), 1)  # km/h on a 1 % climb
         14.7
         """
-        low = _checks.nonnegative("low", low)
-        high = _checks.scalar("high", high, low=low, low_open=True)
+        low = _checks.scalar("low", low, low=0.0, high=_MAX_SPEED)
+        high = _checks.scalar("high", high, low=0.0, high=_MAX_SPEED)
+        if not low < high:
+            raise ValueError(f"low must be < high, got low = {low!r} m/s and high = {high!r} m/s")
 
         def acceleration(v):
             return self.quasi_static(v, front_position).acceleration
@@ -540,7 +562,7 @@ class TrainModel:
                 f"low = {low!r} m/s and {a_high:.4g} m/s² at high = {high!r} m/s (same sign)"
             )
         speed, info = brentq(
-            acceleration, low, high, xtol=1e-9, rtol=4 * np.finfo(float).eps, full_output=True
+            acceleration, low, high, xtol=1e-9, rtol=4 * np.finfo(float).eps, full_output=True, disp=False
         )
         if not info.converged:
             raise SolverError(f"Brent's method did not converge: {info.flag}", step=info.iterations)
@@ -567,22 +589,24 @@ def simulate(
     model : TrainModel
         The train, its route and its driver's settings.
     duration : float
-        Simulated time, s (> 0).
+        Simulated time, s; 0 < duration <= 86400 (a day: longer than any journey one run
+        models).
     initial_speed : float
-        Speed of every vehicle at t = 0, m/s.
+        Speed of every vehicle at t = 0, m/s (negative runs backwards), at most 200 in size
+        (above the wheel–rail speed record).
     initial_extension : float
         Coupler extension δ at t = 0, m: 0 centres the slack, ``+slack/2`` starts stretched
-        and ``−slack/2`` bunched.
+        and ``−slack/2`` bunched; within ±1 m.
     samples : int
-        Number of output times (>= 2), uniform over [0, duration].
+        Number of output times, 2 to 1000000, uniform over [0, duration].
     rtol : float
-        Relative tolerance, in [2.2e-14, 1) (scipy's floor is 100 machine epsilons).
+        Relative tolerance, in [1e-13, 1) (scipy's floor is 100 machine epsilons).
         Explicit methods are held back by the stiff draft gear rather than by
         accuracy, so a tight ``rtol`` costs little: for the standard braking run
         1e-5 misplaces the peak coupler force by ~13 % and 1e-7 agrees with an
         implicit solution to 0.1 %.
     atol : float or array (2n,), optional
-        Absolute tolerance (> 0), in the units of the state (m, m, m/s); default
+        Absolute tolerance, in [1e-13, 1), in the units of the state (m, m, m/s); default
         1e-3 m on the front position, 1e-6 m on the extensions, 1e-5 m/s on speeds.
     method : {"RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA"}
         A ``solve_ivp`` method.
@@ -599,9 +623,11 @@ def simulate(
     Raises
     ------
     raildyn.errors.SolverError
-        If the forces are not finite at the start, or the integrator stops before
-        ``duration`` (a step that shrinks below the spacing of floating-point
-        numbers, as it does when the solution runs into a force that overflows);
+        If the forces are not finite at the start, the run needs more than 10⁸
+        right-hand-side calls (about 50 times what an hour of a 100-car emergency stop
+        takes), or the integrator stops before ``duration`` (a step that shrinks below
+        the spacing of floating-point numbers, as it does when the solution runs into a
+        force that overflows);
         ``time`` is the last time reached (s), ``partial`` the run at the output
         times passed (or None). A trial step that overshoots into such a force is
         rejected and retried, so a run that avoids it still succeeds.
@@ -615,25 +641,26 @@ def simulate(
     >>> peak.kind, peak.coupler, round(peak.force / 1e3), round(run.stop_time(), 1)
     ('buff', 8, -77, 45.3)
     """
-    if not isinstance(model, TrainModel):
-        raise TypeError(f"model must be a TrainModel, got {type(model).__name__}")
-    duration = _checks.positive("duration", duration)
-    initial_speed = _checks.scalar("initial_speed", initial_speed)
-    initial_extension = _checks.scalar("initial_extension", initial_extension)
-    samples = _checks.integer("samples", samples, low=2)
-    rtol = _checks.scalar("rtol", rtol, low=100 * np.finfo(float).eps, high=1.0, high_open=True)
+    _checks.instance("model", model, TrainModel)
+    duration = _checks.scalar("duration", duration, low=0.0, high=_MAX_DURATION, low_open=True)
+    initial_speed = _checks.scalar("initial_speed", initial_speed, low=-_MAX_SPEED, high=_MAX_SPEED)
+    initial_extension = _checks.scalar(
+        "initial_extension", initial_extension, low=-_MAX_EXTENSION, high=_MAX_EXTENSION
+    )
+    samples = _checks.integer("samples", samples, low=2, high=_MAX_SAMPLES)
+    rtol = _checks.tolerance("rtol", rtol)
     n = model.size
     if atol is None:
         atol = np.r_[1e-3, np.full(n - 1, 1e-6), np.full(n, 1e-5)]
     elif np.ndim(atol) == 0:
-        atol = _checks.positive("atol", atol)
+        atol = _checks.tolerance("atol", atol)
     else:
-        atol = _checks.array("atol", atol, shape=(2 * n,), low=0.0, low_open=True)
-    if method not in METHODS:
-        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+        atol = _checks.array("atol", atol, shape=(2 * n,))
+        for a in atol:
+            _checks.tolerance("atol", a)
+    _checks.choice("method", method, METHODS)
     max_step = np.inf if max_step is None else _checks.positive("max_step", max_step)
-    if not isinstance(progress, bool | np.bool_):
-        raise TypeError(f"progress must be True or False, got {progress!r}")
+    _checks.flag("progress", progress)
     y0 = model.initial_state(initial_speed, initial_extension)
     t_eval = np.linspace(0.0, duration, samples)
     rhs_one = model._rhs_one  # states come from solve_ivp with the shape of y0: no check needed
@@ -645,8 +672,13 @@ def simulate(
     blocked = []  # times at which the forces were not finite
     bar = progress_bar(total=round(duration), desc="simulated time (s)") if progress else None
 
+    calls = [0]
+
     def fun(t, y):
         reached[0] = t
+        calls[0] += 1
+        if calls[0] > _MAX_EVALUATIONS:
+            raise _OverBudget
         out = rhs_one(t, y)
         if not _kernel.all_finite(out):
             # A trial stage may overshoot into a region where a force overflows: NaN makes the
@@ -663,6 +695,12 @@ def simulate(
             fun, (0.0, duration), y0, method=method, t_eval=t_eval, rtol=rtol, atol=atol,
             max_step=max_step,
         )  # fmt: skip
+    except _OverBudget:
+        raise SolverError(
+            f"the run needed more than {_MAX_EVALUATIONS} right-hand-side calls (tolerances or "
+            "max_step too tight for the duration)",
+            time=float(reached[0]),
+        ) from None
     finally:
         if bar is not None:
             bar.close()
@@ -673,9 +711,19 @@ def simulate(
                 f" The forces on the train were not finite (an overflow in the model) at {len(blocked)} "
                 f"trial stages, the last at t = {blocked[-1]:.6g} s."
             )
-        partial = model.run_from_states(sol.t, sol.y, int(sol.nfev)) if sol.t.size else None
-        raise SolverError(why, time=float(reached[0]), partial=partial)
+        raise SolverError(why, time=float(reached[0]), partial=_partial(model, sol))
     return model.run_from_states(sol.t, sol.y, int(sol.nfev))
+
+
+def _partial(model, sol):
+    """The run at the output times passed before a failure, or None where there is none to give."""
+    keep = np.isfinite(sol.y).all(axis=0) if sol.t.size else np.zeros(0, bool)
+    if not keep.any():
+        return None
+    try:
+        return model.run_from_states(sol.t[keep], sol.y[:, keep], int(sol.nfev))
+    except ValueError:  # the states had left the coupler law's domain before the failure
+        return None
 
 
 def braking_model(
@@ -695,7 +743,8 @@ def braking_model(
     Parameters
     ----------
     cars : int
-        Number of loaded hoppers (>= 1).
+        Number of loaded hoppers (>= 1); with the locomotives at most 1000 vehicles (see
+        :class:`~raildyn.train.Consist`).
     locomotives : int
         Number of SD40-2 at the front (>= 0).
     slack : float
@@ -721,8 +770,8 @@ def braking_model(
     >>> run.peak.kind
     'buff'
     """
-    cars = _checks.integer("cars", cars, low=1)
-    locomotives = _checks.integer("locomotives", locomotives, low=0)
+    cars = _checks.integer("cars", cars, low=1, high=_MAX_VEHICLES)
+    locomotives = _checks.integer("locomotives", locomotives, low=0, high=_MAX_VEHICLES - cars)
     text = f"{cars} loaded hopper" if locomotives == 0 else f"{locomotives} SD40-2 + {cars} loaded hopper"
     gear = DraftGear(slack=slack) if gear is None else gear
     return TrainModel(

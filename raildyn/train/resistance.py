@@ -46,6 +46,29 @@ MODIFIED_DAVIS_K = {"conventional": 0.07, "container": 0.0935, "trailer on flat 
 #: Curve resistance per unit mass and unit curvature, N/(kg·m⁻¹) (AREA 0.8 lb/ton per degree {hay1982}).
 CURVE_RESISTANCE = 0.8 * LBF / SHORT_TON * 18000 / np.pi * FT  # N per kg per (1/m)
 
+# Steepest grade (rise over run) a route or a grade force takes: 10 %. Adhesion main lines stay
+# under about 4 % and the steepest adhesion railways reach about 10-12 %; a train on steeper track
+# cannot be held by wheel-rail adhesion, which these models assume.
+_MAX_GRADE = 0.1
+# Sharpest curvature (1/m) a route or a resistance formula takes: 0.1, a radius of 10 m, tighter
+# than any railway curve (tram curves go down to about 15 m); the AREA formula and the coupler
+# geometry are meant for curves far gentler than this.
+_MAX_CURVATURE = 0.1
+# Fastest speed the resistance and traction formulas take, m/s: 200 (720 km/h), above the
+# wheel-rail speed record (574.8 km/h, 160 m/s, 2007); Davis's formula was fitted far below it.
+_MAX_SPEED = 200.0
+
+
+def _bounded(name, value, limit, unit):
+    """``value`` as a finite array with every entry within ±``limit`` (the stated domain)."""
+    arr = _checks.array(name, value, allow_empty=False)
+    if arr.size and np.abs(arr).max() > limit:
+        raise ValueError(f"{name} must be within ±{limit} {unit}, got {arr.flat[np.argmax(np.abs(arr))]!r}")
+    return arr
+
+
+_UNITS = {"SI": "m/s", "US": "mph"}
+
 
 def davis_resistance(
     speed,
@@ -74,11 +97,12 @@ def davis_resistance(
     Parameters
     ----------
     speed : float or array
-        Speed, m/s (``units="SI"``) or mph (``units="US"``); its sign is ignored.
+        Speed, m/s (``units="SI"``) or mph (``units="US"``); its sign is ignored; at most
+        200 m/s (447 mph), above the wheel–rail speed record, in size.
     mass : float or array
         Mass, kg (SI) or weight in short tons (US); > 0.
     axles : int or array
-        Number of axles, >= 1.
+        Number of axles, whole numbers >= 1.
     frontal_area : float or array
         m² (SI) or ft² (US), > 0; used by the original form only.
     kind : {"freight", "locomotive", "passenger"}
@@ -100,16 +124,15 @@ def davis_resistance(
     >>> round(davis_resistance(50.0, 143.0, 4, 88.0, units="US"), 1)  # one 143-ton car at 50 mph
     733.6
     """
-    if form not in ("original", "modified"):
-        raise ValueError(f"form must be 'original' or 'modified', got {form!r}")
-    if units not in ("SI", "US"):
-        raise ValueError(f"units must be 'SI' or 'US', got {units!r}")
-    if kind not in _DAVIS_ORIGINAL:
-        raise ValueError(f"kind must be one of {sorted(_DAVIS_ORIGINAL)}, got {kind!r}")
-    v = np.abs(_checks.array("speed", speed))
-    m = _checks.array("mass", mass, low=0.0, low_open=True)
-    n = _checks.array("axles", axles, low=1.0)
-    a = _checks.array("frontal_area", frontal_area, low=0.0, low_open=True)
+    _checks.choice("form", form, ("original", "modified"))
+    _checks.choice("units", units, ("SI", "US"))
+    _checks.choice("kind", kind, _DAVIS_ORIGINAL)
+    v = np.abs(_bounded("speed", speed, _MAX_SPEED if units == "SI" else _MAX_SPEED / MPH, _UNITS[units]))
+    m = _checks.array("mass", mass, low=0.0, low_open=True, allow_empty=False)
+    n = _checks.array("axles", axles, low=1.0, allow_empty=False)
+    if np.any(n != np.round(n)):
+        raise ValueError(f"axles must be whole numbers, got {axles!r}")
+    a = _checks.array("frontal_area", frontal_area, low=0.0, low_open=True, allow_empty=False)
     if drag_coefficient is not None:
         _checks.nonnegative("drag_coefficient", drag_coefficient)
     if units == "SI":
@@ -140,7 +163,8 @@ def grade_force(mass, grade):
     mass : float or array
         Mass, kg (> 0).
     grade : float or array
-        Rise over run, + uphill in the direction of travel; broadcasts against ``mass``.
+        Rise over run, + uphill in the direction of travel, within ±0.1 (steeper track cannot
+        hold a train by adhesion); broadcasts against ``mass``.
 
     Returns
     -------
@@ -152,8 +176,8 @@ def grade_force(mass, grade):
     >>> float(grade_force(1000.0, 0.01).round(2))  # one tonne on a 1 % climb
     98.06
     """
-    m = _checks.array("mass", mass, low=0.0, low_open=True)
-    gr = _checks.array("grade", grade)
+    m = _checks.array("mass", mass, low=0.0, low_open=True, allow_empty=False)
+    gr = _bounded("grade", grade, _MAX_GRADE, "(rise over run)")
     return m * GRAVITY * gr / np.sqrt(1.0 + gr**2)
 
 
@@ -165,15 +189,16 @@ def curve_resistance(mass, curvature):
     mass : float or array
         Mass, kg (> 0).
     curvature : float or array
-        1/R, 1/m (its sign, the direction of the curve, is ignored); broadcasts against ``mass``.
+        1/R, 1/m (its sign, the direction of the curve, is ignored), within ±0.1 1/m (a radius
+        of 10 m, tighter than any railway curve); broadcasts against ``mass``.
 
     Returns
     -------
     ndarray
         Resistance, N (>= 0).
     """
-    m = _checks.array("mass", mass, low=0.0, low_open=True)
-    k = np.abs(_checks.array("curvature", curvature))
+    m = _checks.array("mass", mass, low=0.0, low_open=True, allow_empty=False)
+    k = np.abs(_bounded("curvature", curvature, _MAX_CURVATURE, "1/m"))
     return CURVE_RESISTANCE * m * k
 
 
@@ -191,11 +216,15 @@ class Route:
     positions : sequence of float
         Start of each segment along the line, m; strictly increasing.
     grade : sequence of float
-        Rise over run of each segment, + uphill in the direction of travel.
+        Rise over run of each segment, + uphill in the direction of travel; within ±0.1
+        (10 %: adhesion main lines stay under about 4 %, and a train on steeper track
+        cannot be held by wheel–rail adhesion).
     curvature : sequence of float, optional
-        Horizontal curvature of each segment, 1/m (+ to the left); 0 by default.
+        Horizontal curvature of each segment, 1/m (+ to the left), within ±0.1 1/m (a
+        radius of 10 m, tighter than any railway curve); 0 by default.
     vertical_curvature : sequence of float, optional
-        Vertical curvature of each segment, 1/m (+ for a sag, − for a crest); 0 by default.
+        Vertical curvature of each segment, 1/m (+ for a sag, − for a crest), within
+        ±0.1 1/m; 0 by default.
     """
 
     positions: tuple
@@ -209,14 +238,20 @@ class Route:
     _level: bool = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        x = _checks.array("positions", self.positions, ndim=1)
-        if x.size < 1 or np.any(np.diff(x) <= 0):
-            raise ValueError(
-                f"positions must be a non-empty strictly increasing sequence, got {self.positions!r}"
-            )
-        for name in ("grade", "curvature", "vertical_curvature"):
+        x = _checks.array("positions", self.positions, ndim=1, allow_empty=False)
+        if np.any(np.diff(x) <= 0):
+            raise ValueError(f"positions must be strictly increasing, got {self.positions!r}")
+        limits = {"grade": (_MAX_GRADE, "(rise over run)"), "curvature": (_MAX_CURVATURE, "1/m")}
+        limits["vertical_curvature"] = limits["curvature"]
+        for name, (limit, unit) in limits.items():
             value = getattr(self, name)
-            arr = np.zeros(x.size) if value is None else _checks.array(name, value, shape=(x.size,))
+            if value is None and name == "grade":
+                raise TypeError("grade must be a sequence of numbers, one per segment, got None")
+            arr = np.zeros(x.size) if value is None else _bounded(name, value, limit, unit)
+            if arr.shape != (x.size,):
+                raise ValueError(
+                    f"{name} must hold one value per segment, shape ({x.size},), got {arr.shape}"
+                )
             object.__setattr__(self, name, tuple(float(a) for a in arr))
         object.__setattr__(self, "positions", tuple(float(a) for a in x))
         object.__setattr__(self, "_x", x)
@@ -240,7 +275,7 @@ class Route:
         return cls((0.0,), (0.0,))
 
     def _segment(self, position):
-        position = _checks.array("position", position)
+        position = _checks.array("position", position, allow_empty=False)
         return np.clip(np.searchsorted(self._x, position, side="right") - 1, 0, self._x.size - 1)
 
     def grade_at(self, position) -> np.ndarray:
@@ -249,7 +284,7 @@ class Route:
         Parameters
         ----------
         position : float or array
-            Position along the line, m.
+            Position along the line, m (any; the first segment extends backwards, the last forwards).
 
         Returns
         -------
@@ -264,7 +299,7 @@ class Route:
         Parameters
         ----------
         position : float or array
-            Position along the line, m.
+            Position along the line, m (any; the first segment extends backwards, the last forwards).
 
         Returns
         -------
@@ -279,7 +314,7 @@ class Route:
         Parameters
         ----------
         position : float or array
-            Position along the line, m.
+            Position along the line, m (any; the first segment extends backwards, the last forwards).
 
         Returns
         -------

@@ -45,6 +45,15 @@ class QuasiStatic:
     position: np.ndarray
     coupler_offsets: np.ndarray
 
+    def __post_init__(self):
+        external = _checks.array("external_force", self.external_force, ndim=1, allow_empty=False)
+        n = external.size
+        object.__setattr__(self, "external_force", external)
+        object.__setattr__(self, "position", _checks.array("position", self.position, shape=(n,)))
+        for name in ("coupler_force", "coupler_offsets"):
+            object.__setattr__(self, name, _checks.array(name, getattr(self, name), shape=(n - 1,)))
+        object.__setattr__(self, "acceleration", _checks.scalar("acceleration", self.acceleration))
+
     def plot(self, ax=None, *, label: str | None = None, color=None) -> dict:
         """Draw the coupler forces (kN) along the train (m behind the front).
 
@@ -96,6 +105,11 @@ class CouplerPeak:
     offset: float
     time: float
 
+    def __post_init__(self):
+        object.__setattr__(self, "coupler", _checks.integer("coupler", self.coupler, low=0))
+        for name in ("force", "offset", "time"):
+            object.__setattr__(self, name, _checks.scalar(name, getattr(self, name)))
+
     @property
     def kind(self) -> str:
         """``"draft"`` for a tension, ``"buff"`` for a compression."""
@@ -129,6 +143,21 @@ class TrainRun:
     coupler_force: np.ndarray
     coupler_offsets: np.ndarray
     evaluations: int
+
+    def __post_init__(self):
+        t = _checks.array("t", self.t, ndim=1, allow_empty=False)
+        speed = _checks.array("speed", self.speed, ndim=2, allow_empty=False)
+        n, m = speed.shape
+        if m != t.size:
+            raise ValueError(f"speed must have one column per time, shape ({n}, {t.size}), got {speed.shape}")
+        object.__setattr__(self, "t", t)
+        object.__setattr__(self, "speed", speed)
+        object.__setattr__(self, "position", _checks.array("position", self.position, shape=(n, m)))
+        force = _checks.array("coupler_force", self.coupler_force, shape=(n - 1, m))
+        object.__setattr__(self, "coupler_force", force)
+        offsets = _checks.array("coupler_offsets", self.coupler_offsets, shape=(n - 1,))
+        object.__setattr__(self, "coupler_offsets", offsets)
+        object.__setattr__(self, "evaluations", _checks.integer("evaluations", self.evaluations, low=0))
 
     @property
     def max_tension(self) -> np.ndarray:
@@ -180,8 +209,8 @@ class TrainRun:
         ax : matplotlib Axes, optional
             Axes to draw on; new ones by default. Ignored when ``artists`` is given.
         artists : dict, optional
-            The artists an earlier call returned: they are moved to this run's
-            data in place (``set_data``), nothing is drawn anew.
+            The artists an earlier call returned (keys ``draft``, ``buff`` and ``peak``):
+            they are moved to this run's data in place (``set_data``), nothing is drawn anew.
 
         Returns
         -------
@@ -197,6 +226,10 @@ class TrainRun:
             "peak": ([peak.offset], [peak.force / 1e3]),
         }
         if artists is not None:
+            _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
+            missing = [name for name in data if not hasattr(artists.get(name), "set_data")]
+            if missing:
+                raise ValueError(f"artists must hold line artists under {sorted(data)}; missing {missing}")
             for name, (u, w) in data.items():
                 artists[name].set_data(u, w)
             return artists

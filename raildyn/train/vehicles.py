@@ -79,8 +79,8 @@ class Vehicle:
         _checks.scalar(
             "truck_centres", self.truck_centres, low=0.0, high=self.length, low_open=True, high_open=True
         )
-        if self.kind not in DAVIS_KINDS:
-            raise ValueError(f"kind must be one of {DAVIS_KINDS}, got {self.kind!r}")
+        _checks.instance("name", self.name, str, "string")
+        _checks.choice("kind", self.kind, DAVIS_KINDS)
         for name in ("max_tractive_effort", "rail_power", "max_dynamic_brake", "brake_force"):
             _checks.nonnegative(name, getattr(self, name))
 
@@ -92,6 +92,11 @@ class Vehicle:
 
 #: The vehicle kinds the original Davis formula has coefficients for.
 DAVIS_KINDS = ("locomotive", "freight", "passenger")
+
+# Most vehicles in one consist. The longest train ever run had 682 wagons and 8 locomotives
+# (BHP iron ore, 2001, 7.3 km); a thousand vehicles leaves room beyond it while keeping a run's
+# arrays and the compiled right-hand side small, and stops a typing slip from building millions.
+_MAX_VEHICLES = 1000
 
 # Emergency brake retarding force of a wagon: a net braking ratio (shoe force over
 # weight) of 10 % at the AAR loaded-car level times a composition-shoe friction
@@ -155,9 +160,10 @@ class Consist:
     Parameters
     ----------
     vehicles : tuple of Vehicle
-        The vehicles, front first (at least one).
+        The vehicles, front first: at least one and at most 1000 (the longest train ever
+        run had 690 vehicles; the limit stops a typing slip from building millions).
     description : str
-        How the consist was described (``make_consist``'s text), for display.
+        How the consist was described (``make_consist``'s text), for display; any text.
 
     Attributes
     ----------
@@ -187,8 +193,9 @@ class Consist:
         if not isinstance(self.vehicles, tuple | list):
             raise TypeError(f"vehicles must be a tuple of Vehicle, got {type(self.vehicles).__name__}")
         object.__setattr__(self, "vehicles", tuple(self.vehicles))
-        if len(self.vehicles) < 1:
-            raise ValueError("a consist needs at least one vehicle, got 0")
+        if not 1 <= len(self.vehicles) <= _MAX_VEHICLES:
+            raise ValueError(f"vehicles must hold 1 to {_MAX_VEHICLES} vehicles, got {len(self.vehicles)}")
+        _checks.instance("description", self.description, str, "string")
         for i, v in enumerate(self.vehicles):
             if not isinstance(v, Vehicle):
                 raise TypeError(f"vehicles[{i}] must be a Vehicle, got {type(v).__name__}")
@@ -243,7 +250,7 @@ class Consist:
         Parameters
         ----------
         index : int
-            Index of the vehicle, 0 at the front.
+            Index of the vehicle, 0 at the front; negative counts from the rear (−n … n−1).
         **changes
             :class:`Vehicle` fields and their new values (``dataclasses.replace`` keywords).
 
@@ -268,7 +275,8 @@ def make_consist(description: str, vehicles: dict[str, Vehicle] | None = None) -
     ----------
     description : str
         Terms joined by ``+``, front first; each is ``count name`` (count >= 1; a
-        missing count means 1). Plural names ending in ``s`` are accepted.
+        missing count means 1). Plural names ending in ``s`` are accepted. At most
+        1000 vehicles in all (see :class:`Consist`).
     vehicles : dict, optional
         Name to :class:`Vehicle`; defaults to :data:`VEHICLES`.
 
@@ -282,22 +290,32 @@ def make_consist(description: str, vehicles: dict[str, Vehicle] | None = None) -
     >>> len(make_consist("2 SD40-2 + 100 loaded hoppers"))
     102
     """
-    if not isinstance(description, str) or not description.strip():
+    _checks.instance("description", description, str, "string")
+    if not description.strip():
         raise ValueError(
             f"description must be a non-empty text such as '2 SD40-2 + 50 loaded hopper', got {description!r}"
         )
-    table = VEHICLES if vehicles is None else vehicles
-    lookup = {k.lower(): v for k, v in table.items()}
+    table = VEHICLES if vehicles is None else _checks.instance("vehicles", vehicles, dict, "dict of Vehicle")
+    for key, vehicle in table.items():
+        _checks.instance(f"vehicles[{key!r}]", vehicle, Vehicle)
+    lookup = {str(k).lower(): v for k, v in table.items()}
     out: list[Vehicle] = []
     for term in description.split("+"):
         match = _TERM.match(term)
         count, name = (int(match.group(1)), match.group(2)) if match else (1, term.strip())
         if count < 1:
-            raise ValueError(f"vehicle count must be >= 1, got {count} in {term.strip()!r}")
+            raise ValueError(f"description: a vehicle count must be >= 1, got {count} in {term.strip()!r}")
+        if len(out) + count > _MAX_VEHICLES:
+            raise ValueError(
+                f"description asks for more than {_MAX_VEHICLES} vehicles (the most a consist holds), "
+                f"got {len(out) + count} by the term {term.strip()!r}"
+            )
         key = name.lower()
         if key not in lookup and key.endswith("s") and key[:-1] in lookup:
             key = key[:-1]
         if key not in lookup:
-            raise ValueError(f"unknown vehicle type {name!r}; known types: {sorted(table)}")
+            raise ValueError(
+                f"description names an unknown vehicle type {name!r}; known types: {sorted(table)}"
+            )
         out.extend([lookup[key]] * count)
     return Consist(tuple(out), description)
