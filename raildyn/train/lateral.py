@@ -140,7 +140,7 @@ def coupler_effects(consist: Consist, forces, curvature=0.0, vertical_curvature=
     curvature : float or array (n−1,)
         Horizontal curvature at each coupler, 1/m (magnitude used; the result is
         given relative to the outside of the curve); within the geometric limit of
-        :func:`~raildyn.train.coupler_angles`.
+        :func:`~raildyn.train.lateral.coupler_angles`.
     vertical_curvature : float or array (n−1,)
         1/m, + in a sag, − on a crest; within the same limit.
 

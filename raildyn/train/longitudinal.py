@@ -600,7 +600,7 @@ def simulate(
     samples : int
         Number of output times, 2 to 1000000, uniform over [0, duration].
     rtol : float
-        Relative tolerance, in [1e-13, 1) (scipy's floor is 100 machine epsilons).
+        Relative tolerance, in [1e-13, 1) (above scipy's floor of 100 machine epsilons).
         Explicit methods are held back by the stiff draft gear rather than by
         accuracy, so a tight ``rtol`` costs little: for the standard braking run
         1e-5 misplaces the peak coupler force by ~13 % and 1e-7 agrees with an
@@ -744,7 +744,7 @@ def braking_model(
     ----------
     cars : int
         Number of loaded hoppers (>= 1); with the locomotives at most 1000 vehicles (see
-        :class:`~raildyn.train.Consist`).
+        :class:`~raildyn.train.vehicles.Consist`).
     locomotives : int
         Number of SD40-2 at the front (>= 0).
     slack : float

@@ -46,10 +46,10 @@ MODIFIED_DAVIS_K = {"conventional": 0.07, "container": 0.0935, "trailer on flat 
 #: Curve resistance per unit mass and unit curvature, N/(kg·m⁻¹) (AREA 0.8 lb/ton per degree {hay1982}).
 CURVE_RESISTANCE = 0.8 * LBF / SHORT_TON * 18000 / np.pi * FT  # N per kg per (1/m)
 
-# Steepest grade (rise over run) a route or a grade force takes: 10 %. Adhesion main lines stay
-# under about 4 % and the steepest adhesion railways reach about 10-12 %; a train on steeper track
-# cannot be held by wheel-rail adhesion, which these models assume.
-_MAX_GRADE = 0.1
+# Steepest grade (rise over run) a route or a grade force takes: 15 %, beyond any adhesion
+# railway (main lines stay under about 4 %, the steepest tramways reach about 13.5 %). Steeper
+# lines are rack railways, which these models (wheel-rail adhesion) do not describe.
+_MAX_GRADE = 0.15
 # Sharpest curvature (1/m) a route or a resistance formula takes: 0.1, a radius of 10 m, tighter
 # than any railway curve (tram curves go down to about 15 m); the AREA formula and the coupler
 # geometry are meant for curves far gentler than this.
@@ -62,7 +62,7 @@ _MAX_SPEED = 200.0
 def _bounded(name, value, limit, unit):
     """``value`` as a finite array with every entry within ±``limit`` (the stated domain)."""
     arr = _checks.array(name, value, allow_empty=False)
-    if arr.size and np.abs(arr).max() > limit:
+    if np.abs(arr).max() > limit:
         raise ValueError(f"{name} must be within ±{limit} {unit}, got {arr.flat[np.argmax(np.abs(arr))]!r}")
     return arr
 
@@ -163,8 +163,8 @@ def grade_force(mass, grade):
     mass : float or array
         Mass, kg (> 0).
     grade : float or array
-        Rise over run, + uphill in the direction of travel, within ±0.1 (steeper track cannot
-        hold a train by adhesion); broadcasts against ``mass``.
+        Rise over run, + uphill in the direction of travel, within ±0.15 (steeper than any
+        adhesion railway; steeper lines use a rack); broadcasts against ``mass``.
 
     Returns
     -------
@@ -216,9 +216,9 @@ class Route:
     positions : sequence of float
         Start of each segment along the line, m; strictly increasing.
     grade : sequence of float
-        Rise over run of each segment, + uphill in the direction of travel; within ±0.1
-        (10 %: adhesion main lines stay under about 4 %, and a train on steeper track
-        cannot be held by wheel–rail adhesion).
+        Rise over run of each segment, + uphill in the direction of travel; within ±0.15
+        (steeper than any adhesion railway: main lines stay under about 4 %, the steepest
+        tramways reach about 13.5 %, and steeper lines use a rack).
     curvature : sequence of float, optional
         Horizontal curvature of each segment, 1/m (+ to the left), within ±0.1 1/m (a
         radius of 10 m, tighter than any railway curve); 0 by default.
