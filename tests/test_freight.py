@@ -18,6 +18,8 @@ from raildyn.vehicles import response as resp
 from raildyn.vehicles.freight import (
     GDU_ORE_CAR,
     FreightCar,
+    RockAndRoll,
+    WedgeFriction,
     rock_and_roll,
     wedge_energy_per_cycle,
     wedge_friction_force,
@@ -197,6 +199,42 @@ def test_bad_input():
         wedge_friction_force(1e4, 0.6, 0.1, wedges=0)
     with pytest.raises(ValueError, match="rail_length"):
         CAR.roll_input_factor(0.0)
+
+
+def test_issue_15_bad_input_is_refused_by_name():
+    with pytest.raises(TypeError, match="car must be a FreightCar"):
+        rock_and_roll("loaded hopper", [25.0], cycles=4)
+    with pytest.raises(ValueError, match="speeds must not be empty"):
+        rock_and_roll(CAR, [], cycles=4)
+    with pytest.raises(TypeError, match="progress must be True or False"):
+        rock_and_roll(CAR, [25.0], cycles=4, progress="yes")
+    # a run that would tabulate 10¹² cycles of track is refused before it starts, naming its causes
+    with pytest.raises(ValueError, match="cycles = 1000000000000 .* at most 5e\\+05"):
+        rock_and_roll(CAR, [25.0], cycles=10**12)
+    with pytest.raises(ValueError, match="rail_length"):
+        rock_and_roll(CAR, [25.0], rail_length=1e300, half_width=1.0, cycles=4)
+    # a roll stiffness that overflows, or a body so heavy that it topples, names every field involved
+    with pytest.raises(ValueError, match="semi_spring_spacing .* finite and > 0"):
+        FreightCar(semi_spring_spacing=1e300)
+    with pytest.raises(ValueError, match="body_mass .* finite and > 0"):
+        FreightCar(body_mass=1e300)
+    with pytest.raises(ValueError, match="semi_truck_wheelbase"):
+        FreightCar(semi_truck_wheelbase=10.0)
+    with pytest.raises(ValueError, match="n must be an integer in"):
+        wedge_energy_per_cycle(1.0, 0.01, 1.0, n=10**12)
+    with pytest.raises(ValueError, match="velocity_scale"):
+        wedge_energy_per_cycle(1.0, 0.01, 1.0, velocity_scale=-1.0)
+    # 4 F X stays finite for a huge amplitude: the integral is written as X ∮ F(v) cos φ dφ
+    assert wedge_energy_per_cycle(6e3, 1e300, 2.0) == pytest.approx(4 * 6e3 * 1e300, rel=1e-6)
+    with pytest.raises(ValueError, match="bolster_up"):
+        WedgeFriction(4.9e3, float("nan"))
+    r = rock_and_roll(CAR, [25.0], cycles=4)
+    with pytest.raises(ValueError, match="roll_amplitude must be >= 0"):
+        RockAndRoll(r.speeds, -r.roll_amplitude - 1.0, r.resonance_speed, r.t, r.roll)
+    with pytest.raises(TypeError, match="artists must be a dict"):
+        r.plot(artists="curve")
+    with pytest.raises(TypeError, match="resonance must be True or False"):
+        r.plot(resonance=None)
 
 
 def test_rock_and_roll_refuses_a_step_at_which_rk4_goes_unstable():

@@ -66,3 +66,29 @@ def test_bad_input():
         Locomotive(axle_spacing=7.0)
     with pytest.raises(ValueError, match="secondary_damping"):
         Locomotive(secondary_damping=-1.0)
+
+
+def test_issue_15_body_on_two_trucks_refuses_an_inconsistent_layout():
+    from raildyn.vehicles.vertical import body_on_two_trucks
+
+    a, s = LOCO.axle_spacing, LOCO.semi_truck_spacing
+    args = dict(
+        labels=("body z", "body θ", "truck1 z", "truck1 θ", "truck2 z", "truck2 θ"),
+        body_mass=LOCO.body_mass, body_pitch_inertia=LOCO.body_pitch_inertia, truck_mass=LOCO.truck_mass,
+        truck_pitch_inertia=LOCO.truck_pitch_inertia, semi_truck_spacing=s, axle_offsets=(a, 0.0, -a),
+        primary_stiffness=LOCO.primary_stiffness, primary_damping=LOCO.primary_damping,
+        secondary_stiffness=LOCO.secondary_stiffness, secondary_damping=LOCO.secondary_damping,
+        axle_positions=LOCO.axle_positions,
+    )  # fmt: skip
+    system = body_on_two_trucks(**args)
+    np.testing.assert_array_equal(system.M, LOCO.linear_system().M)
+    for change, word in (
+        (dict(axle_positions=np.zeros(6)), "axle_positions"),
+        (dict(axle_offsets=(a, a, -a)), "axle_offsets"),
+        (dict(axle_offsets=(2 * s, 0.0, -a)), "axle_offsets"),
+        (dict(semi_truck_spacing=1e300), "semi_truck_spacing"),
+        (dict(truck_mass=-1.0), "truck_mass"),
+        (dict(labels="body z"), "labels"),
+    ):
+        with pytest.raises((TypeError, ValueError), match=rf"\b{word}\b"):
+            body_on_two_trucks(**(args | change))

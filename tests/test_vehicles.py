@@ -119,3 +119,34 @@ def test_bad_input():
         Bogie(wheelset=3)
     with pytest.raises(ValueError, match="speed"):
         Car().nonlinear(speed=0.0)
+
+
+def test_issue_15_models_validate_their_fields():
+    # a body whose weight, acting h above the secondary springs, outweighs 2 k_φ would topple
+    with pytest.raises(ValueError, match="roll_stiffness .* body topples"):
+        Car(roll_stiffness=0.0)
+    with pytest.raises(ValueError, match="semi_bogie_spacing must exceed"):
+        Car(semi_bogie_spacing=1.0)
+    with pytest.raises(TypeError, match="bogie must be a Bogie"):
+        Car(bogie=None)
+    with pytest.raises(TypeError, match="secondary_yaw_damping must be a real number"):
+        Bogie(secondary_yaw_damping="0")
+    # the threshold is where the car's roll diverges: just above it the car stands
+    stands = Car(roll_stiffness=0.51 * Car().body_mass * GRAVITY * Car().body_height)
+    assert np.linalg.eigvals(stands.matrices(20.0).state_matrix()).real.max() < 0
+
+
+def test_issue_15_assemble_refuses_by_name():
+    from raildyn.linear_model import Assembler
+
+    labels = ["frame y", "frame ψ", "wheelset1 y", "wheelset1 ψ", "wheelset2 y", "wheelset2 ψ"]
+    for kwargs, word in (
+        (dict(asm=None), "asm"),
+        (dict(tag="2"), "tag"),
+        (dict(body={"car y": 1.0}), "body"),
+        (dict(body_yaw="body ψ"), "body_yaw"),
+        (dict(first_input=3), "first_input"),
+    ):
+        call = dict(asm=Assembler(labels, n_inputs=4), tag="", body={}, body_yaw=None, first_input=0) | kwargs
+        with pytest.raises((TypeError, ValueError), match=rf"\b{word}\b"):
+            Bogie().assemble(**call)

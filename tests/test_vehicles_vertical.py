@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 
 from raildyn import track
 from raildyn.constants import GRAVITY
+from raildyn.vehicles import MANCHESTER_CAR
 from raildyn.vehicles import response as resp
 from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, VerticalCar
 from raildyn.vibration import modal_analysis
@@ -183,6 +184,65 @@ def test_bad_input():
         resp.track_frf(v, [1.0], 10.0, component="gauge")
     with pytest.raises(ValueError, match="t must be uniformly"):
         resp.time_response(v, lambda x, r: 0 * x, 10.0, [0.0, 0.1, 0.3])
+
+
+def test_callbacks_are_checked_where_they_are_used():
+    """Issue 15: a spectrum or a track profile returning NaN, a negative PSD or the wrong shape passed
+    straight through rms_over_speeds and time_response."""
+    w = np.linspace(1.0, 60.0, 12)
+    speeds = np.array([20.0, 30.0])
+    for bad, what in (
+        (lambda W: np.full_like(W, np.nan), "non-finite"),
+        (lambda W: -FRA4(W), ">= 0"),
+        (lambda W: np.stack([FRA4(W)] * 2), "shape"),
+    ):
+        with pytest.raises(ValueError, match=f"psd.*{what}"):
+            resp.rms_over_speeds(CAR, bad, speeds, w)
+        with pytest.raises(ValueError, match=f"psd.*{what}"):
+            resp.response_spectrum(CAR, bad, 30.0, w)
+    with pytest.raises(ValueError, match=r"psd\['alignment'\] returned a non-finite"):
+        resp.rms_over_speeds(MANCHESTER_CAR, {"alignment": lambda W: W * np.nan}, speeds, w, "body y")
+    t = np.linspace(0.0, 0.5, 26)
+    with pytest.raises(ValueError, match="profile returned a non-finite"):
+        resp.time_response(CAR, lambda x, r: x * np.nan, 30.0, t)
+    with pytest.raises(ValueError, match="profile_rate must return an array of shape"):
+        resp.time_response(CAR, lambda x, r: 0 * x, 30.0, t, profile_rate=lambda x, r: x[:, 0])
+    with pytest.raises(TypeError, match="profile must be a callable"):
+        resp.time_response(CAR, 0.01, 30.0, t)
+    # a track below the mean line is a track: negative heights pass
+    run = resp.time_response(CAR, lambda x, r: -0.01 - 0 * x, 30.0, t)
+    assert np.all(np.isfinite(run.y))
+
+
+def test_arguments_that_are_not_models_are_refused_by_name():
+    w = np.array([1.0, 2.0])
+    with pytest.raises(TypeError, match="vehicle must be a linear model"):
+        resp.track_frf("car", w, 30.0)
+    with pytest.raises(TypeError, match="vehicle must be a linear model"):
+        resp.rms_over_speeds(None, FRA4, [30.0], w)
+    with pytest.raises(ValueError, match="omega must be at most"):
+        resp.track_frf(CAR, [1.0, 1e300], 30.0)
+    with pytest.raises(ValueError, match="omega must not be empty"):
+        resp.rms_over_speeds(CAR, FRA4, [30.0], [])
+
+
+def test_results_and_profiles_validate_their_fields():
+    with pytest.raises(ValueError, match="psd must be >= 0"):
+        resp.ResponseSpectrum(np.array([1.0, 2.0]), np.array([1.0, -1.0]), 1.0, 30.0)
+    with pytest.raises(ValueError, match="y must have shape"):
+        resp.TimeResponse(np.array([0.0, 0.1]), np.zeros(3), np.zeros((2, 4)))
+    with pytest.raises(ValueError, match="dx must be"):
+        resp.PeriodicProfile(np.zeros(8), 0.0)
+    with pytest.raises(ValueError, match="height must not be empty"):
+        resp.periodic_profile([], 0.5)
+    # the slope is derived from the heights, never given apart from them
+    z = 0.01 * np.sin(2 * np.pi * np.arange(16) / 16)
+    profile = resp.PeriodicProfile(z, 0.5)
+    np.testing.assert_allclose(profile.slopes, resp.periodic_profile(z, 0.5).slopes)
+    with pytest.raises(ValueError, match="x must contain only finite"):
+        profile.height(np.array([np.nan]))
+    with pytest.raises(TypeError, match="rails must be"):
+        profile.slope(np.array([1.0]), "left")
 
 
 # --------------------------------------------------------------------------- lateral car on the track
