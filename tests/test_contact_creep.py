@@ -16,7 +16,9 @@ from raildyn.contact import (
     KALKER_NU,
     POLACH_DRY,
     POLACH_WET,
+    CreepCoefficients,
     PolachAdhesion,
+    WheelsetCreepages,
     carter,
     carter_coefficient,
     creep_coefficients,
@@ -25,6 +27,7 @@ from raildyn.contact import (
     kalker_linear,
     polach,
     polach_adhesion,
+    saturation_factor,
     shen_hedrick_elkins,
     wheelset_creepages,
 )
@@ -280,6 +283,44 @@ def test_bad_input():
         creep_coefficients(-1e-3, 4e-3)
     with pytest.raises(ValueError, match="speed"):
         wheelset_creepages(0.0, 0, 0, 0, 0.46, 0.46, 0.46, 0.75)
+
+
+def test_user_built_inputs_are_checked():
+    # Issue 15: CreepCoefficients holding NaN was accepted; PolachAdhesion blamed `friction`.
+    with pytest.raises(ValueError, match="f22"):
+        CreepCoefficients(9.8e6, math.nan, 9.2e3, 18.0)
+    with pytest.raises(ValueError, match="f11"):
+        CreepCoefficients(-1.0, 8.7e6, 9.2e3, 18.0)
+    assert CreepCoefficients(9.8e6, 8.7e6, 0.0, 0.0).f23 == 0.0  # spin neglected
+    with pytest.raises(ValueError, match="static_friction"):
+        PolachAdhesion(k_a=1.0, k_s=0.4, static_friction=0.0, limit_ratio=0.4, decay_rate=0.6)
+    with pytest.raises(TypeError, match="coefficients"):
+        kalker_linear(1e-3, 0.0, 0.0, None)
+    with pytest.raises(TypeError, match="conditions"):
+        polach_adhesion(0.01, 0.0, 0.0, 1e5, 20.0, 6e-3, 4e-3, "dry")
+    with pytest.raises(ValueError, match=r"a/b must be in \[0.1, 10\].*a = 1e\+300"):
+        creep_coefficients(1e300, 4e-3)
+    with pytest.raises(TypeError, match="check"):
+        wheelset_creepages(40.0, 0, 0, 0, 0.46, 0.46, 0.46, 0.75, check="no")
+    with pytest.raises(TypeError, match="check"):
+        saturation_factor(1.0, 1.0, check=None)
+    with pytest.raises(ValueError, match="spin"):
+        WheelsetCreepages(np.zeros(2), np.zeros(2), np.zeros(3))
+
+
+def test_huge_creepages_saturate_instead_of_overflowing():
+    # Polach's K_M in its cancellation-free form and ε capped: full slip, no NaN.
+    r = polach(1e300, 0.0, 1e300, 1e5, 0.3, 6e-3, 4e-3)
+    assert np.isfinite([r.fx, r.fy]).all() and abs(r.fx) <= 0.3 * 1e5 * (1 + 2 / math.pi)
+    assert float(saturation_factor(1e300, 1.0)) == 1e-300
+    assert carter(1e300, 1e5, 0.3, 1e7) == -0.3 * 1e5
+
+
+def test_unchecked_creepages_equal_the_checked_ones():
+    args = (40.0, 0.01, 1e-3, 0.02, 0.46015, 0.45985, 0.46, 0.75, 0.05, -0.05)
+    checked, unchecked = wheelset_creepages(*args), wheelset_creepages(*args, check=False)
+    for name in ("longitudinal", "lateral", "spin"):
+        np.testing.assert_array_equal(getattr(checked, name), getattr(unchecked, name))
 
 
 def test_defaults_are_the_steel_constants_of_raildyn():

@@ -5,6 +5,8 @@ L₂ = 8a/(3C₂₂G), L₃ = πa√(a/b)/(4C₂₃G); Kalker 1982), full slidin
 independent cell-by-cell implementation, properties, bad input.
 """
 
+import math
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -102,7 +104,7 @@ def test_bad_input():
         fastsim(1e-3, 0, 0, N, 0.0, A, B)
     with pytest.raises(ValueError, match="normal_load"):
         fastsim(1e-3, 0, 0, -N, MU, A, B)
-    with pytest.raises(ValueError, match="a_over_b"):
+    with pytest.raises(ValueError, match="a/b must be in"):
         fastsim(1e-3, 0, 0, N, MU, A, A / 20)
     with pytest.raises(ValueError, match="n_x"):
         fastsim(1e-3, 0, 0, N, MU, A, B, n_x=1)
@@ -147,3 +149,29 @@ def test_plot_patch_draws_one_state_and_moves_its_cells():
     assert len(art["stick"].get_offsets()) == int(sliding.adhesion.sum()) < int(r.adhesion.sum())
     with pytest.raises(ValueError, match="fields"):
         fastsim(1e-3, 0.0, 0.0, N, MU, A, B, fields=False).plot_patch(ax)
+
+
+def test_huge_creepages_give_full_sliding_not_nan():
+    # Issue 15: past full sliding the forces depend on the creepages' direction only; huge creepages
+    # are scaled down together, so 1e300 gives the full-slip forces of 0.1 instead of NaN.
+    slid = fastsim(0.1, 0.05, 0.0, N, MU, A, B, fields=False)
+    huge = fastsim(1e300, 5e299, 0.0, N, MU, A, B, fields=False)
+    assert (huge.fx, huge.fy) == pytest.approx((slid.fx, slid.fy), rel=1e-9)
+    assert math.hypot(huge.fx, huge.fy) == pytest.approx(MU * N, rel=1e-12)
+    f = flexibilities(A, B)
+    ref = fastsim_reference(1e300, 5e299, 0.0, N, MU, A, B, f.l1, f.l2, f.l3)
+    assert (ref.fx, ref.fy) == pytest.approx((huge.fx, huge.fy), rel=1e-9)
+
+
+def test_reference_and_grid_sizes_are_checked():
+    f = flexibilities(A, B)
+    with pytest.raises(ValueError, match="n_x"):
+        fastsim(1e-3, 0, 0, N, MU, A, B, n_x=10**12)  # bounded: no 7 TiB allocation
+    with pytest.raises(ValueError, match="n_y"):
+        fastsim_reference(1e-3, 0, 0, N, MU, A, B, f.l1, f.l2, f.l3, n_y=10**12)  # no endless loop
+    with pytest.raises(ValueError, match="l1"):
+        fastsim_reference(1e-3, 0, 0, N, MU, A, B, 0.0, f.l2, f.l3)
+    with pytest.raises(TypeError, match="friction"):
+        fastsim_reference(1e-3, 0, 0, N, None, A, B, f.l1, f.l2, f.l3)
+    with pytest.raises(TypeError, match="fields"):
+        fastsim(1e-3, 0, 0, N, MU, A, B, fields="yes")

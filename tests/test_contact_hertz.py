@@ -126,7 +126,7 @@ def test_bad_input():
         hertz_contact(-1.0, 0.46, math.inf, 0.3)
     with pytest.raises(ValueError, match="poisson_ratio"):
         hertz_contact(1e5, 0.46, math.inf, 0.3, 2.1e11, 0.6)
-    with pytest.raises(ValueError, match="relative curvatures"):
+    with pytest.raises(ValueError, match="relative curvature B"):
         hertz_contact(1e5, 0.46, -0.2, 0.3)
     with pytest.raises(ValueError, match="wheel_transverse_radius"):
         hertz_contact(1e5, 0.46, 0.0, 0.3)

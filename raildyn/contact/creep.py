@@ -90,23 +90,34 @@ class KalkerCoefficients:
     c23: np.ndarray | float
     c33: np.ndarray | float
 
+    def __post_init__(self):
+        _checks.fields(self)
+
 
 @dataclass(frozen=True)
 class CreepCoefficients:
     """Kalker's creep coefficients of one contact.
 
+    Each is a float, or an array (one value per contact) broadcasting with the creepages
+    it multiplies; a list is stored as an array.
+
     Attributes
     ----------
-    f11 : longitudinal, G a b C₁₁ (N)
-    f22 : lateral, G a b C₂₂ (N)
-    f23 : lateral/spin, G (ab)^{3/2} C₂₃ (N m)
-    f33 : spin, G (ab)² C₃₃ (N m²)
+    f11 : longitudinal, G a b C₁₁ (N), > 0
+    f22 : lateral, G a b C₂₂ (N), > 0
+    f23 : lateral/spin, G (ab)^{3/2} C₂₃ (N m), >= 0 (0 neglects the spin coupling)
+    f33 : spin, G (ab)² C₃₃ (N m²), >= 0 (0 neglects the spin moment)
     """
 
     f11: np.ndarray | float
     f22: np.ndarray | float
     f23: np.ndarray | float
     f33: np.ndarray | float
+
+    def __post_init__(self):
+        for name, open_ in (("f11", True), ("f22", True), ("f23", False), ("f33", False)):
+            value = _checks.array(name, getattr(self, name), low=0.0, low_open=open_, allow_empty=False)
+            object.__setattr__(self, name, _out(value))
 
 
 @dataclass(frozen=True)
@@ -124,6 +135,9 @@ class CreepForces:
     fy: np.ndarray | float
     mz: np.ndarray | float | None = None
 
+    def __post_init__(self):
+        _checks.fields(self)
+
     @property
     def resultant(self):
         """√(Fx² + Fy²) (N)."""
@@ -140,8 +154,24 @@ def _poisson(poisson_ratio) -> float:
     return _checks.scalar("poisson_ratio", poisson_ratio, low=0.0, high=0.5)
 
 
-def _friction(friction) -> float:
-    return _checks.scalar("friction", friction, low=0.0, low_open=True)
+def _friction(friction, name: str = "friction") -> float:
+    return _checks.scalar(name, friction, low=0.0, low_open=True)
+
+
+def _coefficients(coefficients) -> CreepCoefficients:
+    return _checks.instance("coefficients", coefficients, CreepCoefficients)
+
+
+def _ratio(a, b) -> np.ndarray:
+    """a/b of checked semi-axes, within Kalker's table (0.1 to 10): the message names a and b."""
+    ratio = np.asarray(a / b)
+    bad = (ratio < 0.1 - 1e-12) | (ratio > 10.0 + 1e-9)
+    if np.any(bad):
+        a_bad, b_bad = (float(np.broadcast_to(v, ratio.shape)[bad].flat[0]) for v in (a, b))
+        raise ValueError(
+            f"a/b must be in [0.1, 10] (the range of Kalker's table), got a = {a_bad!r} m and b = {b_bad!r} m"
+        )
+    return ratio
 
 
 def kalker_coefficients(a_over_b, poisson_ratio) -> KalkerCoefficients:
@@ -225,7 +255,7 @@ def creep_coefficients(
     b_arr = _checks.array("b", b, low=0.0, low_open=True)
     g_mod = _checks.positive("shear_modulus", shear_modulus)
     a_arr, b_arr = np.broadcast_arrays(a_arr, b_arr)
-    c = kalker_coefficients(a_arr / b_arr, poisson_ratio)
+    c = kalker_coefficients(_ratio(a_arr, b_arr), poisson_ratio)
     ab = a_arr * b_arr
     return CreepCoefficients(
         f11=_out(g_mod * ab * c.c11),
@@ -261,7 +291,7 @@ def kalker_linear(longitudinal, lateral, spin, coefficients: CreepCoefficients) 
     xi = _checks.array("longitudinal", longitudinal)
     eta = _checks.array("lateral", lateral)
     phi = _checks.array("spin", spin)
-    f = coefficients
+    f = _coefficients(coefficients)
     return CreepForces(
         fx=_out(-f.f11 * xi + 0.0 * (eta + phi)),
         fy=_out(-f.f22 * eta - f.f23 * phi + 0.0 * xi),
@@ -333,7 +363,8 @@ def carter(longitudinal, normal_load, friction, creep_coefficient):
     mu = _friction(friction)
     f = _checks.positive("creep_coefficient", creep_coefficient)
     u = f * xi / (2 * mu * n)
-    mag = np.where(np.abs(u) < 1.0, 2 * np.abs(u) - u**2, 1.0)
+    v = np.minimum(np.abs(u), 1.0)  # |u| ≥ 1: the whole patch slides, 2v − v² = 1
+    mag = 2 * v - v**2
     return _out(-mu * n * np.sign(u) * mag)
 
 
@@ -371,6 +402,7 @@ def johnson_vermeulen(longitudinal, lateral, normal_load, friction, coefficients
     eta = _checks.array("lateral", lateral)
     n = _checks.positive("normal_load", normal_load)
     mu = _friction(friction)
+    coefficients = _coefficients(coefficients)
     lin_x = coefficients.f11 * xi
     lin_y = coefficients.f22 * eta
     psi = np.hypot(lin_x, lin_y) / (3 * mu * n)
@@ -389,12 +421,13 @@ def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
 
     Parameters
     ----------
-    force : array_like
-        Magnitude |F| of the linear (Kalker) force, N.
+    force : float or array_like
+        Magnitude |F| of the linear (Kalker) force, N, >= 0.
     limit : float
         μN, N (> 0).
     check : bool
-        Check the input (default); False for a caller that has (as :func:`wheelset_creepages`).
+        Check the input (default); False for a caller that has (as :func:`wheelset_creepages`):
+        then nothing is checked and bad input gives bad numbers.
 
     Returns
     -------
@@ -406,10 +439,12 @@ def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
     >>> float(saturation_factor(3.0e4, 1.0e4))  # u = 3: fully saturated, F_sat = μN
     0.3333333333333333
     """
-    if check:
-        force, limit = _checks.array("force", force), _checks.positive("limit", limit)
+    if check is not False:
+        _checks.flag("check", check)
+        force, limit = _checks.array("force", force, low=0.0), _checks.positive("limit", limit)
     u = np.abs(force) / limit
-    sat = np.where(u < 3.0, u - u**2 / 3.0 + u**3 / 27.0, 1.0)
+    v = np.minimum(u, 3.0)  # u ≥ 3: saturated, v − v²/3 + v³/27 = 1 (and no overflow for a huge u)
+    sat = v - v**2 / 3.0 + v**3 / 27.0
     return np.divide(sat, u, out=np.ones_like(u), where=u > 0)
 
 
@@ -529,8 +564,11 @@ def _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus
     a = _checks.positive("a", a)
     b = _checks.positive("b", b)
     g_mod = _checks.positive("shear_modulus", shear_modulus)
-    c = kalker_coefficients(a / b, poisson_ratio)
+    c = kalker_coefficients(_ratio(a, b), poisson_ratio)
     return (*np.broadcast_arrays(xi, eta, phi), q, a, b, g_mod, c)
+
+
+_EPS_MAX = 1e100  # Polach's ε and ε_M beyond which the creep force is that of full slip to rounding
 
 
 def _polach(xi, eta, phi, q, a, b, g_mod, c, mu, k_a, k_s) -> CreepForces:
@@ -540,15 +578,19 @@ def _polach(xi, eta, phi, q, a, b, g_mod, c, mu, k_a, k_s) -> CreepForces:
     s = np.hypot(xi, eta)
     safe_s = np.where(s > 0, s, 1.0)
     c_jj = np.where(s > 0, np.hypot(c.c11 * xi / safe_s, c.c22 * eta / safe_s), c.c22)
-    eps = g_mod * np.pi * a * b * c_jj * s_c / (4 * q * mu)
+    # Past ε = 1e100 the force is the full-slip 2Qμ/π·π/2 to double precision: the cap keeps huge
+    # creepages (or moduli) from overflowing to inf/inf.
+    eps = np.minimum(g_mod * np.pi * a * b * c_jj * s_c / (4 * q * mu), _EPS_MAX)
     force = 2 * q * mu / np.pi * (k_a * eps / (1 + (k_a * eps) ** 2) + np.arctan(k_s * eps))
     safe_sc = np.where(s_c > 0, s_c, 1.0)
     k_m_factor = 1 + 6.3 * (1 - np.exp(-a / b))
     # ε_M grows with the whole creepage s_C (not with |η_C| alone): then for small creepage
     # the spin force is Kalker's −f₂₃φ whatever ξ is (tests/test_contact_creep.py).
-    eps_m = 8.0 / 3.0 * g_mod * b * np.sqrt(a * b) * c.c23 * s_c / (q * mu * k_m_factor)
-    delta = (eps_m**2 - 1) / (eps_m**2 + 1)
-    k_m = np.abs(eps_m) * (delta**3 / 3 - delta**2 / 2 + 1 / 6) - np.sqrt((1 - delta**2) ** 3) / 3
+    eps_m = np.minimum(8.0 / 3.0 * g_mod * b * np.sqrt(a * b) * c.c23 * s_c / (q * mu * k_m_factor), _EPS_MAX)
+    # Polach's K_M = |ε_M|(δ³/3 − δ²/2 + 1/6) − √((1 − δ²)³)/3 with δ = (ε_M² − 1)/(ε_M² + 1) is, exactly,
+    # −(2/3)|ε_M|/(1 + ε_M²)²: the same numbers without the cancellation that the first form suffers
+    # at large ε_M (and its inf/inf once ε_M² overflows).
+    k_m = -2.0 / 3.0 * eps_m / (1 + eps_m**2) / (1 + eps_m**2)
     fy_spin = 9 / 16 * a * q * mu * k_m * k_m_factor * phi / safe_sc
     fx = np.where(s_c > 0, -force * xi / safe_sc, 0.0)
     fy = np.where(s_c > 0, -force * eta / safe_sc + fy_spin, 0.0)
@@ -585,7 +627,7 @@ class PolachAdhesion:
     def __post_init__(self):
         _checks.scalar("k_a", self.k_a, low=0.0, high=1.0, low_open=True)
         _checks.scalar("k_s", self.k_s, low=0.0, high=1.0, low_open=True)
-        _friction(self.static_friction)
+        _friction(self.static_friction, "static_friction")
         _checks.scalar("limit_ratio", self.limit_ratio, low=0.0, high=1.0, low_open=True)
         _checks.nonnegative("decay_rate", self.decay_rate)
 
@@ -607,9 +649,7 @@ class PolachAdhesion:
         >>> POLACH_DRY.friction(0.0), round(POLACH_DRY.friction(1e3), 6)
         (0.55, 0.22)
         """
-        w = _checks.array("slip_speed", slip_speed)
-        if np.any(w < 0):
-            raise ValueError(f"slip_speed must be >= 0 m/s, got a minimum of {w.min()!r}")
+        w = _checks.array("slip_speed", slip_speed, low=0.0)
         a = self.limit_ratio
         return _out(self.static_friction * ((1 - a) * np.exp(-self.decay_rate * w) + a))
 
@@ -670,8 +710,7 @@ def polach_adhesion(
     >>> bool(-fx[1] < -fx[0])
     True
     """
-    if not isinstance(conditions, PolachAdhesion):
-        raise TypeError(f"conditions must be a PolachAdhesion, got {type(conditions).__name__}")
+    _checks.instance("conditions", conditions, PolachAdhesion)
     inputs = _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio)
     v = _checks.positive("speed", speed)
     xi, eta = inputs[:2]
@@ -691,11 +730,34 @@ class WheelsetCreepages:
         η (the same at both wheels in this kinematic form).
     spin : ndarray, shape (2, ...)
         φ (1/m).
+
+    The three arrays are finite and of one shape (2, ...).
     """
 
     longitudinal: np.ndarray
     lateral: np.ndarray
     spin: np.ndarray
+
+    def __post_init__(self):
+        _checks.fields(self)
+        shape = np.shape(self.longitudinal)
+        for name in ("longitudinal", "lateral", "spin"):
+            value = np.asarray(getattr(self, name), dtype=float)
+            if value.ndim == 0 or value.shape[0] != 2 or value.shape != shape:
+                raise ValueError(
+                    f"{name} must have the shape (2, ...) of longitudinal (left, right), "
+                    f"{shape}, got shape {value.shape}"
+                )
+            object.__setattr__(self, name, value)
+
+
+def _unchecked_creepages(longitudinal, lateral, spin) -> WheelsetCreepages:
+    """A :class:`WheelsetCreepages` built without its check, for the unchecked path (a right-hand side)."""
+    out = object.__new__(WheelsetCreepages)
+    object.__setattr__(out, "longitudinal", longitudinal)
+    object.__setattr__(out, "lateral", lateral)
+    object.__setattr__(out, "spin", spin)
+    return out
 
 
 def wheelset_creepages(
@@ -738,7 +800,7 @@ def wheelset_creepages(
     contact_angle_left, contact_angle_right : float or array_like
         δ_L, δ_R (rad).
     check : bool
-        Check the input (default). A caller that has checked it already, such as
+        Check the input and the result (default). A caller that has checked it already, such as
         the right-hand side of :class:`raildyn.wheelset.NonlinearLateral` evaluated
         thousands of times a run, passes False: bad input then gives bad numbers.
 
@@ -755,10 +817,12 @@ def wheelset_creepages(
     >>> np.round(c.longitudinal * 1e4, 4).tolist()
     [-3.2609, 3.2609]
     """
-    if not check:
-        return _wheelset_creepages(speed, lateral_velocity, yaw_angle, yaw_rate, rolling_radius_left,
-                                   rolling_radius_right, nominal_radius, half_gauge, contact_angle_left,
-                                   contact_angle_right)  # fmt: skip
+    if check is False:
+        return _unchecked_creepages(*_wheelset_creepages(
+            speed, lateral_velocity, yaw_angle, yaw_rate, rolling_radius_left, rolling_radius_right,
+            nominal_radius, half_gauge, contact_angle_left, contact_angle_right,
+        ))  # fmt: skip
+    _checks.flag("check", check)
     v = _checks.positive("speed", speed)
     r0 = _checks.positive("nominal_radius", nominal_radius)
     l_half = _checks.positive("half_gauge", half_gauge)
@@ -769,11 +833,11 @@ def wheelset_creepages(
     r_r = _checks.array("rolling_radius_right", rolling_radius_right, low=0.0, low_open=True)
     d_l = _checks.array("contact_angle_left", contact_angle_left)
     d_r = _checks.array("contact_angle_right", contact_angle_right)
-    return _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r)
+    return WheelsetCreepages(*_wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r))
 
 
-def _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r) -> WheelsetCreepages:
-    """The creepages of :func:`wheelset_creepages` from checked arrays."""
+def _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r):
+    """ξ, η, φ of :func:`wheelset_creepages`, each of shape (2, ...), from checked arrays."""
     yaw, spin = l_half * psi_dot / v, psi_dot / v
     parts = (
         (r0 - r_l) / r0 - yaw,
@@ -787,6 +851,4 @@ def _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r) 
     if len({np.shape(p) for p in parts}) > 1:
         parts = np.broadcast_arrays(*parts)
     xi_l, xi_r, eta, phi_l, phi_r = parts
-    return WheelsetCreepages(
-        longitudinal=np.array((xi_l, xi_r)), lateral=np.array((eta, eta)), spin=np.array((phi_l, phi_r))
-    )
+    return np.array((xi_l, xi_r)), np.array((eta, eta)), np.array((phi_l, phi_r))

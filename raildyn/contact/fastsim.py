@@ -31,7 +31,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
-from raildyn.contact.creep import kalker_coefficients
+from raildyn.contact.creep import _ratio, kalker_coefficients
 
 __all__ = ["FastsimResult", "Flexibilities", "fastsim", "fastsim_reference", "flexibilities"]
 
@@ -67,6 +67,9 @@ class FastsimResult:
         μ of each state.
     a, b : float or ndarray or None
         Semi-axes of each state's ellipse (m).
+
+    The fields (``x`` to ``adhesion``) are all given or all None; given, they share one
+    non-empty shape S + (n_y, n_x), and ``adhesion`` holds bools.
     """
 
     fx: np.ndarray | float
@@ -84,6 +87,28 @@ class FastsimResult:
     friction: np.ndarray | float | None = None
     a: np.ndarray | float | None = None
     b: np.ndarray | float | None = None
+
+    def __post_init__(self):
+        _checks.fields(self)
+        grids = {k: getattr(self, k) for k in ("x", "y", "px", "py", "pz", "slip_x", "slip_y", "adhesion")}
+        missing = [k for k, v in grids.items() if v is None]
+        if missing and len(missing) < len(grids):
+            given = next(k for k in grids if k not in missing)
+            raise ValueError(
+                f"{missing[0]} must be given with {given} (the fields of fastsim come together), got None"
+            )
+        if missing:
+            return
+        shape = np.shape(self.x)
+        if len(shape) < 2 or 0 in shape:
+            raise ValueError(f"x must be a non-empty array of shape S + (n_y, n_x), got shape {shape}")
+        for k, v in grids.items():
+            if np.shape(v) != shape:
+                raise ValueError(f"x and {k} must have one shape, got {shape} and {np.shape(v)}")
+        if np.asarray(self.adhesion).dtype != bool:
+            raise TypeError(
+                f"adhesion must be an array of bool (True where the cell sticks), got {self.adhesion!r:.80}"
+            )
 
     @property
     def adhesion_fraction(self):
@@ -126,6 +151,8 @@ class FastsimResult:
         """
         if self.adhesion is None or self.adhesion.ndim != 2 or self.friction is None:
             raise ValueError("plot_patch needs the fields of one contact state: fastsim(..., fields=True)")
+        if artists is not None:
+            _checks.instance("artists", artists, dict, "dict returned by an earlier plot_patch")
         xy = np.c_[1e3 * self.x.ravel(), 1e3 * self.y.ravel()]
         sticks = self.adhesion.ravel()
         b_mm = 1e3 * float(self.b)
@@ -175,6 +202,9 @@ class Flexibilities:
     l2: np.ndarray | float
     l3: np.ndarray | float
 
+    def __post_init__(self):
+        _checks.fields(self)
+
 
 def flexibilities(
     a, b, shear_modulus=STEEL_SHEAR_MODULUS, poisson_ratio=STEEL_POISSON_RATIO
@@ -206,7 +236,7 @@ def flexibilities(
     a = _checks.array("a", a, low=0.0, low_open=True)
     b = _checks.array("b", b, low=0.0, low_open=True)
     g = _checks.positive("shear_modulus", shear_modulus)
-    c = kalker_coefficients(a / b, poisson_ratio)
+    c = kalker_coefficients(_ratio(a, b), poisson_ratio)
 
     def out(v):
         return float(v) if np.ndim(v) == 0 else v
@@ -216,6 +246,30 @@ def flexibilities(
         l2=out(8 * a / (3 * c.c22 * g)),
         l3=out(np.pi * a * np.sqrt(a / b) / (4 * c.c23 * g)),
     )
+
+
+_CELLS_MAX = 1000  # cells per strip and strips: the error, O(1/n²), is then far below the theory's own
+_SLIDING = 1e12  # creepage, in units of the one of full sliding, beyond which creepages are scaled down
+
+
+def _within_sliding(xi, eta, phi, a, b, l1, l2, l3, bound):
+    """ξ, η, φ scaled down together (direction kept) to at most 1e12 times the size of full sliding.
+
+    The rigid-slip traction grows over the patch by |ξ|a/L₁, |η|a/L₂ and |φ|max(a, b)a/L₃; past
+    ``bound`` (μp₀) every cell slides along the rigid slip, so the forces depend on the creepages'
+    ratios only and the scaling changes them by ~1/_SLIDING, while no traction rate can overflow.
+    """
+    size = np.maximum(np.maximum(np.abs(xi), np.abs(eta)), np.abs(phi) * np.maximum(a, b))
+    safe = np.where(size > 0, size, 1.0)
+    # Growth across the patch in units of the bound, per unit of ``size``: finite, moderate.
+    growth = np.maximum(
+        np.maximum(np.abs(xi) / safe * (a / (l1 * bound)), np.abs(eta) / safe * (a / (l2 * bound))),
+        np.abs(phi) * np.maximum(a, b) / safe * (a / (l3 * bound)),
+    )
+    with np.errstate(over="ignore", divide="ignore"):  # an inf here means "far from sliding": no scaling
+        target = _SLIDING / growth  # the size at which the patch slides _SLIDING times over
+        factor = np.where(size > target, target / safe, 1.0)
+    return xi * factor, eta * factor, phi * factor
 
 
 def fastsim(
@@ -252,9 +306,17 @@ def fastsim(
     poisson_ratio : float
         ν in [0, 0.5]; :data:`raildyn.constants.STEEL_POISSON_RATIO` by default.
     n_x, n_y : int, keyword
-        Cells per strip and number of strips (≥ 2).
+        Cells per strip and number of strips, 2 to 1000: the forces converge as 1/n², so that
+        1000 is far past any accuracy the simplified theory has (a few per cent).
     fields : bool, keyword
         Keep the traction and slip fields (memory S × n_y × n_x per field).
+
+    Notes
+    -----
+    Past full sliding the forces depend on the direction of the creepages only (every cell
+    slides along the rigid slip): creepages beyond 10¹² times the size that makes the
+    patch slide are scaled down together to that size, which changes the forces by less
+    than 1e-9 of μN and keeps every traction rate finite, however large the creepage.
 
     Returns
     -------
@@ -276,8 +338,9 @@ def fastsim(
     a = _checks.array("a", a, low=0.0, low_open=True)
     b = _checks.array("b", b, low=0.0, low_open=True)
     g_mod = _checks.positive("shear_modulus", shear_modulus)
-    n_x = _checks.integer("n_x", n_x, low=2)
-    n_y = _checks.integer("n_y", n_y, low=2)
+    n_x = _checks.integer("n_x", n_x, low=2, high=_CELLS_MAX)
+    n_y = _checks.integer("n_y", n_y, low=2, high=_CELLS_MAX)
+    fields = _checks.flag("fields", fields)
     flex = flexibilities(a, b, g_mod, poisson_ratio)
     xi, eta, phi, load, mu, a, b, l1, l2, l3 = np.broadcast_arrays(
         xi, eta, phi, load, mu, a, b, flex.l1, flex.l2, flex.l3
@@ -295,7 +358,10 @@ def fastsim(
     pz_grid = np.clip(1.0 - x_rel**2 - eta_y[:, None] ** 2, 0.0, None)
     grid_area = (pz_grid * (2.0 * np.sqrt(1.0 - eta_y**2) / n_x)[:, None]).sum() * 2.0 / n_y  # → π/2
     p0 = load / (a * b * grid_area)
-    bound_scale = (mu * p0)[e]
+    with np.errstate(over="ignore"):  # μp₀ = inf for an absurd μ: nothing slides, which is what it means
+        limit = mu * p0
+    xi, eta, phi = _within_sliding(xi, eta, phi, a, b, l1, l2, l3, limit)
+    bound_scale = limit[e]
     # Traction rates of the adhesion solution: ∂p_x/∂x = ξ/L₁ − φy/L₃, ∂p_y/∂x = η/L₂ + φx/L₃.
     rate_x = (xi / l1)[e] - (phi / l3)[e] * y
     rate_y = (eta / l2)[e]
@@ -310,7 +376,6 @@ def fastsim(
         out = {k: np.empty(shape) for k in ("x", "px", "py", "pz", "sx", "sy")}
         stick = np.empty(shape, dtype=bool)
     cell = dx * dy
-    floor = 1e-30  # Pa; guards 0/0 at zero creepage, far below any traction that matters
     for k in range(n_x):
         x = half - (k + 0.5) * dx
         step = 0.5 * dx if k == 0 else dx
@@ -320,7 +385,7 @@ def fastsim(
         ty = py - rate_y * step - spin_y * step * (x + 0.5 * step)
         bound = bound_scale * pz_grid[:, k]  # the pressure shape depends on (strip, cell) only
         magnitude = np.hypot(tx, ty)
-        factor = np.minimum(1.0, bound / np.maximum(magnitude, floor))
+        factor = np.divide(bound, magnitude, out=np.ones_like(magnitude), where=magnitude > bound)
         px, py = tx * factor, ty * factor
         fx += px * cell
         fy += py * cell
@@ -365,7 +430,8 @@ def fastsim_reference(
 
     It exists as the independent, straightforward implementation that the tests
     and the chapter 4 benchmark compare the vectorized one with; it takes the
-    flexibilities directly and checks nothing.
+    flexibilities directly. Its input is checked as that of :func:`fastsim`, and huge
+    creepages are scaled down in the same way.
 
     Parameters
     ----------
@@ -374,15 +440,15 @@ def fastsim_reference(
     spin : float
         φ (1/m).
     normal_load : float
-        N (N).
+        N (N), > 0.
     friction : float
-        μ.
+        μ > 0.
     a, b : float
-        Semi-axes (m).
+        Semi-axes (m), > 0, with 0.1 ≤ a/b ≤ 10 as for :func:`fastsim`.
     l1, l2, l3 : float
-        Flexibilities (m/Pa), e.g. from :func:`flexibilities`.
+        Flexibilities (m/Pa), > 0, e.g. from :func:`flexibilities`.
     n_x, n_y : int
-        Cells per strip and strips.
+        Cells per strip and strips, 2 to 1000.
 
     Returns
     -------
@@ -396,6 +462,18 @@ def fastsim_reference(
     >>> bool(abs(ref.fx - fastsim(1e-3, 0.0, 0.0, 1e5, 0.3, 6e-3, 4e-3).fx) < 1e-6)
     True
     """
+    longitudinal, lateral, spin = (
+        _checks.scalar(k, v)
+        for k, v in (("longitudinal", longitudinal), ("lateral", lateral), ("spin", spin))
+    )
+    normal_load, friction, a, b, l1, l2, l3 = (
+        _checks.positive(k, v)
+        for k, v in (("normal_load", normal_load), ("friction", friction), ("a", a), ("b", b),
+                     ("l1", l1), ("l2", l2), ("l3", l3))
+    )  # fmt: skip
+    n_x = _checks.integer("n_x", n_x, low=2, high=_CELLS_MAX)
+    n_y = _checks.integer("n_y", n_y, low=2, high=_CELLS_MAX)
+    _ratio(a, b)  # the domain of fastsim, whose flexibilities come from Kalker's table
     dy = 2.0 * b / n_y
     total = 0.0  # the grid integral of the parabolic pressure shape, normalised as in fastsim
     for j in range(n_y):
@@ -404,6 +482,8 @@ def fastsim_reference(
             xr = math.sqrt(1.0 - yr * yr) * (1.0 - (k + 0.5) * 2.0 / n_x)
             total += max(0.0, 1.0 - xr * xr - yr * yr) * 2.0 * math.sqrt(1.0 - yr * yr) / n_x * 2.0 / n_y
     p0 = normal_load / (a * b * total)
+    scaled = _within_sliding(longitudinal, lateral, spin, a, b, l1, l2, l3, friction * p0)
+    longitudinal, lateral, spin = (float(v) for v in scaled)
     fx = fy = mz = 0.0
     for j in range(n_y):
         yr = (j + 0.5) / n_y * 2.0 - 1.0

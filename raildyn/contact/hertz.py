@@ -14,7 +14,7 @@ the elliptic-integral forms follow Johnson, *Contact Mechanics* (1985), §4.2.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from scipy import special
@@ -80,6 +80,9 @@ class HertzCoefficients:
     m: float | np.ndarray
     n: float | np.ndarray
 
+    def __post_init__(self):
+        _checks.fields(self)
+
 
 def hertz_coefficients(theta) -> HertzCoefficients:
     """Hertz's coefficients m and n for the angle θ with cos θ = |B − A|/(A + B).
@@ -103,8 +106,8 @@ def hertz_coefficients(theta) -> HertzCoefficients:
     >>> round(h.m, 3), round(h.n, 3)
     (1.486, 0.717)
     """
-    th = np.asarray(theta, dtype=float)
-    if not np.all(np.isfinite(th)) or np.any(th <= 0) or np.any(th > np.pi / 2 + 1e-12):
+    th = _checks.array("theta", theta)
+    if np.any(th <= 0) or np.any(th > np.pi / 2 + 1e-12):
         raise ValueError(f"theta must be in (0, π/2] radians, got {theta!r}")
     k = _ratio_from_cos_theta(np.abs(np.cos(th)))
     m, n = _shape_factors(k)
@@ -150,6 +153,10 @@ class HertzContact:
     curvature_sum: float
     normal_load: float
 
+    def __post_init__(self):
+        for f in fields(self):
+            _checks.scalar(f.name, getattr(self, f.name))
+
     @property
     def a_over_b(self) -> float:
         """Ellipse ratio a/b, the argument of Kalker's coefficient table."""
@@ -160,10 +167,10 @@ class HertzContact:
 
         Parameters
         ----------
-        x : array_like
-            Distance from the centre along the rolling direction, m.
-        y : array_like
-            Distance from the centre across the rail, m; broadcast with ``x``.
+        x : float or array_like
+            Distance from the centre along the rolling direction, m, finite, any sign.
+        y : float or array_like
+            Distance from the centre across the rail, m, finite, any sign; broadcast with ``x``.
 
         Returns
         -------
@@ -176,18 +183,18 @@ class HertzContact:
         >>> bool(c.pressure(0.0, 0.0) == c.peak_pressure), float(c.pressure(c.a, 0.0))
         (True, 0.0)
         """
-        r2 = (np.asarray(x) / self.a) ** 2 + (np.asarray(y) / self.b) ** 2
-        return self.peak_pressure * np.sqrt(np.clip(1.0 - r2, 0.0, None))
+        r = np.minimum(np.hypot(_checks.array("x", x) / self.a, _checks.array("y", y) / self.b), 1.0)
+        return self.peak_pressure * np.sqrt(1.0 - r**2)
 
 
 def _curvature(name: str, radius) -> float:
     """1/R for a signed radius (m); ``math.inf`` gives a flat direction (0)."""
-    if isinstance(radius, bool) or not isinstance(radius, (int, float, np.floating, np.integer)):
-        raise TypeError(f"{name} must be a real number, got {radius!r}")
-    r = float(radius)
-    if math.isnan(r) or r == 0.0:
+    if radius == math.inf:
+        return 0.0
+    r = _checks.scalar(name, radius)
+    if r == 0.0:
         raise ValueError(f"{name} must be a non-zero radius in m (math.inf if straight), got {radius!r}")
-    return 0.0 if math.isinf(r) else 1.0 / r
+    return 1.0 / r
 
 
 def hertz_contact(
@@ -209,18 +216,21 @@ def hertz_contact(
     wheel_rolling_radius : float
         Rolling radius of the wheel R₁ (m), > 0.
     wheel_transverse_radius : float
-        Radius of the wheel profile across the rail R₁′ (m): positive when convex,
+        Radius of the wheel profile across the rail R₁′ (m), non-zero: positive when convex,
         negative when concave (a hollow tread or the flange root), ``math.inf``
         for a conical tread.
     rail_transverse_radius : float
-        Radius of the rail head across the rail R₂′ (m), positive convex,
-        ``math.inf`` for a flat rail.
+        Radius of the rail head across the rail R₂′ (m), non-zero, positive convex,
+        ``math.inf`` for a flat rail. The transverse curvatures must add up to
+        B = ½(1/R₁′ + 1/R₂′) > 0, and the rolling ones to A = ½(1/R₁ + 1/R₂) > 0: else
+        the bodies do not touch in an ellipse.
     youngs_modulus : float
         E (Pa), for both bodies; default :data:`raildyn.constants.STEEL_YOUNGS_MODULUS` (210 GPa).
     poisson_ratio : float
         ν in [0, 0.5); default :data:`raildyn.constants.STEEL_POISSON_RATIO` (0.3).
     rail_rolling_radius : float, keyword
-        Radius of the rail along the track (m); ``math.inf`` for straight track.
+        Radius of the rail along the track (m), non-zero (negative in a sag); ``math.inf``
+        for straight track.
 
     Returns
     -------
@@ -253,11 +263,16 @@ def hertz_contact(
         _curvature("wheel_transverse_radius", wheel_transverse_radius)
         + _curvature("rail_transverse_radius", rail_transverse_radius)
     )
-    if big_a <= 0 or big_b <= 0:
-        raise ValueError(
-            "the relative curvatures A (rolling) and B (transverse) must both be positive for an "
-            f"elliptical contact, got A = {big_a:.4g} 1/m and B = {big_b:.4g} 1/m; check the radii's signs"
-        )
+    for big, what, one, other in (
+        (big_a, "A (rolling)", "wheel_rolling_radius", "rail_rolling_radius"),
+        (big_b, "B (transverse)", "wheel_transverse_radius", "rail_transverse_radius"),
+    ):
+        if big <= 0:
+            raise ValueError(
+                f"the relative curvature {what} = ½(1/{one} + 1/{other}) must be positive for an elliptical "
+                f"contact, got {big:.4g} 1/m; check the signs of {one} and {other} (a concave surface "
+                "must be the less curved)"
+            )
     total = big_a + big_b
     cos_theta = abs(big_b - big_a) / total
     k = _ratio_from_cos_theta(np.array(cos_theta))

@@ -18,8 +18,11 @@ from raildyn import contact
 # Changes a result dataclass holds without complaint: its fields are whatever a model computed
 # (a force, a creepage or a position of any sign, a zero); NaN, inf, strings and None are refused.
 RESULT = {"*": "zero negative"}
-# Creepages (ξ, η, φ), lateral speeds and positions, angles: any sign, zero included.
-SIGNED = "zero negative"
+# The same where every field may hold an array: a list of numbers is read as one.
+RESULT_ARRAYS = {"*": "zero negative list"}
+# Creepages (ξ, η, φ), lateral speeds and positions, angles: any sign, zero included; a parameter
+# documented as "float or array_like" takes a list of numbers.
+SIGNED = "zero negative list"
 ETA = np.array([0.0, 2e-3, 1e-2])
 
 
@@ -103,14 +106,14 @@ def _rail_fields():
 
 ENTRIES = [
     # --------------------------------------------------------------- Hertz
-    fuzz("raildyn.contact.HertzCoefficients", lambda: call(1.0, 1.486, 0.717), accepts=RESULT),
+    fuzz("raildyn.contact.HertzCoefficients", lambda: call(1.0, 1.486, 0.717), accepts=RESULT_ARRAYS),
     fuzz("raildyn.contact.HertzContact", _hertz_fields, accepts=RESULT),
     fuzz(
         "raildyn.contact.HertzContact.pressure",
         lambda: on(hertz(), 1e-3, 5e-4),
         accepts={"x": SIGNED, "y": SIGNED},
     ),
-    fuzz("raildyn.contact.hertz_coefficients", lambda: call(math.radians(60))),
+    fuzz("raildyn.contact.hertz_coefficients", lambda: call(math.radians(60)), accepts={"theta": "list"}),
     fuzz(
         "raildyn.contact.hertz_contact",
         lambda: call(1e5, 0.46, -0.5, 0.3),
@@ -123,20 +126,33 @@ ENTRIES = [
         },
     ),
     # --------------------------------------------------------------- creep laws
-    fuzz("raildyn.contact.KalkerCoefficients", lambda: call(4.12, 3.67, 1.47, 1.19), accepts=RESULT),
+    fuzz("raildyn.contact.KalkerCoefficients", lambda: call(4.12, 3.67, 1.47, 1.19), accepts=RESULT_ARRAYS),
     fuzz(
         "raildyn.contact.CreepCoefficients",
         lambda: call(9.8e6, 8.7e6, 9.2e3, 1.8e1),
-        accepts={"f23": "zero", "f33": "zero"},
+        # One value per contact in an array (a list is stored as one); f₂₃ = f₃₃ = 0 neglects spin.
+        accepts={"f11": "list", "f22": "list", "f23": "zero list", "f33": "zero list"},
     ),
-    fuzz("raildyn.contact.CreepForces", lambda: call(-100.0, 50.0, 1.0), accepts=RESULT),
+    fuzz(
+        "raildyn.contact.CreepForces",
+        lambda: call(-100.0, 50.0, 1.0),
+        accepts={**RESULT_ARRAYS, "mz": "none"},  # mz is None for the laws that give no spin moment
+    ),
     fuzz(
         "raildyn.contact.WheelsetCreepages",
         lambda: call(np.array([1e-3, -1e-3]), np.array([2e-3, 2e-3]), np.array([0.1, -0.1])),
         accepts=RESULT,
     ),
-    fuzz("raildyn.contact.kalker_coefficients", lambda: call(1.5, 0.25), accepts={"poisson_ratio": "zero"}),
-    fuzz("raildyn.contact.creep_coefficients", lambda: call(6e-3, 4e-3), accepts={"poisson_ratio": "zero"}),
+    fuzz(
+        "raildyn.contact.kalker_coefficients",
+        lambda: call(1.5, 0.25),
+        accepts={"a_over_b": "list", "poisson_ratio": "zero"},
+    ),
+    fuzz(
+        "raildyn.contact.creep_coefficients",
+        lambda: call(6e-3, 4e-3),
+        accepts={"a": "list", "b": "list", "poisson_ratio": "zero"},
+    ),
     fuzz(
         "raildyn.contact.kalker_linear",
         lambda: call(1e-3, 2e-3, 0.1, coefficients()),
@@ -149,7 +165,7 @@ ENTRIES = [
         lambda: call(1e-3, 2e-3, 1e5, 0.3, coefficients()),
         accepts={"longitudinal": SIGNED, "lateral": SIGNED},
     ),
-    fuzz("raildyn.contact.saturation_factor", lambda: call(3e4, 1e4), accepts={"force": "zero"}),
+    fuzz("raildyn.contact.saturation_factor", lambda: call(3e4, 1e4), accepts={"force": "zero list"}),
     fuzz(
         "raildyn.contact.shen_hedrick_elkins",
         lambda: call(1e-3, 2e-3, 0.1, 1e5, 0.3, coefficients()),
@@ -168,7 +184,7 @@ ENTRIES = [
     fuzz(
         "raildyn.contact.PolachAdhesion.friction",
         lambda: on(contact.POLACH_DRY, 0.5),
-        accepts={"slip_speed": "zero"},
+        accepts={"slip_speed": "zero list"},
     ),
     fuzz(
         "raildyn.contact.polach_adhesion",
@@ -179,6 +195,8 @@ ENTRIES = [
         "raildyn.contact.wheelset_creepages",
         lambda: call(40.0, 0.01, 1e-3, 0.02, 0.46015, 0.45985, 0.46, 0.75, 0.05, -0.05),
         accepts={
+            "rolling_radius_left": "list",
+            "rolling_radius_right": "list",
             "lateral_velocity": SIGNED,
             "yaw_angle": SIGNED,
             "yaw_rate": SIGNED,
@@ -187,14 +205,35 @@ ENTRIES = [
         },
     ),
     # --------------------------------------------------------------- FASTSIM
-    fuzz("raildyn.contact.Flexibilities", lambda: call(1e-14, 2e-14, 3e-14), accepts=RESULT),
-    fuzz("raildyn.contact.flexibilities", lambda: call(6e-3, 4e-3), accepts={"poisson_ratio": "zero"}),
-    fuzz("raildyn.contact.FastsimResult", _fastsim_fields, accepts=RESULT),
+    fuzz("raildyn.contact.Flexibilities", lambda: call(1e-14, 2e-14, 3e-14), accepts=RESULT_ARRAYS),
+    fuzz(
+        "raildyn.contact.flexibilities",
+        lambda: call(6e-3, 4e-3),
+        accepts={"a": "list", "b": "list", "poisson_ratio": "zero"},
+    ),
+    fuzz(
+        "raildyn.contact.FastsimResult",
+        _fastsim_fields,
+        # The state (normal_load, friction, a, b) is None in a result built without it.
+        accepts={
+            **RESULT_ARRAYS,
+            **{k: "zero negative list none" for k in ("normal_load", "friction", "a", "b")},
+        },
+    ),
     fuzz("raildyn.contact.FastsimResult.plot_patch", lambda: on(patch())),
     fuzz(
         "raildyn.contact.fastsim.fastsim",  # the module of the same name shadows it in resolve()
         lambda: call(1e-3, 5e-4, 0.1, 1e5, 0.3, 6e-3, 4e-3, n_x=4, n_y=4),
-        accepts={"longitudinal": SIGNED, "lateral": SIGNED, "spin": SIGNED, "poisson_ratio": "zero"},
+        accepts={
+            "longitudinal": SIGNED,
+            "lateral": SIGNED,
+            "spin": SIGNED,
+            "normal_load": "list",
+            "friction": "list",
+            "a": "list",
+            "b": "list",
+            "poisson_ratio": "zero",
+        },
     ),
     fuzz(
         "raildyn.contact.fastsim_reference",
