@@ -77,6 +77,16 @@ class SystemMatrices:
     labels: tuple
     speed: float
 
+    def __post_init__(self):
+        # Light checks (a few microseconds): a system's matrices() builds one at every speed of a sweep.
+        n = _mass_matrix("M", self.M).shape[0]
+        for name in ("C", "K"):
+            _checks.array(name, getattr(self, name), shape=(n, n))
+        q = _checks.array("GK", self.GK, shape=(n, None)).shape[1]
+        _checks.array("GC", self.GC, shape=(n, q))
+        _labels("labels", self.labels, n)
+        _checks.positive("speed", self.speed)
+
     def state_matrix(self) -> np.ndarray:
         """A = [[0, I], [−M⁻¹K, −M⁻¹C]], shape (2n, 2n), 1/s² and 1/s blocks.
 
@@ -88,10 +98,38 @@ class SystemMatrices:
         return first_order_matrix(self.M, self.C, self.K)
 
 
-def _frozen(name: str, value, shape) -> np.ndarray:
-    arr = _checks.array(name, value, shape=shape).copy()
+def _frozen(name: str, value, shape, low=None) -> np.ndarray:
+    arr = _checks.array(name, value, shape=shape, low=low).copy()
     arr.setflags(write=False)
     return arr
+
+
+def _mass_matrix(name: str, value) -> np.ndarray:
+    """A finite, symmetric, positive-definite mass matrix."""
+    M = _checks.square_matrix(name, value)
+    try:  # a Cholesky factor exists exactly when M is positive definite, at any scale of its entries
+        np.linalg.cholesky(M)
+    except np.linalg.LinAlgError:
+        raise ValueError(
+            f"{name} must be positive definite, got eigenvalues {np.linalg.eigvalsh(M)}"
+        ) from None
+    return M
+
+
+def _labels(name: str, value, n=None, *, unique=False) -> tuple:
+    """A sequence of strings (not one string), of length ``n`` when given, as a tuple."""
+    if isinstance(value, str) or not isinstance(value, (tuple, list)):
+        raise TypeError(f"{name} must be a tuple or list of strings, got {value!r:.80}")
+    if not all(isinstance(s, str) for s in value):
+        raise TypeError(f"{name} must hold only strings, got {value!r:.80}")
+    if n is not None and len(value) != n:
+        raise ValueError(f"{name} must hold {n} strings, one per coordinate, got {len(value)}: {value!r:.80}")
+    if unique and len(set(value)) != len(value):
+        raise ValueError(f"{name} must not repeat a name, got {value!r:.80}")
+    return tuple(value)
+
+
+_OMEGA_MAX = 1.0e7  # rad/s, the highest frequency of a frequency response (1.6 MHz)
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
@@ -108,20 +146,26 @@ class LinearSystem:
     M, C0, C1, K : ndarray, (n, n)
         Mass (kg), speed-independent damping (N·s/m), creep damping times speed
         (N), stiffness (N/m); rotational rows in the matching units.
-    GK, GC : ndarray, (n, q)
-        Forces from the track inputs and their rates, N/m and N·s/m.
+    GK, GC : ndarray, (n, q) or None
+        Forces from the track inputs and their rates, N/m and N·s/m (any sign). None: zeros
+        of the other's shape (no inputs when both are None).
     labels : tuple of str
-        Name of each of the n coordinates (m or rad).
-    input_positions : ndarray, (q,)
-        m.
+        Name of each of the n coordinates (m or rad); empty: q0, q1, ...
+    input_positions : ndarray, (q,) or None
+        m, ≥ 0 (behind the leading axle); None: all 0.
     input_kinds : tuple of str, (q,)
-    input_rails : ndarray, (q,)
-    gravity_load : ndarray, (n,)
-        Generalized weight of the sprung masses, N (down is negative).
+        Empty: every input "vertical".
+    input_rails : ndarray, (q,) or None
+        Each +1, −1 or 0; None: all 0.
+    gravity_load : ndarray, (n,) or None
+        Generalized weight of the sprung masses, N (down is negative); None: zeros.
     wheelsets : tuple of (int, int, Wheelset)
         Indices of the [y, ψ] coordinates of each wheelset in contact with the
         rails and its parameters, for the nonlinear counterpart
         (:class:`raildyn.wheelset.NonlinearLateral`).
+
+    M must be symmetric and positive definite; C₀, C₁ and K hold damper, creep and
+    gravity terms of either sign and need not be symmetric.
     """
 
     M: np.ndarray
@@ -138,35 +182,36 @@ class LinearSystem:
     wheelsets: tuple = field(default=())
 
     def __post_init__(self):
-        M = _checks.square_matrix("M", self.M)
+        M = _mass_matrix("M", self.M)
         n = M.shape[0]
-        try:  # a Cholesky factor exists exactly when M is positive definite, at any scale of its entries
-            np.linalg.cholesky(M)
-        except np.linalg.LinAlgError:
-            raise ValueError(
-                f"M must be positive definite, got eigenvalues {np.linalg.eigvalsh(M)}"
-            ) from None
         set_ = object.__setattr__  # frozen: the validated, read-only arrays replace what was passed
         set_(self, "M", _frozen("M", M, (n, n)))
         for name in ("C0", "C1", "K"):
             set_(self, name, _frozen(name, getattr(self, name), (n, n)))
-        GK = np.zeros((n, 0)) if self.GK is None else self.GK
+        if self.GK is None and self.GC is None:
+            GK = GC = np.zeros((n, 0))
+        else:  # the one given fixes q; the other defaults to zeros of its shape
+            given = "GK" if self.GK is not None else "GC"
+            q = _checks.array(given, getattr(self, given), shape=(n, None)).shape[1]
+            GK, GC = (np.zeros((n, q)) if v is None else v for v in (self.GK, self.GC))
         set_(self, "GK", _frozen("GK", GK, (n, None)))
         q = self.GK.shape[1]
-        set_(self, "GC", _frozen("GC", np.zeros((n, q)) if self.GC is None else self.GC, (n, q)))
-        for name, default in (("input_positions", 0.0), ("input_rails", 0.0)):
-            value = getattr(self, name)
-            set_(self, name, _frozen(name, np.full(q, default) if value is None else value, (q,)))
+        set_(self, "GC", _frozen("GC", GC, (n, q)))
+        positions = np.zeros(q) if self.input_positions is None else self.input_positions
+        set_(self, "input_positions", _frozen("input_positions", positions, (q,), low=0.0))
+        rails = _frozen("input_rails", np.zeros(q) if self.input_rails is None else self.input_rails, (q,))
+        if not np.isin(rails, (-1.0, 0.0, 1.0)).all():
+            raise ValueError(f"input_rails must each be +1 (left), -1 (right) or 0 (both), got {rails}")
+        set_(self, "input_rails", rails)
         gravity = np.zeros(n) if self.gravity_load is None else self.gravity_load
         set_(self, "gravity_load", _frozen("gravity_load", gravity, (n,)))
-        labels = tuple(self.labels) or tuple(f"q{i}" for i in range(n))
-        if len(labels) != n or not all(isinstance(s, str) for s in labels):
-            raise ValueError(f"labels must be {n} strings, one per coordinate, got {self.labels!r}")
-        set_(self, "labels", labels)
-        kinds = tuple(self.input_kinds) or ("vertical",) * q
+        labels = _labels("labels", self.labels) or tuple(f"q{i}" for i in range(n))
+        set_(self, "labels", _labels("labels", labels, n, unique=True))
+        kinds = _labels("input_kinds", self.input_kinds) or ("vertical",) * q
         if len(kinds) != q or any(k not in INPUT_KINDS for k in kinds):
             raise ValueError(f"input_kinds must be {q} of {INPUT_KINDS}, got {self.input_kinds!r}")
         set_(self, "input_kinds", kinds)
+        set_(self, "wheelsets", _wheelsets(self.wheelsets, self.labels))
 
     @property
     def size(self) -> int:
@@ -224,13 +269,13 @@ class LinearSystem:
         Parameters
         ----------
         speeds : array_like, (m,)
-            m/s, each > 0.
+            m/s, each > 0; at least one.
 
         Returns
         -------
         ndarray, (m, 2n, 2n)
         """
-        V = _checks.array("speeds", np.atleast_1d(speeds), ndim=1, low=0.0, low_open=True)
+        V = _checks.speeds("speeds", speeds)
         C = self.C0[None] + self.C1[None] / V[:, None, None]
         return first_order_matrix(self.M[None], C, self.K[None])
 
@@ -248,19 +293,23 @@ class LinearSystem:
         -------
         ndarray, (n,)
         """
+        return self._output_vector(output, "output")
+
+    def _output_vector(self, output, name: str) -> np.ndarray:
+        """:meth:`output_vector`, its messages naming ``name`` (the caller's parameter)."""
         if isinstance(output, str):
             if output not in self.labels:
-                raise ValueError(f"output must be one of {self.labels}; got {output!r}")
+                raise ValueError(f"{name} must be one of {self.labels}; got {output!r}")
             return np.eye(self.size)[self.labels.index(output)]
         if isinstance(output, tuple) and len(output) == 2 and isinstance(output[0], str):
             label, x = output
-            base = self.output_vector(label)
-            x = _checks.scalar("output position", x)
+            base = self._output_vector(label, name)
+            x = _checks.scalar(f"{name} position", x)
             pitch = label.rsplit(" ", 1)[0] + " θ"
             if pitch not in self.labels:
-                raise ValueError(f"output {label!r} has no pitch coordinate {pitch!r} to place a point")
-            return base + x * self.output_vector(pitch)
-        return _checks.array("output", output, shape=(self.size,))
+                raise ValueError(f"{name} {label!r} has no pitch coordinate {pitch!r} to place a point")
+            return base + x * self._output_vector(pitch, name)
+        return _checks.array(name, output, shape=(self.size,))
 
     def state_space(self, speed, outputs=None, derivative: int = 0):
         """The model at speed V as a ``control.StateSpace`` from the q track inputs to the outputs.
@@ -276,7 +325,8 @@ class LinearSystem:
         speed : float
             V, m/s (> 0).
         outputs : sequence, optional
-            Output specifications as for :meth:`output_vector`; default every coordinate.
+            Output specifications as for :meth:`output_vector` (a list or tuple of them, at
+            least one); None: every coordinate.
         derivative : {0, 1, 2}
             Displacement, velocity or acceleration of the outputs.
 
@@ -297,7 +347,10 @@ class LinearSystem:
         mats = self.matrices(speed)
         if self.n_inputs == 0:
             raise ValueError("this system has no track inputs, so it has no state-space input matrix")
-        rows = [self.output_vector(o) for o in (self.labels if outputs is None else outputs)]
+        if outputs is not None and not isinstance(outputs, (list, tuple)):
+            raise TypeError(f"outputs must be a list or tuple of output specifications, got {outputs!r:.80}")
+        specs = self.labels if outputs is None else outputs
+        rows = [self._output_vector(o, f"outputs[{i}]") for i, o in enumerate(specs)]
         if not rows:
             raise ValueError(f"outputs must name at least one output, got {outputs!r}")
         Co = np.array(rows)
@@ -332,8 +385,16 @@ class LinearSystem:
         -------
         ndarray, (n,)
             m (rad).
+
+        Raises
+        ------
+        ValueError
+            If K is singular (a free rigid-body motion has no static position).
         """
-        return np.linalg.solve(self.K, self.gravity_load)
+        try:
+            return np.linalg.solve(self.K, self.gravity_load)
+        except np.linalg.LinAlgError:
+            raise ValueError("K is singular: a free rigid-body motion has no static deflection") from None
 
     def axle_frf(self, omega, speed, output="body z", derivative: int = 0) -> np.ndarray:
         """H_j(ω) from track input j (m) to the output, all frequencies in one batched solve.
@@ -343,9 +404,10 @@ class LinearSystem:
         Parameters
         ----------
         omega : array_like, (n_ω,)
-            rad/s, ≥ 0.
+            rad/s, at least one, each in [0, 1e7]: far above any mode of a vehicle, and low
+            enough that ω²M cannot overflow.
         speed : float
-            V, m/s (the creep damping depends on it).
+            V, m/s (> 0: the creep damping depends on it).
         output : see :meth:`output_vector`
         derivative : {0, 1, 2}
             Output in m, m/s or m/s².
@@ -354,13 +416,31 @@ class LinearSystem:
         -------
         ndarray, complex, (n_ω, q)
         """
-        w = _checks.array("omega", omega, ndim=1, low=0.0)
+        w = _checks.array("omega", omega, ndim=1, low=0.0, allow_empty=False)
+        if w.max() > _OMEGA_MAX:
+            raise ValueError(f"omega must be at most {_OMEGA_MAX:g} rad/s, got {w.max()!r}")
         d = _checks.integer("derivative", derivative, low=0, high=2)
         o = self.output_vector(output)
         mats = self.matrices(speed)
         Z = mats.K - w[:, None, None] ** 2 * mats.M + 1j * w[:, None, None] * mats.C
         X = np.linalg.solve(Z, mats.GK + 1j * w[:, None, None] * mats.GC)
         return (1j * w[:, None]) ** d * np.einsum("i,kij->kj", o, X)
+
+
+def _wheelsets(value, labels) -> tuple:
+    """The wheelsets of a system: (index of y, index of ψ, Wheelset) each, indices in range."""
+    if isinstance(value, str) or not isinstance(value, (tuple, list)):
+        raise TypeError(f"wheelsets must be a tuple of (int, int, Wheelset), got {value!r:.80}")
+    if value:
+        from raildyn.wheelset import Wheelset  # raildyn.wheelset builds on this module
+
+        n = len(labels)
+        for i, item in enumerate(value):
+            if not (isinstance(item, (tuple, list)) and len(item) == 3 and isinstance(item[2], Wheelset)):
+                raise TypeError(f"wheelsets[{i}] must be (int, int, Wheelset), got {item!r:.80}")
+            for k in (0, 1):
+                _checks.integer(f"wheelsets[{i}][{k}]", item[k], low=0, high=n - 1)
+    return tuple(tuple(item) for item in value)
 
 
 @runtime_checkable
@@ -425,6 +505,11 @@ class LinearModel(Protocol):
 
 class LinearModelBase:
     """The protocol's methods for a frozen-dataclass parameter set that defines ``linear_system()``."""
+
+    def __init__(self):
+        # Only the base itself: every model is a dataclass whose generated __init__ replaces this one,
+        # so that a stray argument is refused by name.
+        pass
 
     def linear_system(self) -> LinearSystem:  # pragma: no cover - every subclass defines it
         """The assembled equations; defined by each model.
@@ -504,7 +589,14 @@ def as_linear_system(model) -> LinearSystem:
         system = model.linear_system()
         if isinstance(system, LinearSystem):
             return system
+        raise TypeError(
+            f"model.linear_system() must return a LinearSystem, got {type(system).__name__} "
+            f"(model of type {type(model).__name__})"
+        )
     raise TypeError(f"model must be a raildyn linear model (LinearModel), got {type(model).__name__}")
+
+
+_MAX_INPUTS = 10_000
 
 
 class Assembler:
@@ -513,9 +605,9 @@ class Assembler:
     Parameters
     ----------
     labels : sequence of str
-        Names of the coordinates.
+        Names of the coordinates (at least one, each once).
     n_inputs : int
-        Number of track inputs q.
+        Number of track inputs q, in [0, 10 000] (one per wheel of a long train is far fewer).
 
     Examples
     --------
@@ -530,9 +622,11 @@ class Assembler:
     """
 
     def __init__(self, labels: Sequence[str], n_inputs: int = 0):
-        self.labels = list(labels)
+        self.labels = list(_labels("labels", labels, unique=True))
         n = len(self.labels)
-        q = _checks.integer("n_inputs", n_inputs, low=0)
+        if n == 0:
+            raise ValueError("labels must name at least one coordinate, got an empty sequence")
+        q = _checks.integer("n_inputs", n_inputs, low=0, high=_MAX_INPUTS)
         self.M = np.zeros((n, n))
         self.C0 = np.zeros((n, n))
         self.C1 = np.zeros((n, n))
@@ -547,14 +641,13 @@ class Assembler:
         Parameters
         ----------
         label : str
+            One of the labels.
 
         Returns
         -------
         int
         """
-        if label not in self.labels:
-            raise ValueError(f"label must be one of {self.labels}, got {label!r}")
-        return self.labels.index(label)
+        return self.labels.index(_checks.choice("label", label, self.labels))
 
     def vector(self, terms: dict) -> np.ndarray:
         """g with g·q = Σ coefficient · coordinate.
@@ -562,14 +655,21 @@ class Assembler:
         Parameters
         ----------
         terms : dict of str to float
+            Label → finite coefficient.
 
         Returns
         -------
         ndarray, (n,)
         """
+        return self._vector(terms, "terms")
+
+    def _vector(self, terms, name: str) -> np.ndarray:
+        """:meth:`vector`, its messages naming ``name`` (the caller's parameter)."""
+        _checks.instance(name, terms, dict, "dict of label to coefficient")
         g = np.zeros(len(self.labels))
         for label, value in terms.items():
-            g[self.index(label)] += value
+            i = self.labels.index(_checks.choice(f"{name} key", label, self.labels))
+            g[i] += _checks.scalar(f"{name}[{label!r}]", value)
         return g
 
     def mass(self, label: str, value: float) -> None:
@@ -578,10 +678,12 @@ class Assembler:
         Parameters
         ----------
         label : str
+            One of the labels.
         value : float
+            > 0.
         """
         i = self.index(label)
-        self.M[i, i] += _checks.positive(f"mass of {label!r}", value)
+        self.M[i, i] += _checks.positive("value", value)
 
     def element(self, body: dict, stiffness, damping=0.0, inputs: dict | None = None) -> None:
         """A spring and damper on d = Σ body coefficients · q − Σ input coefficients · w.
@@ -591,21 +693,30 @@ class Assembler:
         body : dict of str to float
             Coefficients of the coordinates in the deflection.
         stiffness, damping : float
-            N/m and N·s/m (per radian for rotations).
+            N/m and N·s/m (per radian for rotations), each ≥ 0 (a negative stiffness, such
+            as gravity's, enters through :meth:`block`).
         inputs : dict of int to float, optional
-            Coefficients of the track inputs in the deflection.
+            Coefficients of the track inputs in the deflection (input index in [0, q − 1]).
         """
-        g = self.vector(body)
-        k = _checks.scalar("stiffness", stiffness)
+        g = self._vector(body, "body")
+        k = _checks.nonnegative("stiffness", stiffness)
         c = _checks.nonnegative("damping", damping)
+        h = np.zeros(self.GK.shape[1])
+        if inputs is not None:
+            _checks.instance("inputs", inputs, dict, "dict of input index to coefficient or None")
+            for j, value in inputs.items():
+                h[self._input("inputs key", j)] += _checks.scalar(f"inputs[{j!r}]", value)
         self.K += k * np.outer(g, g)
         self.C0 += c * np.outer(g, g)
-        if inputs:
-            h = np.zeros(self.GK.shape[1])
-            for j, value in inputs.items():
-                h[j] += value
-            self.GK += k * np.outer(g, h)
-            self.GC += c * np.outer(g, h)
+        self.GK += k * np.outer(g, h)
+        self.GC += c * np.outer(g, h)
+
+    def _input(self, name: str, j) -> int:
+        """A track input index in [0, q − 1]."""
+        q = self.GK.shape[1]
+        if q == 0:
+            raise ValueError(f"{name}: this assembly has no track inputs (n_inputs = 0), got {j!r}")
+        return _checks.integer(name, j, low=0, high=q - 1)
 
     def block(self, labels: Sequence[str], *, C1=None, K=None) -> None:
         """Add a block of creep damping C₁ (N) and stiffness (N/m) on some coordinates.
@@ -615,8 +726,15 @@ class Assembler:
         labels : sequence of str
             The coordinates of the block's rows and columns.
         C1, K : array_like, (k, k), optional
+            Finite, of either sign (creep and gravity terms).
         """
-        idx = np.ix_(*(2 * ([self.index(s) for s in labels],)))
+        rows = [
+            self.labels.index(_checks.choice("labels", s, self.labels)) for s in _labels("labels", labels)
+        ]
+        k = len(rows)
+        C1 = None if C1 is None else _checks.array("C1", C1, shape=(k, k))
+        K = None if K is None else _checks.array("K", K, shape=(k, k))
+        idx = np.ix_(rows, rows)
         if C1 is not None:
             self.C1[idx] += C1
         if K is not None:
@@ -628,13 +746,16 @@ class Assembler:
         Parameters
         ----------
         label : str
+            One of the labels.
         j : int
-            Index of the track input.
+            Index of the track input, in [0, q − 1].
         stiffness, damping : float
+            N/m and N·s/m per unit input, finite, of either sign.
         """
         i = self.index(label)
-        self.GK[i, j] += stiffness
-        self.GC[i, j] += damping
+        j = self._input("j", j)
+        self.GK[i, j] += _checks.scalar("stiffness", stiffness)
+        self.GC[i, j] += _checks.scalar("damping", damping)
 
     def system(self, **inputs) -> LinearSystem:
         """The assembled :class:`LinearSystem`.

@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from raildyn import _checks
 from raildyn._checks import nonnegative, positive, scalar
 from raildyn.constants import GRAVITY, STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS, STEEL_YOUNGS_MODULUS
 from raildyn.contact.creep import creep_coefficients, saturation_factor, wheelset_creepages
@@ -109,7 +110,8 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
     """
     b = positive("semi_wheelbase", semi_wheelbase)
     a = positive("half_gauge", half_gauge)
-    return kinematic_wavelength(rolling_radius, half_gauge, conicity) * float(np.sqrt(1.0 + (b / a) ** 2))
+    # √(1 + (b/a)²) as a hypotenuse, which stays finite for any finite b/a
+    return kinematic_wavelength(rolling_radius, half_gauge, conicity) * float(np.hypot(1.0, b / a))
 
 
 @dataclass(frozen=True)
@@ -119,13 +121,17 @@ class KinematicOscillation:
     Attributes
     ----------
     wavelength : float
-        Of the free wheelset, 2π√(r₀a/λ), m.
+        Of the free wheelset, 2π√(r₀a/λ), m (> 0).
     rigid_bogie_wavelength : float
-        Of the rigid bogie, 2π√(r₀a/λ · (1 + b²/a²)), m.
+        Of the rigid bogie, 2π√(r₀a/λ · (1 + b²/a²)), m (> 0).
     """
 
     wavelength: float
     rigid_bogie_wavelength: float
+
+    def __post_init__(self):
+        positive("wavelength", self.wavelength)
+        positive("rigid_bogie_wavelength", self.rigid_bogie_wavelength)
 
     def plot(self, ax=None, *, artists: dict | None = None, distance=None, amplitude: float = 5.0) -> dict:
         """Draw both paths, y = A sin(2πx/L), against the distance along the track.
@@ -137,9 +143,10 @@ class KinematicOscillation:
         artists : dict, optional
             The artists an earlier call returned: they are moved to these wavelengths.
         distance : array_like, optional
-            x, m; 0 to 60 m by default (with ``artists``: the distances drawn first).
+            x, m (1-D, at least two, strictly increasing); 0 to 60 m by default (with ``artists``: the
+            distances drawn first).
         amplitude : float
-            A, mm.
+            A, mm (> 0).
 
         Returns
         -------
@@ -150,10 +157,16 @@ class KinematicOscillation:
 
         from raildyn import plots
 
+        amplitude = positive("amplitude", amplitude)
+        if distance is not None:
+            distance = _checks.time_grid("distance", distance)
+            if distance.size < 2:
+                raise ValueError(f"distance must hold at least two distances, got {distance.size}")
         if artists is not None:
+            _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
             x = artists["free"].get_xdata()
         else:
-            x = np.linspace(0.0, 60.0, 1200) if distance is None else np.asarray(distance, dtype=float)
+            x = np.linspace(0.0, 60.0, 1200) if distance is None else distance
         paths = {
             "free": amplitude * np.sin(2 * np.pi * x / self.wavelength),
             "bogie": amplitude * np.sin(2 * np.pi * x / self.rigid_bogie_wavelength),
@@ -228,6 +241,9 @@ _MANCHESTER_PRIMARY_YAW_SPACING = 1.0  # m, half the lateral distance between th
 _DEFAULT_CREEP = _hertz_kalker(_MANCHESTER_AXLE_LOAD / 2.0, 0.46)
 
 
+_MAX_ANGLE = 0.5  # rad (29°), the largest conicity and centred contact angle: tread contact
+
+
 @dataclass(frozen=True)
 class Wheelset(LinearModelBase):
     """A wheelset, its contact with the rails and its primary suspension to a frame.
@@ -242,30 +258,32 @@ class Wheelset(LinearModelBase):
     Attributes
     ----------
     mass : float
-        m, kg.
+        m, kg (> 0).
     yaw_inertia : float
-        I_z, kg·m².
+        I_z, kg·m² (> 0).
     rolling_radius : float
-        r₀, m.
+        r₀, m (> 0).
     half_gauge : float
-        a, half the distance between the contact points, m.
+        a, half the distance between the contact points, m (> 0).
     conicity : float
-        λ (≥ 0): Δr = r_L − r_R = 2λy for small y.
+        λ, in [0, 0.5]: Δr = r_L − r_R = 2λy for small y. Real wheels run below about
+        0.5, and the contact angle and ε, which follow λ by default, are small angles.
     axle_load : float
-        W, total vertical load on the two wheels, N.
+        W, total vertical load on the two wheels, N (> 0: the creep forces saturate at μW/2).
     f11, f22, f23, f33 : float
         Kalker's longitudinal (N), lateral (N), lateral–spin (N·m) and spin
-        (N·m²) creep coefficients of one wheel.
+        (N·m²) creep coefficients of one wheel, each ≥ 0.
     contact_angle : float or None
-        δ₀, contact angle of the centred wheelset, rad (destabilising yaw
-        gravitational stiffness −W a δ₀). None: λ, as for a cone on knife-edge rails.
+        δ₀, contact angle of the centred wheelset, rad, in [0, 0.5] (tread contact, not
+        the flange's; destabilising yaw gravitational stiffness −W a δ₀). None: λ, as for
+        a cone on knife-edge rails.
     contact_angle_parameter : float or None
-        ε with δ_L − δ_R = 2εy/a; lateral gravitational stiffness W ε / a.
+        ε ≥ 0 with δ_L − δ_R = 2εy/a; lateral gravitational stiffness W ε / a.
         None: λ, the value for a cone on knife-edge rails.
     lateral_stiffness, yaw_stiffness : float
-        Primary suspension, N/m and N·m/rad (total for the wheelset).
+        Primary suspension, N/m and N·m/rad (total for the wheelset), each ≥ 0.
     lateral_damping, yaw_damping : float
-        Primary suspension, N·s/m and N·m·s/rad.
+        Primary suspension, N·s/m and N·m·s/rad, each ≥ 0.
     """
 
     mass: float = 1813.0
@@ -286,11 +304,11 @@ class Wheelset(LinearModelBase):
     yaw_damping: float = 2 * 15.0e3 * _MANCHESTER_PRIMARY_YAW_SPACING**2
 
     def __post_init__(self):
-        for name in ("mass", "yaw_inertia", "rolling_radius", "half_gauge"):
+        for name in ("mass", "yaw_inertia", "rolling_radius", "half_gauge", "axle_load"):
             positive(name, getattr(self, name))
+        # Checked before the contact angle and ε that follow it, so that a message names it.
+        scalar("conicity", self.conicity, low=0.0, high=_MAX_ANGLE)
         for name in (
-            "conicity",
-            "axle_load",
             "f11",
             "f22",
             "f23",
@@ -305,8 +323,8 @@ class Wheelset(LinearModelBase):
         for name in ("contact_angle", "contact_angle_parameter"):
             if getattr(self, name) is None:
                 object.__setattr__(self, name, self.conicity)
-        scalar("contact_angle", self.contact_angle, low=-0.5, high=0.5)
-        scalar("contact_angle_parameter", self.contact_angle_parameter)
+        scalar("contact_angle", self.contact_angle, low=0.0, high=_MAX_ANGLE)
+        nonnegative("contact_angle_parameter", self.contact_angle_parameter)
 
     def replace(self, **changes) -> Wheelset:
         """A copy with some fields changed (validated again).
@@ -382,11 +400,17 @@ class CreepTerms:
         Creep damping times speed, N (divide by V for N·s/m).
     K_creep, K_gravity : ndarray (2, 2)
         Creep and gravitational stiffness, N/m and N·m/rad.
+
+    Each is a finite 2 × 2 array, its entries of either sign.
     """
 
     C1: np.ndarray
     K_creep: np.ndarray
     K_gravity: np.ndarray
+
+    def __post_init__(self):
+        for name in ("C1", "K_creep", "K_gravity"):
+            _checks.array(name, getattr(self, name), shape=(2, 2))
 
 
 def creep_terms(ws: Wheelset) -> CreepTerms:
@@ -409,6 +433,7 @@ def creep_terms(ws: Wheelset) -> CreepTerms:
     -------
     CreepTerms
     """
+    _checks.instance("ws", ws, Wheelset)
     a, r0, lam = ws.half_gauge, ws.rolling_radius, ws.conicity
     f11, f22, f23, f33 = ws.f11, ws.f22, ws.f23, ws.f33
     # fmt: off
@@ -435,23 +460,33 @@ def add_wheelset(asm: Assembler, y: str, psi: str, ws: Wheelset, *, alignment=No
     ----------
     asm : Assembler
     y, psi : str
-        Labels of the wheelset's lateral (m) and yaw (rad) coordinates.
+        Labels of the wheelset's lateral (m) and yaw (rad) coordinates in ``asm``.
     ws : Wheelset
     alignment, cross_level : int, optional
-        Indices of the track inputs that carry the alignment and the cross-level
-        (m) at this wheelset.
+        Indices of the track inputs (in [0, q − 1]) that carry the alignment and the
+        cross-level (m) at this wheelset, two different inputs; None where the input is
+        not modelled.
     """
-    terms = creep_terms(ws)
+    _checks.instance("asm", asm, Assembler)
+    iy = asm.labels.index(_checks.choice("y", y, asm.labels))
+    ipsi = asm.labels.index(_checks.choice("psi", psi, asm.labels))
+    terms = creep_terms(_checks.instance("ws", ws, Wheelset))
+    inputs = {}
+    for name, j in (("alignment", alignment), ("cross_level", cross_level)):
+        if j is not None:
+            inputs[name] = asm._input(name, j)
+    if len(inputs) == 2 and inputs["alignment"] == inputs["cross_level"]:
+        raise ValueError(f"cross_level must be another input than alignment, got both {alignment!r}")
     stiffness = terms.K_creep + terms.K_gravity
     asm.block([y, psi], C1=terms.C1, K=stiffness)
     asm.mass(y, ws.mass)
     asm.mass(psi, ws.yaw_inertia)
-    asm.wheelsets.append((asm.index(y), asm.index(psi), ws))
-    if alignment is not None:
-        asm.track_force(y, alignment, stiffness[0, 0])
-        asm.track_force(psi, alignment, stiffness[1, 0])
-    if cross_level is not None:
-        asm.track_force(y, cross_level, -ws.axle_load / (2 * ws.half_gauge))
+    asm.wheelsets.append((iy, ipsi, ws))
+    if "alignment" in inputs:
+        asm.track_force(y, inputs["alignment"], stiffness[0, 0])
+        asm.track_force(psi, inputs["alignment"], stiffness[1, 0])
+    if "cross_level" in inputs:
+        asm.track_force(y, inputs["cross_level"], -ws.axle_load / (2 * ws.half_gauge))
 
 
 def wickens_critical_speed(params: Wheelset) -> float:
@@ -477,7 +512,8 @@ def wickens_critical_speed(params: Wheelset) -> float:
     float
         V_c, m/s (0 with no suspension stiffness).
     """
-    a, r0, lam = params.half_gauge, params.rolling_radius, positive("conicity", params.conicity)
+    _checks.instance("params", params, Wheelset)
+    a, r0, lam = params.half_gauge, params.rolling_radius, positive("params.conicity", params.conicity)
     stiffness = params.yaw_stiffness + a**2 * params.lateral_stiffness
     if stiffness <= 0.0:
         return 0.0
@@ -502,17 +538,22 @@ class WheelRailContact:
     Attributes
     ----------
     friction : float
-        Coefficient of friction μ; the creep force of a wheel saturates at μ W/2.
+        Coefficient of friction μ (> 0); the creep force of a wheel saturates at μ W/2.
     flange_clearance : float
-        Flangeway clearance δ_f, m: the flange touches the rail beyond |y| = δ_f.
+        Flangeway clearance δ_f, m, in (0, 0.05]: the flange touches the rail beyond
+        |y| = δ_f (5 to 15 mm on standard-gauge track).
     flange_stiffness : float
-        Lateral stiffness of the rail under flange contact k_f, N/m. Defaults
+        Lateral stiffness of the rail under flange contact k_f, N/m (≥ 0). Defaults
         δ_f = 9.1 mm and k_f = 14.6 MN/m as in Cooperrider's truck model
         (Cooperrider 1972, as used by Jensen & True 1997).
     rolling_radius_difference : callable or None
-        Δr(y) = r_L − r_R, m, vectorised over y. None: the cone 2λy of the wheelset.
+        Δr(y) = r_L − r_R, m, vectorised over y: an array of y's shape, within ±0.1 m
+        (twice a flange height is about 60 mm). None: the cone 2λy of the wheelset.
     contact_angle_difference : callable or None
-        δ_L(y) − δ_R(y), rad. None: the linear 2εy/a of the wheelset.
+        δ_L(y) − δ_R(y), rad, vectorised over y, within ±π/2 (each contact angle lies in
+        [0, π/2)). None: the linear 2εy/a of the wheelset.
+
+    Each callable is tried once, at y = −δ_f, 0 and δ_f, and what it returns checked.
     """
 
     friction: float = 0.3
@@ -523,12 +564,17 @@ class WheelRailContact:
 
     def __post_init__(self):
         positive("friction", self.friction)
-        positive("flange_clearance", self.flange_clearance)
+        scalar("flange_clearance", self.flange_clearance, low=0.0, low_open=True, high=0.05)
         nonnegative("flange_stiffness", self.flange_stiffness)
-        for name in ("rolling_radius_difference", "contact_angle_difference"):
-            value = getattr(self, name)
-            if value is not None and not callable(value):
-                raise TypeError(f"{name} must be a callable of y or None, got {value!r}")
+        y = np.array([-1.0, 0.0, 1.0]) * self.flange_clearance
+        for name, bound in (("rolling_radius_difference", 0.1), ("contact_angle_difference", np.pi / 2)):
+            fn = getattr(self, name)
+            if fn is not None:
+                out = _checks.returned(name, _checks.function(name, fn)(y), shape=(3,), at=f"y = {y} m")
+                if np.abs(out).max() > bound:
+                    raise ValueError(
+                        f"{name} must return values within ±{bound:.4g}, returned {out} at y = {y} m"
+                    )
 
 
 def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
@@ -548,9 +594,10 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     ws : Wheelset
     contact : WheelRailContact
     y, psi, ydot, psidot : float or ndarray
-        Lateral displacement (m), yaw (rad) and their rates (m/s, rad/s).
+        Lateral displacement (m), yaw (rad) and their rates (m/s, rad/s): finite, of
+        either sign, shapes that broadcast together.
     speed : float
-        V, m/s.
+        V, m/s (> 0: the creepages divide by it).
 
     Returns
     -------
@@ -559,6 +606,22 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     yaw : ndarray
         N·m.
     """
+    _checks.instance("ws", ws, Wheelset)
+    _checks.instance("contact", contact, WheelRailContact)
+    motion = [_checks.array(name, v) for name, v in zip(_MOTION, (y, psi, ydot, psidot), strict=True)]
+    try:
+        np.broadcast_shapes(*(m.shape for m in motion))
+    except ValueError:
+        shapes = ", ".join(f"{name} {m.shape}" for name, m in zip(_MOTION, motion, strict=True))
+        raise ValueError(f"y, psi, ydot and psidot must broadcast together, got shapes {shapes}") from None
+    return _contact_forces(ws, contact, *motion, _speed(speed))
+
+
+_MOTION = ("y", "psi", "ydot", "psidot")
+
+
+def _contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
+    """:func:`contact_forces` without the checks, for the right-hand sides (called at every step)."""
     a, r0, W = ws.half_gauge, ws.rolling_radius, ws.axle_load
     dr = (contact.rolling_radius_difference or _cone(ws.conicity))(y)
     if contact.contact_angle_difference is None:
@@ -580,6 +643,14 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     return lateral, yaw
 
 
+def _state(state, n: int) -> np.ndarray:
+    """A finite state of n rows, (n,) or (n, k): the cheap check of a right-hand side's argument."""
+    x = _checks.array("state", state)
+    if not 1 <= x.ndim <= 2 or x.shape[0] != n:
+        raise ValueError(f"state must have shape ({n},) or ({n}, k), got shape {x.shape}")
+    return x
+
+
 @dataclass(frozen=True)
 class NonlinearWheelset:
     """The suspended wheelset with nonlinear contact, as ``rhs(t, state)`` for solve_ivp.
@@ -592,6 +663,8 @@ class NonlinearWheelset:
     speed: float = 30.0
 
     def __post_init__(self):
+        _checks.instance("wheelset", self.wheelset, Wheelset)
+        _checks.instance("contact", self.contact, WheelRailContact)
         _speed(self.speed)
 
     state_size = 4
@@ -617,18 +690,19 @@ class NonlinearWheelset:
         Parameters
         ----------
         t : float
-            s (the model is autonomous: unused).
+            s, finite (the model is autonomous: unused).
         state : ndarray, (4,) or (4, k)
-            [y, ψ, ẏ, ψ̇].
+            [y, ψ, ẏ, ψ̇], finite.
 
         Returns
         -------
         ndarray, like ``state``
             [ẏ, ψ̇, ÿ, ψ̈].
         """
+        scalar("t", t)
         ws = self.wheelset
-        y, psi, ydot, psidot = state
-        fy, mz = contact_forces(ws, self.contact, y, psi, ydot, psidot, self.speed)
+        y, psi, ydot, psidot = _state(state, 4)
+        fy, mz = _contact_forces(ws, self.contact, y, psi, ydot, psidot, self.speed)
         yddot = (fy - ws.lateral_stiffness * y - ws.lateral_damping * ydot) / ws.mass
         psiddot = (mz - ws.yaw_stiffness * psi - ws.yaw_damping * psidot) / ws.yaw_inertia
         return np.array([ydot, psidot, yddot, psiddot])
@@ -654,8 +728,8 @@ class NonlinearLateral:
 
     def __post_init__(self):
         _speed(self.speed)
-        if not isinstance(self.system, LinearSystem):
-            raise TypeError(f"system must be a LinearSystem, got {type(self.system).__name__}")
+        _checks.instance("system", self.system, LinearSystem)
+        _checks.instance("contact", self.contact, WheelRailContact)
         if not self.system.wheelsets:
             raise ValueError("system has no wheelsets in contact with the rails")
         K_s = np.array(self.system.K, dtype=float, copy=True)
@@ -702,21 +776,23 @@ class NonlinearLateral:
         Parameters
         ----------
         t : float
-            s (the model is autonomous: unused).
+            s, finite (the model is autonomous: unused).
         state : ndarray, (2n,) or (2n, k)
-            [q; q̇].
+            [q; q̇], finite.
 
         Returns
         -------
         ndarray, like ``state``
             [q̇; q̈].
         """
+        scalar("t", t)
         n = self.system.size
+        state = _state(state, 2 * n)
         q, qdot = state[:n], state[n:]
         force = -self.system.C0 @ qdot - self._K_suspension @ q
         force = np.array(force, dtype=float, copy=True)
         for ws, iy, ipsi in self._groups:
-            fy, mz = contact_forces(ws, self.contact, q[iy], q[ipsi], qdot[iy], qdot[ipsi], self.speed)
+            fy, mz = _contact_forces(ws, self.contact, q[iy], q[ipsi], qdot[iy], qdot[ipsi], self.speed)
             force[iy] += fy
             force[ipsi] += mz
         return np.concatenate([qdot, self._M_inv @ force])

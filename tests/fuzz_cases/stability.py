@@ -117,12 +117,12 @@ ENTRIES = [
         "raildyn.linear_model.Assembler.block",
         lambda: on(assembler(), ["body z", "wheel z"], C1=np.eye(2), K=np.eye(2)),
         # a block of creep damping or stiffness holds entries of either sign (creep, gravity)
-        accepts={"C1": "zero negative", "K": "zero negative"},
+        accepts={"C1": "zero negative none", "K": "zero negative none"},
     ),
     fuzz(
         "raildyn.linear_model.Assembler.element",
         lambda: on(assembler(), {"body z": 1.0, "wheel z": -1.0}, 1e5, 2e3, inputs={0: 1.0}),
-        accepts={"stiffness": "zero", "damping": "zero"},
+        accepts={"stiffness": "zero", "damping": "zero", "inputs": "none"},
     ),
     fuzz("raildyn.linear_model.Assembler.index", lambda: on(assembler(), "wheel z")),
     fuzz("raildyn.linear_model.Assembler.mass", lambda: on(assembler(), "body z", 1000.0)),
@@ -143,24 +143,28 @@ ENTRIES = [
             "C0": "zero negative",
             "C1": "zero negative",
             "K": "zero negative",
-            "GK": "zero negative",
-            "GC": "zero negative",
-            "input_positions": "zero",
-            "input_rails": "zero negative",
-            "gravity_load": "zero negative",
+            "GK": "zero negative none",  # None: zeros of the other's shape
+            "GC": "zero negative none",
+            "input_positions": "zero none",  # None: all at the leading axle
+            "input_rails": "zero negative none",  # None: both rails
+            "gravity_load": "zero negative none",  # None: no weight
         },
     ),  # fmt: skip
     fuzz(
         "raildyn.linear_model.LinearSystem.axle_frf",
         lambda: on(system2(), np.array([1.0, 5.0, 20.0]), 30.0, output="body z"),
-        accepts={"omega": "zero"},
+        accepts={"omega": "zero", "derivative": "zero"},
     ),
     fuzz("raildyn.linear_model.LinearSystem.linear_system", lambda: on(system2())),
     fuzz("raildyn.linear_model.LinearSystem.matrices", lambda: on(system2(), 30.0)),
     fuzz("raildyn.linear_model.LinearSystem.output_vector", lambda: on(system2(), "body z")),
     fuzz("raildyn.linear_model.LinearSystem.replace", lambda: on(system2(), K=2.0 * K2)),
     fuzz("raildyn.linear_model.LinearSystem.state_matrices", lambda: on(system2(), [10.0, 30.0])),
-    fuzz("raildyn.linear_model.LinearSystem.state_space", lambda: on(system2(), 30.0, outputs=["body z"])),
+    fuzz(
+        "raildyn.linear_model.LinearSystem.state_space",
+        lambda: on(system2(), 30.0, outputs=["body z"]),
+        accepts={"outputs": "none", "derivative": "zero"},  # None: every coordinate
+    ),
     fuzz("raildyn.linear_model.LinearSystem.static_deflection", lambda: on(system2())),
     fuzz(
         "raildyn.linear_model.SystemMatrices",
@@ -178,8 +182,8 @@ ENTRIES = [
     fuzz("raildyn.linear_model.LinearModel.replace", lambda: on(Bogie(), frame_mass=3000.0)),
     fuzz(
         "raildyn.linear_model.LinearModel.state_space",
-        lambda: on(Bogie(), 30.0, outputs=["wheelset 1 y"], derivative=0),
-        accepts={"derivative": "zero"},
+        lambda: on(Bogie(), 30.0, outputs=["wheelset1 y"], derivative=0),
+        accepts={"outputs": "none", "derivative": "zero"},
     ),
     # The base class's methods, on a model that inherits them (VerticalCar defines only linear_system).
     fuzz("raildyn.linear_model.LinearModelBase", lambda: call()),
@@ -189,6 +193,7 @@ ENTRIES = [
     fuzz(
         "raildyn.linear_model.LinearModelBase.state_space",
         lambda: on(VerticalCar(), 30.0, outputs=["body z"], derivative=1),
+        accepts={"outputs": "none", "derivative": "zero"},
     ),
     # ---------------------------------------------------------------- raildyn.wheelset
     fuzz("raildyn.wheelset.kinematic_wavelength", lambda: call(0.46, 0.75, 0.15)),
@@ -198,7 +203,7 @@ ENTRIES = [
     fuzz(
         "raildyn.wheelset.KinematicOscillation.plot",
         lambda: on(wh.KinematicOscillation(9.5, 18.9), distance=np.linspace(0.0, 60.0, 50), amplitude=5.0),
-        accepts={"distance": "zero negative"},  # any distances along the track, m
+        accepts={"distance": "none"},  # None: 0 to 60 m
     ),
     fuzz(
         "raildyn.wheelset.Wheelset",
@@ -233,7 +238,12 @@ ENTRIES = [
         accepts={"alignment": "zero none", "cross_level": "none"},  # None: the input is not modelled
     ),
     fuzz("raildyn.wheelset.wickens_critical_speed", lambda: call(SOFT)),
-    fuzz("raildyn.wheelset.WheelRailContact", lambda: call(), accepts={"flange_stiffness": "zero"}),
+    fuzz(
+        "raildyn.wheelset.WheelRailContact",
+        lambda: call(rolling_radius_difference=lambda y: 0.3 * y, contact_angle_difference=lambda y: 0.4 * y),
+        # −1 rad, what the changed callback returns, is a contact angle difference within ±π/2
+        accepts={"flange_stiffness": "zero", "contact_angle_difference": "returns-negative"},
+    ),
     fuzz(
         "raildyn.wheelset.contact_forces",
         lambda: call(SOFT, wh.WheelRailContact(), 1e-3, 1e-3, 0.01, 0.01, 30.0),
