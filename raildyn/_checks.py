@@ -366,3 +366,19 @@ def increasing(name: str, value, *, low=None, low_open: bool = False) -> np.ndar
             f"does not exceed {name}[{i}] = {arr[i]!r}"
         )
     return arr
+
+
+def strings(name: str, value, n=None, *, unique: bool = False) -> tuple:
+    """A tuple or list of strings (not one string: its letters are no names), of length ``n`` when given.
+
+    For labels, coordinate names and input kinds; ``unique`` refuses a repeated name.
+    """
+    if isinstance(value, str) or not isinstance(value, (tuple, list)):
+        raise TypeError(f"{name} must be a tuple or list of strings, got {value!r:.80}")
+    if not all(isinstance(s, str) for s in value):
+        raise TypeError(f"{name} must hold only strings, got {value!r:.80}")
+    if n is not None and len(value) != n:
+        raise ValueError(f"{name} must hold {n} strings, got {len(value)}: {value!r:.80}")
+    if unique and len(set(value)) != len(value):
+        raise ValueError(f"{name} must not repeat a name, got {value!r:.80}")
+    return tuple(value)
