@@ -18,6 +18,7 @@ import numpy as np
 import scipy.linalg
 import scipy.signal
 
+from raildyn import _checks
 from raildyn._checks import array, integer, nonnegative, positive, scalar, time_grid
 
 if TYPE_CHECKING:  # mdof imports this module, so its classes are named here for the annotations only
@@ -40,6 +41,29 @@ __all__ = [
 # |ξ − 1| at or below this counts as critical damping in SDOF.regime.
 CRITICAL_TOLERANCE = 1e-9
 
+# The domain of an SDOF: k/m (= ω_n², (rad/s)²) within [1/_RATE, _RATE] and c/m (= 2ξω_n, 1/s) at
+# most _RATE. Then ω_n, ξω_n and both roots stay below 1e300, inside floating point with room to
+# spare, and the free response stays finite for every ξ (ξ = 1e200 included).
+_RATE = 1e300
+
+# At most this many maxima, peaks or frequencies in one call: a bound on the memory asked for.
+_MAX_COUNT = 1_000_000
+
+
+def _check_rates(stiffness_rate: float, damping_rate: float, stiffness_names: str, damping_names: str):
+    """Refuse an SDOF outside its domain (see ``_RATE``), naming the parameters that set each rate."""
+    if not (1.0 / _RATE <= stiffness_rate <= _RATE):
+        raise ValueError(
+            f"{stiffness_names} give omega_n^2 = k/m = {stiffness_rate:.4g} (rad/s)^2; raildyn takes "
+            f"k/m in [1e-300, 1e300] (omega_n from 1e-150 to 1e150 rad/s) so that omega_n^2 and the "
+            "roots stay inside floating point"
+        )
+    if not damping_rate <= _RATE:
+        raise ValueError(
+            f"{damping_names} give c/m = 2 xi omega_n = {damping_rate:.4g} 1/s; raildyn takes c/m "
+            "<= 1e300 1/s so that the roots -xi omega_n ± ... stay inside floating point"
+        )
+
 
 # ---------------------------------------------------------------------------
 # Closed forms shared by the SDOF class and the module-level functions
@@ -53,15 +77,14 @@ def _one_minus_square(xi):
 def _roots(natural_frequency: float, xi: np.ndarray) -> np.ndarray:
     """Roots s₁, s₂ = (−ξ ± √(ξ² − 1)) ω_n (eq. 1.9) for an array of ξ; shape (n, 2)."""
     wn = natural_frequency
-    q = _one_minus_square(xi)
-    sigma = xi * wn
-    wd = wn * np.sqrt(np.maximum(q, 0.0))
-    b = wn * np.sqrt(np.maximum(-q, 0.0))
-    re = 0.0 - sigma  # +0.0, not −0.0, for an undamped system
-    s2 = re - b
-    # Overdamped: −ξω_n + b cancels badly for large ξ; s₁ s₂ = ω_n² gives s₁ without cancellation.
-    s1 = np.where(q < 0, np.divide(wn**2, s2, out=np.zeros_like(q), where=q < 0), re + 1j * wd)
-    s2 = np.where(q < 0, s2, re - 1j * wd)
+    over = xi > 1.0
+    wd = wn * np.sqrt(np.maximum(_one_minus_square(np.minimum(xi, 1.0)), 0.0))
+    re = 0.0 - xi * wn  # +0.0, not −0.0, for an undamped system
+    # Overdamped: s₂ = −ω_n g and s₁ = −ω_n/g with g = ξ + √(ξ − 1)√(ξ + 1) >= 1 (s₁ s₂ = ω_n²):
+    # no cancellation in s₁ for large ξ, and no ξ² to overflow.
+    g = np.where(over, xi + np.sqrt(np.maximum(xi - 1.0, 0.0)) * np.sqrt(xi + 1.0), 1.0)
+    s1 = np.where(over, -wn / g, re + 1j * wd)
+    s2 = np.where(over, -wn * g, re - 1j * wd)
     return np.stack([s1, s2], axis=-1)
 
 
@@ -80,14 +103,13 @@ def _decay_pair(wn: float, xi: float, t: np.ndarray) -> tuple[np.ndarray, np.nda
         s = np.sin(wd * t) / wd if wd > 0.0 else t
         return decay * np.cos(wd * t), decay * s
     # Overdamped: write cosh and sinh through the slow root s₁ and the ratio e^((s₂−s₁)t) = e^(−2bt),
-    # which neither overflows for large t nor loses accuracy as b → 0.
-    b = wn * math.sqrt(-q)
-    s1 = -(wn**2) / (xi * wn + b)
-    slow = np.exp(s1 * t)
+    # which neither overflows for large t nor loses accuracy as b → 0. The square roots are taken
+    # apart, and s₁ = −ω_n/g (g = ξ + √(ξ² − 1)), so that nothing overflows for ξ up to 1e300.
+    root = math.sqrt(xi - 1.0) * math.sqrt(xi + 1.0)
+    b = wn * root
+    slow = np.exp((-wn / (xi + root)) * t)
     z = 2.0 * b * t
-    safe = np.where(z > 0.0, z, 1.0)
-    sinh_ratio = np.where(z > 0.0, -np.expm1(-z) / safe, 1.0)  # (1 − e^(−z))/z → 1 as z → 0
-    return slow * 0.5 * (1.0 + np.exp(-z)), slow * t * sinh_ratio
+    return slow * 0.5 * (1.0 + np.exp(-z)), slow * (-np.expm1(-z) / (2.0 * b))
 
 
 def _reciprocal(numerator, denominator):
@@ -121,6 +143,16 @@ class DecayPeaks:
     times: np.ndarray
     values: np.ndarray
 
+    def __post_init__(self):
+        times = array("times", self.times, ndim=1, low=0.0)
+        values = array("values", self.values)
+        if values.shape != times.shape:
+            raise ValueError(
+                f"times and values must have the same shape, got {times.shape} and {values.shape}"
+            )
+        object.__setattr__(self, "times", times)
+        object.__setattr__(self, "values", values)
+
     @property
     def log_decrement(self) -> float:
         """δ = ln(x₁/x_{j+1})/j measured over the j periods between the first and the last peak (eq. 1.17).
@@ -153,6 +185,13 @@ class FreeVibration:
     envelope: np.ndarray
     peaks: DecayPeaks
 
+    def __post_init__(self):
+        time = array("time", time_grid("time", self.time), low=0.0)
+        object.__setattr__(self, "time", time)
+        object.__setattr__(self, "displacement", array("displacement", self.displacement, shape=time.shape))
+        object.__setattr__(self, "envelope", array("envelope", self.envelope, shape=time.shape, low=0.0))
+        _checks.instance("peaks", self.peaks, DecayPeaks)
+
     def plot(self, ax=None, *, artists=None) -> dict:
         """Draw x(t), the envelope ±A e^(−ξω_n t) and the maxima; or move artists drawn before.
 
@@ -170,6 +209,12 @@ class FreeVibration:
             The artists: ``line``, ``upper``, ``lower`` (the envelope) and ``peaks``.
         """
         if artists is not None:
+            _checks.instance("artists", artists, dict, "dict returned by an earlier plot")
+            missing = {"line", "upper", "lower", "peaks"} - set(artists)
+            if missing:
+                raise ValueError(
+                    f"artists must be the dict an earlier plot returned; it lacks {sorted(missing)}"
+                )
             artists["line"].set_data(self.time, self.displacement)
             artists["upper"].set_data(self.time, self.envelope)
             artists["lower"].set_data(self.time, -self.envelope)
@@ -206,6 +251,12 @@ class RootLocus:
     damping_ratios: np.ndarray
     roots: np.ndarray
 
+    def __post_init__(self):
+        object.__setattr__(self, "natural_frequency", positive("natural_frequency", self.natural_frequency))
+        xi = array("damping_ratios", self.damping_ratios, ndim=1, low=0.0, allow_empty=False)
+        object.__setattr__(self, "damping_ratios", xi)
+        object.__setattr__(self, "roots", array("roots", self.roots, dtype=complex, shape=(xi.size, 2)))
+
     def plot(self, ax=None, *, mark=None, normalised: bool = False) -> dict:
         """Draw both branches of the locus, the circle |s| = ω_n and, optionally, marked roots.
 
@@ -214,7 +265,7 @@ class RootLocus:
         ax : matplotlib.axes.Axes, optional
             Where to draw; new axes on a new pyplot figure if None.
         mark : complex array_like, shape (2,), optional
-            Roots to mark, rad/s (scaled like the locus when ``normalised``); the
+            Roots to mark, rad/s, finite (scaled like the locus when ``normalised``); the
             marker is drawn hidden when None, for a widget to move and show later.
         normalised : bool
             Draw s/ω_n instead of s in rad/s.
@@ -228,6 +279,9 @@ class RootLocus:
 
         from raildyn import plots
 
+        if mark is not None:
+            mark = array("mark", mark, dtype=complex, shape=(2,))
+        normalised = _checks.flag("normalised", normalised)
         ax = plots.axes_or_new(ax)
         scale = 1.0 / self.natural_frequency if normalised else 1.0
         locus = self.roots * scale
@@ -237,7 +291,7 @@ class RootLocus:
             (circle,) = ax.plot(radius * np.cos(phi), radius * np.sin(phi), ls=":", color="0.6", lw=1)
             (b1,) = ax.plot(locus[:, 0].real, locus[:, 0].imag, color=plots.COLORS[0], label="$s_1$")
             (b2,) = ax.plot(locus[:, 1].real, locus[:, 1].imag, color=plots.COLORS[1], label="$s_2$")
-            marks = np.zeros(2, complex) if mark is None else scale * np.asarray(mark, dtype=complex)
+            marks = np.zeros(2, complex) if mark is None else scale * mark
             (pts,) = ax.plot(marks.real, marks.imag, "o", color="k", ms=7, mfc="w", mew=2, zorder=5)
             pts.set_visible(mark is not None)
             ax.axhline(0, color="0.4", lw=0.8)
@@ -263,9 +317,15 @@ class SDOF:
     mass : float
         m in kg, > 0.
     damping : float
-        Viscous damping coefficient c in N·s/m, >= 0.
+        Viscous damping coefficient c in N·s/m, >= 0, with c/m = 2ξω_n <= 1e300 1/s.
     stiffness : float
-        k in N/m, > 0.
+        k in N/m, > 0, with k/m = ω_n² in [1e-300, 1e300] (rad/s)².
+
+    Notes
+    -----
+    The two bounds on the rates k/m and c/m keep ω_n, ξω_n and both roots below 1e300, inside
+    floating point, so that every response stays finite, however heavy the damping (ξ = 1e200
+    included); no physical oscillator comes near them.
 
     Examples
     --------
@@ -283,6 +343,9 @@ class SDOF:
         object.__setattr__(self, "mass", positive("mass", self.mass))
         object.__setattr__(self, "damping", nonnegative("damping", self.damping))
         object.__setattr__(self, "stiffness", positive("stiffness", self.stiffness))
+        _check_rates(
+            self.stiffness / self.mass, self.damping / self.mass, "stiffness and mass", "damping and mass"
+        )
 
     @classmethod
     def from_modal(cls, natural_frequency: float, damping_ratio: float, mass: float = 1.0) -> SDOF:
@@ -293,11 +356,11 @@ class SDOF:
         Parameters
         ----------
         natural_frequency : float
-            ω_n, rad/s, > 0.
+            ω_n, rad/s, in (0, 1e150] (the domain of :class:`SDOF`: k/m = ω_n² <= 1e300).
         damping_ratio : float
-            ξ, >= 0.
+            ξ, >= 0, with 2ξω_n <= 1e300 1/s (the domain of :class:`SDOF`).
         mass : float
-            m, kg, > 0.
+            m, kg, > 0, with m ω_n² and 2ξmω_n finite.
 
         Returns
         -------
@@ -309,10 +372,17 @@ class SDOF:
         >>> s.stiffness, s.damping
         (200.0, 8.0)
         """
-        wn = positive("natural_frequency", natural_frequency)
+        wn = scalar("natural_frequency", natural_frequency, low=0.0, low_open=True, high=math.sqrt(_RATE))
         xi = nonnegative("damping_ratio", damping_ratio)
         m = positive("mass", mass)
-        return cls(mass=m, damping=2.0 * xi * m * wn, stiffness=m * wn**2)
+        _check_rates(wn * wn, 2.0 * xi * wn, "natural_frequency", "damping_ratio and natural_frequency")
+        k, c = m * wn**2, 2.0 * xi * m * wn
+        if not (math.isfinite(k) and math.isfinite(c)):
+            raise ValueError(
+                f"mass {m!r} with natural_frequency {wn!r} and damping_ratio {xi!r} gives k = m omega_n^2 "
+                f"= {k:.4g} N/m and c = 2 xi m omega_n = {c:.4g} N s/m: beyond floating point"
+            )
+        return cls(mass=m, damping=c, stiffness=k)
 
     # -- characteristics -------------------------------------------------
 
@@ -324,7 +394,12 @@ class SDOF:
     @property
     def critical_damping(self) -> float:
         """Critical damping coefficient c_c = 2√(km), N·s/m (eq. 1.14)."""
-        return 2.0 * math.sqrt(self.stiffness * self.mass)
+        km = self.stiffness * self.mass
+        # √(km) rounds once (so ξ = 1 comes out exactly where it should); √k √m only where km
+        # would overflow or underflow.
+        return 2.0 * (
+            math.sqrt(km) if 1e-300 < km < 1e300 else math.sqrt(self.stiffness) * math.sqrt(self.mass)
+        )
 
     @property
     def damping_ratio(self) -> float:
@@ -346,7 +421,8 @@ class SDOF:
     @property
     def log_decrement(self) -> float:
         """Logarithmic decrement δ = 2πξ/√(1 − ξ²) (eq. 1.17); ``math.inf`` when ξ >= 1."""
-        return float(log_decrement(self.damping_ratio))
+        xi = self.damping_ratio
+        return float(log_decrement(xi)) if xi < 1.0 else math.inf
 
     @property
     def regime(self) -> str:
@@ -381,8 +457,25 @@ class SDOF:
     # -- free and impulse response --------------------------------------
 
     def _pair(self, t):
-        t = array("t", t, low=0.0)
-        return _decay_pair(self.natural_frequency, self.damping_ratio, t)
+        t = array("t", t, low=0.0, allow_empty=False)
+        with np.errstate(over="ignore", invalid="ignore"):
+            ec, es = _decay_pair(self.natural_frequency, self.damping_ratio, t)
+        if not (np.all(np.isfinite(ec)) and np.all(np.isfinite(es))):
+            raise ValueError(
+                f"t must keep omega_d t finite for this system (omega_d = "
+                f"{self.damped_frequency:.4g} rad/s), got t up to {t.max():.4g} s"
+            )
+        return ec, es
+
+    @staticmethod
+    def _finite(x, x0: float, v0: float):
+        """``x`` itself, unless the initial state is so large that the response overflows."""
+        if not np.all(np.isfinite(x)):
+            raise ValueError(
+                f"x0 = {x0!r} and v0 = {v0!r} give a response beyond floating point range at some t; "
+                "scale the initial state down (the response is linear in it)"
+            )
+        return x
 
     def free_response(self, t, x0: float, v0: float):
         """Displacement x(t), m, of the free system started from x(0) = x0, x'(0) = v0.
@@ -395,11 +488,11 @@ class SDOF:
         Parameters
         ----------
         t : array_like
-            Times since the start, s, >= 0.
+            Times since the start, s, >= 0, any shape (not empty).
         x0 : float
-            Initial displacement, m.
+            Initial displacement, m (any sign).
         v0 : float
-            Initial velocity, m/s.
+            Initial velocity, m/s (any sign).
 
         Returns
         -------
@@ -414,7 +507,9 @@ class SDOF:
         """
         x0, v0 = scalar("x0", x0), scalar("v0", v0)
         ec, es = self._pair(t)
-        return (x0 * ec + (v0 + self.damping_ratio * self.natural_frequency * x0) * es)[()]
+        with np.errstate(over="ignore", invalid="ignore"):
+            x = x0 * ec + (v0 + self.damping_ratio * self.natural_frequency * x0) * es
+        return self._finite(x, x0, v0)[()]
 
     def free_velocity(self, t, x0: float, v0: float):
         """Velocity x'(t), m/s, of the free system.
@@ -425,11 +520,11 @@ class SDOF:
         Parameters
         ----------
         t : array_like
-            Times since the start, s, >= 0.
+            Times since the start, s, >= 0, any shape (not empty).
         x0 : float
-            Initial displacement, m.
+            Initial displacement, m (any sign).
         v0 : float
-            Initial velocity, m/s.
+            Initial velocity, m/s (any sign).
 
         Returns
         -------
@@ -445,7 +540,9 @@ class SDOF:
         x0, v0 = scalar("x0", x0), scalar("v0", v0)
         ec, es = self._pair(t)
         wn = self.natural_frequency
-        return (v0 * ec - (self.damping_ratio * wn * v0 + wn**2 * x0) * es)[()]
+        with np.errstate(over="ignore", invalid="ignore"):
+            v = v0 * ec - (self.damping_ratio * wn * v0 + wn**2 * x0) * es
+        return self._finite(v, x0, v0)[()]
 
     def impulse_response(self, t):
         """Unit-impulse response h(t), m/(N·s): the free response from x0 = 0, v0 = 1/m.
@@ -455,7 +552,7 @@ class SDOF:
         Parameters
         ----------
         t : array_like
-            Times after the impulse, s, >= 0.
+            Times after the impulse, s, >= 0, any shape (not empty).
 
         Returns
         -------
@@ -479,11 +576,11 @@ class SDOF:
         Parameters
         ----------
         t : array_like
-            Times since the start, s, >= 0.
+            Times since the start, s, >= 0, any shape (not empty).
         x0 : float
-            Initial displacement, m.
+            Initial displacement, m (any sign).
         v0 : float
-            Initial velocity, m/s.
+            Initial velocity, m/s (any sign).
 
         Returns
         -------
@@ -497,7 +594,7 @@ class SDOF:
         5.0
         """
         x0, v0 = scalar("x0", x0), scalar("v0", v0)
-        t = array("t", t, low=0.0)
+        t = array("t", t, low=0.0, allow_empty=False)
         wd = self.damped_frequency
         if wd == 0.0:
             return np.abs(self.free_response(t, x0, v0))
@@ -515,11 +612,11 @@ class SDOF:
         Parameters
         ----------
         x0 : float
-            Initial displacement, m.
+            Initial displacement, m (any sign).
         v0 : float
-            Initial velocity, m/s.
+            Initial velocity, m/s (any sign).
         count : int
-            Number of maxima, >= 1.
+            Number of maxima, from 1 to 1_000_000 (a bound on the memory asked for).
 
         Returns
         -------
@@ -533,7 +630,7 @@ class SDOF:
         >>> round(peaks.log_decrement, 6) == round(s.log_decrement, 6)
         True
         """
-        count = integer("count", count, low=1)
+        count = integer("count", count, low=1, high=_MAX_COUNT)
         x0, v0 = scalar("x0", x0), scalar("v0", v0)
         wd = self.damped_frequency
         if wd == 0.0:
@@ -555,14 +652,14 @@ class SDOF:
 
         Parameters
         ----------
-        t : array_like
-            Times since the start, s, >= 0.
+        t : array_like, shape (n,)
+            Times since the start, s, >= 0, strictly increasing (the abscissa of :meth:`FreeVibration.plot`).
         x0 : float
-            Initial displacement, m.
+            Initial displacement, m (any sign).
         v0 : float
-            Initial velocity, m/s.
+            Initial velocity, m/s (any sign).
         peaks : int
-            Number of maxima to locate, >= 1 (none are located when ξ >= 1).
+            Number of maxima to locate, from 1 to 1_000_000 (none are located when ξ >= 1).
 
         Returns
         -------
@@ -576,8 +673,8 @@ class SDOF:
         >>> r.peaks.times.round(4).tolist(), round(r.peaks.log_decrement, 4)
         ([0.0, 1.005, 2.0101], 0.6315)
         """
-        peaks = integer("peaks", peaks, low=1)
-        t = array("t", t, low=0.0)
+        peaks = integer("peaks", peaks, low=1, high=_MAX_COUNT)
+        t = array("t", time_grid("t", t), low=0.0)
         x = np.asarray(self.free_response(t, x0, v0))
         envelope = np.asarray(self.envelope(t, x0, v0))
         if self.damped_frequency > 0.0:
@@ -597,7 +694,7 @@ class SDOF:
         Parameters
         ----------
         omega : array_like
-            ω, rad/s, >= 0.
+            ω, rad/s, >= 0, any shape (not empty).
 
         Returns
         -------
@@ -609,8 +706,8 @@ class SDOF:
         >>> SDOF(1.0, 0.0, 4.0).receptance([0.0, 1.0])
         array([0.25      +0.j, 0.33333333+0.j])
         """
-        w = array("omega", omega, low=0.0)
-        return _reciprocal(1.0, self.stiffness - self.mass * w**2 + 1j * self.damping * w)[()]
+        inv2, den = self._dynamic_stiffness(omega)
+        return _reciprocal(inv2, den)[()]
 
     def base_frf(self, omega):
         """Complex ratio X/Y of mass to base motion, (k + icω)/(k − mω² + icω).
@@ -620,16 +717,28 @@ class SDOF:
         Parameters
         ----------
         omega : array_like
-            ω, rad/s, >= 0.
+            ω, rad/s, >= 0, any shape (not empty).
 
         Returns
         -------
         complex ndarray
             X/Y, same shape as ``omega``.
         """
-        w = array("omega", omega, low=0.0)
-        den = self.stiffness - self.mass * w**2 + 1j * self.damping * w
-        return _reciprocal(self.stiffness + 1j * self.damping * w, den)[()]
+        inv2, den, u, inv = self._dynamic_stiffness(omega, parts=True)
+        return _reciprocal(self.stiffness * inv2 + 1j * self.damping * u * inv, den)[()]
+
+    def _dynamic_stiffness(self, omega, *, parts=False):
+        """1/s² and (k − mω² + icω)/s² for the checked ``omega``, with s = max(ω, 1 rad/s).
+
+        Dividing through by s² keeps every term finite for any finite ω (1e300 included); for
+        ω <= 1 rad/s nothing changes. With ``parts`` also u = ω/s and 1/s.
+        """
+        w = array("omega", omega, low=0.0, allow_empty=False)
+        inv = 1.0 / np.maximum(w, 1.0)
+        u = w * inv
+        inv2 = inv * inv
+        den = self.stiffness * inv2 - self.mass * u * u + 1j * self.damping * u * inv
+        return (inv2, den, u, inv) if parts else (inv2, den)
 
     def transmissibility(self, omega):
         """Displacement transmissibility |X/Y| = |1 + 2iξr| / |1 − r² + 2iξr|, r = ω/ω_n.
@@ -637,7 +746,7 @@ class SDOF:
         Parameters
         ----------
         omega : array_like
-            ω, rad/s, >= 0.
+            ω, rad/s, >= 0, any shape (not empty).
 
         Returns
         -------
@@ -812,9 +921,9 @@ def root_locus(natural_frequency: float, damping_ratios) -> RootLocus:
     Parameters
     ----------
     natural_frequency : float
-        ω_n in rad/s, > 0.
+        ω_n in rad/s, in (0, 1e150] (the domain of :class:`SDOF`).
     damping_ratios : array_like, shape (n,)
-        ξ values, >= 0.
+        ξ values, >= 0, with 2ξω_n <= 1e300 1/s (the domain of :class:`SDOF`); not empty.
 
     Returns
     -------
@@ -828,18 +937,20 @@ def root_locus(natural_frequency: float, damping_ratios) -> RootLocus:
     array([[ 0.+1.j,  0.-1.j],
            [-1.+0.j, -1.+0.j]])
     """
-    wn = positive("natural_frequency", natural_frequency)
-    xi = array("damping_ratios", damping_ratios, ndim=1, low=0.0)
+    wn = scalar("natural_frequency", natural_frequency, low=0.0, low_open=True, high=math.sqrt(_RATE))
+    xi = array("damping_ratios", damping_ratios, ndim=1, low=0.0, allow_empty=False)
+    _check_rates(wn * wn, 2.0 * xi.max() * wn, "natural_frequency", "damping_ratios and natural_frequency")
     return RootLocus(wn, xi, _roots(wn, xi))
 
 
 def log_decrement(damping_ratio):
-    """Logarithmic decrement δ = ln(x₁/x₂) = 2πξ/√(1 − ξ²) (eq. 1.17); inf where ξ >= 1.
+    """Logarithmic decrement δ = ln(x₁/x₂) = 2πξ/√(1 − ξ²) (eq. 1.17).
 
     Parameters
     ----------
     damping_ratio : array_like
-        ξ >= 0.
+        ξ, 0 <= ξ < 1 (a system with ξ >= 1 does not oscillate, so it has no decrement;
+        :attr:`SDOF.log_decrement` reports ``math.inf`` for it); any shape, not empty.
 
     Returns
     -------
@@ -851,10 +962,13 @@ def log_decrement(damping_ratio):
     >>> round(float(log_decrement(0.1)), 4)
     0.6315
     """
-    xi = array("damping_ratio", damping_ratio, low=0.0)
-    q = _one_minus_square(xi)
-    root = np.sqrt(np.where(q > 0.0, q, 1.0))
-    return np.where(q > 0.0, 2.0 * np.pi * xi / root, np.inf)[()]
+    xi = array("damping_ratio", damping_ratio, low=0.0, allow_empty=False)
+    if np.any(xi >= 1.0):
+        raise ValueError(
+            f"damping_ratio must be < 1 (a system with xi >= 1 does not oscillate, so it has no "
+            f"decrement), got {xi[xi >= 1.0].flat[0]!r}"
+        )
+    return (2.0 * np.pi * xi / np.sqrt(_one_minus_square(xi)))[()]
 
 
 def damping_ratio_from_decrement(delta):
@@ -863,7 +977,7 @@ def damping_ratio_from_decrement(delta):
     Parameters
     ----------
     delta : array_like
-        δ >= 0 (finite: a system with ξ >= 1 has no decrement to measure).
+        δ >= 0 (finite: a system with ξ >= 1 has no decrement to measure); any shape, not empty.
 
     Returns
     -------
@@ -875,7 +989,7 @@ def damping_ratio_from_decrement(delta):
     >>> round(float(damping_ratio_from_decrement(log_decrement(0.3))), 12)
     0.3
     """
-    d = array("delta", delta, low=0.0)
+    d = array("delta", delta, low=0.0, allow_empty=False)
     return (d / np.hypot(2.0 * np.pi, d))[()]
 
 
@@ -912,10 +1026,23 @@ def decrement_from_peaks(first, later, cycles: int = 1) -> float:
     return math.log(x0 / xj) / j
 
 
-def _ratio_and_damping(frequency_ratio, damping_ratio):
-    r = array("frequency_ratio", frequency_ratio, low=0.0)
-    xi = array("damping_ratio", damping_ratio, low=0.0)
-    return r, xi
+def _scaled_terms(frequency_ratio, damping_ratio):
+    """Checked r and ξ, and the terms (1 − r², 2ξr) and 1 of the SDOF curves, each divided by s².
+
+    s = max(r, 1): dividing through by s² keeps every term finite for any finite r and ξ (1e300
+    included) and changes nothing for r <= 1. Returns (1 − r²)/s², 2ξr/s² and 1/s².
+    """
+    r = array("frequency_ratio", frequency_ratio, low=0.0, allow_empty=False)
+    xi = array("damping_ratio", damping_ratio, low=0.0, allow_empty=False)
+    try:
+        np.broadcast_shapes(r.shape, xi.shape)
+    except ValueError:
+        raise ValueError(
+            f"damping_ratio (shape {xi.shape}) must broadcast against frequency_ratio (shape {r.shape})"
+        ) from None
+    inv = 1.0 / np.maximum(r, 1.0)
+    u = r * inv
+    return (inv - u) * (inv + u), 2.0 * xi * u * inv, inv * inv
 
 
 def magnification_factor(frequency_ratio, damping_ratio):
@@ -924,7 +1051,7 @@ def magnification_factor(frequency_ratio, damping_ratio):
     Parameters
     ----------
     frequency_ratio : array_like
-        r = ω/ω_n >= 0.
+        r = ω/ω_n >= 0, any shape (not empty).
     damping_ratio : array_like
         ξ >= 0; broadcast against ``frequency_ratio``.
 
@@ -938,9 +1065,10 @@ def magnification_factor(frequency_ratio, damping_ratio):
     >>> magnification_factor([0.0, 1.0], 0.25)
     array([1., 2.])
     """
-    r, xi = _ratio_and_damping(frequency_ratio, damping_ratio)
-    den = np.hypot(_one_minus_square(r), 2.0 * xi * r)
-    return np.divide(1.0, den, out=np.full(den.shape, np.inf), where=den > 0)[()]
+    q, y, inv2 = _scaled_terms(frequency_ratio, damping_ratio)
+    den = np.hypot(q, y)
+    num = np.broadcast_to(inv2, den.shape)
+    return np.divide(num, den, out=np.full(den.shape, np.inf), where=den > 0)[()]
 
 
 def phase_angle(frequency_ratio, damping_ratio):
@@ -952,7 +1080,7 @@ def phase_angle(frequency_ratio, damping_ratio):
     Parameters
     ----------
     frequency_ratio : array_like
-        r = ω/ω_n >= 0.
+        r = ω/ω_n >= 0, any shape (not empty).
     damping_ratio : array_like
         ξ >= 0; broadcast against ``frequency_ratio``.
 
@@ -966,8 +1094,7 @@ def phase_angle(frequency_ratio, damping_ratio):
     >>> np.round(phase_angle([0.0, 1.0], 0.1) / np.pi, 12)
     array([0. , 0.5])
     """
-    r, xi = _ratio_and_damping(frequency_ratio, damping_ratio)
-    q, y = _one_minus_square(r), 2.0 * xi * r
+    q, y, _ = _scaled_terms(frequency_ratio, damping_ratio)  # the angle does not change with the scale
     # atan2(0, 0) would give 0 for the undamped system at resonance; the limit ξ → 0 there is π/2.
     return np.where((q == 0.0) & (y == 0.0), np.pi / 2, np.arctan2(y, q))[()]
 
@@ -980,7 +1107,7 @@ def transmissibility_ratio(frequency_ratio, damping_ratio):
     Parameters
     ----------
     frequency_ratio : array_like
-        r = ω/ω_n >= 0.
+        r = ω/ω_n >= 0, any shape (not empty).
     damping_ratio : array_like
         ξ >= 0; broadcast against ``frequency_ratio``.
 
@@ -994,7 +1121,7 @@ def transmissibility_ratio(frequency_ratio, damping_ratio):
     >>> round(float(transmissibility_ratio(3.0, 0.0)), 12)
     0.125
     """
-    r, xi = _ratio_and_damping(frequency_ratio, damping_ratio)
-    num = np.hypot(1.0, 2.0 * xi * r)
-    den = np.hypot(_one_minus_square(r), 2.0 * xi * r)
+    q, y, inv2 = _scaled_terms(frequency_ratio, damping_ratio)
+    num = np.hypot(inv2, y)
+    den = np.hypot(q, y)
     return np.divide(num, den, out=np.full(den.shape, np.inf), where=den > 0)[()]
