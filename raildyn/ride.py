@@ -55,9 +55,28 @@ _ISO = {
 
 
 def _direction(direction: str) -> str:
-    if direction not in ("vertical", "lateral"):
-        raise ValueError(f"direction must be 'vertical' or 'lateral'; got {direction!r}")
-    return direction
+    return _checks.choice("direction", direction, _SPERLING_F)
+
+
+def _frequency(frequency, low: float) -> np.ndarray:
+    """Frequencies in Hz, >= ``low``, any shape, not empty (an empty grid has no answer)."""
+    return _checks.array("frequency", frequency, low=low, allow_empty=False)
+
+
+def _ratio(num, den, s):
+    """Σ num_k s^k / Σ den_k s^k (coefficients in ascending powers), finite for any finite s.
+
+    Both polynomials are divided by m^n, m = max(|s|, 1) and n the higher degree, so that
+    no power of a large s overflows; for |s| <= 1 this is the plain quotient.
+    """
+    m = np.maximum(np.abs(s), 1.0)
+    u = s / m
+    n = max(len(num), len(den)) - 1
+
+    def scaled(coefficients):
+        return sum(c * u**k * m ** (k - n) for k, c in enumerate(coefficients))
+
+    return scaled(num) / scaled(den)
 
 
 def sperling_correction(frequency, direction: str = "vertical") -> np.ndarray:
@@ -66,7 +85,7 @@ def sperling_correction(frequency, direction: str = "vertical") -> np.ndarray:
     Parameters
     ----------
     frequency : array_like
-        f, Hz, >= 0.5.
+        f, Hz, >= 0.5 (where the table starts); any shape, not empty.
     direction : {"vertical", "lateral"}
         Which table.
 
@@ -80,9 +99,10 @@ def sperling_correction(frequency, direction: str = "vertical") -> np.ndarray:
     >>> sperling_correction([1.0, 10.0, 30.0]).round(3).tolist()
     [0.325, 4.0, 1.0]
     """
-    f = _checks.array("frequency", frequency, low=0.5)
+    f = _frequency(frequency, 0.5)
     (a0, a1, low), (_, b1, high), top = _SPERLING_F[_direction(direction)]
-    return np.where(f < a1, low(f), np.where(f < b1, high(f), 1.0))
+    # each branch evaluated inside its own range (f² of a large f would overflow)
+    return np.where(f < a1, low(np.minimum(f, a1)), np.where(f < b1, high(np.minimum(f, b1)), 1.0))
 
 
 def sperling_weighting(frequency, direction: str = "vertical") -> np.ndarray:
@@ -91,7 +111,7 @@ def sperling_weighting(frequency, direction: str = "vertical") -> np.ndarray:
     Parameters
     ----------
     frequency : array_like
-        f, Hz, >= 0.
+        f, Hz, >= 0; any shape, not empty.
     direction : {"vertical", "lateral"}
         Which fit.
 
@@ -105,10 +125,14 @@ def sperling_weighting(frequency, direction: str = "vertical") -> np.ndarray:
     >>> float(sperling_weighting(0.0))
     0.0
     """
-    f = _checks.array("frequency", frequency, low=0.0)
+    f = _frequency(frequency, 0.0)
     c, n1, n2, d1, d2, d3 = _SPERLING_B[_direction(direction)]
-    num = n1 * f**2 + (n2 * f**2) ** 2
-    den = (1 - d1 * f**2) ** 2 + (d2 * f - d3 * f**3) ** 2
+    # |B|² = (n1 f² + n2² f⁴)/((1 − d1 f²)² + (d2 f − d3 f³)²), numerator and denominator divided by
+    # g⁶, g = max(f, 1), so that no power of a large f overflows (|B| falls as 1/f up there).
+    g = np.maximum(f, 1.0)
+    r = f / g
+    num = n1 * r**2 * g**-4.0 + (n2 * r**2 / g) ** 2
+    den = (g**-3.0 - d1 * r**2 / g) ** 2 + (d2 * r * g**-2.0 - d3 * r**3) ** 2
     return c * np.sqrt(num / den)
 
 
@@ -118,9 +142,10 @@ def sperling_harmonic(amplitude, frequency, direction: str = "vertical") -> np.n
     Parameters
     ----------
     amplitude : array_like
-        Peak acceleration a, m/s², >= 0 (converted to cm/s² inside, as Sperling's formula wants).
+        Peak acceleration a, m/s², >= 0 (converted to cm/s² inside, as Sperling's formula
+        wants); not empty, broadcast against ``frequency``.
     frequency : array_like
-        f, Hz, >= 0.5.
+        f, Hz, >= 0.5; not empty.
     direction : {"vertical", "lateral"}
         Which table of F(f).
 
@@ -134,9 +159,16 @@ def sperling_harmonic(amplitude, frequency, direction: str = "vertical") -> np.n
     >>> round(float(sperling_harmonic(0.3, 4.0)), 3)
     2.552
     """
-    a = _checks.array("amplitude", amplitude, low=0.0) * 100.0  # cm/s²
-    f = _checks.array("frequency", frequency, low=0.5)
-    return 0.896 * (a**3 * sperling_correction(f, direction) / f) ** 0.1
+    a = _checks.array("amplitude", amplitude, low=0.0, allow_empty=False) * 100.0  # cm/s²
+    f = _frequency(frequency, 0.5)
+    try:
+        np.broadcast_shapes(a.shape, f.shape)
+    except ValueError:
+        raise ValueError(
+            f"amplitude of shape {a.shape} and frequency of shape {f.shape} must broadcast together"
+        ) from None
+    # (a³F/f)^{1/10} as a^{3/10} (F/f)^{1/10}: a³ would overflow for a large a.
+    return 0.896 * a**0.3 * (sperling_correction(f, direction) / f) ** 0.1
 
 
 def iso2631_weighting(frequency, weighting: str = "Wk") -> np.ndarray:
@@ -145,7 +177,7 @@ def iso2631_weighting(frequency, weighting: str = "Wk") -> np.ndarray:
     Parameters
     ----------
     frequency : array_like
-        f, Hz, >= 0.
+        f, Hz, >= 0; any shape, not empty.
     weighting : {"Wk", "Wd"}
         W_k (vertical) or W_d (horizontal).
 
@@ -159,20 +191,20 @@ def iso2631_weighting(frequency, weighting: str = "Wk") -> np.ndarray:
     >>> round(float(abs(iso2631_weighting(6.3))), 2)  # W_k is near 1 around 4-8 Hz
     1.05
     """
-    f = _checks.array("frequency", frequency, low=0.0)
-    if weighting not in _ISO:
-        raise ValueError(f"weighting must be 'Wk' or 'Wd'; got {weighting!r}")
-    f1, f2, f3, f4, q4, f5, q5, f6, q6 = _ISO[weighting]
+    f = _frequency(frequency, 0.0)
+    f1, f2, f3, f4, q4, f5, q5, f6, q6 = _ISO[_checks.choice("weighting", weighting, _ISO)]
     s = 2j * np.pi * f
     w1, w2, w3, w4 = (2 * np.pi * x for x in (f1, f2, f3, f4))
     q1 = 1 / np.sqrt(2)
-    high = s**2 / (s**2 + w1 * s / q1 + w1**2)
-    low = w2**2 / (s**2 + w2 * s / q1 + w2**2)
-    transition = (1 + s / w3) / (1 + s / (q4 * w4) + (s / w4) ** 2)
+    # Each factor a ratio of polynomials in s (ascending powers), evaluated so that no power overflows.
+    high = _ratio((0, 0, 1), (w1**2, w1 / q1, 1), s)
+    low = _ratio((w2**2,), (w2**2, w2 / q1, 1), s)
+    transition = _ratio((1, 1 / w3), (1, 1 / (q4 * w4), 1 / w4**2), s)
     H = high * low * transition
     if f5 is not None:
         w5, w6 = 2 * np.pi * f5, 2 * np.pi * f6
-        H = H * (1 + s / (q5 * w5) + (s / w5) ** 2) / (1 + s / (q6 * w6) + (s / w6) ** 2) * (w5 / w6) ** 2
+        step = _ratio((1, 1 / (q5 * w5), 1 / w5**2), (1, 1 / (q6 * w6), 1 / w6**2), s)
+        H = H * step * (w5 / w6) ** 2
     return H
 
 
@@ -183,19 +215,23 @@ class RideQuality:
     Attributes
     ----------
     rms : float
-        Unweighted RMS, m/s².
+        Unweighted RMS, m/s², >= 0.
     sperling_rms : float
-        RMS weighted by Sperling's B(f), m/s².
+        RMS weighted by Sperling's B(f), m/s², >= 0.
     wz : float
-        Sperling's ride index (1 very good … 4.5 dangerous).
+        Sperling's ride index (1 very good … 4.5 dangerous), >= 0.
     iso_rms : float
-        ISO 2631-1 weighted RMS (W_k vertical, W_d lateral), m/s².
+        ISO 2631-1 weighted RMS (W_k vertical, W_d lateral), m/s², >= 0.
     """
 
     rms: float
     sperling_rms: float
     wz: float
     iso_rms: float
+
+    def __post_init__(self):
+        for name in ("rms", "sperling_rms", "wz", "iso_rms"):
+            object.__setattr__(self, name, _checks.nonnegative(name, getattr(self, name)))
 
 
 def sperling_index(weighted_rms) -> float:
@@ -228,7 +264,7 @@ def ride_quality(psd, omega, direction: str = "vertical") -> RideQuality:
     psd : array_like, shape (n,)
         One-sided PSD of the acceleration, (m/s²)² per rad/s, >= 0.
     omega : array_like, shape (n,)
-        Circular frequencies, rad/s, >= 0, strictly increasing.
+        Circular frequencies, rad/s, >= 0, strictly increasing, n >= 2.
     direction : {"vertical", "lateral"}
         Sperling's vertical or lateral weighting; ISO W_k or W_d.
 
@@ -244,9 +280,12 @@ def ride_quality(psd, omega, direction: str = "vertical") -> RideQuality:
     >>> round(q.rms, 4)  # √(1e-4 × 200)
     0.1414
     """
-    S = np.asarray(psd, dtype=float)
-    w = np.asarray(omega, dtype=float)
-    f = _checks.array("omega", omega, ndim=1, low=0.0) / (2 * np.pi)
+    w = _checks.time_grid("omega", omega)
+    if w.size < 2 or w[0] < 0:
+        raise ValueError(f"omega must hold at least 2 frequencies, all >= 0 rad/s, got {w!r:.80}")
+    S = _checks.array("psd", psd, shape=w.shape, low=0.0)
+    direction = _direction(direction)
+    f = w / (2 * np.pi)
     B = sperling_weighting(f, direction)
     W = iso2631_weighting(f, "Wk" if direction == "vertical" else "Wd")
     ms = rv.mean_square(S, w)
@@ -262,7 +301,7 @@ def ride_quality_history(acceleration, dt, direction: str = "vertical") -> RideQ
     Parameters
     ----------
     acceleration : array_like, shape (n,)
-        Acceleration, m/s², sampled uniformly; n >= 4 (the mean is removed).
+        Acceleration, m/s², any values, sampled uniformly; n >= 4 (the mean is removed).
     dt : float
         Sampling interval, s, > 0.
     direction : {"vertical", "lateral"}
@@ -282,8 +321,12 @@ def ride_quality_history(acceleration, dt, direction: str = "vertical") -> RideQ
     """
     a = _checks.array("acceleration", acceleration, ndim=1)
     dt = _checks.positive("dt", dt)
+    direction = _direction(direction)
     if a.size < 4:
         raise ValueError(f"acceleration must hold at least 4 samples, got {a.size}")
+    # Scaled to a peak of 1 (and the RMS values scaled back), so that no square overflows.
+    scale = float(np.max(np.abs(a))) or 1.0
+    a = a / scale
     a = a - a.mean()
     A = np.fft.rfft(a)
     f = np.fft.rfftfreq(a.size, dt)
@@ -291,7 +334,7 @@ def ride_quality_history(acceleration, dt, direction: str = "vertical") -> RideQ
     W = np.abs(iso2631_weighting(f, "Wk" if direction == "vertical" else "Wd"))
 
     def _rms(weight):
-        return float(np.sqrt(np.mean(np.fft.irfft(A * weight, n=a.size) ** 2)))
+        return scale * float(np.sqrt(np.mean(np.fft.irfft(A * weight, n=a.size) ** 2)))
 
     sw = _rms(B)
-    return RideQuality(float(np.sqrt(np.mean(a**2))), sw, sperling_index(sw), _rms(W))
+    return RideQuality(scale * float(np.sqrt(np.mean(a**2))), sw, sperling_index(sw), _rms(W))

@@ -369,10 +369,26 @@ def test_bump_is_smooth_and_has_its_height():
 # --------------------------------------------------------------------------- bad input
 
 
-@pytest.mark.parametrize("bad", [0, 7, -1, 2.0, "4", True])
+@pytest.mark.parametrize("bad", [0, 7, -1])
 def test_bad_fra_class(bad):
-    with pytest.raises(ValueError, match="track_class must be an FRA class"):
+    with pytest.raises(ValueError, match=r"track_class must be an integer in \[1, 6\]"):
         fra_psd("vertical", bad, [1.0])
+
+
+@pytest.mark.parametrize("bad", [2.0, "4", True, None])
+def test_fra_class_of_the_wrong_type(bad):
+    with pytest.raises(TypeError, match="track_class must be an integer"):
+        fra_psd("vertical", bad, [1.0])
+
+
+@pytest.mark.parametrize("bad", [0, 4.5, "medium", None])
+def test_a_bad_grade_is_blamed_on_grade(bad):
+    # issue 15: band_variance and track_psd named track_class (or level), a parameter the caller never set
+    for spectrum in ("fra", "german"):
+        with pytest.raises((ValueError, TypeError), match=r"^grade must be"):
+            band_variance(spectrum, "vertical", bad, (0.1, 1.0))
+        with pytest.raises((ValueError, TypeError), match=r"^grade must be"):
+            track_psd(spectrum, "vertical", bad)
 
 
 def test_bad_component_level_and_wavenumber():
@@ -380,16 +396,22 @@ def test_bad_component_level_and_wavenumber():
         fra_psd("twist", 3, [1.0])
     with pytest.raises(ValueError, match="component must be one of"):
         german_psd("twist", "low", [1.0])
-    with pytest.raises(ValueError, match="level must be 'low' or 'high'"):
+    with pytest.raises(ValueError, match=r"level must be one of \['high', 'low'\]"):
         german_psd("vertical", "medium", [1.0])
+    with pytest.raises(TypeError, match="component must be a string"):
+        fra_psd(None, 3, [1.0])
     with pytest.raises(ValueError, match="wavenumber must be > 0"):
         fra_psd("vertical", 3, [1.0, -0.5])
     with pytest.raises(ValueError, match="wavenumber must be > 0"):
         german_psd("vertical", "low", [0.0])
     with pytest.raises(ValueError, match="finite"):
         fra_psd("vertical", 3, [np.nan])
-    with pytest.raises(ValueError, match="spectrum must be 'fra' or 'german'"):
+    with pytest.raises(ValueError, match=r"spectrum must be one of \['fra', 'german'\]"):
         track_psd("sncf", "vertical", 1)
+    with pytest.raises(ValueError, match="wavenumber must not be empty"):
+        fra_psd("vertical", 3, [])
+    with pytest.raises(ValueError, match=r"k must be in \(0.0, 1.0\]"):
+        fra_psd("vertical", 3, [1.0], k=2.0)
 
 
 @pytest.mark.parametrize("band", [(5.0, 5.0), (10.0, 2.0), (0.0, 10.0), (1.0,), "band", (1.0, np.inf)])
@@ -416,8 +438,14 @@ def test_bad_deterministic_input():
         dipped_joints([0.0], 0.01, 7.0)  # more than half of 11.9 m
     with pytest.raises(ValueError, match="depth must be in"):
         dipped_joints([0.0], -0.01, 1.0)
-    with pytest.raises(ValueError, match="derivative must be 0, 1 or 2"):
+    with pytest.raises(ValueError, match=r"derivative must be an integer in \[0, 2\]"):
         bump([0.0], 0.01, 1.0, derivative=3)
+    with pytest.raises(TypeError, match="derivative must be an integer"):
+        bump([0.0], 0.01, 1.0, derivative=1.0)
+    with pytest.raises(ValueError, match=r"speed must be in \(0.0, 1000.0\]"):
+        sinusoid([0.0], 0.01, 1.0, derivative=2, speed=1e300)  # V² would overflow
+    with pytest.raises(ValueError, match="x must not be empty"):
+        dipped_joints([], 0.01, 1.0)
     with pytest.raises(ValueError, match="arrangement must be"):
         jointed_track([0.0], 0.01, 1.0, arrangement="random")
     with pytest.raises(ValueError, match="wavelength must be in"):
@@ -522,3 +550,73 @@ def test_jointed_track_plot_draws_and_moves_its_lines():
     in_phase = jointed_track(x, 0.008, 2.0, arrangement="in_phase")
     assert in_phase.plot(artists=art) is art and len(ax.lines) == 3
     np.testing.assert_array_equal(art["cross_level"].get_ydata(), 0.0)
+
+
+# --------------------------------------------------------------------------- issue 15: callbacks and results
+
+
+def _vertical(w):
+    return fra_psd("vertical", 4, w)
+
+
+@pytest.mark.parametrize(
+    ("callback", "message"),
+    [
+        (lambda w: np.full_like(np.asarray(w, dtype=float), np.nan), "psd returned a non-finite value"),
+        (lambda w: -_vertical(w), "psd must return values >= 0"),
+        (lambda w: np.stack([_vertical(w), _vertical(w)]), "psd must return an array of shape"),
+    ],
+    ids=["nan", "negative", "shape"],
+)
+def test_a_spectrum_callback_is_checked_where_it_is_used(callback, message):
+    # issue 15: a callback returning NaN or a negative spectrum passed straight through temporal_psd
+    with pytest.raises(ValueError, match=message):
+        track.temporal_psd(callback, 30.0)
+    with pytest.raises(ValueError, match=message):
+        track.excitation_csd(callback, [1.0, 5.0], [0.0, 2.5], 30.0)
+    with pytest.raises(ValueError, match=message):
+        synthesize_irregularity(callback, 100.0, 1.0, (2.0, 50.0), rng=1)
+
+
+def test_temporal_psd_checks_every_later_call_too():
+    calls = []
+
+    def breaks_later(w):  # fine at the first call, negative afterwards
+        calls.append(1)
+        return _vertical(w) * (1 if len(calls) == 1 else -1)
+
+    in_time = track.temporal_psd(breaks_later, 30.0)
+    with pytest.raises(ValueError, match="psd must return values >= 0"):
+        in_time(np.array([1.0, 2.0]))
+    with pytest.raises(TypeError, match="psd must be a callable"):
+        track.temporal_psd(1.0, 30.0)
+
+
+def test_results_are_validated():
+    x = np.arange(8.0)
+    with pytest.raises(ValueError, match="variance must be in"):
+        track.IrregularitySample(x, np.zeros(8), (0.1, 1.0), -1.0)
+    with pytest.raises(ValueError, match=r"z must have shape \(8,\) or \(n_samples, 8\)"):
+        track.IrregularitySample(x, np.zeros(7), (0.1, 1.0), 1.0)
+    with pytest.raises(ValueError, match="x must be strictly increasing"):
+        track.IrregularitySample(np.zeros(8), np.zeros(8), (0.1, 1.0), 1.0)
+    with pytest.raises(ValueError, match="gauge must be in"):
+        track.ComponentVariances(1.0, 1.0, 1.0, -1.0)
+    with pytest.raises(ValueError, match="left must have the shape of x"):
+        track.JointedTrack(x, np.zeros(7), np.zeros(8), "staggered")
+    with pytest.raises(TypeError, match="arrangement must be a string"):
+        track.JointedTrack(x, np.zeros(8), np.zeros(8), None)
+
+
+def test_large_values_stay_finite_or_are_refused():
+    # the cross-level and gauge spectra at an overflowing Ω²: 0, not inf/inf
+    for component in COMPONENTS:
+        assert np.all(german_psd(component, "high", [1e200, 1.0]) >= 0)
+        assert german_psd(component, "high", [1e200])[0] == 0.0
+        assert fra_psd(component, 1, [1e200])[0] == 0.0
+    with pytest.raises(ValueError, match="n_samples × length/dx must be at most"):
+        synthesize_irregularity(_vertical, 1e300, 1.0, (2.0, 50.0), rng=1)
+    with pytest.raises(ValueError, match=r"count must be an integer in \[1, 1000000\]"):
+        track.axle_filter_wavelengths(2.5, 10**12)
+    with pytest.raises(ValueError, match="one_period must hold at least 3 samples"):
+        track.harmonic_amplitudes([], 1)

@@ -40,19 +40,29 @@ __all__ = [
 ]
 
 RAIL_LENGTH = 11.9  # m; the 39-ft rail of North American jointed track (Garg & Dukkipati 1984, ch. 3)
+# m/s: the speed a rate in time may be asked at, six times the rail speed record (160 m/s), so that
+# V² d²z/dx² stays finite for any finite profile.
+_MAX_SPEED = 1000.0
+_ARRANGEMENTS = ("staggered", "in_phase")
 
 
 def _derivative(value) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value not in (0, 1, 2):
-        raise ValueError(f"derivative must be 0, 1 or 2; got {value!r}")
-    return int(value)
+    return _checks.integer("derivative", value, low=0, high=2)
 
 
-def _in_time(values: np.ndarray, order: int, speed) -> np.ndarray:
+def _vehicle_speed(speed) -> float:
+    """A vehicle speed for a view in time, 0 < V <= 1000 m/s (``_MAX_SPEED``)."""
+    return _checks.scalar("speed", speed, low=0.0, low_open=True, high=_MAX_SPEED)
+
+
+def _speed(speed) -> float | None:
+    """The speed a rate in time is asked at, or None (derivatives along x)."""
+    return None if speed is None else _vehicle_speed(speed)
+
+
+def _in_time(values: np.ndarray, order: int, speed: float | None) -> np.ndarray:
     """Derivatives along x turned into rates in time at speed V: d^k z/dt^k = V^k d^k z/dx^k."""
-    if speed is None:
-        return values
-    return _checks.positive("speed", speed) ** order * values
+    return values if speed is None else speed**order * values
 
 
 def dipped_joints(
@@ -70,7 +80,7 @@ def dipped_joints(
     Parameters
     ----------
     x : array_like
-        Distance along the track, m.
+        Distance along the track, m; any shape, not empty.
     depth : float
         δ >= 0, depth of the dip at each joint, m.
     half_width : float
@@ -78,13 +88,14 @@ def dipped_joints(
     rail_length : float
         L > 0, distance between joints, m (default 11.9).
     offset : float
-        Position of one joint, m.
+        Position of one joint, m (any real).
     derivative : {0, 1, 2}
         Return z (m), dz/dx or d²z/dx² (1/m). At a joint itself the slope is
         taken as the mean of its two one-sided values (0); the curvature returned
         is the regular part, without the Dirac term of the slope jump 4δ/a.
     speed : float, optional
-        V > 0, m/s: return the rates met in time instead, dz/dt = V dz/dx (m/s)
+        V, m/s, 0 < V <= 1000 (six times the rail speed record, so that the rates
+        stay finite): return the rates met in time instead, dz/dt = V dz/dx (m/s)
         or d²z/dt² = V² d²z/dx² (m/s²).
 
     Returns
@@ -97,12 +108,13 @@ def dipped_joints(
     >>> dipped_joints([0.0, 1.0, 5.95], depth=0.01, half_width=2.0).round(6).tolist()
     [-0.01, -0.0025, 0.0]
     """
-    x = _checks.array("x", x)
+    x = _checks.array("x", x, allow_empty=False)
     delta = _checks.nonnegative("depth", depth)
     L = _checks.positive("rail_length", rail_length)
     a = _checks.scalar("half_width", half_width, low=0.0, low_open=True, high=L / 2)
     offset = _checks.scalar("offset", offset)
     order = _derivative(derivative)
+    speed = _speed(speed)
     xi = np.mod(x - offset + 0.5 * L, L) - 0.5 * L  # signed distance to the nearest joint
     u = np.abs(xi) / a
     inside = u < 1.0
@@ -122,9 +134,9 @@ class JointedTrack:
     Attributes
     ----------
     x : ndarray
-        Distance, m.
+        Distance, m; any shape, not empty.
     left, right : ndarray
-        Rail profiles, m (or their derivatives).
+        Rail profiles, m (or their derivatives), of the shape of ``x``.
     arrangement : str
         "staggered" or "in_phase".
     """
@@ -133,6 +145,16 @@ class JointedTrack:
     left: np.ndarray
     right: np.ndarray
     arrangement: str
+
+    def __post_init__(self):
+        x = _checks.array("x", self.x, allow_empty=False)
+        object.__setattr__(self, "x", x)
+        for name in ("left", "right"):
+            profile = _checks.array(name, getattr(self, name))
+            if profile.shape != x.shape:
+                raise ValueError(f"{name} must have the shape of x, {x.shape}, got {profile.shape}")
+            object.__setattr__(self, name, profile)
+        _checks.choice("arrangement", self.arrangement, _ARRANGEMENTS)
 
     @property
     def vertical(self) -> np.ndarray:
@@ -162,6 +184,11 @@ class JointedTrack:
         """
         profiles = {"left": self.left, "right": self.right, "cross_level": self.cross_level}
         if artists is not None:
+            _checks.instance("artists", artists, dict, "dict returned by an earlier plot, or None")
+            if set(artists) != set(profiles):
+                raise ValueError(
+                    f"artists must hold the lines {sorted(profiles)}, got keys {sorted(artists)}"
+                )
             for name, values in profiles.items():
                 artists[name].set_ydata(1e3 * values)
             return artists
@@ -202,7 +229,7 @@ def jointed_track(
     Parameters
     ----------
     x : array_like
-        Distance along the track, m.
+        Distance along the track, m; any shape, not empty.
     depth : float
         δ >= 0, depth of each dip, m.
     half_width : float
@@ -214,7 +241,7 @@ def jointed_track(
     derivative : {0, 1, 2}
         Profiles (m), slopes or curvatures (1/m), as for :func:`dipped_joints`.
     speed : float, optional
-        V > 0, m/s: rates in time instead, as for :func:`dipped_joints`.
+        V, m/s, 0 < V <= 1000: rates in time instead, as for :func:`dipped_joints`.
 
     Returns
     -------
@@ -227,8 +254,7 @@ def jointed_track(
     >>> t.cross_level.round(6).tolist()
     [-0.01, 0.01]
     """
-    if arrangement not in ("staggered", "in_phase"):
-        raise ValueError(f"arrangement must be 'staggered' or 'in_phase'; got {arrangement!r}")
+    _checks.choice("arrangement", arrangement, _ARRANGEMENTS)
     L = _checks.positive("rail_length", rail_length)
     left = dipped_joints(x, depth, half_width, rail_length=L, derivative=derivative, speed=speed)
     shift = 0.5 * L if arrangement == "staggered" else 0.0
@@ -247,18 +273,18 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
     Parameters
     ----------
     x : array_like
-        Distance, m.
+        Distance, m; any shape, not empty.
     height : float
         h, m (any sign).
     length : float
         ℓ > 0, m.
     position : float
-        x₀, start of the bump, m.
+        x₀, start of the bump, m (any real).
     derivative : {0, 1, 2}
         z (m), dz/dx or d²z/dx² (1/m).
     speed : float, optional
-        V > 0, m/s: return the rates met in time instead, dz/dt = V dz/dx (m/s)
-        or d²z/dt² = V² d²z/dx² (m/s²). The largest dz/dt is πhV/ℓ.
+        V, m/s, 0 < V <= 1000: return the rates met in time instead, dz/dt = V dz/dx
+        (m/s) or d²z/dt² = V² d²z/dx² (m/s²). The largest dz/dt is πhV/ℓ.
 
     Returns
     -------
@@ -272,11 +298,12 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
     >>> round(float(bump(0.25, 0.02, 1.0, derivative=1, speed=10.0)), 6)  # π h V/ℓ
     0.628319
     """
-    x = _checks.array("x", x)
+    x = _checks.array("x", x, allow_empty=False)
     h = _checks.scalar("height", height)
     ell = _checks.positive("length", length)
     x0 = _checks.scalar("position", position)
     order = _derivative(derivative)
+    speed = _speed(speed)
     k = 2.0 * np.pi / ell
     s = x - x0
     inside = (s >= 0.0) & (s <= ell)
@@ -297,17 +324,17 @@ def sinusoid(
     Parameters
     ----------
     x : array_like
-        Distance, m.
+        Distance, m; any shape, not empty.
     amplitude : float
-        A, m.
+        A, m (any sign).
     wavelength : float
         λ > 0, m.
     phase : float
-        φ, rad.
+        φ, rad (any real).
     derivative : {0, 1, 2}
         z (m), dz/dx or d²z/dx² (1/m).
     speed : float, optional
-        V > 0, m/s: return the rates met in time instead (m/s, m/s²).
+        V, m/s, 0 < V <= 1000: return the rates met in time instead (m/s, m/s²).
 
     Returns
     -------
@@ -319,11 +346,12 @@ def sinusoid(
     >>> float(sinusoid(0.0, 0.005, 20.0, derivative=1))  # A·2π/λ
     0.0015707963267948967
     """
-    x = _checks.array("x", x)
+    x = _checks.array("x", x, allow_empty=False)
     A = _checks.scalar("amplitude", amplitude)
     lam = _checks.positive("wavelength", wavelength)
     phi = _checks.scalar("phase", phase)
     order = _derivative(derivative)
+    speed = _speed(speed)
     k = 2.0 * np.pi / lam
     arg = k * x + phi
     z = (A * np.sin(arg), A * k * np.cos(arg), -A * k**2 * np.sin(arg))[order]
@@ -399,7 +427,7 @@ def harmonic_amplitudes(one_period, count: int) -> np.ndarray:
     Parameters
     ----------
     one_period : array_like, shape (N,)
-        The profile over one period, uniformly sampled.
+        The profile over one period, uniformly sampled, N >= 3 (one harmonic needs three points).
     count : int
         Harmonics wanted, 1 <= count <= (N − 1)/2.
 
@@ -415,5 +443,9 @@ def harmonic_amplitudes(one_period, count: int) -> np.ndarray:
     [3.0, 0.0, 1.0]
     """
     samples = _checks.array("one_period", one_period, ndim=1)
+    if samples.size < 3:
+        raise ValueError(
+            f"one_period must hold at least 3 samples (N >= 3 for one harmonic), got {samples.size}"
+        )
     count = _checks.integer("count", count, low=1, high=(samples.size - 1) // 2)
     return 2.0 * np.abs(np.fft.rfft(samples))[1 : count + 1] / samples.size

@@ -169,15 +169,18 @@ GERMAN_PARAMETERS = {
 # fmt: on
 
 
-def _component(value, allowed=COMPONENTS) -> str:
-    if not isinstance(value, str) or value not in allowed:
-        raise ValueError(f"component must be one of {', '.join(map(repr, allowed))}; got {value!r}")
-    return value
+_SPECTRA = ("fra", "german")
+# The sources call k a "safety factor" between 0.25 and 1 (module docstring): k is taken in (0, 1].
+_K_MAX = 1.0
+
+
+def _component(value) -> str:
+    return _checks.choice("component", value, COMPONENTS)
 
 
 def _wavenumber(value) -> np.ndarray:
     """Wavenumbers Ω > 0 in rad/m (every spectrum here is unbounded or undefined at Ω = 0)."""
-    arr = _checks.array("wavenumber", value)
+    arr = _checks.array("wavenumber", value, allow_empty=False)
     if np.any(arr <= 0):
         bad = arr[arr <= 0].flat[0]
         raise ValueError(
@@ -186,20 +189,25 @@ def _wavenumber(value) -> np.ndarray:
     return arr
 
 
-def _fra_class(value) -> FRAParameters:
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, np.integer))
-        or int(value) not in FRA_PARAMETERS
-    ):
-        raise ValueError(f"track_class must be an FRA class 1, 2, 3, 4, 5 or 6; got {value!r}")
-    return FRA_PARAMETERS[int(value)]
+def _fra_class(value, name: str = "track_class") -> FRAParameters:
+    """The parameters of FRA class ``value`` (1–6); ``name`` is the caller's parameter."""
+    return FRA_PARAMETERS[_checks.integer(name, value, low=min(FRA_CLASSES), high=max(FRA_CLASSES))]
 
 
-def _german_level(value) -> GermanParameters:
-    if not isinstance(value, str) or value not in GERMAN_PARAMETERS:
-        raise ValueError(f"level must be 'low' or 'high' (disturbance); got {value!r}")
-    return GERMAN_PARAMETERS[value]
+def _german_level(value, name: str = "level") -> GermanParameters:
+    return GERMAN_PARAMETERS[_checks.choice(name, value, GERMAN_LEVELS)]
+
+
+def _k(value) -> float:
+    return _checks.scalar("k", value, low=0.0, low_open=True, high=_K_MAX)
+
+
+def _family(spectrum, grade):
+    """The checked family name and the parameters of its ``grade`` (an FRA class or a German level)."""
+    spectrum = _checks.choice("spectrum", spectrum, _SPECTRA)
+    if spectrum == "fra":
+        return spectrum, _fra_class(grade, "grade")
+    return spectrum, _german_level(grade, "grade")
 
 
 def fra_psd(component: str, track_class: int, wavenumber, *, k: float = FRA_K) -> np.ndarray:
@@ -214,9 +222,10 @@ def fra_psd(component: str, track_class: int, wavenumber, *, k: float = FRA_K) -
     track_class : int
         FRA class 1 (worst) to 6 (best).
     wavenumber : array_like
-        Spatial circular frequency Ω = 2π/λ, rad/m, > 0.
+        Spatial circular frequency Ω = 2π/λ, rad/m, > 0; any shape, not empty.
     k : float
-        Scale factor of the sources (module docstring), default 0.25.
+        Scale factor of the sources (module docstring), 0 < k <= 1 (the range the
+        texts give this "safety factor"), default 0.25.
 
     Returns
     -------
@@ -231,14 +240,16 @@ def fra_psd(component: str, track_class: int, wavenumber, *, k: float = FRA_K) -
     """
     component = _component(component)
     p = _fra_class(track_class)
-    k = _checks.positive("k", k)
-    w2 = _wavenumber(wavenumber) ** 2
+    k = _k(k)
+    w = _wavenumber(wavenumber)
     wc2 = p.omega_c**2
-    if component in ("vertical", "alignment"):
-        A = p.A_v if component == "vertical" else p.A_a
-        s_cm2 = k * A * wc2 / (w2 * (w2 + wc2))
-    else:
-        s_cm2 = 4.0 * k * p.A_v * wc2 / ((w2 + wc2) * (w2 + p.omega_s**2))
+    with np.errstate(over="ignore"):  # Ω² overflows above 1e154 rad/m, where S is 0 to double precision
+        w2 = w**2
+        if component in ("vertical", "alignment"):
+            A = p.A_v if component == "vertical" else p.A_a
+            s_cm2 = k * A * wc2 / (w2 * (w2 + wc2))
+        else:
+            s_cm2 = 4.0 * k * p.A_v * wc2 / ((w2 + wc2) * (w2 + p.omega_s**2))
     return rv.convert_psd(_CM2 * s_cm2, **_SOURCE_FORM, to_unit="rad/m")
 
 
@@ -253,7 +264,7 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
     level : {"low", "high"}
         Low or high disturbance.
     wavenumber : array_like
-        Ω = 2π/λ, rad/m, > 0.
+        Ω = 2π/λ, rad/m, > 0; any shape, not empty.
 
     Returns
     -------
@@ -270,18 +281,22 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
     """
     component = _component(component)
     p = _german_level(level)
-    w2 = _wavenumber(wavenumber) ** 2
+    w = _wavenumber(wavenumber)
     wc2, wr2 = p.omega_c**2, p.omega_r**2
-    base = wc2 / ((w2 + wr2) * (w2 + wc2))
+    with np.errstate(over="ignore"):  # Ω² overflows above 1e154 rad/m, where S is 0 to double precision
+        w2 = w**2
+        base = wc2 / ((w2 + wr2) * (w2 + wc2))
+    # Ω²/(Ω² + Ω_s²) written as 1/(1 + Ω_s²/Ω²): 1, not inf/inf, where Ω² overflows.
+    high_pass = 1.0 / (1.0 + p.omega_s**2 / w2)
     if component == "vertical":
         s = p.A_v * base
     elif component == "alignment":
         s = p.A_a * base
     elif component == "cross_level":
-        angle = (p.A_v / p.b**2) * base * w2 / (w2 + p.omega_s**2)
+        angle = (p.A_v / p.b**2) * base * high_pass
         s = (2.0 * p.b) ** 2 * angle
     else:
-        s = p.A_g * base * w2 / (w2 + p.omega_s**2)
+        s = p.A_g * base * high_pass
     return rv.convert_psd(s, **_SOURCE_FORM, to_unit="rad/m")
 
 
@@ -310,15 +325,11 @@ def track_psd(spectrum: str, component: str, grade) -> Callable[[np.ndarray], np
     >>> bool(np.isclose(psd(np.array([0.5]))[0], fra_psd("vertical", 4, [0.5])[0]))
     True
     """
+    spectrum, _ = _family(spectrum, grade)
+    _component(component)
     if spectrum == "fra":
-        _component(component)
-        _fra_class(grade)
         return lambda w: fra_psd(component, grade, w)
-    if spectrum == "german":
-        _component(component)
-        _german_level(grade)
-        return lambda w: german_psd(component, grade, w)
-    raise ValueError(f"spectrum must be 'fra' or 'german'; got {spectrum!r}")
+    return lambda w: german_psd(component, grade, w)
 
 
 def wavelength_band(band) -> tuple[float, float]:
@@ -342,7 +353,12 @@ def wavelength_band(band) -> tuple[float, float]:
     >>> [round(w, 4) for w in wavelength_band((1.524, 304.8))]
     [0.0206, 4.1228]
     """
-    lo, hi = _checks.interval("wavelength_band", band, unit="m")
+    return _wavenumber_band(band, "band")
+
+
+def _wavenumber_band(band, name: str) -> tuple[float, float]:
+    """:func:`wavelength_band` for the caller's parameter ``name``."""
+    lo, hi = _checks.interval(name, band, unit="m")
     return 2.0 * np.pi / hi, 2.0 * np.pi / lo
 
 
@@ -385,7 +401,8 @@ def band_variance(spectrum: str, component: str, grade, band, *, k: float = FRA_
         Wavenumbers in rad/m, 0 < omega_lo < omega_hi (use :func:`wavelength_band`
         to convert from wavelengths).
     k : float
-        The FRA scale factor, as for :func:`fra_psd` (ignored for the German spectra).
+        The FRA scale factor, 0 < k <= 1, as for :func:`fra_psd` (checked, but not
+        used, for the German spectra).
 
     Returns
     -------
@@ -399,20 +416,19 @@ def band_variance(spectrum: str, component: str, grade, band, *, k: float = FRA_
     >>> round(1e3 * var**0.5, 1)  # RMS in mm
     25.0
     """
-    track_psd(spectrum, component, grade)  # checks the names
-    k = _checks.positive("k", k)
+    spectrum, p = _family(spectrum, grade)
+    component = _component(component)
+    k = _k(k)
     lo, hi = _checks.interval("band", band, unit="rad/m")
 
     def F(w):  # antiderivative of S in m²
         if spectrum == "fra":
-            p = FRA_PARAMETERS[int(grade)]
             wc = p.omega_c
             if component in ("vertical", "alignment"):
                 A = p.A_v if component == "vertical" else p.A_a
                 # Ω_c²/(Ω²(Ω²+Ω_c²)) = 1/Ω² − 1/(Ω²+Ω_c²)
                 return k * A * _CM2 * (_int_inv_w2(w) - _int_lorentz(w, wc))
             return 4 * k * p.A_v * _CM2 * wc**2 * _int_two_lorentz(w, wc, p.omega_s)
-        p = GERMAN_PARAMETERS[grade]
         if component in ("vertical", "alignment"):
             A = p.A_v if component == "vertical" else p.A_a
             return A * p.omega_c**2 * _int_two_lorentz(w, p.omega_r, p.omega_c)

@@ -25,7 +25,8 @@ import numpy as np
 
 from raildyn import _checks, plots
 from raildyn import random_vibration as rv
-from raildyn.track.spectra import COMPONENTS, track_psd, wavelength_band
+from raildyn.track.deterministic import _vehicle_speed
+from raildyn.track.spectra import COMPONENTS, _wavenumber_band, track_psd
 
 __all__ = [
     "ComponentVariances",
@@ -44,6 +45,12 @@ __all__ = [
 _GL_NODES, _GL_WEIGHTS = np.polynomial.legendre.leggauss(8)
 _GL_NODES, _GL_WEIGHTS = 0.5 * _GL_NODES, 0.5 * _GL_WEIGHTS
 
+# At most this many points in one call of the synthesis (n × n_samples): 80 MB of samples, e.g. a
+# 2500 km track at 0.25 m; beyond that the FFT's memory, not the spectrum, sets the limit.
+_MAX_POINTS = 10_000_000
+# Wavenumbers (rad/m) at which temporal_psd tries a spectrum when it is given: wavelengths 0.6–63 m.
+_PROBE = np.array([0.1, 1.0, 10.0])
+
 
 @dataclass(frozen=True)
 class IrregularitySample:
@@ -52,20 +59,32 @@ class IrregularitySample:
     Attributes
     ----------
     x : ndarray
-        Distance along the track, m (``arange(n) * dx``).
+        Distance along the track, m (``arange(n) * dx``), strictly increasing, not empty.
     z : ndarray
         Irregularity, m: shape ``(n,)``, or ``(n_samples, n)``.
     band : (float, float)
-        Wavenumber band kept, rad/m (the top is lowered to the cell edge of the
-        highest line when the band reaches the Nyquist wavenumber π/dx).
+        Wavenumber band kept, rad/m, 0 < low < high (the top is lowered to the cell
+        edge of the highest line when the band reaches the Nyquist wavenumber π/dx).
     variance : float
-        ∫_band S dΩ, m²; the mean square of every sample over its length.
+        ∫_band S dΩ, m², >= 0; the mean square of every sample over its length.
     """
 
     x: np.ndarray
     z: np.ndarray
     band: tuple[float, float]
     variance: float
+
+    def __post_init__(self):
+        x = _checks.time_grid("x", self.x)
+        z = _checks.array("z", self.z, allow_empty=False)
+        if z.ndim not in (1, 2) or z.shape[-1] != x.size:
+            raise ValueError(
+                f"z must have shape ({x.size},) or (n_samples, {x.size}) to match x, got {z.shape}"
+            )
+        object.__setattr__(self, "x", x)
+        object.__setattr__(self, "z", z)
+        object.__setattr__(self, "band", _checks.interval("band", self.band, unit="rad/m"))
+        object.__setattr__(self, "variance", _checks.nonnegative("variance", self.variance))
 
     @property
     def rms(self) -> float:
@@ -114,7 +133,8 @@ def _cell_psd(psd: Callable, lo: float, hi: float, d_omega: float) -> Callable:
         if np.any(inside):
             ai, wi = a[inside], width[inside]
             nodes = (ai + 0.5 * wi)[:, None] + wi[:, None] * _GL_NODES[None, :]
-            values = np.asarray(psd(nodes.ravel()), dtype=float).reshape(nodes.shape)
+            values = _checks.returned("psd", psd(nodes.ravel()), shape=(nodes.size,), low=0.0)
+            values = values.reshape(nodes.shape)
             out[inside] = (values @ _GL_WEIGHTS) * wi / d_omega
         return out
 
@@ -140,9 +160,10 @@ def synthesize_irregularity(
     Parameters
     ----------
     psd : callable
-        One-sided S(Ω) in m²/(rad/m), Ω in rad/m (e.g. ``lambda w: fra_psd("vertical", 4, w)``).
+        One-sided S(Ω) in m²/(rad/m), Ω in rad/m (e.g. ``lambda w: fra_psd("vertical", 4, w)``):
+        given a 1-D array of wavenumbers it returns as many finite values >= 0 (checked).
     length : float
-        Length of track, m; the sample has period ``length``.
+        Length of track, m, > 0; the sample has period ``length``.
     dx : float
         Spacing, m, > 0; ``length/dx`` is rounded to the number of points n >= 4.
     wavelength_band : (shortest, longest)
@@ -150,7 +171,8 @@ def synthesize_irregularity(
     rng : numpy.random.Generator, int or None
         Source of the phases; the same seed gives the same sample.
     n_samples : int
-        Independent samples, >= 1.
+        Independent samples, >= 1. The points of all the samples, n × n_samples, are at
+        most 10⁷ (80 MB): the memory of one FFT sets that limit.
 
     Returns
     -------
@@ -164,8 +186,15 @@ def synthesize_irregularity(
     >>> bool(np.isclose(np.mean(s.z**2), s.variance, rtol=1e-12))
     True
     """
+    psd = _checks.function("psd", psd)
     length = _checks.positive("length", length)
     dx = _checks.positive("dx", dx)
+    n_samples = _checks.integer("n_samples", n_samples, low=1, high=_MAX_POINTS)
+    if length / dx * n_samples > _MAX_POINTS:
+        raise ValueError(
+            f"n_samples × length/dx must be at most {_MAX_POINTS:.0e} points (the memory of the FFT), "
+            f"got length={length!r}, dx={dx!r}, n_samples={n_samples!r}"
+        )
     n = int(round(length / dx))
     if n < 4:
         raise ValueError(f"length/dx must give at least 4 points, got length={length!r}, dx={dx!r}")
@@ -174,8 +203,6 @@ def synthesize_irregularity(
     # The highest line is k = ⌈n/2⌉ − 1; its cell ends half a spacing above it, just under the Nyquist
     # wavenumber π/dx. The band kept (and reported) stops there.
     hi = min(hi, ((n - 1) // 2 + 0.5) * d_omega)
-    if not callable(psd):
-        raise TypeError(f"psd must be a callable S(Omega) in m^2/(rad/m), got {type(psd).__name__}")
     averaged = _cell_psd(psd, lo, hi, d_omega)
     seen = {}
 
@@ -190,7 +217,7 @@ def synthesize_irregularity(
 
 def _wavelength_band_checked(band, length: float, dx: float) -> tuple[float, float]:
     """Wavenumber band of a wavelength band, checked against the record: 2·dx <= λ_min, λ_max <= length."""
-    lo, hi = wavelength_band(band)
+    lo, hi = _wavenumber_band(band, "wavelength_band")
     shortest, longest = 2 * np.pi / hi, 2 * np.pi / lo
     if shortest < 2.0 * dx * (1 - 1e-12):
         raise ValueError(
@@ -211,13 +238,17 @@ class ComponentVariances:
     Attributes
     ----------
     vertical, alignment, cross_level, gauge : float
-        One per component of ``raildyn.track.spectra.COMPONENTS``, m².
+        One per component of ``raildyn.track.spectra.COMPONENTS``, m², >= 0.
     """
 
     vertical: float
     alignment: float
     cross_level: float
     gauge: float
+
+    def __post_init__(self):
+        for name in COMPONENTS:
+            object.__setattr__(self, name, _checks.nonnegative(name, getattr(self, name)))
 
 
 @dataclass(frozen=True)
@@ -237,9 +268,9 @@ class TwoRailIrregularity:
     Attributes
     ----------
     x : ndarray
-        Distance, m.
+        Distance, m, strictly increasing, not empty.
     vertical, alignment, cross_level, gauge : ndarray
-        Irregularities, m.
+        Irregularities, m, each of the shape of ``x``.
     variances : ComponentVariances
         ∫_band S dΩ of each component, m².
     """
@@ -250,6 +281,13 @@ class TwoRailIrregularity:
     cross_level: np.ndarray
     gauge: np.ndarray
     variances: ComponentVariances
+
+    def __post_init__(self):
+        x = _checks.time_grid("x", self.x)
+        object.__setattr__(self, "x", x)
+        for name in COMPONENTS:
+            object.__setattr__(self, name, _checks.array(name, getattr(self, name), shape=x.shape))
+        _checks.instance("variances", self.variances, ComponentVariances)
 
     @property
     def left_vertical(self) -> np.ndarray:
@@ -272,11 +310,7 @@ class TwoRailIrregularity:
         return self.alignment - 0.5 * self.gauge
 
     def _component(self, component: str) -> str:
-        if not isinstance(component, str) or component not in COMPONENTS:
-            raise ValueError(
-                f"component must be one of {', '.join(map(repr, COMPONENTS))}; got {component!r}"
-            )
-        return component
+        return _checks.choice("component", component, COMPONENTS)
 
     def rms(self, component: str) -> float:
         """RMS the spectrum gives a component over the band, √(∫_band S dΩ), m.
@@ -321,7 +355,16 @@ class TwoRailIrregularity:
         dict
             The lines ``left_vertical``, ``right_vertical``, ``left_lateral`` and ``right_lateral``.
         """
-        if axes is None:
+        if axes is not None:
+            from matplotlib.axes import Axes
+
+            if isinstance(axes, (str, bytes)) or not (
+                hasattr(axes, "__len__") and len(axes) == 2 and all(isinstance(a, Axes) for a in axes)
+            ):
+                raise TypeError(
+                    f"axes must be a sequence of two matplotlib.axes.Axes or None, got {axes!r:.80}"
+                )
+        else:
             import matplotlib.pyplot as plt
 
             with matplotlib.rc_context(plots.STYLE):
@@ -396,24 +439,32 @@ def temporal_psd(psd: Callable, speed: float) -> Callable:
     Parameters
     ----------
     psd : callable
-        Spatial one-sided S(Ω), m²/(rad/m), Ω in rad/m.
+        Spatial one-sided S(Ω), m²/(rad/m), Ω in rad/m: given an array of wavenumbers
+        it returns as many finite values >= 0. It is tried once now, at Ω = 0.1, 1
+        and 10 rad/m, and what it returns is checked at every later call too.
     speed : float
-        V > 0, m/s.
+        V, m/s, 0 < V <= 1000 (six times the rail speed record; the spectrum in time
+        divides S(ω/V), which grows without bound as ω/V → 0, by V).
 
     Returns
     -------
     callable
-        S_t(ω), m²/(rad/s), ω in rad/s.
+        S_t(ω), m²/(rad/s), ω in rad/s (an array, or a number, of wavenumbers).
 
     Examples
     --------
     >>> round(float(temporal_psd(lambda w: 1.0 / w**2, 10.0)(20.0)), 6)  # S(2)/10
     0.025
     """
-    V = _checks.positive("speed", speed)
-    if not callable(psd):
-        raise TypeError(f"psd must be a callable S(Omega), got {type(psd).__name__}")
-    return lambda omega: np.asarray(psd(np.asarray(omega, dtype=float) / V)) / V
+    V = _vehicle_speed(speed)
+    psd = _checks.function("psd", psd)
+    _checks.returned("psd", psd(_PROBE), shape=_PROBE.shape, low=0.0, at=f"Ω = {_PROBE.tolist()} rad/m")
+
+    def in_time(omega):
+        w = np.asarray(omega, dtype=float)
+        return _checks.returned("psd", psd(w / V), shape=w.shape, low=0.0) / V
+
+    return in_time
 
 
 def spatial_to_temporal(psd_values, wavenumber, speed) -> rv.Spectrum:
@@ -422,9 +473,9 @@ def spatial_to_temporal(psd_values, wavenumber, speed) -> rv.Spectrum:
     Parameters
     ----------
     psd_values : array_like
-        One-sided S(Ω) >= 0, m²/(rad/m).
-    wavenumber : array_like
-        Ω >= 0, rad/m, same shape.
+        One-sided S(Ω) >= 0, m²/(rad/m), one per wavenumber.
+    wavenumber : array_like, shape (n,)
+        Ω >= 0, rad/m: a grid, strictly increasing, not empty.
     speed : float
         V > 0, m/s.
 
@@ -441,10 +492,10 @@ def spatial_to_temporal(psd_values, wavenumber, speed) -> rv.Spectrum:
     ([0.0, 10.0], [0.2, 0.2])
     """
     V = _checks.positive("speed", speed)
-    S = _checks.array("psd_values", psd_values, low=0.0)
-    W = _checks.array("wavenumber", wavenumber, low=0.0)
-    if S.shape != W.shape:
-        raise ValueError(f"psd_values and wavenumber must have the same shape, got {S.shape} and {W.shape}")
+    W = _checks.time_grid("wavenumber", wavenumber)
+    if W[0] < 0:
+        raise ValueError(f"wavenumber must be >= 0 rad/m, got {W[0]!r}")
+    S = _checks.array("psd_values", psd_values, shape=W.shape, low=0.0)
     return rv.Spectrum(omega=V * W, psd=S / V)
 
 
@@ -454,7 +505,9 @@ def axle_delays(axle_positions, speed) -> np.ndarray:
     Parameters
     ----------
     axle_positions : array_like, shape (q,)
-        Distances d_j, m; the first is the reference.
+        Distances d_j, m, behind a common origin, not empty; the first is the
+        reference. Positions may repeat (two inputs under one axle) or lie ahead of
+        the first (a negative delay).
     speed : float
         V > 0, m/s.
 
@@ -486,19 +539,19 @@ def excitation_csd(psd: Callable, omega, axle_positions, speed) -> np.ndarray:
     ----------
     psd : callable
         Spatial one-sided S(Ω), m²/(rad/m).
-    omega : array_like
-        Circular frequencies > 0, rad/s.
-    axle_positions : array_like
-        Distances of the axles behind the first, m.
+    omega : array_like, shape (n,)
+        Circular frequencies > 0, rad/s, not empty.
+    axle_positions : array_like, shape (q,)
+        Distances of the axles, m, as for :func:`axle_delays`.
     speed : float
-        V > 0, m/s.
+        V, m/s, 0 < V <= 1000, as for :func:`temporal_psd`.
 
     Returns
     -------
     ndarray, complex, shape (n, q, q)
         The Hermitian cross-spectral matrix.
     """
-    w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=True)
+    w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=True, allow_empty=False)
     delays = axle_delays(axle_positions, speed)
     return rv.delayed_input_csd(temporal_psd(psd, speed)(w), w, delays)
 
@@ -517,7 +570,7 @@ def axle_filter_wavelengths(axle_spacing: float, count: int) -> np.ndarray:
     axle_spacing : float
         d, m, > 0.
     count : int
-        Number of wavelengths, >= 1.
+        Number of wavelengths, 1 <= count <= 10⁶ (a table, held in memory).
 
     Returns
     -------
@@ -530,5 +583,5 @@ def axle_filter_wavelengths(axle_spacing: float, count: int) -> np.ndarray:
     [5.0, 1.6667, 1.0]
     """
     d = _checks.positive("axle_spacing", axle_spacing)
-    n = _checks.integer("count", count, low=1)
+    n = _checks.integer("count", count, low=1, high=1_000_000)
     return 2.0 * d / (2 * np.arange(n) + 1)
