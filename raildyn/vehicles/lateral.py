@@ -59,7 +59,10 @@ class _OnTheRails(LinearModelBase):
         -------
         NonlinearLateral
         """
-        return NonlinearLateral(self.linear_system(), contact or WheelRailContact(), speed)
+        contact = (
+            WheelRailContact() if contact is None else _checks.instance("contact", contact, WheelRailContact)
+        )
+        return NonlinearLateral(self.linear_system(), contact, speed)
 
 
 @dataclass(frozen=True)

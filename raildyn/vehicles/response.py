@@ -270,6 +270,7 @@ def response_spectrum(
     psd : callable or mapping
         S(Ω), one-sided, m²/(rad/m), of the irregularity named by ``component``
         (default "vertical"); or a mapping {component: S} of independent components.
+        Each S takes an array of Ω (rad/m) and returns finite values ≥ 0 of the same shape.
     speed : float
         V, m/s (> 0, below the critical speed of a lateral model).
     omega : array_like
