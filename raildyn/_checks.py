@@ -319,8 +319,9 @@ def fields(obj, *, skip=()) -> None:
     """Check the numeric fields of a dataclass: finite numbers, or None where the type allows it.
 
     A field counts as numeric when its annotation names ``float``, ``int``, ``complex`` or
-    ``ndarray``; a string, an object or a None it does not allow is refused by a TypeError,
-    a NaN or an inf by a ValueError, each naming the field. For result dataclasses, whose
+    ``ndarray``; a string, an object, a None it does not allow or an array where the
+    annotation names no ``ndarray`` is refused by a TypeError, a NaN, an inf or an empty
+    array by a ValueError, each naming the field. For result dataclasses, whose
     values raildyn computes: the check keeps a hand-built result honest and costs one pass.
     """
     import dataclasses
@@ -337,6 +338,10 @@ def fields(obj, *, skip=()) -> None:
         if isinstance(value, (bool, np.bool_)) and "bool" not in ann:
             raise TypeError(f"{f.name} must be a number, got {value!r}")
         arr = _numbers(f.name, value, complex if "complex" in ann else float)
+        if "ndarray" not in ann and arr.ndim:
+            raise TypeError(f"{f.name} must be a single number, got {_show(value)}")
+        if arr.size == 0:
+            raise ValueError(f"{f.name} must not be empty, got an array of shape {arr.shape}")
         if not np.isfinite(arr).all():
             raise ValueError(f"{f.name} must contain only finite numbers, got {_show(value)}")
 
