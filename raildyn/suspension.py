@@ -3,7 +3,9 @@
 Each law gives the force an element carries for a relative displacement δ (m)
 or relative velocity v (m/s) across it, positive in the sense of δ (a spring
 pushed by δ > 0 answers with a positive force). All are vectorized: arrays of
-any shape broadcast against each other, and parameters may be arrays too.
+any shape broadcast against each other, and parameters may be arrays too. Every
+input is finite and non-empty; arrays whose shapes do not broadcast are refused,
+naming the one that does not fit.
 
 * linear spring          F = k δ + F₀
 * viscous damper         F = c v
@@ -45,8 +47,24 @@ __all__ = [
 ]
 
 
-def _field(name: str, value, *, low=None) -> np.ndarray:
-    return _checks.array(name, value, low=low)
+def _field(name: str, value, *, low=None, low_open=False) -> np.ndarray:
+    """A finite, non-empty array of the law's input ``name``, >= ``low`` (> with ``low_open``)."""
+    return _checks.array(name, value, low=low, low_open=low_open, allow_empty=False)
+
+
+def _broadcast(**arrays: np.ndarray) -> None:
+    """Refuse arguments whose shapes do not broadcast against each other, naming the first misfit."""
+    shape: tuple = ()
+    seen = []
+    for name, value in arrays.items():
+        try:
+            shape = np.broadcast_shapes(shape, value.shape)
+        except ValueError:
+            raise ValueError(
+                f"{name} has shape {value.shape}, which does not broadcast against {', '.join(seen)} "
+                f"(shape {shape})"
+            ) from None
+        seen.append(name)
 
 
 def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
@@ -74,6 +92,7 @@ def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
     d = _field("deflection", deflection)
     k = _field("stiffness", stiffness, low=0.0)
     f0 = _field("preload", preload)
+    _broadcast(deflection=d, stiffness=k, preload=f0)
     return np.asarray(k * d + f0)
 
 
@@ -99,6 +118,7 @@ def damper_force(velocity, damping) -> np.ndarray:
     """
     v = _field("velocity", velocity)
     c = _field("damping", damping, low=0.0)
+    _broadcast(velocity=v, damping=c)
     return np.asarray(c * v)
 
 
@@ -131,8 +151,10 @@ def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.nda
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
     if velocity_scale is None:
+        _broadcast(velocity=v, friction_force=f)
         return np.asarray(f * np.sign(v))
-    eps = _checks.array("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    _broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     return np.asarray(f * np.tanh(v / eps))
 
 
@@ -165,7 +187,8 @@ def coulomb_friction_slope(velocity, friction_force, *, velocity_scale) -> np.nd
     """
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
-    eps = _checks.array("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    _broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     # sech² u = 4e^{−2|u|}/(1 + e^{−2|u|})²: no overflow however large |u|.
     decay = np.exp(-2.0 * np.abs(v / eps))
     return np.asarray(f / eps * 4.0 * decay / (1.0 + decay) ** 2)
@@ -198,7 +221,8 @@ def friction_error_bound(velocity, friction_force, velocity_scale) -> np.ndarray
     """
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
-    eps = _checks.array("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    _broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     return np.asarray(2.0 * f * np.exp(-2.0 * np.abs(v) / eps))
 
 
@@ -228,7 +252,8 @@ def friction_amplitude_loss(friction_force, stiffness) -> np.ndarray:
     0.008
     """
     f = _field("friction_force", friction_force, low=0.0)
-    k = _checks.array("stiffness", stiffness, low=0.0, low_open=True)
+    k = _field("stiffness", stiffness, low=0.0, low_open=True)
+    _broadcast(friction_force=f, stiffness=k)
     return np.asarray(4.0 * f / k)
 
 
@@ -265,6 +290,7 @@ def clearance_force(deflection, clearance, stop_stiffness, stiffness=0.0) -> np.
     g = _field("clearance", clearance, low=0.0)
     ks = _field("stop_stiffness", stop_stiffness, low=0.0)
     k = _field("stiffness", stiffness, low=0.0)
+    _broadcast(deflection=d, clearance=g, stop_stiffness=ks, stiffness=k)
     return np.asarray(k * d + ks * np.maximum(np.abs(d) - g, 0.0) * np.sign(d))
 
 
@@ -299,14 +325,19 @@ class FrictionDamper:
 
     def __post_init__(self):
         f = _field("friction_force", self.friction_force, low=0.0)
-        eps = _checks.array("velocity_scale", self.velocity_scale, low=0.0, low_open=True)
+        eps = _field("velocity_scale", self.velocity_scale, low=0.0, low_open=True)
         for name, value in (("friction_force", f), ("velocity_scale", eps)):
             if value.ndim > 1:
                 raise ValueError(f"{name} must be a number or a vector (n,), got shape {value.shape}")
             object.__setattr__(self, name, float(value) if value.ndim == 0 else value)
 
-    def _velocity(self, v) -> np.ndarray:
-        v = _checks.array("v", np.atleast_1d(v), ndim=1)
+    def _velocity(self, t, x, v) -> np.ndarray:
+        """The checked velocities; t and x, unused by the law, are checked too (finite, x like v)."""
+        _checks.scalar("t", t)
+        v = _checks.array("v", np.atleast_1d(_checks.array("v", v)), ndim=1, allow_empty=False)
+        x = _checks.array("x", np.atleast_1d(_checks.array("x", x)), ndim=1)
+        if x.shape != v.shape:
+            raise ValueError(f"x must have the shape of v, {v.shape}, got {x.shape}")
         for name in ("friction_force", "velocity_scale"):
             size = np.size(getattr(self, name))
             if size > 1 and size != v.size:
@@ -319,9 +350,9 @@ class FrictionDamper:
         Parameters
         ----------
         t : float
-            Time, s (unused: the law does not change in time).
+            Time, s, finite (unused: the law does not change in time).
         x : array_like, shape (n,)
-            Displacements, m (unused).
+            Displacements, m, finite, shaped like ``v`` (unused).
         v : array_like, shape (n,)
             Velocities, m/s.
 
@@ -330,7 +361,9 @@ class FrictionDamper:
         ndarray, shape (n,)
             f, N.
         """
-        return -coulomb_friction(self._velocity(v), self.friction_force, velocity_scale=self.velocity_scale)
+        return -coulomb_friction(
+            self._velocity(t, x, v), self.friction_force, velocity_scale=self.velocity_scale
+        )
 
     def jacobian(self, t, x, v) -> ForceJacobian:
         """The tangent of :meth:`force`: ∂f/∂x = 0, ∂f/∂v = −diag((F_f/v_ε) sech²(v/v_ε)).
@@ -338,9 +371,9 @@ class FrictionDamper:
         Parameters
         ----------
         t : float
-            Time, s (unused).
+            Time, s, finite (unused).
         x : array_like, shape (n,)
-            Displacements, m (unused).
+            Displacements, m, finite, shaped like ``v`` (unused).
         v : array_like, shape (n,)
             Velocities, m/s.
 
@@ -349,6 +382,6 @@ class FrictionDamper:
         ForceJacobian
             ∂f/∂x in N/m and ∂f/∂v in N·s/m, each (n, n).
         """
-        v = self._velocity(v)
+        v = self._velocity(t, x, v)
         slope = coulomb_friction_slope(v, self.friction_force, velocity_scale=self.velocity_scale)
         return ForceJacobian(np.zeros((v.size, v.size)), -np.diag(np.broadcast_to(slope, v.shape)))

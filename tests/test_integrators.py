@@ -430,9 +430,11 @@ def test_bad_parameters_are_refused():
         ri.amplification_matrix("rk4", 0.0)
     with pytest.raises(ValueError, match="damping_ratio must be in"):
         ri.period_elongation("rk4", 0.1, damping_ratio=1.0)
-    with pytest.raises(ValueError, match="takes the parameters"):
+    with pytest.raises(TypeError, match="takes the parameters none, got unknown theta"):
         ri.spectral_radius("houbolt", 0.1, theta=1.4)
-    with pytest.raises(ValueError, match="method must be 'Radau'"):
+    with pytest.raises(TypeError, match="got unknown lam"):  # like any unexpected keyword
+        ri.integrate("wilson", 1.0, 0.0, 1.0, t, 1.0, 0.0, lam=1.0)
+    with pytest.raises(ValueError, match=r"method must be one of \['BDF', 'LSODA', 'Radau'\]"):
         ri.stiff(1.0, 0.0, 1.0, t, 1.0, 0.0, method="RK45")
 
 

@@ -86,9 +86,10 @@ def test_stiff_solver_failure_raises_solver_error(method):
     err = info.value
     assert 0.55 < err.time < 0.65 and err.step > 0
     part = err.partial
-    assert part.t.size > 10 and part.t[-1] <= err.time
+    # The completed part is on the requested grid (issue 15), up to where scipy stopped.
+    assert np.array_equal(part.t, t[: part.t.size]) and part.t[-1] <= err.time < part.t[-1] + 0.1
     assert all(np.all(np.isfinite(getattr(part, q))) for q in "xva")
-    assert np.abs(part.x).max() > 1e3  # it shows the escape
+    assert np.all(np.diff(part.x[0]) > 0) and part.x[0, -1] > 2.0  # it shows the escape
 
 
 def test_non_finite_force_in_an_explicit_run_is_a_solver_error_not_a_value_error():
@@ -112,7 +113,7 @@ def test_a_jacobian_must_return_two_finite_square_matrices():
 
 
 def test_integrate_names_an_unknown_parameter():
-    with pytest.raises(ValueError, match=r"wilson takes the parameters \['theta'\], got \['alpha'\]"):
+    with pytest.raises(TypeError, match=r"wilson takes the parameters \['theta'\], got unknown alpha"):
         ri.integrate("wilson", 1.0, 0.0, 1.0, np.linspace(0, 1, 11), 1.0, 0.0, alpha=0.1)
 
 
@@ -264,7 +265,8 @@ def test_stable_step_matches_the_runs():
 def test_stiffness_ratio_closed_form():
     # m = 1, c = 1001, k = 1000: λ = −1 and −1000 1/s.
     assert ri.stiffness_ratio(1.0, 1001.0, 1000.0) == pytest.approx(1000.0, rel=1e-10)
-    assert ri.stiffness_ratio(1.0, 0.0, 0.0) == np.inf
+    with pytest.raises(ValueError, match="K is singular"):  # a rigid-body mode: the ratio is unbounded
+        ri.stiffness_ratio(1.0, 0.0, 0.0)
 
 
 @pytest.mark.parametrize(("method", "order"), [("central_difference", 2), ("forward_euler", 1), ("rk4", 4)])

@@ -21,7 +21,7 @@ import matplotlib
 import numpy as np
 import scipy.linalg
 
-from raildyn import plots
+from raildyn import _checks, plots
 from raildyn._checks import array, scalar, square_matrix, time_grid
 from raildyn.errors import SolverError
 from raildyn.vibration import first_order_matrix
@@ -54,22 +54,46 @@ class ForceJacobian:
     wrt_displacement: np.ndarray
     wrt_velocity: np.ndarray
 
+    def __post_init__(self):
+        dx = square_matrix("wrt_displacement", self.wrt_displacement, symmetric=False)
+        dv = square_matrix("wrt_velocity", self.wrt_velocity, size=dx.shape[0], symmetric=False)
+        object.__setattr__(self, "wrt_displacement", dx)
+        object.__setattr__(self, "wrt_velocity", dv)
 
-def force_tangent(value, n: int) -> tuple[np.ndarray, np.ndarray]:
-    """∂f/∂x and ∂f/∂v from what a ``jacobian`` callback returned, checked to be finite (n, n) arrays."""
+
+def force_tangent(value, n: int, t: float, *, initial: str = "") -> tuple[np.ndarray, np.ndarray]:
+    """∂f/∂x and ∂f/∂v from what a ``jacobian`` callback returned at time ``t``: two (n, n) arrays.
+
+    A wrong type or shape is refused (TypeError, ValueError naming ``jacobian``). A non-finite
+    tangent is refused too at the initial state (``initial`` says where: the caller's own x0
+    and v0); later in a run it means the state has grown beyond what the force can represent,
+    a :class:`raildyn.errors.SolverError`.
+    """
     if isinstance(value, ForceJacobian):
         pair = (value.wrt_displacement, value.wrt_velocity)
-    elif isinstance(value, tuple | list) and len(value) == 2:
+    elif isinstance(value, tuple | list | np.ndarray) and len(value) == 2:
         pair = tuple(value)
     else:
         raise TypeError(
             "jacobian(t, x, v) must return a ForceJacobian or the pair (df/dx, df/dv), "
             f"got {type(value).__name__}"
         )
-    return (
-        array("jacobian(t, x, v) df/dx", pair[0], shape=(n, n)),
-        array("jacobian(t, x, v) df/dv", pair[1], shape=(n, n)),
-    )
+    out = []
+    for what, part in zip(("df/dx", "df/dv"), pair, strict=True):
+        try:
+            part = np.asarray(part, dtype=float)
+        except (TypeError, ValueError):
+            raise TypeError(f"jacobian(t, x, v) must return numbers, its {what} is {part!r:.80}") from None
+        if part.shape != (n, n):
+            raise ValueError(f"jacobian(t, x, v) {what} must have shape {(n, n)}, got shape {part.shape}")
+        if not np.isfinite(part).all():
+            if initial:
+                raise ValueError(f"jacobian(t, x, v) returned a non-finite {what} at {initial}")
+            raise SolverError(
+                f"jacobian(t, x, v) returned a non-finite {what}: the state outgrew the force", time=t
+            )
+        out.append(part)
+    return out[0], out[1]
 
 
 @dataclass(frozen=True)
@@ -93,6 +117,14 @@ class Deviation:
     acceleration: np.ndarray
     times: np.ndarray
 
+    def __post_init__(self):
+        n = None
+        for name in ("displacement", "velocity", "acceleration"):
+            value = array(name, getattr(self, name), ndim=1, shape=(n,), low=0.0, allow_empty=False)
+            n = value.size
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "times", time_grid("times", self.times))
+
 
 @dataclass(frozen=True)
 class Maxima:
@@ -109,6 +141,18 @@ class Maxima:
     times: np.ndarray
     values: np.ndarray
 
+    def __post_init__(self):
+        times = array("times", self.times, ndim=1)
+        if times.size:
+            times = time_grid("times", times)
+        object.__setattr__(self, "times", times)
+        values = array("values", self.values)
+        if values.shape != times.shape:
+            raise ValueError(
+                f"times and values must have the same shape, got {times.shape} and {values.shape}"
+            )
+        object.__setattr__(self, "values", values)
+
 
 @dataclass(frozen=True)
 class IntegrationResult:
@@ -122,12 +166,14 @@ class IntegrationResult:
     x, v, a : ndarray, shape (n, m)
         Displacement (m), velocity (m/s) and acceleration (m/s²) of each degree of freedom.
     method : str
-        The scheme's name.
+        The scheme's name (a label: any text).
     steps : int
-        Time steps taken.
+        Time steps taken, >= 0.
     iterations : int
         Newton iterations (implicit nonlinear schemes), else evaluations of the force
-        (first-order schemes and the stiff solver); 0 for the linear recursions.
+        (first-order schemes and the stiff solver); 0 for the linear recursions; >= 0.
+
+    All numbers finite; t strictly increasing, and x, v, a of shape (n, m) with n >= 1.
     """
 
     t: np.ndarray
@@ -137,6 +183,29 @@ class IntegrationResult:
     method: str
     steps: int
     iterations: int
+
+    def __post_init__(self):
+        t = array("t", self.t, ndim=1)
+        if t.size:
+            t = time_grid("t", t)
+        object.__setattr__(self, "t", t)
+        n = None
+        for name in ("x", "v", "a"):
+            value = array(name, getattr(self, name), ndim=2)
+            if value.shape[1] != t.size or (n is not None and value.shape[0] != n):
+                raise ValueError(
+                    f"{name} must have shape (n, m): n degrees of freedom as in x, m = {t.size} samples as "
+                    f"in t; got shape {value.shape}"
+                )
+            if value.shape[0] == 0:
+                raise ValueError(
+                    f"{name} must hold at least one degree of freedom (a row), got shape {value.shape}"
+                )
+            n = value.shape[0]
+            object.__setattr__(self, name, value)
+        _checks.instance("method", self.method, str, "string")
+        object.__setattr__(self, "steps", _checks.integer("steps", self.steps, low=0))
+        object.__setattr__(self, "iterations", _checks.integer("iterations", self.iterations, low=0))
 
     def deviation_from(self, reference: IntegrationResult, *, after: float | None = None) -> Deviation:
         """The largest difference from a reference history, over the times the two share.
@@ -167,8 +236,7 @@ class IntegrationResult:
         >>> round(float(shifted.deviation_from(fine).displacement[0]), 12)
         0.001
         """
-        if not isinstance(reference, IntegrationResult):
-            raise TypeError(f"reference must be an IntegrationResult, got {type(reference).__name__}")
+        _checks.instance("reference", reference, IntegrationResult)
         if reference.x.shape[0] != self.x.shape[0]:
             raise ValueError(
                 f"reference must have {self.x.shape[0]} degrees of freedom, got {reference.x.shape[0]}"
@@ -199,11 +267,8 @@ class IntegrationResult:
         return Deviation(largest("x"), largest("v"), largest("a"), times)
 
     def _row(self, dof, quantity) -> np.ndarray:
-        if quantity not in _QUANTITIES:
-            raise ValueError(f"quantity must be one of {sorted(_QUANTITIES)}, got {quantity!r}")
-        n = self.x.shape[0]
-        if isinstance(dof, bool) or not isinstance(dof, int | np.integer) or not 0 <= dof < n:
-            raise ValueError(f"dof must be an integer in [0, {n - 1}], got {dof!r}")
+        _checks.choice("quantity", quantity, _QUANTITIES)
+        dof = _checks.integer("dof", dof, low=0, high=self.x.shape[0] - 1)
         return getattr(self, quantity)[dof]
 
     def maxima(self, dof: int = 0, quantity: str = "x") -> Maxima:
@@ -244,9 +309,11 @@ class IntegrationResult:
         quantity : {"x", "v", "a"}
             Displacement, velocity or acceleration.
         scale : float
-            Factor applied to the values (1e3 to draw metres as millimetres); say so in the label.
+            Factor applied to the values, finite and nonzero (1e3 to draw metres as
+            millimetres, negative to flip the sign); say so in the label.
         **style
-            Passed to ``Axes.plot`` (``label``, ``color``, ``lw``...).
+            Passed to ``Axes.plot`` (``label``, ``color``, ``lw``...); an unknown property is
+            refused with a TypeError naming it.
 
         Returns
         -------
@@ -256,14 +323,24 @@ class IntegrationResult:
         y = self._row(dof, quantity)
         n = self.x.shape[0]
         scale = scalar("scale", scale)
+        if scale == 0.0:
+            raise ValueError("scale must be nonzero (it multiplies the values drawn), got 0.0")
         ax = plots.axes_or_new(ax)
         word, symbol = _QUANTITIES[quantity]
         with matplotlib.rc_context(plots.STYLE):
-            (line,) = ax.plot(self.t, scale * y, **style)
+            (line,) = draw_line(ax, self.t, scale * y, style)
             ax.set_xlabel("time $t$ (s)")
             if not ax.get_ylabel():
                 ax.set_ylabel(f"{word} ${symbol}_{{{dof}}}$" if n > 1 else f"{word} ${symbol}$")
         return {"line": line}
+
+
+def draw_line(ax, x, y, style) -> list:
+    """``ax.plot(x, y, **style)``, an unknown style property refused with a TypeError naming it."""
+    try:
+        return ax.plot(x, y, **style)
+    except AttributeError as err:  # matplotlib's answer to an unknown property: "... keyword argument 'lw2'"
+        raise TypeError(f"unknown plot style: {err}") from None
 
 
 @dataclass(frozen=True)
@@ -309,24 +386,46 @@ def sampled_load(force, p: Problem) -> np.ndarray | None:
     if force is None:
         return None
     if callable(force):
-        values = np.array([np.atleast_1d(np.asarray(force(tk), dtype=float)) for tk in p.t])
-        return array("force(t)", values, shape=(p.t.size, p.n))
-    raw = np.asarray(force, dtype=float)
+        values = [_checks.returned("force", force(tk), at=f"t = {tk:.6g} s") for tk in p.t]
+        wrong = [v.shape for v in values if v.size != p.n]
+        if wrong:
+            raise ValueError(f"force(t) must return {p.n} values, returned shape {wrong[0]}")
+        return np.array([v.reshape(p.n) for v in values])
+    raw = _checks.array("force", force)
     if raw.ndim == 1 and p.n == 1:
         raw = raw[None, :]
     return array("force", raw, shape=(p.n, p.t.size)).T.copy()
 
 
-def general_force(force, p: Problem):
-    """A force f(t, x, v) as a callable, from None, a sampled array (linear in t) or a callable."""
+def general_force(force, p: Problem, *, finite: bool = True):
+    """A force f(t, x, v) as a callable, from None, a sampled array (linear in t) or a callable.
+
+    A callable is checked at the initial state (t₀, x0, v0): there a wrong shape or a
+    non-finite value is refused with a ValueError naming ``force`` and the state. Later
+    in the run a wrong shape is refused the same way, and a non-finite value, which means
+    the state has outgrown the force, raises :class:`raildyn.errors.SolverError` (with
+    ``finite``; without, it is passed on to a solver that rejects the step).
+    """
     if force is None:
         zero = np.zeros(p.n)
         return lambda t, x, v: zero
     if callable(force):
+        n = p.n
 
         def checked(t, x, v):
-            return np.asarray(force(t, x, v), dtype=float).reshape(p.n)
+            out = np.asarray(force(t, x, v), dtype=float)
+            if out.size != n:
+                raise ValueError(
+                    f"force(t, x, v) must return {n} values, returned shape {out.shape} at t = {t:.6g} s"
+                )
+            out = out.reshape(n)
+            if finite and not np.isfinite(out).all():
+                raise SolverError(
+                    "force(t, x, v) returned a non-finite value: the state outgrew the force", time=t
+                )
+            return out
 
+        _checks.returned("force", force(p.t[0], p.x0, p.v0), at=initial_state(p))
         return checked
     table = sampled_load(force, p)
     last = p.t.size - 2
@@ -338,6 +437,11 @@ def general_force(force, p: Problem):
         return (1.0 - w) * table[k] + w * table[k + 1]
 
     return sampled
+
+
+def initial_state(p: Problem) -> str:
+    """Where a callback is first called, in words for a message: the caller's t₀, x0 and v0."""
+    return f"the initial state (t = {p.t[0]:.6g} s, x0 = {p.x0.tolist()}, v0 = {p.v0.tolist()})"
 
 
 def equilibrium_acceleration(p: Problem, x, v, load) -> np.ndarray:
@@ -363,7 +467,8 @@ def scale(p: Problem, load) -> float:
         mass = np.linalg.eigvalsh(p.M).min()
         peak = np.abs(load).max()
         size = max(size, peak * max(span, 1.0) ** 2 / mass, peak / max(stiffest * mass, 1e-300))
-    return DIVERGENCE_FACTOR * size if size > 0 else np.inf
+    # Capped at the largest float, so that an overflow to inf is caught as well.
+    return min(DIVERGENCE_FACTOR * size, np.finfo(float).max) if size > 0 else np.finfo(float).max
 
 
 def highest_frequency(M, K) -> float:
@@ -373,9 +478,33 @@ def highest_frequency(M, K) -> float:
 
 
 def completed(name: str, p: Problem, x, v, a, iterations: int = 0) -> IntegrationResult:
-    """The result of a run over the whole grid, from rows (m, n) of x, v and a."""
+    """The result of a run over the whole grid, from rows (m, n) of x, v and a.
+
+    A history that is not finite everywhere (an acceleration that overflowed, say) is a
+    failed run: :class:`raildyn.errors.SolverError` at its first non-finite sample.
+    """
     m = p.t.size
-    return IntegrationResult(p.t, x[:m].T, v[:m].T, a[:m].T, name, m - 1, iterations)
+    x, v, a = x[:m], v[:m], a[:m]
+    finite = np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1) & np.isfinite(a).all(axis=1)
+    if not finite.all():
+        k = int(np.argmin(finite))
+        raise SolverError(
+            f"{name.replace('_', ' ')}: the state became non-finite",
+            step=k,
+            time=float(p.t[k]),
+            partial=partial_result(name, p.t, x, v, a, iterations),
+        )
+    return IntegrationResult(p.t, x.T, v.T, a.T, name, m - 1, iterations)
+
+
+def partial_result(name: str, t, x, v, a, iterations: int = 0) -> IntegrationResult:
+    """The completed part of a failed run, from rows (k, n): its leading finite samples."""
+    done = min(len(t), len(x), len(v), len(a))
+    finite = np.isfinite(x[:done]).all(axis=1) & np.isfinite(v[:done]).all(axis=1)
+    finite &= np.isfinite(a[:done]).all(axis=1)
+    if not finite.all():
+        done = int(np.argmin(finite))
+    return IntegrationResult(t[:done], x[:done].T, v[:done].T, a[:done].T, name, max(done - 1, 0), iterations)
 
 
 def diverged(
@@ -387,9 +516,7 @@ def diverged(
     becomes the error's ``partial`` result.
     """
     done = min(len(x), len(v), len(a), step)
-    partial = IntegrationResult(
-        p.t[:done], x[:done].T, v[:done].T, a[:done].T, name, max(done - 1, 0), iterations
-    )
+    partial = partial_result(name, p.t[:done], x, v, a, iterations)
     time = float(p.t[0] + step * p.h)
     return SolverError(divergence_reason(name, p, params, analysed_as), step=step, time=time, partial=partial)
 
@@ -436,7 +563,7 @@ def _first_order_reason(method, p: Problem, head) -> str:
     from raildyn.integrators.analysis import first_order_step_limit
 
     lam = np.linalg.eigvals(first_order_matrix(p.M, p.C, p.K))
-    decaying = lam[lam.real <= 1e-12 * np.abs(lam).max()]
+    decaying = lam[(lam.real <= 1e-12 * np.abs(lam).max()) & (lam != 0)]
     if decaying.size == 0:
         return f"{head}: every mode of the system grows; the growth is its own"
     limits = np.array([first_order_step_limit(method, z) for z in decaying])

@@ -11,6 +11,7 @@ T = 1 s, so ω = 2π rad/s and Δt = Δt/T.
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass
 from functools import lru_cache
 from math import factorial
@@ -18,10 +19,10 @@ from math import factorial
 import matplotlib
 import numpy as np
 
-from raildyn import plots
+from raildyn import _checks, plots
 from raildyn._checks import array, integer, scalar, square_matrix
 from raildyn.integrators import linear
-from raildyn.integrators._common import highest_frequency
+from raildyn.integrators._common import draw_line, highest_frequency
 from raildyn.integrators.schemes import FIRST_ORDER, METHODS, PARAMETERS, integrate
 from raildyn.vibration import SDOF, first_order_matrix
 
@@ -43,13 +44,31 @@ __all__ = [
 ]
 
 
+# The largest Δt/T analysed: beyond, (ωΔt)² passes 4e13 and the amplification matrix loses its
+# digits to rounding, while every scheme has long reached its behaviour as Δt/T → ∞.
+MAX_DT_OVER_T = 1.0e6
+
+
+def _ratios(dt_over_T) -> np.ndarray:
+    """The steps over the period as a checked 1-D array: each in (0, MAX_DT_OVER_T]."""
+    ratios = array("dt_over_T", np.atleast_1d(_checks.array("dt_over_T", dt_over_T)), ndim=1, low=0.0,
+                   low_open=True, allow_empty=False)  # fmt: skip
+    if ratios.max() > MAX_DT_OVER_T:
+        raise ValueError(
+            f"dt_over_T must be <= {MAX_DT_OVER_T:g} (beyond, the amplification matrix is lost to "
+            f"rounding and every scheme has reached its limit as dt/T grows), got {ratios.max()!r}"
+        )
+    return ratios
+
+
 def _parameters(method: str, params: dict) -> dict:
-    if method not in METHODS:
-        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    _checks.choice("method", method, METHODS)
     allowed = PARAMETERS[method]
     unknown = sorted(set(params) - set(allowed))
     if unknown:
-        raise ValueError(f"{method} takes the parameters {sorted(allowed) or 'none'}, got {unknown}")
+        raise TypeError(
+            f"{method} takes the parameters {sorted(allowed) or 'none'}, got unknown {', '.join(unknown)}"
+        )
     chosen = {**allowed, **params}
     if method == "wilson":
         chosen["theta"] = scalar("theta", chosen["theta"], low=1.0, high=3.0)
@@ -84,11 +103,11 @@ def _matrices(method: str, h: np.ndarray, xi: float, params: dict) -> np.ndarray
     M, C, K = np.eye(1), np.array([[2 * xi * w]]), np.array([[w * w]])
     h = h[:, None, None]
     if method == "central_difference":
-        return linear.recursion_matrices(linear.central_difference_step(M, C, K, h), 2, 1).A
+        return linear._recursion(linear.central_difference_step(M, C, K, h), 2, 1)[0]
     if method == "houbolt":
-        return linear.recursion_matrices(linear.houbolt_step(M, C, K, h), 3, 1).A
+        return linear._recursion(linear.houbolt_step(M, C, K, h), 3, 1)[0]
     if method == "wilson":
-        return linear.recursion_matrices(linear.wilson_step(M, C, K, h, params["theta"]), 3, 1).A
+        return linear._recursion(linear.wilson_step(M, C, K, h, params["theta"]), 3, 1)[0]
     if method in ("newmark", "average_acceleration", "linear_acceleration", "hht_alpha"):
         alpha = params.get("alpha", 0.0)
         gamma, beta = {
@@ -97,7 +116,7 @@ def _matrices(method: str, h: np.ndarray, xi: float, params: dict) -> np.ndarray
             "linear_acceleration": (0.5, 1 / 6),
             "hht_alpha": (0.5 - alpha, (1 - alpha) ** 2 / 4),
         }[method]
-        return linear.recursion_matrices(linear.newmark_step(M, C, K, h, gamma, beta, alpha), 3, 1).A
+        return linear._recursion(linear.newmark_step(M, C, K, h, gamma, beta, alpha), 3, 1)[0]
     hJ = h * first_order_matrix(M, C, K)  # Δt J, J = [[0, 1], [−ω², −2ξω]]
     if method == "forward_euler":
         return np.eye(2) + hJ
@@ -114,7 +133,8 @@ def amplification_matrix(method: str, dt_over_T, damping_ratio: float = 0.0, **p
     method : str
         One of ``METHODS``.
     dt_over_T : float or array_like
-        Step over the undamped natural period, > 0.
+        Step over the undamped natural period, in (0, 1e6] (beyond, the amplification
+        matrix is lost to rounding).
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
     **params
@@ -135,10 +155,9 @@ def amplification_matrix(method: str, dt_over_T, damping_ratio: float = 0.0, **p
     """
     chosen = _parameters(method, params)
     xi = scalar("damping_ratio", damping_ratio, low=0.0, high=1.0, high_open=True)
-    ratios = np.asarray(dt_over_T, dtype=float)
-    flat = array("dt_over_T", np.atleast_1d(ratios), ndim=1, low=0.0, low_open=True)
+    flat = _ratios(dt_over_T)
     mats = _matrices(method, flat, xi, chosen)
-    return mats[0] if ratios.ndim == 0 else mats
+    return mats[0] if np.ndim(dt_over_T) == 0 else mats
 
 
 def spectral_radius(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
@@ -149,7 +168,8 @@ def spectral_radius(method: str, dt_over_T, damping_ratio: float = 0.0, **params
     method : str
         One of ``METHODS``.
     dt_over_T : float or array_like
-        Step over the undamped natural period, > 0.
+        Step over the undamped natural period, in (0, 1e6] (beyond, the amplification
+        matrix is lost to rounding).
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
     **params
@@ -172,7 +192,7 @@ def spectral_radius(method: str, dt_over_T, damping_ratio: float = 0.0, **params
 def _principal(method, dt_over_T, damping_ratio, params):
     """The principal eigenvalue (nearest the exact exp(sΔt)) for each ratio, and the ratios."""
     mats = amplification_matrix(method, dt_over_T, damping_ratio, **params)
-    ratios = np.atleast_1d(np.asarray(dt_over_T, dtype=float))
+    ratios = _ratios(dt_over_T)
     mats = mats.reshape(ratios.size, *mats.shape[-2:])
     xi, w = damping_ratio, 2 * np.pi
     target = ratios * w * (-xi + 1j * np.sqrt(1 - xi * xi))  # s Δt of the exact motion
@@ -202,7 +222,8 @@ def period_elongation(method: str, dt_over_T, damping_ratio: float = 0.0, **para
     method : str
         One of ``METHODS``.
     dt_over_T : float or array_like
-        Step over the undamped natural period, > 0.
+        Step over the undamped natural period, in (0, 1e6] (beyond, the amplification
+        matrix is lost to rounding).
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
     **params
@@ -240,7 +261,8 @@ def amplitude_decay(method: str, dt_over_T, damping_ratio: float = 0.0, **params
     method : str
         One of ``METHODS``.
     dt_over_T : float or array_like
-        Step over the undamped natural period, > 0.
+        Step over the undamped natural period, in (0, 1e6] (beyond, the amplification
+        matrix is lost to rounding).
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
     **params
@@ -333,24 +355,30 @@ def first_order_step_limit(method: str, eigenvalue: complex) -> float:
     method : {"forward_euler", "rk4", "abm"}
         A first-order scheme.
     eigenvalue : complex
-        λ of the mode, 1/s.
+        λ of the mode, 1/s: finite and nonzero (a mode with λ = 0 sets no limit).
 
     Returns
     -------
     float
-        The largest stable Δt, s (inf for λ = 0).
+        The largest stable Δt, s (inf if no step is too long).
 
     Examples
     --------
     >>> round(first_order_step_limit("forward_euler", -100.0), 9)  # |1 + Δtλ| <= 1: Δt <= 2/|λ|
     0.02
     """
-    if method not in ("forward_euler", "rk4", "abm"):
-        raise ValueError(f"method must be a first-order scheme (forward_euler, rk4, abm), got {method!r}")
+    _checks.choice("method", method, FIRST_ORDER)
+    if isinstance(eigenvalue, bool) or not isinstance(eigenvalue, numbers.Number | np.number):
+        raise TypeError(f"eigenvalue must be a real or complex number, got {eigenvalue!r:.80}")
     lam = complex(eigenvalue)
     size = abs(lam)
+    if not np.isfinite(size):
+        raise ValueError(f"eigenvalue must be finite, got {eigenvalue!r}")
     if size == 0.0:
-        return np.inf
+        raise ValueError(
+            "eigenvalue must be nonzero: a mode with λ = 0 neither grows nor decays under any step, "
+            "so it sets no limit"
+        )
     steps = np.logspace(-4, 2, 241) / size
     unstable = _scalar_radius(method, steps * lam) > 1 + 1e-9
     if not unstable.any():
@@ -410,7 +438,7 @@ def stable_step(method: str, M, C, K, **params) -> float:
     K = square_matrix("K", K, size=M.shape[0], symmetric=False)
     if method in FIRST_ORDER:
         lam = np.linalg.eigvals(first_order_matrix(M, C, K))
-        return float(min(first_order_step_limit(method, z) for z in lam))
+        return float(min((first_order_step_limit(method, z) for z in lam if z != 0), default=np.inf))
     ratio = stability_limit(method, **chosen)
     wmax = highest_frequency(M, K)
     if np.isinf(ratio) or wmax == 0.0:
@@ -432,7 +460,13 @@ def stiffness_ratio(M, C, K) -> float:
     Returns
     -------
     float
-        The ratio (dimensionless); inf if a mode has λ = 0 (a rigid-body mode).
+        The ratio (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If K is singular (a rigid-body mode, λ = 0: the ratio is unbounded), or M, C and K
+        span time scales beyond double precision.
 
     Examples
     --------
@@ -443,7 +477,19 @@ def stiffness_ratio(M, C, K) -> float:
     C = square_matrix("C", C, size=M.shape[0], symmetric=False)
     K = square_matrix("K", K, size=M.shape[0], symmetric=False)
     size = np.abs(np.linalg.eigvals(first_order_matrix(M, C, K)))
-    return float(size.max() / size.min()) if size.min() > 0 else np.inf
+    if size.min() == 0.0:
+        raise ValueError(
+            "the first-order system has an eigenvalue λ = 0, so the stiffness ratio is unbounded: K is "
+            "singular (a rigid-body mode), or M, C and K span time scales beyond double precision"
+        )
+    with np.errstate(over="ignore"):
+        ratio = float(size.max() / size.min())
+    if not np.isfinite(ratio):
+        raise ValueError(
+            f"M, C and K span time scales beyond double precision: |λ| from {size.min():.3g} to "
+            f"{size.max():.3g} 1/s"
+        )
+    return ratio
 
 
 # ---------------------------------------------------------------------------
@@ -476,6 +522,9 @@ class SchemeAccuracy:
         Amplitude lost per period beyond the physical decay, as a fraction.
     stability_limit_dt_over_T : float
         Largest stable Δt/T (inf: unconditionally stable; 0: never stable).
+
+    The values are checked: finite, shaped (k,) alike, ρ >= 0, and NaN only where the
+    period elongation is documented to hold it.
     """
 
     method: str
@@ -487,13 +536,40 @@ class SchemeAccuracy:
     amplitude_decay_fraction: np.ndarray
     stability_limit_dt_over_T: float
 
+    def __post_init__(self):
+        _checks.choice("method", self.method, METHODS)
+        _checks.instance("parameters", self.parameters, dict, "dict")
+        scalar("damping_ratio", self.damping_ratio, low=0.0, high=1.0, high_open=True)
+        k = _ratios(self.dt_over_T).size
+        for name, low in (("spectral_radius", 0.0), ("amplitude_decay_fraction", None)):
+            values = array(name, getattr(self, name), ndim=1, low=low)
+            if values.size != k:
+                raise ValueError(f"{name} must have shape ({k},) like dt_over_T, got shape {values.shape}")
+        pe = _checks._numbers("period_elongation_fraction", self.period_elongation_fraction)
+        if pe.shape != (k,) or np.isinf(pe).any():
+            raise ValueError(
+                f"period_elongation_fraction must have shape ({k},) like dt_over_T and hold finite values "
+                f"(or NaN where the motion does not oscillate), got {pe!r:.80}"
+            )
+        limit = _checks._numbers("stability_limit_dt_over_T", self.stability_limit_dt_over_T)
+        if limit.ndim or not limit >= 0:
+            raise ValueError(
+                f"stability_limit_dt_over_T must be a number >= 0 (inf: unconditionally stable), "
+                f"got {self.stability_limit_dt_over_T!r}"
+            )
+
     def _draw(self, ax, artists, y, ylabel, style) -> dict:
         if artists is not None:
+            _checks.instance("artists", artists, dict, "dict of an earlier call's artists")
+            if "line" not in artists:
+                raise ValueError(
+                    f"artists must be the dict an earlier call returned, with 'line', got {artists!r}"
+                )
             artists["line"].set_data(self.dt_over_T, y)
             return artists
         ax = plots.axes_or_new(ax)
         with matplotlib.rc_context(plots.STYLE):
-            (line,) = ax.plot(self.dt_over_T, y, **style)
+            (line,) = draw_line(ax, self.dt_over_T, y, style)
             ax.set_xlabel(r"$\Delta t/T$")
             ax.set_ylabel(ylabel)
         return {"line": line}
@@ -572,7 +648,7 @@ def scheme_accuracy(method: str, dt_over_T, damping_ratio: float = 0.0, **params
     method : str
         One of ``METHODS``.
     dt_over_T : array_like, shape (k,)
-        Steps over the undamped natural period, > 0.
+        Steps over the undamped natural period, in (0, 1e6], at least one.
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
     **params
@@ -590,9 +666,7 @@ def scheme_accuracy(method: str, dt_over_T, damping_ratio: float = 0.0, **params
     """
     chosen = _parameters(method, params)
     xi = scalar("damping_ratio", damping_ratio, low=0.0, high=1.0, high_open=True)
-    ratios = array(
-        "dt_over_T", np.atleast_1d(np.asarray(dt_over_T, dtype=float)), ndim=1, low=0.0, low_open=True
-    )
+    ratios = _ratios(dt_over_T)
     return SchemeAccuracy(
         method,
         chosen,
@@ -612,6 +686,11 @@ _STUDY_PERIOD = 1.0  # s: T of the oscillator
 _STUDY_DAMPING = 0.05  # ξ
 _STUDY_FORCE = 10.0  # N on the 1 kg mass
 _STUDY_START = (1.0, 2.0)  # x0 (m), v0 (m/s)
+# The longest study: after 100 s (100 periods at ξ = 0.05) the free motion has decayed by e^-31,
+# leaving the static deflection every scheme reproduces, so a longer run measures nothing more.
+_STUDY_MAX_DURATION = 100.0
+# The most steps a run may take: far beyond where rounding, not the scheme, sets the error.
+_STUDY_MAX_STEPS = 100_000
 
 
 @dataclass(frozen=True)
@@ -641,6 +720,23 @@ class ConvergenceStudy:
     max_error_m: np.ndarray
     orders: np.ndarray
 
+    def __post_init__(self):
+        _checks.choice("method", self.method, METHODS)
+        _checks.instance("parameters", self.parameters, dict, "dict")
+        counts = self.step_counts
+        if not (isinstance(counts, np.ndarray) and counts.dtype.kind in "iu"):
+            raise TypeError(f"step_counts must be an array of integers, got {counts!r:.80}")
+        counts = array("step_counts", counts, ndim=1, low=4)
+        if counts.size < 2 or np.any(np.diff(counts) <= 0):
+            raise ValueError(f"step_counts must hold at least two increasing counts, got {counts!r}")
+        k = counts.size
+        for name, size, low in (("dt_over_T", k, 0.0), ("max_error_m", k, 0.0), ("orders", k - 1, None)):
+            values = array(name, getattr(self, name), ndim=1, low=low, low_open=name == "dt_over_T")
+            if values.size != size:
+                raise ValueError(
+                    f"{name} must have {size} entries (from step_counts), got shape {values.shape}"
+                )
+
 
 def convergence_study(
     method: str, step_counts=(200, 400, 800), duration: float = 2.0, **params
@@ -658,9 +754,11 @@ def convergence_study(
     method : str
         One of ``METHODS``.
     step_counts : sequence of int
-        Steps over the run, at least two, each >= 4, in increasing order.
+        Steps over the run, at least two, each in [4, 100000] (beyond, rounding rather than
+        the scheme sets the error), in increasing order.
     duration : float
-        Length of the run, s (> 0).
+        Length of the run, s, in (0, 100] (after 100 periods the free motion has decayed by
+        e^-31, leaving the static deflection every scheme reproduces).
     **params
         The scheme's parameters (see :func:`amplification_matrix`).
 
@@ -680,10 +778,12 @@ def convergence_study(
     4.0
     """
     chosen = _parameters(method, params)
-    counts = [integer("step_counts", k, low=4) for k in np.atleast_1d(np.asarray(step_counts)).tolist()]
+    if isinstance(step_counts, str) or not np.iterable(step_counts):
+        raise TypeError(f"step_counts must be a sequence of integers, got {step_counts!r:.80}")
+    counts = [integer("step_counts", k, low=4, high=_STUDY_MAX_STEPS) for k in step_counts]
     if len(counts) < 2 or any(b <= a for a, b in zip(counts, counts[1:], strict=False)):
         raise ValueError(f"step_counts must hold at least two increasing counts, got {step_counts!r}")
-    duration = scalar("duration", duration, low=0.0, low_open=True)
+    duration = scalar("duration", duration, low=0.0, low_open=True, high=_STUDY_MAX_DURATION)
     system = SDOF.from_modal(2 * np.pi / _STUDY_PERIOD, _STUDY_DAMPING)
     x0, v0 = _STUDY_START
     errors = []

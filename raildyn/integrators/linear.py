@@ -23,6 +23,7 @@ import scipy.linalg
 import scipy.signal
 from scipy.linalg.blas import dgemv as gemv
 
+from raildyn import _checks
 from raildyn._checks import scalar
 from raildyn.integrators._common import (
     IntegrationResult,
@@ -78,6 +79,28 @@ def _stack(*parts) -> np.ndarray:
     return np.concatenate([np.broadcast_to(p, lead + p.shape[-2:]) for p in parts], axis=-2)
 
 
+def _system(M, C, K, h):
+    """Check the matrices (n, n) and the step (a float, or (k, 1, 1) for k steps) of a step function."""
+    M = _checks.square_matrix("M", M, positive_definite=True)
+    n = M.shape[0]
+    C = _checks.square_matrix("C", C, size=n, symmetric=False)
+    K = _checks.square_matrix("K", K, size=n, symmetric=False)
+    h = _checks.array("h", h, low=0.0, low_open=True)
+    if not (h.ndim == 0 or (h.ndim == 3 and h.shape[1:] == (1, 1) and h.size)):
+        raise ValueError(f"h must be a float or an array of shape (k, 1, 1), got shape {h.shape}")
+    return M, C, K, h
+
+
+def _effective(matrix: np.ndarray, *also: np.ndarray):
+    """Factorize an effective matrix of a step; refuse it, or ``also``, if it overflowed."""
+    if not all(np.isfinite(m).all() for m in (matrix, *also)):
+        raise ValueError(
+            "M, C, K and h give an effective matrix that overflows (entries beyond 1e308): "
+            "their sizes are beyond double precision for this scheme"
+        )
+    return _solver(matrix)
+
+
 # ---------------------------------------------------------------------------
 # One step of each scheme, on column blocks: Z (s, c), F0 = f(t) and F1 = f(t + h), (n, c).
 # M, C, K and h may also carry a leading batch axis (k, ...) for the analysis of the test oscillator.
@@ -92,13 +115,13 @@ def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
 
     Parameters
     ----------
-    M, C, K : ndarray, shape (n, n) or (k, n, n)
-        Mass (kg), damping (N·s/m) and stiffness (N/m), already checked; a leading batch
-        axis runs k systems at once (the test oscillator at k steps, for the analysis).
+    M, C, K : ndarray, shape (n, n)
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite.
     h : float or ndarray, shape (k, 1, 1)
-        Time step, s.
+        Time step, s, > 0; an array runs k steps at once (the test oscillator at k steps,
+        for the analysis).
     gamma, beta : float
-        Newmark's parameters.
+        Newmark's parameters, γ in [½, 1.5], β in [0, 1].
     alpha : float
         The HHT weight, in [−⅓, 0]; 0 for Newmark.
 
@@ -108,8 +131,11 @@ def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
         ``step(Z, F0, F1) -> Z₊`` on column blocks: states Z (s, c), loads F0 = f(t) and
         F1 = f(t + Δt) (n, c), in N.
     """
+    M, C, K, h = _system(M, C, K, h)
+    gamma, beta = _check_newmark(gamma, beta)
+    alpha = scalar("alpha", alpha, low=-1 / 3, high=0.0)
     n = M.shape[-1]
-    solve = _solver(M + (1 + alpha) * (gamma * h * C + beta * h * h * K))
+    solve = _effective(M + (1 + alpha) * (gamma * h * C + beta * h * h * K))
 
     def step(Z, F0, F1):
         x, v, a = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
@@ -128,13 +154,12 @@ def wilson_step(M, C, K, h, theta) -> Step:
 
     Parameters
     ----------
-    M, C, K : ndarray, shape (n, n) or (k, n, n)
-        Mass (kg), damping (N·s/m) and stiffness (N/m), already checked; a leading batch
-        axis runs k systems at once (the test oscillator at k steps, for the analysis).
+    M, C, K : ndarray, shape (n, n)
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite.
     h : float or ndarray, shape (k, 1, 1)
-        Time step, s.
+        Time step, s, > 0; an array runs k steps at once (for the analysis).
     theta : float
-        Wilson's θ (τ = θΔt).
+        Wilson's θ (τ = θΔt), in [1, 3].
 
     Returns
     -------
@@ -142,13 +167,15 @@ def wilson_step(M, C, K, h, theta) -> Step:
         ``step(Z, F0, F1) -> Z₊`` on column blocks: states Z (s, c), loads F0 = f(t) and
         F1 = f(t + Δt) (n, c), in N.
     """
+    M, C, K, h = _system(M, C, K, h)
+    theta = scalar("theta", theta, low=1.0, high=3.0)
     n = M.shape[-1]
     tau = theta * h
     a0, a1 = 6 / tau**2, 3 / tau
     a2, a3 = 2 * a1, tau / 2
     a4, a5, a6 = a0 / theta, -a2 / theta, 1 - 3 / theta
     a7, a8 = h / 2, h * h / 6
-    solve = _solver(K + a0 * M + a1 * C)
+    solve = _effective(K + a0 * M + a1 * C)
 
     def step(Z, F0, F1):
         x, v, a = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
@@ -167,11 +194,10 @@ def central_difference_step(M, C, K, h) -> Step:
 
     Parameters
     ----------
-    M, C, K : ndarray, shape (n, n) or (k, n, n)
-        Mass (kg), damping (N·s/m) and stiffness (N/m), already checked; a leading batch
-        axis runs k systems at once (the test oscillator at k steps, for the analysis).
+    M, C, K : ndarray, shape (n, n)
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite.
     h : float or ndarray, shape (k, 1, 1)
-        Time step, s.
+        Time step, s, > 0; an array runs k steps at once (for the analysis).
 
     Returns
     -------
@@ -179,10 +205,11 @@ def central_difference_step(M, C, K, h) -> Step:
         ``step(Z, F0, F1) -> Z₊`` on column blocks: states Z (s, c), loads F0 = f(t) and
         F1 = f(t + Δt) (n, c), in N.
     """
+    M, C, K, h = _system(M, C, K, h)
     n = M.shape[-1]
-    solve = _solver(M / h**2 + C / (2 * h))
     stiff = K - 2 * M / h**2
     lag = M / h**2 - C / (2 * h)
+    solve = _effective(M / h**2 + C / (2 * h), stiff, lag)
 
     def step(Z, F0, F1):
         x, x_old = Z[..., :n, :], Z[..., n:, :]
@@ -196,11 +223,10 @@ def houbolt_step(M, C, K, h) -> Step:
 
     Parameters
     ----------
-    M, C, K : ndarray, shape (n, n) or (k, n, n)
-        Mass (kg), damping (N·s/m) and stiffness (N/m), already checked; a leading batch
-        axis runs k systems at once (the test oscillator at k steps, for the analysis).
+    M, C, K : ndarray, shape (n, n)
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite.
     h : float or ndarray, shape (k, 1, 1)
-        Time step, s.
+        Time step, s, > 0; an array runs k steps at once (for the analysis).
 
     Returns
     -------
@@ -208,10 +234,11 @@ def houbolt_step(M, C, K, h) -> Step:
         ``step(Z, F0, F1) -> Z₊`` on column blocks: states Z (s, c), loads F0 = f(t) and
         F1 = f(t + Δt) (n, c), in N.
     """
+    M, C, K, h = _system(M, C, K, h)
     n = M.shape[-1]
     a0, a1, a2, a3 = 2 / h**2, 11 / (6 * h), 5 / h**2, 3 / h
     a4, a5, a6, a7 = -2 * a0, -a3 / 2, a0 / 2, a3 / 9
-    solve = _solver(K + a0 * M + a1 * C)
+    solve = _effective(K + a0 * M + a1 * C, a2 * M, a3 * C)
 
     def step(Z, F0, F1):
         x, x1, x2 = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
@@ -238,6 +265,27 @@ class RecursionMatrices:
     B0: np.ndarray
     B1: np.ndarray
 
+    def __post_init__(self):
+        A = _checks.array("A", self.A)
+        if A.ndim not in (2, 3) or A.shape[-1] != A.shape[-2] or A.size == 0:
+            raise ValueError(f"A must be a square matrix (s, s) or a stack (k, s, s), got shape {A.shape}")
+        object.__setattr__(self, "A", A)
+        for name in ("B0", "B1"):
+            B = _checks.array(name, getattr(self, name))
+            if B.shape[:-1] != A.shape[:-1] or B.shape[-1] == 0 or B.shape[-1] != np.shape(self.B0)[-1]:
+                raise ValueError(
+                    f"{name} must have shape {A.shape[:-1] + ('n',)}: the rows (and stack) of A and "
+                    f"n >= 1 columns as B0; got shape {B.shape}"
+                )
+            object.__setattr__(self, name, B)
+
+
+def _recursion(step: Step, size: int, n: int):
+    """A, B₀, B₁ of a checked step (with any leading stack axis of h): the step on identity blocks."""
+    eye, zs, zn = np.eye(size), np.zeros((n, size)), np.zeros((size, n))
+    zf = np.zeros((n, n))
+    return step(eye, zs, zs), step(zn, np.eye(n), zf), step(zn, zf, np.eye(n))
+
 
 def recursion_matrices(step: Step, size: int, n: int) -> RecursionMatrices:
     """A, B₀, B₁ of a linear step, found by applying it to identity blocks.
@@ -246,11 +294,11 @@ def recursion_matrices(step: Step, size: int, n: int) -> RecursionMatrices:
     ----------
     step : callable
         A step from :func:`newmark_step`, :func:`wilson_step`, :func:`central_difference_step`
-        or :func:`houbolt_step`.
+        or :func:`houbolt_step`, for one step size (a float h).
     size : int
-        Length s of the scheme's state (2n or 3n).
+        Length s of the scheme's state: 2n or 3n.
     n : int
-        Degrees of freedom.
+        Degrees of freedom, >= 1.
 
     Returns
     -------
@@ -262,11 +310,20 @@ def recursion_matrices(step: Step, size: int, n: int) -> RecursionMatrices:
     >>> recursion_matrices(step, 2, 1).A.round(6).tolist()  # [[2 − ω²Δt², −1], [1, 0]]
     [[1.99, -1.0], [1.0, 0.0]]
     """
-    eye, zs, zn = np.eye(size), np.zeros((n, size)), np.zeros((size, n))
-    zf = np.zeros((n, n))
-    A = step(eye, zs, zs)
-    B0 = step(zn, np.eye(n), zf)
-    B1 = step(zn, zf, np.eye(n))
+    _checks.function("step", step)
+    n = _checks.integer("n", n, low=1)
+    size = _checks.integer("size", size, low=1)
+    if size not in (2 * n, 3 * n):
+        raise ValueError(
+            f"size must be 2n or 3n, the state of a scheme on n = {n} degrees of freedom; got {size}"
+        )
+    try:
+        A, B0, B1 = _recursion(step, size, n)
+    except ValueError as err:
+        raise ValueError(f"step does not act on a state of size {size} with n = {n} loads: {err}") from None
+    A = _checks.returned("step", A, shape=(size, size), at="the identity block")
+    B0 = _checks.returned("step", B0, shape=(size, n), at="a unit load at the start")
+    B1 = _checks.returned("step", B1, shape=(size, n), at="a unit load at the end")
     return RecursionMatrices(A, B0, B1)
 
 
@@ -491,8 +548,7 @@ def _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, name) -> Inte
     if modes is not None:
         x, v, a, bad = _modal_two_step(p, load, gamma, beta, modes, bound)
         return _finish(name, p, x, v, a, bad, params)
-    rec = recursion_matrices(newmark_step(p.M, p.C, p.K, h, gamma, beta, alpha), 3 * n, n)
-    A, B0, B1 = rec.A, rec.B0, rec.B1
+    A, B0, B1 = _recursion(newmark_step(p.M, p.C, p.K, h, gamma, beta, alpha), 3 * n, n)
     if alpha == 0.0 and gamma == 2 * beta and p.t.size > 2:
         x, v, bad = _two_step(p, load, gamma, beta, A, B0, B1, a0, bound)
         # a from equilibrium: differencing v instead would lose digits as 1/(ωΔt) for slow modes.
@@ -624,8 +680,8 @@ def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4) -> IntegrationResult:
     load = sampled_load(force, p)
     n = p.n
     a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
-    rec = recursion_matrices(wilson_step(p.M, p.C, p.K, p.h, theta), 3 * n, n)
-    Z, bad = _recur(rec.A, rec.B0, rec.B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, scale(p, load))
+    A, B0, B1 = _recursion(wilson_step(p.M, p.C, p.K, p.h, theta), 3 * n, n)
+    Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, scale(p, load))
     x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
     return _finish("wilson", p, x, v, a, bad, {"theta": theta})
 
@@ -672,10 +728,10 @@ def central_difference(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     load = sampled_load(force, p)
     n, h = p.n, p.h
     a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
-    rec = recursion_matrices(central_difference_step(p.M, p.C, p.K, h), 2 * n, n)
+    A, B0, B1 = _recursion(central_difference_step(p.M, p.C, p.K, h), 2 * n, n)
     padded = None if load is None else np.vstack([load, load[-1:]])
     z0 = np.r_[p.x0, p.x0 - h * p.v0 + 0.5 * h * h * a0]
-    Z, bad = _recur(rec.A, rec.B0, rec.B1, z0, padded, p.t.size, scale(p, load))
+    Z, bad = _recur(A, B0, B1, z0, padded, p.t.size, scale(p, load))
     x_next, x, x_prev = Z[1:, :n], Z[:-1, :n], Z[:-1, n:]
     v = (x_next - x_prev) / (2 * h)
     a = (x_next - 2 * x + x_prev) / h**2
@@ -714,9 +770,9 @@ def houbolt(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     )
     if m <= 3:
         return IntegrationResult(p.t, head.x, head.v, head.a, "houbolt", m - 1, 0)
-    rec = recursion_matrices(houbolt_step(p.M, p.C, p.K, h), 3 * n, n)
+    A, B0, B1 = _recursion(houbolt_step(p.M, p.C, p.K, h), 3 * n, n)
     z2 = np.r_[head.x[:, 2], head.x[:, 1], head.x[:, 0]]
-    Z, bad = _recur(rec.A, rec.B0, rec.B1, z2, None if load is None else load[2:], m - 3, scale(p, load))
+    Z, bad = _recur(A, B0, B1, z2, None if load is None else load[2:], m - 3, scale(p, load))
     xs = np.vstack([head.x[:, :2].T, Z[:, :n]])  # x_0 … x_k
     x3 = xs[3:]
     v = (11 * x3 - 18 * xs[2:-1] + 9 * xs[1:-2] - 2 * xs[:-3]) / (6 * h)

@@ -18,7 +18,8 @@ import numpy as np
 import scipy.integrate
 import scipy.linalg
 
-from raildyn._checks import integer, positive, scalar
+from raildyn import _checks
+from raildyn._checks import integer, scalar
 from raildyn.errors import SolverError
 from raildyn.integrators._common import (
     IntegrationResult,
@@ -26,20 +27,37 @@ from raildyn.integrators._common import (
     diverged,
     force_tangent,
     general_force,
+    initial_state,
+    partial_result,
     problem,
     sampled_load,
     scale,
 )
 from raildyn.vibration import first_order_matrix
 
+# Newton iterations a step may be allowed: the iteration converges quadratically near the
+# answer, so a step that needs more than a few dozen will not converge at all.
+MAX_ITERATIONS = 1000
+
+# Steps the stiff solver may take: a bound on the run (a million steps of an implicit
+# solver is hours of work); a run that needs more is reported as a failure.
+MAX_STIFF_STEPS = 1_000_000
+
 __all__ = ["abm", "forward_euler", "newmark_newton", "rk4", "stiff"]
 
+_STIFF = {"Radau": scipy.integrate.Radau, "BDF": scipy.integrate.BDF, "LSODA": scipy.integrate.LSODA}
 
-def _first_order(p, force):
-    """The right-hand side y' = g(t, y) with y = (x, v), and M's Cholesky factor."""
+
+def _first_order(p, force, *, finite=True):
+    """The right-hand side y' = g(t, y) with y = (x, v), and the acceleration a(t, x, v).
+
+    With ``finite`` a force that turns non-finite raises SolverError (see
+    :func:`~raildyn.integrators._common.general_force`); without, its value is passed on, for
+    a solver that rejects the step and tries a shorter one.
+    """
     n = p.n
     chol = scipy.linalg.cho_factor(p.M)
-    f = general_force(force, p)
+    f = general_force(force, p, finite=finite)
 
     def acceleration(t, x, v):
         # No finiteness check here: a state that blows up becomes non-finite, and the caller
@@ -51,6 +69,17 @@ def _first_order(p, force):
         return np.concatenate([v, acceleration(t, x, v)])
 
     return rhs, acceleration
+
+
+def _accelerations(acceleration, t, x, v) -> np.ndarray:
+    """Rows of accelerations at the states (x, v) (rows); NaN where the force turned non-finite."""
+    out = np.full(x.shape, np.nan)
+    for k, (tk, xk, vk) in enumerate(zip(t, x, v, strict=False)):
+        try:
+            out[k] = acceleration(tk, xk, vk)
+        except SolverError:
+            pass
+    return out
 
 
 def _bound(p, force):
@@ -74,13 +103,24 @@ def _march(name, p, force, advance) -> IntegrationResult:
     bad = None
     with np.errstate(over="ignore", invalid="ignore"):  # a blow-up is reported below, not warned about
         for k in range(m - 1):
-            Y[k + 1] = advance(k, Y, counted)
+            try:
+                Y[k + 1] = advance(k, Y, counted)
+            except SolverError as err:  # the force turned non-finite: the state outgrew it
+                x, v = Y[: k + 1, :n], Y[: k + 1, n:]
+                a = _accelerations(acceleration, p.t, x, v)
+                partial = partial_result(name, p.t, x, v, a, state["evals"])
+                raise SolverError(
+                    f"{name.replace('_', ' ')}: {err.reason}",
+                    step=k + 1,
+                    time=float(p.t[k + 1]),
+                    partial=partial,
+                ) from None
             if not np.abs(Y[k + 1]).max() <= bound:
                 bad = k + 1
                 break
-    done = m if bad is None else bad
-    x, v = Y[:done, :n], Y[:done, n:]
-    a = np.array([acceleration(tk, xk, vk) for tk, xk, vk in zip(p.t[:done], x, v, strict=True)])
+        done = m if bad is None else bad
+        x, v = Y[:done, :n], Y[:done, n:]
+        a = _accelerations(acceleration, p.t, x, v)
     if bad is not None:
         raise diverged(name, p, bad, x, v, a, {}, iterations=state["evals"])
     return completed(name, p, x, v, a, state["evals"])
@@ -269,9 +309,11 @@ def newmark_newton(
     gamma, beta : float
         Newmark's parameters; γ in [½, 1.5], β in (0, 1].
     tol : float
-        Convergence when the displacement correction is below tol × (|x₊|∞ + Δt |v₊|∞ + 1e-300).
+        Convergence when the displacement correction is below tol × (|x₊|∞ + Δt |v₊|∞ + 1e-300);
+        in [1e-13, 1) (below, rounding keeps Newton's method from ever getting there).
     max_iter : int
-        Iterations allowed per step, >= 1.
+        Iterations allowed per step, in [1, 1000] (Newton's method converges quadratically
+        near the answer: a step that needs more than a few dozen will not converge).
 
     Returns
     -------
@@ -281,8 +323,12 @@ def newmark_newton(
     Raises
     ------
     raildyn.errors.SolverError
-        If a step does not converge in ``max_iter`` iterations or the run blows up;
-        ``partial`` holds the steps completed before.
+        If a step does not converge in ``max_iter`` iterations, its tangent is singular, the
+        run blows up or the force (or its jacobian) turns non-finite; ``partial`` holds the
+        steps completed before.
+    ValueError
+        If ``force`` or ``jacobian`` returns the wrong shape, or a non-finite value at the
+        initial state (t₀, x0, v0).
 
     Examples
     --------
@@ -295,11 +341,15 @@ def newmark_newton(
     """
     gamma = scalar("gamma", gamma, low=0.5, high=1.5)
     beta = scalar("beta", beta, low=0.0, high=1.0, low_open=True)
-    tol = positive("tol", tol)
-    max_iter = integer("max_iter", max_iter, low=1)
+    tol = _checks.tolerance("tol", tol)
+    max_iter = integer("max_iter", max_iter, low=1, high=MAX_ITERATIONS)
+    if jacobian is not None:
+        _checks.function("jacobian", jacobian)
     p = problem(M, C, K, t, x0, v0)
     f = general_force(force, p)
     n, h, m = p.n, p.h, p.t.size
+    if jacobian is not None:
+        force_tangent(jacobian(p.t[0], p.x0, p.v0), n, p.t[0], initial=initial_state(p))
     X, V, A = np.empty((m, n)), np.empty((m, n)), np.empty((m, n))
     X[0], V[0] = p.x0, p.v0
     A[0] = np.linalg.solve(p.M, f(p.t[0], p.x0, p.v0) - p.C @ p.v0 - p.K @ p.x0)
@@ -311,53 +361,59 @@ def newmark_newton(
         def jacobian(t, x, v):
             return zero, zero
 
-    for k in range(m - 1):
-        t1 = p.t[k + 1]
-        x_pred = X[k] + h * V[k] + h * h * (0.5 - beta) * A[k]
-        v_pred = V[k] + h * (1 - gamma) * A[k]
-        a = A[k].copy()
-        converged = False
-        for _ in range(max_iter):
-            x, v = x_pred + beta * h * h * a, v_pred + gamma * h * a
-            fx = f(t1, x, v)
-            r = p.M @ a + p.C @ v + p.K @ x - fx
-            if jacobian is not None:
-                dfdx, dfdv = force_tangent(jacobian(t1, x, v), n)
-            else:
-                dfdx, dfdv = _fd_jacobian(f, t1, x, v, fx)
-            tangent = p.M + gamma * h * (p.C - dfdv) + beta * h * h * (p.K - dfdx)
-            da = np.linalg.solve(tangent, -r)
-            a = a + da
-            iterations += 1
-            size = np.abs(x).max() + h * np.abs(v).max() + 1e-300
-            if beta * h * h * np.abs(da).max() <= tol * size:
-                converged = True
-                break
-        X[k + 1], V[k + 1], A[k + 1] = x_pred + beta * h * h * a, v_pred + gamma * h * a, a
-        if not converged:
-            partial = IntegrationResult(
-                p.t[: k + 1], X[: k + 1].T, V[: k + 1].T, A[: k + 1].T, "newmark_newton", k, iterations
-            )
-            raise SolverError(
-                f"newmark newton: Newton's method did not converge in {max_iter} iterations with "
-                f"dt = {h:.6g} s (last correction {beta * h * h * np.abs(da).max():.3g} against a "
-                f"tolerance of {tol * size:.3g}); shorten dt, allow more iterations or check the jacobian",
-                step=k + 1,
-                time=float(t1),
-                partial=partial,
-            )
-        if not np.abs(np.r_[X[k + 1], V[k + 1]]).max() <= bound:
-            raise diverged(
-                "newmark_newton",
-                p,
-                k + 1,
-                X[: k + 1],
-                V[: k + 1],
-                A[: k + 1],
-                {"gamma": gamma, "beta": beta},
-                iterations=iterations,
-                analysed_as="newmark",
-            )
+    def failed(k, reason):
+        partial = partial_result("newmark_newton", p.t, X[: k + 1], V[: k + 1], A[: k + 1], iterations)
+        return SolverError(f"newmark newton: {reason}", step=k + 1, time=float(p.t[k + 1]), partial=partial)
+
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported as a failure below
+        for k in range(m - 1):
+            t1 = p.t[k + 1]
+            x_pred = X[k] + h * V[k] + h * h * (0.5 - beta) * A[k]
+            v_pred = V[k] + h * (1 - gamma) * A[k]
+            a = A[k].copy()
+            converged = False
+            for _ in range(max_iter):
+                x, v = x_pred + beta * h * h * a, v_pred + gamma * h * a
+                try:
+                    fx = f(t1, x, v)
+                    if jacobian is not None:
+                        dfdx, dfdv = force_tangent(jacobian(t1, x, v), n, t1)
+                    else:
+                        dfdx, dfdv = _fd_jacobian(f, t1, x, v, fx)
+                    r = p.M @ a + p.C @ v + p.K @ x - fx
+                    tangent = p.M + gamma * h * (p.C - dfdv) + beta * h * h * (p.K - dfdx)
+                    da = np.linalg.solve(tangent, -r)
+                except SolverError as err:
+                    raise failed(k, err.reason) from None
+                except np.linalg.LinAlgError:
+                    raise failed(k, "the tangent M + γΔt(C − ∂f/∂v) + βΔt²(K − ∂f/∂x) is singular") from None
+                a = a + da
+                iterations += 1
+                size = np.abs(x).max() + h * np.abs(v).max() + 1e-300
+                if beta * h * h * np.abs(da).max() <= tol * size:
+                    converged = True
+                    break
+            if not converged:
+                raise failed(
+                    k,
+                    f"Newton's method did not converge in {max_iter} iterations with "
+                    f"dt = {h:.6g} s (last correction {beta * h * h * np.abs(da).max():.3g} against a "
+                    f"tolerance of {tol * size:.3g}); shorten dt, allow more iterations or check the "
+                    "jacobian",
+                )
+            X[k + 1], V[k + 1], A[k + 1] = x_pred + beta * h * h * a, v_pred + gamma * h * a, a
+            if not np.abs(np.r_[X[k + 1], V[k + 1]]).max() <= bound:
+                raise diverged(
+                    "newmark_newton",
+                    p,
+                    k + 1,
+                    X[: k + 1],
+                    V[: k + 1],
+                    A[: k + 1],
+                    {"gamma": gamma, "beta": beta},
+                    iterations=iterations,
+                    analysed_as="newmark",
+                )
     return completed("newmark_newton", p, X, V, A, iterations)
 
 
@@ -386,7 +442,8 @@ def stiff(
     method : {"Radau", "BDF", "LSODA"}
         scipy's solver.
     rtol, atol : float
-        scipy's relative and absolute tolerances (> 0).
+        scipy's relative and absolute tolerances, each in [1e-13, 1) (below 1e-13 scipy would
+        silently raise them; atol is in the units of the state, m and m/s).
 
     Returns
     -------
@@ -398,9 +455,13 @@ def stiff(
     Raises
     ------
     raildyn.errors.SolverError
-        If scipy gives up (a step size that underflows, a state that is not finite): the
-        reason is scipy's message, ``step`` the steps taken, ``time`` where it stopped, and
-        ``partial`` the history at scipy's own steps up to there.
+        If scipy gives up (a step size that underflows, a state that is not finite) or the
+        run needs more than ``MAX_STIFF_STEPS`` (a million) steps: the reason is scipy's
+        message, ``step`` the steps taken, ``time`` where it stopped, and ``partial`` the
+        history on the grid ``t`` up to there.
+    ValueError
+        If ``force`` or ``jacobian`` returns the wrong shape, or a non-finite value at the
+        initial state (t₀, x0, v0).
 
     Examples
     --------
@@ -409,50 +470,65 @@ def stiff(
     >>> round(float(r.x[0, -1]), 7), r.method
     (1.0, 'stiff_radau')
     """
-    if method not in ("Radau", "BDF", "LSODA"):
-        raise ValueError(f"method must be 'Radau', 'BDF' or 'LSODA', got {method!r}")
-    rtol, atol = positive("rtol", rtol), positive("atol", atol)
+    _checks.choice("method", method, _STIFF)
+    rtol, atol = _checks.tolerance("rtol", rtol), _checks.tolerance("atol", atol)
+    if jacobian is not None:
+        _checks.function("jacobian", jacobian)
     p = problem(M, C, K, t, x0, v0)
-    n = p.n
-    rhs, acceleration = _first_order(p, force)
+    n, m = p.n, p.t.size
+    rhs, acceleration = _first_order(p, force, finite=False)
+    if jacobian is not None:
+        force_tangent(jacobian(p.t[0], p.x0, p.v0), n, p.t[0], initial=initial_state(p))
     base = first_order_matrix(p.M, p.C, p.K)
     Minv = np.linalg.inv(p.M)
 
     def jac(tk, y):
         if jacobian is None:
             return base
-        dfdx, dfdv = force_tangent(jacobian(tk, y[:n], y[n:]), n)
+        dfdx, dfdv = force_tangent(jacobian(tk, y[:n], y[n:]), n, tk)
         extra = np.zeros_like(base)
         extra[n:] = Minv @ np.hstack([dfdx, dfdv])
         return base + extra
 
     uses_force_tangent = jacobian is not None or force is None or not callable(force)
     name = f"stiff_{method.lower()}"
-    with np.errstate(over="ignore", invalid="ignore"):
-        sol = scipy.integrate.solve_ivp(
-            rhs,
-            (p.t[0], p.t[-1]),
-            np.r_[p.x0, p.v0],
-            method=method,
-            dense_output=True,
-            rtol=rtol,
-            atol=atol,
-            jac=jac if uses_force_tangent else None,
+    Y = np.empty((m, 2 * n))
+    Y[0] = np.r_[p.x0, p.v0]
+    filled, steps, reason = 1, 0, None
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported as a failure below
+        solver = _STIFF[method](
+            rhs, p.t[0], Y[0], p.t[-1], rtol=rtol, atol=atol, jac=jac if uses_force_tangent else None
         )
-    finite = np.all(np.isfinite(sol.y), axis=0)
-    if not sol.success or not finite.all():
-        # The history up to the first non-finite state, if any, else all of scipy's steps.
-        stop = int(np.argmin(finite)) if not finite.all() else sol.t.size
-        ts, ys = sol.t[:stop], sol.y[:, :stop]
-        a = np.array([acceleration(tk, ys[:n, k], ys[n:, k]) for k, tk in enumerate(ts)]).reshape(-1, n).T
-        partial = IntegrationResult(ts, ys[:n], ys[n:], a, name, max(stop - 1, 0), int(sol.nfev))
-        reason = sol.message if finite.all() else "the state became non-finite"
-        step = min(stop, sol.t.size - 1)
+        while solver.status == "running" and reason is None:
+            try:
+                message = solver.step()
+            except SolverError as err:
+                reason = err.reason
+                break
+            except (ValueError, ArithmeticError, np.linalg.LinAlgError) as err:  # scipy's own, on a blow-up
+                reason = str(err)
+                break
+            steps += 1
+            if solver.status == "failed":
+                reason = message
+            elif not np.isfinite(solver.y).all():
+                reason = "the state became non-finite"
+            elif steps >= MAX_STIFF_STEPS and solver.status == "running":
+                reason = f"the run needs more than {MAX_STIFF_STEPS} steps"
+            else:
+                # The grid values come from each step's own interpolant, as solve_ivp's t_eval would give.
+                upto = int(np.searchsorted(p.t, solver.t, side="right"))
+                if upto > filled:
+                    Y[filled:upto] = np.atleast_2d(solver.dense_output()(p.t[filled:upto]).T)
+                    filled = upto
+        x, v = Y[:filled, :n], Y[:filled, n:]
+        a = _accelerations(acceleration, p.t, x, v)
+    if reason is not None:
         raise SolverError(
-            f"scipy's {method} failed: {reason}", step=step, time=float(sol.t[step]), partial=partial
+            f"scipy's {method} failed: {reason}",
+            step=steps,
+            time=float(solver.t),
+            partial=partial_result(name, p.t, x, v, a, int(solver.nfev)),
         )
-    # The grid values come from each step's own interpolant, as solve_ivp's t_eval would give.
-    y = sol.sol(p.t)
-    x, v = y[:n], y[n:]
-    a = np.array([acceleration(tk, x[:, k], v[:, k]) for k, tk in enumerate(p.t)]).T
-    return IntegrationResult(p.t, x, v, a, name, sol.t.size - 1, int(sol.nfev))
+    result = completed(name, p, x, v, a, int(solver.nfev))
+    return IntegrationResult(result.t, result.x, result.v, result.a, name, steps, result.iterations)

@@ -7,6 +7,7 @@ the parameters each one accepts, with their defaults.
 
 from __future__ import annotations
 
+from raildyn import _checks
 from raildyn.integrators import linear, nonlinear
 from raildyn.integrators._common import IntegrationResult
 
@@ -63,7 +64,8 @@ def integrate(method: str, M, C, K, t, x0, v0, force=None, **params) -> Integrat
         ones (``FIRST_ORDER``).
     **params
         The scheme's parameters (``PARAMETERS``): ``theta`` (wilson), ``gamma`` and
-        ``beta`` (newmark), ``alpha`` (hht_alpha).
+        ``beta`` (newmark), ``alpha`` (hht_alpha); any other name is refused with a
+        TypeError naming it.
 
     Returns
     -------
@@ -81,12 +83,12 @@ def integrate(method: str, M, C, K, t, x0, v0, force=None, **params) -> Integrat
     >>> r.method, r.steps
     ('wilson', 10)
     """
-    if method not in METHODS:
-        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    _checks.choice("method", method, METHODS)
     unknown = sorted(set(params) - set(PARAMETERS[method]))
     if unknown:
-        raise ValueError(
-            f"{method} takes the parameters {sorted(PARAMETERS[method]) or 'none'}, got {unknown}"
+        raise TypeError(
+            f"{method} takes the parameters {sorted(PARAMETERS[method]) or 'none'}, got unknown "
+            f"{', '.join(unknown)}"
         )
     module = nonlinear if method in FIRST_ORDER else linear
     return getattr(module, method)(M, C, K, t, x0, v0, force, **params)

@@ -1,0 +1,300 @@
+"""Fuzz registry: chapter 2, numerical integration, and the suspension force laws."""
+
+from __future__ import annotations
+
+import numpy as np
+from fuzzing import call, fuzz, on
+
+from raildyn import integrators as ig
+from raildyn import suspension as sus
+
+W2 = (2 * np.pi) ** 2  # the stiffness of a 1 kg oscillator of period 1 s
+T = np.linspace(0.0, 0.5, 11)  # 10 steps of 0.05 s: inside every scheme's stability limit
+T_MAX = np.linspace(0.0, 2.0, 41)  # two periods: interior maxima to find
+
+
+def hardening(t, x, v):
+    """A small cubic spring force on one coordinate, N."""
+    return -10.0 * x**3
+
+
+def hardening_tangent(t, x, v):
+    """Its tangent (∂f/∂x, ∂f/∂v) as a pair."""
+    return (np.array([[-30.0 * x[0] ** 2]]), np.zeros((1, 1)))
+
+
+def load(t):
+    """A sinusoidal external force f(t), N."""
+    return np.array([np.sin(2 * np.pi * t)])
+
+
+def result():
+    return ig.rk4(1.0, 0.1, W2, T_MAX, 1.0, 0.0)
+
+
+def reference():
+    return ig.rk4(1.0, 0.1, W2, T_MAX[::2], 1.0, 0.0)
+
+
+def chart():
+    return ig.scheme_accuracy("central_difference", [0.05, 0.1])
+
+
+def damper():
+    return sus.FrictionDamper(friction_force=100.0, velocity_scale=1e-3)
+
+
+# M, C, K of a linear run; C and K may be zero or negative (the equations of a system that is
+# undamped, or unstable, are integrated as they are); x0, v0 and the force take any sign.
+LINEAR = {"C": "zero negative", "K": "zero negative", "x0": "zero negative", "v0": "zero negative"}
+LOAD = {**LINEAR, "force": "returns-negative"}
+FIRST = {**LINEAR, "force": "returns-negative"}
+STEP = {"C": "zero negative", "K": "zero negative"}
+
+ENTRIES = [
+    # --- linear schemes, f(t) as a callable or as samples
+    fuzz(
+        "raildyn.integrators.newmark",
+        lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load, gamma=0.6, beta=0.3),
+        accepts={**LOAD, "beta": "zero"},  # β in [0, 1]: β = 0 is the explicit member
+    ),
+    fuzz(
+        "raildyn.integrators.average_acceleration",
+        lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load),
+        accepts=LOAD,
+    ),
+    fuzz(
+        "raildyn.integrators.linear_acceleration",
+        lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, np.sin(T)[None, :]),
+        accepts={**LINEAR, "force": "zero negative none"},  # None: no load
+    ),
+    fuzz(
+        "raildyn.integrators.hht_alpha",
+        lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load, alpha=-0.1),
+        accepts={**LOAD, "alpha": "zero negative"},  # α in [−⅓, 0]
+    ),
+    fuzz(
+        "raildyn.integrators.wilson", lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load, theta=1.5), accepts=LOAD
+    ),
+    fuzz(
+        "raildyn.integrators.central_difference", lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load), accepts=LOAD
+    ),
+    fuzz("raildyn.integrators.houbolt", lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load), accepts=LOAD),
+    fuzz(
+        "raildyn.integrators.integrate",
+        lambda: call("wilson", 1.0, 0.1, W2, T, 1.0, 0.0, load, theta=1.5),
+        accepts=LOAD,
+    ),
+    # --- nonlinear schemes, f(t, x, v)
+    fuzz(
+        "raildyn.integrators.forward_euler",
+        lambda: call(1.0, 0.1, W2, np.linspace(0, 0.05, 11), 0.1, 0.0, hardening),
+        accepts=FIRST,
+    ),
+    fuzz("raildyn.integrators.rk4", lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, hardening), accepts=FIRST),
+    fuzz("raildyn.integrators.abm", lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, hardening), accepts=FIRST),
+    fuzz(
+        "raildyn.integrators.newmark_newton",
+        lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, hardening, jacobian=hardening_tangent, max_iter=10),
+        accepts={**FIRST, "jacobian": "returns-negative"},
+    ),
+    fuzz(
+        "raildyn.integrators.stiff",
+        lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, hardening, jacobian=hardening_tangent, rtol=1e-6, atol=1e-9),
+        accepts={**FIRST, "jacobian": "returns-negative"},
+    ),
+    # --- the linear steps and their recursion matrices
+    fuzz(
+        "raildyn.integrators.linear.newmark_step",
+        lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05, 0.5, 0.25),
+        accepts={**STEP, "beta": "zero", "alpha": "zero"},  # β in [0, 1], α in [−⅓, 0]
+    ),
+    fuzz(
+        "raildyn.integrators.linear.wilson_step",
+        lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05, 1.4),
+        accepts=STEP,
+    ),
+    fuzz(
+        "raildyn.integrators.linear.central_difference_step",
+        lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05),
+        accepts=STEP,
+    ),
+    fuzz(
+        "raildyn.integrators.linear.houbolt_step",
+        lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05),
+        accepts=STEP,
+    ),
+    fuzz(
+        "raildyn.integrators.linear.recursion_matrices",
+        lambda: call(ig.linear.central_difference_step(np.eye(1), np.zeros((1, 1)), np.eye(1), 0.1), 2, 1),
+        accepts={"step": "returns-negative"},  # a step is any linear map: its entries take any sign
+    ),
+    fuzz(
+        "raildyn.integrators.linear.RecursionMatrices",
+        lambda: call(np.eye(2), np.ones((2, 1)), np.ones((2, 1))),
+        accepts={"*": "zero negative"},
+    ),  # a result: its entries take any value
+    # --- results
+    fuzz(
+        "raildyn.integrators.IntegrationResult",
+        lambda: call(T, np.cos(T)[None], -np.sin(T)[None], -np.cos(T)[None], "exact", 10, 0),
+        accepts={"*": "zero negative", "method": "unknown"},
+    ),  # method is a free label
+    fuzz(
+        "raildyn.integrators.IntegrationResult.deviation_from",
+        lambda: on(result(), reference()),
+        accepts={"after": "zero negative"},
+    ),
+    fuzz(
+        "raildyn.integrators.IntegrationResult.maxima", lambda: on(result(), 0, "x"), accepts={"dof": "zero"}
+    ),
+    fuzz(
+        "raildyn.integrators.IntegrationResult.plot",
+        lambda: on(result(), None, dof=0, quantity="v", scale=2.0),
+        accepts={"dof": "zero", "scale": "negative"},
+    ),
+    fuzz(
+        "raildyn.integrators.Deviation",
+        lambda: call(np.array([0.1]), np.array([0.2]), np.array([0.3]), np.array([0.0, 0.5])),
+        accepts={"displacement": "zero", "velocity": "zero", "acceleration": "zero", "times": "negative"},
+    ),
+    fuzz(
+        "raildyn.integrators.Maxima",
+        lambda: call(np.array([1.0, 2.0]), np.array([0.5, 0.25])),
+        accepts={"times": "negative", "values": "zero negative"},
+    ),
+    fuzz(
+        "raildyn.integrators.ForceJacobian",
+        lambda: call(np.array([[1.0]]), np.array([[-2.0]])),
+        accepts={"wrt_displacement": "zero negative", "wrt_velocity": "zero negative"},
+    ),
+    # --- analysis on the test oscillator
+    fuzz(
+        "raildyn.integrators.amplification_matrix",
+        lambda: call("newmark", 0.1, 0.05, gamma=0.6, beta=0.3),
+        accepts={"dt_over_T": "list", "damping_ratio": "zero"},
+    ),
+    fuzz(
+        "raildyn.integrators.spectral_radius",
+        lambda: call("wilson", 0.1, 0.05, theta=1.4),
+        accepts={"dt_over_T": "list", "damping_ratio": "zero"},
+    ),
+    fuzz(
+        "raildyn.integrators.period_elongation",
+        lambda: call("hht_alpha", 0.1, 0.05, alpha=-0.1),
+        accepts={"dt_over_T": "list", "damping_ratio": "zero"},
+    ),
+    fuzz(
+        "raildyn.integrators.amplitude_decay",
+        lambda: call("houbolt", 0.1, 0.05),
+        accepts={"dt_over_T": "list", "damping_ratio": "zero"},
+    ),
+    fuzz(
+        "raildyn.integrators.stability_limit",
+        lambda: call("linear_acceleration", 0.05),
+        accepts={"damping_ratio": "zero"},
+    ),
+    fuzz(
+        "raildyn.integrators.first_order_step_limit",
+        lambda: call("rk4", -100.0),
+        accepts={"eigenvalue": "negative"},
+    ),
+    fuzz(
+        "raildyn.integrators.stable_step",
+        lambda: call("central_difference", 1.0, 0.1, W2),
+        accepts={"C": "zero negative", "K": "negative"},
+    ),
+    fuzz(
+        "raildyn.integrators.stiffness_ratio",
+        lambda: call(1.0, 101.0, 100.0),
+        accepts={"C": "zero negative", "K": "negative"},
+    ),
+    fuzz(
+        "raildyn.integrators.scheme_accuracy",
+        lambda: call("central_difference", [0.05, 0.1], 0.05),
+        accepts={"damping_ratio": "zero"},
+    ),
+    fuzz(
+        "raildyn.integrators.SchemeAccuracy",
+        lambda: call(
+            "rk4", {}, 0.0, np.array([0.1]), np.array([0.99]), np.array([0.01]), np.array([0.02]), 0.45
+        ),
+        accepts={"*": "zero negative"},
+    ),  # a result: its values are what the analysis computed
+    fuzz("raildyn.integrators.SchemeAccuracy.plot_spectral_radius", lambda: on(chart(), None)),
+    fuzz("raildyn.integrators.SchemeAccuracy.plot_period_elongation", lambda: on(chart(), None)),
+    fuzz("raildyn.integrators.SchemeAccuracy.plot_amplitude_decay", lambda: on(chart(), None)),
+    fuzz("raildyn.integrators.convergence_study", lambda: call("rk4", (8, 16), 0.5)),
+    fuzz(
+        "raildyn.integrators.ConvergenceStudy",
+        lambda: call(
+            "rk4", {}, np.array([8, 16]), np.array([0.125, 0.0625]), np.array([1e-3, 6e-5]), np.array([4.0])
+        ),
+        accepts={"*": "zero negative"},
+    ),  # a result
+    # --- suspension force laws: array_like inputs broadcast against each other (the module's rule),
+    # so a list or an extra axis that still broadcasts is a valid call
+    fuzz(
+        "raildyn.suspension.spring_force",
+        lambda: call([0.0, 0.01], 1.0e6, 10.0),
+        accepts={
+            "deflection": "zero negative shape",
+            "stiffness": "zero list",
+            "preload": "zero negative list",
+        },
+    ),
+    fuzz(
+        "raildyn.suspension.damper_force",
+        lambda: call([-0.1, 0.2], 2.0e4),
+        accepts={"velocity": "zero negative shape", "damping": "zero list"},
+    ),
+    fuzz(
+        "raildyn.suspension.coulomb_friction",
+        lambda: call([-1.0, 0.5], 500.0, velocity_scale=0.01),
+        accepts={
+            "velocity": "zero negative shape",
+            "friction_force": "zero list",
+            "velocity_scale": "list none",  # None: the ideal law
+        },
+    ),
+    fuzz(
+        "raildyn.suspension.coulomb_friction_slope",
+        lambda: call([0.0, 1e-3], 1.0e4, velocity_scale=1.0e-3),
+        accepts={"velocity": "zero negative shape", "friction_force": "zero list", "velocity_scale": "list"},
+    ),
+    fuzz(
+        "raildyn.suspension.friction_error_bound",
+        lambda: call(0.03, 500.0, 0.01),
+        accepts={"velocity": "zero negative list", "friction_force": "zero list", "velocity_scale": "list"},
+    ),
+    fuzz(
+        "raildyn.suspension.friction_amplitude_loss",
+        lambda: call(1.0e4, 5.0e6),
+        accepts={"friction_force": "zero list", "stiffness": "list"},
+    ),
+    fuzz(
+        "raildyn.suspension.clearance_force",
+        lambda: call([-0.02, 0.005, 0.02], 0.01, 1.0e6, 1.0e5),
+        accepts={
+            "deflection": "zero negative shape",
+            "clearance": "zero",
+            "stop_stiffness": "zero",
+            "stiffness": "zero",
+        },
+    ),
+    fuzz(
+        "raildyn.suspension.FrictionDamper",
+        lambda: call(100.0, 1e-3),
+        accepts={"friction_force": "zero list", "velocity_scale": "list"},  # one value per coordinate
+    ),
+    fuzz(
+        "raildyn.suspension.FrictionDamper.force",
+        lambda: on(damper(), 0.1, np.zeros(1), np.array([0.01])),
+        accepts={"t": "zero negative", "x": "zero negative", "v": "zero negative"},
+    ),
+    fuzz(
+        "raildyn.suspension.FrictionDamper.jacobian",
+        lambda: on(damper(), 0.1, np.zeros(1), np.array([0.01])),
+        accepts={"t": "zero negative", "x": "zero negative", "v": "zero negative"},
+    ),
+]
