@@ -17,8 +17,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
+from raildyn import _checks
 from raildyn._checks import array, integer, nonnegative, positive, scalar, square_matrix, time_grid
-from raildyn.vibration.sdof import SDOF
+from raildyn.vibration.sdof import _MAX_COUNT, _MAX_PHASE, _RATE, SDOF
 
 __all__ = [
     "ChainMatrices",
@@ -64,6 +65,13 @@ class ModalResult:
     natural_frequencies: np.ndarray
     mode_shapes: np.ndarray
 
+    def __post_init__(self):
+        w = array("natural_frequencies", self.natural_frequencies, ndim=1, low=0.0, allow_empty=False)
+        object.__setattr__(self, "natural_frequencies", w)
+        object.__setattr__(
+            self, "mode_shapes", array("mode_shapes", self.mode_shapes, shape=(w.size, w.size))
+        )
+
     @property
     def natural_frequencies_hz(self) -> np.ndarray:
         """f_j = ω_j/(2π), Hz."""
@@ -79,7 +87,7 @@ class ModalResult:
         Parameters
         ----------
         matrix : array_like, shape (n, n)
-            X: M (kg), C (N·s/m) or K (N/m).
+            X: M (kg), C (N·s/m), K (N/m) or any other finite (n, n) matrix.
 
         Returns
         -------
@@ -121,6 +129,18 @@ class ComplexModes:
     mode_shapes: np.ndarray
     natural_frequencies: np.ndarray
     damping_ratios: np.ndarray
+
+    def __post_init__(self):
+        lam = array("eigenvalues", self.eigenvalues, dtype=complex, ndim=1, allow_empty=False)
+        if lam.size % 2:
+            raise ValueError(f"eigenvalues must hold 2n values (n coordinates), got {lam.size}")
+        n2 = (lam.size,)
+        object.__setattr__(self, "eigenvalues", lam)
+        shapes = array("mode_shapes", self.mode_shapes, dtype=complex, shape=(lam.size // 2, lam.size))
+        object.__setattr__(self, "mode_shapes", shapes)
+        w = array("natural_frequencies", self.natural_frequencies, shape=n2, low=0.0)
+        object.__setattr__(self, "natural_frequencies", w)
+        object.__setattr__(self, "damping_ratios", array("damping_ratios", self.damping_ratios, shape=n2))
 
     @property
     def natural_frequencies_hz(self) -> np.ndarray:
@@ -181,6 +201,12 @@ class ChainMatrices:
     C: np.ndarray
     K: np.ndarray
 
+    def __post_init__(self):
+        M = square_matrix("M", self.M)
+        object.__setattr__(self, "M", M)
+        object.__setattr__(self, "C", square_matrix("C", self.C, size=M.shape[0]))
+        object.__setattr__(self, "K", square_matrix("K", self.K, size=M.shape[0]))
+
 
 @dataclass(frozen=True)
 class RayleighCoefficients:
@@ -197,21 +223,30 @@ class RayleighCoefficients:
     alpha: float
     beta: float
 
+    def __post_init__(self):
+        object.__setattr__(self, "alpha", scalar("alpha", self.alpha))
+        object.__setattr__(self, "beta", scalar("beta", self.beta))
+
     def damping_ratio(self, omega):
         """Damping ratio ξ(ω) = α/(2ω) + βω/2 that C = αM + βK gives a mode of frequency ω.
 
         Parameters
         ----------
         omega : array_like
-            ω, rad/s, > 0.
+            ω, rad/s, > 0, any shape (not empty).
 
         Returns
         -------
         ndarray or float
             ξ, shape of ``omega``.
         """
-        w = array("omega", omega, low=0.0, low_open=True)
-        return (self.alpha / (2.0 * w) + self.beta * w / 2.0)[()]
+        w = array("omega", omega, low=0.0, low_open=True, allow_empty=False)
+        with np.errstate(over="ignore"):
+            xi = self.alpha / (2.0 * w) + self.beta * w / 2.0
+        if not np.all(np.isfinite(xi)):
+            raise ValueError(f"omega from {w.min():.4g} to {w.max():.4g} rad/s gives a damping ratio beyond "
+                             "floating point range")  # fmt: skip
+        return xi[()]
 
     def damping_matrix(self, M, K) -> np.ndarray:
         """C = αM + βK, N·s/m (see :func:`rayleigh_damping`).
@@ -250,6 +285,14 @@ class StateSpaceMatrices:
     B: np.ndarray
     C: np.ndarray
     D: np.ndarray
+
+    def __post_init__(self):
+        A = square_matrix("A", self.A, symmetric=False)
+        B = array("B", self.B, shape=(A.shape[0], None), allow_empty=False)
+        C = array("C", self.C, shape=(None, A.shape[0]), allow_empty=False)
+        D = array("D", self.D, shape=(C.shape[0], B.shape[1]))
+        for name, value in zip("ABCD", (A, B, C, D), strict=True):
+            object.__setattr__(self, name, value)
 
     def to_control(self):
         """The same system as a ``control.StateSpace`` (python-control).
@@ -353,7 +396,7 @@ def chain_matrices(masses, stiffnesses, *, dampings=None, grounded: bool = True)
     stiffnesses : array_like, shape (n,) if grounded else (n − 1,)
         N/m, > 0.
     dampings : array_like, optional
-        N·s/m, >= 0, one beside each spring; no damping by default.
+        N·s/m, >= 0 (zero: that damper is absent), one beside each spring; no damping by default.
     grounded : bool
         Whether the first spring (and damper) ties mass 0 to the ground.
 
@@ -371,8 +414,7 @@ def chain_matrices(masses, stiffnesses, *, dampings=None, grounded: bool = True)
     m = array("masses", masses, ndim=1, low=0.0, low_open=True)
     if m.size == 0:
         raise ValueError("masses must hold at least one mass, got an empty array")
-    if not isinstance(grounded, (bool, np.bool_)):
-        raise TypeError(f"grounded must be True or False, got {grounded!r}")
+    grounded = _checks.flag("grounded", grounded)
     K = _chain_assembly("stiffnesses", stiffnesses, m.size, grounded, low_open=True)
     C = (
         np.zeros_like(K)
@@ -392,7 +434,7 @@ def uniform_chain_frequencies(count: int, mass: float, stiffness: float) -> np.n
     Parameters
     ----------
     count : int
-        n >= 1.
+        n, from 1 to 1_000_000 (a bound on the memory asked for).
     mass : float
         m, kg, > 0.
     stiffness : float
@@ -408,7 +450,7 @@ def uniform_chain_frequencies(count: int, mass: float, stiffness: float) -> np.n
     >>> np.round(uniform_chain_frequencies(2, 1.0, 1.0) ** 2, 6)  # (3 ∓ √5)/2
     array([0.381966, 2.618034])
     """
-    n = integer("count", count, low=1)
+    n = integer("count", count, low=1, high=_MAX_COUNT)
     m = positive("mass", mass)
     k = positive("stiffness", stiffness)
     j = np.arange(1, n + 1)
@@ -445,10 +487,16 @@ def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) 
     if w1 == w2:
         raise ValueError(f"omega2 must differ from omega1 to fix two coefficients, both are {w1!r}")
     x1, x2 = nonnegative("xi1", xi1), nonnegative("xi2", xi2)
-    span = w2**2 - w1**2
-    return RayleighCoefficients(
-        alpha=2.0 * w1 * w2 * (x1 * w2 - x2 * w1) / span, beta=2.0 * (x2 * w2 - x1 * w1) / span
-    )
+    # ω₂² − ω₁² = (ω₂ − ω₁)(ω₂ + ω₁), divided by one factor at a time so that nothing overflows
+    d, s = w2 - w1, w2 + w1
+    alpha = 2.0 * (w1 / s) * w2 * (x1 * w2 - x2 * w1) / d
+    beta = 2.0 * (x2 * w2 - x1 * w1) / d / s
+    if not (np.isfinite(alpha) and np.isfinite(beta)):
+        raise ValueError(
+            f"omega1 = {w1!r}, omega2 = {w2!r}, xi1 = {x1!r} and xi2 = {x2!r} give coefficients beyond "
+            f"floating point range (alpha = {alpha!r}, beta = {beta!r})"
+        )
+    return RayleighCoefficients(alpha=alpha, beta=beta)
 
 
 def rayleigh_damping(M, K, alpha: float, beta: float) -> np.ndarray:
@@ -476,7 +524,14 @@ def rayleigh_damping(M, K, alpha: float, beta: float) -> np.ndarray:
     array([[1.5]])
     """
     M, K = _mass_and_stiffness(M, K)
-    return scalar("alpha", alpha) * M + scalar("beta", beta) * K
+    a, b = scalar("alpha", alpha), scalar("beta", beta)
+    with np.errstate(over="ignore", invalid="ignore"):
+        C = a * M + b * K
+    if not np.all(np.isfinite(C)):
+        raise ValueError(
+            f"alpha = {a!r} and beta = {b!r} with these M and K give a C beyond floating point range"
+        )
+    return C
 
 
 def modal_damping_ratios(M, C, K) -> np.ndarray:
@@ -490,14 +545,15 @@ def modal_damping_ratios(M, C, K) -> np.ndarray:
     Returns
     -------
     ndarray, shape (n,)
-        In the order of :func:`modal_analysis`. A rigid-body mode (ω_j = 0)
-        gets inf if it is damped and 0 if not.
+        In the order of :func:`modal_analysis`. An undamped rigid-body mode
+        (ω_j = 0) gets 0.
 
     Raises
     ------
     ValueError
         If Φᵀ C Φ is not diagonal to 1e-8 of its largest entry: the modes
-        are then coupled by damping, and :func:`complex_modes` applies.
+        are then coupled by damping, and :func:`complex_modes` applies. Also
+        if C damps a rigid-body mode, whose ratio c/(2ω_j) is then unbounded.
 
     Examples
     --------
@@ -514,12 +570,16 @@ def modal_damping_ratios(M, C, K) -> np.ndarray:
     coupling = np.abs(modal - np.diag(np.diag(modal))).max() / scale
     if coupling > 1e-8:
         raise ValueError(
-            f"C is not proportional damping: Φᵀ C Φ has off-diagonal terms up to {coupling:.3g} of its "
-            "largest entry; use complex_modes for non-proportional damping"
+            f"C is not proportional damping for the modes of M and K: Φᵀ C Φ has off-diagonal terms up "
+            f"to {coupling:.3g} of its largest entry; use complex_modes for non-proportional damping"
         )
     c, w = np.diag(modal), modes.natural_frequencies
-    rigid = np.where(c > 1e-8 * scale, np.inf, 0.0)
-    return np.divide(c, 2.0 * w, out=rigid, where=w > 0)
+    if np.any((w == 0) & (c > 1e-8 * scale)):
+        raise ValueError(
+            "C damps a rigid-body (zero-frequency) mode of M and K, whose damping ratio c/(2 omega) is "
+            "unbounded; use complex_modes"
+        )
+    return np.divide(c, 2.0 * w, out=np.zeros_like(c), where=w > 0)
 
 
 def _rigid_body_response(h: float, f: np.ndarray, q0: float, v0: float) -> np.ndarray:
@@ -544,13 +604,15 @@ def modal_superposition(M, K, t, x0=None, v0=None, force=None, damping_ratios=No
         Mass (kg) and stiffness (N/m) matrices, as in :func:`modal_analysis`.
     t : array_like, shape (n_t,)
         Strictly increasing times, s; t[0] is the initial instant. Uniformly
-        spaced when ``force`` is given.
+        spaced when ``force`` is given, with ω_j h <= 1e12 rad for the step h
+        (as for :meth:`SDOF.forced_response`).
     x0, v0 : array_like, shape (n,), optional
-        Initial displacements (m) and velocities (m/s); zero by default.
+        Initial displacements (m) and velocities (m/s), any sign; zero by default.
     force : array_like, shape (n, n_t), optional
         Force on each coordinate (N) at the times ``t``.
     damping_ratios : float or array_like, shape (n,), optional
-        ξ for every mode or for each, >= 0; zero by default.
+        ξ for every mode or for each, >= 0, with 2ξ_jω_j <= 1e300 1/s (the domain of
+        :class:`SDOF`); zero by default.
 
     Returns
     -------
@@ -573,6 +635,17 @@ def modal_superposition(M, K, t, x0=None, v0=None, force=None, damping_ratios=No
         raise ValueError(f"damping_ratios must be a number or have shape ({n},), got shape {xi.shape}")
     xi = np.broadcast_to(xi, (n,))
     modes = _modes(M, K)
+    w = modes.natural_frequencies
+    if np.any(2.0 * xi * w > _RATE):
+        raise ValueError(
+            f"damping_ratios must keep 2 xi_j omega_j <= 1e300 1/s (the domain of SDOF), got "
+            f"{(2.0 * xi * w).max():.4g} with these M and K"
+        )
+    if force is not None and t.size > 1 and w.max() * (t[-1] - t[0]) / (t.size - 1) > _MAX_PHASE:
+        raise ValueError(
+            f"t must have a step h with omega_j h <= {_MAX_PHASE:g} rad for every mode of M and K; the "
+            f"highest omega_j = {w.max():.4g} rad/s with h = {(t[-1] - t[0]) / (t.size - 1):.4g} s exceeds it"
+        )
     phi = modes.mode_shapes
     q0, qd0 = phi.T @ M @ x0, phi.T @ M @ v0  # Φᵀ M Φ = I inverts x = Φ q
     tau = t - t[0]
@@ -615,7 +688,8 @@ def first_order_matrix(M, C, K) -> np.ndarray:
     Parameters
     ----------
     M, C, K : array_like, (n, n) or (m, n, n)
-        Mass, damping and stiffness, in consistent units.
+        Mass, damping and stiffness, in consistent units, finite; M (each M of a
+        stack) symmetric positive definite, C and K any real matrices.
 
     Returns
     -------
@@ -628,18 +702,38 @@ def first_order_matrix(M, C, K) -> np.ndarray:
     array([[ 0.,  1.],
            [-4., -2.]])
     """
-    Ms, Cs, Ks = (np.asarray(X, dtype=float) for X in (M, C, K))
+    Ms, Cs, Ks = (array(name, X) for name, X in (("M", M), ("C", C), ("K", K)))
     if max(Ms.ndim, Cs.ndim, Ks.ndim) == 2:
         Ms, Cs, Ks = _damped_matrices(Ms, Cs, Ks)
     else:
-        Ms, Cs, Ks = np.broadcast_arrays(Ms, Cs, Ks)
-        if Ms.shape[-1] != Ms.shape[-2] or not np.all(np.isfinite(Ms + Cs + Ks)):
-            raise ValueError(f"M, C and K must be finite stacks of square matrices, got shape {Ms.shape}")
+        Ms, Cs, Ks = _stacks(Ms, Cs, Ks)
     n = Ms.shape[-1]
     A = np.zeros(Ms.shape[:-2] + (2 * n, 2 * n))
     A[..., :n, n:] = np.eye(n)
     A[..., n:, :] = -np.linalg.solve(Ms, np.concatenate([Ks, Cs], axis=-1))
     return A
+
+
+def _stacks(M: np.ndarray, C: np.ndarray, K: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Finite stacks of square matrices broadcast together; each M symmetric positive definite."""
+    for name, X in (("M", M), ("C", C), ("K", K)):
+        if X.ndim not in (2, 3) or X.shape[-1] != X.shape[-2] or X.size == 0:
+            raise ValueError(
+                f"{name} must be a square matrix (n, n) or a stack of them (m, n, n), got {X.shape}"
+            )
+    try:
+        Ms, Cs, Ks = np.broadcast_arrays(M, C, K)
+    except ValueError:
+        raise ValueError(
+            f"M, C and K must be stacks of one size, got {M.shape}, {C.shape} and {K.shape}"
+        ) from None
+    if np.abs(M - np.swapaxes(M, -1, -2)).max() > 1e-10 * np.abs(M).max():
+        raise ValueError("M must hold symmetric matrices")
+    try:
+        np.linalg.cholesky(M)
+    except np.linalg.LinAlgError:
+        raise ValueError("M must hold positive definite matrices") from None
+    return Ms, Cs, Ks
 
 
 def _first_order(M, C, K) -> tuple[np.ndarray, np.ndarray]:
@@ -661,7 +755,8 @@ def complex_modes(M, C, K) -> ComplexModes:
     M : array_like, shape (n, n)
         Mass matrix, kg; symmetric positive definite.
     C, K : array_like, shape (n, n)
-        Damping (N·s/m) and stiffness (N/m) matrices; need not be symmetric.
+        Damping (N·s/m) and stiffness (N/m) matrices; any finite real matrices
+        (they need not be symmetric, and an unstable system has modes too).
 
     Returns
     -------
@@ -717,11 +812,12 @@ def state_space(M, C, K, B, output: str = "displacement") -> StateSpaceMatrices:
     Parameters
     ----------
     M, C, K : array_like, shape (n, n)
-        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices; C and K need
-        not be symmetric.
+        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices; M symmetric
+        positive definite, C and K any finite real matrices (creep forces make
+        them non-symmetric, and a model may be unstable).
     B : array_like, shape (n, m) or (n,)
-        How each of the m inputs (N, or whatever unit makes B u a force)
-        loads each coordinate.
+        How each of the m >= 1 inputs (N, or whatever unit makes B u a force)
+        loads each coordinate, any finite values.
     output : {"displacement", "velocity", "acceleration", "state"}
         y = x (m), x' (m/s), x'' (m/s², with D = M⁻¹B) or the whole state z.
 
@@ -737,12 +833,11 @@ def state_space(M, C, K, B, output: str = "displacement") -> StateSpaceMatrices:
     array([[ 0.,  1.],
            [-4., -0.]])
     """
+    output = _checks.choice("output", output, _OUTPUTS)
     M, A = _first_order(M, C, K)
     n = M.shape[0]
     Bm = array("B", B)
-    Bm = array("B", Bm[:, None] if Bm.ndim == 1 else Bm, shape=(n, None))
-    if output not in _OUTPUTS:
-        raise ValueError(f"output must be one of {', '.join(map(repr, _OUTPUTS))}; got {output!r}")
+    Bm = array("B", Bm[:, None] if Bm.ndim == 1 else Bm, shape=(n, None), allow_empty=False)
     m = Bm.shape[1]
     accel_input = np.linalg.solve(M, Bm)
     Bs = np.vstack([np.zeros((n, m)), accel_input])
@@ -764,9 +859,9 @@ def to_control(M, C, K, B, output: str = "displacement"):
     Parameters
     ----------
     M, C, K : array_like, shape (n, n)
-        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices.
+        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices, as for :func:`state_space`.
     B : array_like, shape (n, m) or (n,)
-        How each input loads each coordinate.
+        How each input loads each coordinate, as for :func:`state_space`.
     output : {"displacement", "velocity", "acceleration", "state"}
         As for :func:`state_space`.
 
@@ -793,9 +888,10 @@ def frf_matrix(M, C, K, omega) -> np.ndarray:
     Parameters
     ----------
     M, C, K : array_like, shape (n, n)
-        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices.
+        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices; M symmetric
+        positive definite, C and K any finite real matrices.
     omega : array_like, shape (n_omega,)
-        rad/s, >= 0.
+        rad/s, >= 0, not empty.
 
     Returns
     -------
@@ -814,12 +910,16 @@ def frf_matrix(M, C, K, omega) -> np.ndarray:
     """
     M, C, K = _damped_matrices(M, C, K)
     n = M.shape[0]
-    w = np.atleast_1d(array("omega", omega, low=0.0))
+    w = np.atleast_1d(array("omega", omega, low=0.0, allow_empty=False))
     if w.ndim != 1:
         raise ValueError(f"omega must be a number or a 1-dimensional array, got shape {w.shape}")
-    Z = K - w[:, None, None] ** 2 * M + 1j * w[:, None, None] * C
+    # Z/s² with s = max(ω, 1 rad/s), and H = (Z/s²)⁻¹/s²: every term stays finite for any finite ω
+    # (1e300 included), and nothing changes for ω <= 1.
+    inv = (1.0 / np.maximum(w, 1.0))[:, None, None]
+    u = w[:, None, None] * inv
+    Z = K * (inv * inv) - (u * u) * M + 1j * (u * inv) * C
     try:
-        return np.linalg.solve(Z, np.broadcast_to(np.eye(n, dtype=complex), Z.shape))
+        return np.linalg.solve(Z, np.broadcast_to(np.eye(n, dtype=complex), Z.shape)) * (inv * inv)
     except np.linalg.LinAlgError:
         bad = [float(x) for x, z in zip(w, Z, strict=True) if np.linalg.matrix_rank(z) < n]
         raise ValueError(

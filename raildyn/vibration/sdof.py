@@ -49,6 +49,11 @@ _RATE = 1e300
 # At most this many maxima, peaks or frequencies in one call: a bound on the memory asked for.
 _MAX_COUNT = 1_000_000
 
+# The largest phase ω_n h (rad) of one time step in forced_response: beyond it the rounding of h
+# alone (1e-16 of it) moves the phase by more than 1e-4 rad, and near 1e16 the one-step matrix
+# exponential stops being finite.
+_MAX_PHASE = 1e12
+
 
 def _check_rates(stiffness_rate: float, damping_rate: float, stiffness_names: str, damping_names: str):
     """Refuse an SDOF outside its domain (see ``_RATE``), naming the parameters that set each rate."""
@@ -792,11 +797,12 @@ class SDOF:
         Parameters
         ----------
         t : array_like, shape (n,)
-            Uniformly spaced, strictly increasing times, s.
+            Uniformly spaced, strictly increasing times, s, with a step h such that
+            ω_n h <= 1e12 rad (beyond, the rounding of h alone moves the phase of a step).
         force : array_like, shape (n,)
             F(t) in N at the times ``t``.
         x0, v0 : float
-            Initial displacement (m) and velocity (m/s) at t[0].
+            Initial displacement (m) and velocity (m/s) at t[0], any sign.
 
         Returns
         -------
@@ -821,6 +827,11 @@ class SDOF:
         if n == 1:
             return np.array([x0])
         h = (t[-1] - t[0]) / (n - 1)
+        if self.natural_frequency * h > _MAX_PHASE:
+            raise ValueError(
+                f"t must have a step h with omega_n h <= {_MAX_PHASE:g} rad; h = {h:.4g} s with omega_n = "
+                f"{self.natural_frequency:.4g} rad/s gives {self.natural_frequency * h:.4g}"
+            )
         tau = np.arange(n) * h
         p, q = self._foh_matrices(h)
         # With w = z − Q F the step becomes w₊ = Φ w + (Φ Q + P) F and x = [1 0] w + Q₀ F: a plain
