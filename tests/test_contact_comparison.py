@@ -63,3 +63,13 @@ def test_bad_input():
         lateral_creep_curves(ETA, N, 0.0, A, B)
     with pytest.raises(ValueError, match="label must be one of"):
         lateral_creep_curves(ETA, N, MU, A, B).normalised("Coulomb")
+    with pytest.raises(ValueError, match="lateral must not be empty"):
+        lateral_creep_curves([], N, MU, A, B)  # an empty sweep gave empty curves silently
+    curves = lateral_creep_curves(ETA, N, MU, A, B)
+    with pytest.raises(TypeError, match="label"):
+        curves.normalised(None)
+    with pytest.raises(TypeError, match="artists"):
+        curves.plot(artists="lines")
+    fields = {f.name: getattr(curves, f.name) for f in dataclasses.fields(curves)}
+    with pytest.raises(ValueError, match="polach"):
+        contact.LateralCreepCurves(**{**fields, "polach": curves.polach[:-1]})

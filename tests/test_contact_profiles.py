@@ -12,6 +12,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn.contact import (
+    RailProfile,
+    WheelProfile,
     conical_wheel,
     contact_angles,
     contact_geometry,
@@ -117,6 +119,49 @@ def test_bad_input():
         s1002_wheel(-0.46)
     with pytest.raises(ValueError, match="shifts"):
         contact_geometry(S1002, RAIL, [np.nan])
+
+
+def test_a_wheel_off_the_rail_is_refused_with_the_reason():
+    # Issue 15: a 100 mm shift gave a NaN roll angle, and then λ_e = 0.19 without a word.
+    with pytest.raises(ValueError, match=r"shifts must keep both wheels on their rails.*y = 0\.1 m"):
+        contact_geometry(S1002, RAIL, [0.1])
+    with pytest.raises(ValueError, match="amplitudes must keep both wheels on their rails"):
+        equivalent_conicity(S1002, RAIL, 0.1)
+    with pytest.raises(ValueError, match="gauge and tape_distance"):
+        contact_geometry(S1002, RAIL, [0.0], gauge=1.6)
+
+
+@given(st.floats(-0.08, 0.08))
+@PROPERTY
+def test_contact_geometry_never_returns_nan(y):
+    for wheel in (S1002, conical_wheel(1 / 20)):
+        try:
+            g = contact_geometry(wheel, RAIL, [y])
+        except ValueError as err:
+            assert "on their rails" in str(err)
+            continue
+        for field in (g.wheel_position, g.rail_position, g.rolling_radius, g.contact_angle, g.roll):
+            assert np.isfinite(field).all()
+
+
+def test_user_built_profiles_are_checked():
+    w = conical_wheel(1 / 20)
+    with pytest.raises(ValueError, match="lateral must be strictly increasing"):
+        WheelProfile("reversed", w.lateral[::-1], w.radius[::-1], 0.46)  # issue 15
+    with pytest.raises(ValueError, match="radius"):
+        WheelProfile("hollow", w.lateral, w.radius - 0.5, 0.46)
+    with pytest.raises(ValueError, match="slope"):
+        conical_wheel(10.0)  # issue 15: it built a negative radius at the field side
+    with pytest.raises(ValueError, match="u must lie within the profile"):
+        w.radius_at(1.0)
+    with pytest.raises(ValueError, match="gauge_face"):
+        RailProfile("rail", RAIL.lateral, RAIL.height, RAIL.inclination, -0.02)
+    with pytest.raises(ValueError, match="lateral must be uniformly spaced"):
+        RailProfile("rail", RAIL.lateral**3 / RAIL.lateral.max() ** 2, RAIL.height, 0.0, 0.02)
+    with pytest.raises(TypeError, match="wheel"):
+        contact_geometry(None, RAIL, [0.0])
+    with pytest.raises(ValueError, match="amplitudes must lie within the table"):
+        harmonic_conicity(np.linspace(0.0, 0.01, 11), np.zeros(11), 5e-3)  # Δr given for y ≥ 0 only
 
 
 def test_geometry_plots_draw_and_move_their_lines():

@@ -61,6 +61,8 @@ class LateralCreepCurves:
         Kalker's coefficients of the ellipse.
     kalker_linear, carter, johnson_vermeulen, shen_hedrick_elkins, polach, fastsim : ndarray, shape (n,)
         F_y of each law, N (the force of the rail on the wheel: negative for η > 0).
+
+    Every number is finite, and the curves are 1-D, non-empty and of the shape of ``lateral``.
     """
 
     lateral: np.ndarray
@@ -77,6 +79,20 @@ class LateralCreepCurves:
     polach: np.ndarray
     fastsim: np.ndarray
 
+    def __post_init__(self):
+        _checks.fields(self)
+        for name in ("spin", "normal_load", "friction", "a", "b"):
+            _checks.scalar(name, getattr(self, name))
+        _checks.instance("coefficients", self.coefficients, CreepCoefficients)
+        shape = np.shape(self.lateral)
+        if len(shape) != 1 or shape[0] == 0:
+            raise ValueError(f"lateral must be a non-empty 1-D array, got shape {shape}")
+        for name in ("kalker_linear", *CREEP_LAWS.values()):
+            if np.shape(getattr(self, name)) != shape:
+                raise ValueError(
+                    f"lateral and {name} must have one shape, got {shape} and {np.shape(getattr(self, name))}"
+                )
+
     def normalised(self, label: str) -> np.ndarray:
         """−F_y/(μN) of one law: 1 at full sliding.
 
@@ -90,8 +106,7 @@ class LateralCreepCurves:
         ndarray, shape (n,)
             Dimensionless.
         """
-        if label not in CREEP_LAWS:
-            raise ValueError(f"label must be one of {', '.join(map(repr, CREEP_LAWS))}; got {label!r}")
+        _checks.choice("label", label, CREEP_LAWS)
         return -getattr(self, CREEP_LAWS[label]) / (self.friction * self.normal_load)
 
     def plot(self, ax=None, *, artists=None) -> dict:
@@ -111,6 +126,7 @@ class LateralCreepCurves:
             One line per law, keyed by its label in :data:`CREEP_LAWS`.
         """
         if artists is not None:
+            _checks.instance("artists", artists, dict, "dict returned by an earlier plot")
             for label in CREEP_LAWS:
                 artists[label].set_ydata(self.normalised(label))
             return artists
@@ -156,7 +172,7 @@ def lateral_creep_curves(
     Parameters
     ----------
     lateral : array_like, shape (n,)
-        η, dimensionless, >= 0.
+        η, dimensionless, >= 0, at least one.
     normal_load : float
         N, N, > 0.
     friction : float
@@ -181,7 +197,7 @@ def lateral_creep_curves(
     >>> np.round(c.normalised("Shen–Hedrick–Elkins"), 3).tolist()
     [-0.0, 0.555, 0.854, 0.976, 1.0]
     """
-    eta = _checks.array("lateral", lateral, ndim=1, low=0.0)
+    eta = _checks.array("lateral", lateral, ndim=1, low=0.0, allow_empty=False)
     load = _checks.positive("normal_load", normal_load)
     mu = _checks.positive("friction", friction)
     a = _checks.positive("a", a)

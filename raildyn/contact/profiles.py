@@ -45,6 +45,32 @@ __all__ = [
 
 _MM = 1e-3
 _STEP = 0.05e-3  # m; sampling of the profiles and of the contact search, refined by a parabola
+_RADIUS_MAX = 2.0  # m; the largest railway wheels (steam locomotives' drivers) have a radius of ~1.1 m
+_WIDTH = (1e-3, 0.5)  # m; a tread is ~0.14 m wide; 0.5 m bounds the cone's grid at 10,000 samples
+_CANT_MAX = 0.1  # rail inclination (slope); in track 1:20 to 1:40, or upright
+_SAMPLES_MAX = (
+    65536  # quadrature points: the rectangle rule is long converged (spectrally, or 1/n² at a kink)
+)
+
+
+def _grid(name: str, value, *, uniform: bool = False) -> np.ndarray:
+    """A 1-D finite array of at least two strictly increasing positions (m); ``uniform``: equally spaced."""
+    u = _checks.array(name, value, ndim=1)
+    if u.size < 2:
+        raise ValueError(f"{name} must hold at least two positions, got {u.size}")
+    steps = np.diff(u)
+    if np.any(steps <= 0):
+        i = int(np.argmax(steps <= 0))
+        raise ValueError(
+            f"{name} must be strictly increasing; {name}[{i + 1}] = {u[i + 1]!r} "
+            f"follows {name}[{i}] = {u[i]!r}"
+        )
+    if uniform and np.ptp(steps) > 1e-6 * steps.mean():
+        raise ValueError(
+            f"{name} must be uniformly spaced (the contact search steps along it), "
+            f"got steps from {steps.min():.6g} to {steps.max():.6g} m"
+        )
+    return u
 
 
 @dataclass(frozen=True)
@@ -56,11 +82,12 @@ class WheelProfile:
     name : str
         What the profile is, for labels.
     lateral : ndarray
-        u (m), increasing, positive towards the flange.
+        u (m), strictly increasing (at least two samples), positive towards the flange.
     radius : ndarray
-        Rolling radius r(u) (m).
+        Rolling radius r(u) (m), one per ``lateral``, each in (0, 2] m (the largest railway
+        wheels have a radius of about 1.1 m).
     nominal_radius : float
-        r₀ = r(0) (m).
+        r₀ = r(0) (m), in (0, 2].
     """
 
     name: str
@@ -68,13 +95,25 @@ class WheelProfile:
     radius: np.ndarray
     nominal_radius: float
 
+    def __post_init__(self):
+        _checks.instance("name", self.name, str)
+        u = _grid("lateral", self.lateral)
+        r = _checks.array("radius", self.radius, shape=(u.size,), low=0.0, low_open=True)
+        if r.max() > _RADIUS_MAX:
+            raise ValueError(f"radius must be <= {_RADIUS_MAX} m (a railway wheel), got {r.max()!r}")
+        r0 = _checks.scalar("nominal_radius", self.nominal_radius, low=0.0, high=_RADIUS_MAX, low_open=True)
+        object.__setattr__(self, "lateral", u)
+        object.__setattr__(self, "radius", r)
+        object.__setattr__(self, "nominal_radius", r0)
+
     def radius_at(self, u):
         """Rolling radius r(u) by linear interpolation.
 
         Parameters
         ----------
         u : float or array_like
-            Lateral position on the wheel, m, positive towards the flange.
+            Lateral position on the wheel, m, positive towards the flange, within the
+            profile (``lateral[0]`` to ``lateral[-1]``).
 
         Returns
         -------
@@ -86,6 +125,12 @@ class WheelProfile:
         >>> round(float(conical_wheel(1 / 20).radius_at(3e-3)), 6)  # r₀ + λu
         0.46015
         """
+        u = _checks.array("u", u)
+        if u.size and (u.min() < self.lateral[0] or u.max() > self.lateral[-1]):
+            raise ValueError(
+                f"u must lie within the profile, [{self.lateral[0]:.6g}, {self.lateral[-1]:.6g}] m, "
+                f"got {u.min() if u.min() < self.lateral[0] else u.max()!r}"
+            )
         return np.interp(u, self.lateral, self.radius)
 
 
@@ -98,13 +143,15 @@ class RailProfile:
     name : str
         What the profile is, for labels.
     lateral : ndarray
-        u (m), increasing, positive towards the track centre (gauge side).
+        u (m), strictly increasing and uniformly spaced (the contact search steps along it),
+        positive towards the track centre (gauge side).
     height : ndarray
-        z(u) (m), 0 at the crown.
+        z(u) (m), one per ``lateral``, 0 at the crown (the highest point; all zeros is a flat head).
     inclination : float
-        Rail cant (rad), e.g. atan(1/40).
+        Rail cant (rad), e.g. atan(1/40), in [0, atan(1/10)] (in track 1:20 to 1:40, or upright).
     gauge_face : float
-        u of the gauge face 14 mm below the top (m), used to place the rails.
+        u of the gauge face 14 mm below the top (m), used to place the rails: on the gauge
+        side of the profile, 0 < u ≤ ``lateral[-1]``.
     """
 
     name: str
@@ -113,6 +160,21 @@ class RailProfile:
     inclination: float
     gauge_face: float
 
+    def __post_init__(self):
+        _checks.instance("name", self.name, str)
+        u = _grid("lateral", self.lateral, uniform=True)
+        z = _checks.array("height", self.height, shape=(u.size,))
+        if abs(z.max()) > 1e-6:
+            raise ValueError(
+                f"height must be 0 at the crown (its highest point), got a maximum of {z.max()!r} m"
+            )
+        cant = _checks.scalar("inclination", self.inclination, low=0.0, high=float(np.arctan(_CANT_MAX)))
+        face = _checks.scalar("gauge_face", self.gauge_face, low=0.0, high=float(u[-1]), low_open=True)
+        object.__setattr__(self, "lateral", u)
+        object.__setattr__(self, "height", z)
+        object.__setattr__(self, "inclination", cant)
+        object.__setattr__(self, "gauge_face", face)
+
 
 def conical_wheel(slope, nominal_radius=0.46, *, width=0.13) -> WheelProfile:
     """A conical tread r(u) = r₀ + λu with no flange (book ch. 4, the coned wheel).
@@ -120,11 +182,12 @@ def conical_wheel(slope, nominal_radius=0.46, *, width=0.13) -> WheelProfile:
     Parameters
     ----------
     slope : float
-        Conicity λ (e.g. 1/20 or 1/40), ≥ 0.
+        Conicity λ (e.g. 1/20 or 1/40), ≥ 0, with λ·width/2 < r₀ so that every radius is positive.
     nominal_radius : float
-        r₀ (m).
+        r₀ (m), in (0, 2].
     width : float, keyword
-        Lateral extent of the tread, centred on the tape circle (m).
+        Lateral extent of the tread, centred on the tape circle (m), from 1 mm to 0.5 m (a
+        tread is about 0.14 m wide).
 
     Returns
     -------
@@ -137,8 +200,13 @@ def conical_wheel(slope, nominal_radius=0.46, *, width=0.13) -> WheelProfile:
     'cone 1:40'
     """
     lam = _checks.nonnegative("slope", slope)
-    r0 = _checks.positive("nominal_radius", nominal_radius)
-    w = _checks.positive("width", width)
+    r0 = _checks.scalar("nominal_radius", nominal_radius, low=0.0, high=_RADIUS_MAX, low_open=True)
+    w = _checks.scalar("width", width, low=_WIDTH[0], high=_WIDTH[1])
+    if lam * w / 2 >= r0:
+        raise ValueError(
+            "slope * width / 2 must be < nominal_radius so that every radius is positive, got "
+            f"slope = {slope!r}, width = {width!r} m and nominal_radius = {nominal_radius!r} m"
+        )
     u = np.arange(-w / 2, w / 2 + _STEP / 2, _STEP)
     return WheelProfile(f"cone 1:{1 / lam:.0f}" if lam > 0 else "cylinder", u, r0 + lam * u, r0)
 
@@ -181,7 +249,7 @@ def s1002_wheel(nominal_radius=0.46) -> WheelProfile:
     Parameters
     ----------
     nominal_radius : float
-        r₀, the radius at the tape circle (m), > 0.
+        r₀, the radius at the tape circle (m), in (0.01, 2].
 
     Returns
     -------
@@ -193,7 +261,8 @@ def s1002_wheel(nominal_radius=0.46) -> WheelProfile:
     >>> round(float(1e3 * (w.radius.max() - w.nominal_radius)), 1)  # flange height, mm
     28.0
     """
-    r0 = _checks.positive("nominal_radius", nominal_radius)
+    # The tread falls 2.6 mm below the tape circle at its field-side end: 10 mm keeps every radius > 0.
+    r0 = _checks.scalar("nominal_radius", nominal_radius, low=0.01, high=_RADIUS_MAX, low_open=True)
     u = np.arange(-60.0 * _MM, 68.0 * _MM + _STEP / 2, _STEP)
     return WheelProfile("S1002", u, r0 + _s1002_height_mm(-u / _MM) * _MM, r0)
 
@@ -223,7 +292,8 @@ def uic60_rail(inclination=1 / 40) -> RailProfile:
     Parameters
     ----------
     inclination : float
-        The cant as a slope (e.g. 1/40 or 1/20), >= 0; 0 leaves the rail upright.
+        The cant as a slope (e.g. 1/40 or 1/20), in [0, 1/10]; 0 leaves the rail upright. Rails
+        in track are canted 1:20 to 1:40, or not at all.
 
     Returns
     -------
@@ -234,7 +304,7 @@ def uic60_rail(inclination=1 / 40) -> RailProfile:
     >>> uic60_rail(1 / 20).name
     '60E1 1:20'
     """
-    cant = np.arctan(_checks.nonnegative("inclination", inclination))
+    cant = np.arctan(_checks.scalar("inclination", inclination, low=0.0, high=_CANT_MAX))
     x = np.linspace(-36.5, 36.5, 7301)  # mm, the head and its 1:20 flanks
     z = _uic60_head_mm(x)
     keep = z > -25.0  # the running surface and the upper flanks
@@ -273,6 +343,8 @@ class ContactGeometry:
     roll : ndarray, shape (n,)
         Roll angle φ of the wheelset (rad), positive when the left wheel rises; zeros when the
         roll is left out.
+
+    Every number is finite; n ≥ 1.
     """
 
     shift: np.ndarray
@@ -281,6 +353,19 @@ class ContactGeometry:
     rolling_radius: np.ndarray
     contact_angle: np.ndarray
     roll: np.ndarray
+
+    def __post_init__(self):
+        _checks.fields(self)
+        n = np.shape(self.shift)
+        if len(n) != 1 or n[0] == 0:
+            raise ValueError(f"shift must be a non-empty 1-D array, got shape {n}")
+        for name in ("wheel_position", "rail_position", "rolling_radius", "contact_angle", "roll"):
+            want = n if name == "roll" else (2, *n)
+            if np.shape(getattr(self, name)) != want:
+                raise ValueError(
+                    f"shift and {name} must have shapes {n} and {want}, got {name} of shape "
+                    f"{np.shape(getattr(self, name))}"
+                )
 
     @property
     def rolling_radius_difference(self) -> np.ndarray:
@@ -298,19 +383,23 @@ class ContactGeometry:
         Parameters
         ----------
         amplitudes : float or array_like
-            A (m), > 0, within the shifts of this table.
+            A (m), > 0, within the shifts of this table (which must span ±A).
         samples : int, keyword
-            Points in θ of the quadrature.
+            Points in θ of the quadrature, 8 to 65536.
 
         Returns
         -------
         ndarray
             λ_e for each amplitude (dimensionless).
         """
-        return harmonic_conicity(self.shift, self.rolling_radius_difference, amplitudes, samples=samples)
+        order = np.argsort(self.shift)  # the table in the order of its shifts, whatever order they came in
+        return harmonic_conicity(
+            self.shift[order], self.rolling_radius_difference[order], amplitudes, samples=samples
+        )
 
     def _line(self, ax, artists, key, x, y, label, color, xlabel, ylabel):
         if artists is not None:
+            _checks.instance("artists", artists, dict, f"dict returned by an earlier plot_{key}")
             artists[key].set_ydata(y)
             return artists
         import matplotlib
@@ -377,7 +466,7 @@ class ContactGeometry:
 
         Parameters
         ----------
-        amplitudes : array_like
+        amplitudes : float or array_like
             A (m), > 0, within the shifts of this table.
         ax : matplotlib.axes.Axes, optional
             Where to draw; new axes on a new pyplot figure if None.
@@ -393,7 +482,7 @@ class ContactGeometry:
         dict
             ``{"equivalent_conicity": line}``.
         """
-        amp = np.atleast_1d(np.asarray(amplitudes, dtype=float))
+        amp = _amplitudes(amplitudes)
         return self._line(
             ax, artists, "equivalent_conicity", 1e3 * amp, self.equivalent_conicity(amp),
             label, color, "amplitude A (mm)", "equivalent conicity λ_e",
@@ -415,6 +504,37 @@ def _gap(wheel: WheelProfile, rail: RailProfile, shifts: np.ndarray, offset: flo
     return np.where(inside, z_w - rail.height[None, :], np.inf), u_w
 
 
+def _off_rail(gap: np.ndarray) -> np.ndarray:
+    """For each row (shift), whether its least gap fails to lie strictly inside both profiles.
+
+    A least gap at an end of the rail's profile, or next to where the wheel's profile ends, or no
+    overlap at all, means that the wheel hangs beyond the rail head: off the rail.
+    """
+    i = np.argmin(gap, axis=1)
+    j = np.clip(i, 1, gap.shape[1] - 2)
+    rows = np.arange(gap.shape[0])
+    inside = np.isfinite(gap[rows, j - 1]) & np.isfinite(gap[rows, j]) & np.isfinite(gap[rows, j + 1])
+    return (i != j) | ~inside
+
+
+def _on_rails(wheel, rail, y, offset, name, gap_l, gap_r) -> None:
+    """Refuse shifts that put a wheel off its rail, blaming ``name`` (or the track if even y = 0 does)."""
+    off = _off_rail(gap_l) | _off_rail(gap_r)
+    if not off.any():
+        return
+    if _off_rail(_gap(wheel, rail, np.zeros(1), offset)[0])[0]:
+        raise ValueError(
+            "gauge and tape_distance put the wheels off the rails even in the centred position: the tape "
+            f"circle lies {1e3 * offset:.4g} mm from the rail's centre line, and the contact would fall at "
+            f"an edge of the {wheel.name!r} wheel or the {rail.name!r} rail profile"
+        )
+    bad = y[off][np.argmin(np.abs(y[off]))]
+    raise ValueError(
+        f"{name} must keep both wheels on their rails: a lateral shift y = {bad:.6g} m puts the contact "
+        f"at an edge of the {wheel.name!r} wheel or the {rail.name!r} rail profile (off the rail head)"
+    )
+
+
 def _contact_on(gap: np.ndarray, wheel: WheelProfile, rail: RailProfile, shifts: np.ndarray, offset: float):
     """Contact at the least gap of each row, refined by a parabola through its neighbours."""
     u_r = rail.lateral
@@ -429,7 +549,7 @@ def _contact_on(gap: np.ndarray, wheel: WheelProfile, rail: RailProfile, shifts:
     ur = u_r[i] + frac * step
     uw = ur + shifts + offset
     slope = np.interp(ur, 0.5 * (u_r[1:] + u_r[:-1]), np.diff(rail.height) / step)
-    return uw, ur, wheel.radius_at(uw), -np.arctan(slope)
+    return uw, ur, np.interp(uw, wheel.lateral, wheel.radius), -np.arctan(slope)
 
 
 _ROLL_ITERATIONS = 8  # the fixed point contracts by about 2|u_w|/T ≈ 0.05 per step: 0.05⁸ ≈ 4e-11 of φ
@@ -457,11 +577,14 @@ def contact_geometry(
     rail : RailProfile
         The rail profile, the same on both sides.
     shifts : float or array_like
-        Lateral shifts y (m), positive to the left.
+        Lateral shifts y (m), positive to the left, 1-D, at least one. Each must keep both
+        wheels on their rails: a shift that puts a contact at an edge of the wheel's or
+        the rail's profile (a wheel off the rail head) is refused with that reason.
     gauge : float, keyword
-        Track gauge, between the gauge points 14 mm below the top (m); 1.435.
+        Track gauge, between the gauge points 14 mm below the top (m), > 0; 1.435.
     tape_distance : float, keyword
-        Distance between the tape circles of the wheelset (m); 1.5 for standard gauge.
+        Distance between the tape circles of the wheelset (m), > 0; 1.5 for standard gauge.
+        With ``gauge`` it must put the centred wheelset's wheels on the rails.
     roll : bool, keyword
         Include the wheelset roll angle (default True).
 
@@ -478,12 +601,23 @@ def contact_geometry(
     >>> np.round(g.rolling_radius_difference * 1e3, 6).tolist()  # mm
     [0.0, 0.2]
     """
-    y = np.atleast_1d(_checks.array("shifts", shifts)).astype(float)
+    y = np.atleast_1d(_checks.array("shifts", shifts, allow_empty=False))
+    if y.ndim != 1:
+        raise ValueError(f"shifts must be a number or a 1-D array, got shape {y.shape}")
+    return _geometry(wheel, rail, y, "shifts", gauge=gauge, tape_distance=tape_distance, roll=roll)
+
+
+def _geometry(wheel, rail, y, name, *, gauge=1.435, tape_distance=1.5, roll=True) -> ContactGeometry:
+    """:func:`contact_geometry` for checked shifts ``y``; a wheel off its rail is blamed on ``name``."""
+    _checks.instance("wheel", wheel, WheelProfile)
+    _checks.instance("rail", rail, RailProfile)
     g = _checks.positive("gauge", gauge)
     t = _checks.positive("tape_distance", tape_distance)
+    roll = _checks.flag("roll", roll)
     d = _offset(rail, g, t)
     gap_l, u_l = _gap(wheel, rail, y, d)
     gap_r, u_r = _gap(wheel, rail, -y, d)
+    _on_rails(wheel, rail, y, d, name, gap_l, gap_r)
     phi = np.zeros_like(y)
     if roll:
         # A roll φ (left side up) lifts a left-wheel point at u_w by φ(T/2 − u_w) and lowers a
@@ -492,8 +626,10 @@ def contact_geometry(
             e_l = -np.min(gap_l - phi[:, None] * u_l, axis=1)
             e_r = -np.min(gap_r + phi[:, None] * u_r, axis=1)
             phi = (e_l - e_r) / t
-    left = _contact_on(gap_l - phi[:, None] * u_l, wheel, rail, y, d)
-    right = _contact_on(gap_r + phi[:, None] * u_r, wheel, rail, -y, d)
+    gap_l, gap_r = gap_l - phi[:, None] * u_l, gap_r + phi[:, None] * u_r
+    _on_rails(wheel, rail, y, d, name, gap_l, gap_r)  # the roll may carry a contact to an edge
+    left = _contact_on(gap_l, wheel, rail, y, d)
+    right = _contact_on(gap_r, wheel, rail, -y, d)
     wheel_pos, rail_pos, radius, angle = (np.stack([lv, rv]) for lv, rv in zip(left, right, strict=True))
     return ContactGeometry(y, wheel_pos, rail_pos, radius, angle, phi)
 
@@ -563,10 +699,10 @@ def equivalent_conicity(
     rail : RailProfile
         The rail profile (both sides).
     amplitudes : float or array_like
-        A (m), > 0.
+        A (m), > 0, 1-D; the wheelset must stay on the rails over ±max(A).
     samples : int, keyword
         Points in θ of the quadrature (the rectangle rule, spectrally accurate
-        for a periodic integrand apart from the kinks of flange contact).
+        for a periodic integrand apart from the kinks of flange contact), 8 to 65536.
     **kwargs
         ``gauge``, ``tape_distance``, ``roll`` as :func:`contact_geometry`.
 
@@ -580,10 +716,19 @@ def equivalent_conicity(
     >>> round(float(equivalent_conicity(conical_wheel(1 / 20), uic60_rail(1 / 40), 3e-3, roll=False)[0]), 9)
     0.05
     """
-    amp = np.atleast_1d(_checks.array("amplitudes", amplitudes, low=0.0, low_open=True))
+    amp = _amplitudes(amplitudes)
+    _checks.integer("samples", samples, low=8, high=_SAMPLES_MAX)
     table_y = np.linspace(-amp.max(), amp.max(), 801)
-    dr = rolling_radius_difference(wheel, rail, table_y, **kwargs)
+    dr = _geometry(wheel, rail, table_y, "amplitudes", **kwargs).rolling_radius_difference
     return harmonic_conicity(table_y, dr, amp, samples=samples)
+
+
+def _amplitudes(amplitudes) -> np.ndarray:
+    """Amplitudes A (m) as a non-empty 1-D array, each > 0."""
+    amp = np.atleast_1d(_checks.array("amplitudes", amplitudes, low=0.0, low_open=True, allow_empty=False))
+    if amp.ndim != 1:
+        raise ValueError(f"amplitudes must be a number or a 1-D array, got shape {amp.shape}")
+    return amp
 
 
 def harmonic_conicity(shifts, delta_r, amplitudes, *, samples: int = 256) -> np.ndarray:
@@ -593,13 +738,13 @@ def harmonic_conicity(shifts, delta_r, amplitudes, *, samples: int = 256) -> np.
     Parameters
     ----------
     shifts : array_like
-        y (m), increasing.
+        y (m), strictly increasing, at least two.
     delta_r : array_like
-        Δr(y) (m), same length.
+        Δr(y) (m), same length, any sign.
     amplitudes : float or array_like
-        A (m), > 0, within the table.
+        A (m), > 0, 1-D, within the table: the shifts must span ±max(A).
     samples : int, keyword
-        Points in θ of the quadrature.
+        Points in θ of the quadrature, 8 to 65536.
 
     Returns
     -------
@@ -612,12 +757,16 @@ def harmonic_conicity(shifts, delta_r, amplitudes, *, samples: int = 256) -> np.
     >>> np.round(harmonic_conicity(y, 2 * 0.05 * y, [2e-3, 5e-3]), 12).tolist()  # a cone: λ
     [0.05, 0.05]
     """
-    y = _checks.array("shifts", shifts, ndim=1)
+    y = _grid("shifts", shifts)
     dr = _checks.array("delta_r", delta_r, shape=(y.size,))
-    amp = np.atleast_1d(_checks.array("amplitudes", amplitudes, low=0.0, low_open=True))
-    if amp.max() > max(-y[0], y[-1]) * (1 + 1e-12):
-        raise ValueError(f"amplitudes must lie within the table of shifts (±{max(-y[0], y[-1]):.4g} m)")
-    n = _checks.integer("samples", samples, low=8)
+    amp = _amplitudes(amplitudes)
+    reach = min(-y[0], y[-1])
+    if amp.max() > reach * (1 + 1e-12):
+        raise ValueError(
+            f"amplitudes must lie within the table of shifts, which spans ±{max(reach, 0.0):.4g} m "
+            f"(from {y[0]:.4g} to {y[-1]:.4g} m), got {amp.max()!r}"
+        )
+    n = _checks.integer("samples", samples, low=8, high=_SAMPLES_MAX)
     theta = 2 * np.pi * np.arange(n) / n
     values = np.interp(amp[:, None] * np.sin(theta)[None, :], y, dr)
     return (values * np.sin(theta)).mean(axis=1) / amp
