@@ -305,11 +305,11 @@ def carter_coefficient(normal_load, wheel_radius, semi_axis):
     Parameters
     ----------
     normal_load : float
-        N (N).
+        N (N), > 0.
     wheel_radius : float
-        R (m).
+        R (m), > 0.
     semi_axis : float
-        Half-length a of the contact strip in the rolling direction (m).
+        Half-length a of the contact strip in the rolling direction (m), > 0.
 
     Returns
     -------
@@ -531,7 +531,7 @@ def polach(
     friction : float
         μ > 0.
     a, b : float
-        Semi-axes of the contact ellipse (m).
+        Semi-axes of the contact ellipse (m), > 0, with 0.1 ≤ a/b ≤ 10 (Kalker's table).
     shear_modulus, poisson_ratio : float
         G (Pa) and ν for Kalker's coefficients; the steel of :mod:`raildyn.constants` by default.
     k_a, k_s : float, keyword
@@ -691,7 +691,7 @@ def polach_adhesion(
     speed : float
         Rolling speed V (m/s), > 0.
     a, b : float
-        Semi-axes of the contact ellipse (m).
+        Semi-axes of the contact ellipse (m), > 0, with 0.1 ≤ a/b ≤ 10 (Kalker's table).
     conditions : PolachAdhesion
         :data:`POLACH_DRY` (default) or :data:`POLACH_WET`, or your own.
     shear_modulus, poisson_ratio : float
@@ -792,11 +792,11 @@ def wheelset_creepages(
     lateral_velocity, yaw_angle, yaw_rate : float or array_like
         ẏ (m/s), ψ (rad), ψ̇ (rad/s).
     rolling_radius_left, rolling_radius_right : float or array_like
-        r_L, r_R at the current contacts (m), e.g. r₀ ± Δr(y)/2.
+        r_L, r_R at the current contacts (m), > 0, e.g. r₀ ± Δr(y)/2.
     nominal_radius : float
-        r₀ (m).
+        r₀ (m), > 0.
     half_gauge : float
-        l (m), half the lateral distance between the contact points.
+        l (m), half the lateral distance between the contact points, > 0.
     contact_angle_left, contact_angle_right : float or array_like
         δ_L, δ_R (rad).
     check : bool

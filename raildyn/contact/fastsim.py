@@ -300,7 +300,7 @@ def fastsim(
     friction : float or array_like
         μ > 0.
     a, b : float or array_like
-        Semi-axes (m): a in the rolling direction; 0.1 ≤ a/b ≤ 10.
+        Semi-axes (m), > 0: a in the rolling direction; 0.1 ≤ a/b ≤ 10.
     shear_modulus : float
         G (Pa); :data:`raildyn.constants.STEEL_SHEAR_MODULUS` by default.
     poisson_ratio : float
