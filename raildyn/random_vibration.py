@@ -53,7 +53,7 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -86,6 +86,21 @@ _TIME_UNITS = ("rad/s", "Hz")
 _SPACE_UNITS = ("rad/m", "cycles/m")
 _CYCLIC_UNITS = ("Hz", "cycles/m")
 
+# At most this many frequencies from cancellation_frequencies: a bound on the memory asked for.
+_MAX_COUNT = 1_000_000
+# At most this many points in one synthesized record, and in all the records of one call: the FFT
+# of 2**24 points takes about a second and the 2**26 values about 0.5 GB; longer records are built
+# in pieces.
+_MAX_RECORD = 2**24
+_MAX_VALUES = 2**26
+
+
+def _finite(value, names: str, what: str):
+    """``value`` itself, unless it overflowed (computed under ``np.errstate(over="ignore")``)."""
+    if not np.all(np.isfinite(value)):
+        raise ValueError(f"{names} give {what} beyond floating point range; rescale them")
+    return value
+
 
 # --------------------------------------------------------------------------- results
 
@@ -97,13 +112,22 @@ class Spectrum:
     Attributes
     ----------
     omega : ndarray, shape (n,)
-        Circular frequencies, rad/s (or wavenumbers, rad/m, for a spectrum in space).
+        Circular frequencies, rad/s (or wavenumbers, rad/m, for a spectrum in space), >= 0
+        and strictly increasing.
     psd : ndarray, shape (..., n)
-        One-sided PSD per rad/s (per rad/m); several records give several rows.
+        One-sided PSD per rad/s (per rad/m), >= 0; several records give several rows.
     """
 
     omega: np.ndarray
     psd: np.ndarray
+
+    def __post_init__(self):
+        w = _checks.increasing("omega", self.omega, low=0.0)
+        S = _checks.array("psd", self.psd, low=0.0)
+        if S.ndim == 0 or S.shape[-1] != w.size:
+            raise ValueError(f"psd must have shape (..., {w.size}) to match omega, got {S.shape}")
+        object.__setattr__(self, "omega", w)
+        object.__setattr__(self, "psd", S)
 
     @property
     def mean_square(self) -> float | np.ndarray:
@@ -123,17 +147,23 @@ class SpectralLines:
 
     Attributes
     ----------
-    omega : ndarray
-        Line frequencies kept, rad/s.
-    psd : ndarray
-        One-sided PSD at those frequencies, per rad/s.
+    omega : ndarray, shape (k,)
+        Line frequencies kept, rad/s, > 0 and strictly increasing.
+    psd : ndarray, shape (k,)
+        One-sided PSD at those frequencies, per rad/s, >= 0.
     d_omega : float
-        Line spacing Δω = 2π/(n·dt), rad/s.
+        Line spacing Δω = 2π/(n·dt), rad/s, > 0.
     """
 
     omega: np.ndarray
     psd: np.ndarray
     d_omega: float
+
+    def __post_init__(self):
+        w = _checks.increasing("omega", self.omega, low=0.0, low_open=True)
+        object.__setattr__(self, "omega", w)
+        object.__setattr__(self, "psd", _checks.array("psd", self.psd, shape=w.shape, low=0.0))
+        object.__setattr__(self, "d_omega", _checks.positive("d_omega", self.d_omega))
 
     @property
     def mean_square(self) -> float:
@@ -142,12 +172,6 @@ class SpectralLines:
 
 
 # --------------------------------------------------------------------------- conventions
-
-
-def _choice(name: str, value, allowed: Sequence[str]) -> str:
-    if not isinstance(value, str) or value not in allowed:
-        raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}; got {value!r}")
-    return value
 
 
 def convert_psd(values, *, from_sided, from_unit, to_sided="one", to_unit="rad/s") -> np.ndarray:
@@ -161,7 +185,7 @@ def convert_psd(values, *, from_sided, from_unit, to_sided="one", to_unit="rad/s
     Parameters
     ----------
     values : array_like
-        PSD values, >= 0, in (quantity)² per unit of ``from_unit``.
+        PSD values, >= 0, in (quantity)² per unit of ``from_unit``; any shape, not empty.
     from_sided, to_sided : {"one", "two"}
         One-sided (on ω >= 0) or two-sided (on −∞ < ω < ∞, even in ω).
     from_unit, to_unit : {"rad/s", "Hz", "rad/m", "cycles/m"}
@@ -182,17 +206,17 @@ def convert_psd(values, *, from_sided, from_unit, to_sided="one", to_unit="rad/s
     >>> float(convert_psd(1.0, from_sided="two", from_unit="rad/s", to_unit="Hz")) / np.pi
     4.0
     """
-    from_sided = _choice("from_sided", from_sided, _SIDED)
-    to_sided = _choice("to_sided", to_sided, _SIDED)
-    from_unit = _choice("from_unit", from_unit, _TIME_UNITS + _SPACE_UNITS)
-    to_unit = _choice("to_unit", to_unit, _TIME_UNITS + _SPACE_UNITS)
+    from_sided = _checks.choice("from_sided", from_sided, _SIDED)
+    to_sided = _checks.choice("to_sided", to_sided, _SIDED)
+    from_unit = _checks.choice("from_unit", from_unit, _TIME_UNITS + _SPACE_UNITS)
+    to_unit = _checks.choice("to_unit", to_unit, _TIME_UNITS + _SPACE_UNITS)
     if (from_unit in _TIME_UNITS) != (to_unit in _TIME_UNITS):
         raise ValueError(
             f"from_unit {from_unit!r} and to_unit {to_unit!r} must both be time units "
             f"{_TIME_UNITS} or both space units {_SPACE_UNITS}; converting between time and "
             "space needs a speed (S_t(ω) = S(Ω)/V at ω = VΩ)"
         )
-    arr = _checks.array("values", values, low=0.0)
+    arr = _checks.array("values", values, low=0.0, allow_empty=False)
     factor = 1.0
     # to the raildyn form: one-sided, per radian
     if from_sided == "two":
@@ -240,15 +264,16 @@ def response_psd(frf, input_psd) -> np.ndarray:
     >>> response_psd(h, s).tolist()
     [3.0, 4.0]
     """
-    H = _checks.array("frf", frf, dtype=complex)
-    raw = np.asarray(input_psd)
+    H = _checks.array("frf", frf, dtype=complex, allow_empty=False)
+    raw = _checks.array("input_psd", input_psd, dtype=complex)
     allowed = "allowed: frf (n,) with input_psd (n,); frf (n, q) or (n, p, q) with input_psd (n, q, q)"
     mismatch = ValueError(f"frf shape {H.shape} does not match input_psd shape {raw.shape}; {allowed}")
     if H.ndim == 1:
         if raw.ndim != 1 or raw.shape != H.shape:
             raise mismatch
-        S = _checks.array("input_psd", input_psd, low=0.0)
-        return np.abs(H) ** 2 * S
+        S = _checks.array("input_psd", raw.real, low=0.0)
+        with np.errstate(over="ignore", invalid="ignore"):
+            return _finite(np.abs(H) ** 2 * S, "frf and input_psd", "a response PSD")
     if H.ndim not in (2, 3) or raw.ndim != 3:
         raise mismatch
     n, q = H.shape[0], H.shape[-1]
@@ -261,11 +286,14 @@ def response_psd(frf, input_psd) -> np.ndarray:
         raise ValueError(
             f"input_psd must have auto-spectra (diagonal) >= 0, got input_psd[{i}, {j}, {j}] = {diag[i, j]!r}"
         )
-    if H.ndim == 2:
-        # single output: y = Σ_j H_j x_j, so S_y = Σ_jk H_j S_jk conj(H_k), real by Hermitian symmetry
-        return np.einsum("ij,ijk,ik->i", H, S, np.conj(H)).real
-    Sy = H @ S @ np.conj(np.swapaxes(H, -1, -2))
-    return 0.5 * (Sy + np.conj(np.swapaxes(Sy, -1, -2)))
+    with np.errstate(over="ignore", invalid="ignore"):
+        if H.ndim == 2:
+            # single output: y = Σ_j H_j x_j, so S_y = Σ_jk H_j S_jk conj(H_k), real by Hermitian symmetry
+            Sy = np.einsum("ij,ijk,ik->i", H, S, np.conj(H)).real
+        else:
+            Sy = H @ S @ np.conj(np.swapaxes(H, -1, -2))
+            Sy = 0.5 * (Sy + np.conj(np.swapaxes(Sy, -1, -2)))
+    return _finite(Sy, "frf and input_psd", "a response PSD")
 
 
 def delayed_input_csd(psd, omega, delays) -> np.ndarray:
@@ -369,7 +397,7 @@ def cancellation_frequencies(delay, count: int) -> np.ndarray:
     delay : float
         τ, s, > 0.
     count : int
-        Number of frequencies, >= 1.
+        Number of frequencies, from 1 to 1_000_000 (a bound on the memory asked for).
 
     Returns
     -------
@@ -382,7 +410,7 @@ def cancellation_frequencies(delay, count: int) -> np.ndarray:
     [1.0, 3.0, 5.0]
     """
     tau = _checks.positive("delay", delay)
-    n = _checks.integer("count", count, low=1)
+    n = _checks.integer("count", count, low=1, high=_MAX_COUNT)
     return (2 * np.arange(n) + 1) * np.pi / tau
 
 
@@ -434,7 +462,8 @@ def mean_square(psd, omega) -> float:
     6.0
     """
     S, w = _spectrum_grid(psd, omega, min_points=2)
-    return float(np.trapezoid(S, w))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return float(_finite(np.trapezoid(S, w), "psd and omega", "a mean square"))
 
 
 def rms(psd, omega) -> float:
@@ -471,7 +500,7 @@ def spectral_moments(psd, omega, orders=(0, 2, 4)) -> np.ndarray:
     psd, omega : array_like, shape (n,)
         As for :func:`mean_square`.
     orders : sequence of float
-        Orders k >= 0.
+        Orders k >= 0, at least one.
 
     Returns
     -------
@@ -484,15 +513,10 @@ def spectral_moments(psd, omega, orders=(0, 2, 4)) -> np.ndarray:
     array([1. , 0.5])
     """
     S, w = _spectrum_grid(psd, omega, min_points=2)
-    if isinstance(orders, np.ndarray) and orders.ndim == 1:
-        orders = orders.tolist()
-    if isinstance(orders, (str, bytes)) or not isinstance(orders, Sequence):
-        raise TypeError(f"orders must be a sequence of numbers >= 0, got {orders!r}")
-    out = np.empty(len(orders))
-    for i, k in enumerate(orders):
-        kk = _checks.nonnegative("orders", k)
-        out[i] = np.trapezoid(w**kk * S, w)
-    return out
+    k = _checks.array("orders", orders, ndim=1, low=0.0, allow_empty=False)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.trapezoid(w ** k[:, None] * S, w, axis=-1)
+    return _finite(out, "orders, omega and psd", "spectral moments")
 
 
 def zero_upcrossing_rate(psd, omega) -> float:
@@ -621,10 +645,11 @@ def sdof_white_noise_mean_square(mass, damping, stiffness, psd_level, sided="one
     c = _checks.positive("damping", damping)
     k = _checks.positive("stiffness", stiffness)
     level = _checks.nonnegative("psd_level", psd_level)
-    sided = _choice("sided", sided, _SIDED)
-    if sided == "two":
-        return float(np.pi * level / (k * c))
-    return float(np.pi * level / (2.0 * k * c))
+    sided = _checks.choice("sided", sided, _SIDED)
+    two = 1.0 if sided == "two" else 2.0
+    with np.errstate(over="ignore"):
+        return float(_finite(np.pi * np.float64(level) / (two * k) / c, "psd_level, stiffness and damping",
+                             "a mean square"))  # fmt: skip
 
 
 # --------------------------------------------------------------------------- sample functions
@@ -640,15 +665,10 @@ def _line_grid(dt: float, n: int) -> tuple[np.ndarray, float]:
 def _evaluate_psd(psd, w: np.ndarray) -> np.ndarray:
     """One-sided PSD values at the line frequencies w, from a callable or an (omega, values) pair."""
     if callable(psd):
-        raw = np.asarray(psd(w), dtype=float)
-        try:
-            values = np.broadcast_to(raw, w.shape)
-        except ValueError:
-            raise ValueError(
-                f"psd(omega) must return an array of the shape of omega {w.shape} (or a scalar), "
-                f"got shape {raw.shape}"
-            ) from None
-        return _checks.array("psd(omega)", values, low=0.0)
+        raw = psd(w)
+        at = f"the {w.size} synthesis frequencies"
+        values = _checks.returned("psd", raw, shape=w.shape if np.ndim(raw) else (), low=0.0, at=at)
+        return np.broadcast_to(values, w.shape)
     if isinstance(psd, (tuple, list)) and len(psd) == 2:
         S, grid = _spectrum_grid(psd[1], psd[0], min_points=2)
         return np.interp(w, grid, S, left=0.0, right=0.0)
@@ -696,7 +716,7 @@ def synthesis_lines(psd, dt, n, *, band=None) -> SpectralLines:
     dt : float
         Time step, s, > 0.
     n : int
-        Number of time points, >= 4.
+        Number of time points, from 4 to 2**24, as for :func:`synthesize`.
     band : (omega_lo, omega_hi), optional
         Lines kept, rad/s, as for :func:`synthesize`.
 
@@ -712,7 +732,7 @@ def synthesis_lines(psd, dt, n, *, band=None) -> SpectralLines:
     ([78.54, 157.08, 235.619], 78.54)
     """
     dt = _checks.positive("dt", dt)
-    n = _checks.integer("n", n, low=4)
+    n = _checks.integer("n", n, low=4, high=_MAX_RECORD)
     w, d_omega = _line_grid(dt, n)
     mask = _band_mask(band, w, dt)
     S = _evaluate_psd(psd, w)
@@ -747,16 +767,19 @@ def synthesize(
     ----------
     psd : callable or (omega_grid, values)
         One-sided PSD per rad/s: a callable S(omega) taking an array of circular
-        frequencies (a scalar result means a flat spectrum), or a pair of arrays
-        interpolated linearly and taken as zero outside the grid.
+        frequencies and returning finite values >= 0 of its shape (a scalar result
+        means a flat spectrum), or a pair of arrays interpolated linearly and taken
+        as zero outside the grid.
     dt : float
         Time step, s, > 0 (the Nyquist frequency is π/dt rad/s).
     n : int
-        Number of time points, >= 4.
+        Number of time points, from 4 to 2**24 (a longer record is built in pieces:
+        one FFT of 2**24 points already takes about a second).
     rng : numpy.random.Generator, int or None
         Source of the phases; the same seed gives the same samples.
     n_samples : int
-        Number of independent sample functions, >= 1.
+        Number of independent sample functions, >= 1, with n_samples·n <= 2**26
+        (the samples then take at most 0.5 GB).
     band : (omega_lo, omega_hi), optional
         Keep only lines with omega_lo <= ω_k <= omega_hi, rad/s; needs
         0 <= omega_lo < omega_hi <= π/dt. The phases drawn do not depend on
@@ -778,7 +801,11 @@ def synthesize(
     generator = _checks.generator(rng)
     n_samples = _checks.integer("n_samples", n_samples, low=1)
     dt = _checks.positive("dt", dt)
-    n = _checks.integer("n", n, low=4)
+    n = _checks.integer("n", n, low=4, high=_MAX_RECORD)
+    if n_samples * n > _MAX_VALUES:
+        raise ValueError(
+            f"n_samples * n must be at most 2**26 = {_MAX_VALUES} values (0.5 GB), got {n_samples} * {n}"
+        )
     w, d_omega = _line_grid(dt, n)
     mask = _band_mask(band, w, dt)
     S = _evaluate_psd(psd, w) * mask
@@ -804,7 +831,7 @@ def welch_psd(x, dt, nperseg=None) -> Spectrum:
     Parameters
     ----------
     x : array_like
-        Record(s) sampled every ``dt``: shape ``(n,)``, or ``(m, n)`` for m
+        Record(s) sampled every ``dt``, finite: shape ``(n,)``, or ``(m, n)`` for m
         records estimated separately.
     dt : float
         Sampling interval, s, > 0.
@@ -835,5 +862,6 @@ def welch_psd(x, dt, nperseg=None) -> Spectrum:
     if n < 4:
         raise ValueError(f"x must hold at least 4 samples per record, got {n}")
     nperseg = min(256, n) if nperseg is None else _checks.integer("nperseg", nperseg, low=4, high=n)
-    f, p_hz = scipy.signal.welch(arr, fs=1.0 / dt, nperseg=nperseg, axis=-1)
-    return Spectrum(omega=2.0 * np.pi * f, psd=p_hz / (2.0 * np.pi))
+    with np.errstate(over="ignore", invalid="ignore"):
+        f, p_hz = scipy.signal.welch(arr, fs=1.0 / dt, nperseg=nperseg, axis=-1)
+    return Spectrum(omega=2.0 * np.pi * f, psd=_finite(p_hz, "x and dt", "a PSD") / (2.0 * np.pi))

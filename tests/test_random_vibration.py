@@ -454,8 +454,11 @@ def flat(w):
         ({"n": 3}, "n must be an integer in"),
         ({"n_samples": 0}, "n_samples must be an integer in"),
         ({"rng": -1}, "rng must be"),
-        ({"psd": lambda w: -w}, r"psd\(omega\) must be >= 0"),
-        ({"psd": lambda w: np.ones(3)}, r"psd\(omega\) must return an array of the shape of omega"),
+        ({"psd": lambda w: -w}, r"psd must return values >= 0"),
+        ({"psd": lambda w: np.ones(3)}, r"psd must return an array of shape"),
+        ({"psd": lambda w: np.full(w.shape, np.nan)}, r"psd returned a non-finite value"),
+        ({"n": 2**30}, "n must be an integer in"),  # a bound on memory, not a hang or a MemoryError
+        ({"n_samples": 10**12}, r"n_samples \* n must be at most"),
         ({"psd": (np.array([0.0, 5.0, 1.0]), np.ones(3))}, "omega must be strictly increasing"),
     ],
 )
@@ -533,3 +536,27 @@ def test_mean_of_two_delayed_inputs_vanishes_at_the_cancellation_frequencies():
         rv.cancellation_frequencies(0.1, 0)
     with pytest.raises(ValueError, match="delays must hold at least one"):
         rv.delayed_mean_psd([1.0], [1.0], [])
+
+
+def test_huge_inputs_are_refused_rather_than_overflowing_silently():
+    # issue 15: 1e300 must not come back as inf or NaN
+    w = np.array([0.0, 1.0, 2.0])
+    with pytest.raises(ValueError, match="orders"):
+        rv.spectral_moments(np.ones(3), w * 10.0, orders=(1e300,))
+    with pytest.raises(ValueError, match="frf"):
+        rv.response_psd(np.array([1e300, 1.0, 1.0]), np.ones(3))
+    with pytest.raises(ValueError, match="x and dt"):
+        rv.welch_psd(np.r_[1e300, np.zeros(63)], 0.01, nperseg=32)
+    with pytest.raises(ValueError, match="count"):
+        rv.cancellation_frequencies(0.1, 10**12)
+
+
+def test_results_refuse_what_no_spectrum_holds():
+    with pytest.raises(ValueError, match="psd"):
+        rv.Spectrum(np.array([0.0, 1.0]), np.array([1.0, -1.0]))
+    with pytest.raises(ValueError, match="omega must be strictly increasing"):
+        rv.Spectrum(np.array([1.0, 0.0]), np.ones(2))
+    with pytest.raises(ValueError, match="d_omega"):
+        rv.SpectralLines(np.array([1.0, 2.0]), np.ones(2), 0.0)
+    with pytest.raises(TypeError, match="from_unit"):
+        rv.convert_psd(1.0, from_sided="one", from_unit=2.0)
