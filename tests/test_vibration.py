@@ -705,6 +705,20 @@ BAD = {
     "output name": (lambda: vib.state_space(M2, np.zeros((2, 2)), K2, np.ones(2), output="force"), "output"),
     "frf negative omega": (lambda: vib.frf_matrix(M2, np.zeros((2, 2)), K2, [-1.0]), "omega"),
     "frf at resonance": (lambda: vib.frf_matrix([[1.0]], [[0.0]], [[4.0]], [1.0, 2.0]), "singular at omega"),
+    # issue 15: domains stated and refused by name, never an overflow, a MemoryError or a silent inf
+    "huge natural frequency": (lambda: SDOF.from_modal(1e300, 0.1), "natural_frequency"),
+    "huge damping ratio": (lambda: SDOF.from_modal(10.0, 1e300), "damping_ratio"),
+    "rate k/m overflows": (lambda: SDOF(1e-10, 0.0, 1e300), "stiffness and mass"),
+    "a million peaks": (lambda: SDOF.from_modal(1.0, 0.1).decay_peaks(1.0, 0.0, count=10**12), "count"),
+    "empty times": (lambda: SDOF(1.0, 0.1, 1.0).free_response([], 1.0, 0.0), "t must not be empty"),
+    "decrement of ξ >= 1": (lambda: vib.log_decrement([0.5, 1.0]), "damping_ratio must be < 1"),
+    "ξ against r": (lambda: vib.magnification_factor([0.5, 1.0, 2.0], [0.1, 0.2]), "damping_ratio"),
+    "damped rigid-body mode": (
+        lambda: vib.modal_damping_ratios(M2, np.eye(2), np.zeros((2, 2))),
+        "rigid-body",
+    ),
+    "step too long": (lambda: SDOF.from_modal(1e14, 0.1).forced_response(T, np.zeros(11)), "omega_n h"),
+    "uniform chain too long": (lambda: vib.uniform_chain_frequencies(10**12, 1.0, 1.0), "count"),
 }
 
 
@@ -720,6 +734,32 @@ def test_non_numbers_raise_type_error():
         SDOF("heavy", 0.0, 1.0)
     with pytest.raises(TypeError, match="grounded"):
         vib.chain_matrices([1.0], [1.0], grounded="yes")
+
+
+def test_heavily_overdamped_free_response_stays_finite():
+    # issue 15: ξ = 1e200 gave NaN at t = 0; the mass now creeps back at the slow root −ω_n/(2ξ)
+    s = SDOF.from_modal(1.0, 1e200)
+    assert s.free_response([0.0, 0.5], 0.01, 0.0).tolist() == [0.01, 0.01]
+    assert np.isfinite(s.free_velocity([0.0, 0.5], 0.01, 0.0)).all()
+    assert s.roots() == pytest.approx([-0.5e-200, -2e200], rel=1e-15)
+    # and a huge ω or r gives a receptance or a ratio that tends to zero, not NaN
+    assert SDOF.from_modal(10.0, 0.05).receptance([1e300])[0] == 0.0
+    assert vib.magnification_factor(1e300, 1e300) == 0.0
+    assert np.all(vib.frf_matrix(M2, np.eye(2), K2, [1e300]) == 0.0)
+
+
+def test_plot_helpers_and_solver_error_refuse_bad_arguments_by_name():
+    from raildyn import plots
+    from raildyn.errors import SolverError
+
+    with pytest.raises(TypeError, match=r"\bax\b"):
+        plots.axes_or_new("abc")
+    with pytest.raises(ValueError, match="t must be strictly increasing"):
+        plots.time_history(T[::-1], T)
+    with pytest.raises(TypeError, match="time"):
+        SolverError("diverged", time="abc")
+    with pytest.raises(ValueError, match="step"):
+        SolverError("diverged", step=-1)
 
 
 def test_error_message_states_the_value_and_the_allowed_range():
