@@ -23,7 +23,7 @@ to x = ±10.228 mm, R80 to ±26.027 mm, R13, then a 1:20 flank).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -366,6 +366,8 @@ class ContactGeometry:
                     f"shift and {name} must have shapes {n} and {want}, got {name} of shape "
                     f"{np.shape(getattr(self, name))}"
                 )
+        for f in fields(self):
+            object.__setattr__(self, f.name, np.asarray(getattr(self, f.name), dtype=float))
 
     @property
     def rolling_radius_difference(self) -> np.ndarray:
