@@ -605,14 +605,14 @@ def modal_superposition(M, K, t, x0=None, v0=None, force=None, damping_ratios=No
     t : array_like, shape (n_t,)
         Strictly increasing times, s; t[0] is the initial instant. Uniformly
         spaced when ``force`` is given, with ω_j h <= 1e12 rad for the step h
-        (as for :meth:`SDOF.forced_response`).
+        (as for :meth:`~raildyn.vibration.SDOF.forced_response`).
     x0, v0 : array_like, shape (n,), optional
         Initial displacements (m) and velocities (m/s), any sign; zero by default.
     force : array_like, shape (n, n_t), optional
         Force on each coordinate (N) at the times ``t``.
     damping_ratios : float or array_like, shape (n,), optional
         ξ for every mode or for each, >= 0, with 2ξ_jω_j <= 1e300 1/s (the domain of
-        :class:`SDOF`); zero by default.
+        :class:`~raildyn.vibration.SDOF`); zero by default.
 
     Returns
     -------
@@ -859,9 +859,10 @@ def to_control(M, C, K, B, output: str = "displacement"):
     Parameters
     ----------
     M, C, K : array_like, shape (n, n)
-        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices, as for :func:`state_space`.
+        Mass (kg), damping (N·s/m) and stiffness (N/m) matrices, as for
+        :func:`~raildyn.vibration.state_space`.
     B : array_like, shape (n, m) or (n,)
-        How each input loads each coordinate, as for :func:`state_space`.
+        How each input loads each coordinate, as for :func:`~raildyn.vibration.state_space`.
     output : {"displacement", "velocity", "acceleration", "state"}
         As for :func:`state_space`.
 

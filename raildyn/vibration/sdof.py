@@ -162,7 +162,7 @@ class DecayPeaks:
     def log_decrement(self) -> float:
         """δ = ln(x₁/x_{j+1})/j measured over the j periods between the first and the last peak (eq. 1.17).
 
-        Needs at least two peaks; equal to :attr:`SDOF.log_decrement` to rounding.
+        Needs at least two peaks; equal to :attr:`~raildyn.vibration.SDOF.log_decrement` to rounding.
         """
         return decrement_from_peaks(self.values[0], self.values[-1], cycles=self.values.size - 1)
 
@@ -361,9 +361,9 @@ class SDOF:
         Parameters
         ----------
         natural_frequency : float
-            ω_n, rad/s, in (0, 1e150] (the domain of :class:`SDOF`: k/m = ω_n² <= 1e300).
+            ω_n, rad/s, in (0, 1e150] (the domain of :class:`~raildyn.vibration.SDOF`: k/m = ω_n² <= 1e300).
         damping_ratio : float
-            ξ, >= 0, with 2ξω_n <= 1e300 1/s (the domain of :class:`SDOF`).
+            ξ, >= 0, with 2ξω_n <= 1e300 1/s (the domain of :class:`~raildyn.vibration.SDOF`).
         mass : float
             m, kg, > 0, with m ω_n² and 2ξmω_n finite.
 
@@ -658,7 +658,8 @@ class SDOF:
         Parameters
         ----------
         t : array_like, shape (n,)
-            Times since the start, s, >= 0, strictly increasing (the abscissa of :meth:`FreeVibration.plot`).
+            Times since the start, s, >= 0, strictly increasing (the abscissa of
+            :meth:`~raildyn.vibration.FreeVibration.plot`).
         x0 : float
             Initial displacement, m (any sign).
         v0 : float
@@ -932,9 +933,9 @@ def root_locus(natural_frequency: float, damping_ratios) -> RootLocus:
     Parameters
     ----------
     natural_frequency : float
-        ω_n in rad/s, in (0, 1e150] (the domain of :class:`SDOF`).
+        ω_n in rad/s, in (0, 1e150] (the domain of :class:`~raildyn.vibration.SDOF`).
     damping_ratios : array_like, shape (n,)
-        ξ values, >= 0, with 2ξω_n <= 1e300 1/s (the domain of :class:`SDOF`); not empty.
+        ξ values, >= 0, with 2ξω_n <= 1e300 1/s (the domain of :class:`~raildyn.vibration.SDOF`); not empty.
 
     Returns
     -------
@@ -961,7 +962,7 @@ def log_decrement(damping_ratio):
     ----------
     damping_ratio : array_like
         ξ, 0 <= ξ < 1 (a system with ξ >= 1 does not oscillate, so it has no decrement;
-        :attr:`SDOF.log_decrement` reports ``math.inf`` for it); any shape, not empty.
+        :attr:`~raildyn.vibration.SDOF.log_decrement` reports ``math.inf`` for it); any shape, not empty.
 
     Returns
     -------
