@@ -124,24 +124,34 @@ def fuzz(target: str, make: Callable[[], Call], **options) -> Entry:
 def resolve(target: str, *, static: bool = True):
     """The object a public dotted name refers to.
 
-    With ``static`` a method is the function its class defines (its identity); without,
-    what calling it through the class calls (a class method bound to its class).
+    Attributes win over submodules (``raildyn.contact.fastsim`` is the function the package
+    exports, not its module). With ``static`` a method is the function its class defines
+    (its identity); without, what calling it through the class calls (a class method bound
+    to its class).
     """
-    parts = target.split(".")
-    for cut in range(len(parts), 0, -1):
-        try:
-            obj = importlib.import_module(".".join(parts[:cut]))
-        except ImportError:
-            continue
-        for attr in parts[cut:]:
-            owner = obj
-            obj = (
-                inspect.getattr_static(owner, attr)
-                if static and inspect.isclass(owner)
-                else getattr(owner, attr)
-            )
-        return _function(obj) if static else obj
-    raise LookupError(target)
+    try:
+        obj = _walk(target, static, attributes_first=True)
+    except (AttributeError, ImportError):
+        obj = _walk(target, static, attributes_first=False)
+    return _function(obj) if static else obj
+
+
+def _walk(target: str, static: bool, *, attributes_first: bool):
+    first, *rest = target.split(".")
+    obj = importlib.import_module(first)
+    path = first
+    for attr in rest:
+        path = f"{path}.{attr}"
+        if inspect.isclass(obj):
+            obj = inspect.getattr_static(obj, attr) if static else getattr(obj, attr)
+        elif inspect.ismodule(obj) and not (attributes_first and hasattr(obj, attr)):
+            try:
+                obj = importlib.import_module(path)
+            except ImportError:
+                obj = getattr(obj, attr)
+        else:
+            obj = getattr(obj, attr)
+    return obj
 
 
 def _function(obj):
@@ -289,7 +299,10 @@ def _bad_numbers(result, depth=0) -> str | None:
 
 
 def _names(message: str, param: str) -> bool:
-    return re.search(rf"(?<![\w.]){re.escape(param)}(?!\w)", message) is not None
+    """Whether ``message`` names ``param`` as a word (a one-letter name, which could be the
+    article "a", only as the subject of "must", "=" or an index)."""
+    after = r"(?=\s+must|\s*=|\[)" if len(param) == 1 else r"(?!\w)"
+    return re.search(rf"(?<![\w.]){re.escape(param)}{after}", message) is not None
 
 
 def _invoke(fn, c: Call, limit: float):
