@@ -299,9 +299,9 @@ def _bad_numbers(result, depth=0) -> str | None:
 
 
 def _names(message: str, param: str) -> bool:
-    """Whether ``message`` names ``param`` as a word (a one-letter name, which could be the
-    article "a", only as the subject of "must", "=" or an index)."""
-    after = r"(?=\s+must|\s*=|\[)" if len(param) == 1 else r"(?!\w)"
+    """Whether ``message`` names ``param`` as a word (``a``, which is also the article, only
+    before "must", "=", an index, a comma or "and")."""
+    after = r"(?=\s+must|\s*=|\[|\s*,|\s+and\s)" if param == "a" else r"(?!\w)"
     return re.search(rf"(?<![\w.]){re.escape(param)}{after}", message) is not None
 
 
