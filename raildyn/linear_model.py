@@ -84,7 +84,7 @@ class SystemMatrices:
             _checks.array(name, getattr(self, name), shape=(n, n))
         q = _checks.array("GK", self.GK, shape=(n, None)).shape[1]
         _checks.array("GC", self.GC, shape=(n, q))
-        _labels("labels", self.labels, n)
+        _checks.strings("labels", self.labels, n)
         _checks.positive("speed", self.speed)
 
     def state_matrix(self) -> np.ndarray:
@@ -114,19 +114,6 @@ def _mass_matrix(name: str, value) -> np.ndarray:
             f"{name} must be positive definite, got eigenvalues {np.linalg.eigvalsh(M)}"
         ) from None
     return M
-
-
-def _labels(name: str, value, n=None, *, unique=False) -> tuple:
-    """A sequence of strings (not one string), of length ``n`` when given, as a tuple."""
-    if isinstance(value, str) or not isinstance(value, (tuple, list)):
-        raise TypeError(f"{name} must be a tuple or list of strings, got {value!r:.80}")
-    if not all(isinstance(s, str) for s in value):
-        raise TypeError(f"{name} must hold only strings, got {value!r:.80}")
-    if n is not None and len(value) != n:
-        raise ValueError(f"{name} must hold {n} strings, one per coordinate, got {len(value)}: {value!r:.80}")
-    if unique and len(set(value)) != len(value):
-        raise ValueError(f"{name} must not repeat a name, got {value!r:.80}")
-    return tuple(value)
 
 
 _OMEGA_MAX = 1.0e7  # rad/s, the highest frequency of a frequency response (1.6 MHz)
@@ -205,9 +192,9 @@ class LinearSystem:
         set_(self, "input_rails", rails)
         gravity = np.zeros(n) if self.gravity_load is None else self.gravity_load
         set_(self, "gravity_load", _frozen("gravity_load", gravity, (n,)))
-        labels = _labels("labels", self.labels) or tuple(f"q{i}" for i in range(n))
-        set_(self, "labels", _labels("labels", labels, n, unique=True))
-        kinds = _labels("input_kinds", self.input_kinds) or ("vertical",) * q
+        labels = _checks.strings("labels", self.labels) or tuple(f"q{i}" for i in range(n))
+        set_(self, "labels", _checks.strings("labels", labels, n, unique=True))
+        kinds = _checks.strings("input_kinds", self.input_kinds) or ("vertical",) * q
         if len(kinds) != q or any(k not in INPUT_KINDS for k in kinds):
             raise ValueError(f"input_kinds must be {q} of {INPUT_KINDS}, got {self.input_kinds!r}")
         set_(self, "input_kinds", kinds)
@@ -622,7 +609,7 @@ class Assembler:
     """
 
     def __init__(self, labels: Sequence[str], n_inputs: int = 0):
-        self.labels = list(_labels("labels", labels, unique=True))
+        self.labels = list(_checks.strings("labels", labels, unique=True))
         n = len(self.labels)
         if n == 0:
             raise ValueError("labels must name at least one coordinate, got an empty sequence")
@@ -729,7 +716,8 @@ class Assembler:
             Finite, of either sign (creep and gravity terms).
         """
         rows = [
-            self.labels.index(_checks.choice("labels", s, self.labels)) for s in _labels("labels", labels)
+            self.labels.index(_checks.choice("labels", s, self.labels))
+            for s in _checks.strings("labels", labels)
         ]
         k = len(rows)
         C1 = None if C1 is None else _checks.array("C1", C1, shape=(k, k))

@@ -131,3 +131,27 @@ def test_linear_system_checks_its_matrices():
         LinearSystem(one, np.eye(2), one, one)
     with pytest.raises(ValueError, match="input_kinds"):
         LinearSystem(one, one, one, one, GK=np.ones((1, 1)), input_kinds=("gauge",))
+
+
+def test_linear_system_refuses_a_negative_mass_and_bad_fields():
+    one = np.eye(1)
+    with pytest.raises(ValueError, match="M must be positive definite"):
+        LinearSystem(-one, one, one, one)
+    with pytest.raises(ValueError, match="M must be symmetric"):
+        LinearSystem(np.array([[2.0, 1.0], [0.0, 1.0]]), np.eye(2), np.eye(2), np.eye(2))
+    with pytest.raises(TypeError, match="labels"):
+        LinearSystem(one, one, one, one, labels="q")
+    with pytest.raises(ValueError, match="input_rails"):
+        LinearSystem(one, one, one, one, GK=one, input_rails=[2.0])
+    with pytest.raises(ValueError, match="input_positions"):
+        LinearSystem(one, one, one, one, GK=one, input_positions=[-1.0])
+    with pytest.raises(TypeError, match="wheelsets"):
+        LinearSystem(one, one, one, one, wheelsets=[(0, 0, "wheelset")])
+    with pytest.raises(ValueError, match="speed"):
+        SystemMatrices(one, one, one, np.zeros((1, 0)), np.zeros((1, 0)), ("q",), 0.0)
+
+
+@pytest.mark.parametrize("bad", [1.0, "car", None])
+def test_as_linear_system_names_its_parameter(bad):
+    with pytest.raises(TypeError, match="model"):
+        as_linear_system(bad)

@@ -249,5 +249,62 @@ def test_mac_is_one_for_scaled_vectors_and_symmetric(seed, factor):
 
 
 def test_critical_speed_map_rejects_an_empty_grid():
-    with pytest.raises(ValueError, match="at least one value"):
+    with pytest.raises(ValueError, match="x must not be empty"):
         stability.critical_speed_map(lambda x, y: SOFT, [], [1.0], progress=False)
+
+
+# ---------------------------------------------------------------------------
+# Bad input: the cases of issue 15
+
+
+@pytest.mark.parametrize("rtol", [np.nan, np.inf, 0.0, -1e-6, 1.0, 1e-14])
+def test_a_bad_tolerance_is_refused_before_the_run(rtol):
+    # rtol=nan used to run forever, and rtol=inf or a tiny one for minutes.
+    with pytest.raises(ValueError, match="rtol"):
+        stability.limit_cycle_amplitude(NonlinearWheelset(), 60.0, duration=1.0, rtol=rtol)
+    with pytest.raises(ValueError, match="rtol"):
+        stability.simulate(NonlinearWheelset(), 60.0, [1e-3, 0.0, 0.0, 0.0], 1.0, rtol=rtol)
+
+
+def test_run_lengths_and_counts_have_stated_limits():
+    model = NonlinearWheelset(SOFT)
+    with pytest.raises(ValueError, match="duration"):
+        stability.simulate(model, 60.0, [1e-3, 0.0, 0.0, 0.0], 1e300)
+    with pytest.raises(ValueError, match="period"):
+        stability.periodic_orbit(model, 60.0, [1e-2, 0.0, 0.0, 0.0], 1e300)
+    with pytest.raises(ValueError, match="initial_displacement"):
+        stability.limit_cycle_amplitude(model, 60.0, initial_displacement=0.0)
+    with pytest.raises(ValueError, match="refine"):
+        stability.bifurcation_diagram(model, [60.0], refine=10**12, progress=False)
+    with pytest.raises(ValueError, match="scan"):
+        stability.critical_speed(SOFT, (1.0, 100.0), scan=10**12)
+
+
+def test_an_integration_has_a_bounded_number_of_evaluations(monkeypatch):
+    from raildyn.errors import SolverError
+    from raildyn.stability import nonlinear
+
+    monkeypatch.setattr(nonlinear, "_MAX_EVALUATIONS", 500)
+    with pytest.raises(SolverError, match="evaluations"):
+        stability.simulate(NonlinearWheelset(SOFT), 60.0, [1e-3, 0.0, 0.0, 0.0], 1.0, max_step=1e-4)
+
+
+def test_what_is_not_a_model_is_refused_by_name():
+    with pytest.raises(TypeError, match="model"):
+        stability.simulate("wheelset", 60.0, [1e-3, 0.0, 0.0, 0.0], 1.0)
+    with pytest.raises(TypeError, match="factory"):
+        stability.critical_speed_map(lambda x, y: "car", [1.0], [1.0], progress=False)
+    with pytest.raises(ValueError, match=r"factory failed at x\[0\] = -1.0"):
+        stability.critical_speed_map(lambda x, y: Wheelset(conicity=x), [-1.0], [1.0], progress=False)
+
+
+def test_results_check_their_fields():
+    with pytest.raises(ValueError, match="status"):
+        stability.CriticalSpeed(50.0, 5.0, 1j, "unknown", np.ones(2), ("y", "ψ"))
+    with pytest.raises(ValueError, match="speed"):
+        stability.CriticalSpeed(np.nan, 5.0, 1j, "crossing", np.ones(2), ("y", "ψ"))
+    with pytest.raises(ValueError, match="frequency_hz"):
+        stability.LimitCycle(60.0, 0.01, np.nan, 1.0, np.zeros(4))
+    with pytest.raises(TypeError, match="labels"):
+        stability.ModeSweep(np.array([1.0]), np.ones((1, 1)), np.ones((1, 1)), np.ones((1, 1)),
+                            np.ones((1, 1, 1)), "y", ("y",))  # fmt: skip

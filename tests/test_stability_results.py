@@ -192,7 +192,7 @@ def test_bifurcation_diagram_plot_splits_hunting_from_decaying_runs():
     diagram = stability.BifurcationDiagram(
         speeds=np.array([80.0, 70.0, 60.0]),
         amplitudes=np.array([8e-3, 6e-3, 1e-5]),
-        frequencies_hz=np.array([2.0, 1.9, np.nan]),
+        frequencies_hz=np.array([2.0, 1.9, 0.0]),
         hunting=np.array([True, True, False]),
         nonlinear_critical_speed=65.0,
         threshold=2e-4,

@@ -289,3 +289,29 @@ def test_lateral_system_speeds_must_be_positive():
 def test_creep_terms_vanish_with_the_creep_coefficients():
     terms = creep_terms(Wheelset(f11=0.0, f22=0.0, f23=0.0, f33=0.0))
     assert not terms.C1.any() and not terms.K_creep.any()
+
+
+def test_conicity_beyond_its_range_is_blamed_on_the_conicity():
+    # The contact angle follows the conicity by default: the message used to blame contact_angle.
+    with pytest.raises(ValueError, match="conicity") as err:
+        Wheelset(conicity=0.6)
+    assert "contact_angle" not in str(err.value)
+
+
+def test_the_right_hand_side_refuses_a_wrong_state():
+    model = NonlinearWheelset()
+    with pytest.raises(ValueError, match=r"state must have shape \(4,\)"):
+        model.rhs(0.0, np.zeros(3))
+    with pytest.raises(ValueError, match="state"):
+        model.rhs(0.0, [np.nan, 0.0, 0.0, 0.0])
+    with pytest.raises(ValueError, match="state"):
+        NonlinearLateral(Wheelset().linear_system()).rhs(0.0, np.zeros((2, 4)))
+
+
+def test_contact_checks_its_callbacks_once():
+    with pytest.raises(ValueError, match="rolling_radius_difference"):
+        WheelRailContact(rolling_radius_difference=lambda y: np.full_like(y, np.nan))
+    with pytest.raises(ValueError, match="contact_angle_difference"):
+        WheelRailContact(contact_angle_difference=lambda y: np.zeros(2))
+    with pytest.raises(TypeError, match="contact"):
+        NonlinearWheelset(contact="flange")

@@ -9,6 +9,8 @@ eigenvalues come from one batched ``numpy.linalg`` call.
 
 from __future__ import annotations
 
+import cmath
+import numbers
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -18,7 +20,7 @@ import scipy.optimize
 from raildyn import _checks
 from raildyn._checks import array, integer, positive, scalar
 from raildyn._progress import progress_bar
-from raildyn.linear_model import as_linear_system
+from raildyn.linear_model import LinearSystem, as_linear_system
 
 __all__ = [
     "CriticalSpeed",
@@ -88,20 +90,51 @@ def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     Parameters
     ----------
     a : array_like, shape (p, ka)
-        Vectors as columns (any unit; the criterion is dimensionless).
+        Vectors as columns (any unit; the criterion is dimensionless): finite, none of them zero.
     b : array_like, shape (p, kb)
-        Vectors as columns, of the same length p.
+        Vectors as columns, of the same length p; finite, none of them zero.
 
     Returns
     -------
     ndarray, shape (ka, kb)
         The criterion, between 0 and 1, of every column of ``a`` with every column of ``b``.
     """
-    a = np.asarray(a, dtype=complex)
-    b = np.asarray(b, dtype=complex)
+    a = _vectors("a", a, 2)
+    b = _vectors("b", b, 2)
+    if a.shape[0] != b.shape[0]:
+        raise ValueError(f"b must have columns of the length of a's, {a.shape[0]}, got shape {b.shape}")
+    return _mac(a, b)
+
+
+def _vectors(name: str, value, ndim: int) -> np.ndarray:
+    """Finite (complex) vectors as the columns of the last two axes, none of them zero."""
+    v = _checks.array(name, value, ndim=ndim, dtype=complex, allow_empty=False)
+    zero = ~np.abs(v).any(axis=-2)
+    if zero.any():
+        raise ValueError(f"{name} must have no zero column (a mode has a direction), got one in {name}")
+    return v
+
+
+def _mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """:func:`mac` of checked vectors: each column scaled by its largest entry first, so that the
+    squares stay finite for any finite entries."""
+    a = a / np.abs(a).max(axis=0, initial=0.0)
+    b = b / np.abs(b).max(axis=0, initial=0.0)
     num = np.abs(a.conj().T @ b) ** 2
     den = np.outer(np.sum(np.abs(a) ** 2, axis=0), np.sum(np.abs(b) ** 2, axis=0))
-    return num / np.maximum(den, np.finfo(float).tiny)
+    return num / den
+
+
+def _modes(eigenvalues, vectors) -> tuple[np.ndarray, np.ndarray]:
+    """Eigenvalues (n_speeds, m) and their vectors (n_speeds, p, m), checked."""
+    lam = _checks.array("eigenvalues", eigenvalues, ndim=2, dtype=complex, allow_empty=False)
+    vec = _vectors("vectors", vectors, 3)
+    if vec.shape[0] != lam.shape[0] or vec.shape[2] != lam.shape[1]:
+        raise ValueError(
+            f"vectors must have shape ({lam.shape[0]}, p, {lam.shape[1]}) to match the eigenvalues, "
+            f"got {vec.shape}"
+        )
+    return lam, vec
 
 
 @dataclass(frozen=True)
@@ -119,6 +152,9 @@ class TrackedModes:
     eigenvalues: np.ndarray
     vectors: np.ndarray
 
+    def __post_init__(self):
+        _modes(self.eigenvalues, self.vectors)
+
 
 def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> TrackedModes:
     """Reorder eigenvalues (and vectors) at each speed so that column j follows one mode.
@@ -131,19 +167,19 @@ def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> TrackedModes:
     Parameters
     ----------
     eigenvalues : complex ndarray, shape (n_speeds, m)
-        Eigenvalues at each speed, 1/s.
+        Eigenvalues at each speed, 1/s (finite).
     vectors : complex ndarray, shape (n_speeds, p, m)
-        Eigenvectors (any unit): column k of ``vectors[i]`` belongs to ``eigenvalues[i, k]``.
+        Eigenvectors (any unit, finite, none zero): column k of ``vectors[i]`` belongs to
+        ``eigenvalues[i, k]``.
 
     Returns
     -------
     TrackedModes
         The eigenvalues and vectors with the columns permuted at each speed.
     """
-    lam = np.array(eigenvalues, dtype=complex, copy=True)
-    vec = np.array(vectors, dtype=complex, copy=True)
+    lam, vec = (arr.copy() for arr in _modes(eigenvalues, vectors))
     for i in range(1, lam.shape[0]):
-        similarity = mac(vec[i - 1], vec[i])
+        similarity = _mac(vec[i - 1], vec[i])
         scale = np.maximum(np.abs(lam[i - 1])[:, None], 1.0)
         distance = np.abs(lam[i - 1][:, None] - lam[i][None, :]) / scale
         _, order = scipy.optimize.linear_sum_assignment((1.0 - similarity) + 0.5 * distance)
@@ -159,11 +195,11 @@ class ModeSweep:
     Attributes
     ----------
     speeds : ndarray (n_speeds,)
-        m/s.
+        m/s, > 0 and strictly increasing.
     eigenvalues : complex ndarray (n_speeds, k)
         λ, 1/s; only the roots with Im λ ≥ 0 at the first speed are kept (one of each pair).
     frequencies_hz : ndarray (n_speeds, k)
-        Damped frequency |Im λ|/2π, Hz.
+        Damped frequency |Im λ|/2π, Hz (≥ 0).
     damping_ratios : ndarray (n_speeds, k)
         ξ = −Re λ/|λ| (negative when the mode is unstable).
     shapes : complex ndarray (n_speeds, n, k)
@@ -182,6 +218,15 @@ class ModeSweep:
     shapes: np.ndarray
     labels: tuple
     coordinates: tuple
+
+    def __post_init__(self):
+        s = _checks.increasing("speeds", self.speeds, low=0.0, low_open=True).size
+        k = _checks.array("eigenvalues", self.eigenvalues, shape=(s, None), dtype=complex).shape[1]
+        _checks.array("frequencies_hz", self.frequencies_hz, shape=(s, k), low=0.0)
+        _checks.array("damping_ratios", self.damping_ratios, shape=(s, k))
+        n = _checks.array("shapes", self.shapes, shape=(s, None, k), dtype=complex).shape[1]
+        _checks.strings("labels", self.labels, k)
+        _checks.strings("coordinates", self.coordinates, n)
 
     @property
     def hunting_mode(self) -> int:
@@ -220,11 +265,11 @@ class ModeSweep:
             (``set_offsets``, ``set_data``, ``set_text``) and nothing is drawn anew; the sweep
             must have as many modes as the one drawn first.
         real_limits : (float, float) or None
-            Range of Re λ shown, 1/s; None to fit the data.
+            Range of Re λ shown, 1/s (finite, low < high); None to fit the data.
         imag_limits : (float, float) or None
-            Range of Im λ shown, rad/s; None to fit the data.
+            Range of Im λ shown, rad/s (finite, low < high); None to fit the data.
         damping_limits : (float, float) or None
-            Range of ξ shown (dimensionless); None to fit the data.
+            Range of ξ shown (dimensionless; finite, low < high); None to fit the data.
 
         Returns
         -------
@@ -245,6 +290,23 @@ class ModeSweep:
         >>> drawn["critical_text"].get_text()
         '197 km/h, 5.31 Hz'
         """
+        if ax is not None:
+            from matplotlib.axes import Axes
+
+            if not (isinstance(ax, (tuple, list, np.ndarray)) and len(ax) == 2):
+                raise TypeError(f"ax must be a sequence of two matplotlib Axes or None, got {ax!r:.80}")
+            for i, one in enumerate(ax):
+                _checks.instance(f"ax[{i}]", one, Axes, "matplotlib.axes.Axes")
+        if critical is not None:
+            _checks.instance("critical", critical, CriticalSpeed, "CriticalSpeed or None")
+        if artists is not None:
+            _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
+        limits = {
+            name: None if value is None else _checks.interval(name, value, low=-np.inf)
+            for name, value in (
+                ("real_limits", real_limits), ("imag_limits", imag_limits), ("damping_limits", damping_limits)
+            )
+        }  # fmt: skip
         kmh = 3.6 * self.speeds
         lam = self.eigenvalues
         offsets = np.column_stack([lam.real.ravel(), lam.imag.ravel()])
@@ -305,12 +367,12 @@ class ModeSweep:
             ax_d.set_xlabel("speed (km/h)")
             ax_d.set_ylabel("damping factor ξ")
             ax_d.legend(loc="upper right")
-        if real_limits is not None:
-            ax_s.set_xlim(*real_limits)
-        if imag_limits is not None:
-            ax_s.set_ylim(*imag_limits)
-        if damping_limits is not None:
-            ax_d.set_ylim(*damping_limits)
+        if limits["real_limits"] is not None:
+            ax_s.set_xlim(*limits["real_limits"])
+        if limits["imag_limits"] is not None:
+            ax_s.set_ylim(*limits["imag_limits"])
+        if limits["damping_limits"] is not None:
+            ax_d.set_ylim(*limits["damping_limits"])
         return {
             "roots": roots,
             "colorbar": bar,
@@ -366,9 +428,7 @@ def mode_sweep(model, speeds) -> ModeSweep:
     array([6.87, 6.98])
     """
     system = as_linear_system(model)
-    V = _checks.speeds("speeds", speeds)
-    if np.any(np.diff(V) <= 0):
-        raise ValueError("speeds must be strictly increasing for mode tracking")
+    V = _checks.increasing("speeds", np.atleast_1d(speeds), low=0.0, low_open=True)
     n = system.size
     lam, vec = np.linalg.eig(system.state_matrices(V))
     tracked = track_modes(lam, vec)
@@ -397,6 +457,9 @@ def mode_sweep(model, speeds) -> ModeSweep:
 # Critical speed
 
 
+_STATUSES = ("crossing", "stable over the range", "unstable at the lowest speed")
+
+
 @dataclass(frozen=True)
 class CriticalSpeed:
     """The linear critical speed of a model within a range of speeds.
@@ -404,20 +467,23 @@ class CriticalSpeed:
     Attributes
     ----------
     speed : float
-        V_c, m/s: the lowest speed where max Re λ crosses zero upwards.
+        V_c, m/s (> 0): the lowest speed where max Re λ crosses zero upwards.
         ``inf`` when stable over the whole range; the lower end of the range
         when unstable already there (see ``status``).
     frequency_hz : float
-        Frequency of the mode that loses stability, |Im λ|/2π, Hz (nan when none does).
+        Frequency of the mode that loses stability, |Im λ|/2π, Hz (≥ 0; nan when none does).
     eigenvalue : complex
-        That mode's eigenvalue at V_c, 1/s.
+        That mode's eigenvalue at V_c, 1/s (a real number is a complex one with no imaginary part).
     status : str
         "crossing", "stable over the range" or "unstable at the lowest speed".
     mode_shape : complex ndarray (n,)
-        The displacement part of that mode's eigenvector at V_c, largest entry 1 (as
-        ``ModeSweep.shapes``); NaN when no mode loses stability in the range.
+        The displacement part of that mode's eigenvector at V_c, largest entry of modulus 1
+        (as ``ModeSweep.shapes``); NaN when no mode loses stability in the range.
     coordinates : tuple of str
         Name of each entry of ``mode_shape``.
+
+    The inf and NaN stand only with the status "stable over the range": every other
+    value is finite.
     """
 
     speed: float
@@ -426,6 +492,27 @@ class CriticalSpeed:
     status: str
     mode_shape: np.ndarray
     coordinates: tuple
+
+    def __post_init__(self):
+        _checks.choice("status", self.status, _STATUSES)
+        n = len(_checks.strings("coordinates", self.coordinates))
+        if self.status == "stable over the range":  # no mode loses stability: nothing to give
+            if self.speed != np.inf:
+                raise ValueError(f"speed must be inf when the status is {self.status!r}, got {self.speed!r}")
+            if np.shape(self.mode_shape) != (n,):
+                raise ValueError(f"mode_shape must have shape ({n},), got {np.shape(self.mode_shape)}")
+            return
+        _checks.positive("speed", self.speed)
+        _checks.nonnegative("frequency_hz", self.frequency_hz)
+        if isinstance(self.eigenvalue, (str, bytes, bool)) or not isinstance(self.eigenvalue, numbers.Number):
+            raise TypeError(f"eigenvalue must be a complex number, got {self.eigenvalue!r:.80}")
+        if not cmath.isfinite(self.eigenvalue):
+            raise ValueError(f"eigenvalue must be finite, got {self.eigenvalue!r}")
+        shape = _checks.array("mode_shape", self.mode_shape, shape=(n,), dtype=complex)
+        if abs(np.abs(shape).max() - 1.0) > 1e-6:
+            raise ValueError(
+                f"mode_shape must have its largest entry of modulus 1, got {np.abs(shape).max()!r}"
+            )
 
     def amplitude(self, coordinate: str) -> float:
         """|entry| of the hunting mode's shape on one coordinate (largest entry of the shape 1).
@@ -440,8 +527,7 @@ class CriticalSpeed:
         float
             In the coordinate's unit per unit of the largest entry (m or rad).
         """
-        if coordinate not in self.coordinates:
-            raise ValueError(f"coordinate must be one of {self.coordinates}, got {coordinate!r}")
+        _checks.choice("coordinate", coordinate, self.coordinates)
         return float(abs(self.mode_shape[self.coordinates.index(coordinate)]))
 
     @property
@@ -451,12 +537,15 @@ class CriticalSpeed:
 
 
 def _range(speed_range) -> tuple[float, float]:
-    r = np.asarray(speed_range, dtype=float).ravel()
-    if r.size != 2:
+    r = _checks.array("speed_range", speed_range)
+    if r.shape != (2,):
         raise ValueError(f"speed_range must be (low, high) in m/s, got {speed_range!r}")
     low = scalar("speed_range[0]", float(r[0]), low=0.0, low_open=True)
     high = scalar("speed_range[1]", float(r[1]), low=low, low_open=True)
     return low, high
+
+
+_MAX_SCAN = 10_000  # speeds in a coarse scan: Brent's method refines the bracket, so more only cost time
 
 
 def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: int = 64) -> CriticalSpeed:
@@ -472,9 +561,10 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     speed_range : (float, float)
         Lowest and highest speed, m/s (0 < low < high).
     tol : float
-        Absolute tolerance on V_c, m/s (default 0.01, well inside 0.1 m/s).
+        Absolute tolerance on V_c, m/s (> 0; default 0.01, well inside 0.1 m/s).
     scan : int
-        Number of speeds in the coarse scan (≥ 8).
+        Number of speeds in the coarse scan, in [8, 10 000] (Brent's method refines the
+        bracket, so more speeds only cost time).
 
     Returns
     -------
@@ -492,7 +582,7 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     system = as_linear_system(model)
     low, high = _range(speed_range)
     positive("tol", tol)
-    integer("scan", scan, low=8)
+    integer("scan", scan, low=8, high=_MAX_SCAN)
     V = np.linspace(low, high, scan)
     g = largest_real_part(system, V)
 
@@ -534,9 +624,9 @@ class CriticalSpeedMap:
     Attributes
     ----------
     x, y : ndarray
-        The two parameter grids (units of the parameters).
+        The two parameter grids (units of the parameters; finite, at least one value each).
     speeds : ndarray (len(y), len(x))
-        V_c, m/s (inf where stable over the range).
+        V_c, m/s (> 0; inf where stable over the range).
     x_name, y_name : str
         Names of the two parameters (with their units), used as axis labels.
     """
@@ -546,6 +636,17 @@ class CriticalSpeedMap:
     speeds: np.ndarray
     x_name: str
     y_name: str
+
+    def __post_init__(self):
+        nx = _checks.array("x", self.x, ndim=1, allow_empty=False).size
+        ny = _checks.array("y", self.y, ndim=1, allow_empty=False).size
+        # inf where stable over the range: the one non-finite value a critical speed may take
+        speeds = _checks._numbers("speeds", self.speeds)
+        speeds = _checks.array("speeds", np.where(np.isposinf(speeds), 1.0, speeds), shape=(ny, nx))
+        if np.any(speeds <= 0):
+            raise ValueError(f"speeds must be > 0 m/s (or inf), got {speeds[speeds <= 0][0]!r}")
+        for name in ("x_name", "y_name"):
+            _checks.instance(name, getattr(self, name), str, "string")
 
     def plot(self, ax=None, *, levels=None, cmap: str = "viridis") -> dict:
         """Draw the critical speed (km/h) as filled contours over the two parameters.
@@ -558,9 +659,10 @@ class CriticalSpeedMap:
         ax : matplotlib Axes, optional
             Axes to draw on; new ones by default.
         levels : array_like, optional
-            Contour levels, km/h; by default 50 km/h apart up to the largest finite critical speed.
+            Contour levels, km/h (at least two, strictly increasing); by default 50 km/h apart
+            up to the largest finite critical speed.
         cmap : str
-            Colour map.
+            Name of a matplotlib colour map.
 
         Returns
         -------
@@ -571,12 +673,21 @@ class CriticalSpeedMap:
 
         from raildyn import plots
 
+        if isinstance(cmap, str) and cmap not in matplotlib.colormaps:
+            raise ValueError(f"cmap must name a matplotlib colour map (matplotlib.colormaps), got {cmap!r}")
+        _checks.instance("cmap", cmap, str, "string, the name of a colour map")
         kmh = 3.6 * self.speeds
         finite = kmh[np.isfinite(kmh)]
         if levels is None:
             top = finite.max() if finite.size else 50.0
             levels = np.arange(0.0, 50.0 * np.ceil(top / 50.0) + 50.0, 50.0)
-        levels = array("levels", np.atleast_1d(levels), ndim=1)
+        levels = _checks.increasing("levels", levels)
+        if levels.size < 2:
+            raise ValueError(f"levels must hold at least two levels, got {levels}")
+        if self.x.size < 2 or self.y.size < 2:
+            raise ValueError(
+                f"a contour plot needs two values of x and of y at least, got {self.speeds.shape}"
+            )
         ax = plots.axes_or_new(ax)
         with matplotlib.rc_context(plots.STYLE):
             contours = ax.contourf(self.x, self.y, np.minimum(kmh, levels[-1]), levels=levels, cmap=cmap)
@@ -623,9 +734,16 @@ class CriticalSpeedMap:
         >>> line.get_ydata().round(0)
         array([244., 169.])
         """
+        import matplotlib.lines
+
+        try:  # a keyword that is no line property is refused before anything is drawn
+            matplotlib.lines.Line2D([], [], **style)
+        except AttributeError as err:
+            raise TypeError(f"style: {err} (keywords must be properties of matplotlib's Line2D)") from None
         kmh = 3.6 * self.speeds
         rows = np.where(np.isfinite(kmh), kmh, np.nan)
         if artists is not None:
+            _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
             if len(artists["lines"]) != rows.shape[0]:
                 raise ValueError(
                     f"artists were drawn for {len(artists['lines'])} lines; this map has {rows.shape[0]}"
@@ -669,11 +787,12 @@ def critical_speed_map(
     Parameters
     ----------
     factory : callable
-        ``factory(x_value, y_value)`` returns a linear model (or system).
+        ``factory(x_value, y_value)`` returns a linear model (or system). A ValueError or
+        TypeError it raises is raised again with the values of x and y that caused it.
     x : array_like, shape (nx,)
-        Values of the first parameter (its own unit).
+        Values of the first parameter (its own unit; finite, at least one).
     y : array_like, shape (ny,)
-        Values of the second parameter (its own unit).
+        Values of the second parameter (its own unit; finite, at least one).
     speed_range : (float, float)
         Lowest and highest speed searched, m/s (0 < low < high).
     x_name : str
@@ -681,9 +800,9 @@ def critical_speed_map(
     y_name : str
         Name (and unit) of the second parameter.
     tol : float
-        Absolute tolerance on each critical speed, m/s.
+        Absolute tolerance on each critical speed, m/s (> 0).
     scan : int
-        Number of speeds in each coarse scan (≥ 8).
+        Number of speeds in each coarse scan, in [8, 10 000].
     progress : bool
         Show a progress bar.
 
@@ -692,14 +811,27 @@ def critical_speed_map(
     CriticalSpeedMap
         The critical speeds, m/s, shape (ny, nx) (``inf`` where stable over the range).
     """
-    xs = array("x", np.atleast_1d(x), ndim=1)
-    ys = array("y", np.atleast_1d(y), ndim=1)
-    if xs.size == 0 or ys.size == 0:
-        raise ValueError("x and y must each hold at least one value")
+    _checks.function("factory", factory)
+    xs = array("x", np.atleast_1d(x), ndim=1, allow_empty=False)
+    ys = array("y", np.atleast_1d(y), ndim=1, allow_empty=False)
+    _range(speed_range)
+    for name, value in (("x_name", x_name), ("y_name", y_name)):
+        _checks.instance(name, value, str, "string")
+    positive("tol", tol)
+    integer("scan", scan, low=8, high=_MAX_SCAN)
     out = np.empty((ys.size, xs.size))
     pairs = [(j, i) for j in range(ys.size) for i in range(xs.size)]
-    if progress:
+    if _checks.flag("progress", progress):
         pairs = progress_bar(pairs, desc="critical speed map")
     for j, i in pairs:
-        out[j, i] = critical_speed(factory(xs[i], ys[j]), speed_range, tol=tol, scan=scan).speed
+        xi, yj = float(xs[i]), float(ys[j])
+        where = f"x[{i}] = {xi!r}, y[{j}] = {yj!r}"
+        try:
+            model = factory(xi, yj)
+        except (ValueError, TypeError) as err:
+            kind = ValueError if isinstance(err, ValueError) else TypeError
+            raise kind(f"factory failed at {where}: {err}") from err
+        if not isinstance(model, LinearSystem) and not callable(getattr(model, "linear_system", None)):
+            raise TypeError(f"factory must return a linear model, returned {model!r:.80} at {where}")
+        out[j, i] = critical_speed(model, speed_range, tol=tol, scan=scan).speed
     return CriticalSpeedMap(xs, ys, out, x_name, y_name)

@@ -7,6 +7,7 @@ functions integrate them with scipy and measure the steady hunting.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -39,9 +40,9 @@ class NonlinearRun:
     Attributes
     ----------
     speed : float
-        m/s.
+        m/s (> 0).
     t : ndarray, (n_t,)
-        s.
+        s, strictly increasing.
     states : ndarray, (state_size, n_t)
         The model's state at each time, in its units (m, rad, m/s, rad/s).
     lateral_index : int
@@ -52,6 +53,12 @@ class NonlinearRun:
     t: np.ndarray
     states: np.ndarray
     lateral_index: int
+
+    def __post_init__(self):
+        positive("speed", self.speed)
+        n_t = _checks.time_grid("t", self.t).size
+        rows = array("states", self.states, shape=(None, n_t), allow_empty=False).shape[0]
+        integer("lateral_index", self.lateral_index, low=0, high=rows - 1)
 
     @property
     def lateral(self) -> np.ndarray:
@@ -66,7 +73,7 @@ class NonlinearRun:
         ax : matplotlib Axes, optional
             Axes to draw on; new ones by default.
         flange_clearance : float, optional
-            m; marked at ±δ_f when given.
+            m (> 0); marked at ±δ_f when given.
 
         Returns
         -------
@@ -77,6 +84,8 @@ class NonlinearRun:
 
         from raildyn import plots
 
+        if flange_clearance is not None:
+            positive("flange_clearance", flange_clearance)
         ax = plots.axes_or_new(ax)
         out = {}
         with matplotlib.rc_context(plots.STYLE):
@@ -103,13 +112,13 @@ def simulate(model, speed, initial_state, duration, *, max_step: float = 2.0e-3,
     speed : float
         V, m/s (> 0).
     initial_state : array_like, (state_size,)
-        In the units of the model's state.
+        In the units of the model's state (finite).
     duration : float
-        s (> 0).
+        s, in (0, 120]: two minutes of running, where hunting settles within seconds.
     max_step : float
         Largest step, s (> 0).
     rtol : float
-        Relative tolerance of the integration, in (0, 1).
+        Relative tolerance of the integration, in [1e-13, 1).
 
     Returns
     -------
@@ -118,7 +127,9 @@ def simulate(model, speed, initial_state, duration, *, max_step: float = 2.0e-3,
     Raises
     ------
     SolverError
-        If the integration fails.
+        If the integration fails: a step size that underflows, a state that becomes
+        non-finite, or more than 10⁶ evaluations of the right-hand side (raise
+        ``max_step`` or shorten ``duration``).
 
     Examples
     --------
@@ -128,18 +139,74 @@ def simulate(model, speed, initial_state, duration, *, max_step: float = 2.0e-3,
     >>> run.states.shape[0], float(run.t[-1])
     (4, 0.5)
     """
+    V = scalar("speed", speed, low=0.0, low_open=True)
+    T = _duration("duration", duration)
+    h = positive("max_step", max_step)
+    r = _checks.tolerance("rtol", rtol)
+    m = _at_speed(model, V)
+    y0 = array("initial_state", initial_state, shape=(m.state_size,))
+    sol = _integrate(m.rhs, T, y0, "RK45", r, 1e-9, V, max_step=h)
+    return NonlinearRun(V, sol.t, sol.y, m.lateral_index)
+
+
+_MAX_DURATION = 120.0  # s, the longest run (and period) asked for: hunting settles within seconds
+_MAX_EVALUATIONS = 1_000_000  # of a right-hand side in one integration: the bound on a run's work
+
+
+def _duration(name: str, value) -> float:
+    """A run's length (or a period), s, in (0, 120]."""
+    return scalar(name, value, low=0.0, low_open=True, high=_MAX_DURATION)
+
+
+def _at_speed(model, speed: float):
+    """``model.at_speed(speed)``, checked to offer ``rhs``, ``state_size`` and ``lateral_index``."""
+    if not callable(getattr(model, "at_speed", None)):
+        raise TypeError(
+            "model must be a nonlinear model with at_speed(V) (NonlinearWheelset, NonlinearLateral), "
+            f"got {model!r:.80} of type {type(model).__name__}"
+        )
+    m = model.at_speed(speed)
+    if not callable(getattr(m, "rhs", None)):
+        raise TypeError(f"model.at_speed(V) must give a model with rhs(t, state), got {type(m).__name__}")
+    integer("model state_size", m.state_size, low=1)
+    integer("model lateral_index", m.lateral_index, low=0, high=m.state_size - 1)
+    return m
+
+
+def _integrate(rhs, duration: float, y0, method: str, rtol: float, atol: float, speed: float, **options):
+    """``scipy.integrate.solve_ivp`` over (0, duration) with the failure policy: a bounded run.
+
+    At most :data:`_MAX_EVALUATIONS` evaluations of ``rhs``; a non-finite state or a failed
+    run raises :class:`SolverError`.
+    """
     import scipy.integrate
 
-    V = scalar("speed", speed, low=0.0, low_open=True)
-    T = positive("duration", duration)
-    h = positive("max_step", max_step)
-    r = scalar("rtol", rtol, low=0.0, high=1.0, low_open=True, high_open=True)
-    m = model.at_speed(V)
-    y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    sol = scipy.integrate.solve_ivp(m.rhs, (0.0, T), y0, method="RK45", rtol=r, atol=1e-9, max_step=h)
+    count = 0
+
+    def bounded(t, y):
+        nonlocal count
+        count += 1
+        if count > _MAX_EVALUATIONS:
+            raise SolverError(
+                f"the integration at V = {speed:.6g} m/s took more than {_MAX_EVALUATIONS} evaluations "
+                "of the right-hand side (a stiff motion or a tiny max_step)",
+                time=float(t),
+            )
+        if not math.isfinite(y.sum()):
+            raise SolverError(f"the state became non-finite at V = {speed:.6g} m/s", time=float(t))
+        return rhs(t, y)
+
+    # An overflow inside the solver's step control is no warning to the user: the state it
+    # leads to is caught above, and the run ends in a SolverError.
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        sol = scipy.integrate.solve_ivp(
+            bounded, (0.0, duration), y0, method=method, rtol=rtol, atol=atol, **options
+        )
     if not sol.success:
-        raise SolverError(f"integration failed at V = {V:.2f} m/s: {sol.message}", time=float(sol.t[-1]))
-    return NonlinearRun(V, sol.t, sol.y, m.lateral_index)
+        raise SolverError(f"integration failed at V = {speed:.6g} m/s: {sol.message}", time=float(sol.t[-1]))
+    if not np.isfinite(sol.y).all():
+        raise SolverError(f"the state became non-finite at V = {speed:.6g} m/s", time=float(sol.t[-1]))
+    return sol
 
 
 @dataclass(frozen=True)
@@ -149,15 +216,15 @@ class LimitCycle:
     Attributes
     ----------
     speed : float
-        m/s.
+        m/s (> 0).
     amplitude : float
         Half the peak-to-peak lateral displacement of the first wheelset over
-        the last quarter of the run, m.
+        the last quarter of the run, m (≥ 0).
     frequency_hz : float
-        Frequency of the oscillation, Hz, from the upward crossings of the mean (nan when there
-        is no oscillation).
+        Frequency of the oscillation, Hz, from the upward crossings of the mean (0 when
+        there is no oscillation: fewer than two crossings in the last quarter).
     growth : float
-        Amplitude over the last quarter divided by that over the quarter before:
+        Amplitude over the last quarter divided by that over the quarter before (≥ 0):
         below 1 while the motion is still dying away.
     state : ndarray
         The state at the end of the run (to start the next speed of a ramp from).
@@ -169,20 +236,26 @@ class LimitCycle:
     growth: float
     state: np.ndarray
 
+    def __post_init__(self):
+        positive("speed", self.speed)
+        for name in ("amplitude", "frequency_hz", "growth"):
+            _checks.nonnegative(name, getattr(self, name))
+        array("state", self.state, ndim=1, allow_empty=False)
+
     def hunting(self, threshold: float = 2.0e-4) -> bool:
         """Whether the motion is a sustained oscillation: above ``threshold`` and no longer decaying.
 
         Parameters
         ----------
         threshold : float
-            Amplitude below which the motion counts as decayed, m (default 0.2 mm).
+            Amplitude below which the motion counts as decayed, m (> 0; default 0.2 mm).
 
         Returns
         -------
         bool
             True when ``amplitude > threshold`` and ``growth > 0.95``.
         """
-        return self.amplitude > threshold and self.growth > 0.95
+        return self.amplitude > positive("threshold", threshold) and self.growth > 0.95
 
 
 def limit_cycle_amplitude(
@@ -209,17 +282,18 @@ def limit_cycle_amplitude(
     speed : float
         Speed V, m/s (> 0).
     initial_displacement : float
-        Starting lateral displacement of the first wheelset, m (default 12 mm:
-        beyond the flangeway clearance, so that a large limit cycle is found
-        where one exists).
+        Starting lateral displacement of the first wheelset, m, either side, 0 < |y₀| ≤
+        0.05 m: the centred state never moves, and no wheelset on the rails is further off
+        (default 12 mm: beyond the flangeway clearance, so that a large limit cycle is
+        found where one exists).
     initial_state : array_like, optional
-        Full starting state, instead of ``initial_displacement``.
+        Full starting state (finite), instead of ``initial_displacement``.
     duration : float
-        Simulated time, s.
+        Simulated time, s, in (0, 120].
     max_step : float
-        Largest solver step, s.
+        Largest solver step, s (> 0).
     rtol : float
-        Relative tolerance of the solver.
+        Relative tolerance of the solver, in [1e-13, 1).
 
     Returns
     -------
@@ -229,7 +303,7 @@ def limit_cycle_amplitude(
     Raises
     ------
     SolverError
-        If the integration fails.
+        If the integration fails (see :func:`~raildyn.stability.nonlinear.simulate`).
 
     Examples
     --------
@@ -243,27 +317,40 @@ def limit_cycle_amplitude(
     (True, 10.3, 5.7)
     """
     V = scalar("speed", speed, low=0.0, low_open=True)
-    positive("duration", duration)
+    T = _duration("duration", duration)
     positive("max_step", max_step)
-    m = model.at_speed(V)
+    _checks.tolerance("rtol", rtol)
+    y_start = _displacement(initial_displacement)
+    m = _at_speed(model, V)
     if initial_state is None:
         y0 = np.zeros(m.state_size)
-        y0[m.lateral_index] = scalar("initial_displacement", initial_displacement)
+        y0[m.lateral_index] = y_start
     else:
         y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    run = simulate(m, V, y0, duration, max_step=max_step, rtol=rtol)
+    run = simulate(m, V, y0, T, max_step=max_step, rtol=rtol)
     t, y, x = run.t, run.states, run.lateral
-    last = t >= 0.75 * duration
-    before = (t >= 0.5 * duration) & ~last
-    amplitude = 0.5 * (x[last].max() - x[last].min())
-    previous = 0.5 * (x[before].max() - x[before].min())
+    last = t >= 0.75 * T
+    before = (t >= 0.5 * T) & ~last
+    amplitude = 0.5 * np.ptp(x[last])
+    previous = 0.5 * np.ptp(x[before]) if before.any() else 0.0
     growth = amplitude / previous if previous > 0 else 1.0
     tail, tt = x[last], t[last]
     crossings = np.flatnonzero(np.diff(np.sign(tail - tail.mean())) > 0)
-    frequency_hz = np.nan
+    frequency_hz = 0.0
     if amplitude > 1e-6 and crossings.size >= 2:
         frequency_hz = (crossings.size - 1) / (tt[crossings[-1]] - tt[crossings[0]])
     return LimitCycle(V, float(amplitude), float(frequency_hz), float(growth), y[:, -1].copy())
+
+
+_MAX_DISPLACEMENT = 0.05  # m: no wheelset on the rails is further from the centre
+
+
+def _displacement(value) -> float:
+    """A starting lateral displacement, 0 < |y₀| ≤ 0.05 m."""
+    y0 = scalar("initial_displacement", value, low=-_MAX_DISPLACEMENT, high=_MAX_DISPLACEMENT)
+    if y0 == 0.0:
+        raise ValueError("initial_displacement must not be 0: the centred wheelset never leaves the centre")
+    return y0
 
 
 @dataclass(frozen=True)
@@ -273,18 +360,18 @@ class BifurcationDiagram:
     Attributes
     ----------
     speeds : ndarray
-        m/s, decreasing (the order of the ramp).
+        m/s (> 0), decreasing (the order of the ramp).
     amplitudes : ndarray
-        Lateral amplitude of the first wheelset, m.
+        Lateral amplitude of the first wheelset, m (≥ 0).
     frequencies_hz : ndarray
-        Frequency of the motion at each speed, Hz (nan where there is no oscillation).
+        Frequency of the motion at each speed, Hz (≥ 0; 0 where there is no oscillation).
     hunting : ndarray of bool
         Whether the motion at each speed is a sustained oscillation.
     nonlinear_critical_speed : float
-        Lowest speed at which a limit cycle persists, m/s, refined by bisection
+        Lowest speed at which a limit cycle persists, m/s (> 0), refined by bisection
         between the grid speeds (inf if there is none on the grid).
     threshold : float
-        Amplitude below which the motion counts as decayed, m.
+        Amplitude below which the motion counts as decayed, m (> 0).
     """
 
     speeds: np.ndarray
@@ -293,6 +380,19 @@ class BifurcationDiagram:
     hunting: np.ndarray
     nonlinear_critical_speed: float
     threshold: float
+
+    def __post_init__(self):
+        n = _checks.speeds("speeds", self.speeds).size
+        array("amplitudes", self.amplitudes, shape=(n,), low=0.0)
+        array("frequencies_hz", self.frequencies_hz, shape=(n,), low=0.0)
+        hunting = np.asarray(self.hunting)
+        if hunting.dtype != bool:
+            raise TypeError(f"hunting must be an array of bools, got {self.hunting!r:.80}")
+        if hunting.shape != (n,):
+            raise ValueError(f"hunting must have shape ({n},), got {hunting.shape}")
+        if self.nonlinear_critical_speed != np.inf:  # inf: no limit cycle on the grid
+            positive("nonlinear_critical_speed", self.nonlinear_critical_speed)
+        positive("threshold", self.threshold)
 
     def plot(self, ax=None, *, linear_critical_speed: float | None = None) -> dict:
         """Draw the amplitude (mm) against speed (km/h), with the nonlinear and linear critical speeds.
@@ -371,15 +471,18 @@ def bifurcation_diagram(
         Speeds of the ramp, m/s (> 0), in any order: they are run from the highest down.
     initial_displacement : float
         Starting lateral displacement of the first wheelset at the highest speed (and after
-        a speed where the motion died away), m.
+        a speed where the motion died away), m, either side, 0 < |y₀| ≤ 0.05 m (as for
+        :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`).
     duration : float
-        Simulated time at each speed, s.
+        Simulated time at each speed, s, in (0, 120].
     max_step : float
-        Largest solver step, s.
+        Largest solver step, s (> 0).
     threshold : float
-        Amplitude below which the motion counts as decayed, m.
+        Amplitude below which the motion counts as decayed, m, in (0, 0.05] (no wheelset
+        on the rails moves further).
     refine : int
-        Number of bisection steps on the nonlinear critical speed (≥ 0).
+        Number of bisection steps on the nonlinear critical speed, in [0, 30] (30 halve the
+        bracket a billion times).
     progress : bool
         Show a progress bar.
 
@@ -395,10 +498,14 @@ def bifurcation_diagram(
         If an integration fails.
     """
     V = np.sort(_checks.speeds("speeds", speeds))[::-1]
-    positive("threshold", threshold)
-    integer("refine", refine, low=0)
+    _displacement(initial_displacement)
+    _duration("duration", duration)
+    positive("max_step", max_step)
+    scalar("threshold", threshold, low=0.0, low_open=True, high=_MAX_DISPLACEMENT)
+    integer("refine", refine, low=0, high=30)
+    _at_speed(model, float(V[0]))
     items = V
-    if progress:
+    if _checks.flag("progress", progress):
         items = progress_bar(V, desc="bifurcation diagram (ramp-down)")
     cycles, state = [], None
     for v in items:
@@ -441,18 +548,18 @@ class PeriodicOrbit:
     Attributes
     ----------
     speed : float
-        m/s.
+        m/s (> 0).
     period : float
-        T, s.
+        T, s (> 0).
     state : ndarray
         A point of the orbit, where the first wheelset's lateral velocity is zero.
     amplitude : float
-        Half the peak-to-peak lateral displacement of the first wheelset over one period, m.
+        Half the peak-to-peak lateral displacement of the first wheelset over one period, m (≥ 0).
     multipliers : complex ndarray
-        Floquet multipliers (eigenvalues of the monodromy matrix); the orbit is
-        stable when all but the trivial one (≈ 1) lie inside the unit circle.
+        Floquet multipliers (eigenvalues of the monodromy matrix), one per state entry; the
+        orbit is stable when all but the trivial one (≈ 1) lie inside the unit circle.
     residual : float
-        Norm of φ_T(x₀) − x₀ at the solution, in units of the state.
+        Norm of φ_T(x₀) − x₀ at the solution, in units of the state (≥ 0).
     """
 
     speed: float
@@ -461,6 +568,14 @@ class PeriodicOrbit:
     amplitude: float
     multipliers: np.ndarray
     residual: float
+
+    def __post_init__(self):
+        positive("speed", self.speed)
+        positive("period", self.period)
+        n = array("state", self.state, ndim=1, allow_empty=False).size
+        _checks.nonnegative("amplitude", self.amplitude)
+        array("multipliers", self.multipliers, shape=(n,), dtype=complex)
+        _checks.nonnegative("residual", self.residual)
 
     @property
     def stable(self) -> bool:
@@ -498,15 +613,16 @@ def periodic_orbit(
         Speed V, m/s (> 0).
     state : array_like, shape (state_size,)
         Guess of a point on the orbit (for instance the ``state`` at the end of a
-        :func:`limit_cycle_amplitude` run), in the units of the model's state.
+        :func:`limit_cycle_amplitude` run), in the units of the model's state: finite, not
+        all zero (the centred state is the trivial solution).
     period : float
-        Guess of T, s (1 / ``frequency_hz`` of the settled motion).
+        Guess of T, s, in (0, 120] (1 / ``frequency_hz`` of the settled motion).
     tol : float
-        Convergence on the relative size of the Newton step (dimensionless).
+        Convergence on the relative size of the Newton step (dimensionless, > 0).
     max_iter : int
-        Largest number of Newton steps (≥ 1).
+        Largest number of Newton steps, in [1, 100].
     rtol : float
-        Relative tolerance of the DOP853 integrations.
+        Relative tolerance of the DOP853 integrations, in [1e-13, 1).
 
     Returns
     -------
@@ -517,20 +633,24 @@ def periodic_orbit(
     Raises
     ------
     SolverError
-        If an integration fails or Newton's method does not converge in ``max_iter`` steps.
+        If an integration fails (see :func:`~raildyn.stability.nonlinear.simulate`) or Newton's
+        method does not converge in ``max_iter`` steps.
 
     Notes
     -----
     The centred state is a trivial solution of the same equations: a guess
     far from any cycle may converge to it (amplitude 0).
     """
-    import scipy.integrate
-
     V = scalar("speed", speed, low=0.0, low_open=True)
-    T = positive("period", period)
-    m = model.at_speed(V)
+    T = _duration("period", period)
+    positive("tol", tol)
+    iterations = integer("max_iter", max_iter, low=1, high=100)
+    rtol = _checks.tolerance("rtol", rtol)
+    m = _at_speed(model, V)
     n = m.state_size
     x = array("state", state, shape=(n,)).copy()
+    if not x.any():
+        raise ValueError("state must not be all zero: the centred state is the trivial solution, no orbit")
     iy = m.lateral_index
     iv = iy + n // 2  # the lateral velocity of the same wheelset
     free = [i for i in range(n) if i != iv]
@@ -540,9 +660,7 @@ def periodic_orbit(
 
     section.direction = -1.0  # a maximum of the lateral displacement
     # Move the guess along its own trajectory to the section ẏ = 0, so that it meets the phase condition.
-    sol = scipy.integrate.solve_ivp(
-        m.rhs, (0.0, 2.0 * T), x, method="DOP853", rtol=rtol, atol=1e-12, events=section
-    )
+    sol = _integrate(m.rhs, 2.0 * T, x, "DOP853", rtol, 1e-12, V, events=section)
     if sol.t_events[0].size:
         x = sol.y_events[0][0].copy()
     x[iv] = 0.0
@@ -559,43 +677,41 @@ def periodic_orbit(
         def rhs(t, z):
             return m.rhs(t, z.reshape(n, k)).reshape(-1)
 
-        sol = scipy.integrate.solve_ivp(
-            rhs, (0.0, t_end), starts.reshape(-1), method="DOP853", rtol=rtol, atol=1e-12
-        )
-        if not sol.success:
-            raise SolverError(
-                f"shooting integration failed at V = {V:.2f} m/s: {sol.message}", time=float(sol.t[-1])
-            )
+        sol = _integrate(rhs, t_end, starts.reshape(-1), "DOP853", rtol, 1e-12, V)
         return sol.y[:, -1].reshape(n, k)
 
     # Finite-difference steps relative to each entry, with a floor so that an entry near 0 (such
     # as the lateral velocity on the section) is not perturbed below the integration noise.
     scale = np.maximum(np.abs(x), 1e-2 * np.abs(x).max())
     h = 1e-5 * scale
-    for _ in range(integer("max_iter", max_iter, low=1)):
+    for _ in range(iterations):
         starts = np.column_stack([x] + [x + h[i] * np.eye(n)[i] for i in free])
         ends = flow(starts, T)
         end, residual = ends[:, 0], ends[:, 0] - x
         J = np.empty((n, n))
         J[:, :-1] = (ends[:, 1:] - starts[:, 1:] - residual[:, None]) / h[free]
         J[:, -1] = m.rhs(T, end)  # d/dT of φ_T(x₀)
-        step = np.linalg.solve(J, -residual)
+        try:
+            step = np.linalg.solve(J, -residual)
+        except np.linalg.LinAlgError:
+            raise SolverError(f"shooting at V = {V:.6g} m/s met a singular Jacobian") from None
         x[free] += step[:-1]
         T += step[-1]
+        if not 0.0 < T <= _MAX_DURATION:
+            raise SolverError(f"shooting at V = {V:.6g} m/s drove the period to {T:.6g} s, out of (0, 120]")
         if np.linalg.norm(step[:-1] / scale[free]) < tol and abs(step[-1]) < tol * T:
             break
     else:
-        raise SolverError(f"shooting did not converge in {max_iter} iterations at V = {V:.2f} m/s")
+        raise SolverError(f"shooting did not converge in {max_iter} iterations at V = {V:.6g} m/s")
     # Monodromy matrix (central differences, all trajectories on one step sequence) and one period of
     # the orbit, for the multipliers and the amplitude.
     shifts = np.diag(h)
     ends = flow(np.column_stack([x[:, None] + shifts, x[:, None] - shifts, x]), T)
     monodromy = (ends[:, :n] - ends[:, n : 2 * n]) / (2 * h)
     end = ends[:, -1]
-    sol = scipy.integrate.solve_ivp(
-        m.rhs, (0.0, T), x, method="DOP853", rtol=rtol, atol=1e-12, max_step=T / 200
-    )
-    lateral = sol.y[iy]
+    # One period, read at 400 points from the solver's dense output (DOP853's own interpolant).
+    sol = _integrate(m.rhs, T, x, "DOP853", rtol, 1e-12, V, dense_output=True)
+    lateral = sol.sol(np.linspace(0.0, T, 401))[iy]
     return PeriodicOrbit(
         V,
         float(T),
