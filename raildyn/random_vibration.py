@@ -340,7 +340,9 @@ def delayed_input_csd(psd, omega, delays) -> np.ndarray:
     if tau.size == 0:
         raise ValueError("delays must hold at least one delay, got an empty array")
     dtau = tau[:, None] - tau[None, :]
-    return S[:, None, None] * np.exp(-1j * w[:, None, None] * dtau[None, :, :])
+    with np.errstate(over="ignore", invalid="ignore"):
+        csd = S[:, None, None] * np.exp(-1j * w[:, None, None] * dtau[None, :, :])
+    return _finite(csd, "omega and delays", "phases omega (tau_j - tau_k)")
 
 
 def delayed_mean_psd(psd, omega, delays) -> np.ndarray:
@@ -380,8 +382,9 @@ def delayed_mean_psd(psd, omega, delays) -> np.ndarray:
     tau = _checks.array("delays", delays, ndim=1)
     if tau.size == 0:
         raise ValueError("delays must hold at least one delay, got an empty array")
-    gain = np.exp(-1j * w[:, None] * tau[None, :]).mean(axis=1)
-    return S * np.abs(gain) ** 2
+    with np.errstate(over="ignore", invalid="ignore"):
+        gain = np.exp(-1j * w[:, None] * tau[None, :]).mean(axis=1)
+    return S * np.abs(_finite(gain, "omega and delays", "phases omega tau_j")) ** 2
 
 
 def cancellation_frequencies(delay, count: int) -> np.ndarray:
