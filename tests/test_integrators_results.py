@@ -429,3 +429,129 @@ def test_newmark_newton_with_a_sampled_load_needs_no_tangent():
         jacobian=lambda tk, x, v: (zero, zero),
     )
     assert np.array_equal(a.x, b.x) and a.iterations == b.iterations
+
+
+# ------------------------------------------------------------------ bad input, issue 15 (chapter 2's cases)
+
+
+def test_stiff_hardening_force_is_a_solver_error_or_a_finite_history_on_the_requested_grid():
+    t = np.linspace(0.0, 0.5, 11)
+
+    def hardening(tk, x, v):
+        return -10.0 * x**3
+
+    run = ri.stiff(1.0, 0.1, TWO_PI**2, t, 1.0, 0.0, hardening, rtol=1e-6, atol=1e-9)
+    assert np.array_equal(run.t, t) and all(np.isfinite(getattr(run, q)).all() for q in "xva")
+    # A state whose force overflows: at the start it is the caller's x0, refused by name ...
+    with pytest.raises(
+        ValueError, match=r"force returned a non-finite value at the initial state.*x0 = \[1e\+200\]"
+    ):
+        ri.stiff(1.0, 0.1, TWO_PI**2, t, 1e200, 0.0, hardening)
+    # ... and later a failure of the run, never NaN accelerations.
+    with pytest.raises(SolverError) as info:
+        ri.stiff(1.0, 0.1, TWO_PI**2, t, 1e100, 0.0, hardening)
+    assert np.array_equal(info.value.partial.t, t[: info.value.partial.t.size])
+
+
+@pytest.mark.parametrize("scheme", [ri.rk4, ri.newmark_newton, ri.stiff])
+def test_force_callbacks_are_checked_where_they_are_used(scheme):
+    t = np.linspace(0.0, 0.5, 11)
+    with pytest.raises(ValueError, match=r"force\(t, x, v\) must return 1 values"):
+        scheme(1.0, 0.0, 1.0, t, 1.0, 0.0, lambda tk, x, v: np.zeros(2))
+    with pytest.raises(ValueError, match="force returned a non-finite value at the initial state"):
+        scheme(1.0, 0.0, 1.0, t, 1.0, 0.0, lambda tk, x, v: np.full(1, np.nan))
+    with pytest.raises(ValueError, match=r"force\(t\) must return 1 values"):
+        ri.newmark(1.0, 0.0, 1.0, t, 1.0, 0.0, lambda tk: np.zeros(3))
+    with pytest.raises(TypeError, match="force must be a number or an array"):
+        ri.wilson(1.0, 0.0, 1.0, t, 1.0, 0.0, "abc")
+
+
+@pytest.mark.parametrize("scheme", [ri.newmark_newton, ri.stiff])
+def test_jacobians_are_checked_where_they_are_used(scheme):
+    t = np.linspace(0.0, 0.5, 11)
+
+    def force(tk, x, v):
+        return -x
+
+    with pytest.raises(TypeError, match="jacobian must be a callable"):
+        scheme(1.0, 0.0, 1.0, t, 1.0, 0.0, force, jacobian=1.0)
+    with pytest.raises(
+        ValueError, match=r"jacobian\(t, x, v\) returned a non-finite df/dx at the initial state"
+    ):
+        scheme(
+            1.0,
+            0.0,
+            1.0,
+            t,
+            1.0,
+            0.0,
+            force,
+            jacobian=lambda tk, x, v: (np.full((1, 1), np.nan), np.zeros((1, 1))),
+        )
+    with pytest.raises(ValueError, match=r"jacobian\(t, x, v\) df/dv must have shape \(1, 1\)"):
+        scheme(1.0, 0.0, 1.0, t, 1.0, 0.0, force, jacobian=lambda tk, x, v: (np.zeros((1, 1)), np.zeros(2)))
+
+
+@pytest.mark.parametrize(
+    ("scheme", "setting", "value"),
+    [
+        (ri.stiff, "rtol", np.nan),
+        (ri.stiff, "rtol", np.inf),
+        (ri.stiff, "atol", 0.0),
+        (ri.stiff, "atol", -1e-9),
+        (ri.newmark_newton, "tol", 0.0),
+        (ri.newmark_newton, "tol", 2.0),
+        (ri.newmark_newton, "max_iter", 10**12),
+        (ri.newmark_newton, "max_iter", 2.5),
+        (ri.newmark_newton, "beta", 0.0),
+        (ri.newmark, "gamma", 0.4),
+        (ri.hht_alpha, "alpha", -0.5),
+        (ri.wilson, "theta", np.nan),
+    ],
+)
+def test_solver_settings_are_checked(scheme, setting, value):
+    t = np.linspace(0.0, 0.5, 11)
+    with pytest.raises((ValueError, TypeError), match=rf"\b{setting} must"):
+        scheme(1.0, 0.0, 1.0, t, 1.0, 0.0, **{setting: value})
+
+
+def test_unknown_scheme_parameters_are_named():
+    t = np.linspace(0.0, 0.5, 11)
+    with pytest.raises(TypeError, match="got unknown not_a_parameter"):
+        ri.integrate("newmark", 1.0, 0.0, 1.0, t, 1.0, 0.0, not_a_parameter=1.0)
+    with pytest.raises(TypeError, match="got unknown beta"):
+        ri.stability_limit("wilson", beta=0.25)
+
+
+def test_results_built_by_hand_are_checked():
+    t = np.linspace(0.0, 1.0, 5)
+    with pytest.raises(ValueError, match="x must contain only finite numbers"):
+        ri.IntegrationResult(t, np.full((1, 5), np.nan), 0 * t[None], 0 * t[None], "x", 4, 0)
+    with pytest.raises(ValueError, match=r"v must have shape \(n, m\)"):
+        ri.IntegrationResult(t, 0 * t[None], np.zeros((1, 4)), 0 * t[None], "x", 4, 0)
+    with pytest.raises(ValueError, match="steps must be an integer"):
+        ri.IntegrationResult(t, 0 * t[None], 0 * t[None], 0 * t[None], "x", -1, 0)
+    with pytest.raises(ValueError, match="wrt_velocity must be 2x2"):
+        ri.ForceJacobian(np.eye(2), np.eye(3))
+    with pytest.raises(ValueError, match="stability_limit_dt_over_T may be inf only"):
+        ri.SchemeAccuracy(
+            "rk4", {}, 0.0, np.array([0.1]), np.array([1.0]), np.array([0.0]), np.array([0.0]), np.inf
+        )
+    # The documented NaN of a period elongation, where the computed motion does not oscillate, is kept.
+    chart = ri.scheme_accuracy("central_difference", [0.1, 0.5])
+    assert np.isnan(chart.period_elongation_fraction[1]) and np.isfinite(chart.period_elongation_fraction[0])
+
+
+def test_analysis_domains():
+    with pytest.raises(ValueError, match="dt_over_T must be <= 1e\\+06"):
+        ri.spectral_radius("newmark", 1e300)
+    with pytest.raises(ValueError, match="eigenvalue must be nonzero"):
+        ri.first_order_step_limit("rk4", 0.0)
+    with pytest.raises(ValueError, match="duration must be in"):
+        ri.convergence_study("rk4", (8, 16), 1e300)
+    with pytest.raises(ValueError, match="step_counts must be an integer in"):
+        ri.convergence_study("rk4", (8, 10**12))
+    with pytest.raises(ValueError, match="size must be 2n or 3n"):
+        ri.linear.recursion_matrices(
+            ri.linear.houbolt_step(np.eye(1), np.zeros((1, 1)), np.eye(1), 0.1), 4, 1
+        )

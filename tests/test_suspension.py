@@ -168,3 +168,17 @@ def test_friction_amplitude_loss_against_a_simulation():
     np.testing.assert_allclose(drops, sus.friction_amplitude_loss(F, k), atol=1e-4)
     with pytest.raises(ValueError, match="stiffness must be > 0"):
         sus.friction_amplitude_loss(F, 0.0)
+
+
+def test_bad_input_is_refused_by_name():
+    with pytest.raises(
+        ValueError, match=r"clearance has shape \(2,\), which does not broadcast against deflection"
+    ):
+        sus.clearance_force([-0.02, 0.0, 0.02], [0.01, 0.02], 1.0e6)
+    with pytest.raises(ValueError, match="velocity must not be empty"):
+        sus.damper_force([], 1.0e4)
+    damper = sus.FrictionDamper(100.0, 1e-3)
+    with pytest.raises(ValueError, match="t must be a finite number"):
+        damper.force(np.nan, np.zeros(1), np.zeros(1))
+    with pytest.raises(ValueError, match=r"x must have the shape of v"):
+        damper.jacobian(0.0, np.zeros(2), np.zeros(1))

@@ -425,7 +425,9 @@ def general_force(force, p: Problem, *, finite: bool = True):
                 )
             return out
 
-        _checks.returned("force", force(p.t[0], p.x0, p.v0), at=initial_state(p))
+        with np.errstate(over="ignore", invalid="ignore"):  # a non-finite value is refused just below
+            first = force(p.t[0], p.x0, p.v0)
+        _checks.returned("force", first, at=initial_state(p))
         return checked
     table = sampled_load(force, p)
     last = p.t.size - 2

@@ -241,13 +241,17 @@ def period_elongation(method: str, dt_over_T, damping_ratio: float = 0.0, **para
     >>> round(period_elongation("average_acceleration", 0.1), 8), round(closed_form, 8)
     (0.03207491, 0.03207491)
     """
+    return _shape(_principal_elongation(method, dt_over_T, damping_ratio, params), dt_over_T)
+
+
+def _principal_elongation(method, dt_over_T, damping_ratio, params) -> np.ndarray:
+    """The period elongation (k,) from the principal roots; NaN where the root is real."""
     lam, ratios = _principal(method, dt_over_T, damping_ratio, params)
     xi = damping_ratio
     phase = np.abs(np.angle(lam))
     exact = 2 * np.pi * ratios * np.sqrt(1 - xi * xi)  # ω_d Δt
     with np.errstate(divide="ignore"):
-        pe = np.where(np.abs(lam.imag) > 1e-12 * np.abs(lam), exact / phase - 1.0, np.nan)
-    return _shape(pe, dt_over_T)
+        return np.where(np.abs(lam.imag) > 1e-12 * np.abs(lam), exact / phase - 1.0, np.nan)
 
 
 def amplitude_decay(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
@@ -416,7 +420,8 @@ def stable_step(method: str, M, C, K, **params) -> float:
     method : str
         One of ``METHODS``.
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative.
     **params
         The scheme's parameters (see :func:`amplification_matrix`).
 
@@ -455,7 +460,8 @@ def stiffness_ratio(M, C, K) -> float:
     Parameters
     ----------
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative.
 
     Returns
     -------
@@ -523,8 +529,9 @@ class SchemeAccuracy:
     stability_limit_dt_over_T : float
         Largest stable Δt/T (inf: unconditionally stable; 0: never stable).
 
-    The values are checked: finite, shaped (k,) alike, ρ >= 0, and NaN only where the
-    period elongation is documented to hold it.
+    The values are checked: shaped (k,) alike and finite, ρ >= 0, with NaN only where the
+    period elongation is documented to hold it and an infinite limit only for an
+    unconditionally stable scheme.
     """
 
     method: str
@@ -545,17 +552,30 @@ class SchemeAccuracy:
             values = array(name, getattr(self, name), ndim=1, low=low)
             if values.size != k:
                 raise ValueError(f"{name} must have shape ({k},) like dt_over_T, got shape {values.shape}")
+        chosen = _parameters(self.method, self.parameters)
         pe = _checks._numbers("period_elongation_fraction", self.period_elongation_fraction)
         if pe.shape != (k,) or np.isinf(pe).any():
             raise ValueError(
                 f"period_elongation_fraction must have shape ({k},) like dt_over_T and hold finite values "
                 f"(or NaN where the motion does not oscillate), got {pe!r:.80}"
             )
+        # NaN is documented where the computed motion does not oscillate, and only there.
+        expected = np.isnan(_principal_elongation(self.method, self.dt_over_T, self.damping_ratio, chosen))
+        if np.any(np.isnan(pe) != expected):
+            raise ValueError(
+                f"period_elongation_fraction may be NaN only where the computed motion of {self.method} does "
+                f"not oscillate; got NaN at {np.isnan(pe).sum()} steps, expected at {expected.sum()}"
+            )
         limit = _checks._numbers("stability_limit_dt_over_T", self.stability_limit_dt_over_T)
         if limit.ndim or not limit >= 0:
             raise ValueError(
                 f"stability_limit_dt_over_T must be a number >= 0 (inf: unconditionally stable), "
                 f"got {self.stability_limit_dt_over_T!r}"
+            )
+        if np.isinf(limit) and np.isfinite(stability_limit(self.method, self.damping_ratio, **chosen)):
+            raise ValueError(
+                f"stability_limit_dt_over_T may be inf only for an unconditionally stable scheme, "
+                f"and {self.method} is not"
             )
 
     def _draw(self, ax, artists, y, ylabel, style) -> dict:

@@ -116,7 +116,8 @@ def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
     Parameters
     ----------
     M, C, K : ndarray, shape (n, n)
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite.
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite;
+        C and K may be non-symmetric, zero or negative.
     h : float or ndarray, shape (k, 1, 1)
         Time step, s, > 0; an array runs k steps at once (the test oscillator at k steps,
         for the analysis).
@@ -155,7 +156,8 @@ def wilson_step(M, C, K, h, theta) -> Step:
     Parameters
     ----------
     M, C, K : ndarray, shape (n, n)
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite.
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite;
+        C and K may be non-symmetric, zero or negative.
     h : float or ndarray, shape (k, 1, 1)
         Time step, s, > 0; an array runs k steps at once (for the analysis).
     theta : float
@@ -195,7 +197,8 @@ def central_difference_step(M, C, K, h) -> Step:
     Parameters
     ----------
     M, C, K : ndarray, shape (n, n)
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite.
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite;
+        C and K may be non-symmetric, zero or negative.
     h : float or ndarray, shape (k, 1, 1)
         Time step, s, > 0; an array runs k steps at once (for the analysis).
 
@@ -224,7 +227,8 @@ def houbolt_step(M, C, K, h) -> Step:
     Parameters
     ----------
     M, C, K : ndarray, shape (n, n)
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite.
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m), finite;
+        C and K may be non-symmetric, zero or negative.
     h : float or ndarray, shape (k, 1, 1)
         Time step, s, > 0; an array runs k steps at once (for the analysis).
 
@@ -505,7 +509,9 @@ def newmark(M, C, K, t, x0, v0, force=None, *, gamma=0.5, beta=0.25) -> Integrat
     Parameters
     ----------
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like, shape (n,), or float
@@ -579,7 +585,9 @@ def average_acceleration(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     Parameters
     ----------
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like, shape (n,), or float
@@ -606,7 +614,9 @@ def linear_acceleration(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     Parameters
     ----------
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like, shape (n,), or float
@@ -631,7 +641,9 @@ def hht_alpha(M, C, K, t, x0, v0, force=None, *, alpha=-0.05) -> IntegrationResu
     Parameters
     ----------
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like, shape (n,), or float
@@ -661,7 +673,9 @@ def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4) -> IntegrationResult:
     Parameters
     ----------
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like, shape (n,), or float
@@ -696,7 +710,9 @@ def central_difference(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     Parameters
     ----------
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like, shape (n,), or float
@@ -750,7 +766,9 @@ def houbolt(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     Parameters
     ----------
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like, shape (n,), or float

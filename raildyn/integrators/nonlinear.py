@@ -39,9 +39,13 @@ from raildyn.vibration import first_order_matrix
 # answer, so a step that needs more than a few dozen will not converge at all.
 MAX_ITERATIONS = 1000
 
+# The smallest absolute tolerance of the stiff solver, in the units of the state (m, m/s, rad):
+# below, it means nothing physical and only keeps the solver stepping finely near zero crossings.
+MIN_ATOL = 1e-20
+
 # Steps the stiff solver may take: a bound on the run (a million steps of an implicit
 # solver is hours of work); a run that needs more is reported as a failure.
-MAX_STIFF_STEPS = 1_000_000
+MAX_STIFF_STEPS = 20_000
 
 __all__ = ["abm", "forward_euler", "newmark_newton", "rk4", "stiff"]
 
@@ -132,7 +136,9 @@ def forward_euler(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     Parameters
     ----------
     M, C, K : array_like (n, n) or float
-        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like (n,) or float
@@ -166,7 +172,9 @@ def rk4(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     Parameters
     ----------
     M, C, K : array_like (n, n) or float
-        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like (n,) or float
@@ -216,7 +224,9 @@ def abm(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     Parameters
     ----------
     M, C, K : array_like (n, n) or float
-        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like (n,) or float
@@ -293,7 +303,9 @@ def newmark_newton(
     Parameters
     ----------
     M, C, K : array_like (n, n) or float
-        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like (n,) or float
@@ -349,7 +361,9 @@ def newmark_newton(
     f = general_force(force, p)
     n, h, m = p.n, p.h, p.t.size
     if jacobian is not None:
-        force_tangent(jacobian(p.t[0], p.x0, p.v0), n, p.t[0], initial=initial_state(p))
+        with np.errstate(over="ignore", invalid="ignore"):  # a non-finite tangent is refused just below
+            first = jacobian(p.t[0], p.x0, p.v0)
+        force_tangent(first, n, p.t[0], initial=initial_state(p))
     X, V, A = np.empty((m, n)), np.empty((m, n)), np.empty((m, n))
     X[0], V[0] = p.x0, p.v0
     A[0] = np.linalg.solve(p.M, f(p.t[0], p.x0, p.v0) - p.C @ p.v0 - p.K @ p.x0)
@@ -429,7 +443,9 @@ def stiff(
     Parameters
     ----------
     M, C, K : array_like (n, n) or float
-        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m), stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s: where the answer is wanted (scipy chooses its own steps).
     x0, v0 : array_like (n,) or float
@@ -442,8 +458,9 @@ def stiff(
     method : {"Radau", "BDF", "LSODA"}
         scipy's solver.
     rtol, atol : float
-        scipy's relative and absolute tolerances, each in [1e-13, 1) (below 1e-13 scipy would
-        silently raise them; atol is in the units of the state, m and m/s).
+        scipy's relative tolerance, in [1e-13, 1) (below, scipy would silently raise it), and
+        absolute tolerance, in the units of the state (m, m/s), in [1e-20, 1) (below, it means
+        nothing physical and only slows the solver near zero crossings).
 
     Returns
     -------
@@ -471,14 +488,16 @@ def stiff(
     (1.0, 'stiff_radau')
     """
     _checks.choice("method", method, _STIFF)
-    rtol, atol = _checks.tolerance("rtol", rtol), _checks.tolerance("atol", atol)
+    rtol, atol = _checks.tolerance("rtol", rtol), _checks.tolerance("atol", atol, low=MIN_ATOL)
     if jacobian is not None:
         _checks.function("jacobian", jacobian)
     p = problem(M, C, K, t, x0, v0)
     n, m = p.n, p.t.size
     rhs, acceleration = _first_order(p, force, finite=False)
     if jacobian is not None:
-        force_tangent(jacobian(p.t[0], p.x0, p.v0), n, p.t[0], initial=initial_state(p))
+        with np.errstate(over="ignore", invalid="ignore"):  # a non-finite tangent is refused just below
+            first = jacobian(p.t[0], p.x0, p.v0)
+        force_tangent(first, n, p.t[0], initial=initial_state(p))
     base = first_order_matrix(p.M, p.C, p.K)
     Minv = np.linalg.inv(p.M)
 

@@ -53,7 +53,9 @@ def integrate(method: str, M, C, K, t, x0, v0, force=None, **params) -> Integrat
     method : str
         One of ``METHODS``.
     M, C, K : array_like, shape (n, n), or float
-        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m).
+        Mass (kg; symmetric positive definite), damping (N·s/m) and stiffness (N/m);
+        finite. C and K may be non-symmetric, zero or negative: an undamped or unstable
+        system is integrated as it is (a blow-up raises SolverError).
     t : array_like, shape (m,)
         Uniform time grid, s.
     x0, v0 : array_like, shape (n,), or float
