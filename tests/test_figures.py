@@ -29,8 +29,10 @@ def test_fig_1_5_marks_peaks_one_damped_period_apart():
 
 
 def test_unknown_figure_id():
-    with pytest.raises(ValueError, match="unknown figure id"):
+    with pytest.raises(ValueError, match=r"id must be one of \['fig1.4', .*got 'fig99.1'"):
         figures.make("fig99.1")
+    with pytest.raises(TypeError, match="id must be a string"):
+        figures.show(1.4)
 
 
 def test_command_line_writes_every_figure(tmp_path, capsys):
@@ -60,15 +62,58 @@ def test_save_all_writes_the_chosen_ids_format_by_format_into_a_new_directory(tm
 
 
 def test_register_refuses_an_id_registered_twice():
-    with pytest.raises(ValueError, match="'fig1.4' is registered twice"):
-        figures.register("fig1.4", "again", chapter=1)(figures.new_figure)
+    with pytest.raises(ValueError, match="'fig1.4' is registered already"):
+        figures.register("fig1.4", "again", chapter=1)
     assert figures.REGISTRY["fig1.4"].caption != "again"
+
+
+def test_a_figure_spec_is_checked_when_it_is_made():
+    draw = figures.new_figure
+    with pytest.raises(ValueError, match=r"chapter must be an integer in \[1, 11\]"):
+        figures.register("fig12.1", "no such chapter", chapter=12)
+    with pytest.raises(ValueError, match="book_figure must be a figure number such as '1.4'"):
+        figures.FigureSpec("fig1.x", "caption", "one", 1, draw)
+    with pytest.raises(ValueError, match="id must be a file name"):
+        figures.FigureSpec("../fig", "caption", None, 1, draw)
+    with pytest.raises(TypeError, match="draw must be a callable"):
+        figures.FigureSpec("fig1.x", "caption", None, 1, None)
+    with pytest.raises(TypeError, match="figure must be a matplotlib.figure.Figure"):
+        figures.FigureView(figures.REGISTRY["fig1.4"], "a picture")
+
+
+def test_make_checks_what_a_draw_function_returns():
+    figures.REGISTRY["fig1.none"] = figures.FigureSpec("fig1.none", "draws nothing", None, 1, lambda: None)
+    try:
+        with pytest.raises(TypeError, match="draw function of figure 'fig1.none' must return a matplotlib"):
+            figures.make("fig1.none")
+    finally:
+        del figures.REGISTRY["fig1.none"]
+
+
+def test_save_all_refuses_bad_arguments_before_writing(tmp_path):
+    out = tmp_path / "never"
+    with pytest.raises(TypeError, match="out must be a str or pathlib.Path"):
+        figures.save_all(None, ids=["fig1.4"])
+    with pytest.raises(ValueError, match=r"ids must be one of \[.*got 'abc'"):
+        figures.save_all(out, ids="abc")
+    with pytest.raises(TypeError, match="ids must be a string or an iterable of strings"):
+        figures.save_all(out, ids=1.0)
+    with pytest.raises(ValueError, match="ids must name at least one"):
+        figures.save_all(out, ids=[])
+    with pytest.raises(ValueError, match=r"formats must be one of \[.*got 'abc'"):
+        figures.save_all(out, formats="abc", ids=["fig1.4"])
+    with pytest.raises(TypeError, match="progress must be True or False"):
+        figures.save_all(out, ids=["fig1.4"], progress="no")
+    assert not out.exists()
+    assert figures.save_all(out, formats="svg", ids="fig1.4", progress=False) == [out / "fig1.4.svg"]
 
 
 def test_new_figure_is_constrained_and_takes_figure_arguments():
     fig = figures.new_figure(figsize=(4.0, 3.0))
     assert isinstance(fig, Figure) and fig.get_layout_engine() is not None
     assert tuple(fig.get_size_inches()) == (4.0, 3.0)
+    with pytest.raises(TypeError, match=r"unknown keyword\(s\) \['figsise'\]"):
+        figures.new_figure(figsise=(4.0, 3.0))
 
 
 def test_the_registry_exports_what_notebooks_and_plug_ins_use():

@@ -82,3 +82,47 @@ def test_bad_input():
         ride.ride_quality_history([1.0, 2.0], 0.01)
     with pytest.raises(ValueError, match="dt"):
         ride.ride_quality_history(np.ones(10), 0.0)
+    with pytest.raises(TypeError, match="psd must be a number or an array"):
+        ride.ride_quality("abc", np.linspace(0.0, 10.0, 5))  # was "could not convert string to float"
+    with pytest.raises(ValueError, match=r"psd must have shape \(5\), got shape \(4,\)"):
+        ride.ride_quality(np.ones(4), np.linspace(0.0, 10.0, 5))
+    with pytest.raises(ValueError, match="psd must be >= 0"):
+        ride.ride_quality(-np.ones(5), np.linspace(0.0, 10.0, 5))
+    with pytest.raises(ValueError, match="frequency must not be empty"):
+        ride.sperling_weighting([])
+    with pytest.raises(TypeError, match="direction must be a string"):
+        ride.sperling_harmonic(0.3, 4.0, None)
+    with pytest.raises(ValueError, match="rms must be in"):
+        ride.RideQuality(-0.1, 0.0, 0.0, 0.0)
+
+
+def test_the_weightings_are_the_plain_quotients_and_stay_finite_far_up():
+    f = np.array([0.0, 0.3, 1.0, 4.0, 12.5, 80.0, 400.0])
+    s = 2j * np.pi * f
+    w1, w2, w3, w4, w5, w6 = (2 * np.pi * x for x in (0.4, 100.0, 12.5, 12.5, 2.37, 3.35))
+    q1 = 1 / np.sqrt(2)
+    direct = (
+        s**2 / (s**2 + w1 * s / q1 + w1**2)
+        * w2**2 / (s**2 + w2 * s / q1 + w2**2)
+        * (1 + s / w3) / (1 + s / (0.63 * w4) + (s / w4) ** 2)
+        * (1 + s / (0.91 * w5) + (s / w5) ** 2) / (1 + s / (0.91 * w6) + (s / w6) ** 2) * (w5 / w6) ** 2
+    )  # fmt: skip
+    np.testing.assert_allclose(ride.iso2631_weighting(f, "Wk"), direct, rtol=1e-13, atol=1e-300)
+    c, n1, n2, d1, d2, d3 = 0.588, 1.911, 0.25, 0.277, 1.563, 0.0368
+    plain = c * np.sqrt((n1 * f**2 + (n2 * f**2) ** 2) / ((1 - d1 * f**2) ** 2 + (d2 * f - d3 * f**3) ** 2))
+    np.testing.assert_allclose(ride.sperling_weighting(f), plain, rtol=1e-13)
+    huge = np.array([1e6, 1e150, 1e300])
+    for weight in (ride.sperling_weighting(huge), np.abs(ride.iso2631_weighting(huge, "Wd"))):
+        assert np.all(np.isfinite(weight)) and np.all(np.diff(weight) <= 0)
+
+
+def test_large_accelerations_stay_finite():
+    # (a³F/f)^0.1 overflowed for a = 1e300; the index is a^0.3 (F/f)^0.1
+    assert ride.sperling_harmonic(1e300, 4.0) == pytest.approx(
+        ride.sperling_harmonic(0.3, 4.0) * (1e300 / 0.3) ** 0.3
+    )
+    t = np.arange(4000) * 0.005
+    a = np.sin(2 * np.pi * 2.0 * t)
+    small, large = ride.ride_quality_history(a, 0.005), ride.ride_quality_history(1e300 * a, 0.005)
+    assert large.rms == pytest.approx(1e300 * small.rms, rel=1e-12)
+    assert large.iso_rms == pytest.approx(1e300 * small.iso_rms, rel=1e-12)

@@ -46,3 +46,41 @@ def test_static_grid_must_name_one_or_two_controls():
 
     with pytest.raises(ValueError, match="one or two controls"):
         frames_html(lambda **v: b"", {}, {}, alt="x")
+
+
+def test_the_widget_machinery_refuses_bad_input_by_name():
+    from raildyn.widgets import LiveFigure, Recipe, assemble
+    from raildyn.widgets._core import slider
+
+    with pytest.raises(ValueError, match=r"nrows must be an integer in \[1, 10\]"):
+        LiveFigure(0)
+    with pytest.raises(ValueError, match="figsize must be at most 40.0 inches"):
+        LiveFigure(figsize=(100.0, 3.0))
+    with pytest.raises(TypeError, match="dpi must be an integer"):
+        LiveFigure(dpi=80.5)
+    controls = {"a": slider("a", 0.5, 0.0, 1.0, 0.5)}
+    with pytest.raises(TypeError, match="controls must be a mapping of names to ipywidgets controls"):
+        assemble({"a": 0.5}, LiveFigure(), lambda v: None)
+    with pytest.raises(TypeError, match="live must be a LiveFigure"):
+        assemble(controls, None, lambda v: None)
+    with pytest.raises(TypeError, match="redraw must return None"):
+        assemble(controls, LiveFigure(), lambda v: [v["a"]])
+    with pytest.raises(TypeError, match="setup must be a callable"):
+        Recipe(lambda: controls, None)
+    with pytest.raises(ValueError, match="static must map one or two control names"):
+        Recipe(lambda: controls, lambda live, status: lambda v: None, static={"a": []})
+
+
+def test_a_recipe_checks_what_its_callables_return_when_it_uses_them():
+    from raildyn.widgets import Recipe
+    from raildyn.widgets._core import slider
+
+    def controls():
+        return {"a": slider("a", 0.5, 0.0, 1.0, 0.5)}
+
+    with pytest.raises(TypeError, match="controls must return a dict of ipywidgets controls"):
+        Recipe(lambda: [0.5], lambda live, status: lambda v: None).build()
+    with pytest.raises(TypeError, match="setup must return the redraw function"):
+        Recipe(controls, lambda live, status: None).build()
+    with pytest.raises(ValueError, match=r"static names controls \['b'\]"):
+        Recipe(controls, lambda live, status: lambda v: None, static={"b": [1.0]}).defaults()

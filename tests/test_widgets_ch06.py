@@ -75,9 +75,21 @@ def test_ride_run_gives_a_frozen_result_whose_measures_are_those_of_its_parts():
         ({"speed_kmh": float("nan")}, ValueError, "speed_kmh"),
         ({"seed": -1}, ValueError, "seed"),
         ({"seed": 1.5}, TypeError, "seed"),
+        ({"track_label": None}, TypeError, "track_label must be a string"),
+        ({"speed_kmh": 1e300}, ValueError, r"speed_kmh must be in \[10.0, 400.0\]"),  # was a speed error
     ],
 )
 def test_ride_run_refuses_bad_input_naming_the_parameter(changes, error, match):
     args = {"track_label": "FRA class 4", "speed_kmh": 120.0, "seed": 1} | changes
     with pytest.raises(error, match=match):
         chapter06.ride_run(**args)
+
+
+def test_a_ride_run_result_is_validated():
+    run = chapter06.ride_run("FRA class 4", 200.0, 1)
+    with pytest.raises(ValueError, match="t must be strictly increasing"):
+        dataclasses.replace(run, t=run.t[::-1])
+    with pytest.raises(ValueError, match="acceleration must have shape"):
+        dataclasses.replace(run, acceleration=run.acceleration[1:])
+    with pytest.raises(TypeError, match="spectrum must be a ResponseSpectrum"):
+        dataclasses.replace(run, spectrum=None)

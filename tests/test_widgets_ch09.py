@@ -50,3 +50,20 @@ def test_braking_widget_envelope_is_the_runs_own_plot_moved_in_place():
     assert (
         f"{run.peak.kind} at coupler {run.peak.coupler} ({run.peak.offset:.0f} m behind the front)" in status
     )
+
+
+@pytest.mark.parametrize(
+    ("changes", "error", "match"),
+    [
+        ({"cars": [10, 10]}, TypeError, "cars must be an integer"),  # was "unhashable type" from the cache
+        ({"cars": 201}, ValueError, r"cars must be an integer in \[1, 200\]"),
+        ({"slack_mm": -1.0}, ValueError, "slack_mm must be in"),  # was blamed on slack
+        ({"slack_mm": None}, TypeError, "slack_mm must be a real number"),
+        ({"signal_speed": 400.0}, ValueError, r"signal_speed must be in \(0.0, 343.0\]"),
+        ({"speed_kmh": 0.0}, ValueError, "speed_kmh must be in"),  # was a run of a standing train
+    ],
+)
+def test_braking_run_refuses_bad_input_naming_the_parameter(changes, error, match):
+    args = {"cars": 10, "slack_mm": 25.0, "signal_speed": 250.0, "speed_kmh": 72.0} | changes
+    with pytest.raises(error, match=match):
+        chapter09.braking_run(**args)

@@ -15,19 +15,48 @@ from __future__ import annotations
 import base64
 import html
 import importlib
+import inspect
 import io
+import os
 import pkgutil
+import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
 import matplotlib
+from matplotlib.backend_bases import FigureCanvasBase
 from matplotlib.figure import Figure
 
-from raildyn import plots
+from raildyn import _checks, plots
 from raildyn._progress import progress_bar
 
 __all__ = ["REGISTRY", "FigureSpec", "FigureView", "make", "new_figure", "register", "save_all", "show"]
+
+#: The book's chapters (Garg & Dukkipati 1984 has eleven).
+_CHAPTERS = (1, 11)
+#: An id is also a file name: a letter or digit, then letters, digits, ".", "_" or "-".
+_ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]*")
+#: A figure number of the book: chapter.number, with an optional letter ("1.4", "6.12b").
+_BOOK_FIGURE = re.compile(r"[0-9]+\.[0-9]+[a-z]?")
+
+
+def _check_spec(id, caption, book_figure, chapter) -> None:
+    """The checks shared by :class:`FigureSpec` and :func:`register`."""
+    if not isinstance(id, str):
+        raise TypeError(f"id must be a string, got {id!r} of type {type(id).__name__}")
+    if not _ID.fullmatch(id):
+        raise ValueError(
+            f"id must be a file name of letters, digits, '.', '_' and '-' (e.g. 'fig1.4'), got {id!r}"
+        )
+    _checks.instance("caption", caption, str, "string")
+    if book_figure is not None:
+        _checks.instance("book_figure", book_figure, str, "string or None")
+        if not _BOOK_FIGURE.fullmatch(book_figure):
+            raise ValueError(
+                f"book_figure must be a figure number such as '1.4' (or None), got {book_figure!r}"
+            )
+    _checks.integer("chapter", chapter, low=_CHAPTERS[0], high=_CHAPTERS[1])
 
 
 @dataclass(frozen=True)
@@ -37,15 +66,18 @@ class FigureSpec:
     Attributes
     ----------
     id : str
-        Stable identifier, also the file name (``fig1.4``).
+        Stable identifier, also the file name (``fig1.4``): letters, digits, ".",
+        "_" and "-", starting with a letter or a digit.
     caption : str
         What the figure shows, in the companion's words.
     book_figure : str or None
-        The figure number in Garg & Dukkipati (1984), where it mirrors one.
+        The figure number in Garg & Dukkipati (1984), where it mirrors one
+        (chapter.number, e.g. ``"1.4"``).
     chapter : int
-        The book's chapter the figure belongs to.
+        The book's chapter the figure belongs to, 1–11.
     draw : callable
-        ``draw()`` builds and returns the figure (a ``matplotlib.figure.Figure``).
+        ``draw()`` builds and returns the figure (a ``matplotlib.figure.Figure``);
+        it is called, and what it returns checked, by :func:`make`.
     """
 
     id: str
@@ -53,6 +85,10 @@ class FigureSpec:
     book_figure: str | None
     chapter: int
     draw: Callable[[], Figure]
+
+    def __post_init__(self):
+        _check_spec(self.id, self.caption, self.book_figure, self.chapter)
+        _checks.function("draw", self.draw)
 
 
 #: Every registered figure, by id; filled by :func:`register` when ``raildyn.figures`` is imported.
@@ -67,21 +103,25 @@ def register(id: str, caption: str, *, chapter: int, book_figure: str | None = N
     Parameters
     ----------
     id : str
-        Stable identifier of the figure, also its file name (``fig1.4``); unique.
+        Stable identifier of the figure, also its file name (``fig1.4``); unique, of
+        letters, digits, ".", "_" and "-". An id registered already raises ``ValueError``.
     caption : str
         What the figure shows, in the companion's words.
     chapter : int
-        The book's chapter the figure belongs to.
+        The book's chapter the figure belongs to, 1–11.
     book_figure : str or None, optional
-        The figure number in Garg & Dukkipati (1984), where the figure mirrors one.
+        The figure number in Garg & Dukkipati (1984), where the figure mirrors one
+        (e.g. ``"1.4"``).
 
     Returns
     -------
     callable
         The decorator: it registers ``draw`` (a function of no arguments returning a
-        ``matplotlib.figure.Figure``) and returns it unchanged. It raises ``ValueError``
-        if ``id`` is registered already.
+        ``matplotlib.figure.Figure``) and returns it unchanged.
     """
+    _check_spec(id, caption, book_figure, chapter)
+    if id in REGISTRY:
+        raise ValueError(f"figure id {id!r} is registered already")
 
     def add(draw: Callable[[], Figure]) -> Callable[[], Figure]:
         if id in REGISTRY:
@@ -113,10 +153,15 @@ def make(id: str) -> Figure:
     ValueError
         If ``id`` is not registered; the message lists the registered ids.
     """
-    if id not in REGISTRY:
-        raise ValueError(f"unknown figure id {id!r}; registered: {sorted(REGISTRY)}")
+    spec = REGISTRY[_checks.choice("id", id, REGISTRY)]
     with matplotlib.rc_context(plots.STYLE):
-        return REGISTRY[id].draw()
+        figure = spec.draw()
+    if not isinstance(figure, Figure):
+        raise TypeError(
+            f"the draw function of figure {id!r} must return a matplotlib.figure.Figure, "
+            f"returned {figure!r:.80} of type {type(figure).__name__}"
+        )
+    return figure
 
 
 class FigureView:
@@ -134,8 +179,8 @@ class FigureView:
     """
 
     def __init__(self, spec: FigureSpec, figure: Figure):
-        self.spec = spec
-        self.figure = figure
+        self.spec = _checks.instance("spec", spec, FigureSpec)
+        self.figure = _checks.instance("figure", figure, Figure, "matplotlib.figure.Figure")
 
     def _png(self) -> bytes:
         buffer = io.BytesIO()
@@ -185,12 +230,12 @@ def save_all(
     ----------
     out : str or pathlib.Path
         Directory to write to; created (with its parents) if missing.
-    formats : iterable of str, optional
-        File formats matplotlib can write (``"png"``, ``"pdf"``, ``"svg"``); one file
-        per figure and format, ``<id>.<format>``, at 150 dpi.
-    ids : iterable of str or None, optional
-        The ids to write, in this order; None (the default) writes every registered
-        figure, sorted by id.
+    formats : str or iterable of str, optional
+        File formats matplotlib can write (``"png"``, ``"pdf"``, ``"svg"``), at least
+        one; one file per figure and format, ``<id>.<format>``, at 150 dpi.
+    ids : str or iterable of str or None, optional
+        The registered ids to write (at least one), in this order; None (the default)
+        writes every registered figure, sorted by id.
     progress : bool, optional
         Show a progress bar (default True).
 
@@ -199,9 +244,12 @@ def save_all(
     list of pathlib.Path
         The files written, figure by figure and format by format.
     """
+    _checks.instance("out", out, (str, os.PathLike), "str or pathlib.Path")
+    formats = _names("formats", formats, FigureCanvasBase.get_supported_filetypes())
+    chosen = sorted(REGISTRY) if ids is None else _names("ids", ids, REGISTRY)
+    progress = _checks.flag("progress", progress)
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    chosen = sorted(REGISTRY) if ids is None else list(ids)
     written = []
     for fid in progress_bar(chosen, desc="figures") if progress else chosen:
         fig = make(fid)
@@ -212,20 +260,43 @@ def save_all(
     return written
 
 
+def _names(name: str, value, options) -> list[str]:
+    """A name or an iterable of names, each one of ``options``, at least one (for save_all)."""
+    items = [value] if isinstance(value, str) else value
+    try:
+        items = list(items)
+    except TypeError:
+        raise TypeError(f"{name} must be a string or an iterable of strings, got {value!r:.80}") from None
+    if not items:
+        raise ValueError(f"{name} must name at least one of {sorted(options)}, got {value!r}")
+    return [_checks.choice(name, item, options) for item in items]
+
+
 def new_figure(**kwargs) -> Figure:
     """A new figure with the constrained layout, for a registered figure function to draw on.
 
     Parameters
     ----------
     **kwargs
-        Passed on to ``matplotlib.figure.Figure`` (``figsize``, ``dpi``, ...).
+        Passed on to ``matplotlib.figure.Figure``: its parameters (``figsize``,
+        ``dpi``, ...) and its settable properties; any other keyword raises ``TypeError``.
 
     Returns
     -------
     matplotlib.figure.Figure
         A new figure, not attached to pyplot (so no display is needed).
     """
+    unknown = sorted(k for k in kwargs if k not in _FIGURE_KEYWORDS)
+    if unknown:
+        raise TypeError(
+            f"new_figure got unknown keyword(s) {unknown}: not parameters or properties of a Figure"
+        )
     return Figure(layout="constrained", **kwargs)
+
+
+_FIGURE_KEYWORDS = frozenset(inspect.signature(Figure.__init__).parameters) - {"self", "kwargs"} | {
+    name[len("set_") :] for name in dir(Figure) if name.startswith("set_")
+}
 
 
 def _load_chapters() -> None:

@@ -20,7 +20,14 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from PIL import Image
 
+from raildyn import _checks
 from raildyn.plots import STYLE
+
+# A widget's figure: at most 10 × 10 panels, at most 40 in a side and 600 dpi (a frame of at most
+# 24,000 pixels a side, already far beyond a screen; the frames are encoded after every change).
+_MAX_PANELS = 10
+_MAX_INCHES = 40.0
+_DPI = (10, 600)
 
 
 class LiveFigure:
@@ -36,14 +43,22 @@ class LiveFigure:
     Parameters
     ----------
     nrows, ncols : int
-        Grid of axes, as in ``Figure.subplots``.
+        Grid of axes, as in ``Figure.subplots``, each 1–10.
     figsize : tuple of float
-        Size in inches.
+        Width and height in inches, each in (0, 40].
     dpi : int
-        Resolution of the PNG frames; 80 keeps a frame near 30 kB and fast to encode.
+        Resolution of the PNG frames, 10–600; 80 keeps a frame near 30 kB and fast to encode.
+    **subplot_kw
+        Passed on to ``Figure.subplots`` (``sharex``, ``subplot_kw``, ...).
     """
 
     def __init__(self, nrows: int = 1, ncols: int = 1, *, figsize=(8.0, 3.6), dpi: int = 80, **subplot_kw):
+        nrows = _checks.integer("nrows", nrows, low=1, high=_MAX_PANELS)
+        ncols = _checks.integer("ncols", ncols, low=1, high=_MAX_PANELS)
+        figsize = tuple(_checks.array("figsize", figsize, shape=(2,), low=0.0, low_open=True).tolist())
+        if max(figsize) > _MAX_INCHES:
+            raise ValueError(f"figsize must be at most {_MAX_INCHES} inches a side, got {figsize!r}")
+        dpi = _checks.integer("dpi", dpi, low=_DPI[0], high=_DPI[1])
         self.dpi = dpi
         with matplotlib.rc_context(STYLE):
             self.figure = Figure(figsize=figsize, dpi=dpi, layout="constrained")
@@ -133,16 +148,18 @@ def assemble(
     Parameters
     ----------
     controls : mapping of name to ipywidgets control
-        The names are the keyword arguments that ``update`` accepts.
+        The names are the keyword arguments that ``update`` accepts; each control is
+        an ``ipywidgets.ValueWidget`` (a slider, a dropdown, ...).
     live : LiveFigure
         The figure that ``redraw`` draws into.
     redraw : callable
         ``redraw(values)`` with ``values`` a dict of the current control values;
-        it computes the model and updates the artists of ``live`` in place.
+        it computes the model and updates the artists of ``live`` in place, and
+        returns None (anything else is refused: it would be lost).
     status : ipywidgets.HTML, optional
         A text line (numbers such as the RMS) that ``redraw`` may update.
     columns : int
-        Controls per row.
+        Controls per row, >= 1.
 
     Returns
     -------
@@ -151,6 +168,12 @@ def assemble(
         ``update(**values)`` sets the named controls, redraws once and returns
         the PNG bytes of the new frame. Unknown names raise ``ValueError``.
     """
+    controls = _controls("controls", controls)
+    live = _checks.instance("live", live, LiveFigure)
+    redraw = _checks.function("redraw", redraw)
+    if status is not None:
+        _checks.instance("status", status, widgets.HTML, "ipywidgets.HTML or None")
+    columns = _checks.integer("columns", columns, low=1)
     defaults = {name: control.value for name, control in controls.items()}
     state = {"quiet": False}
 
@@ -158,7 +181,11 @@ def assemble(
         return {name: control.value for name, control in controls.items()}
 
     def draw() -> bytes:
-        redraw(current())
+        returned = redraw(current())
+        if returned is not None:
+            raise TypeError(
+                f"redraw must return None (it moves the artists in place), returned {returned!r:.80}"
+            )
         return live.refresh()
 
     def on_change(_change) -> None:
@@ -194,6 +221,18 @@ def assemble(
     return container, update
 
 
+def _controls(name: str, value) -> Mapping:
+    """``value`` if it is a mapping of control names (str) to ipywidgets controls, else a TypeError."""
+    if not (
+        isinstance(value, Mapping)
+        and all(isinstance(k, str) and isinstance(c, widgets.ValueWidget) for k, c in value.items())
+    ):
+        raise TypeError(
+            f"{name} must be a mapping of names to ipywidgets controls (ValueWidget), got {value!r:.80}"
+        )
+    return value
+
+
 def slider(
     description: str,
     value: float,
@@ -227,6 +266,23 @@ class Recipe:
     lets :meth:`build` make the live widget and :meth:`static_html` the
     kernel-free copy with the same code (and lets the benchmarks draw one frame
     from nothing, the way ``interact`` redraws: ``benchmarks/common.py``).
+
+    ``controls`` and ``setup`` are stored, and called by :meth:`build`,
+    :meth:`static_html` and :meth:`defaults`, which check what they return.
+
+    Parameters
+    ----------
+    controls : callable
+        ``controls()`` returns a new dict of control name to ipywidgets control.
+    setup : callable
+        ``setup(live, status)`` returns ``redraw(values)`` (see :func:`assemble`).
+    figure : dict, optional
+        Keyword arguments of :class:`LiveFigure`.
+    static : dict, optional
+        Control name to the values precomputed for the page without a kernel (one or
+        two controls, each with at least one value).
+    title : str, optional
+        What the figure shows (the alternative text of the page without a kernel).
     """
 
     controls: Callable[[], dict]
@@ -236,11 +292,43 @@ class Recipe:
     """Control name to the values precomputed for the page without a kernel (one or two controls)."""
     title: str = "interactive figure"
 
+    def __post_init__(self):
+        _checks.function("controls", self.controls)
+        _checks.function("setup", self.setup)
+        _checks.instance("figure", self.figure, dict, "dict of LiveFigure keyword arguments")
+        _checks.instance("static", self.static, dict, "dict of control name to values")
+        if len(self.static) > 2 or not all(
+            isinstance(k, str) and hasattr(v, "__len__") and len(v) > 0 for k, v in self.static.items()
+        ):
+            raise ValueError(
+                "static must map one or two control names to non-empty sequences of values, "
+                f"got {self.static!r:.80}"
+            )
+        _checks.instance("title", self.title, str, "string")
+
+    def _controls(self) -> dict:
+        """A new set of the controls, checked (``controls`` is the user's callable)."""
+        made = self.controls()
+        if not isinstance(made, dict):
+            raise TypeError(f"controls must return a dict of ipywidgets controls, returned {made!r:.80}")
+        _controls("controls", made)
+        missing = sorted(set(self.static) - set(made))
+        if missing:
+            raise ValueError(f"static names controls {missing} that controls() does not make: {sorted(made)}")
+        return made
+
+    def _setup(self, live: LiveFigure, status: widgets.HTML) -> Callable[[dict], None]:
+        redraw = self.setup(live, status)
+        if not callable(redraw):
+            raise TypeError(f"setup must return the redraw function, returned {redraw!r:.80}")
+        return redraw
+
     def build(self) -> tuple[widgets.Box, Callable[..., bytes]]:
         """The live widget: ``(container, update)``."""
+        controls = self._controls()
         live = LiveFigure(**self.figure)
         status = widgets.HTML()
-        container, update = assemble(self.controls(), live, self.setup(live, status), status=status)
+        container, update = assemble(controls, live, self._setup(live, status), status=status)
         if self.static:
             container.static = self.static_html
         return container, update
@@ -249,16 +337,16 @@ class Recipe:
         """The kernel-free counterpart: frames over :attr:`static` behind HTML range inputs."""
         from raildyn.widgets._static import frames_html
 
-        controls = self.controls()
+        controls = self._controls()
         labels = {name: controls[name].description for name in self.static}
         start = {name: _nearest(values, controls[name].value) for name, values in self.static.items()}
         live = LiveFigure(**self.figure)
-        _, update = assemble(controls, live, self.setup(live, widgets.HTML()))
+        _, update = assemble(controls, live, self._setup(live, widgets.HTML()))
         return frames_html(update, self.static, labels, alt=self.title, start=start)
 
     def defaults(self) -> dict:
         """The starting value of every control."""
-        return {name: control.value for name, control in self.controls().items()}
+        return {name: control.value for name, control in self._controls().items()}
 
 
 def _nearest(values, value) -> int:

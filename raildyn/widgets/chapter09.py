@@ -13,35 +13,54 @@ from functools import lru_cache
 import ipywidgets as widgets
 import numpy as np
 
-from raildyn import plots, train
+from raildyn import _checks, plots, train
 from raildyn.widgets._core import Recipe, slider
 
 __all__ = ["braking_run", "braking_run_widget", "string_lining"]
 
 DURATION = 40.0  # s of the braking run shown: the application, the run-in and the settling
 SLACK_GRID = [0, 10, 20, 30, 40, 50, 60, 75]  # mm, precomputed for the page without a kernel
+# The domain of braking_run (its docstring gives the reasons).
+_MAX_CARS = 200
+_MAX_SLACK_MM = 200.0
+_MAX_SIGNAL_SPEED = 343.0  # m/s, the speed of sound in air at 20 °C
+_MAX_SPEED_KMH = 200.0
 
 
-@lru_cache(maxsize=64)
 def braking_run(cars: int, slack_mm: float, signal_speed: float, speed_kmh: float) -> train.TrainRun:
     """The emergency braking run of 2 SD40-2 + ``cars`` loaded hoppers, stretched at the start (cached).
 
     Parameters
     ----------
     cars : int
-        Number of loaded hoppers (>= 1).
+        Number of loaded hoppers, 1–200 (a 3.6 km train, whose run takes a few seconds).
     slack_mm : float
-        Slack of every coupler, mm (>= 0); the run starts with every coupler stretched.
+        Slack of every coupler, mm, 0–200 (draft gear has up to about 75 mm); the run
+        starts with every coupler stretched.
     signal_speed : float
-        Speed of the brake-pipe signal, m/s (> 0).
+        Speed of the brake-pipe signal, m/s, 0 < c <= 343 (a pressure wave in the
+        pipe is not faster than sound in air).
     speed_kmh : float
-        Initial speed of the train, km/h.
+        Initial speed of the train, km/h, 0 < V <= 200 (a braking run starts moving;
+        200 km/h is far above any freight train).
 
     Returns
     -------
     raildyn.train.TrainRun
         The first ``DURATION`` seconds after the emergency application, 401 samples.
     """
+    cars = _checks.integer("cars", cars, low=1, high=_MAX_CARS)
+    slack_mm = _checks.scalar("slack_mm", slack_mm, low=0.0, high=_MAX_SLACK_MM)
+    signal_speed = _checks.scalar(
+        "signal_speed", signal_speed, low=0.0, low_open=True, high=_MAX_SIGNAL_SPEED
+    )
+    speed_kmh = _checks.scalar("speed_kmh", speed_kmh, low=0.0, low_open=True, high=_MAX_SPEED_KMH)
+    return _braking_run(cars, slack_mm, signal_speed, speed_kmh)
+
+
+@lru_cache(maxsize=64)
+def _braking_run(cars: int, slack_mm: float, signal_speed: float, speed_kmh: float) -> train.TrainRun:
+    """:func:`braking_run` for checked arguments, cached (each run is a whole-train integration)."""
     model = train.braking_model(cars, 2, slack=slack_mm / 1000, propagation_speed=signal_speed)
     return train.simulate(model, DURATION, speed_kmh / 3.6, initial_extension=slack_mm / 2000, samples=401)
 
