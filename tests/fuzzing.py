@@ -236,7 +236,8 @@ def mutations(value) -> dict[str, object]:
     if isinstance(value, str):
         return {"unknown": "no-such-name", "type": 1.0, "none": None}
     if _is_numeric_array(value):
-        arr = np.array(value, dtype=float)
+        arr = np.array(value)
+        arr = arr.astype(complex if arr.dtype.kind == "c" else float)
         first = np.zeros(arr.size, dtype=bool)
         first[0] = True
         first = first.reshape(arr.shape)
