@@ -184,9 +184,15 @@ ENTRIES = [
     ),
     fuzz("raildyn.linear_model.SystemMatrices.state_matrix", lambda: on(system2().matrices(30.0))),
     fuzz("raildyn.linear_model.as_linear_system", lambda: call(SOFT)),
-    # The protocol: its methods are called on a model that follows it (a Bogie); the Protocol
-    # class itself cannot be instantiated (see the entry below).
-    fuzz("raildyn.linear_model.LinearModel", lambda: call()),
+    # The protocol: its methods are called on a model that follows it (a Bogie). The Protocol
+    # class itself has no valid call: calling it raises TypeError("Protocols cannot be
+    # instantiated"), so the whole entry is meant to be skipped (the machinery does not yet honour
+    # an entry-wide skip: see the report on issue 15).
+    fuzz(
+        "raildyn.linear_model.LinearModel",
+        lambda: call(),
+        skip={"*": "a typing.Protocol: it cannot be instantiated, and its methods are fuzzed on a Bogie"},
+    ),
     fuzz("raildyn.linear_model.LinearModel.linear_system", lambda: on(Bogie())),
     fuzz("raildyn.linear_model.LinearModel.matrices", lambda: on(Bogie(), 30.0)),
     fuzz("raildyn.linear_model.LinearModel.replace", lambda: on(Bogie(), frame_mass=3000.0)),
@@ -345,6 +351,9 @@ ENTRIES = [
         },  # 1.0: a real eigenvalue
     ),
     fuzz("raildyn.stability.CriticalSpeed.amplitude", lambda: on(critical(), "wheelset ψ")),
+    # inf is the documented answer "stable over the range" / "no limit cycle on the grid" (x = 1e300
+    # makes the lateral stiffness 1e300 N/m: a wheelset stable at every speed); the machinery counts
+    # it as non-finite (see the report on issue 15).
     fuzz(
         "raildyn.stability.critical_speed_map",
         lambda: call(
@@ -360,6 +369,7 @@ ENTRIES = [
         ),
         accepts={"x": "zero", "y": "zero", "x_name": "unknown", "y_name": "unknown"},  # names label the plot
     ),
+    # inf: the documented sentinel, as above.
     fuzz(
         "raildyn.stability.CriticalSpeedMap",
         lambda: call(np.array([1.0, 2.0]), np.array([3.0]), np.array([[50.0, 60.0]]), "x", "y"),
@@ -407,6 +417,7 @@ ENTRIES = [
         lambda: call(NW, [70.0, 40.0], duration=0.3, max_step=1e-2, refine=1, progress=False),
         accepts={"initial_displacement": "negative", "refine": "zero"},
     ),
+    # inf: the documented sentinel, as above.
     fuzz(
         "raildyn.stability.BifurcationDiagram",
         lambda: call(
