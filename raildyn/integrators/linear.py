@@ -15,6 +15,7 @@ the whole history: the same answer to rounding, with O(n) work a step.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -64,12 +65,24 @@ def _solver(matrix: np.ndarray):
     """Factorize once; return a function solving ``matrix @ y = b`` for a vector or block b.
 
     A stack of matrices (k, n, n) (the test oscillator at k steps, for the analysis) is
-    inverted once instead, so that one call serves every step size.
+    inverted once instead, so that one call serves every step size. A singular matrix is
+    refused: the step has no unique answer.
     """
+    singular = ValueError(
+        "M, C, K and the step h (the spacing of t) give a singular effective matrix: the scheme's "
+        "step has no unique answer"
+    )
     if matrix.ndim > 2:
-        inverse = np.linalg.inv(matrix)
+        try:
+            inverse = np.linalg.inv(matrix)
+        except np.linalg.LinAlgError:
+            raise singular from None
         return lambda b: inverse @ b
-    lu = scipy.linalg.lu_factor(matrix, check_finite=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", scipy.linalg.LinAlgWarning)  # refused just below
+        lu = scipy.linalg.lu_factor(matrix, check_finite=False)
+    if np.any(np.diag(lu[0]) == 0.0):
+        raise singular
     return lambda b: scipy.linalg.lu_solve(lu, b, check_finite=False)
 
 
@@ -136,7 +149,8 @@ def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
     gamma, beta = _check_newmark(gamma, beta)
     alpha = scalar("alpha", alpha, low=-1 / 3, high=0.0)
     n = M.shape[-1]
-    solve = _effective(M + (1 + alpha) * (gamma * h * C + beta * h * h * K))
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+        solve = _effective(M + (1 + alpha) * (gamma * h * C + beta * h * h * K))
 
     def step(Z, F0, F1):
         x, v, a = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
@@ -172,12 +186,13 @@ def wilson_step(M, C, K, h, theta) -> Step:
     M, C, K, h = _system(M, C, K, h)
     theta = scalar("theta", theta, low=1.0, high=3.0)
     n = M.shape[-1]
-    tau = theta * h
-    a0, a1 = 6 / tau**2, 3 / tau
-    a2, a3 = 2 * a1, tau / 2
-    a4, a5, a6 = a0 / theta, -a2 / theta, 1 - 3 / theta
-    a7, a8 = h / 2, h * h / 6
-    solve = _effective(K + a0 * M + a1 * C)
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+        tau = theta * h
+        a0, a1 = 6 / tau**2, 3 / tau
+        a2, a3 = 2 * a1, tau / 2
+        a4, a5, a6 = a0 / theta, -a2 / theta, 1 - 3 / theta
+        a7, a8 = h / 2, h * h / 6
+        solve = _effective(K + a0 * M + a1 * C)
 
     def step(Z, F0, F1):
         x, v, a = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
@@ -210,9 +225,10 @@ def central_difference_step(M, C, K, h) -> Step:
     """
     M, C, K, h = _system(M, C, K, h)
     n = M.shape[-1]
-    stiff = K - 2 * M / h**2
-    lag = M / h**2 - C / (2 * h)
-    solve = _effective(M / h**2 + C / (2 * h), stiff, lag)
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+        stiff = K - 2 * M / h**2
+        lag = M / h**2 - C / (2 * h)
+        solve = _effective(M / h**2 + C / (2 * h), stiff, lag)
 
     def step(Z, F0, F1):
         x, x_old = Z[..., :n, :], Z[..., n:, :]
@@ -240,9 +256,10 @@ def houbolt_step(M, C, K, h) -> Step:
     """
     M, C, K, h = _system(M, C, K, h)
     n = M.shape[-1]
-    a0, a1, a2, a3 = 2 / h**2, 11 / (6 * h), 5 / h**2, 3 / h
-    a4, a5, a6, a7 = -2 * a0, -a3 / 2, a0 / 2, a3 / 9
-    solve = _effective(K + a0 * M + a1 * C, a2 * M, a3 * C)
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+        a0, a1, a2, a3 = 2 / h**2, 11 / (6 * h), 5 / h**2, 3 / h
+        a4, a5, a6, a7 = -2 * a0, -a3 / 2, a0 / 2, a3 / 9
+        solve = _effective(K + a0 * M + a1 * C, a2 * M, a3 * C)
 
     def step(Z, F0, F1):
         x, x1, x2 = Z[..., :n, :], Z[..., n : 2 * n, :], Z[..., 2 * n :, :]
@@ -545,34 +562,35 @@ def newmark(M, C, K, t, x0, v0, force=None, *, gamma=0.5, beta=0.25) -> Integrat
 def _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, name) -> IntegrationResult:
     """Newmark (α = 0) or HHT-α with checked parameters; the public functions below name the preset."""
     p = problem(M, C, K, t, x0, v0)
-    load = sampled_load(force, p)
-    n, h = p.n, p.h
-    a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
-    params = {"gamma": gamma, "beta": beta} if name == "newmark" else ({"alpha": alpha} if alpha else {})
-    bound = scale(p, load)
-    modes = _classical_modes(p) if alpha == 0.0 and gamma == 2 * beta and p.t.size > 2 else None
-    if modes is not None:
-        x, v, a, bad = _modal_two_step(p, load, gamma, beta, modes, bound)
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused or reported below
+        load = sampled_load(force, p)
+        n, h = p.n, p.h
+        a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
+        params = {"gamma": gamma, "beta": beta} if name == "newmark" else ({"alpha": alpha} if alpha else {})
+        bound = scale(p, load)
+        modes = _classical_modes(p) if alpha == 0.0 and gamma == 2 * beta and p.t.size > 2 else None
+        if modes is not None:
+            x, v, a, bad = _modal_two_step(p, load, gamma, beta, modes, bound)
+            return _finish(name, p, x, v, a, bad, params)
+        A, B0, B1 = _recursion(newmark_step(p.M, p.C, p.K, h, gamma, beta, alpha), 3 * n, n)
+        if alpha == 0.0 and gamma == 2 * beta and p.t.size > 2:
+            x, v, bad = _two_step(p, load, gamma, beta, A, B0, B1, a0, bound)
+            # a from equilibrium: differencing v instead would lose digits as 1/(ωΔt) for slow modes.
+            a = equilibrium_acceleration(p, x, v, None if load is None else load[: len(x)])
+        elif alpha == 0.0:
+            # Newmark's a₊ satisfies equilibrium at t + Δt, so a is a function of (x, v, f): eliminating it
+            # leaves a recursion on (x, v) alone, two thirds the size. The lower rows of the first-order
+            # matrix, −M⁻¹[K, C], give a from (x, v).
+            E = np.vstack([np.eye(2 * n), first_order_matrix(p.M, p.C, p.K)[n:]])
+            D = np.vstack([np.zeros((2 * n, n)), np.linalg.inv(p.M)])
+            Ar, B0r, B1r = A[: 2 * n] @ E, A[: 2 * n] @ D + B0[: 2 * n], B1[: 2 * n]
+            Z, bad = _recur(Ar, B0r, B1r, np.r_[p.x0, p.v0], load, p.t.size - 1, bound)
+            x, v = Z[:, :n], Z[:, n:]
+            a = equilibrium_acceleration(p, x, v, None if load is None else load[: len(Z)])
+        else:
+            Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, bound)
+            x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
         return _finish(name, p, x, v, a, bad, params)
-    A, B0, B1 = _recursion(newmark_step(p.M, p.C, p.K, h, gamma, beta, alpha), 3 * n, n)
-    if alpha == 0.0 and gamma == 2 * beta and p.t.size > 2:
-        x, v, bad = _two_step(p, load, gamma, beta, A, B0, B1, a0, bound)
-        # a from equilibrium: differencing v instead would lose digits as 1/(ωΔt) for slow modes.
-        a = equilibrium_acceleration(p, x, v, None if load is None else load[: len(x)])
-    elif alpha == 0.0:
-        # Newmark's a₊ satisfies equilibrium at t + Δt, so a is a function of (x, v, f): eliminating it
-        # leaves a recursion on (x, v) alone, two thirds the size. The lower rows of the first-order
-        # matrix, −M⁻¹[K, C], give a from (x, v).
-        E = np.vstack([np.eye(2 * n), first_order_matrix(p.M, p.C, p.K)[n:]])
-        D = np.vstack([np.zeros((2 * n, n)), np.linalg.inv(p.M)])
-        Ar, B0r, B1r = A[: 2 * n] @ E, A[: 2 * n] @ D + B0[: 2 * n], B1[: 2 * n]
-        Z, bad = _recur(Ar, B0r, B1r, np.r_[p.x0, p.v0], load, p.t.size - 1, bound)
-        x, v = Z[:, :n], Z[:, n:]
-        a = equilibrium_acceleration(p, x, v, None if load is None else load[: len(Z)])
-    else:
-        Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, bound)
-        x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
-    return _finish(name, p, x, v, a, bad, params)
 
 
 def average_acceleration(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
@@ -691,13 +709,14 @@ def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4) -> IntegrationResult:
     """
     theta = scalar("theta", theta, low=1.0, high=3.0)
     p = problem(M, C, K, t, x0, v0)
-    load = sampled_load(force, p)
-    n = p.n
-    a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
-    A, B0, B1 = _recursion(wilson_step(p.M, p.C, p.K, p.h, theta), 3 * n, n)
-    Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, scale(p, load))
-    x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
-    return _finish("wilson", p, x, v, a, bad, {"theta": theta})
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused or reported below
+        load = sampled_load(force, p)
+        n = p.n
+        a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
+        A, B0, B1 = _recursion(wilson_step(p.M, p.C, p.K, p.h, theta), 3 * n, n)
+        Z, bad = _recur(A, B0, B1, np.r_[p.x0, p.v0, a0], load, p.t.size - 1, scale(p, load))
+        x, v, a = Z[:, :n], Z[:, n : 2 * n], Z[:, 2 * n :]
+        return _finish("wilson", p, x, v, a, bad, {"theta": theta})
 
 
 def central_difference(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
@@ -741,19 +760,20 @@ def central_difference(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     21 True True
     """
     p = problem(M, C, K, t, x0, v0)
-    load = sampled_load(force, p)
-    n, h = p.n, p.h
-    a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
-    A, B0, B1 = _recursion(central_difference_step(p.M, p.C, p.K, h), 2 * n, n)
-    padded = None if load is None else np.vstack([load, load[-1:]])
-    z0 = np.r_[p.x0, p.x0 - h * p.v0 + 0.5 * h * h * a0]
-    Z, bad = _recur(A, B0, B1, z0, padded, p.t.size, scale(p, load))
-    x_next, x, x_prev = Z[1:, :n], Z[:-1, :n], Z[:-1, n:]
-    v = (x_next - x_prev) / (2 * h)
-    a = (x_next - 2 * x + x_prev) / h**2
-    if bad is not None:
-        bad = max(bad - 1, 0)
-    return _finish("central_difference", p, x, v, a, bad, {})
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused or reported below
+        load = sampled_load(force, p)
+        n, h = p.n, p.h
+        a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
+        A, B0, B1 = _recursion(central_difference_step(p.M, p.C, p.K, h), 2 * n, n)
+        padded = None if load is None else np.vstack([load, load[-1:]])
+        z0 = np.r_[p.x0, p.x0 - h * p.v0 + 0.5 * h * h * a0]
+        Z, bad = _recur(A, B0, B1, z0, padded, p.t.size, scale(p, load))
+        x_next, x, x_prev = Z[1:, :n], Z[:-1, :n], Z[:-1, n:]
+        v = (x_next - x_prev) / (2 * h)
+        a = (x_next - 2 * x + x_prev) / h**2
+        if bad is not None:
+            bad = max(bad - 1, 0)
+        return _finish("central_difference", p, x, v, a, bad, {})
 
 
 def houbolt(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
@@ -781,22 +801,23 @@ def houbolt(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     IntegrationResult
     """
     p = problem(M, C, K, t, x0, v0)
-    load = sampled_load(force, p)
-    n, h, m = p.n, p.h, p.t.size
-    head = average_acceleration(
-        p.M, p.C, p.K, p.t[: min(m, 3)], p.x0, p.v0, None if load is None else load[:3].T
-    )
-    if m <= 3:
-        return IntegrationResult(p.t, head.x, head.v, head.a, "houbolt", m - 1, 0)
-    A, B0, B1 = _recursion(houbolt_step(p.M, p.C, p.K, h), 3 * n, n)
-    z2 = np.r_[head.x[:, 2], head.x[:, 1], head.x[:, 0]]
-    Z, bad = _recur(A, B0, B1, z2, None if load is None else load[2:], m - 3, scale(p, load))
-    xs = np.vstack([head.x[:, :2].T, Z[:, :n]])  # x_0 … x_k
-    x3 = xs[3:]
-    v = (11 * x3 - 18 * xs[2:-1] + 9 * xs[1:-2] - 2 * xs[:-3]) / (6 * h)
-    a = (2 * x3 - 5 * xs[2:-1] + 4 * xs[1:-2] - xs[:-3]) / h**2
-    v = np.vstack([head.v.T, v])
-    a = np.vstack([head.a.T, a])
-    if bad is not None:
-        bad = bad + 2
-    return _finish("houbolt", p, xs, v, a, bad, {})
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused or reported below
+        load = sampled_load(force, p)
+        n, h, m = p.n, p.h, p.t.size
+        head = average_acceleration(
+            p.M, p.C, p.K, p.t[: min(m, 3)], p.x0, p.v0, None if load is None else load[:3].T
+        )
+        if m <= 3:
+            return IntegrationResult(p.t, head.x, head.v, head.a, "houbolt", m - 1, 0)
+        A, B0, B1 = _recursion(houbolt_step(p.M, p.C, p.K, h), 3 * n, n)
+        z2 = np.r_[head.x[:, 2], head.x[:, 1], head.x[:, 0]]
+        Z, bad = _recur(A, B0, B1, z2, None if load is None else load[2:], m - 3, scale(p, load))
+        xs = np.vstack([head.x[:, :2].T, Z[:, :n]])  # x_0 … x_k
+        x3 = xs[3:]
+        v = (11 * x3 - 18 * xs[2:-1] + 9 * xs[1:-2] - 2 * xs[:-3]) / (6 * h)
+        a = (2 * x3 - 5 * xs[2:-1] + 4 * xs[1:-2] - xs[:-3]) / h**2
+        v = np.vstack([head.v.T, v])
+        a = np.vstack([head.a.T, a])
+        if bad is not None:
+            bad = bad + 2
+        return _finish("houbolt", p, xs, v, a, bad, {})
