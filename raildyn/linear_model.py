@@ -59,10 +59,11 @@ class SystemMatrices:
     Attributes
     ----------
     M, C, K : ndarray, (n, n)
-        Mass (kg, kg·m²), damping (N·s/m, N·m·s/rad) and stiffness (N/m, N·m/rad)
-        at ``speed``; C and K need not be symmetric (creep forces).
+        Mass (kg, kg·m²; symmetric, positive definite), damping (N·s/m, N·m·s/rad) and
+        stiffness (N/m, N·m/rad) at ``speed``; C and K hold creep and gravity terms of either
+        sign and need not be symmetric.
     GK, GC : ndarray, (n, q)
-        Forces per unit track input and per unit input rate, N/m and N·s/m.
+        Forces per unit track input and per unit input rate, N/m and N·s/m (either sign).
     labels : tuple of str
         Name of each coordinate.
     speed : float

@@ -224,7 +224,10 @@ class ModeSweep:
         k = _checks.array("eigenvalues", self.eigenvalues, shape=(s, None), dtype=complex).shape[1]
         _checks.array("frequencies_hz", self.frequencies_hz, shape=(s, k), low=0.0)
         _checks.array("damping_ratios", self.damping_ratios, shape=(s, k))
-        n = _checks.array("shapes", self.shapes, shape=(s, None, k), dtype=complex).shape[1]
+        shapes = _checks.array("shapes", self.shapes, shape=(s, None, k), dtype=complex)
+        if np.any(np.abs(np.abs(shapes).max(axis=1, initial=0.0) - 1.0) > 1e-6):
+            raise ValueError("shapes must have the largest entry of each mode of modulus 1")
+        n = shapes.shape[1]
         _checks.strings("labels", self.labels, k)
         _checks.strings("coordinates", self.coordinates, n)
 
