@@ -46,9 +46,9 @@ class ForceJacobian:
     Attributes
     ----------
     wrt_displacement : ndarray, shape (n, n)
-        ∂f/∂x, N/m (N/rad for a rotation).
+        ∂f/∂x, N/m (N/rad for a rotation): finite, any sign.
     wrt_velocity : ndarray, shape (n, n)
-        ∂f/∂v, N·s/m (N·s/rad for a rotation).
+        ∂f/∂v, N·s/m (N·s/rad for a rotation): finite, any sign, the shape of ``wrt_displacement``.
     """
 
     wrt_displacement: np.ndarray
@@ -109,7 +109,9 @@ class Deviation:
     acceleration : ndarray, shape (n,)
         max |a − a_ref|, m/s² (rad/s²).
     times : ndarray, shape (k,)
-        The times compared, s.
+        The times compared, s: at least one, strictly increasing.
+
+    The three maxima are finite, >= 0 and of one shape (n,), n >= 1.
     """
 
     displacement: np.ndarray
@@ -133,9 +135,9 @@ class Maxima:
     Attributes
     ----------
     times : ndarray, shape (k,)
-        Times of the maxima, s.
+        Times of the maxima, s, strictly increasing (k may be 0: no maximum).
     values : ndarray, shape (k,)
-        The quantity there, in its unit (m, m/s or m/s²; rad for a rotation).
+        The quantity there, in its unit (m, m/s or m/s²; rad for a rotation), finite.
     """
 
     times: np.ndarray

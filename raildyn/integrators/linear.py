@@ -280,6 +280,8 @@ class RecursionMatrices:
     B0, B1 : ndarray, shape (s, n) or (k, s, n)
         The response of the state to a unit load at the start and at the end of the step,
         in the state's units per N.
+
+    All finite, of the shapes above (n >= 1).
     """
 
     A: np.ndarray
