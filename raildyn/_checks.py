@@ -226,10 +226,10 @@ def time_grid(name: str, value, *, uniform: bool = False) -> np.ndarray:
 def interval(name: str, value, *, unit: str = "", low: float = 0.0) -> tuple[float, float]:
     """Return a pair (lo, hi) of finite floats with low < lo < hi (a band of wavelengths or frequencies)."""
     where = f" ({unit})" if unit else ""
-    try:
-        lo, hi = (float(v) for v in value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a pair (low, high){where}, got {value!r}") from None
+    pair = _numbers(name, value)
+    if pair.shape != (2,):
+        raise ValueError(f"{name} must be a pair (low, high){where}, got {value!r}")
+    lo, hi = (float(v) for v in pair)
     if not (np.isfinite(lo) and np.isfinite(hi) and low < lo < hi):
         raise ValueError(
             f"{name} must satisfy {low} < low < high{where}, finite; "

@@ -414,10 +414,14 @@ def test_bad_component_level_and_wavenumber():
         fra_psd("vertical", 3, [1.0], k=2.0)
 
 
-@pytest.mark.parametrize("band", [(5.0, 5.0), (10.0, 2.0), (0.0, 10.0), (1.0,), "band", (1.0, np.inf)])
-def test_empty_or_bad_band(band):
+@pytest.mark.parametrize(
+    "band, error",
+    [((5.0, 5.0), ValueError), ((10.0, 2.0), ValueError), ((0.0, 10.0), ValueError), ((1.0,), ValueError),
+     ("band", TypeError), ((1.0, np.inf), ValueError)],
+)  # fmt: skip
+def test_empty_or_bad_band(band, error):
     psd = track_psd("fra", "vertical", 4)
-    with pytest.raises(ValueError, match="wavelength_band"):
+    with pytest.raises(error, match="wavelength_band"):
         synthesize_irregularity(psd, 1000.0, 0.25, band, rng=1)
 
 
