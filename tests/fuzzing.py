@@ -98,7 +98,8 @@ class Entry:
     string of names from :data:`CHANGES`; the key ``"*"`` applies to every parameter, for a
     result dataclass whose fields hold whatever a model computes); ``skip`` names parameters
     left unchanged, each with the reason; ``limit`` raises the time limit for a callable
-    whose valid call is slow.
+    whose valid call is slow; ``infinite`` names result fields whose documented answer may
+    be +inf (see :func:`bad_numbers`).
     """
 
     target: str
@@ -106,6 +107,7 @@ class Entry:
     accepts: dict = dataclasses.field(default_factory=dict)
     skip: dict = dataclasses.field(default_factory=dict)
     limit: float = LIMIT
+    infinite: tuple = ()
 
     def __post_init__(self):
         for param, changes in self.accepts.items():
@@ -165,8 +167,8 @@ def public_callables() -> dict[int, str]:
         module = importlib.import_module(module_name)
         for name in module.__all__:
             obj = getattr(module, name)
-            if not callable(obj) or id(obj) in found:
-                continue
+            if not callable(obj) or id(obj) in found or getattr(obj, "_is_protocol", False):
+                continue  # a typing.Protocol is an interface: calling it is Python's own TypeError
             found[id(obj)] = f"{module_name}.{name}"
             if inspect.isclass(obj):
                 for attr, member in vars(obj).items():
@@ -267,8 +269,12 @@ def _on_alarm(signum, frame):
     raise Hang
 
 
-def _bad_numbers(result, depth=0) -> str | None:
-    """Where the result holds a NaN, an inf or an empty array (None if nowhere)."""
+def bad_numbers(result, infinite=(), depth=0) -> str | None:
+    """Where the result holds a NaN, an inf or an empty array (None if nowhere).
+
+    A dataclass field named in ``infinite`` may hold +inf: a documented answer, such as a
+    critical speed of +inf for a model stable over the whole range.
+    """
     if depth > 4 or result is None or isinstance(result, (str, bytes, bool)):
         return None
     if isinstance(result, (numbers.Number, np.number)):
@@ -281,19 +287,22 @@ def _bad_numbers(result, depth=0) -> str | None:
         return None if np.isfinite(result).all() else "an array holding NaN or inf"
     if dataclasses.is_dataclass(result) and not isinstance(result, type):
         for field in dataclasses.fields(result):
-            where = _bad_numbers(getattr(result, field.name), depth + 1)
+            value = getattr(result, field.name)
+            if field.name in infinite:
+                value = np.where(np.isposinf(value), 0.0, value)
+            where = bad_numbers(value, infinite, depth + 1)
             if where:
                 return f"{type(result).__name__}.{field.name}: {where}"
         return None
     if isinstance(result, (tuple, list)):
         for i, item in enumerate(result[:50]):
-            where = _bad_numbers(item, depth + 1)
+            where = bad_numbers(item, infinite, depth + 1)
             if where:
                 return f"[{i}]: {where}"
         return None
     if isinstance(result, dict):
         for key, item in list(result.items())[:50]:
-            where = _bad_numbers(item, depth + 1)
+            where = bad_numbers(item, infinite, depth + 1)
             if where:
                 return f"[{key!r}]: {where}"
     return None
@@ -355,7 +364,7 @@ def _sort(entry: Entry, param: str, change: str, run: Callable[[], object]) -> O
         return Outcome(entry.target, param, change, "obscure", f"{type(err).__name__}: {str(err)[:300]}")
     finally:
         plt.close("all")
-    where = _bad_numbers(result)
+    where = bad_numbers(result, entry.infinite)
     if where:
         return Outcome(entry.target, param, change, "non-finite", where)
     if accepted or change == "huge":
