@@ -222,7 +222,8 @@ class IntegrationResult:
         reference : IntegrationResult
             The history to compare with, with as many degrees of freedom.
         after : float, optional
-            Compare only at times >= ``after``, s (to leave out a start-up transient).
+            Compare only at times >= ``after``, s, any finite time (to leave out a start-up
+            transient).
 
         Returns
         -------

@@ -108,8 +108,8 @@ def _effective(matrix: np.ndarray, *also: np.ndarray):
     """Factorize an effective matrix of a step; refuse it, or ``also``, if it overflowed."""
     if not all(np.isfinite(m).all() for m in (matrix, *also)):
         raise ValueError(
-            "M, C, K and h give an effective matrix that overflows (entries beyond 1e308): "
-            "their sizes are beyond double precision for this scheme"
+            "M, C, K and the step h (the spacing of t) give an effective matrix that overflows: "
+            "their sizes are beyond double precision (1e308) for this scheme"
         )
     return _solver(matrix)
 
@@ -149,7 +149,7 @@ def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
     gamma, beta = _check_newmark(gamma, beta)
     alpha = scalar("alpha", alpha, low=-1 / 3, high=0.0)
     n = M.shape[-1]
-    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # an overflow is refused just below
         solve = _effective(M + (1 + alpha) * (gamma * h * C + beta * h * h * K))
 
     def step(Z, F0, F1):
@@ -186,7 +186,7 @@ def wilson_step(M, C, K, h, theta) -> Step:
     M, C, K, h = _system(M, C, K, h)
     theta = scalar("theta", theta, low=1.0, high=3.0)
     n = M.shape[-1]
-    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # an overflow is refused just below
         tau = theta * h
         a0, a1 = 6 / tau**2, 3 / tau
         a2, a3 = 2 * a1, tau / 2
@@ -225,7 +225,7 @@ def central_difference_step(M, C, K, h) -> Step:
     """
     M, C, K, h = _system(M, C, K, h)
     n = M.shape[-1]
-    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # an overflow is refused just below
         stiff = K - 2 * M / h**2
         lag = M / h**2 - C / (2 * h)
         solve = _effective(M / h**2 + C / (2 * h), stiff, lag)
@@ -256,7 +256,7 @@ def houbolt_step(M, C, K, h) -> Step:
     """
     M, C, K, h = _system(M, C, K, h)
     n = M.shape[-1]
-    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # an overflow is refused just below
         a0, a1, a2, a3 = 2 / h**2, 11 / (6 * h), 5 / h**2, 3 / h
         a4, a5, a6, a7 = -2 * a0, -a3 / 2, a0 / 2, a3 / 9
         solve = _effective(K + a0 * M + a1 * C, a2 * M, a3 * C)
@@ -317,7 +317,8 @@ def recursion_matrices(step: Step, size: int, n: int) -> RecursionMatrices:
     ----------
     step : callable
         A step from :func:`newmark_step`, :func:`wilson_step`, :func:`central_difference_step`
-        or :func:`houbolt_step`, for one step size (a float h).
+        or :func:`houbolt_step`, for one step size (a float h), or any linear
+        ``step(Z, F0, F1)`` returning finite blocks of shape (s, c).
     size : int
         Length s of the scheme's state: 2n or 3n.
     n : int
@@ -564,7 +565,9 @@ def newmark(M, C, K, t, x0, v0, force=None, *, gamma=0.5, beta=0.25) -> Integrat
 def _newmark_family(M, C, K, t, x0, v0, force, gamma, beta, alpha, name) -> IntegrationResult:
     """Newmark (α = 0) or HHT-α with checked parameters; the public functions below name the preset."""
     p = problem(M, C, K, t, x0, v0)
-    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused or reported below
+    with np.errstate(
+        over="ignore", invalid="ignore", divide="ignore"
+    ):  # an overflow is refused or reported below
         load = sampled_load(force, p)
         n, h = p.n, p.h
         a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
@@ -711,7 +714,9 @@ def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4) -> IntegrationResult:
     """
     theta = scalar("theta", theta, low=1.0, high=3.0)
     p = problem(M, C, K, t, x0, v0)
-    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused or reported below
+    with np.errstate(
+        over="ignore", invalid="ignore", divide="ignore"
+    ):  # an overflow is refused or reported below
         load = sampled_load(force, p)
         n = p.n
         a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
@@ -762,7 +767,9 @@ def central_difference(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     21 True True
     """
     p = problem(M, C, K, t, x0, v0)
-    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused or reported below
+    with np.errstate(
+        over="ignore", invalid="ignore", divide="ignore"
+    ):  # an overflow is refused or reported below
         load = sampled_load(force, p)
         n, h = p.n, p.h
         a0 = equilibrium_acceleration(p, p.x0, p.v0, None if load is None else load[0])
@@ -772,7 +779,7 @@ def central_difference(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
         Z, bad = _recur(A, B0, B1, z0, padded, p.t.size, scale(p, load))
         x_next, x, x_prev = Z[1:, :n], Z[:-1, :n], Z[:-1, n:]
         v = (x_next - x_prev) / (2 * h)
-        a = (x_next - 2 * x + x_prev) / h**2
+        a = (x_next - 2 * x + x_prev) / (h * h)
         if bad is not None:
             bad = max(bad - 1, 0)
         return _finish("central_difference", p, x, v, a, bad, {})
@@ -803,7 +810,9 @@ def houbolt(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
     IntegrationResult
     """
     p = problem(M, C, K, t, x0, v0)
-    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused or reported below
+    with np.errstate(
+        over="ignore", invalid="ignore", divide="ignore"
+    ):  # an overflow is refused or reported below
         load = sampled_load(force, p)
         n, h, m = p.n, p.h, p.t.size
         head = average_acceleration(
@@ -817,7 +826,7 @@ def houbolt(M, C, K, t, x0, v0, force=None) -> IntegrationResult:
         xs = np.vstack([head.x[:, :2].T, Z[:, :n]])  # x_0 … x_k
         x3 = xs[3:]
         v = (11 * x3 - 18 * xs[2:-1] + 9 * xs[1:-2] - 2 * xs[:-3]) / (6 * h)
-        a = (2 * x3 - 5 * xs[2:-1] + 4 * xs[1:-2] - xs[:-3]) / h**2
+        a = (2 * x3 - 5 * xs[2:-1] + 4 * xs[1:-2] - xs[:-3]) / (h * h)
         v = np.vstack([head.v.T, v])
         a = np.vstack([head.a.T, a])
         if bad is not None:
