@@ -90,7 +90,8 @@ def force_tangent(value, n: int, t: float, *, initial: str = "") -> tuple[np.nda
             if initial:
                 raise ValueError(f"jacobian(t, x, v) returned a non-finite {what} at {initial}")
             raise SolverError(
-                f"jacobian(t, x, v) returned a non-finite {what}: the state outgrew the force", time=t
+                f"jacobian(t, x, v) returned a non-finite {what} (the state outgrew it, or it fails there)",
+                time=t,
             )
         out.append(part)
     return out[0], out[1]
@@ -424,7 +425,8 @@ def general_force(force, p: Problem, *, finite: bool = True):
             out = out.reshape(n)
             if finite and not np.isfinite(out).all():
                 raise SolverError(
-                    "force(t, x, v) returned a non-finite value: the state outgrew the force", time=t
+                    "force(t, x, v) returned a non-finite value (the state outgrew it, or it fails there)",
+                    time=t,
                 )
             return out
 
