@@ -202,16 +202,8 @@ def time_grid(name: str, value, *, uniform: bool = False) -> np.ndarray:
     1e-9 of it plus a few roundings of the largest time, so that grids made by
     ``np.linspace`` or ``np.arange`` pass and a grid with a missing sample does not.
     """
-    t = array(name, value, ndim=1)
-    if t.size == 0:
-        raise ValueError(f"{name} must hold at least one time, got an empty array")
+    t = increasing(name, value)
     steps = np.diff(t)
-    if np.any(steps <= 0):
-        i = int(np.argmax(steps <= 0))
-        raise ValueError(
-            f"{name} must be strictly increasing; {name}[{i + 1}] = {t[i + 1]!r} "
-            f"follows {name}[{i}] = {t[i]!r}"
-        )
     if uniform and t.size > 2:
         h = (t[-1] - t[0]) / (t.size - 1)
         misfit = np.abs(steps - h)
@@ -387,3 +379,19 @@ def strings(name: str, value, n=None, *, unique: bool = False) -> tuple:
     if unique and len(set(value)) != len(value):
         raise ValueError(f"{name} must not repeat a name, got {value!r:.80}")
     return tuple(value)
+
+
+def broadcast(**arrays) -> tuple:
+    """The common shape of arguments that must broadcast together; a ValueError names the first misfit."""
+    shape: tuple = ()
+    seen: list[str] = []
+    for name, value in arrays.items():
+        try:
+            shape = np.broadcast_shapes(shape, np.shape(value))
+        except ValueError:
+            raise ValueError(
+                f"{name} has shape {np.shape(value)}, which does not broadcast against "
+                f"{' and '.join(seen)} (shape {shape})"
+            ) from None
+        seen.append(name)
+    return shape

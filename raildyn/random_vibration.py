@@ -430,13 +430,7 @@ def _spectrum_grid(psd, omega, *, increasing=True, min_points=1) -> tuple[np.nda
         raise ValueError(f"omega must hold at least {min_points} frequencies, got {w.size}")
     S = _checks.array("psd", S, low=0.0)
     if increasing and w.size > 1:
-        steps = np.diff(w)
-        if np.any(steps <= 0):
-            i = int(np.argmax(steps <= 0))
-            raise ValueError(
-                f"omega must be strictly increasing; omega[{i + 1}] = {w[i + 1]!r} "
-                f"does not exceed omega[{i}] = {w[i]!r}"
-            )
+        _checks.increasing("omega", w)
     return S, w
 
 

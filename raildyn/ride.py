@@ -161,12 +161,7 @@ def sperling_harmonic(amplitude, frequency, direction: str = "vertical") -> np.n
     """
     a = _checks.array("amplitude", amplitude, low=0.0, allow_empty=False) * 100.0  # cm/s²
     f = _frequency(frequency, 0.5)
-    try:
-        np.broadcast_shapes(a.shape, f.shape)
-    except ValueError:
-        raise ValueError(
-            f"amplitude of shape {a.shape} and frequency of shape {f.shape} must broadcast together"
-        ) from None
+    _checks.broadcast(amplitude=a, frequency=f)
     # (a³F/f)^{1/10} as a^{3/10} (F/f)^{1/10}: a³ would overflow for a large a.
     return 0.896 * a**0.3 * (sperling_correction(f, direction) / f) ** 0.1
 

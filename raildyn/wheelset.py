@@ -610,11 +610,7 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     _checks.instance("ws", ws, Wheelset)
     _checks.instance("contact", contact, WheelRailContact)
     motion = [_checks.array(name, v) for name, v in zip(_MOTION, (y, psi, ydot, psidot), strict=True)]
-    try:
-        np.broadcast_shapes(*(m.shape for m in motion))
-    except ValueError:
-        shapes = ", ".join(f"{name} {m.shape}" for name, m in zip(_MOTION, motion, strict=True))
-        raise ValueError(f"y, psi, ydot and psidot must broadcast together, got shapes {shapes}") from None
+    _checks.broadcast(**dict(zip(_MOTION, motion, strict=True)))
     return _contact_forces(ws, contact, *motion, _speed(speed))
 
 

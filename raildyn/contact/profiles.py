@@ -55,16 +55,10 @@ _SAMPLES_MAX = (
 
 def _grid(name: str, value, *, uniform: bool = False) -> np.ndarray:
     """A 1-D finite array of at least two strictly increasing positions (m); ``uniform``: equally spaced."""
-    u = _checks.array(name, value, ndim=1)
+    u = _checks.increasing(name, value)
     if u.size < 2:
         raise ValueError(f"{name} must hold at least two positions, got {u.size}")
     steps = np.diff(u)
-    if np.any(steps <= 0):
-        i = int(np.argmax(steps <= 0))
-        raise ValueError(
-            f"{name} must be strictly increasing; {name}[{i + 1}] = {u[i + 1]!r} "
-            f"follows {name}[{i}] = {u[i]!r}"
-        )
     if uniform and np.ptp(steps) > 1e-6 * steps.mean():
         raise ValueError(
             f"{name} must be uniformly spaced (the contact search steps along it), "

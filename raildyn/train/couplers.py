@@ -150,12 +150,7 @@ class DraftGear:
         """
         extension = _extension("extension", extension)
         rate = _checks.array("rate", rate, allow_empty=False)
-        try:
-            np.broadcast_shapes(extension.shape, rate.shape)
-        except ValueError:
-            raise ValueError(
-                f"rate must broadcast against extension; got shapes {rate.shape} and {extension.shape}"
-            ) from None
+        _checks.broadcast(extension=extension, rate=rate)
         return self._force(extension, rate)
 
     def _force(self, extension, rate):

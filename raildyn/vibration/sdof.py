@@ -1046,12 +1046,7 @@ def _scaled_terms(frequency_ratio, damping_ratio):
     """
     r = array("frequency_ratio", frequency_ratio, low=0.0, allow_empty=False)
     xi = array("damping_ratio", damping_ratio, low=0.0, allow_empty=False)
-    try:
-        np.broadcast_shapes(r.shape, xi.shape)
-    except ValueError:
-        raise ValueError(
-            f"damping_ratio (shape {xi.shape}) must broadcast against frequency_ratio (shape {r.shape})"
-        ) from None
+    _checks.broadcast(frequency_ratio=r, damping_ratio=xi)
     inv = 1.0 / np.maximum(r, 1.0)
     u = r * inv
     return (inv - u) * (inv + u), 2.0 * xi * u * inv, inv * inv
