@@ -52,21 +52,6 @@ def _field(name: str, value, *, low=None, low_open=False) -> np.ndarray:
     return _checks.array(name, value, low=low, low_open=low_open, allow_empty=False)
 
 
-def _broadcast(**arrays: np.ndarray) -> None:
-    """Refuse arguments whose shapes do not broadcast against each other, naming the first misfit."""
-    shape: tuple = ()
-    seen = []
-    for name, value in arrays.items():
-        try:
-            shape = np.broadcast_shapes(shape, value.shape)
-        except ValueError:
-            raise ValueError(
-                f"{name} has shape {value.shape}, which does not broadcast against {', '.join(seen)} "
-                f"(shape {shape})"
-            ) from None
-        seen.append(name)
-
-
 def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
     """Linear spring: F = k δ + F₀ (N).
 
@@ -92,7 +77,7 @@ def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
     d = _field("deflection", deflection)
     k = _field("stiffness", stiffness, low=0.0)
     f0 = _field("preload", preload)
-    _broadcast(deflection=d, stiffness=k, preload=f0)
+    _checks.broadcast(deflection=d, stiffness=k, preload=f0)
     return np.asarray(k * d + f0)
 
 
@@ -118,7 +103,7 @@ def damper_force(velocity, damping) -> np.ndarray:
     """
     v = _field("velocity", velocity)
     c = _field("damping", damping, low=0.0)
-    _broadcast(velocity=v, damping=c)
+    _checks.broadcast(velocity=v, damping=c)
     return np.asarray(c * v)
 
 
@@ -151,10 +136,10 @@ def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.nda
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
     if velocity_scale is None:
-        _broadcast(velocity=v, friction_force=f)
+        _checks.broadcast(velocity=v, friction_force=f)
         return np.asarray(f * np.sign(v))
     eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
-    _broadcast(velocity=v, friction_force=f, velocity_scale=eps)
+    _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     return np.asarray(f * np.tanh(v / eps))
 
 
@@ -188,7 +173,7 @@ def coulomb_friction_slope(velocity, friction_force, *, velocity_scale) -> np.nd
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
     eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
-    _broadcast(velocity=v, friction_force=f, velocity_scale=eps)
+    _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     # sech² u = 4e^{−2|u|}/(1 + e^{−2|u|})²: no overflow however large |u|.
     decay = np.exp(-2.0 * np.abs(v / eps))
     return np.asarray(f / eps * 4.0 * decay / (1.0 + decay) ** 2)
@@ -222,7 +207,7 @@ def friction_error_bound(velocity, friction_force, velocity_scale) -> np.ndarray
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
     eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
-    _broadcast(velocity=v, friction_force=f, velocity_scale=eps)
+    _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     return np.asarray(2.0 * f * np.exp(-2.0 * np.abs(v) / eps))
 
 
@@ -253,7 +238,7 @@ def friction_amplitude_loss(friction_force, stiffness) -> np.ndarray:
     """
     f = _field("friction_force", friction_force, low=0.0)
     k = _field("stiffness", stiffness, low=0.0, low_open=True)
-    _broadcast(friction_force=f, stiffness=k)
+    _checks.broadcast(friction_force=f, stiffness=k)
     return np.asarray(4.0 * f / k)
 
 
@@ -290,7 +275,7 @@ def clearance_force(deflection, clearance, stop_stiffness, stiffness=0.0) -> np.
     g = _field("clearance", clearance, low=0.0)
     ks = _field("stop_stiffness", stop_stiffness, low=0.0)
     k = _field("stiffness", stiffness, low=0.0)
-    _broadcast(deflection=d, clearance=g, stop_stiffness=ks, stiffness=k)
+    _checks.broadcast(deflection=d, clearance=g, stop_stiffness=ks, stiffness=k)
     return np.asarray(k * d + ks * np.maximum(np.abs(d) - g, 0.0) * np.sign(d))
 
 

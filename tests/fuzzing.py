@@ -273,8 +273,11 @@ def bad_numbers(result, infinite=(), depth=0) -> str | None:
     """Where the result holds a NaN, an inf or an empty array (None if nowhere).
 
     A dataclass field named in ``infinite`` may hold +inf: a documented answer, such as a
-    critical speed of +inf for a model stable over the whole range.
+    critical speed of +inf for a model stable over the whole range; ``"return"`` names the
+    value returned itself.
     """
+    if depth == 0 and "return" in infinite and isinstance(result, float) and result == math.inf:
+        return None
     if depth > 4 or result is None or isinstance(result, (str, bytes, bool)):
         return None
     if isinstance(result, (numbers.Number, np.number)):
