@@ -291,7 +291,7 @@ def bad_numbers(result, infinite=(), depth=0) -> str | None:
     if dataclasses.is_dataclass(result) and not isinstance(result, type):
         for field in dataclasses.fields(result):
             value = getattr(result, field.name)
-            if field.name in infinite:
+            if field.name in infinite and (_is_number(value) or _is_numeric_array(value)):
                 value = np.where(np.isposinf(value), 0.0, value)
             where = bad_numbers(value, infinite, depth + 1)
             if where:
