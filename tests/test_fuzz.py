@@ -13,7 +13,9 @@ from __future__ import annotations
 
 import collections
 import inspect
+import os
 import sys
+import tempfile
 import time
 import warnings
 
@@ -37,7 +39,8 @@ def test_every_public_callable_has_one_entry():
 
 
 @pytest.mark.parametrize("target", sorted(BY_TARGET))
-def test_bad_input_is_refused_clearly(target):
+def test_bad_input_is_refused_clearly(target, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # a changed path argument (a relative "abc") writes here
     entry = BY_TARGET[target]
     if inspect.signature(resolve(entry.target, static=False)).parameters:
         # Without parameters (a widget factory) only the unknown keyword applies, which Python
@@ -65,4 +68,6 @@ def report(*prefixes: str) -> collections.Counter:
 
 if __name__ == "__main__":
     warnings.simplefilter("error")  # as under pytest (filterwarnings = error)
-    report(*sys.argv[1:])
+    with tempfile.TemporaryDirectory() as folder:
+        os.chdir(folder)  # a changed path argument (a relative "abc") writes here
+        report(*sys.argv[1:])
