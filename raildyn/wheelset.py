@@ -43,6 +43,7 @@ __all__ = [
     "KinematicOscillation",
     "NonlinearLateral",
     "NonlinearWheelset",
+    "SuspensionElement",
     "WheelRailContact",
     "Wheelset",
     "add_wheelset",
@@ -707,23 +708,99 @@ class NonlinearWheelset:
         return np.array([ydot, psidot, yddot, psiddot])
 
 
+_ELEMENT_PROBE = (np.array([-1.0e-3, 0.0, 1.0e-3]), np.array([-0.01, 0.0, 0.01]))  # m (rad), m/s (rad/s)
+
+
+@dataclass(frozen=True)
+class SuspensionElement:
+    """A nonlinear suspension element of a :class:`NonlinearLateral`: a force law along one deflection.
+
+    The element acts on the deflection d = Σ cᵢ qᵢ, a linear combination of the
+    model's coordinates (a relative displacement such as y_frame − y_bolster, or a
+    relative yaw), and pulls it back with the force F = f(d, ḋ) (N, or N·m on an
+    angle): the generalized forces are −F cᵢ. The linear model may hold a linear
+    spring k and damper c on the same deflection (an equivalent viscous damper
+    standing for friction, a spring standing for a clearance); ``stiffness`` and
+    ``damping`` name them, and the nonlinear model removes k c cᵀ from K and
+    c c cᵀ from C₀ so that the law replaces them. Examples of laws, from
+    :mod:`raildyn.suspension`:
+
+    * friction wedges, F = F_f tanh(ḋ/v_ε):
+      ``lambda d, v: coulomb_friction(v, F_f, velocity_scale=v_eps)``;
+    * a spring k in parallel with friction: ``lambda d, v: k * d + coulomb_friction(v, ...)``;
+    * a lateral play (clearance g, stop k_s beyond it):
+      ``lambda d, v: clearance_force(d, g, k_s)``.
+
+    Attributes
+    ----------
+    coordinates : dict of str to float
+        Label of a coordinate of the model → its coefficient cᵢ (finite, at least one
+        non-zero).
+    force : callable
+        f(d, ḋ) → F, vectorised: given two float arrays of one shape (m and m/s, or rad and
+        rad/s), an array of that shape (N or N·m, finite). Tried once, at
+        d = (−1, 0, 1) mm and ḋ = (−10, 0, 10) mm/s, and what it returns checked.
+    stiffness, damping : float
+        The linear spring (N/m) and damper (N·s/m) on d that the linear model holds in the
+        element's place, each ≥ 0 (per radian for an angle); 0 where it holds none.
+    """
+
+    coordinates: dict
+    force: Callable
+    stiffness: float = 0.0
+    damping: float = 0.0
+
+    def __post_init__(self):
+        _checks.instance("coordinates", self.coordinates, dict, "dict of coordinate label to coefficient")
+        values = []
+        for label, value in self.coordinates.items():
+            _checks.instance("coordinates key", label, str, "str (a coordinate label)")
+            values.append(scalar(f"coordinates[{label!r}]", value))
+        if not any(values):
+            raise ValueError(
+                f"coordinates must give at least one non-zero coefficient, got {self.coordinates!r}"
+            )
+        law = _checks.function("force", self.force)
+        d, v = _ELEMENT_PROBE
+        _checks.returned("force", law(d.copy(), v.copy()), shape=d.shape, at=f"d = {d}, ḋ = {v}")
+        nonnegative("stiffness", self.stiffness)
+        nonnegative("damping", self.damping)
+
+
 @dataclass(frozen=True)
 class NonlinearLateral:
     """Any lateral :class:`~raildyn.linear_model.LinearSystem` with its linear wheel–rail terms replaced
-    by :func:`contact_forces`.
+    by :func:`contact_forces`, and optional nonlinear suspension elements.
 
-    M q̈ = −C₀q̇ − K_s q + Σ F_contact, where K_s is K without the creep and
-    gravitational terms of each wheelset. State [q; q̇]; ``rhs(t, state)`` for solve_ivp.
+    M q̈ = −C_s q̇ − K_s q + Σ F_contact − Σ_e F_e c_e, where K_s is K without the creep and
+    gravitational terms of each wheelset and without each element's linear spring, C_s is C₀
+    without each element's linear damper, and F_e = f_e(c_e·q, c_e·q̇) is the force of
+    :class:`SuspensionElement` e on its deflection c_e·q. State [q; q̇]; ``rhs(t, state)``
+    for solve_ivp.
+
+    Attributes
+    ----------
+    system : LinearSystem
+        With at least one wheelset on the rails.
+    contact : WheelRailContact
+    speed : float
+        V, m/s (> 0).
+    elements : tuple of SuspensionElement
+        Nonlinear suspension elements, each naming coordinates of ``system``; empty by default.
     """
 
     system: LinearSystem
     contact: WheelRailContact = field(default_factory=WheelRailContact)
     speed: float = 30.0
-    # Derived once from the fields above (not arguments): the suspension stiffness, M⁻¹, and the
-    # wheelsets grouped by their parameters.
+    elements: tuple = ()
+    # Derived once from the fields above (not arguments): the suspension stiffness and damping, M⁻¹,
+    # the wheelsets grouped by their parameters, and the elements' deflection rows and laws.
     _K_suspension: np.ndarray = field(init=False, repr=False, compare=False)
+    _C_suspension: np.ndarray = field(init=False, repr=False, compare=False)
     _M_inv: np.ndarray = field(init=False, repr=False, compare=False)
     _groups: list = field(init=False, repr=False, compare=False)
+    _G: np.ndarray | None = field(init=False, repr=False, compare=False)
+    _laws: tuple = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         _speed(self.speed)
@@ -731,12 +808,31 @@ class NonlinearLateral:
         _checks.instance("contact", self.contact, WheelRailContact)
         if not self.system.wheelsets:
             raise ValueError("system has no wheelsets in contact with the rails")
+        if isinstance(self.elements, str) or not isinstance(self.elements, (tuple, list)):
+            raise TypeError(f"elements must be a tuple of SuspensionElement, got {self.elements!r:.80}")
+        labels = self.system.labels
+        n = self.system.size
+        G = np.zeros((len(self.elements), n))
+        for i, element in enumerate(self.elements):
+            _checks.instance(f"elements[{i}]", element, SuspensionElement)
+            for label, value in element.coordinates.items():
+                if label not in labels:
+                    raise ValueError(
+                        f"elements[{i}] coordinates must be labels of system {labels}, got {label!r}"
+                    )
+                G[i, labels.index(label)] += value
+        object.__setattr__(self, "elements", tuple(self.elements))
         K_s = np.array(self.system.K, dtype=float, copy=True)
+        C_s = np.array(self.system.C0, dtype=float, copy=True)
         for iy, ipsi, ws in self.system.wheelsets:
             terms = creep_terms(ws)
             idx = np.ix_([iy, ipsi], [iy, ipsi])
             K_s[idx] -= terms.K_creep + terms.K_gravity
+        for g, element in zip(G, self.elements, strict=True):
+            K_s -= element.stiffness * np.outer(g, g)
+            C_s -= element.damping * np.outer(g, g)
         object.__setattr__(self, "_K_suspension", K_s)
+        object.__setattr__(self, "_C_suspension", C_s)
         object.__setattr__(self, "_M_inv", np.linalg.inv(self.system.M))
         # Wheelsets with equal parameters are evaluated together in one vectorised call.
         groups: dict = {}
@@ -745,6 +841,8 @@ class NonlinearLateral:
             groups[ws][0].append(iy)
             groups[ws][1].append(ipsi)
         object.__setattr__(self, "_groups", [(ws, np.array(a), np.array(b)) for ws, (a, b) in groups.items()])
+        object.__setattr__(self, "_G", G if self.elements else None)  # None: no elements
+        object.__setattr__(self, "_laws", tuple(e.force for e in self.elements))
 
     @property
     def state_size(self) -> int:
@@ -767,7 +865,7 @@ class NonlinearLateral:
         -------
         NonlinearLateral
         """
-        return NonlinearLateral(self.system, self.contact, speed)
+        return NonlinearLateral(self.system, self.contact, speed, self.elements)
 
     def rhs(self, t, state):
         """Time derivative of [q; q̇].
@@ -788,10 +886,14 @@ class NonlinearLateral:
         n = self.system.size
         state = _state(state, 2 * n)
         q, qdot = state[:n], state[n:]
-        force = -self.system.C0 @ qdot - self._K_suspension @ q
+        force = -self._C_suspension @ qdot - self._K_suspension @ q
         force = np.array(force, dtype=float, copy=True)
         for ws, iy, ipsi in self._groups:
             fy, mz = _contact_forces(ws, self.contact, q[iy], q[ipsi], qdot[iy], qdot[ipsi], self.speed)
             force[iy] += fy
             force[ipsi] += mz
+        if self._laws:
+            d, v = self._G @ q, self._G @ qdot
+            pull = np.array([law(d[i], v[i]) for i, law in enumerate(self._laws)], dtype=float)
+            force -= self._G.T @ pull
         return np.concatenate([qdot, self._M_inv @ force])
