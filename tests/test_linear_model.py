@@ -18,6 +18,7 @@ from raildyn.vehicles import (
     COOPERRIDER_CAR,
     DEFAULT_LOCOMOTIVE,
     GDU_ORE_CAR,
+    LATERAL_LOCOMOTIVE,
     MANCHESTER_CAR,
     MANCHESTER_VERTICAL,
     Bogie,
@@ -34,6 +35,8 @@ MODELS = {
     "freight car": FreightCar(equivalent_damping=2.0e4),
     "gdu ore car": GDU_ORE_CAR.replace(equivalent_damping=2.0e4),
     "locomotive": DEFAULT_LOCOMOTIVE,
+    "lateral locomotive": LATERAL_LOCOMOTIVE,
+    "three-axle truck": LATERAL_LOCOMOTIVE.truck,
 }
 SPEED = 30.0  # m/s, below every lateral model's critical speed
 

@@ -15,6 +15,12 @@ from raildyn.vehicles.freight import (
 )
 from raildyn.vehicles.lateral import COOPERRIDER_CAR, MANCHESTER_CAR, Bogie, Car, cooperrider_car
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
+from raildyn.vehicles.locomotive_lateral import (
+    LATERAL_LOCOMOTIVE,
+    LateralLocomotive,
+    ThreeAxleTruck,
+    rigid_truck_wavelength,
+)
 from raildyn.vehicles.response import (
     PeriodicProfile,
     ResponseSpectrum,
@@ -36,18 +42,22 @@ __all__ = [
     "DEFAULT_LOCOMOTIVE",
     "FreightCar",
     "GDU_ORE_CAR",
+    "LATERAL_LOCOMOTIVE",
+    "LateralLocomotive",
     "Locomotive",
     "MANCHESTER_VERTICAL",
     "PeriodicProfile",
     "ResponseSpectrum",
     "RockAndRoll",
     "TimeResponse",
+    "ThreeAxleTruck",
     "VerticalCar",
     "WedgeFriction",
     "cooperrider_car",
     "gdu_ore_car",
     "periodic_profile",
     "response_spectrum",
+    "rigid_truck_wavelength",
     "rms_over_speeds",
     "rock_and_roll",
     "time_response",
