@@ -19,7 +19,7 @@ from raildyn.vehicles import (
     ThreeAxleTruck,
     rigid_truck_wavelength,
 )
-from raildyn.wheelset import kinematic_wavelength, rigid_bogie_wavelength
+from raildyn.wheelset import NonlinearLateral, kinematic_wavelength, rigid_bogie_wavelength
 
 SPEED_RANGE = (1.0, 300.0)  # m/s
 
@@ -254,18 +254,37 @@ def test_middle_axle_play_raises_the_critical_speed_a_little():
     assert abs(lag) > 5 * abs(lag_held)
 
 
-def test_play_force_law():
+def test_play_element_is_the_clearance_law_and_replaces_the_linear_spring():
     truck = LATERAL_LOCOMOTIVE.truck
     kc, ky, g = truck.middle_lateral_stiffness, truck.wheelset.lateral_stiffness, truck.middle_lateral_play
+    element = truck.play_element("1")
+    assert element.coordinates == {"wheelset12 y": 1.0, "frame1 y": -1.0}
+    assert (element.stiffness, element.damping) == (kc, 0.0)
     u = np.array([-0.03, -g, -0.005, 0.0, 0.005, g, 0.03])
-    expected = -kc * u - ky * np.sign(u) * np.maximum(np.abs(u) - g, 0.0)
-    np.testing.assert_allclose(truck.play_force(u), expected, rtol=1e-12)
-    # within the play, the linear model's slope; beyond, the end axles' spring is added; odd in u
-    assert truck.play_force(0.01) == pytest.approx(-kc * 0.01)
-    assert truck.play_force(0.029) == pytest.approx(-kc * 0.029 - ky * 0.01)
-    np.testing.assert_allclose(truck.play_force(-u), -truck.play_force(u))
-    held = truck.without_play()
-    assert held.play_force(0.01) == pytest.approx(-(ky + ky) * 0.01)  # no play: the end axles' spring
+    expected = kc * u + ky * np.sign(u) * np.maximum(np.abs(u) - g, 0.0)
+    np.testing.assert_allclose(element.force(u, 0.0 * u), expected, rtol=1e-12)
+    assert truck.without_play().play_element() is None  # no play: the linear spring holds the axle
+    # Within the play the law is the linear spring it replaces (its slope there): the locomotive with
+    # the two play elements moves as the same system with its linear springs kept (no elements), to
+    # round-off, at any state whose middle axles stay within the play (here within 10 mm).
+    model = LATERAL_LOCOMOTIVE.nonlinear(50.0)
+    assert len(model.elements) == 2
+    kept = NonlinearLateral(model.system, model.contact, 50.0)
+    state = 5e-3 * np.random.default_rng(1).uniform(-1.0, 1.0, model.state_size)
+    reference = kept.rhs(0.0, state)
+    np.testing.assert_allclose(model.rhs(0.0, state), reference, atol=1e-9 * np.abs(reference).max())
+    # Beyond the play the stop acts: against the same truck with a wider play (never reached), only
+    # the middle wheelset's and the frame's accelerations change, by ∓k_y (|u| − g)/m each.
+    wide = LATERAL_LOCOMOTIVE.replace(middle_lateral_play=0.05).nonlinear(50.0)
+    i, f = model.system.labels.index("wheelset12 y"), model.system.labels.index("frame1 y")
+    state = np.zeros(model.state_size)
+    state[i] = 0.03
+    change = model.rhs(0.0, state) - wide.rhs(0.0, state)
+    n, stop = model.system.size, ky * (0.03 - g)
+    expected = np.zeros(model.state_size)
+    expected[n + i] = -stop / model.system.M[i, i]
+    expected[n + f] = stop / model.system.M[f, f]
+    np.testing.assert_allclose(change, expected, atol=1e-9 * abs(expected).max())
 
 
 def test_long_alignment_wave_is_followed_rigidly():
@@ -319,8 +338,11 @@ def test_bad_input_is_refused_by_name():
         LATERAL_LOCOMOTIVE.replace(conicity=-0.1)
     with pytest.raises(ValueError, match="speed"):
         LATERAL_LOCOMOTIVE.nonlinear(speed=0.0)
-    with pytest.raises(ValueError, match="deflection"):
-        LATERAL_LOCOMOTIVE.truck.play_force(np.nan)
+    for tag in (1, "3"):
+        with pytest.raises((TypeError, ValueError), match="tag"):
+            LATERAL_LOCOMOTIVE.truck.play_element(tag)
+    with pytest.raises(TypeError, match="contact"):
+        LATERAL_LOCOMOTIVE.nonlinear(contact=3)
     with pytest.raises(ValueError, match="axle_spacing"):
         rigid_truck_wavelength(0.5, 0.75, 0.05, -1.0)
 

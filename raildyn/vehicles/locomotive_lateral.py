@@ -1,16 +1,17 @@
 """Six-axle locomotive in the lateral plane: a body on two three-axle trucks (book chapters 6 and 7).
 
-* :class:`ThreeAxleTruck` — a truck frame (lateral, yaw) on three wheelsets at
-  +d, 0 and −d (lateral, yaw each), joined by the secondary suspension (flexicoil
-  springs, dampers) to a body running straight: 8 degrees of freedom;
-* :class:`LateralLocomotive` — a body (lateral, yaw, roll) on two such trucks:
-  19 degrees of freedom, driven by the alignment and the cross-level under each of
+* :class:`~raildyn.vehicles.locomotive_lateral.ThreeAxleTruck` — a truck frame (lateral,
+  yaw) on three wheelsets at +d, 0 and −d (lateral, yaw each), joined by the secondary
+  suspension (flexicoil springs, dampers) to a body running straight: 8 degrees of freedom;
+* :class:`~raildyn.vehicles.locomotive_lateral.LateralLocomotive` — a body (lateral, yaw,
+  roll) on two such trucks: 19 degrees of freedom, driven by the alignment and the cross-level under each of
   its six wheelsets (12 inputs, ordered as :class:`~raildyn.vehicles.lateral.Car`'s).
 
 Both follow the one linear protocol (:class:`raildyn.linear_model.LinearModel`), so
 :mod:`raildyn.stability` and :mod:`raildyn.vehicles.response` take them unchanged,
 and ``nonlinear(speed)`` gives the nonlinear counterpart
-(:class:`~raildyn.wheelset.NonlinearLateral`).
+(:class:`~raildyn.wheelset.NonlinearLateral`: nonlinear wheel–rail contact, and the
+middle axles' play as a clearance).
 
 Traction motors. Each axle drives through a nose-suspended motor: the motor hangs
 on the axle through its suspension bearings and rests its nose on the frame, so a
@@ -26,14 +27,16 @@ given a free lateral clearance in the frame (so that the truck can curve), beyon
 which a stop engages. The linear model represents small motions within the play:
 the middle axle is held laterally only by its soft centring springs
 (``middle_lateral_stiffness``), while the end axles have the full primary lateral
-stiffness of the :class:`~raildyn.wheelset.Wheelset`. The clearance itself
-(``middle_lateral_play``) enters the force law of :meth:`ThreeAxleTruck.play_force`,
-the soft centring inside the play and the stop's stiffness beyond it, for time runs;
-the nonlinear model of :meth:`LateralLocomotive.nonlinear` (the wheel–rail contact
-made nonlinear) keeps the linearised play.
+stiffness of the :class:`~raildyn.wheelset.Wheelset`. The nonlinear models
+(:meth:`~raildyn.vehicles.locomotive_lateral.ThreeAxleTruck.nonlinear`,
+:meth:`~raildyn.vehicles.locomotive_lateral.LateralLocomotive.nonlinear`) replace that
+spring by the clearance law of
+:meth:`~raildyn.vehicles.locomotive_lateral.ThreeAxleTruck.play_element`: the soft centring
+inside the play (``middle_lateral_play``) and, beyond it, a stop as stiff as the end
+axles' primary spring.
 
-The default values (:data:`LATERAL_LOCOMOTIVE`) are representative of an EMD
-SD40-2, as the vertical :class:`~raildyn.vehicles.locomotive.Locomotive` is, and
+The default values (:data:`~raildyn.vehicles.locomotive_lateral.LATERAL_LOCOMOTIVE`) are
+representative of an EMD SD40-2, as the vertical :class:`~raildyn.vehicles.locomotive.Locomotive` is, and
 use its masses and spacings so that the two models describe one locomotive; no
 published lateral parameter set of a six-axle locomotive was found. Each value is
 given with its source or its reasoning beside the constant below.
@@ -48,10 +51,17 @@ import numpy as np
 from raildyn import _checks, contact
 from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY
-from raildyn.linear_model import Assembler, LinearSystem
-from raildyn.vehicles.lateral import _OnTheRails
+from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
+from raildyn.suspension import clearance_force
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE
-from raildyn.wheelset import Wheelset, add_wheelset, kinematic_wavelength
+from raildyn.wheelset import (
+    NonlinearLateral,
+    SuspensionElement,
+    WheelRailContact,
+    Wheelset,
+    add_wheelset,
+    kinematic_wavelength,
+)
 
 __all__ = ["LATERAL_LOCOMOTIVE", "LateralLocomotive", "ThreeAxleTruck", "rigid_truck_wavelength"]
 
@@ -146,6 +156,14 @@ def _locomotive_wheelset() -> Wheelset:
     )
 
 
+def _nonlinear(model, speed, contact, elements) -> NonlinearLateral:
+    """The nonlinear counterpart of a truck or locomotive: :class:`~raildyn.wheelset.NonlinearLateral`."""
+    contact = (
+        WheelRailContact() if contact is None else _checks.instance("contact", contact, WheelRailContact)
+    )
+    return NonlinearLateral(model.linear_system(), contact, speed, elements)
+
+
 def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -> float:
     """Kinematic wavelength of three wheelsets held rigidly parallel in a truck, at +d, 0 and −d, m.
 
@@ -190,7 +208,7 @@ def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -
 
 
 @dataclass(frozen=True)
-class ThreeAxleTruck(_OnTheRails):
+class ThreeAxleTruck(LinearModelBase):
     """A three-axle locomotive truck: frame, three motored wheelsets, primary and secondary suspension.
 
     The primary suspension of the end axles is the one in the
@@ -217,7 +235,8 @@ class ThreeAxleTruck(_OnTheRails):
         (representative: soft centring springs, 0.3 MN/m; the end axles' damping).
     middle_lateral_play : float
         The middle axle's free lateral clearance either side, m, ≥ 0 (representative: 19 mm);
-        used by :meth:`play_force`, not by the linear model.
+        used by the nonlinear model
+        (:meth:`~raildyn.vehicles.locomotive_lateral.ThreeAxleTruck.play_element`), not by the linear one.
     secondary_lateral_stiffness, secondary_lateral_damping : float
         Per truck, N/m and N·s/m, ≥ 0 (flexicoil springs and lateral dampers: 1.0 MN/m and
         40 kN·s/m, representative).
@@ -301,27 +320,56 @@ class ThreeAxleTruck(_OnTheRails):
             middle_lateral_play=0.0,
         )
 
-    def play_force(self, deflection) -> np.ndarray:
-        """Lateral force of the frame on the middle axle against its deflection in the frame, N.
+    def play_element(self, tag: str = "") -> SuspensionElement | None:
+        """The middle axle's lateral play as a nonlinear suspension element of truck ``tag``.
 
-        F = −k_c u within the play |u| ≤ g, and beyond it the stop adds the end axles'
-        primary stiffness k_y: F = −k_c u − k_y (|u| − g) sign u. With g = 0 this is the
-        end axles' spring (plus the centring). The linear model keeps −k_c u, the slope
-        within the play.
+        On the deflection u = y_w − y_f of the middle wheelset in the frame (it sits under
+        the frame's centre, so the frame's yaw does not move it), the force
+        F = k_c u + k_y (|u| − g)₊ sgn u (:func:`raildyn.suspension.clearance_force`):
+        the soft centring k_c within the play g, and beyond it a stop as stiff as the end
+        axles' primary spring k_y. It replaces the spring k_c of the linear model, its
+        slope within the play; the damper stays.
 
         Parameters
         ----------
-        deflection : float or array_like
-            u, the middle axle's lateral displacement relative to the frame, m (finite, at least one).
+        tag : {"", "1", "2"}
+            Suffix of the truck's labels: "" for the truck alone, "1" or "2" on a locomotive.
 
         Returns
         -------
-        ndarray
-            F, N, the shape of ``deflection``.
+        SuspensionElement or None
+            None when the play is 0 (the linear spring holds the axle).
         """
-        u = _checks.array("deflection", deflection, allow_empty=False)
-        beyond = np.sign(u) * np.maximum(np.abs(u) - self.middle_lateral_play, 0.0)
-        return -self.middle_lateral_stiffness * u - self.wheelset.lateral_stiffness * beyond
+        _checks.choice("tag", tag, ("", "1", "2"))
+        if self.middle_lateral_play == 0.0:
+            return None
+        gap, stop, centring = (
+            self.middle_lateral_play,
+            self.wheelset.lateral_stiffness,
+            self.middle_lateral_stiffness,
+        )
+        return SuspensionElement(
+            {f"wheelset{tag}2 y": 1.0, f"frame{tag} y": -1.0},
+            lambda u, _: clearance_force(u, gap, stop, centring),
+            stiffness=centring,
+        )
+
+    def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
+        """The truck with nonlinear wheel–rail contact and its middle axle's play, at ``speed``.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+        contact : WheelRailContact, optional
+            The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
+
+        Returns
+        -------
+        NonlinearLateral
+        """
+        play = self.play_element()
+        return _nonlinear(self, speed, contact, () if play is None else (play,))
 
     def assemble(
         self, asm: Assembler, tag: str, body: dict[str, float], body_yaw: str | None, first_input: int
@@ -407,7 +455,7 @@ class ThreeAxleTruck(_OnTheRails):
 
 
 @dataclass(frozen=True)
-class LateralLocomotive(_OnTheRails):
+class LateralLocomotive(LinearModelBase):
     """A six-axle locomotive: body (lateral, yaw, roll) on two three-axle trucks.
 
     Attributes
@@ -464,7 +512,8 @@ class LateralLocomotive(_OnTheRails):
         Parameters
         ----------
         **changes
-            Fields of the locomotive, of its :class:`ThreeAxleTruck` or of their
+            Fields of the locomotive, of its
+            :class:`~raildyn.vehicles.locomotive_lateral.ThreeAxleTruck` or of their
             :class:`~raildyn.wheelset.Wheelset`.
 
         Returns
@@ -486,6 +535,23 @@ class LateralLocomotive(_OnTheRails):
         LateralLocomotive
         """
         return replace(self, truck=self.truck.without_play())
+
+    def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
+        """The locomotive with nonlinear wheel–rail contact and its middle axles' play, at ``speed``.
+
+        Parameters
+        ----------
+        speed : float
+            V, m/s (> 0).
+        contact : WheelRailContact, optional
+            The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
+
+        Returns
+        -------
+        NonlinearLateral
+        """
+        plays = [self.truck.play_element(tag) for tag in ("1", "2")]
+        return _nonlinear(self, speed, contact, tuple(p for p in plays if p is not None))
 
     @property
     def wheelset(self) -> Wheelset:
