@@ -607,4 +607,7 @@ class LateralLocomotive(LinearModelBase):
 
 
 LATERAL_LOCOMOTIVE = LateralLocomotive()
-"""The representative six-axle locomotive (EMD SD40-2) on new 1:20 wheels, middle axles with lateral play."""
+"""The representative six-axle locomotive (EMD SD40-2) on new 1:20 wheels, middle axles with lateral play.
+
+Its linear critical speed is 101.5 m/s (4.6 Hz, truck hunting), 45.4 m/s on worn treads of
+conicity 0.2; its nonlinear critical speed (flange contact at 9.1 mm) is 96.1 m/s."""
