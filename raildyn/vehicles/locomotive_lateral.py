@@ -325,7 +325,7 @@ class ThreeAxleTruck(LinearModelBase):
 
         On the deflection u = y_w − y_f of the middle wheelset in the frame (it sits under
         the frame's centre, so the frame's yaw does not move it), the force
-        F = k_c u + k_y (|u| − g)₊ sgn u (:func:`raildyn.suspension.clearance_force`):
+        ``F = k_c u + k_y (|u| − g)₊ sgn u`` (:func:`raildyn.suspension.clearance_force`):
         the soft centring k_c within the play g, and beyond it a stop as stiff as the end
         axles' primary spring k_y. It replaces the spring k_c of the linear model, its
         slope within the play; the damper stays.
