@@ -3,12 +3,36 @@ nonlinear suspension elements of :class:`raildyn.wheelset.NonlinearLateral` they
 
 from __future__ import annotations
 
+import control
 import numpy as np
 import pytest
 
+from raildyn.constants import GRAVITY
+from raildyn.stability import (
+    critical_speed,
+    eigenvalues_against_speed,
+    largest_real_part,
+    limit_cycle_amplitude,
+)
 from raildyn.suspension import clearance_force, coulomb_friction
-from raildyn.vehicles import Bogie
-from raildyn.wheelset import NonlinearLateral, SuspensionElement, WheelRailContact
+from raildyn.vehicles import (
+    EMPTY_FREIGHT_CAR,
+    GDU_ORE_CAR,
+    LOADED_FREIGHT_CAR,
+    Bogie,
+    LateralFreightCar,
+    ThreePieceTruck,
+    freight_car,
+    track_frf,
+)
+from raildyn.vehicles.three_piece import _friction_law
+from raildyn.wheelset import (
+    NonlinearLateral,
+    SuspensionElement,
+    WheelRailContact,
+    kinematic_wavelength,
+    rigid_bogie_wavelength,
+)
 
 # ---------------------------------------------------------------------------
 # Nonlinear suspension elements
@@ -89,3 +113,198 @@ def test_elements_are_refused_by_name():
         SuspensionElement({"frame y": 1.0}, lambda d, v: np.full_like(d, np.nan))
     with pytest.raises(ValueError, match="stiffness"):
         SuspensionElement({"frame y": 1.0}, lambda d, v: d, stiffness=-1.0)
+
+
+# ---------------------------------------------------------------------------
+# The three-piece truck and the freight car
+
+
+def test_parameter_values_against_their_sources():
+    # Baruffaldi's Ride Control truck (doutorado-repo, src/ridecontroltruck.cpp, commit 247ba5c), the AAR
+    # 286 000 lb gross rail load and the 63 000 lb light weight, as cited in raildyn.vehicles.three_piece.
+    loaded, empty = LOADED_FREIGHT_CAR, EMPTY_FREIGHT_CAR
+    truck = loaded.truck
+    assert truck.side_frame_mass == 2 * 290.0 and truck.side_frame_yaw_inertia == 2 * 91.0
+    assert truck.bolster_yaw_inertia == 99.0
+    assert loaded.wheelset.mass == 2000.0 and loaded.wheelset.rolling_radius == pytest.approx(0.4572)
+    assert loaded.wheelset.conicity == 1 / 20
+    # Everything but each truck's wheelsets, side frames and four 12 kg wedges rides with the body.
+    unsprung = 2 * (2 * 2000.0 + 2 * 290.0 + 4 * 12.0)
+    assert loaded.body_mass == pytest.approx(286_000 * 0.45359237 - unsprung, rel=1e-12)
+    assert empty.body_mass == pytest.approx(63_000 * 0.45359237 - unsprung, rel=1e-12)
+    assert loaded.wheelset.axle_load == pytest.approx(286_000 * 0.45359237 * GRAVITY / 4, rel=1e-12)
+    # The wedges: the same four per truck as the GDU ore car's two per nest, so the lateral friction is twice
+    # that car's per-nest wedge friction (an independent path through wedge_friction_force), the warp moment
+    # that friction at the wedges' 0.221 m offset; the same empty and loaded (constant-damping wedges).
+    assert truck.lateral_friction == pytest.approx(2 * GDU_ORE_CAR.wedge_friction, rel=1e-12)
+    assert truck.warp_friction == pytest.approx(0.221 * truck.lateral_friction, rel=1e-12)
+    assert empty.truck.lateral_friction == truck.lateral_friction
+    # Load-proportional: the centre plate's friction with the body's weight; the side frames' pendulum with
+    # the weight on the adapters over its length r₀ − 0.238 m; Kalker's coefficients as W^(2/3) (Hertz's
+    # patch of one shape, only its size changing).
+    ratio = (286_000 - 4 * 2000 / 0.45359237) / (63_000 - 4 * 2000 / 0.45359237)
+    assert loaded.truck.centre_plate_friction / empty.truck.centre_plate_friction == pytest.approx(
+        loaded.body_mass / empty.body_mass, rel=1e-12
+    )
+    assert loaded.wheelset.lateral_stiffness / empty.wheelset.lateral_stiffness == pytest.approx(
+        ratio, rel=1e-12
+    )
+    assert loaded.wheelset.lateral_stiffness * (0.4572 - 0.238) == pytest.approx(
+        (286_000 * 0.45359237 - 4 * 2000.0) * GRAVITY / 4, rel=1e-12
+    )
+    load_ratio = (286_000 / 63_000) ** (2 / 3)
+    for name in ("f11", "f22"):
+        assert getattr(loaded.wheelset, name) / getattr(empty.wheelset, name) == pytest.approx(
+            load_ratio, rel=1e-9
+        )
+    assert LateralFreightCar() == loaded and ThreePieceTruck() == truck
+    assert freight_car(loaded=False) == empty
+
+
+def _kinematic_wavelength(model, speed):
+    """L = 2πV/ω of the slowest oscillatory eigenvalue at a low speed: the kinematic mode."""
+    lam = eigenvalues_against_speed(model, [speed])[0]
+    lam = lam[lam.imag > 1e-9]
+    return 2 * np.pi * speed / lam[np.argmin(np.abs(lam))].imag
+
+
+def test_a_truck_with_infinite_warp_stiffness_is_the_rigid_bogie():
+    # Pendulum and adapters rigid (10¹²), the truck free of the body (no nest springs, no friction), equal
+    # longitudinal and lateral creep coefficients and no spin or gravitational terms: as the warp stiffness
+    # grows the truck becomes the rigid two-axle bogie of chapter 5, whose kinematic wavelength is
+    # 2π√(r₀a/λ · (1 + b²/a²)). At 0.5 m/s the inertia forces are m ω²/(f κ) ≈ 2e-5 of the creep forces or
+    # less; with a warp stiffness of 10¹² the wavelength agrees to 3e-10 (measured): 1e-6 relative.
+    stiff = 1e12
+    rigid = ThreePieceTruck().replace(
+        warp_stiffness=stiff, lateral_stiffness=stiff, yaw_stiffness=stiff, nest_shear_stiffness=0.0,
+        lateral_friction=0.0, warp_friction=0.0, centre_plate_friction=0.0,
+        f23=0.0, f33=0.0, contact_angle=0.0, contact_angle_parameter=0.0,
+    )  # fmt: skip
+    rigid = rigid.replace(f22=rigid.wheelset.f11)
+    ws = rigid.wheelset
+    expected = rigid_bogie_wavelength(ws.rolling_radius, ws.half_gauge, ws.conicity, rigid.semi_wheelbase)
+    assert _kinematic_wavelength(rigid, 0.5) == pytest.approx(expected, rel=1e-6)
+    # The limit is approached as the warp stiffness grows: the wave is shorter than the rigid bogie's (the
+    # truck shears, and its wheelsets steer more freely), and the gap closes, 34 % at the real truck's
+    # 2 MN·m/rad, 6 % at ten times it, 5e-4 at a hundred times (measured), always longer than a free
+    # wheelset's (Klingel).
+    klingel = kinematic_wavelength(ws.rolling_radius, ws.half_gauge, ws.conicity)
+    gaps = [
+        1 - _kinematic_wavelength(rigid.replace(warp_stiffness=k), 0.5) / expected for k in (2e6, 2e7, 2e8)
+    ]
+    assert gaps[0] > gaps[1] > gaps[2] > 0 and gaps[2] < 1e-3
+    assert _kinematic_wavelength(rigid.replace(warp_stiffness=2e6), 0.5) > klingel
+
+
+def test_eigenvalues_agree_with_python_control():
+    # python-control's poles of a StateSpace built here from M, C(V), K (A = [[0, I], [−M⁻¹K, −M⁻¹C]] by
+    # hand, an independent assembly of the first-order form) against raildyn's batched eigenvalues. Both are
+    # LAPACK eigenvalues of the same 34 × 34 matrix up to rounding in M⁻¹: 1e-9 of the largest modulus.
+    for car in (EMPTY_FREIGHT_CAR, LOADED_FREIGHT_CAR):
+        mats = car.matrices(20.0)
+        n = mats.M.shape[0]
+        Minv = np.linalg.inv(mats.M)
+        A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ mats.K, -Minv @ mats.C]])
+        poles = control.ss(A, np.zeros((2 * n, 1)), np.zeros((1, 2 * n)), 0.0).poles()
+        ours = eigenvalues_against_speed(car, [20.0])[0]
+        scale = np.abs(ours).max()
+        for p in poles:
+            assert np.abs(ours - p).min() < 1e-9 * scale
+        assert len(poles) == len(ours) == 34
+
+
+def test_the_empty_car_hunts_at_a_lower_speed_than_the_loaded_one():
+    """Empty car: 14.6 m/s (0.77 Hz, the body swaying on the side frames); loaded: 34.8 m/s (1.27 Hz).
+
+    Why: two restraints of the trucks grow with the load, the centre plate's friction in yaw
+    (μ W (2/3) R, W the body's weight on the truck) and the side frames' pendulum stiffness
+    (the weight on the adapters over the pendulum length), while the wedges' friction and the
+    warp stiffness do not (constant-damping wedges, pressed by their own springs). The empty
+    car, on 1/6 of the loaded car's weight, keeps the wedges but loses most of both restraints.
+    Giving it either of the loaded car's restores much of the loaded critical speed.
+    """
+    empty = critical_speed(EMPTY_FREIGHT_CAR, (2.0, 100.0))
+    loaded = critical_speed(LOADED_FREIGHT_CAR, (2.0, 100.0))
+    assert empty.status == loaded.status == "crossing"
+    assert empty.speed < loaded.speed
+    # Regression of the two values (the Brent tolerance is 0.01 m/s) beside the closed-form checks above.
+    assert empty.speed == pytest.approx(14.56, abs=0.05) and loaded.speed == pytest.approx(34.83, abs=0.05)
+    plate = EMPTY_FREIGHT_CAR.replace(centre_plate_friction=LOADED_FREIGHT_CAR.truck.centre_plate_friction)
+    pendulum = EMPTY_FREIGHT_CAR.replace(lateral_stiffness=LOADED_FREIGHT_CAR.wheelset.lateral_stiffness)
+    for variant in (plate, pendulum):
+        assert critical_speed(variant, (2.0, 100.0)).speed > 1.5 * empty.speed
+
+
+def test_the_nonlinear_car_linearises_to_the_linear_one():
+    # At the centred state the smooth friction F tanh(v/v_ε) is a damper of slope F/v_ε, the equivalent
+    # damper 4F/(πωX) of the linear model with X = 4v_ε/(πω): the Jacobian of the nonlinear right-hand side
+    # (central differences, h = 1e-9) must be that linear model's state matrix. The contact's saturation
+    # slope is 1 − O(h) and the flange is idle: 1e-5 of the matrix's largest entry.
+    car = LOADED_FREIGHT_CAR
+    truck = car.truck
+    X = 4 * truck.friction_velocity / (np.pi * 2 * np.pi * truck.reference_frequency)
+    linear = car.replace(reference_amplitude=X, reference_angle=X)
+    model = car.nonlinear(25.0)
+    n = model.state_size
+    J = np.empty((n, n))
+    h = 1e-9
+    for j in range(n):
+        dx = np.zeros(n)
+        dx[j] = h
+        J[:, j] = (model.rhs(0.0, dx) - model.rhs(0.0, -dx)) / (2 * h)
+    A = linear.linear_system().state_matrices([25.0])[0]
+    np.testing.assert_allclose(model.rhs(0.0, np.zeros(n)), 0.0, atol=1e-12)
+    np.testing.assert_allclose(J, A, rtol=1e-5, atol=1e-5 * np.abs(A).max())
+    assert len(model.elements) == 6  # lateral, warp and centre-plate friction of each truck
+
+
+def test_the_friction_law_is_coulomb_friction():
+    law = _friction_law(8.0e3, 5e-3)
+    v = np.linspace(-0.05, 0.05, 11)
+    np.testing.assert_allclose(law(0.0 * v, v), coulomb_friction(v, 8.0e3, velocity_scale=5e-3), rtol=1e-15)
+
+
+def test_the_loaded_car_hunts_below_its_linear_critical_speed():
+    # Subcritical hunting: at 0.7 of the linear critical speed (24.4 m/s), where small motions die away, a
+    # motion started at 12 mm does not: after 4 s it is still 9 mm and growing (run for 12 s, it settles on a
+    # limit cycle of about 14 mm at 1.15 Hz), so the nonlinear critical speed lies below the linear one.
+    # Friction that slides at large amplitude damps less than its small-motion equivalent. The solver's steps
+    # are set by stability (the friction's slope F/v_ε), not accuracy, so rtol = 1e-3 changes the amplitude
+    # by 2e-5 relative against 1e-6 (measured).
+    linear = critical_speed(LOADED_FREIGHT_CAR, (2.0, 100.0)).speed
+    speed = 0.7 * linear
+    assert largest_real_part(LOADED_FREIGHT_CAR, [speed])[0] < 0.0
+    cycle = limit_cycle_amplitude(LOADED_FREIGHT_CAR.nonlinear(), speed, duration=4.0, rtol=1e-3)
+    assert cycle.hunting() and cycle.amplitude > 5e-3
+
+
+def test_the_response_machinery_works_unchanged():
+    # A uniform shift of the track (alignment at ω = 0) moves the whole car with it, every spring relaxed:
+    # H(0) = 1 for the body, exactly (to rounding).
+    omega = np.array([0.0, 2.0, 6.0])
+    H = track_frf(LOADED_FREIGHT_CAR, omega, 20.0, "body y", component="alignment")
+    assert H[0] == pytest.approx(1.0, abs=1e-9)
+    assert np.all(np.isfinite(H))
+    assert LOADED_FREIGHT_CAR.linear_system().input_kinds == ("alignment",) * 4 + ("cross_level",) * 4
+    np.testing.assert_allclose(LOADED_FREIGHT_CAR.axle_positions, [0.0, 1.73, 12.395, 14.125], atol=1e-3)
+
+
+def test_bad_input_is_refused_by_name():
+    with pytest.raises(ValueError, match="warp_stiffness"):
+        ThreePieceTruck(warp_stiffness=-1.0)
+    with pytest.raises(ValueError, match="friction_velocity"):
+        ThreePieceTruck(friction_velocity=0.0)
+    with pytest.raises(TypeError, match="truck"):
+        LateralFreightCar(truck="three-piece")
+    with pytest.raises(ValueError, match="semi_truck_spacing"):
+        LateralFreightCar(semi_truck_spacing=0.5)
+    with pytest.raises(ValueError, match="roll_stiffness"):
+        LateralFreightCar(roll_stiffness=1.0e5)
+    with pytest.raises(ValueError, match="conicity"):
+        LOADED_FREIGHT_CAR.replace(conicity=-0.1)
+    with pytest.raises(TypeError, match="loaded"):
+        freight_car(loaded="yes")
+    with pytest.raises(TypeError, match="contact"):
+        LOADED_FREIGHT_CAR.nonlinear(20.0, contact="cone")
+    with pytest.raises(ValueError, match="speed"):
+        LOADED_FREIGHT_CAR.nonlinear(0.0)

@@ -19,6 +19,7 @@ from raildyn.vehicles import (
     DEFAULT_LOCOMOTIVE,
     GDU_ORE_CAR,
     LATERAL_LOCOMOTIVE,
+    LOADED_FREIGHT_CAR,
     MANCHESTER_CAR,
     MANCHESTER_VERTICAL,
     Bogie,
@@ -37,6 +38,8 @@ MODELS = {
     "locomotive": DEFAULT_LOCOMOTIVE,
     "lateral locomotive": LATERAL_LOCOMOTIVE,
     "three-axle truck": LATERAL_LOCOMOTIVE.truck,
+    "lateral freight car": LOADED_FREIGHT_CAR,
+    "three-piece truck": LOADED_FREIGHT_CAR.truck,
 }
 SPEED = 30.0  # m/s, below every lateral model's critical speed
 

@@ -31,6 +31,13 @@ from raildyn.vehicles.response import (
     time_response,
     track_frf,
 )
+from raildyn.vehicles.three_piece import (
+    EMPTY_FREIGHT_CAR,
+    LOADED_FREIGHT_CAR,
+    LateralFreightCar,
+    ThreePieceTruck,
+    freight_car,
+)
 from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, BodyFrequencies, VerticalCar
 
 __all__ = [
@@ -40,8 +47,11 @@ __all__ = [
     "Bogie",
     "Car",
     "DEFAULT_LOCOMOTIVE",
+    "EMPTY_FREIGHT_CAR",
     "FreightCar",
     "GDU_ORE_CAR",
+    "LOADED_FREIGHT_CAR",
+    "LateralFreightCar",
     "LATERAL_LOCOMOTIVE",
     "LateralLocomotive",
     "Locomotive",
@@ -49,11 +59,13 @@ __all__ = [
     "PeriodicProfile",
     "ResponseSpectrum",
     "RockAndRoll",
+    "ThreePieceTruck",
     "TimeResponse",
     "ThreeAxleTruck",
     "VerticalCar",
     "WedgeFriction",
     "cooperrider_car",
+    "freight_car",
     "gdu_ore_car",
     "periodic_profile",
     "response_spectrum",

@@ -4,8 +4,10 @@ and 7), and the nonlinear suspension elements of :class:`raildyn.wheelset.Nonlin
 from __future__ import annotations
 
 import numpy as np
-from fuzzing import call, fuzz
+from fuzzing import call, fuzz, on
 
+from raildyn import vehicles as veh
+from raildyn.linear_model import Assembler
 from raildyn.suspension import coulomb_friction
 
 
@@ -14,6 +16,23 @@ def wedge(d, v):
     return 1.0e6 * np.asarray(d) + coulomb_friction(v, 5.0e3, velocity_scale=5.0e-3)
 
 
+def truck_assembler():
+    labels = ["frame y", "frame ψ", "bolster ψ"] + [f"wheelset{k} {q}" for k in (1, 2) for q in "yψ"]
+    return Assembler(labels, n_inputs=4)
+
+
+# Friction forces and the stiffnesses that sit beside friction may be zero (no wedge, no warp spring).
+TRUCK_ZEROS = {
+    name: "zero"
+    for name in (
+        "warp_stiffness",
+        "nest_shear_stiffness",
+        "lateral_friction",
+        "warp_friction",
+        "centre_plate_friction",
+    )
+}
+
 ENTRIES = [
     fuzz(
         "raildyn.wheelset.SuspensionElement",
@@ -21,4 +40,25 @@ ENTRIES = [
         # a law's force has either sign (it pulls a deflection of either sign back)
         accepts={"stiffness": "zero", "damping": "zero", "force": "returns-negative"},
     ),
+    fuzz("raildyn.vehicles.ThreePieceTruck", lambda: call(), accepts=TRUCK_ZEROS),
+    fuzz(
+        "raildyn.vehicles.ThreePieceTruck.assemble",
+        lambda: on(veh.ThreePieceTruck(), truck_assembler(), "", {}, None, 0),
+        accepts={"first_input": "zero"},
+    ),
+    fuzz("raildyn.vehicles.ThreePieceTruck.linear_system", lambda: on(veh.ThreePieceTruck())),
+    fuzz("raildyn.vehicles.ThreePieceTruck.nonlinear", lambda: on(veh.ThreePieceTruck(), 20.0)),
+    fuzz("raildyn.vehicles.ThreePieceTruck.replace", lambda: on(veh.ThreePieceTruck(), warp_stiffness=1.0e6)),
+    fuzz(
+        "raildyn.vehicles.LateralFreightCar",
+        lambda: call(),
+        accepts={"body_height": "zero", "roll_damping": "zero"},
+    ),
+    fuzz("raildyn.vehicles.LateralFreightCar.linear_system", lambda: on(veh.LateralFreightCar())),
+    fuzz("raildyn.vehicles.LateralFreightCar.nonlinear", lambda: on(veh.LateralFreightCar(), 20.0)),
+    fuzz(
+        "raildyn.vehicles.LateralFreightCar.replace",
+        lambda: on(veh.LateralFreightCar(), body_mass=100_000.0),
+    ),
+    fuzz("raildyn.vehicles.freight_car", lambda: call(loaded=False)),
 ]
