@@ -100,9 +100,8 @@ _WHEELSET_MASS = 2000.0  # kg, with its bearings and adapters [RC: wheelL->setMa
 _WHEELSET_YAW_INERTIA = _WHEELSET_MASS * 1120.0 / 1813.0
 _WHEEL_RADIUS = 0.0254 * 36 / 2  # m [AAR]
 _CONICITY = 1.0 / 20.0  # the new wheel's tread taper [AAR]
-_HALF_GAUGE = (
-    0.75  # m, half the distance between the contact points on standard gauge (as raildyn's Wheelset)
-)
+# Half the distance between the contact points on standard gauge, m (as raildyn's Wheelset).
+_HALF_GAUGE = 0.75
 _SEMI_WHEELBASE = 0.865  # m [FC: semi_truck_wheelbase]
 _SIDE_FRAME_SPACING = 1.0  # m, half the distance between the side frames and nests [FC: semi_spring_spacing]
 _SEMI_TRUCK_SPACING = (40 + 8 / 12) * 0.3048 / 2  # m [FC: semi_truck_spacing]
@@ -113,21 +112,22 @@ _BODY_LENGTH, _BODY_WIDTH, _BODY_HEIGHT = 15.0, 3.2, 3.5  # m, the uniform body 
 # lateral stiffness per wheelset is the load on that wheelset's two adapters over the pendulum length
 # (derived).
 _PENDULUM_LENGTH = _WHEEL_RADIUS - 0.238
-# Adapter in the pedestal jaw, longitudinal: 20 MN/m per adapter, at ±d. Representative: the adapters are
-# nearly rigid steel-on-steel seats, so that the axles stay square to the side frames; the critical speed
-# moves by under 1 % between 10 and 40 MN/m.
+# Adapter in the pedestal jaw, longitudinal: 20 MN/m per adapter, at ±d. Representative (assumed): the
+# adapters are stiff steel seats that keep the axles square to the side frames. The loaded car's critical
+# speed depends on it (40.6, 34.8, 29.8 m/s at 10, 20, 40 MN/m; the empty car's 15.1, 14.6, 14.3 m/s).
 _ADAPTER_LONGITUDINAL = 20.0e6
-# Lateral shear of a spring nest: 0.5 of its vertical rate. Representative: a loaded freight coil's lateral
-# rate is about half its vertical one.
+# Lateral shear of a spring nest: 0.5 of its vertical rate. Representative (assumed): the lateral rate of a
+# loaded coil spring is a fraction of its vertical rate that falls as its load rises.
 _NEST_LATERAL = 0.5 * _NEST_STIFFNESS
-# Warp (squaring) stiffness of the wedges: 2 MN·m/rad per truck. Representative: the order of magnitude of
-# a standard three-piece truck's warp stiffness in the freight-truck studies of the 1970s–80s; the
-# notebooks sweep it, and the rigid-truck limit is its infinite value.
+# Warp (squaring) stiffness of the wedges: 2 MN·m/rad per truck. Representative (assumed: we found no
+# published value): a soft truck in warp, the classic weakness of the three-piece design; the notebooks
+# sweep it, and the rigid-truck limit is its infinite value.
 _WARP_STIFFNESS = 2.0e6
-# Centre plate: 14 in (0.356 m) diameter, friction coefficient 0.2 (a lubricated plate), friction acting at
-# 2/3 of the radius (uniform pressure). Representative.
+# Centre plate: 14 in (0.356 m) diameter, friction coefficient 0.2, friction acting at 2/3 of the radius
+# (uniform pressure). Representative (assumed).
 _CENTRE_PLATE_RADIUS = 0.0254 * 14 / 2
 _CENTRE_PLATE_FRICTION = 0.2
+_CENTRE_PLATE_ARM = 2 / 3 * _CENTRE_PLATE_RADIUS
 # The reference motion at which friction is linearised: 2 Hz, the frequency of freight-truck hunting, and
 # relative amplitudes of 0.5 mm and 0.5 mrad. Representative: the linear model decides whether small motions
 # about the centred running grow, and friction barely slides in them; the equivalent dampers, and so the
@@ -135,9 +135,10 @@ _CENTRE_PLATE_FRICTION = 0.2
 _REFERENCE_FREQUENCY = 2.0
 _REFERENCE_AMPLITUDE = 0.5e-3
 _REFERENCE_ANGLE = 0.5e-3
-# The smooth friction law F tanh(v/v_ε) of the nonlinear model: v_ε = 5 mm/s (5 mrad/s for the angles), a
-# small fraction of the hunting's sliding velocities (tens of mm/s), large enough to keep the equations
-# non-stiff for an explicit solver.
+# The smooth friction law F tanh(v/v_ε) of the nonlinear model: v_ε = 5 mm/s at the sliding faces, a small
+# fraction of the hunting's sliding velocities (tens of mm/s), large enough to keep the equations non-stiff
+# for an explicit solver. The warp wedges slide at 0.221 m from the bolster's centre line, the centre plate
+# at its effective radius.
 _FRICTION_VELOCITY = 5.0e-3
 
 
@@ -183,7 +184,7 @@ def _wheelset(total: float) -> Wheelset:
 
 def _centre_plate_friction(total: float) -> float:
     """μ W (2/3) R, N·m: the centre plate under half the body's weight."""
-    return _CENTRE_PLATE_FRICTION * (_body_mass(total) * GRAVITY / 2) * (2 / 3) * _CENTRE_PLATE_RADIUS
+    return _CENTRE_PLATE_FRICTION * (_body_mass(total) * GRAVITY / 2) * _CENTRE_PLATE_ARM
 
 
 def _wedge_normal_force() -> float:
@@ -233,12 +234,13 @@ class ThreePieceTruck(LinearModelBase):
     reference_frequency : float
         f of the reference motion, Hz, > 0 (2 Hz).
     reference_amplitude : float
-        X of the reference lateral sliding, m, > 0 (5 mm).
+        X of the reference lateral sliding, m, > 0 (0.5 mm).
     reference_angle : float
-        Θ of the reference warp and centre-plate rotation, rad, > 0 (5 mrad).
+        Θ of the reference warp and centre-plate rotation, rad, > 0 (0.5 mrad).
     friction_velocity : float
-        v_ε of the nonlinear friction law F tanh(v/v_ε), m/s, > 0 (5 mm/s); the warp and
-        centre-plate friction take the same number in rad/s.
+        v_ε of the nonlinear friction law F tanh(v/v_ε), m/s, > 0 (5 mm/s), at the sliding
+        faces: the lateral wedges slide at the bolster's lateral rate, the warp wedges at 0.221 m
+        times the warp rate, the centre plate at 2/3 of its 0.178 m radius times its yaw rate.
     """
 
     wheelset: Wheelset = field(default_factory=lambda: _wheelset(_GROSS_MASS))
@@ -300,17 +302,25 @@ class ThreePieceTruck(LinearModelBase):
         return replace(self, **own)
 
     def _frictions(self, tag: str, body: dict, body_yaw: str | None) -> list:
-        """(deflection, friction, equivalent damper) of the lateral, warp and centre-plate friction."""
+        """(deflection, friction, equivalent damper, v_ε) of the lateral, warp and centre-plate friction.
+
+        v_ε is the smooth law's velocity scale on the deflection's rate: ``friction_velocity``
+        at the sliding faces, which the angles turn at their arms (the wedges' offset, the centre
+        plate's effective radius).
+        """
         f, X, T = self.reference_frequency, self.reference_amplitude, self.reference_angle
+        v = self.friction_velocity
         fy, fpsi, bpsi = f"frame{tag} y", f"frame{tag} ψ", f"bolster{tag} ψ"
         lateral = {**body}
         lateral[fy] = lateral.get(fy, 0.0) - 1.0  # the bolster's lateral displacement less the side frames'
         plate = {bpsi: 1.0} | ({body_yaw: -1.0} if body_yaw else {})
         return [
-            (lateral, self.lateral_friction, _equivalent_damping(self.lateral_friction, X, f)),
-            ({bpsi: 1.0, fpsi: -1.0}, self.warp_friction, _equivalent_damping(self.warp_friction, T, f)),
-            (plate, self.centre_plate_friction, _equivalent_damping(self.centre_plate_friction, T, f)),
-        ]
+            (lateral, self.lateral_friction, _equivalent_damping(self.lateral_friction, X, f), v),
+            ({bpsi: 1.0, fpsi: -1.0}, self.warp_friction, _equivalent_damping(self.warp_friction, T, f),
+             v / _WEDGE_OFFSET),
+            (plate, self.centre_plate_friction, _equivalent_damping(self.centre_plate_friction, T, f),
+             v / _CENTRE_PLATE_ARM),
+        ]  # fmt: skip
 
     def _friction_elements(self, tag: str, body: dict, body_yaw: str | None) -> tuple:
         """The truck's friction as nonlinear elements, each replacing its equivalent damper.
@@ -336,9 +346,9 @@ class ThreePieceTruck(LinearModelBase):
         if body_yaw is not None:
             _checks.instance("body_yaw", body_yaw, str, "str or None")
         out = []
-        for deflection, friction, damping in self._frictions(tag, body, body_yaw):
+        for deflection, friction, damping, scale in self._frictions(tag, body, body_yaw):
             if friction > 0:
-                law = _friction_law(friction, self.friction_velocity)
+                law = _friction_law(friction, scale)
                 out.append(SuspensionElement(deflection, law, stiffness=0.0, damping=damping))
         return tuple(out)
 
@@ -397,7 +407,9 @@ class ThreePieceTruck(LinearModelBase):
             asm.element({wy: 1.0, fy: -1.0, fpsi: -x}, ws.lateral_stiffness, ws.lateral_damping)
             asm.element({wpsi: 1.0, bpsi: -1.0}, ws.yaw_stiffness, ws.yaw_damping)
         stiffness = (self.nest_shear_stiffness, self.warp_stiffness, 0.0)
-        for (deflection, _, damping), k in zip(self._frictions(tag, body, body_yaw), stiffness, strict=True):
+        for (deflection, _, damping, _), k in zip(
+            self._frictions(tag, body, body_yaw), stiffness, strict=True
+        ):
             asm.element(deflection, k, damping)
 
     def linear_system(self) -> LinearSystem:
@@ -475,7 +487,8 @@ class LateralFreightCar(LinearModelBase):
     the nests' lateral shear acts there too. Eight track inputs, as for
     :class:`~raildyn.vehicles.lateral.Car`: the alignment at each of the four wheelsets,
     then the cross-level there; the side frames ride on the wheelsets, so the nests tilt
-    with the mean cross-level of their truck.
+    with the mean cross-level of their truck. The defaults are the loaded car of
+    :func:`freight_car`.
 
     Attributes
     ----------
@@ -592,8 +605,8 @@ class LateralFreightCar(LinearModelBase):
     def nonlinear(self, speed: float = 20.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
         """The car with nonlinear wheel–rail contact and the trucks' friction as friction, at ``speed``.
 
-        The lateral wedges, the warp wedges and the centre plates become
-        :class:`~raildyn.wheelset.SuspensionElement` s with the smooth Coulomb law
+        The lateral wedges, the warp wedges and the centre plates become nonlinear elements
+        (:class:`~raildyn.wheelset.SuspensionElement`) with the smooth Coulomb law
         F tanh(v/v_ε); their equivalent dampers leave the model.
 
         Parameters
