@@ -236,29 +236,23 @@ def test_the_empty_car_hunts_at_a_lower_speed_than_the_loaded_one():
 
 
 def test_the_nonlinear_car_linearises_to_the_linear_one():
-    # At the centred state the smooth friction F tanh(v/v_ε) is a damper of slope F/v_ε, the equivalent
-    # damper 4F/(πωX) of the linear model with X = 4v_ε/(πω): the Jacobian of the nonlinear right-hand side
-    # (central differences, h = 1e-9) must be that linear model's state matrix. The contact's saturation
-    # slope is 1 − O(h) and the flange is idle: 1e-5 of the matrix's largest entry. Warp turns the wedges'
-    # faces at 0.221 m (v_ε/0.221 in rad/s, Θ = X/0.221); the centre plate, at another arm, is left out.
-    car = LOADED_FREIGHT_CAR.replace(centre_plate_friction=0.0)
-    truck = car.truck
-    omega = 2 * np.pi * truck.reference_frequency
-    X = 4 * truck.friction_velocity / (np.pi * omega)
-    linear = car.replace(reference_amplitude=X, reference_angle=X / 0.221)
-    model = car.nonlinear(25.0)
-    n = model.state_size
-    J = np.empty((n, n))
-    h = 1e-9
-    for j in range(n):
-        dx = np.zeros(n)
-        dx[j] = h
-        J[:, j] = (model.rhs(0.0, dx) - model.rhs(0.0, -dx)) / (2 * h)
-    A = linear.linear_system().state_matrices([25.0])[0]
-    np.testing.assert_allclose(model.rhs(0.0, np.zeros(n)), 0.0, atol=1e-12)
-    np.testing.assert_allclose(J, A, rtol=1e-5, atol=1e-5 * np.abs(A).max())
-    assert len(model.elements) == 4  # lateral and warp friction of each truck
-    assert len(LOADED_FREIGHT_CAR.nonlinear().elements) == 6  # and the centre plates
+    # The smooth friction F tanh(v/v_ε) starts with the slope F/v_ε of the linear model's equivalent damper
+    # 4F/(πωX) (v_ε = πωX/4): at the centred state the Jacobian of the nonlinear right-hand side (central
+    # differences, h = 1e-9) is the linear model's state matrix, friction, contact and all. The contact's
+    # saturation slope is 1 − O(h) and the flange is idle: 1e-5 of the matrix's largest entry.
+    for car in (EMPTY_FREIGHT_CAR, LOADED_FREIGHT_CAR):
+        model = car.nonlinear(25.0)
+        assert len(model.elements) == 6  # lateral, warp and centre-plate friction of each truck
+        n = model.state_size
+        J = np.empty((n, n))
+        h = 1e-9
+        for j in range(n):
+            dx = np.zeros(n)
+            dx[j] = h
+            J[:, j] = (model.rhs(0.0, dx) - model.rhs(0.0, -dx)) / (2 * h)
+        A = car.linear_system().state_matrices([25.0])[0]
+        np.testing.assert_allclose(model.rhs(0.0, np.zeros(n)), 0.0, atol=1e-12)
+        np.testing.assert_allclose(J, A, rtol=1e-5, atol=1e-5 * np.abs(A).max())
 
 
 def test_the_friction_law_is_coulomb_friction():
@@ -268,18 +262,18 @@ def test_the_friction_law_is_coulomb_friction():
 
 
 def test_the_loaded_car_hunts_below_its_linear_critical_speed():
-    # Subcritical hunting: at 0.7 of the linear critical speed (24.4 m/s), where small motions die away, a
-    # motion started at 12 mm does not: after 4 s it oscillates at about 1.2 Hz (the linear mode's 1.27 Hz
-    # at the critical speed), 5.7 mm and growing again, so the nonlinear critical speed lies below the
-    # linear one. Friction that slides at large amplitude damps less than its small-motion equivalent. The
-    # solver's steps are set by stability (the friction's slope F/v_ε), not accuracy: rtol = 1e-3 gives the
-    # amplitude of rtol = 1e-6 to 0.2 % (measured).
+    # Subcritical hunting: at 0.7 of the linear critical speed (24.4 m/s), where small motions die away (the
+    # nonlinear model linearises to the linear one, above), a motion started at 12 mm does not: after 4 s it
+    # is 9 mm and growing (run for 8 s, it settles at 13 mm and 1.18 Hz; a quarter of 4 s holds too few
+    # cycles to count), so the nonlinear critical speed lies below the linear one. Friction that slides
+    # at large amplitude damps less than its small-motion equivalent. The solver's steps are set by
+    # stability (the friction's slope F/v_ε), not accuracy: rtol = 1e-3 gives the amplitude of rtol = 1e-6
+    # to 2e-5 relative (measured).
     linear = critical_speed(LOADED_FREIGHT_CAR, (2.0, 100.0)).speed
     speed = 0.7 * linear
     assert largest_real_part(LOADED_FREIGHT_CAR, [speed])[0] < 0.0
     cycle = limit_cycle_amplitude(LOADED_FREIGHT_CAR.nonlinear(), speed, duration=4.0, rtol=1e-3)
-    assert cycle.hunting() and cycle.amplitude > 2e-3 and cycle.growth > 1.0
-    assert 0.8 < cycle.frequency_hz < 1.6
+    assert cycle.hunting() and cycle.amplitude > 5e-3 and cycle.growth > 1.0
 
 
 def test_the_response_machinery_works_unchanged():
@@ -296,8 +290,8 @@ def test_the_response_machinery_works_unchanged():
 def test_bad_input_is_refused_by_name():
     with pytest.raises(ValueError, match="warp_stiffness"):
         ThreePieceTruck(warp_stiffness=-1.0)
-    with pytest.raises(ValueError, match="friction_velocity"):
-        ThreePieceTruck(friction_velocity=0.0)
+    with pytest.raises(ValueError, match="reference_angle"):
+        ThreePieceTruck(reference_angle=0.0)
     with pytest.raises(TypeError, match="truck"):
         LateralFreightCar(truck="three-piece")
     with pytest.raises(ValueError, match="semi_truck_spacing"):

@@ -35,7 +35,10 @@ critical speeds) as the equivalent viscous damper that dissipates the same energ
 per cycle of a reference harmonic motion, c = 4F/(π ω X) (energy 4FX of
 :func:`raildyn.vehicles.freight.wedge_energy_per_cycle`), and the nonlinear
 model (:meth:`LateralFreightCar.nonlinear`) as the friction itself, through
-:class:`raildyn.wheelset.SuspensionElement`.
+:class:`raildyn.wheelset.SuspensionElement`: the smooth law F tanh(v/v_ε) with
+v_ε = (π/4) ω X, whose slope F/v_ε at v = 0 is that equivalent damper, so that the
+nonlinear model linearises to the linear one and departs from it only as the friction
+slides.
 
 Left out: the bolster's own lateral motion on the body's centre plate (it moves with
 the body: its mass is in the body's), the side frames' roll and the wedges'
@@ -127,7 +130,7 @@ _WARP_STIFFNESS = 2.0e6
 # (uniform pressure). Representative (assumed).
 _CENTRE_PLATE_RADIUS = 0.0254 * 14 / 2
 _CENTRE_PLATE_FRICTION = 0.2
-_CENTRE_PLATE_ARM = 2 / 3 * _CENTRE_PLATE_RADIUS
+_CENTRE_PLATE_ARM = 2 / 3 * _CENTRE_PLATE_RADIUS  # uniform pressure
 # The reference motion at which friction is linearised: 2 Hz, the frequency of freight-truck hunting, and
 # relative amplitudes of 0.5 mm and 0.5 mrad. Representative: the linear model decides whether small motions
 # about the centred running grow, and friction barely slides in them; the equivalent dampers, and so the
@@ -135,11 +138,6 @@ _CENTRE_PLATE_ARM = 2 / 3 * _CENTRE_PLATE_RADIUS
 _REFERENCE_FREQUENCY = 2.0
 _REFERENCE_AMPLITUDE = 0.5e-3
 _REFERENCE_ANGLE = 0.5e-3
-# The smooth friction law F tanh(v/v_ε) of the nonlinear model: v_ε = 5 mm/s at the sliding faces, a small
-# fraction of the hunting's sliding velocities (tens of mm/s), large enough to keep the equations non-stiff
-# for an explicit solver. The warp wedges slide at 0.221 m from the bolster's centre line, the centre plate
-# at its effective radius.
-_FRICTION_VELOCITY = 5.0e-3
 
 
 _GROSS_MASS = 286_000 * 0.45359237  # kg, the AAR gross rail load [FC]
@@ -201,7 +199,8 @@ class ThreePieceTruck(LinearModelBase):
     wheelset's primary suspension (its ``lateral_stiffness``, ``yaw_stiffness`` and dampings)
     is the side frames' pendulum and the adapters. Friction is linearised at the reference
     motion (``reference_frequency``, ``reference_amplitude``, ``reference_angle``) for the
-    linear model, and kept as friction in the nonlinear one. The defaults are the loaded
+    linear model, and kept as friction in the nonlinear one (its smooth law's velocity scale
+    from the same reference motion). The defaults are the loaded
     car's truck (:func:`freight_car`).
 
     Attributes
@@ -237,10 +236,6 @@ class ThreePieceTruck(LinearModelBase):
         X of the reference lateral sliding, m, > 0 (0.5 mm).
     reference_angle : float
         Θ of the reference warp and centre-plate rotation, rad, > 0 (0.5 mrad).
-    friction_velocity : float
-        v_ε of the nonlinear friction law F tanh(v/v_ε), m/s, > 0 (5 mm/s), at the sliding
-        faces: the lateral wedges slide at the bolster's lateral rate, the warp wedges at 0.221 m
-        times the warp rate, the centre plate at 2/3 of its 0.178 m radius times its yaw rate.
     """
 
     wheelset: Wheelset = field(default_factory=lambda: _wheelset(_GROSS_MASS))
@@ -257,7 +252,6 @@ class ThreePieceTruck(LinearModelBase):
     reference_frequency: float = _REFERENCE_FREQUENCY
     reference_amplitude: float = _REFERENCE_AMPLITUDE
     reference_angle: float = _REFERENCE_ANGLE
-    friction_velocity: float = _FRICTION_VELOCITY
 
     def __post_init__(self):
         _checks.instance("wheelset", self.wheelset, Wheelset)
@@ -270,7 +264,6 @@ class ThreePieceTruck(LinearModelBase):
             "reference_frequency",
             "reference_amplitude",
             "reference_angle",
-            "friction_velocity",
         ):
             positive(name, getattr(self, name))
         for name in (
@@ -302,25 +295,23 @@ class ThreePieceTruck(LinearModelBase):
         return replace(self, **own)
 
     def _frictions(self, tag: str, body: dict, body_yaw: str | None) -> list:
-        """(deflection, friction, equivalent damper, v_ε) of the lateral, warp and centre-plate friction.
+        """(deflection, friction, equivalent damper c, v_ε) of the lateral, warp and centre-plate friction.
 
-        v_ε is the smooth law's velocity scale on the deflection's rate: ``friction_velocity``
-        at the sliding faces, which the angles turn at their arms (the wedges' offset, the centre
-        plate's effective radius).
+        v_ε = F/c, so that the smooth law F tanh(v/v_ε) starts with the slope of the equivalent
+        damper: (π/4) ω X, and (π/4) ω Θ for the angles.
         """
         f, X, T = self.reference_frequency, self.reference_amplitude, self.reference_angle
-        v = self.friction_velocity
+        w = 2 * np.pi * f
         fy, fpsi, bpsi = f"frame{tag} y", f"frame{tag} ψ", f"bolster{tag} ψ"
         lateral = {**body}
         lateral[fy] = lateral.get(fy, 0.0) - 1.0  # the bolster's lateral displacement less the side frames'
         plate = {bpsi: 1.0} | ({body_yaw: -1.0} if body_yaw else {})
+        c = _equivalent_damping
         return [
-            (lateral, self.lateral_friction, _equivalent_damping(self.lateral_friction, X, f), v),
-            ({bpsi: 1.0, fpsi: -1.0}, self.warp_friction, _equivalent_damping(self.warp_friction, T, f),
-             v / _WEDGE_OFFSET),
-            (plate, self.centre_plate_friction, _equivalent_damping(self.centre_plate_friction, T, f),
-             v / _CENTRE_PLATE_ARM),
-        ]  # fmt: skip
+            (lateral, self.lateral_friction, c(self.lateral_friction, X, f), np.pi / 4 * w * X),
+            ({bpsi: 1.0, fpsi: -1.0}, self.warp_friction, c(self.warp_friction, T, f), np.pi / 4 * w * T),
+            (plate, self.centre_plate_friction, c(self.centre_plate_friction, T, f), np.pi / 4 * w * T),
+        ]
 
     def _friction_elements(self, tag: str, body: dict, body_yaw: str | None) -> tuple:
         """The truck's friction as nonlinear elements, each replacing its equivalent damper.
