@@ -65,6 +65,43 @@ class _OnTheRails(LinearModelBase):
         return NonlinearLateral(self.linear_system(), contact, speed)
 
 
+def _replace_through(model, changes: dict, inner: str):
+    """``dataclasses.replace(model, ...)`` where a change that is not the model's own field goes to its
+    field ``inner`` (a truck's wheelset, a car's truck), whose own ``replace`` passes it on again."""
+    own_fields = set(type(model).__dataclass_fields__)
+    own = {k: v for k, v in changes.items() if k in own_fields}
+    rest = {k: v for k, v in changes.items() if k not in own_fields}
+    if rest:
+        own[inner] = (own.get(inner) or getattr(model, inner)).replace(**rest)
+    return replace(model, **own)
+
+
+def _check_body_on_two_trucks(car, spacing: str, truck_half: str, truck_half_length: float) -> None:
+    """The checks every car body on two trucks shares, each naming the field at fault.
+
+    Masses and inertias > 0; height and roll terms ≥ 0; the semi-spacing of the trucks
+    (field ``spacing``) beyond the truck's half length (its field ``truck_half``), so that
+    the wheelsets of the two trucks do not cross; and the two trucks' roll stiffness 2 k_φ
+    above m g h, the roll moment of the body's weight h above the springs, else it topples.
+    """
+    for name in ("body_mass", "body_yaw_inertia", "body_roll_inertia", spacing):
+        positive(name, getattr(car, name))
+    for name in ("body_height", "roll_stiffness", "roll_damping"):
+        nonnegative(name, getattr(car, name))
+    if getattr(car, spacing) <= truck_half_length:
+        raise ValueError(
+            f"{spacing} must exceed the truck's {truck_half} ({truck_half_length!r} m) so that the "
+            f"wheelsets of the two trucks do not cross, got {getattr(car, spacing)!r}"
+        )
+    toppling = car.body_mass * GRAVITY * car.body_height
+    if 2 * car.roll_stiffness <= toppling:
+        raise ValueError(
+            f"roll_stiffness {car.roll_stiffness!r} N·m/rad per truck is too soft for body_mass "
+            f"{car.body_mass!r} kg at body_height {car.body_height!r} m: the two trucks' 2 k_φ must "
+            f"exceed m g h = {toppling:.4g} N·m/rad, else the body topples"
+        )
+
+
 @dataclass(frozen=True)
 class Bogie(_OnTheRails):
     """A two-axle bogie: frame and wheelsets, primary and secondary suspension (Manchester vehicle).
@@ -122,12 +159,7 @@ class Bogie(_OnTheRails):
         -------
         Bogie
         """
-        ws_fields = set(Wheelset.__dataclass_fields__)
-        ws_changes = {k: v for k, v in changes.items() if k in ws_fields}
-        own = {k: v for k, v in changes.items() if k not in ws_fields}
-        if ws_changes:
-            own["wheelset"] = self.wheelset.replace(**ws_changes)
-        return replace(self, **own)
+        return _replace_through(self, changes, "wheelset")
 
     def assemble(
         self, asm: Assembler, tag: str, body: dict[str, float], body_yaw: str | None, first_input: int
@@ -241,23 +273,7 @@ class Car(_OnTheRails):
 
     def __post_init__(self):
         _checks.instance("bogie", self.bogie, Bogie)
-        for name in ("body_mass", "body_yaw_inertia", "body_roll_inertia", "semi_bogie_spacing"):
-            positive(name, getattr(self, name))
-        for name in ("body_height", "roll_stiffness", "roll_damping"):
-            nonnegative(name, getattr(self, name))
-        if self.semi_bogie_spacing <= self.bogie.semi_wheelbase:
-            raise ValueError(
-                f"semi_bogie_spacing must exceed the bogie's semi_wheelbase "
-                f"({self.bogie.semi_wheelbase!r} m) so that the bogies' wheelsets do not cross, "
-                f"got {self.semi_bogie_spacing!r}"
-            )
-        toppling = self.body_mass * GRAVITY * self.body_height
-        if 2 * self.roll_stiffness <= toppling:
-            raise ValueError(
-                f"roll_stiffness {self.roll_stiffness!r} N·m/rad per bogie is too soft for body_mass "
-                f"{self.body_mass!r} kg at body_height {self.body_height!r} m: the two bogies' "
-                f"2 k_φ must exceed m g h = {toppling:.4g} N·m/rad, else the body topples"
-            )
+        _check_body_on_two_trucks(self, "semi_bogie_spacing", "semi_wheelbase", self.bogie.semi_wheelbase)
 
     def replace(self, **changes) -> Car:
         """A copy with car, bogie or wheelset fields changed.
@@ -271,12 +287,7 @@ class Car(_OnTheRails):
         -------
         Car
         """
-        own_fields = set(Car.__dataclass_fields__)
-        own = {k: v for k, v in changes.items() if k in own_fields}
-        rest = {k: v for k, v in changes.items() if k not in own_fields}
-        if rest:
-            own["bogie"] = (own.get("bogie") or self.bogie).replace(**rest)
-        return replace(self, **own)
+        return _replace_through(self, changes, "bogie")
 
     @property
     def wheelset(self) -> Wheelset:

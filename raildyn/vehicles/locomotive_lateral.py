@@ -53,6 +53,7 @@ from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.suspension import clearance_force
+from raildyn.vehicles.lateral import _check_body_on_two_trucks, _replace_through
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE
 from raildyn.wheelset import (
     NonlinearLateral,
@@ -288,12 +289,7 @@ class ThreeAxleTruck(LinearModelBase):
         -------
         ThreeAxleTruck
         """
-        ws_fields = set(Wheelset.__dataclass_fields__)
-        ws_changes = {k: v for k, v in changes.items() if k in ws_fields}
-        own = {k: v for k, v in changes.items() if k not in ws_fields}
-        if ws_changes:
-            own["wheelset"] = self.wheelset.replace(**ws_changes)
-        return replace(self, **own)
+        return _replace_through(self, changes, "wheelset")
 
     @property
     def axle_offsets(self) -> np.ndarray:
@@ -489,22 +485,7 @@ class LateralLocomotive(LinearModelBase):
 
     def __post_init__(self):
         _checks.instance("truck", self.truck, ThreeAxleTruck)
-        for name in ("body_mass", "body_yaw_inertia", "body_roll_inertia", "semi_truck_spacing"):
-            positive(name, getattr(self, name))
-        for name in ("body_height", "roll_stiffness", "roll_damping"):
-            nonnegative(name, getattr(self, name))
-        if self.semi_truck_spacing <= self.truck.axle_spacing:
-            raise ValueError(
-                f"semi_truck_spacing must exceed the truck's axle_spacing ({self.truck.axle_spacing!r} m) so "
-                f"that the trucks' wheelsets do not cross, got {self.semi_truck_spacing!r}"
-            )
-        toppling = self.body_mass * GRAVITY * self.body_height
-        if 2 * self.roll_stiffness <= toppling:
-            raise ValueError(
-                f"roll_stiffness {self.roll_stiffness!r} N·m/rad per truck is too soft for body_mass "
-                f"{self.body_mass!r} kg at body_height {self.body_height!r} m: the two trucks' "
-                f"2 k_φ must exceed m g h = {toppling:.4g} N·m/rad, else the body topples"
-            )
+        _check_body_on_two_trucks(self, "semi_truck_spacing", "axle_spacing", self.truck.axle_spacing)
 
     def replace(self, **changes) -> LateralLocomotive:
         """A copy with locomotive, truck or wheelset fields changed.
@@ -520,12 +501,7 @@ class LateralLocomotive(LinearModelBase):
         -------
         LateralLocomotive
         """
-        own_fields = set(LateralLocomotive.__dataclass_fields__)
-        own = {k: v for k, v in changes.items() if k in own_fields}
-        rest = {k: v for k, v in changes.items() if k not in own_fields}
-        if rest:
-            own["truck"] = (own.get("truck") or self.truck).replace(**rest)
-        return replace(self, **own)
+        return _replace_through(self, changes, "truck")
 
     def without_play(self) -> LateralLocomotive:
         """The same locomotive with the middle axles held laterally as the end axles.

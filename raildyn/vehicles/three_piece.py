@@ -55,7 +55,7 @@ jaws and of the bolster gibs, and the body's bending.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -64,6 +64,7 @@ from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY, STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS, STEEL_YOUNGS_MODULUS
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.vehicles.freight import wedge_energy_per_cycle, wedge_friction_force
+from raildyn.vehicles.lateral import _check_body_on_two_trucks, _replace_through
 from raildyn.wheelset import NonlinearLateral, SuspensionElement, WheelRailContact, Wheelset, add_wheelset
 
 __all__ = ["EMPTY_FREIGHT_CAR", "LOADED_FREIGHT_CAR", "LateralFreightCar", "ThreePieceTruck", "freight_car"]
@@ -287,12 +288,7 @@ class ThreePieceTruck(LinearModelBase):
         -------
         ThreePieceTruck
         """
-        ws_fields = set(Wheelset.__dataclass_fields__)
-        ws_changes = {k: v for k, v in changes.items() if k in ws_fields}
-        own = {k: v for k, v in changes.items() if k not in ws_fields}
-        if ws_changes:
-            own["wheelset"] = self.wheelset.replace(**ws_changes)
-        return replace(self, **own)
+        return _replace_through(self, changes, "wheelset")
 
     def _frictions(self, tag: str, body: dict, body_yaw: str | None) -> list:
         """(deflection, friction, equivalent damper c, v_ε) of the lateral, warp and centre-plate friction.
@@ -511,23 +507,7 @@ class LateralFreightCar(LinearModelBase):
 
     def __post_init__(self):
         _checks.instance("truck", self.truck, ThreePieceTruck)
-        for name in ("body_mass", "body_yaw_inertia", "body_roll_inertia", "semi_truck_spacing"):
-            positive(name, getattr(self, name))
-        for name in ("body_height", "roll_stiffness", "roll_damping"):
-            nonnegative(name, getattr(self, name))
-        if self.semi_truck_spacing <= self.truck.semi_wheelbase:
-            raise ValueError(
-                f"semi_truck_spacing must exceed the truck's semi_wheelbase "
-                f"({self.truck.semi_wheelbase!r} m) so that the trucks' wheelsets do not cross, "
-                f"got {self.semi_truck_spacing!r}"
-            )
-        toppling = self.body_mass * GRAVITY * self.body_height
-        if 2 * self.roll_stiffness <= toppling:
-            raise ValueError(
-                f"roll_stiffness {self.roll_stiffness!r} N·m/rad per truck is too soft for body_mass "
-                f"{self.body_mass!r} kg at body_height {self.body_height!r} m: the two trucks' 2 k_φ must "
-                f"exceed m g h = {toppling:.4g} N·m/rad, else the body topples"
-            )
+        _check_body_on_two_trucks(self, "semi_truck_spacing", "semi_wheelbase", self.truck.semi_wheelbase)
 
     def replace(self, **changes) -> LateralFreightCar:
         """A copy with car, truck or wheelset fields changed.
@@ -542,12 +522,7 @@ class LateralFreightCar(LinearModelBase):
         -------
         LateralFreightCar
         """
-        own_fields = set(LateralFreightCar.__dataclass_fields__)
-        own = {k: v for k, v in changes.items() if k in own_fields}
-        rest = {k: v for k, v in changes.items() if k not in own_fields}
-        if rest:
-            own["truck"] = (own.get("truck") or self.truck).replace(**rest)
-        return replace(self, **own)
+        return _replace_through(self, changes, "truck")
 
     @property
     def wheelset(self) -> Wheelset:
