@@ -59,6 +59,7 @@ MOVES = {
     chapter06.rock_and_roll_widget: dict(speed_kmh=55.0, friction_kn=10.0, depth_mm=15.0),
     chapter07.car_roots: dict(conicity=0.3, yaw_stiffness=20.0),
     chapter07.critical_curve: dict(yaw_stiffness=20.0, secondary_yaw_stiffness=1.0),
+    chapter07.vehicle_comparison: dict(vehicle="locomotive", conicity=0.3),
     chapter09.string_lining: dict(radius=400.0, force_kn=-600.0),
     chapter09.braking_run_widget: dict(slack_mm=50.0, signal_speed=150.0, speed_kmh=40.0, cars=20),
 }

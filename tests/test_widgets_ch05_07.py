@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from raildyn import figures, stability, wheelset
-from raildyn.vehicles import Car
+from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, MANCHESTER_CAR, Car
 from raildyn.widgets import chapter05, chapter07
 
 
@@ -85,6 +85,51 @@ def test_critical_curve_follows_the_critical_speed_map():
     np.testing.assert_allclose(car_line.get_ydata(), 3.6 * expected.speeds[0], rtol=1e-12)
     i = int(np.argmin(np.abs(conicities - 0.15)))
     assert f"car {3.6 * expected.speeds[0, i]:.0f} km/h" in _status(container)
+
+
+@pytest.mark.parametrize(
+    ("vehicle", "model"),
+    [
+        ("passenger car", MANCHESTER_CAR),
+        ("freight car, empty", EMPTY_FREIGHT_CAR),
+        ("freight car, loaded", LOADED_FREIGHT_CAR),
+        ("locomotive", LATERAL_LOCOMOTIVE),
+    ],
+)
+def test_vehicle_comparison_marks_each_vehicles_critical_speed(vehicle, model):
+    container, update = chapter07.vehicle_comparison()
+    update(vehicle=vehicle, conicity=0.2)
+    cs = stability.critical_speed(model.replace(conicity=0.2), (1.0, 200.0), tol=0.05)
+    shown = re.search(r"critical speed ([\d.]+) m/s = \d+ km/h, hunting at ([\d.]+) Hz", _status(container))
+    assert shown and _status(container).startswith(vehicle)
+    assert float(shown.group(1)) == pytest.approx(cs.speed, abs=0.1)
+    assert float(shown.group(2)) == pytest.approx(cs.frequency_hz, abs=0.01)
+    curves_ax, shape_ax = container.live.figure.axes
+    # Four fixed curves (one per vehicle), the chosen one drawn over them, and the marker at (λ, V_c).
+    fixed = {line.get_label(): line for line in curves_ax.lines[:4]}
+    assert list(fixed) == list(chapter07.VEHICLES)
+    highlight, marker = curves_ax.lines[4:6]
+    np.testing.assert_array_equal(highlight.get_ydata(), fixed[vehicle].get_ydata())
+    assert marker.get_xdata()[0] == 0.2 and marker.get_ydata()[0] == pytest.approx(3.6 * cs.speed, abs=0.4)
+    # The bars are the mode shape of that critical speed, grouped; the largest is 1.
+    heights = [bar.get_height() for bar in shape_ax.patches]
+    assert max(heights) == pytest.approx(1.0)
+    body_y = heights[[g for g, _, _ in chapter07._GROUPS].index("body y")]
+    assert body_y == pytest.approx(cs.amplitude("body y"), abs=1e-6)
+
+
+def test_vehicle_comparison_curves_are_the_critical_speeds_against_conicity():
+    container, _ = chapter07.vehicle_comparison()
+    curves = container.live.figure.axes[0].lines[:4]
+    for line, model in zip(curves, chapter07.VEHICLES.values(), strict=True):
+        lam = chapter07._COMPARE_CONICITIES[[0, 5, -1]]
+        expected = [
+            stability.critical_speed(model.replace(conicity=x), (1.0, 200.0), tol=0.05).speed for x in lam
+        ]
+        np.testing.assert_allclose(line.get_ydata()[[0, 5, -1]], 3.6 * np.array(expected), rtol=1e-12)
+    # Empty freight car lowest, at every conicity on the curve.
+    speeds = np.array([line.get_ydata() for line in curves])
+    assert np.all(speeds[1] == speeds.min(axis=0))
 
 
 def test_klingel_widget_and_figure_draw_the_same_kinematic_oscillation():

@@ -1,4 +1,4 @@
-"""Chapter 7 widgets: the car's roots against speed, and its critical speed against conicity.
+"""Chapter 7 widgets: the car's roots against speed, its critical speed against conicity, and three vehicles.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
 models are :mod:`raildyn.vehicles` and :mod:`raildyn.stability`; this
@@ -12,13 +12,14 @@ from __future__ import annotations
 
 from functools import lru_cache
 
+import ipywidgets as widgets
 import numpy as np
 
 from raildyn import plots, stability
-from raildyn.vehicles import Car
+from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Car
 from raildyn.widgets._core import Recipe, slider
 
-__all__ = ["car_roots", "critical_curve"]
+__all__ = ["car_roots", "critical_curve", "vehicle_comparison"]
 
 _SPEEDS = np.linspace(5.0, 150.0, 60)  # m/s; enough points for smooth curves, few enough for 100 ms
 _CAR = Car()
@@ -178,8 +179,146 @@ def critical_curve():
     return CRITICAL_CURVE.build()
 
 
+# The three vehicle types of chapter 7, by the name the dropdown shows.
+VEHICLES = {
+    "passenger car": _CAR,
+    "freight car, empty": EMPTY_FREIGHT_CAR,
+    "freight car, loaded": LOADED_FREIGHT_CAR,
+    "locomotive": LATERAL_LOCOMOTIVE,
+}
+_COMPARE_CONICITIES = np.linspace(0.02, 0.4, 12)
+_COMPARE_RANGE = (1.0, 200.0)  # m/s
+# The hunting mode's shape, grouped by body so that the four models (15, 17, 17 and 19 coordinates) share
+# one set of bars: each bar is the largest |entry| among the coordinates whose label starts and ends so.
+_GROUPS = (
+    ("body y", "body", " y"),
+    ("body ψ", "body", " ψ"),
+    ("body φ", "body", " φ"),
+    ("frames y", "frame", " y"),
+    ("frames ψ", "frame", " ψ"),
+    ("bolsters ψ", "bolster", " ψ"),
+    ("wheelsets y", "wheelset", " y"),
+    ("wheelsets ψ", "wheelset", " ψ"),
+)
+
+
+@lru_cache(maxsize=256)
+def _vehicle_critical(vehicle: str, conicity: float):
+    """Linear critical speed of one of :data:`VEHICLES` at a conicity (shared by curves, marker and tests)."""
+    model = VEHICLES[vehicle].replace(conicity=conicity)
+    return stability.critical_speed(model, _COMPARE_RANGE, tol=0.05)
+
+
+def _mode_groups(crit) -> np.ndarray:
+    """The hunting mode's largest |entry| in each of :data:`_GROUPS` (0 for groups the model lacks)."""
+    shape = np.abs(np.nan_to_num(crit.mode_shape))
+    return np.array(
+        [
+            max(
+                (
+                    a
+                    for a, c in zip(shape, crit.coordinates, strict=True)
+                    if c.startswith(p) and c.endswith(q)
+                ),
+                default=0.0,
+            )
+            for _, p, q in _GROUPS
+        ]
+    )
+
+
+def _vehicle_controls():
+    return {
+        "vehicle": widgets.Dropdown(
+            options=list(VEHICLES), value="freight car, empty", description="vehicle"
+        ),
+        "conicity": slider("conicity λ", 0.05, 0.02, 0.4, 0.01),
+    }
+
+
+def _vehicle_setup(live, status):
+    curves_ax, shape_ax = live.axes[0]
+    curves = {}
+    for k, name in enumerate(VEHICLES):
+        speeds = [3.6 * _vehicle_critical(name, float(lam)).speed for lam in _COMPARE_CONICITIES]
+        (curves[name],) = curves_ax.plot(
+            _COMPARE_CONICITIES, speeds, marker="o", ms=3, color=plots.COLORS[k], alpha=0.45, label=name
+        )
+    curves_ax.set_xlim(0, 0.42)
+    curves_ax.set_ylim(0, 3.6 * _COMPARE_RANGE[1])
+    curves_ax.set_xlabel("conicity λ")
+    curves_ax.set_ylabel("linear critical speed (km/h)")
+    curves_ax.legend(loc="upper right", fontsize="small")
+    (highlight,) = curves_ax.plot([], [], lw=3.0, color="k", alpha=0.6)
+    (marker,) = curves_ax.plot([], [], "D", ms=9, color="k")
+    x = np.arange(len(_GROUPS))
+    bars = shape_ax.bar(x, np.zeros(len(_GROUPS)), color=plots.COLORS[0])
+    shape_ax.set_xticks(x, [g for g, _, _ in _GROUPS], rotation=45, ha="right")
+    shape_ax.set_ylim(0, 1.05)
+    shape_ax.set_ylabel("|mode shape| (largest entry 1)")
+    shape_ax.set_title("hunting mode at the critical speed", fontsize="medium")
+    live.animate(highlight, marker, *bars)
+
+    def redraw(v):
+        name, lam = str(v["vehicle"]), float(v["conicity"])
+        highlight.set_data(curves[name].get_xdata(), curves[name].get_ydata())
+        highlight.set_color(curves[name].get_color())
+        crit = _vehicle_critical(name, lam)
+        if crit.found:
+            marker.set_data([lam], [3.6 * crit.speed])
+            heights = _mode_groups(crit)
+            dominant = ", ".join(_GROUPS[i][0] for i in np.argsort(-heights)[:2])
+            status.value = (
+                f"{name}, λ = {lam:.2f}: critical speed {crit.speed:.1f} m/s = {3.6 * crit.speed:.0f} km/h, "
+                f"hunting at {crit.frequency_hz:.2f} Hz, mostly {dominant}"
+            )
+        else:
+            marker.set_data([], [])
+            heights = np.zeros(len(_GROUPS))
+            status.value = f"{name}, λ = {lam:.2f}: critical speed: {crit.status} (up to 720 km/h)"
+        for bar, h in zip(bars, heights, strict=True):
+            bar.set_height(h)
+            bar.set_color(curves[name].get_color())
+
+    return redraw
+
+
+VEHICLE_COMPARISON = Recipe(
+    _vehicle_controls,
+    _vehicle_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (10.0, 3.8)},
+    static={"vehicle": list(VEHICLES), "conicity": [0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4]},
+    title="Critical speed against conicity of a passenger car, a freight car empty and loaded, and a "
+    "locomotive, and the hunting mode of the chosen one",
+)
+
+
+def vehicle_comparison():
+    """Critical speed against conicity of the three vehicle types, and the chosen one's hunting mode.
+
+    Left: the linear critical speed against conicity of the Manchester passenger car,
+    the 100-ton hopper on three-piece trucks empty and loaded, and the six-axle
+    locomotive (:data:`VEHICLES`), the chosen vehicle's curve drawn over the others
+    and its critical speed at the chosen conicity marked. Right: the shape of the mode
+    that loses stability there, grouped as body, truck frames, bolsters and wheelsets
+    (the largest |entry| of each group, the largest entry of the shape 1). Controls:
+    the vehicle and the conicity λ.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``vehicle``, ``conicity``), redraws and
+        returns the PNG frame.
+    """
+    return VEHICLE_COMPARISON.build()
+
+
 BENCH_MOVES = [
     ("ch07 car_roots λ", CAR_ROOTS, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
     ("ch07 car_roots k_ψ", CAR_ROOTS, "yaw_stiffness", [5.0, 10.0, 20.0, 40.0, 80.0, 63.0]),
     ("ch07 critical_curve k_ψ", CRITICAL_CURVE, "yaw_stiffness", [5.0, 10.0, 20.0, 40.0, 80.0, 63.0]),
+    ("ch07 vehicle_comparison λ", VEHICLE_COMPARISON, "conicity", [0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.25]),
+    ("ch07 vehicle_comparison vehicle", VEHICLE_COMPARISON, "vehicle", [*VEHICLES, "freight car, empty"]),
 ]

@@ -130,6 +130,7 @@ ENTRIES = [
             "chapter06.rock_and_roll_widget",
             "chapter07.car_roots",
             "chapter07.critical_curve",
+            "chapter07.vehicle_comparison",
             "chapter09.braking_run_widget",
             "chapter09.string_lining",
         )
