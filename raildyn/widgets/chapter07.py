@@ -204,13 +204,13 @@ _GROUPS = (
 
 @lru_cache(maxsize=256)
 def _vehicle_critical(vehicle: str, conicity: float):
-    """Linear critical speed of one of :data:`VEHICLES` at a conicity (shared by curves, marker and tests)."""
+    """Linear critical speed of one of ``VEHICLES`` at a conicity (shared by curves, marker and tests)."""
     model = VEHICLES[vehicle].replace(conicity=conicity)
     return stability.critical_speed(model, _COMPARE_RANGE, tol=0.05)
 
 
 def _mode_groups(crit) -> np.ndarray:
-    """The hunting mode's largest |entry| in each of :data:`_GROUPS` (0 for groups the model lacks)."""
+    """The hunting mode's largest |entry| in each of ``_GROUPS`` (0 for groups the model lacks)."""
     shape = np.abs(np.nan_to_num(crit.mode_shape))
     return np.array(
         [
@@ -298,7 +298,7 @@ def vehicle_comparison():
 
     Left: the linear critical speed against conicity of the Manchester passenger car,
     the 100-ton hopper on three-piece trucks empty and loaded, and the six-axle
-    locomotive (:data:`VEHICLES`), the chosen vehicle's curve drawn over the others
+    locomotive (``VEHICLES``), the chosen vehicle's curve drawn over the others
     and its critical speed at the chosen conicity marked. Right: the shape of the mode
     that loses stability there, grouped as body, truck frames, bolsters and wheelsets
     (the largest |entry| of each group, the largest entry of the shape 1). Controls:
