@@ -102,6 +102,33 @@ def _check_body_on_two_trucks(car, spacing: str, truck_half: str, truck_half_len
         )
 
 
+def _check_truck_assembly(asm, tag, body, body_yaw, first_input, *, parts=("frame",), axles: int = 2) -> int:
+    """The checks of a truck's ``assemble`` arguments (see :meth:`Bogie.assemble`), each naming its argument.
+
+    ``asm`` must hold the truck's coordinates: "frame{tag} y", "frame{tag} ψ", the yaw
+    "{part}{tag} ψ" of each further part (a bolster) and "wheelset{tag}{k} y/ψ" of its
+    ``axles`` wheelsets, whose alignment inputs start at ``first_input``. Returns ``q/2``,
+    the index of the first cross-level input of the assembly.
+    """
+    _checks.instance("asm", asm, Assembler)
+    _checks.instance("tag", tag, str, "str")
+    labels = [f"frame{tag} y"] + [f"{part}{tag} ψ" for part in parts]
+    labels += [f"wheelset{tag}{k} {q}" for k in range(1, axles + 1) for q in "yψ"]
+    missing = [label for label in labels if label not in asm.labels]
+    if missing:
+        raise ValueError(f"tag {tag!r} names no truck of asm: {missing} are not among its labels")
+    _checks.instance("body", body, dict, "dict of body label to coefficient")
+    for label, coefficient in body.items():
+        if label not in asm.labels:
+            raise ValueError(f"body must name coordinates of asm {asm.labels}, got the key {label!r}")
+        _checks.scalar(f"body[{label!r}]", coefficient)
+    if body_yaw is not None and body_yaw not in asm.labels:
+        raise ValueError(f"body_yaw must be None or a coordinate of asm {asm.labels}, got {body_yaw!r}")
+    half = asm.GK.shape[1] // 2
+    _checks.integer("first_input", first_input, low=0, high=half - axles)
+    return half
+
+
 @dataclass(frozen=True)
 class Bogie(_OnTheRails):
     """A two-axle bogie: frame and wheelsets, primary and secondary suspension (Manchester vehicle).
@@ -183,23 +210,7 @@ class Bogie(_OnTheRails):
             the trailing one's is next, and their cross-level inputs follow the alignment
             inputs of every wheelset (``asm.GK.shape[1] // 2`` further on).
         """
-        _checks.instance("asm", asm, Assembler)
-        _checks.instance("tag", tag, str, "str")
-        own = [f"frame{tag} {q}" for q in "yψ"] + [f"wheelset{tag}{k} {q}" for k in (1, 2) for q in "yψ"]
-        missing = [label for label in own if label not in asm.labels]
-        if missing:
-            raise ValueError(
-                f"tag {tag!r} names no bogie of asm: {missing} are not among its labels {asm.labels}"
-            )
-        _checks.instance("body", body, dict, "dict of body label to coefficient")
-        for label, coefficient in body.items():
-            if label not in asm.labels:
-                raise ValueError(f"body must name coordinates of asm {asm.labels}, got the key {label!r}")
-            _checks.scalar(f"body[{label!r}]", coefficient)
-        if body_yaw is not None and body_yaw not in asm.labels:
-            raise ValueError(f"body_yaw must be None or a coordinate of asm {asm.labels}, got {body_yaw!r}")
-        half = asm.GK.shape[1] // 2
-        _checks.integer("first_input", first_input, low=0, high=half - 2)
+        half = _check_truck_assembly(asm, tag, body, body_yaw, first_input, axles=2)
         ws, b = self.wheelset, self.semi_wheelbase
         fy, fpsi = f"frame{tag} y", f"frame{tag} ψ"
         asm.mass(fy, self.frame_mass)

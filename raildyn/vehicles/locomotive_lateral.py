@@ -53,7 +53,7 @@ from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.suspension import clearance_force
-from raildyn.vehicles.lateral import _check_body_on_two_trucks, _replace_through
+from raildyn.vehicles.lateral import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE
 from raildyn.wheelset import (
     NonlinearLateral,
@@ -389,23 +389,7 @@ class ThreeAxleTruck(LinearModelBase):
             the middle and trailing ones' follow, and their cross-level inputs follow the
             alignment inputs of every wheelset (``asm.GK.shape[1] // 2`` further on).
         """
-        _checks.instance("asm", asm, Assembler)
-        _checks.instance("tag", tag, str, "str")
-        own = [f"frame{tag} {q}" for q in "yψ"] + [f"wheelset{tag}{k} {q}" for k in (1, 2, 3) for q in "yψ"]
-        missing = [label for label in own if label not in asm.labels]
-        if missing:
-            raise ValueError(
-                f"tag {tag!r} names no truck of asm: {missing} are not among its labels {asm.labels}"
-            )
-        _checks.instance("body", body, dict, "dict of body label to coefficient")
-        for label, coefficient in body.items():
-            if label not in asm.labels:
-                raise ValueError(f"body must name coordinates of asm {asm.labels}, got the key {label!r}")
-            _checks.scalar(f"body[{label!r}]", coefficient)
-        if body_yaw is not None and body_yaw not in asm.labels:
-            raise ValueError(f"body_yaw must be None or a coordinate of asm {asm.labels}, got {body_yaw!r}")
-        half = asm.GK.shape[1] // 2
-        _checks.integer("first_input", first_input, low=0, high=half - 3)
+        half = _check_truck_assembly(asm, tag, body, body_yaw, first_input, axles=3)
         ws = self.wheelset
         on_axle = self.motor_axle_share * self.motor_mass
         on_frame = self.motor_mass - on_axle

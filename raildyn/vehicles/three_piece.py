@@ -64,7 +64,7 @@ from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY, STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS, STEEL_YOUNGS_MODULUS
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.vehicles.freight import wedge_energy_per_cycle, wedge_friction_force
-from raildyn.vehicles.lateral import _check_body_on_two_trucks, _replace_through
+from raildyn.vehicles.lateral import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
 from raildyn.wheelset import NonlinearLateral, SuspensionElement, WheelRailContact, Wheelset, add_wheelset
 
 __all__ = ["EMPTY_FREIGHT_CAR", "LOADED_FREIGHT_CAR", "LateralFreightCar", "ThreePieceTruck", "freight_car"]
@@ -363,24 +363,8 @@ class ThreePieceTruck(LinearModelBase):
             the trailing one's is next, and their cross-level inputs follow the alignment
             inputs of every wheelset (``asm.GK.shape[1] // 2`` further on).
         """
-        _checks.instance("asm", asm, Assembler)
-        _checks.instance("tag", tag, str, "str")
         own = [f"frame{tag} y", f"frame{tag} ψ", f"bolster{tag} ψ"]
-        own += [f"wheelset{tag}{k} {q}" for k in (1, 2) for q in "yψ"]
-        missing = [label for label in own if label not in asm.labels]
-        if missing:
-            raise ValueError(
-                f"tag {tag!r} names no truck of asm: {missing} are not among its labels {asm.labels}"
-            )
-        _checks.instance("body", body, dict, "dict of body label to coefficient")
-        for label, coefficient in body.items():
-            if label not in asm.labels:
-                raise ValueError(f"body must name coordinates of asm {asm.labels}, got the key {label!r}")
-            _checks.scalar(f"body[{label!r}]", coefficient)
-        if body_yaw is not None and body_yaw not in asm.labels:
-            raise ValueError(f"body_yaw must be None or a coordinate of asm {asm.labels}, got {body_yaw!r}")
-        half = asm.GK.shape[1] // 2
-        _checks.integer("first_input", first_input, low=0, high=half - 2)
+        half = _check_truck_assembly(asm, tag, body, body_yaw, first_input, parts=("frame", "bolster"))
         ws, b, d = self.wheelset, self.semi_wheelbase, self.side_frame_spacing
         fy, fpsi, bpsi = own[:3]
         asm.mass(fy, self.side_frame_mass)
