@@ -1,0 +1,64 @@
+"""Fuzz registry: chapter 8, curve geometry (raildyn.curving.geometry).
+
+The cant functions take single numbers here, and are
+vectorised: a list of two numbers is valid for each of their arguments (declared ``list``). The
+curve's methods take an array of distances, any finite value of which is valid (before
+s = 0 and beyond the end the track is straight), so zero, negative and reshaped
+distances are declared valid.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from fuzzing import call, fuzz, on
+
+from raildyn.curving import geometry
+
+S = np.linspace(0.0, 400.0, 9)  # m, across every segment of the default curve
+DISTANCES = {"s": "zero negative shape"}
+V = "list"  # a vectorised argument
+
+ENTRIES = [
+    # ------------------------------------------------------------------ cant and speed
+    fuzz(
+        "raildyn.curving.geometry.equilibrium_cant",
+        lambda: call(30.0, 600.0),
+        accepts={"speed": "zero list", "radius": V},
+    ),
+    fuzz(
+        "raildyn.curving.geometry.cant_deficiency",
+        lambda: call(30.0, 600.0, 0.1),
+        accepts={"speed": "zero list", "radius": V, "cant": "zero list"},
+    ),
+    fuzz(
+        "raildyn.curving.geometry.unbalanced_acceleration",
+        lambda: call(30.0, 600.0, 0.1, exact=True),
+        accepts={"speed": "zero list", "radius": V, "cant": "zero list"},
+    ),
+    fuzz(
+        "raildyn.curving.geometry.balance_speed",
+        lambda: call(600.0, 0.1),
+        accepts={"radius": V, "cant": "zero list"},
+    ),
+    fuzz(
+        "raildyn.curving.geometry.speed_for_deficiency",
+        lambda: call(600.0, 0.1, 0.15),
+        # no cant with a deficiency, no deficiency (the balance speed), or a cant excess equal to the cant
+        accepts={"radius": V, "cant": "zero list", "deficiency": "zero negative list"},
+    ),
+    # ------------------------------------------------------------------ the curve
+    fuzz(
+        "raildyn.curving.geometry.Curve",
+        lambda: call(600.0, 0.1, 60.0, 200.0, 50.0),
+        accepts={"cant": "zero", "transition_length": "zero", "arc_length": "zero", "straight": "zero"},
+    ),
+    fuzz("raildyn.curving.geometry.Curve.replace", lambda: on(geometry.Curve(), radius=800.0)),
+    fuzz("raildyn.curving.geometry.Curve.curvature", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.curving.geometry.Curve.cant_at", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.curving.geometry.Curve.cant_gradient", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.curving.geometry.Curve.twist", lambda: on(geometry.Curve(), S, 2.5), accepts=DISTANCES),
+    fuzz("raildyn.curving.geometry.Curve.heading", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.curving.geometry.Curve.x", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.curving.geometry.Curve.y", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.curving.geometry.Curve.plot", lambda: on(geometry.Curve(), view="curvature")),
+]
