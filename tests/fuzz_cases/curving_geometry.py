@@ -1,6 +1,6 @@
-"""Fuzz registry: chapter 8, curve geometry (raildyn.curving.geometry).
+"""Fuzz registry: chapter 8, curve geometry (raildyn.curving.geometry) and wheel climb (.climb).
 
-The cant functions take single numbers here, and are
+The cant functions and Nadal's and Weinstock's limits take single numbers here, and are
 vectorised: a list of two numbers is valid for each of their arguments (declared ``list``). The
 curve's methods take an array of distances, any finite value of which is valid (before
 s = 0 and beyond the end the track is straight), so zero, negative and reshaped
@@ -12,11 +12,27 @@ from __future__ import annotations
 import numpy as np
 from fuzzing import call, fuzz, on
 
-from raildyn.curving import geometry
+from raildyn.curving import climb, geometry
 
 S = np.linspace(0.0, 400.0, 9)  # m, across every segment of the default curve
 DISTANCES = {"s": "zero negative shape"}
 V = "list"  # a vectorised argument
+
+# A result dataclass holds what the model computed: signs and shapes are the model's (its docstring).
+RESULT = {"*": "zero negative list fraction shape"}
+
+
+def _climb():
+    return climb.wheel_climb([45e3, -20e3], [60e3, 50e3], 1.2, 0.3, 0.2)
+
+
+def _climb_fields():
+    r = _climb()
+    return call(
+        r.wheel_quotient, r.flanging_wheel, r.flange_quotient, r.axle_sum, r.nadal_limit,
+        r.weinstock_limit, r.flange_angle, r.friction, r.other_friction,
+    )  # fmt: skip
+
 
 ENTRIES = [
     # ------------------------------------------------------------------ cant and speed
@@ -61,4 +77,30 @@ ENTRIES = [
     fuzz("raildyn.curving.geometry.Curve.x", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
     fuzz("raildyn.curving.geometry.Curve.y", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
     fuzz("raildyn.curving.geometry.Curve.plot", lambda: on(geometry.Curve(), view="curvature")),
+    # ------------------------------------------------------------------ wheel climb
+    fuzz(
+        "raildyn.curving.climb.nadal_limit",
+        lambda: call(1.2, 0.3),
+        accepts={"flange_angle": V, "friction": "zero list"},
+    ),
+    fuzz(
+        "raildyn.curving.climb.weinstock_limit",
+        lambda: call(1.2, 0.3, 0.2),
+        # other_friction None: the flange's friction
+        accepts={"flange_angle": V, "friction": "zero list", "other_friction": "zero list none"},
+    ),
+    fuzz(
+        "raildyn.curving.climb.wheel_climb",
+        lambda: call([45e3, -20e3], [60e3, 50e3], 1.2, 0.3, 0.2),
+        # lateral forces of either sign, or none; two axles (a shape (2, 2)) are refused only by the
+        # vertical loads that no longer match
+        accepts={"lateral": "zero negative", "friction": "zero", "other_friction": "zero none"},
+    ),
+    fuzz("raildyn.curving.climb.WheelClimb", _climb_fields, accepts=RESULT),
+    fuzz("raildyn.curving.climb.WheelClimb.plot", lambda: on(_climb())),
+    fuzz(
+        "raildyn.curving.climb.plot_nadal_limit",
+        lambda: call(friction=(0.1, 0.3, 0.5), flange_angle=np.radians(np.linspace(55.0, 80.0, 11))),
+        accepts={"friction": "zero", "flange_angle": "none"},  # None: 50° to 80°
+    ),
 ]
