@@ -58,10 +58,9 @@ of standard-gauge (1435 mm) track, the base on which cant is measured and stated
 
 MINIMUM_RADIUS = 50.0
 """The smallest radius accepted, m. Main lines curve far more gently (a few hundred metres
-and up); 50 m is about the sharpest curve of depot and industrial track that standard-gauge
-bogie vehicles are built to pass. Below it a bogie's geometric angle of attack (about the
-semi-wheelbase over R) passes 25 mrad and the track needs gauge widening, outside the
-small-angle curving theory of chapter 8 that these curves feed."""
+and up); 50 m is already depot and industrial track. Below it a bogie's geometric angle of
+attack (about the semi-wheelbase over R: 25 mrad for 1.25 m on 50 m) and the gauge widening
+such curves need leave the small-angle curving theory of chapter 8 that these curves feed."""
 
 MAXIMUM_CANT = 0.2
 """The largest cant accepted, m: a hard bound a little above the 180 mm that EN 13803 allows
@@ -75,10 +74,10 @@ MAXIMUM_SPEED = 200.0
 at high speed is caught."""
 
 CANT_GRADIENT_LIMIT = 2.25e-3
-"""The limiting cant gradient dD/ds of a linear cant ramp, m/m (2.25 mm/m), as EN 13803
-states it for plain line; a ramp this steep or steeper twists a bogie's wheelbase as
-much as the wheel-unloading tests of vehicle acceptance assume. Not enforced: a
-:class:`Curve` reports its gradient and twist, and the caller compares."""
+"""A limiting cant gradient dD/ds of a linear cant ramp, m/m (2.25 mm/m), the value EN 13803
+gives for plain line: a steeper ramp twists a vehicle's wheelbase more and unloads its
+leading outer wheel, the low-speed danger of wheel climb. Not enforced: a :class:`Curve`
+reports its gradient and twist, and the caller compares."""
 
 TWIST_BASE = 3.0
 """The base of the twist, m: the 3 m over which EN 13848-5 measures track twist, about the
