@@ -55,6 +55,9 @@ MOVES = {
     chapter04.profiles: dict(rail="60E1 at 1:20", gauge_mm=1440.0, wheel="cone 1:20"),
     chapter05.klingel: dict(conicity=0.3, rolling_radius_mm=400.0, semi_wheelbase=1.0),
     chapter05.wheelset_roots: dict(conicity=0.3, yaw_stiffness=8.0, lateral_stiffness=3.0),
+    chapter05.curved_wheelset: dict(
+        radius=900.0, deficiency_mm=120.0, yaw_stiffness=10.0, lateral_stiffness=3.0
+    ),
     chapter06.ride_quality: dict(track="German high", speed_kmh=160.0, seed=4),
     chapter06.rock_and_roll_widget: dict(speed_kmh=55.0, friction_kn=10.0, depth_mm=15.0),
     chapter07.car_roots: dict(conicity=0.3, yaw_stiffness=20.0),

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from raildyn import figures, stability, wheelset
+from raildyn.curving import geometry, steady_curving
 from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, MANCHESTER_CAR, Car
 from raildyn.widgets import chapter05, chapter07
 
@@ -35,6 +36,57 @@ def test_free_wheelset_is_reported_unstable():
     container, update = chapter05.wheelset_roots()
     update(yaw_stiffness=0.0, lateral_stiffness=0.0)
     assert "unstable at the lowest speed" in _status(container)
+
+
+def test_curved_wheelset_shows_the_steady_state_of_the_suspended_wheelset():
+    container, update = chapter05.curved_wheelset()
+    update(radius=800.0, deficiency_mm=100.0, yaw_stiffness=10.0, lateral_stiffness=5.0)
+    ws = wheelset.Wheelset(yaw_stiffness=10.0e6, lateral_stiffness=5.0e6)
+    speed = geometry.speed_for_deficiency(800.0, 0.1, 0.1)  # the widget's curves all have 100 mm of cant
+    state = steady_curving(ws, speed, 800.0, cant=0.1)
+    status = _status(container)
+    assert f"{3.6 * state.speed:.0f} km/h" in status
+    assert f"offset {1e3 * state.offset[0]:.2f} mm" in status
+    assert f"angle of attack {1e3 * state.angle_of_attack[0]:.2f} mrad" in status
+    assert f"{-1e-3 * state.longitudinal_creep_force[0]:.1f} kN back on the outer wheel" in status
+    assert f"{1e-3 * state.lateral_creep_force[0]:.1f} kN outwards" in status
+    # The markers sit at the chosen radius on the same numbers; the curves are steady_curving over
+    # the widget's radii (the same calls, so equal to rounding).
+    ax_y, ax_a, ax_f = container.live.figure.axes
+    offset, attack, longitudinal, lateral = [ax_y.lines[1], ax_a.lines[0], *ax_f.lines[:2]]
+    expected = {
+        "offset": 1e3 * state.offset[0],
+        "attack": 1e3 * state.angle_of_attack[0],
+        "longitudinal": -1e-3 * state.longitudinal_creep_force[0],
+        "lateral": 1e-3 * state.lateral_creep_force[0],
+    }
+    markers = [line for ax in (ax_y, ax_a, ax_f) for line in ax.lines if line.get_marker() == "o"]
+    for marker, value in zip(markers, expected.values(), strict=True):
+        assert marker.get_xdata()[0] == 800.0
+        assert marker.get_ydata()[0] == pytest.approx(value, rel=1e-12)
+    radii = offset.get_xdata()
+    far = steady_curving(ws, geometry.speed_for_deficiency(radii[-1], 0.1, 0.1), radii[-1], cant=0.1)
+    assert offset.get_ydata()[-1] == pytest.approx(1e3 * far.offset[0], rel=1e-12)
+    assert attack.get_ydata()[-1] == pytest.approx(1e3 * far.angle_of_attack[0], rel=1e-12)
+    assert longitudinal.get_ydata()[-1] == pytest.approx(-1e-3 * far.longitudinal_creep_force[0], rel=1e-12)
+    assert lateral.get_ydata()[-1] == pytest.approx(1e-3 * far.lateral_creep_force[0], rel=1e-12)
+
+
+def test_curved_wheelset_without_suspension_rolls_at_the_pure_rolling_offset():
+    container, update = chapter05.curved_wheelset()
+    update(deficiency_mm=0.0, yaw_stiffness=0.0, lateral_stiffness=0.0)
+    ax_y = container.live.figure.axes[0]
+    free, suspended = ax_y.lines[:2]
+    np.testing.assert_array_equal(free.get_xdata(), suspended.get_xdata())
+    expected = [1e3 * wheelset.pure_rolling_offset(0.46, 0.75, 0.15, R) for R in free.get_xdata()]
+    np.testing.assert_allclose(free.get_ydata(), expected, rtol=1e-12)
+    # At the balance speed the free wheelset departs from r0 a/(λR) only through the spin creep and
+    # the gravitational stiffness, both small on this cone: 0.01 % here, held to 0.1 %.
+    np.testing.assert_allclose(suspended.get_ydata(), expected, rtol=1e-3)
+    # A stiff yaw suspension holds the lone wheelset square to the radius: it cannot steer out to its
+    # rolling line, and the outer wheel's longitudinal creep grows towards f11 a/R.
+    update(yaw_stiffness=80.0, lateral_stiffness=7.8)
+    assert ax_y.lines[1].get_ydata()[0] < 0.2 * expected[0]
 
 
 # ---------------------------------------------------------------------------

@@ -1,18 +1,23 @@
-"""Chapter 5 widgets: Klingel's kinematic oscillation, and the suspended wheelset's roots against speed.
+"""Chapter 5 widgets: Klingel's kinematic oscillation, the suspended wheelset's roots against speed,
+and the suspended wheelset's steady state on a curve.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
-models are :mod:`raildyn.wheelset` and :mod:`raildyn.stability`; this module only
-turns control values into model calls and moves artists.
+models are :mod:`raildyn.wheelset`, :mod:`raildyn.stability` and
+:mod:`raildyn.curving`; this module only turns control values into model calls and
+moves artists.
 """
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
-from raildyn import stability, wheelset
+from raildyn import plots, stability, wheelset
+from raildyn.curving import geometry, steady_curving
 from raildyn.widgets._core import Recipe, slider
 
-__all__ = ["klingel", "wheelset_roots"]
+__all__ = ["curved_wheelset", "klingel", "wheelset_roots"]
 
 _DISTANCE = np.linspace(0.0, 120.0, 1200)  # m of track: a fixed axis keeps the cached picture valid
 
@@ -146,8 +151,148 @@ def wheelset_roots():
     return WHEELSET_ROOTS.build()
 
 
+# ---------------------------------------------------------------------------
+# The wheelset on a curve
+
+_RADII = np.geomspace(300.0, 5000.0, 20)  # m: from about the free wheelset's flange contact to gentle curves
+_RADIUS_TICKS = (300.0, 500.0, 1000.0, 2000.0, 5000.0)
+_CURVE_CANT = 0.1  # m: the cant of every curve; the speed follows from the chosen cant deficiency
+_CURVE_WHEELSET = wheelset.Wheelset()  # the Manchester wheelset of section 5.2 on its cone
+
+
+def _curved_wheelset_controls():
+    return {
+        "radius": slider("radius R (m)", 600.0, 300.0, 3000.0, 50.0, fmt=".0f"),
+        "deficiency_mm": slider("cant deficiency I (mm)", 50.0, 0.0, 150.0, 5.0, fmt=".0f"),
+        "yaw_stiffness": slider(
+            "primary k_ψ (MN·m/rad)", round(_CURVE_WHEELSET.yaw_stiffness / 1e6, 1), 0.0, 80.0, 0.1, fmt=".1f"
+        ),
+        "lateral_stiffness": slider(
+            "primary k_y (MN/m)", round(_CURVE_WHEELSET.lateral_stiffness / 1e6, 1), 0.0, 10.0, 0.1, fmt=".1f"
+        ),
+    }
+
+
+def _curve_system(yaw_stiffness: float, lateral_stiffness: float):
+    """The suspended wheelset's linear system: k_ψ (N·m/rad), k_y (N/m)."""
+    return _CURVE_WHEELSET.replace(
+        yaw_stiffness=yaw_stiffness, lateral_stiffness=lateral_stiffness
+    ).linear_system()
+
+
+def _curve_states(system, radii, deficiency: float):
+    """SteadyCurving of ``system`` on each radius (m), at the speed of the cant deficiency I (m)."""
+    speeds = np.atleast_1d(geometry.speed_for_deficiency(radii, _CURVE_CANT, deficiency))
+    return [steady_curving(system, V, R, cant=_CURVE_CANT) for V, R in zip(speeds, radii, strict=True)]
+
+
+@lru_cache(maxsize=1)  # the last curves: a move of the radius alone moves only the markers
+def _curve_sweep(deficiency: float, yaw_stiffness: float, lateral_stiffness: float) -> np.ndarray:
+    """Offset (mm), angle of attack (mrad), backward longitudinal and outward lateral creep force (kN)
+    over _RADII: an array (4, len(_RADII))."""
+    return _curve_numbers(_curve_states(_curve_system(yaw_stiffness, lateral_stiffness), _RADII, deficiency))
+
+
+def _curve_numbers(states) -> np.ndarray:
+    return np.array(
+        [
+            [1e3 * s.offset[0] for s in states],
+            [1e3 * s.angle_of_attack[0] for s in states],
+            [-1e-3 * s.longitudinal_creep_force[0] for s in states],
+            [1e-3 * s.lateral_creep_force[0] for s in states],
+        ]
+    )
+
+
+def _curved_wheelset_setup(live, status):
+    ax_y, ax_a, ax_f = live.axes[0]
+    ws = _CURVE_WHEELSET
+    rolling = [
+        1e3 * wheelset.pure_rolling_offset(ws.rolling_radius, ws.half_gauge, ws.conicity, R) for R in _RADII
+    ]
+    ax_y.plot(_RADII, rolling, "--", color="0.5", label="free: $r_0a/(\\lambda R)$")
+    # One line and one marker per result, in the order of the rows of _curve_numbers.
+    panels = {
+        "offset": (ax_y, plots.COLORS[0], "suspended"),
+        "attack": (ax_a, plots.COLORS[0], None),
+        "longitudinal": (ax_f, plots.COLORS[1], "longitudinal, outer wheel"),
+        "lateral": (ax_f, plots.COLORS[2], "lateral, both wheels"),
+    }
+    lines = {
+        name: ax.plot(_RADII, rolling, color=c, label=label)[0] for name, (ax, c, label) in panels.items()
+    }
+    markers = {name: ax.plot([600.0], [0.0], "o", color=c, ms=5)[0] for name, (ax, c, _) in panels.items()}
+    for ax, label, limits in (
+        (ax_y, "offset towards the outer rail (mm)", (0.0, 10.0)),
+        (ax_a, "angle of attack (mrad)", (-0.5, 4.5)),
+        (ax_f, "creep force (kN)", (-6.0, 80.0)),
+    ):
+        ax.set_xscale("log")
+        ax.set_xticks(_RADIUS_TICKS, [f"{r:.0f}" for r in _RADIUS_TICKS])
+        ax.set_xticks([], minor=True)
+        ax.set_xlim(_RADII[0], _RADII[-1])
+        ax.set_ylim(*limits)
+        ax.set_xlabel("curve radius R (m)")
+        ax.set_ylabel(label)
+    ax_y.legend(loc="upper right")
+    ax_f.legend(loc="upper right")
+    live.animate(*lines.values(), *markers.values())
+
+    def redraw(v):
+        R, deficiency = float(v["radius"]), 1e-3 * float(v["deficiency_mm"])
+        k_psi, k_y = 1e6 * float(v["yaw_stiffness"]), 1e6 * float(v["lateral_stiffness"])
+        sweep = _curve_sweep(deficiency, k_psi, k_y)
+        (state,) = _curve_states(_curve_system(k_psi, k_y), [R], deficiency)
+        here = _curve_numbers([state])[:, 0]
+        for (name, line), row, value in zip(lines.items(), sweep, here, strict=True):
+            line.set_ydata(row)
+            markers[name].set_data([R], [value])
+        y0 = 1e3 * wheelset.pure_rolling_offset(ws.rolling_radius, ws.half_gauge, ws.conicity, R)
+        status.value = (
+            f"R = {R:.0f} m at {3.6 * state.speed:.0f} km/h ({1e3 * _CURVE_CANT:.0f} mm cant, "
+            f"a_q = {state.unbalanced_acceleration:.2f} m/s²): offset {here[0]:.2f} mm (free {y0:.2f} mm) · "
+            f"angle of attack {here[1]:.2f} mrad · creep forces {here[2]:.1f} kN back on the outer wheel, "
+            f"{here[3]:.1f} kN outwards"
+        )
+
+    return redraw
+
+
+CURVED_WHEELSET = Recipe(
+    _curved_wheelset_controls,
+    _curved_wheelset_setup,
+    {"nrows": 1, "ncols": 3, "figsize": (11.0, 3.4)},
+    static={"yaw_stiffness": [0.0, 2.0, 5.0, 10.0, 20.0, 30.0, 45.0, 62.8, 80.0]},
+    title="Offset, angle of attack and creep forces of a suspended wheelset against the curve radius",
+)
+
+
+def curved_wheelset():
+    """The steady state of a suspended wheelset on a curve, against the radius from 300 m to 5 km.
+
+    The wheelset of section 5.2 (the Manchester benchmark's, on a cone of 0.15) on its
+    primary suspension to a frame that follows the curve; every curve has 100 mm of cant
+    and the speed is the one that gives the chosen cant deficiency. Left: the offset
+    towards the outer rail beside the free wheelset's pure-rolling offset r₀a/(λR);
+    middle: the angle of attack; right: the longitudinal creep force on the outer wheel
+    (backwards) and the lateral creep force on the wheelset (outwards). A marker and the
+    status line give the values at the chosen radius. Controls: radius R (m), cant
+    deficiency I (mm), primary yaw stiffness k_ψ (MN·m/rad) and lateral stiffness k_y (MN/m).
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
+    """
+    return CURVED_WHEELSET.build()
+
+
 BENCH_MOVES = [
     ("ch05 klingel λ", KLINGEL, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
     ("ch05 wheelset_roots k_ψ", WHEELSET_ROOTS, "yaw_stiffness", [1.0, 2.0, 4.0, 8.0, 12.0, 3.0]),
     ("ch05 wheelset_roots λ", WHEELSET_ROOTS, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
+    ("ch05 curved_wheelset k_ψ", CURVED_WHEELSET, "yaw_stiffness", [5.0, 10.0, 20.0, 40.0, 80.0, 62.8]),
+    ("ch05 curved_wheelset R", CURVED_WHEELSET, "radius", [400.0, 800.0, 1500.0, 3000.0, 600.0]),
 ]

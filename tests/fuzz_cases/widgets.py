@@ -124,6 +124,7 @@ ENTRIES = [
             "chapter04.fastsim_patch",
             "chapter04.hertz",
             "chapter04.profiles",
+            "chapter05.curved_wheelset",
             "chapter05.klingel",
             "chapter05.wheelset_roots",
             "chapter06.ride_quality",
