@@ -211,6 +211,36 @@ class LinearSystem:
         """q, the number of track inputs."""
         return self.GK.shape[1]
 
+    @property
+    def wheelset_positions(self) -> np.ndarray:
+        """x of each wheelset on the rails (in the order of ``wheelsets``) ahead of the vehicle's centre, m.
+
+        From the distance of each wheelset's alignment input behind the leading axle; the
+        centre is midway between the first and the last wheelset. A lone wheelset is at 0.
+
+        Raises
+        ------
+        ValueError
+            If a wheelset of several has not exactly one alignment input.
+        """
+        if len(self.wheelsets) <= 1:
+            return np.zeros(len(self.wheelsets))
+        behind = []
+        for iy, ipsi, _ in self.wheelsets:
+            found = [
+                j
+                for j in range(self.n_inputs)
+                if self.input_kinds[j] == "alignment" and np.any(self.GK[[iy, ipsi], j] != 0.0)
+            ]
+            if len(found) != 1:
+                raise ValueError(
+                    f"the wheelset on {self.labels[iy]!r} must have one alignment input (it gives the "
+                    f"wheelset's place along the track), got {len(found)}"
+                )
+            behind.append(self.input_positions[found[0]])
+        behind = np.array(behind)
+        return 0.5 * (behind.min() + behind.max()) - behind
+
     # -- the protocol ------------------------------------------------------------------------------
 
     def linear_system(self) -> LinearSystem:

@@ -1,4 +1,5 @@
-"""The railway wheelset on tangent track (book chapter 5): kinematics, linear and nonlinear dynamics.
+"""The railway wheelset on tangent and curved track (book chapter 5): kinematics, linear and nonlinear
+dynamics.
 
 * Klingel's kinematic oscillation of a free coned wheelset and of a rigid
   two-axle bogie (:func:`kinematic_wavelength`, :func:`rigid_bogie_wavelength`);
@@ -9,6 +10,11 @@
   ``Wheelset().matrices(V)``, ``state_space(V)``), whose wheel–rail terms
   (:func:`creep_terms`, :func:`add_wheelset`) the bogie and car models of
   :mod:`raildyn.vehicles` assemble too;
+* on a curve: the pure-rolling offset r₀a/(λR) of a free wheelset
+  (:func:`pure_rolling_offset`) and the loads a curve of radius R puts on a
+  wheelset through its creepages and gravitational stiffness (:func:`curve_loads`),
+  from which :func:`raildyn.curving.steady_curving` finds the steady state of any
+  vehicle;
 * the nonlinear wheelset (:class:`WheelRailContact`, :class:`NonlinearWheelset`):
   a rolling-radius difference Δr(y), saturating creep forces and a flange
   modelled as a stiff spring beyond the flangeway clearance, as ``rhs(t, y)``.
@@ -44,14 +50,18 @@ __all__ = [
     "NonlinearLateral",
     "NonlinearWheelset",
     "SuspensionElement",
+    "WheelForces",
     "WheelRailContact",
     "Wheelset",
     "add_wheelset",
     "contact_forces",
     "creep_terms",
+    "curve_loads",
     "kinematic_oscillation",
     "kinematic_wavelength",
+    "pure_rolling_offset",
     "rigid_bogie_wavelength",
+    "wheel_forces",
     "wickens_critical_speed",
 ]
 
@@ -523,6 +533,92 @@ def wickens_critical_speed(params: Wheelset) -> float:
 
 
 # ---------------------------------------------------------------------------
+# Curved track
+
+
+def pure_rolling_offset(rolling_radius, half_gauge, conicity, radius) -> float:
+    """Lateral offset at which a free coned wheelset rolls round a curve without slip, m.
+
+    y₀ = r₀ a / (λ R), towards the outer rail (Garg & Dukkipati 1984, ch. 5; Wickens 2003,
+    ch. 7): the outer wheel then rolls on a radius larger by λ y₀, enough to cover the outer
+    rail's extra length a/R per metre.
+
+    Parameters
+    ----------
+    rolling_radius, half_gauge, conicity : float
+        r₀ (m), a (m) and λ, as for :func:`kinematic_wavelength` (each > 0).
+    radius : float
+        R, radius of the curve, m (> 0).
+
+    Returns
+    -------
+    float
+        y₀, m (≥ 0, towards the outer rail).
+
+    Examples
+    --------
+    A wheelset of conicity 0.15 in a curve of 600 m runs 3.8 mm towards the outer rail:
+
+    >>> round(1e3 * pure_rolling_offset(0.46, 0.75, 0.15, 600.0), 2)
+    3.83
+    """
+    r0 = positive("rolling_radius", rolling_radius)
+    a = positive("half_gauge", half_gauge)
+    lam = positive("conicity", conicity)
+    return float(r0 * a / (lam * positive("radius", radius)))
+
+
+_MAX_POSITION = 100.0  # m: a wheelset's distance from the centre of its vehicle
+
+
+def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
+    """The wheel–rail loads [F_y, M_z] that a curve puts on a wheelset, N and N·m.
+
+    The vehicle is described in axes that follow it round a curve to the left of
+    radius R (turning at V/R, their origin on the track's centre line, x along its
+    tangent there). A wheelset x ahead of the origin meets the track displaced by
+    y_t = x²/(2R) and turned by ψ_t = x/R, and its yaw rate is ψ̇ + V/R. So in the
+    linear wheel–rail terms of :func:`creep_terms` the displacement becomes
+    q − q_t and ψ̇/V becomes ψ̇/V + 1/R:
+
+        f = (K_creep + K_gravity) q_t − C₁ [0, 1]ᵀ / R.
+
+    The second term holds the longitudinal creepage a/R of the outer rail's extra
+    length and the spin 1/R (Garg & Dukkipati 1984, ch. 5 and 8; Wickens 2003, ch. 7).
+    These loads are independent of the speed; the cant deficiency's force acts on
+    every mass and is added by :func:`raildyn.curving.steady_curving`.
+
+    Parameters
+    ----------
+    ws : Wheelset
+    radius : float
+        R, m (> 0; the curve turns to the left, +y).
+    position : float
+        x, the wheelset's distance ahead of the axes' origin, m, in [−100, 100] (negative
+        behind): the axes follow one vehicle, and x/R must stay a small angle.
+
+    Returns
+    -------
+    ndarray, (2,)
+        [F_y (N), M_z (N·m)] on the wheelset held at q = 0 in the curve's axes.
+
+    Examples
+    --------
+    A lone centred wheelset feels the yaw moment of its longitudinal creep, −2a²f₁₁/R:
+
+    >>> ws = Wheelset(f23=0.0, f33=0.0)
+    >>> F = curve_loads(ws, 600.0)
+    >>> bool(np.isclose(F[1], -2 * ws.half_gauge**2 * ws.f11 / 600.0))
+    True
+    """
+    terms = creep_terms(_checks.instance("ws", ws, Wheelset))
+    R = positive("radius", radius)
+    x = scalar("position", position, low=-_MAX_POSITION, high=_MAX_POSITION)
+    track = np.array([0.5 * x * x / R, x / R])
+    return (terms.K_creep + terms.K_gravity) @ track - terms.C1[:, 1] / R
+
+
+# ---------------------------------------------------------------------------
 # Nonlinear wheelset
 
 
@@ -618,27 +714,117 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
 _MOTION = ("y", "psi", "ydot", "psidot")
 
 
-def _contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
-    """:func:`contact_forces` without the checks, for the right-hand sides (called at every step)."""
-    a, r0, W = ws.half_gauge, ws.rolling_radius, ws.axle_load
+def _creep(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
+    """The left wheel's creepages ξx, ξy, the linear forces −f ξ and their saturation factor; Δδ(y).
+
+    The right wheel's longitudinal creepage and force are opposite, its others the same.
+    """
+    a, r0 = ws.half_gauge, ws.rolling_radius
     dr = (contact.rolling_radius_difference or _cone(ws.conicity))(y)
     if contact.contact_angle_difference is None:
         dd = 2.0 * ws.contact_angle_parameter * np.asarray(y, dtype=float) / a
     else:
         dd = contact.contact_angle_difference(y)
     creep = wheelset_creepages(speed, ydot, psi, psidot, r0 + dr / 2.0, r0 - dr / 2.0, r0, a, check=False)
-    # The left wheel's; the right one's longitudinal creepage is opposite, its others are the same.
     xi_x, xi_y, spin = creep.longitudinal[0], creep.lateral[0], creep.spin[0]
     fx = -ws.f11 * xi_x
     fy = -ws.f22 * xi_y - ws.f23 * spin
-    limit = contact.friction * W / 2.0
     # The two wheels have the same lateral and opposite longitudinal force, so the same magnitude.
-    scale = saturation_factor(np.hypot(fx, fy), limit, check=False)
-    lateral = 2.0 * scale * fy - W / 2.0 * dd
-    yaw = -2.0 * a * scale * fx + 2.0 * (ws.f23 * xi_y - ws.f33 * spin) + W * a * ws.contact_angle * psi
+    scale = saturation_factor(np.hypot(fx, fy), contact.friction * ws.axle_load / 2.0, check=False)
+    return xi_x, xi_y, spin, fx, fy, scale, dd
+
+
+def _flange(contact: WheelRailContact, y):
+    """The flange's lateral force on the wheelset, N: a spring beyond the clearance, pushing back."""
     excess = np.abs(y) - contact.flange_clearance
-    lateral = lateral - contact.flange_stiffness * np.sign(y) * np.maximum(excess, 0.0)
+    return -contact.flange_stiffness * np.sign(y) * np.maximum(excess, 0.0)
+
+
+def _contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
+    """:func:`contact_forces` without the checks, for the right-hand sides (called at every step)."""
+    a, W = ws.half_gauge, ws.axle_load
+    xi_x, xi_y, spin, fx, fy, scale, dd = _creep(ws, contact, y, psi, ydot, psidot, speed)
+    lateral = 2.0 * scale * fy - W / 2.0 * dd + _flange(contact, y)
+    yaw = -2.0 * a * scale * fx + 2.0 * (ws.f23 * xi_y - ws.f33 * spin) + W * a * ws.contact_angle * psi
     return lateral, yaw
+
+
+@dataclass(frozen=True)
+class WheelForces:
+    """The rails' forces on the two wheels of a wheelset; index 0 is the left wheel, 1 the right.
+
+    Attributes
+    ----------
+    longitudinal, lateral : ndarray, shape (2, ...)
+        Saturated creep forces on each wheel, N (forwards, to the left).
+    flange : ndarray, shape (2, ...)
+        Lateral force of the flange contact on each wheel, N (to the left; 0 off the flange).
+    wear_number : ndarray, shape (2, ...)
+        Tγ = |T_x ξ_x| + |T_y ξ_y| of each wheel, N (J/m): the creep forces' work per metre
+        rolled, the wear index of Pearce & Sherratt (1991).
+
+    All finite, of one shape (2, ...); the wear number ≥ 0.
+    """
+
+    longitudinal: np.ndarray
+    lateral: np.ndarray
+    flange: np.ndarray
+    wear_number: np.ndarray
+
+    def __post_init__(self):
+        shape = np.shape(self.longitudinal)
+        for name in ("longitudinal", "lateral", "flange", "wear_number"):
+            value = _checks.array(name, getattr(self, name), low=0.0 if name == "wear_number" else None)
+            if value.ndim == 0 or value.shape[0] != 2 or value.shape != shape:
+                raise ValueError(
+                    f"{name} must have the shape (2, ...) of longitudinal, {shape}, got {value.shape}"
+                )
+            object.__setattr__(self, name, value)
+
+
+def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed) -> WheelForces:
+    """The rails' creep and flange forces on each wheel of a wheelset, nonlinear; arrays broadcast.
+
+    The same forces as :func:`contact_forces`, wheel by wheel: each wheel's creep forces
+    −f ξ scaled by the saturation factor, and the flange spring on the wheel whose flange
+    touches (the left one for y > δ_f).
+
+    Parameters
+    ----------
+    ws : Wheelset
+    contact : WheelRailContact
+    y, psi, ydot, psidot : float or ndarray
+        As for :func:`contact_forces`.
+    speed : float
+        V, m/s (> 0).
+
+    Returns
+    -------
+    WheelForces
+
+    Examples
+    --------
+    A wheelset 12 mm to the left, past the 9.1 mm flangeway clearance, leans on its left flange:
+
+    >>> f = wheel_forces(Wheelset(), WheelRailContact(), 0.012, 0.0, 0.0, 0.0, 30.0)
+    >>> round(float(f.flange[0]) / 1e3, 1), float(f.flange[1])
+    (-42.3, 0.0)
+    """
+    _checks.instance("ws", ws, Wheelset)
+    _checks.instance("contact", contact, WheelRailContact)
+    motion = [_checks.array(name, v) for name, v in zip(_MOTION, (y, psi, ydot, psidot), strict=True)]
+    _checks.broadcast(**dict(zip(_MOTION, motion, strict=True)))
+    y, psi, ydot, psidot = np.broadcast_arrays(*motion)
+    xi_x, xi_y, _, fx, fy, scale, _ = _creep(ws, contact, y, psi, ydot, psidot, _speed(speed))
+    tx, ty = scale * fx, scale * fy
+    flange = _flange(contact, y)
+    wear = np.abs(tx * xi_x) + np.abs(ty * xi_y)
+    return WheelForces(
+        np.stack([tx, -tx]),
+        np.stack([ty, ty]),
+        np.stack([np.where(y > 0, flange, 0.0), np.where(y < 0, flange, 0.0)]),
+        np.stack([wear, wear]),
+    )
 
 
 def _state(state, n: int) -> np.ndarray:
@@ -778,6 +964,17 @@ class NonlinearLateral:
     :class:`SuspensionElement` e on its deflection c_e·q. State [q; q̇]; ``rhs(t, state)``
     for solve_ivp.
 
+    On a ``curve`` the coordinates are taken in axes that follow the vehicle: their origin
+    runs along the track's centre line at V, at s_c = ``start`` + V t, turning with the
+    track's tangent there at V κ(s_c) (the steady-curving axes of
+    :func:`raildyn.curving.steady_curving`, here with a curvature that varies). A wheelset
+    x ahead of the origin meets the track displaced by y_t = ∫₀ˣ (x − u) κ(s_c + u) du,
+    computed as ½x² κ(s_c + x/3), exact where κ is linear in s (a clothoid); its contact
+    forces are those of :func:`contact_forces` at y − y_t, with the yaw ψ − x κ(s_c) that the
+    axes' own turning gives its path, and the yaw rate ψ̇ + V κ(s_c). Every lateral
+    coordinate (label ending in " y") carries −m a_q, a_q = V²κ(s_c) − g D(s_c)/G. The
+    Coriolis and Euler forces of the turning axes (of order m V κ ẏ) are left out.
+
     Attributes
     ----------
     system : LinearSystem
@@ -787,12 +984,18 @@ class NonlinearLateral:
         V, m/s (> 0).
     elements : tuple of SuspensionElement
         Nonlinear suspension elements, each naming coordinates of ``system``; empty by default.
+    curve : raildyn.curving.geometry.Curve or None
+        The track's curve (turning left); None: tangent track.
+    start : float
+        s_c at t = 0, the distance of the vehicle's centre along ``curve``, m (finite).
     """
 
     system: LinearSystem
     contact: WheelRailContact = field(default_factory=WheelRailContact)
     speed: float = 30.0
     elements: tuple = ()
+    curve: object = None
+    start: float = 0.0
     # Derived once from the fields above (not arguments): the suspension stiffness and damping, M⁻¹,
     # the wheelsets grouped by their parameters, and the elements' deflection rows and laws.
     _K_suspension: np.ndarray = field(init=False, repr=False, compare=False)
@@ -801,9 +1004,16 @@ class NonlinearLateral:
     _groups: list = field(init=False, repr=False, compare=False)
     _G: np.ndarray | None = field(init=False, repr=False, compare=False)
     _laws: tuple = field(init=False, repr=False, compare=False)
+    _lateral_mass: np.ndarray = field(init=False, repr=False, compare=False)
+    _positions: np.ndarray | None = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         _speed(self.speed)
+        if self.curve is not None:
+            from raildyn.curving.geometry import Curve  # here: raildyn.curving imports this module
+
+            _checks.instance("curve", self.curve, Curve)
+        scalar("start", self.start)
         _checks.instance("system", self.system, LinearSystem)
         _checks.instance("contact", self.contact, WheelRailContact)
         if not self.system.wheelsets:
@@ -835,12 +1045,27 @@ class NonlinearLateral:
         object.__setattr__(self, "_C_suspension", C_s)
         object.__setattr__(self, "_M_inv", np.linalg.inv(self.system.M))
         # Wheelsets with equal parameters are evaluated together in one vectorised call.
+        # Each wheelset's place along the vehicle, for a curve; a system that does not give them (no
+        # alignment inputs) runs on tangent track only.
+        try:
+            positions = self.system.wheelset_positions
+        except ValueError as err:
+            if self.curve is not None:
+                raise ValueError(f"system cannot run on a curve: {err}") from None
+            positions = None
+        object.__setattr__(self, "_positions", positions)
+        if positions is None:
+            positions = np.zeros(len(self.system.wheelsets))
         groups: dict = {}
-        for iy, ipsi, ws in self.system.wheelsets:
-            groups.setdefault(ws, ([], []))
-            groups[ws][0].append(iy)
-            groups[ws][1].append(ipsi)
-        object.__setattr__(self, "_groups", [(ws, np.array(a), np.array(b)) for ws, (a, b) in groups.items()])
+        for (iy, ipsi, ws), x in zip(self.system.wheelsets, positions, strict=True):
+            groups.setdefault(ws, ([], [], []))
+            for column, value in zip(groups[ws], (iy, ipsi, x), strict=True):
+                column.append(value)
+        object.__setattr__(
+            self, "_groups", [(ws, np.array(a), np.array(b), np.array(x)) for ws, (a, b, x) in groups.items()]
+        )
+        lateral = np.array([label.endswith(" y") for label in self.system.labels], dtype=float)
+        object.__setattr__(self, "_lateral_mass", self.system.M @ lateral)
         object.__setattr__(self, "_G", G if self.elements else None)  # None: no elements
         object.__setattr__(self, "_laws", tuple(e.force for e in self.elements))
 
@@ -865,7 +1090,7 @@ class NonlinearLateral:
         -------
         NonlinearLateral
         """
-        return NonlinearLateral(self.system, self.contact, speed, self.elements)
+        return NonlinearLateral(self.system, self.contact, speed, self.elements, self.curve, self.start)
 
     def rhs(self, t, state):
         """Time derivative of [q; q̇].
@@ -888,12 +1113,129 @@ class NonlinearLateral:
         q, qdot = state[:n], state[n:]
         force = -self._C_suspension @ qdot - self._K_suspension @ q
         force = np.array(force, dtype=float, copy=True)
-        for ws, iy, ipsi in self._groups:
-            fy, mz = _contact_forces(ws, self.contact, q[iy], q[ipsi], qdot[iy], qdot[ipsi], self.speed)
-            force[iy] += fy
-            force[ipsi] += mz
+        if self.curve is None:
+            for ws, iy, ipsi, _ in self._groups:
+                fy, mz = _contact_forces(ws, self.contact, q[iy], q[ipsi], qdot[iy], qdot[ipsi], self.speed)
+                force[iy] += fy
+                force[ipsi] += mz
+        else:
+            self._curve_forces(t, q, qdot, force)
         if self._laws:
             d, v = self._G @ q, self._G @ qdot
             pull = np.array([law(d[i], v[i]) for i, law in enumerate(self._laws)], dtype=float)
             force -= self._G.T @ pull
         return np.concatenate([qdot, self._M_inv @ force])
+
+    def relative_to_track(self, t, state) -> tuple[np.ndarray, np.ndarray]:
+        """Each wheelset's lateral displacement and yaw relative to the track where it runs.
+
+        On tangent track these are its coordinates; on a ``curve``, y − y_t and ψ − ψ_t with
+        y_t = ½x²κ(s_c + x/3) and the track's tangent ψ_t = x κ(s_c + x/2) (both exact where κ
+        is linear in s).
+
+        Parameters
+        ----------
+        t : float
+            s, finite.
+        state : ndarray, (2n,) or (2n, k)
+            [q; q̇], finite.
+
+        Returns
+        -------
+        offset : ndarray, (w,) or (w, k)
+            m, to the left, one row per wheelset in the order of ``system.wheelsets``.
+        yaw : ndarray, like ``offset``
+            rad, anticlockwise.
+        """
+        t = scalar("t", t)
+        n = self.system.size
+        q = _state(state, 2 * n)[:n]
+        iy = np.array([w[0] for w in self.system.wheelsets])
+        ipsi = np.array([w[1] for w in self.system.wheelsets])
+        if self.curve is None:
+            return q[iy].copy(), q[ipsi].copy()
+        x = self.system.wheelset_positions
+        s_c = self.start + self.speed * t
+        column = (slice(None),) + (None,) * (q.ndim - 1)
+        y_t = (0.5 * x * x * self.curve.curvature(s_c + x / 3.0))[column]
+        psi_t = (x * self.curve.curvature(s_c + x / 2.0))[column]
+        return q[iy] - y_t, q[ipsi] - psi_t
+
+    def arc_forces(self, q, speed, curvature, unbalanced_acceleration) -> np.ndarray:
+        """The generalized forces on the model at rest on circular arcs, for a batch of states at once.
+
+        In the axes that follow the vehicle round an arc of curvature κ at the speed V (the
+        class docstring, with κ the same under every wheelset: y_t = ½x²κ, the path's yaw x κ,
+        the yaw rate V κ) and with q̇ = 0. Their zero is the quasi-static equilibrium of
+        :func:`raildyn.curving.quasi_static_curving`. The model's own ``speed``, ``curve`` and
+        ``start`` are not used.
+
+        Parameters
+        ----------
+        q : ndarray, (n,) or (n, k)
+            Coordinates, finite; one column per state of the batch.
+        speed : float or array_like, (k,)
+            V, m/s, each > 0.
+        curvature : float or array_like, (k,)
+            κ = 1/R, 1/m, finite (positive: turning left).
+        unbalanced_acceleration : float or array_like, (k,)
+            a_q, m/s², finite (positive outwards).
+
+        Returns
+        -------
+        ndarray, like ``q``
+            N and N·m on each coordinate.
+        """
+        if self._positions is None:
+            raise ValueError(
+                "system cannot run on a curve: its wheelsets have no alignment inputs to place them"
+            )
+        n = self.system.size
+        q = _checks.array("q", q)
+        if not 1 <= q.ndim <= 2 or q.shape[0] != n:
+            raise ValueError(f"q must have shape ({n},) or ({n}, k), got shape {q.shape}")
+        batch = () if q.ndim == 1 else (q.shape[1],)
+        V = _checks.array("speed", speed, low=0.0, low_open=True)
+        kappa = _checks.array("curvature", curvature)
+        a_q = _checks.array("unbalanced_acceleration", unbalanced_acceleration)
+        for name, value in (("speed", V), ("curvature", kappa), ("unbalanced_acceleration", a_q)):
+            if value.shape not in ((), batch):
+                raise ValueError(
+                    f"{name} must be a float or have the shape {batch} of q's batch, got {value.shape}"
+                )
+        column = (slice(None),) + (None,) * (q.ndim - 1)
+        force = -self._K_suspension @ q
+        self._add_curved_contact(
+            q, np.zeros_like(q), V, kappa, lambda x: (0.5 * x * x)[column] * kappa, force
+        )
+        if self._laws:
+            d = self._G @ q
+            pull = np.array([law(d[i], np.zeros_like(d[i])) for i, law in enumerate(self._laws)], dtype=float)
+            force -= self._G.T @ pull
+        force -= self._lateral_mass[column] * a_q
+        return force
+
+    def _add_curved_contact(self, q, qdot, V, kappa, track, force) -> None:
+        """Add the wheel–rail forces in the axes that follow a curve to ``force``: each wheelset at y − y_t
+        with y_t = ``track``(x), the yaw ψ − x κ of its path and the yaw rate ψ̇ + V κ."""
+        column = (slice(None),) + (None,) * (q.ndim - 1)  # a wheelset's x against a batch of states
+        for ws, iy, ipsi, x in self._groups:
+            psi_path = x[column] * kappa  # the direction of the wheelset's path, not the track's tangent
+            fy, mz = _contact_forces(
+                ws, self.contact, q[iy] - track(x), q[ipsi] - psi_path, qdot[iy], qdot[ipsi] + V * kappa, V
+            )
+            force[iy] += fy
+            force[ipsi] += mz
+
+    def _curve_forces(self, t: float, q, qdot, force) -> None:
+        """Add the contact forces on the curve and the unbalanced weight to ``force`` (see the class)."""
+        V, curve = self.speed, self.curve
+        s_c = self.start + V * t
+        kappa = float(curve.curvature(s_c))
+        cant = float(curve.cant_at(s_c))
+        a_q = V * V * kappa - GRAVITY * cant / curve.rail_spacing  # the small-angle g I/G of raildyn.curving
+        column = (slice(None),) + (None,) * (q.ndim - 1)
+        self._add_curved_contact(
+            q, qdot, V, kappa, lambda x: (0.5 * x * x * curve.curvature(s_c + x / 3.0))[column], force
+        )
+        force -= self._lateral_mass[column] * a_q

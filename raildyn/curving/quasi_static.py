@@ -1,0 +1,498 @@
+"""Nonlinear quasi-static curving (book chapter 8): a vehicle's equilibrium in a curve with
+saturating creep and flange contact, at one point or over a map of speeds and radii.
+
+The model is any :class:`raildyn.wheelset.NonlinearLateral` (``Car().nonlinear()``, the freight
+car's, the locomotive's) on a circular arc, in the axes that follow the vehicle (described there
+and in :mod:`raildyn.curving.steady`). At rest in those axes its velocities vanish, and the
+equilibrium is the zero of its forces (:meth:`~raildyn.wheelset.NonlinearLateral.arc_forces`).
+
+The search: Newton's method on every point at once (the forces of a batch of states are one
+vectorised evaluation; the Jacobian by forward differences, n + 1 evaluations; steps halved
+until the residual falls), started from the linear steady state of
+:func:`raildyn.curving.steady_curving`. A point where the flange contact or the creep
+saturation stalls it is taken up alone by Powell's hybrid method, Levenberg–Marquardt, Powell
+from the centred state, and finally Powell after a short run of the dynamics (the creep damps
+it towards the equilibrium), before a :class:`~raildyn.errors.SolverError`.
+
+Friction elements (:class:`~raildyn.wheelset.SuspensionElement` laws that depend only on the
+rate) carry no force at rest, so the equilibrium found is the one friction does not hold
+elsewhere.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.optimize import root
+
+from raildyn import _checks
+from raildyn.constants import GRAVITY
+from raildyn.curving.geometry import (
+    MAXIMUM_CANT,
+    MAXIMUM_SPEED,
+    MINIMUM_RADIUS,
+    Curve,
+    balance_speed,
+    unbalanced_acceleration,
+)
+from raildyn.curving.steady import SteadyCurving, steady_curving
+from raildyn.errors import SolverError
+from raildyn.wheelset import NonlinearLateral, contact_forces, wheel_forces
+
+__all__ = ["CurvingMap", "QuasiStaticCurving", "curving_map", "quasi_static_curving"]
+
+# The arc reaches this far either side of the vehicle's centre, m: beyond any wheelset (≤ 100 m).
+_HALF_ARC = 200.0
+# Equilibrium: the largest force left over, as a fraction of the vehicle's weight (a part in 1e9 of
+# about 3e5 N is 0.3 mN, far below any force that matters and above the rounding of the sums).
+_TOLERANCE = 1.0e-9
+# No wheelset on the rails is further from the track's centre line, m (a flange is about 30 mm high and
+# a wheel's tread 130 mm wide: beyond this the wheel has left its rail).
+_ON_THE_RAILS = 0.05
+# The short run of the dynamics that brings a stalled search near the equilibrium, s.
+_SETTLE = 3.0
+_FLANGE_ANGLE = float(np.radians(70.0))  # rad, about the S1002 wheel's flange angle
+# Newton's steps before the points it leaves go to the single-point searches.
+_NEWTON_STEPS = 30
+# Rounds of the continuation from solved neighbours (the map's points converge within three or four).
+_CONTINUATIONS = 6
+
+
+@dataclass(frozen=True, eq=False)
+class QuasiStaticCurving(SteadyCurving):
+    """A nonlinear model's equilibrium in a curve to the left.
+
+    The fields of :class:`~raildyn.curving.steady.SteadyCurving` (the creep forces now
+    saturated), and:
+
+    Attributes
+    ----------
+    guiding_force : ndarray, (k,)
+        The rails' whole lateral force on each wheelset (creep, gravity and flange), towards
+        the curve's centre, N.
+    flange_force : ndarray, (k,)
+        The flange's share of it, N (≥ 0 on the outer rail, ≤ 0 on the inner; 0 off the flange).
+    flange_contact : ndarray of bool, (k,)
+        Whether each wheelset's flange touches a rail (|offset| beyond the flangeway clearance).
+    wear_number : ndarray, (k,)
+        Tγ of each wheelset's two wheels together, N (≥ 0).
+    wheel_lateral : ndarray, (k, 2)
+        Y, the rail's lateral force on each wheel [inner, outer] in the track's plane, towards
+        the curve's centre, N: the creep force, the tread's normal force tilted by its contact
+        angle, and on a flanging wheel the flange's.
+    wheel_vertical : ndarray, (k, 2)
+        Q, the rail's vertical force on each wheel [inner, outer], N (> 0): half the axle load
+        moved to the outer wheel by the unbalanced acceleration acting at the centre of gravity.
+
+    Y and Q are found from the equilibrium, after it: the lateral model itself keeps equal
+    wheel loads (in the creep saturation and the gravitational stiffness), so the sum of an
+    axle's two Y differs from its guiding force by the tread's share of the load transfer,
+    (Q_o − Q_i) tan δ₀, and of the flange's relief, a few per cent of the flange force.
+    """
+
+    guiding_force: np.ndarray
+    flange_force: np.ndarray
+    flange_contact: np.ndarray
+    wear_number: np.ndarray
+    wheel_lateral: np.ndarray
+    wheel_vertical: np.ndarray
+
+    def __post_init__(self):
+        super().__post_init__()
+        k = len(self.positions)
+        _checks.array("wheel_lateral", self.wheel_lateral, shape=(k, 2))
+        _checks.array("wheel_vertical", self.wheel_vertical, shape=(k, 2), low=0.0, low_open=True)
+        for name in ("guiding_force", "flange_force"):
+            _checks.array(name, getattr(self, name), shape=(k,))
+        _checks.array("wear_number", self.wear_number, shape=(k,), low=0.0)
+        contact = np.asarray(self.flange_contact)
+        if contact.dtype != bool or contact.shape != (k,):
+            raise ValueError(f"flange_contact must be {k} bools, got {self.flange_contact!r:.80}")
+
+    @property
+    def derailment_quotient(self) -> np.ndarray:
+        """Y/Q of each wheel [inner, outer], (k, 2): the quotient that Nadal's limit bounds
+        (:func:`raildyn.curving.climb.nadal_limit`) on the flanging wheel."""
+        return np.abs(self.wheel_lateral) / self.wheel_vertical
+
+
+def _weight(model: NonlinearLateral) -> float:
+    """N, of the order of the vehicle's weight (the inertias on the diagonal add a little): the scale of
+    the residual."""
+    return GRAVITY * float(np.trace(model.system.M))
+
+
+def _newton(model, q, V, kappa, a_q) -> tuple[np.ndarray, np.ndarray]:
+    """Newton's method on the columns of q (n, P) together; the converged columns' flags (P,)."""
+    tolerance = _TOLERANCE * _weight(model)
+    n, P = q.shape
+    q = q.copy()
+    r = model.arc_forces(q, V, kappa, a_q)
+    h = 1.0e-7  # m or rad: a forward difference well above rounding (q ~ 1e-2) and below any kink's scale
+    for _ in range(_NEWTON_STEPS):
+        error = np.abs(r).max(axis=0)
+        active = error > tolerance
+        if not active.any():
+            break
+        J = np.empty((P, n, n))
+        for i in range(n):
+            shifted = q.copy()
+            shifted[i] += h
+            J[:, :, i] = ((model.arc_forces(shifted, V, kappa, a_q) - r) / h).T
+        with np.errstate(all="ignore"):
+            step = np.linalg.solve(J, -r.T[:, :, None])[:, :, 0].T
+        step[:, ~np.all(np.isfinite(step), axis=0)] = 0.0
+        # Halve each column's step until the sum of its squared residuals falls (at most twelve times).
+        merit = (r * r).sum(axis=0)
+        alpha = np.ones(P)
+        for _ in range(12):
+            trial = q + alpha * step
+            r_trial = model.arc_forces(trial, V, kappa, a_q)
+            better = (r_trial * r_trial).sum(axis=0) < merit
+            if better[active].all():
+                break
+            alpha = np.where(better, alpha, 0.5 * alpha)
+        keep = better & active
+        q[:, keep] = trial[:, keep]
+        r[:, keep] = r_trial[:, keep]
+        if not keep.any():
+            break
+    return q, np.abs(r).max(axis=0) <= tolerance
+
+
+def _rescue(model: NonlinearLateral, start: np.ndarray, V: float, R: float, D: float) -> np.ndarray:
+    """One point that Newton left, by the searches of the module docstring, or a SolverError."""
+    n = model.system.size
+    rest = np.zeros(n)
+    kappa, a_q = 1.0 / R, unbalanced_acceleration(V, R, D)
+
+    def residual(q):
+        return model.arc_forces(q, V, kappa, a_q)
+
+    tolerance = _TOLERANCE * _weight(model)
+    trials = [("hybr", start), ("lm", start), ("hybr", rest)]
+    best = start
+    for k in range(len(trials) + 1):
+        if k == len(trials):  # the dynamics on the arc, from the best guess so far, then Powell once more
+            arc = Curve(radius=R, cant=D, transition_length=0.0, arc_length=2 * _HALF_ARC, straight=0.0)
+            on_arc = dataclasses.replace(model, speed=V, curve=arc, start=_HALF_ARC)
+            run = solve_ivp(on_arc.rhs, (0.0, _SETTLE), np.concatenate([best, rest]), rtol=1e-6, atol=1e-9)
+            trials.append(("hybr", run.y[:n, -1]))
+        method, guess = trials[k]
+        found = root(residual, guess, method=method, tol=1e-12)
+        if np.all(np.isfinite(found.x)):
+            error = np.abs(residual(found.x)).max()
+            if error <= tolerance:
+                return found.x
+            if error < np.abs(residual(best)).max():
+                best = found.x
+    raise SolverError(
+        f"no equilibrium at V = {V:g} m/s in R = {R:g} m within {tolerance:.3g} N after {len(trials)} "
+        f"searches (the last left {np.abs(residual(best)).max():.3g} N)"
+    )
+
+
+def _linear_starts(system, V: np.ndarray, R: np.ndarray, D: float) -> np.ndarray:
+    """The linear steady states (n, P) at each (V, R), from two solves: the linear answer is u κ + w a_q.
+
+    The curve's loads on the wheelsets are proportional to κ = 1/R whatever the speed, and the cant
+    deficiency's to a_q, so one solve at the balance speed (a_q = 0) gives u and one with a_q ≠ 0 gives w.
+    """
+    R0 = 1000.0
+    u = R0 * steady_curving(system, balance_speed(R0, 0.1), R0, 0.1).displacement
+    fast = steady_curving(system, 30.0, R0, 0.0)
+    w = (fast.displacement - u / R0) / fast.unbalanced_acceleration
+    a_q = unbalanced_acceleration(V, R, D)
+    return np.outer(u, 1.0 / R) + np.outer(w, a_q)
+
+
+def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float) -> np.ndarray:
+    """The equilibria (n, P) at the points (V, R) of a cant D.
+
+    Newton on all the points from their linear states; then, a few times over, on the points it left,
+    each from the equilibrium of its nearest solved neighbour in (1/R, a_q) (a continuation: the flange
+    and the saturation that stall Newton from far away are crossed in small steps); then each point it
+    still leaves alone by :func:`_rescue`.
+    """
+    kappa, a_q = 1.0 / R, unbalanced_acceleration(V, R, D)
+    q0 = _linear_starts(model.system, V, R, D)
+    q, done = _newton(model, q0, V, kappa, a_q)
+    where = np.stack([kappa / np.ptp(kappa) if np.ptp(kappa) else kappa, a_q / (np.ptp(a_q) or 1.0)])
+    for _ in range(_CONTINUATIONS):
+        left = np.flatnonzero(~done)
+        if left.size == 0 or not done.any():
+            break
+        solved = np.flatnonzero(done)
+        gap = ((where[:, left, None] - where[:, None, solved]) ** 2).sum(axis=0)
+        start = q[:, solved[gap.argmin(axis=1)]]
+        q[:, left], done[left] = _newton(model, start, V[left], kappa[left], a_q[left])
+    for p in np.flatnonzero(~done):
+        q[:, p] = _rescue(model, q0[:, p], float(V[p]), float(R[p]), D)
+    return q
+
+
+def _wheels(
+    model: NonlinearLateral, q: np.ndarray, V: float, R: np.ndarray, D: float, h: float, tan_flange: float
+):
+    """Per-wheelset results at one speed for the equilibria q (n, P) in the radii R (P,): a dict of arrays
+    whose first axis is the wheelset (k) and then P (and 2 wheels [inner, outer] for Y and Q)."""
+    system = model.system
+    x = system.wheelset_positions
+    iy = np.array([w[0] for w in system.wheelsets])
+    ipsi = np.array([w[1] for w in system.wheelsets])
+    # relative to the track where each wheelset runs on the arc (y_t = ½x²/R, its tangent x/R)
+    y = q[iy] - np.outer(0.5 * x * x, 1.0 / R)
+    psi = q[ipsi] - np.outer(x, 1.0 / R)
+    if np.abs(y).max() > _ON_THE_RAILS:
+        raise SolverError(
+            f"the only equilibrium found has a wheelset {1e3 * np.abs(y).max():.4g} mm off the track's "
+            f"centre line, beyond the {1e3 * _ON_THE_RAILS:g} mm at which a wheel leaves its rail: it derails"
+        )
+    a_q = unbalanced_acceleration(V, R, D)
+    k, P = y.shape
+    out = {name: np.empty((k, P)) for name in ("longitudinal", "lateral", "guiding", "flange", "wear")}
+    Y, Q = np.empty((k, 2, P)), np.empty((k, 2, P))
+    for j, (_, _, ws) in enumerate(system.wheelsets):
+        forces = wheel_forces(ws, model.contact, y[j], psi[j], 0.0, V / R, V)
+        out["longitudinal"][j] = forces.longitudinal[1]  # the right wheel, outer in a left-hand curve
+        out["lateral"][j] = -forces.lateral.sum(axis=0)  # towards the outer rail
+        out["flange"][j] = forces.flange.sum(axis=0)
+        out["wear"][j] = forces.wear_number.sum(axis=0)
+        out["guiding"][j] = contact_forces(ws, model.contact, y[j], psi[j], 0.0, V / R, V)[0]
+        # Q: each wheel's share of the axle load with the roll moment of m a_q at h; a flange bears
+        # F/tan δ_f of it, the tread the rest, tilted by its contact angle δ₀ ± εy/a towards the track's
+        # centre line (inner wheel: to the right, outer: to the left).
+        a, W = ws.half_gauge, ws.axle_load
+        transfer = 0.5 * W * h / a * a_q / GRAVITY
+        Q[j] = 0.5 * W - transfer, 0.5 * W + transfer
+        tread = Q[j] - np.abs(forces.flange) / tan_flange
+        tilt = ws.contact_angle + np.array([[1.0], [-1.0]]) * ws.contact_angle_parameter * y[j] / a
+        Y[j] = forces.lateral + forces.flange + np.array([[-1.0], [1.0]]) * tread * np.tan(tilt)
+    if np.any(Q <= 0.0):
+        raise SolverError(
+            f"the inner wheels are lifted: an unbalanced acceleration of up to {np.max(a_q):.4g} m/s² at "
+            f"cg_height = {h:g} m moves more than the whole wheel load to the outer rail (the car overturns)"
+        )
+    out.update(offset=-y, angle_of_attack=-psi, contact=np.abs(y) > model.contact.flange_clearance, Y=Y, Q=Q)
+    return out
+
+
+def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_angle):
+    """The checked (V, R, D, h, tan δ_f) of either public function."""
+    V = np.atleast_1d(_checks.array(speed_name, speed, low=0.0, low_open=True, allow_empty=False))
+    R = np.atleast_1d(_checks.array(radius_name, radius, low=MINIMUM_RADIUS, allow_empty=False))
+    _checks.scalar(speed_name, V.max(), high=MAXIMUM_SPEED)
+    D = _checks.scalar("cant", cant, low=0.0, high=MAXIMUM_CANT)
+    h = _checks.scalar("cg_height", cg_height, low=0.0, low_open=True, high=4.0)
+    delta = _checks.scalar(
+        "flange_angle", flange_angle, low=0.0, high=np.pi / 2, low_open=True, high_open=True
+    )
+    return V, R, D, h, float(np.tan(delta))
+
+
+def quasi_static_curving(
+    model, speed, radius, cant=0.0, *, cg_height=1.8, flange_angle=_FLANGE_ANGLE
+) -> QuasiStaticCurving:
+    """The equilibrium of a nonlinear lateral model in a curve to the left, flanges included.
+
+    Parameters
+    ----------
+    model : NonlinearLateral
+        The vehicle with nonlinear contact (e.g. ``Car().nonlinear()``); its speed, curve
+        and start are replaced.
+    speed : float
+        V, m/s, in (0, :data:`~raildyn.curving.geometry.MAXIMUM_SPEED`].
+    radius : float
+        R, m (≥ :data:`~raildyn.curving.geometry.MINIMUM_RADIUS`, 50 m).
+    cant : float
+        D, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`] (0.2 m).
+    cg_height : float
+        h, height of the vehicle's centre of gravity above the rails, m, in (0, 4]: the
+        unbalanced acceleration moves ΔQ = (W/2)(h/a)(a_q/g) of each axle's load W to the
+        outer wheel. Default 1.8 m, the Manchester car's body (Iwnicki 1998).
+    flange_angle : float
+        δ_f, the flange's contact angle, rad, in (0, π/2): the flange's normal force, whose
+        lateral part the flange spring gives, bears F/tan δ_f of the wheel's load (so that
+        the tread bears the rest). Default 70°, about the flange angle of the S1002 wheel.
+
+    Returns
+    -------
+    QuasiStaticCurving
+
+    Raises
+    ------
+    SolverError
+        If no search finds the equilibrium (the module docstring), or the one found has a
+        wheelset more than 50 mm off the centre line (off its rail).
+
+    Examples
+    --------
+    The Manchester car in a 600 m curve at its balance speed for 100 mm of cant: the
+    leading wheelsets run on their flanges at about 3.8 mrad.
+
+    >>> from raildyn.curving.geometry import balance_speed
+    >>> from raildyn.vehicles import Car
+    >>> state = quasi_static_curving(Car().nonlinear(), balance_speed(600.0, 0.1), 600.0, 0.1)
+    >>> state.flange_contact.tolist(), round(1e3 * float(state.angle_of_attack[0]), 1)
+    ([True, False, True, False], 3.8)
+    """
+    _checks.instance("model", model, NonlinearLateral)
+    _checks.scalar("speed", speed)
+    _checks.scalar("radius", radius)
+    V, R, D, h, tan_flange = _options("speed", "radius", speed, radius, cant, cg_height, flange_angle)
+    q = _solve(model, V, R, D)
+    out = _wheels(model, q, float(V[0]), R, D, h, tan_flange)
+    system = model.system
+    return QuasiStaticCurving(
+        float(R[0]), float(V[0]), D, unbalanced_acceleration(float(V[0]), float(R[0]), D), system.labels,
+        q[:, 0], system.wheelset_positions, out["offset"][:, 0], out["angle_of_attack"][:, 0],
+        out["longitudinal"][:, 0], out["lateral"][:, 0], out["guiding"][:, 0], out["flange"][:, 0],
+        out["contact"][:, 0], out["wear"][:, 0], out["Y"][:, :, 0], out["Q"][:, :, 0],
+    )  # fmt: skip
+
+
+@dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
+class CurvingMap:
+    """Quasi-static curving over a grid of radii and speeds.
+
+    Attributes
+    ----------
+    radii : ndarray, (r,)
+        R, m.
+    speeds : ndarray, (s,)
+        V, m/s.
+    cant : float
+        D, m.
+    unbalanced_acceleration : ndarray, (r, s)
+        a_q, m/s².
+    offset, angle_of_attack, flange_force, wear_number : ndarray, (r, s, k)
+        As in :class:`QuasiStaticCurving`, for each wheelset.
+    derailment_quotient : ndarray, (r, s, k, 2)
+        Y/Q of each wheel [inner, outer].
+
+    All finite; radii ≥ 50 m and speeds > 0.
+    """
+
+    radii: np.ndarray
+    speeds: np.ndarray
+    cant: float
+    unbalanced_acceleration: np.ndarray
+    offset: np.ndarray
+    angle_of_attack: np.ndarray
+    flange_force: np.ndarray
+    wear_number: np.ndarray
+    derailment_quotient: np.ndarray
+
+    def __post_init__(self):
+        r = _checks.array("radii", self.radii, ndim=1, low=MINIMUM_RADIUS, allow_empty=False).size
+        s = _checks.array("speeds", self.speeds, ndim=1, low=0.0, low_open=True, allow_empty=False).size
+        _checks.nonnegative("cant", self.cant)
+        _checks.array("unbalanced_acceleration", self.unbalanced_acceleration, shape=(r, s))
+        k = _checks.array("offset", self.offset, shape=(r, s, None)).shape[2]
+        for name in ("angle_of_attack", "flange_force"):
+            _checks.array(name, getattr(self, name), shape=(r, s, k))
+        _checks.array("wear_number", self.wear_number, shape=(r, s, k), low=0.0)
+        _checks.array("derailment_quotient", self.derailment_quotient, shape=(r, s, k, 2), low=0.0)
+
+    def plot(self, ax=None, *, quantity: str = "angle_of_attack", wheelset: int = 0) -> dict:
+        """Contours of one quantity of one wheelset over speed (km/h) and radius (m).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Where to draw (a new figure when None).
+        quantity : str
+            "angle_of_attack" (mrad), "offset" (mm), "flange_force" (kN), "wear_number" (N) or
+            "derailment_quotient" (the outer wheel's Y/Q).
+        wheelset : int
+            Which wheelset, in [0, k − 1] (0: the leading one).
+
+        Returns
+        -------
+        dict
+            ``contours`` (the filled contour set) and ``colorbar``.
+        """
+        from raildyn.plots import axes_or_new
+
+        name = _checks.choice("quantity", quantity, _MAP_UNITS)
+        j = _checks.integer("wheelset", wheelset, low=0, high=self.offset.shape[2] - 1)
+        scale, unit = _MAP_UNITS[name]
+        values = getattr(self, name)[:, :, j]
+        if name == "derailment_quotient":
+            values = values[..., 1]
+        ax = axes_or_new(ax)
+        contours = ax.contourf(3.6 * self.speeds, self.radii, scale * values, levels=12)
+        colorbar = ax.figure.colorbar(contours, ax=ax, label=f"{name.replace('_', ' ')} ({unit})")
+        ax.set_xlabel("speed (km/h)")
+        ax.set_ylabel("radius (m)")
+        ax.set_yscale("log")
+        ax.set_title(f"wheelset {j + 1}, cant {1e3 * self.cant:g} mm")
+        return {"contours": contours, "colorbar": colorbar}
+
+
+_MAP_UNITS = {
+    "angle_of_attack": (1e3, "mrad"),
+    "offset": (1e3, "mm"),
+    "flange_force": (1e-3, "kN"),
+    "wear_number": (1.0, "N"),
+    "derailment_quotient": (1.0, "outer wheel"),
+}
+
+
+def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=_FLANGE_ANGLE) -> CurvingMap:
+    """Quasi-static curving of a nonlinear lateral model over every pair of radius and speed.
+
+    All the points are solved together (the module docstring): a 40 × 30 map of the bogie takes
+    about the time of 40 single points.
+
+    Parameters
+    ----------
+    model : NonlinearLateral
+        As for :func:`quasi_static_curving`.
+    speeds : array_like, (s,)
+        V, m/s, each in (0, :data:`~raildyn.curving.geometry.MAXIMUM_SPEED`].
+    radii : array_like, (r,)
+        R, m, each ≥ :data:`~raildyn.curving.geometry.MINIMUM_RADIUS`.
+    cant : float
+        D, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`].
+    cg_height, flange_angle : float
+        As for :func:`quasi_static_curving`.
+
+    Returns
+    -------
+    CurvingMap
+
+    Raises
+    ------
+    SolverError
+        If a point has no equilibrium with the wheels on the rails (as
+        :func:`quasi_static_curving`).
+
+    Examples
+    --------
+    >>> from raildyn.vehicles import Bogie
+    >>> m = curving_map(Bogie().nonlinear(), [15.0, 25.0], [300.0, 600.0, 1200.0], 0.1)
+    >>> m.angle_of_attack.shape
+    (3, 2, 2)
+    """
+    _checks.instance("model", model, NonlinearLateral)
+    s = _checks.array("speeds", speeds, ndim=1, allow_empty=False).size
+    r = _checks.array("radii", radii, ndim=1, allow_empty=False).size
+    V, R, D, h, tan_flange = _options("speeds", "radii", speeds, radii, cant, cg_height, flange_angle)
+    q = _solve(model, np.tile(V, r), np.repeat(R, s), D).reshape(-1, r, s)
+    k = len(model.system.wheelsets)
+    fields = {
+        name: np.empty((r, s, k)) for name in ("offset", "angle_of_attack", "flange_force", "wear_number")
+    }
+    quotient = np.empty((r, s, k, 2))
+    for i, v in enumerate(V):
+        out = _wheels(model, q[:, :, i], float(v), R, D, h, tan_flange)
+        for name, key in (("offset", "offset"), ("angle_of_attack", "angle_of_attack"),
+                          ("flange_force", "flange"), ("wear_number", "wear")):  # fmt: skip
+            fields[name][:, i] = out[key].T
+        quotient[:, i] = np.moveaxis(np.abs(out["Y"]) / out["Q"], 2, 0)
+    a_q = unbalanced_acceleration(V[None, :], R[:, None], D)
+    return CurvingMap(R, V, D, a_q, **fields, derailment_quotient=quotient)

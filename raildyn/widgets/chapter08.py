@@ -1,0 +1,376 @@
+"""Chapter 8 widgets: the car's wheelsets in a curve, Nadal's limit against the car's Y/Q, and a
+bogie's entry into a curve against speed.
+
+Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
+models are :mod:`raildyn.curving` and :mod:`raildyn.vehicles`; this module only
+turns control values into model calls and moves artists. The plan view is
+:meth:`raildyn.curving.steady.SteadyCurving.plot` of the quasi-static equilibrium and the
+curve entry :meth:`raildyn.curving.entry.CurveEntry.plot`, both moved in place.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import ipywidgets as widgets
+import numpy as np
+
+from raildyn import plots
+from raildyn.curving import climb, curve_entry, geometry, quasi_static_curving
+from raildyn.errors import SolverError
+from raildyn.vehicles import Bogie, Car
+from raildyn.widgets._core import Recipe, slider
+
+__all__ = ["curve_entry_speed", "curving_plan", "nadal_chart"]
+
+_CAR = Car().nonlinear()  # the Manchester benchmark car with saturating creep and flanges
+_EXAGGERATION = 50.0  # on the offsets and angles of attack in the plan view, as SteadyCurving.plot's default
+_FLANGING = plots.COLORS[1]  # an axle on its flange
+_ROLLING = plots.COLORS[0]  # an axle on its treads
+
+
+@lru_cache(maxsize=512)
+def _car_equilibrium(radius: float, speed: float, cant: float, flange_angle_deg: float = 70.0):
+    """The car's quasi-static equilibrium (m, m/s, m, deg), or the SolverError that says why there is none."""
+    try:
+        return quasi_static_curving(_CAR, speed, radius, cant, flange_angle=np.radians(flange_angle_deg))
+    except SolverError as err:
+        return err
+
+
+# ---------------------------------------------------------------------------
+# The car in plan
+
+
+def _plan_controls():
+    return {
+        "radius": slider("radius R (m)", 600.0, 150.0, 3000.0, 10.0, fmt=".0f"),
+        "speed_kmh": slider("speed V (km/h)", 71.0, 10.0, 160.0, 1.0, fmt=".0f"),
+        "cant_mm": slider("cant D (mm)", 100.0, 0.0, 150.0, 5.0, fmt=".0f"),
+    }
+
+
+def _plan_setup(live, status):
+    (ax,) = live.axes[0]
+    state = _car_equilibrium(600.0, 71.0 / 3.6, 0.1)
+    chart = state.plot(ax, exaggeration=_EXAGGERATION)  # drawn once, then moved in place
+    ax.set_title(
+        f"Manchester car in quasi-static equilibrium, offsets and yaw × {_EXAGGERATION:g}; "
+        "inner rail at the top, running to the right",
+        fontsize="medium",
+    )
+    ax.set_xlim(-14.0, 14.0)
+    ax.plot([], [], color=_FLANGING, lw=3, label="on its flange")
+    ax.plot([], [], color=_ROLLING, lw=3, label="on its treads")
+    ax.legend(loc="lower right", fontsize=8)
+    # The numbers are in the wheelsets' labels and the status line: each more text costs ~4 ms a frame.
+    live.animate(*chart["axles"], *chart["labels"])
+
+    def redraw(v):
+        R, V, D = float(v["radius"]), float(v["speed_kmh"]) / 3.6, 1e-3 * float(v["cant_mm"])
+        deficiency = 1e3 * geometry.cant_deficiency(V, R, D)
+        head = (
+            f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h, D = {1e3 * D:.0f} mm: "
+            f"cant deficiency {deficiency:.0f} mm"
+        )
+        state = _car_equilibrium(R, V, D)
+        if isinstance(state, SolverError):
+            for artist in (*chart["axles"], *chart["labels"][1:]):
+                artist.set_visible(False)
+            chart["labels"][0].set_text("no equilibrium")  # moved back by the next plot
+            chart["labels"][0].set_x(0.0)
+            status.value = f"{head} · no equilibrium: {state}"
+            return
+        state.plot(artists=chart, exaggeration=_EXAGGERATION)
+        for axle, label, flanging in zip(chart["axles"], chart["labels"], state.flange_contact, strict=True):
+            axle.set_visible(True)
+            label.set_visible(True)
+            axle.set_color(_FLANGING if flanging else _ROLLING)
+        quotient = state.derailment_quotient[0, 1]
+        wheelsets = "; ".join(
+            f"{k + 1}: α {1e3 * a:+.2f} mrad, y {1e3 * y:+.1f} mm, {'flange' if f else 'treads'}"
+            for k, (a, y, f) in enumerate(
+                zip(state.angle_of_attack, state.offset, state.flange_contact, strict=True)
+            )
+        )
+        status.value = (
+            f"{head} (a_q = {state.unbalanced_acceleration:.2f} m/s²) · leading outer wheel "
+            f"Y/Q = {quotient:.3f} · wheelsets front to back: {wheelsets}"
+        )
+
+    return redraw
+
+
+CURVING_PLAN = Recipe(
+    _plan_controls,
+    _plan_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (10.0, 3.6)},
+    static={"radius": [150.0, 200.0, 300.0, 400.0, 600.0, 800.0, 1200.0, 2000.0, 3000.0]},
+    title="The Manchester car's four wheelsets in plan in a curve, in quasi-static equilibrium",
+)
+
+
+def curving_plan():
+    """The Manchester car's wheelsets in plan in a curve: offsets, angles of attack, flange contact.
+
+    The car with saturating creep and flanges (``Car().nonlinear()``) in its quasi-static
+    equilibrium (:func:`raildyn.curving.quasi_static.quasi_static_curving`), drawn on the straightened
+    track with its offsets and angles of attack exaggerated 50 times; an axle on its
+    flange is drawn in red. The status line gives the cant deficiency, the leading outer
+    wheel's Y/Q and each wheelset's angle of attack, offset and contact; where the car has
+    no equilibrium (it overturns, or no search finds one) it says why. Controls: radius R
+    (m), speed V (km/h) and cant D (mm).
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``radius``, ``speed_kmh``, ``cant_mm``), redraws and
+        returns the PNG frame.
+    """
+    return CURVING_PLAN.build()
+
+
+# ---------------------------------------------------------------------------
+# Nadal's limit and the car's Y/Q
+
+_NADAL_CANT = 0.1  # m: the cant of the curve the car runs in
+_FLANGE_ANGLES = np.linspace(50.0, 80.0, 121)  # deg
+_REFERENCE_FRICTIONS = (0.0, 0.2, 0.4, 0.6)
+
+
+def _nadal_controls():
+    return {
+        "flange_angle": slider("flange angle δ (deg)", 70.0, 50.0, 80.0, 0.5, fmt=".1f"),
+        "friction": slider("flange friction μ", 0.36, 0.0, 0.8, 0.01),
+        "radius": slider("radius R (m)", 300.0, 150.0, 3000.0, 10.0, fmt=".0f"),
+        "speed_kmh": slider("speed V (km/h)", 71.0, 10.0, 140.0, 1.0, fmt=".0f"),
+    }
+
+
+def _nadal_setup(live, status):
+    (ax,) = live.axes[0]
+    references = climb.plot_nadal_limit(
+        ax, friction=_REFERENCE_FRICTIONS, flange_angle=np.radians(_FLANGE_ANGLES)
+    )
+    for line in references.values():
+        line.set_alpha(0.35)
+        line.set_linewidth(1.0)
+    (limit,) = ax.plot(_FLANGE_ANGLES, _FLANGE_ANGLES * 0.0, color="k", lw=2.2, label="chosen μ")
+    (at_angle,) = ax.plot([70.0], [1.0], "o", mfc="white", mec="k", ms=8)
+    (level,) = ax.plot(_FLANGE_ANGLES[[0, -1]], [0.0, 0.0], ":", color=_FLANGING)
+    (car,) = ax.plot([70.0], [0.0], "D", color=_FLANGING, ms=8, label="car: leading outer wheel Y/Q")
+    verdict = ax.text(0.02, 0.96, "", transform=ax.transAxes, va="top", fontsize=9)
+    ax.set_xlim(_FLANGE_ANGLES[0], _FLANGE_ANGLES[-1])
+    ax.set_ylim(0.0, 2.6)
+    ax.set_title(
+        f"Nadal's limit and the Manchester car's Y/Q (quasi-static, {1e3 * _NADAL_CANT:.0f} mm cant)",
+        fontsize="medium",
+    )
+    ax.legend(loc="upper right", fontsize=8, ncol=2)
+    live.animate(limit, at_angle, level, car, verdict)
+
+    def redraw(v):
+        delta, mu = float(v["flange_angle"]), float(v["friction"])
+        R, V = float(v["radius"]), float(v["speed_kmh"]) / 3.6
+        limit.set_ydata(climb.nadal_limit(np.radians(_FLANGE_ANGLES), mu))
+        nadal = climb.nadal_limit(np.radians(delta), mu)
+        at_angle.set_data([delta], [nadal])
+        deficiency = 1e3 * geometry.cant_deficiency(V, R, _NADAL_CANT)
+        head = (
+            f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h, {1e3 * _NADAL_CANT:.0f} mm cant "
+            f"(deficiency {deficiency:.0f} mm)"
+        )
+        state = _car_equilibrium(R, V, _NADAL_CANT, delta)
+        if isinstance(state, SolverError):
+            car.set_data([], [])
+            level.set_data([], [])
+            verdict.set_text("no equilibrium")
+            status.value = f"{head} · no equilibrium: {state}"
+            return
+        quotient = float(state.derailment_quotient[0, 1])
+        car.set_data([delta], [quotient])
+        level.set_data(_FLANGE_ANGLES[[0, -1]], [quotient, quotient])
+        axle = climb.wheel_climb(state.wheel_lateral[0], state.wheel_vertical[0], np.radians(delta), mu)
+        if quotient > nadal:
+            word, short = "above Nadal's limit: the flange may climb", "may climb"
+        else:
+            word, short = "below Nadal's limit: no climb", "no climb"
+        verdict.set_text(f"Y/Q {quotient:.2f} {'>' if quotient > nadal else '<'} {nadal:.2f}: {short}")
+        status.value = (
+            f"{head} · leading outer wheel Y/Q = {quotient:.3f}, Nadal's limit at δ = {delta:.1f}°, "
+            f"μ = {mu:.2f}: {nadal:.3f} — {word} · axle sum Σ|Y/Q| = {axle.axle_sum:.3f} against "
+            f"Weinstock's {axle.weinstock_limit:.3f}"
+        )
+
+    return redraw
+
+
+NADAL_CHART = Recipe(
+    _nadal_controls,
+    _nadal_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (8.0, 4.0)},
+    static={"flange_angle": [60.0, 65.0, 70.0, 75.0], "friction": [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]},
+    title="Nadal's limit against flange angle for a chosen friction, with the car's leading outer wheel Y/Q",
+)
+
+
+def nadal_chart():
+    """Nadal's limit against the flange angle, and the Manchester car's leading outer wheel's Y/Q on it.
+
+    The limit L/V = (tan δ − μ)/(1 + μ tan δ) (:func:`raildyn.curving.climb.nadal_limit`)
+    for the chosen friction, over faint curves for μ = 0 (tan δ), 0.2, 0.4 and 0.6; the
+    car's quotient comes from its quasi-static equilibrium
+    (:func:`raildyn.curving.quasi_static.quasi_static_curving`, with the chosen flange angle) in a curve
+    with 100 mm of cant, at the chosen radius and speed. The status line gives the verdict
+    and the leading axle's sum against Weinstock's limit. Controls: flange angle δ (deg),
+    flange friction μ, radius R (m) and speed V (km/h).
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``flange_angle``, ``friction``, ``radius``,
+        ``speed_kmh``), redraws and returns the PNG frame.
+    """
+    return NADAL_CHART.build()
+
+
+# ---------------------------------------------------------------------------
+# Curve entry against speed
+
+# A 600 m curve with 100 mm of cant, entered by a 50 m clothoid (a ramp of 2 mm/m) straight from
+# the start, and a 30 m arc: the bogie settles on it within a few metres.
+ENTRY_CURVE = geometry.Curve(radius=600.0, cant=0.1, transition_length=50.0, arc_length=30.0, straight=0.0)
+ENTRY_SPEEDS = (60.0, 80.0, 100.0, 120.0)  # km/h: each run takes about a second, so a few, made once
+_BOGIE = Bogie().nonlinear()  # a bogie's run costs about half the car's
+_QUANTITIES = {"flange force": "flange_force", "offset": "offset", "angle of attack": "angle_of_attack"}
+_SCALES = {"flange_force": (1e-3, "kN"), "offset": (1e3, "mm"), "angle_of_attack": (1e3, "mrad")}
+
+
+@lru_cache(maxsize=1)
+def _entry_runs() -> dict:
+    """Speed (km/h) → (CurveEntry, QuasiStaticCurving) of the bogie in ENTRY_CURVE, computed once."""
+    runs = {}
+    for kmh in ENTRY_SPEEDS:
+        V = kmh / 3.6
+        runs[kmh] = (
+            curve_entry(_BOGIE, V, ENTRY_CURVE),
+            quasi_static_curving(_BOGIE, V, ENTRY_CURVE.radius, ENTRY_CURVE.cant),
+        )
+    return runs
+
+
+def _limits(runs: dict, quantity: str) -> tuple[float, float]:
+    """y-limits that hold every precomputed run's ``quantity``, in the plotted unit."""
+    scale = _SCALES[quantity][0]
+    values = np.concatenate([scale * getattr(run, quantity).ravel() for run, _ in runs.values()])
+    low, high = min(values.min(), 0.0), max(values.max(), 0.0)
+    margin = 0.08 * (high - low)
+    return low - margin, high + margin
+
+
+def _entry_controls():
+    return {
+        "speed_kmh": widgets.SelectionSlider(
+            options=list(ENTRY_SPEEDS),
+            value=80.0,
+            description="speed V (km/h)",
+            style={"description_width": "initial"},
+            layout=widgets.Layout(width="360px"),
+        ),
+        "quantity": widgets.Dropdown(
+            options=list(_QUANTITIES.items()), value="flange_force", description="show"
+        ),
+    }
+
+
+def _entry_setup(live, status):
+    (ax,) = live.axes[0]
+    runs = _entry_runs()
+    run, state = runs[80.0]
+    chart = run.plot(ax, quantity="flange_force")  # one line per wheelset, moved in place
+    ends = run.distance[[0, -1]]
+    dashed = [
+        ax.plot(
+            ends, [0.0, 0.0], "--", color=line.get_color(), lw=1.2, label="quasi-static" if k == 0 else None
+        )[0]
+        for k, line in enumerate(chart["lines"])
+    ]
+    ax.set_xlim(*ends)
+    ax.set_title(
+        f"Bogie entering a {ENTRY_CURVE.radius:.0f} m curve ({1e3 * ENTRY_CURVE.cant:.0f} mm cant) by a "
+        f"{ENTRY_CURVE.transition_length:.0f} m transition (dotted: its ends)",
+        fontsize="medium",
+    )
+    ax.legend(loc="lower right", fontsize=8)
+    live.animate(*chart["lines"], *dashed)
+    shown = {"quantity": None}
+
+    def redraw(v):
+        kmh, quantity = float(v["speed_kmh"]), str(v["quantity"])
+        run, state = runs[kmh]
+        scale, unit = _SCALES[quantity]
+        if quantity != shown["quantity"]:  # a new axis: its label and limits, drawn into the background
+            ax.set_ylabel(f"{quantity.replace('_', ' ')} ({unit})")
+            ax.set_ylim(*_limits(runs, quantity))
+            live.invalidate()
+            shown["quantity"] = quantity
+        run.plot(artists=chart, quantity=quantity)
+        settled = scale * getattr(state, quantity)
+        for line, value in zip(dashed, settled, strict=True):
+            line.set_ydata([value, value])
+        values = scale * getattr(run, quantity)[0]
+        peak = int(np.argmax(np.abs(values)))
+        deficiency = 1e3 * geometry.cant_deficiency(kmh / 3.6, ENTRY_CURVE.radius, ENTRY_CURVE.cant)
+        status.value = (
+            f"V = {kmh:.0f} km/h (cant deficiency {deficiency:.0f} mm) · leading wheelset's "
+            f"{quantity.replace('_', ' ')}: largest {values[peak]:.2f} {unit} "
+            f"at s = {run.distance[peak]:.1f} m, "
+            f"at the end {values[-1]:.2f} {unit}, quasi-static {settled[0]:.2f} {unit}"
+        )
+
+    return redraw
+
+
+CURVE_ENTRY_SPEED = Recipe(
+    _entry_controls,
+    _entry_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (9.0, 3.8)},
+    static={"speed_kmh": list(ENTRY_SPEEDS), "quantity": list(_QUANTITIES.values())},
+    title="A bogie's flange force, offset and angle of attack through a curve's entry, against speed",
+)
+
+
+def curve_entry_speed():
+    """A bogie's run from straight track into a 600 m curve, at one of a few speeds.
+
+    The Manchester car's bogie with saturating creep and flanges (``Bogie().nonlinear()``)
+    runs through a 50 m clothoid with a linear cant ramp into an arc of 600 m with 100 mm
+    of cant (``ENTRY_CURVE``, :func:`raildyn.curving.entry.curve_entry`); each wheelset's
+    flange force (or offset, or angle of attack) against the distance of the bogie's
+    centre, with its quasi-static value (:func:`raildyn.curving.quasi_static.quasi_static_curving`)
+    dashed. The runs at ``ENTRY_SPEEDS`` are made once, when the first widget is
+    built (a few seconds), and kept. Controls: speed V (km/h) and the quantity shown.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``speed_kmh``, one of ``ENTRY_SPEEDS``;
+        ``quantity``, "flange_force", "offset" or "angle_of_attack"), redraws and returns
+        the PNG frame.
+    """
+    return CURVE_ENTRY_SPEED.build()
+
+
+BENCH_MOVES = [
+    ("ch08 curving_plan R", CURVING_PLAN, "radius", [300.0, 450.0, 800.0, 1500.0, 3000.0, 600.0]),
+    ("ch08 curving_plan V", CURVING_PLAN, "speed_kmh", [40.0, 60.0, 80.0, 100.0, 120.0, 71.0]),
+    ("ch08 nadal_chart μ", NADAL_CHART, "friction", [0.1, 0.2, 0.3, 0.5, 0.6, 0.36]),
+    ("ch08 nadal_chart R", NADAL_CHART, "radius", [200.0, 400.0, 600.0, 1000.0, 2000.0, 300.0]),
+    ("ch08 curve_entry_speed V", CURVE_ENTRY_SPEED, "speed_kmh", [*ENTRY_SPEEDS, 80.0]),
+]
