@@ -29,6 +29,7 @@ from raildyn.widgets import (
     chapter05,
     chapter06,
     chapter07,
+    chapter08,
     chapter09,
 )
 from raildyn.widgets._core import Recipe, _nearest
@@ -63,6 +64,9 @@ MOVES = {
     chapter07.car_roots: dict(conicity=0.3, yaw_stiffness=20.0),
     chapter07.critical_curve: dict(yaw_stiffness=20.0, secondary_yaw_stiffness=1.0),
     chapter07.vehicle_comparison: dict(vehicle="locomotive", conicity=0.3),
+    chapter08.curving_plan: dict(radius=900.0, speed_kmh=100.0, cant_mm=50.0),
+    chapter08.nadal_chart: dict(flange_angle=65.0, friction=0.2, radius=500.0, speed_kmh=90.0),
+    chapter08.curve_entry_speed: dict(speed_kmh=120.0, quantity="offset"),
     chapter09.string_lining: dict(radius=400.0, force_kn=-600.0),
     chapter09.braking_run_widget: dict(slack_mm=50.0, signal_speed=150.0, speed_kmh=40.0, cars=20),
 }
