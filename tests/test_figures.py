@@ -128,3 +128,26 @@ def test_the_registry_exports_what_notebooks_and_plug_ins_use():
         "save_all",
         "show",
     } <= set(figures.__all__)
+
+
+def test_chapter_eight_figures_are_registered_without_book_numbers():
+    for fid in ("curving-plan", "nadal-limit", "curve-entry"):
+        spec = figures.REGISTRY[fid]
+        assert spec.chapter == 8 and spec.book_figure is None and spec.caption
+
+
+def test_nadal_limit_figure_puts_the_cars_quotients_under_nadals_curves():
+    from raildyn.curving import climb, geometry, quasi_static_curving
+    from raildyn.vehicles import Car
+
+    ax = figures.make("nadal-limit").axes[0]
+    curves, markers = ax.lines[:3], ax.lines[3:]
+    for line, mu in zip(curves, (0.1, 0.3, 0.5), strict=True):
+        delta = np.radians(line.get_xdata())
+        np.testing.assert_allclose(line.get_ydata(), climb.nadal_limit(delta, mu), rtol=1e-12)
+    speed = geometry.speed_for_deficiency(300.0, 0.1, 0.1)
+    state = quasi_static_curving(Car().nonlinear(), speed, 300.0, 0.1, flange_angle=np.radians(70.0))
+    assert markers[-1].get_xdata()[0] == 70.0
+    assert markers[-1].get_ydata()[0] == pytest.approx(state.derailment_quotient[0, 1], rel=1e-12)
+    # every marker below the lowest limit (μ = 0.5) at 70°
+    assert max(m.get_ydata()[0] for m in markers) < climb.nadal_limit(np.radians(70.0), 0.5)
