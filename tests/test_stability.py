@@ -304,7 +304,11 @@ def test_results_check_their_fields():
     with pytest.raises(ValueError, match="speed"):
         stability.CriticalSpeed(np.nan, 5.0, 1j, "crossing", np.ones(2), ("y", "ψ"))
     with pytest.raises(ValueError, match="frequency_hz"):
-        stability.LimitCycle(60.0, 0.01, np.nan, 1.0, np.zeros(4))
+        stability.LimitCycle(60.0, 0.01, np.nan, 1.0, np.zeros(4), 0.01, 8.0)
+    with pytest.raises(ValueError, match="oscillation"):
+        stability.LimitCycle(60.0, 0.01, 5.7, 1.0, np.zeros(4), -0.01, 8.0)
+    with pytest.raises(ValueError, match="duration"):
+        stability.LimitCycle(60.0, 0.01, 5.7, 1.0, np.zeros(4), 0.01, 0.0)
     with pytest.raises(TypeError, match="labels"):
         stability.ModeSweep(np.array([1.0]), np.ones((1, 1)), np.ones((1, 1)), np.ones((1, 1)),
                             np.ones((1, 1, 1)), "y", ("y",))  # fmt: skip

@@ -102,8 +102,17 @@ class NonlinearRun:
         return out
 
 
-def simulate(model, speed, initial_state, duration, *, max_step: float = 2.0e-3, rtol: float = 1.0e-6):
-    """Integrate a nonlinear lateral model at speed V from a state, by RK45 (scipy).
+def simulate(
+    model,
+    speed,
+    initial_state,
+    duration,
+    *,
+    max_step: float = 2.0e-3,
+    rtol: float = 1.0e-6,
+    method: str = "RK45",
+):
+    """Integrate a nonlinear lateral model at speed V from a state, by RK45 or another scipy method.
 
     Parameters
     ----------
@@ -119,6 +128,13 @@ def simulate(model, speed, initial_state, duration, *, max_step: float = 2.0e-3,
         Largest step, s (> 0).
     rtol : float
         Relative tolerance of the integration, in [1e-13, 1).
+    method : str
+        The method of ``scipy.integrate.solve_ivp``: ``"RK45"`` (default), ``"DOP853"``,
+        ``"BDF"``, ``"Radau"`` or ``"LSODA"``. Friction smoothed over a small velocity scale
+        (the freight car's wedges and centre plates) makes a model stiff: an explicit method's
+        steps are then held to about 1 ms by stability, while ``"BDF"``, whose steps follow the
+        accuracy asked for, needs about a tenth of the evaluations (give it a ``max_step`` of a
+        fraction of the period, not the explicit methods' 2 ms).
 
     Returns
     -------
@@ -145,8 +161,16 @@ def simulate(model, speed, initial_state, duration, *, max_step: float = 2.0e-3,
     r = _checks.tolerance("rtol", rtol)
     m = _at_speed(model, V)
     y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    sol = _integrate(m.rhs, T, y0, "RK45", r, 1e-9, V, max_step=h)
+    sol = _integrate(m.rhs, T, y0, _method(method), r, 1e-9, V, max_step=h)
     return NonlinearRun(V, sol.t, sol.y, m.lateral_index)
+
+
+_METHODS = ("RK45", "DOP853", "BDF", "Radau", "LSODA")  # of scipy.integrate.solve_ivp
+
+
+def _method(value) -> str:
+    """The name of a ``solve_ivp`` method, one of :data:`_METHODS`."""
+    return _checks.choice("method", value, _METHODS)
 
 
 _MAX_DURATION = 120.0  # s, the longest run (and period) asked for: hunting settles within seconds
@@ -209,9 +233,28 @@ def _integrate(rhs, duration: float, y0, method: str, rtol: float, atol: float, 
     return sol
 
 
+# The band of hunting frequencies, Hz. Hunting is the kinematic oscillation of the wheelsets and trucks,
+# f = V/L with a wavelength L from about 5 m (a free wheelset on a steep cone) to some 40 m (a stiff
+# bogie of long wheelbase), or a lateral mode of the car body (0.5 to 2 Hz) that it drives; over the
+# speeds at which railway vehicles hunt, roughly 10 to 100 m/s, that spans about 0.3 to 15 Hz. Slower
+# motion is a drift (friction letting a wheelset creep, or holding it off centre), faster one a chatter
+# of friction or of the flange, not hunting.
+_HUNTING_BAND_HZ = (0.3, 15.0)
+# Amplitude over the last quarter of a run against that over the quarter before, above which the motion
+# counts as no longer decaying.
+_SUSTAINED_GROWTH = 0.95
+# m: below this the crossings of the trend line are the solver's noise, and no frequency is read.
+_MEASURABLE_OSCILLATION = 1.0e-6
+
+
 @dataclass(frozen=True)
 class LimitCycle:
     """Steady lateral oscillation of a nonlinear model at one speed.
+
+    The measure is taken over the last half of the run, split in two quarters, on the first
+    wheelset's lateral displacement y(t). Its *trend* is the least-squares straight line through
+    y over the last half: a drift, or an offset at which friction holds the wheelset, is in the
+    trend and not in the oscillation about it.
 
     Attributes
     ----------
@@ -221,13 +264,20 @@ class LimitCycle:
         Half the peak-to-peak lateral displacement of the first wheelset over
         the last quarter of the run, m (≥ 0).
     frequency_hz : float
-        Frequency of the oscillation, Hz, from the upward crossings of the mean (0 when
-        there is no oscillation: fewer than two crossings in the last quarter).
+        Frequency of the oscillation about the trend, Hz (≥ 0), from the upward crossings of the
+        trend line over the last half of the run (the crossing times interpolated between
+        samples); 0 when there is no oscillation: fewer than two crossings, or an oscillation
+        below 1 µm.
     growth : float
         Amplitude over the last quarter divided by that over the quarter before (≥ 0):
         below 1 while the motion is still dying away.
     state : ndarray
         The state at the end of the run (to start the next speed of a ramp from).
+    oscillation : float
+        Half the peak-to-peak, over the last quarter of the run, of the lateral displacement less
+        its trend, m (≥ 0; at most about ``amplitude``): the part of the motion that oscillates.
+    duration : float
+        Length of the run, s (> 0): each quarter compared lasts ``duration / 4``.
     """
 
     speed: float
@@ -235,27 +285,83 @@ class LimitCycle:
     frequency_hz: float
     growth: float
     state: np.ndarray
+    oscillation: float
+    duration: float
 
     def __post_init__(self):
         positive("speed", self.speed)
         for name in ("amplitude", "frequency_hz", "growth"):
             _checks.nonnegative(name, getattr(self, name))
         array("state", self.state, ndim=1, allow_empty=False)
+        _checks.nonnegative("oscillation", self.oscillation)
+        _duration("duration", self.duration)
+
+    @property
+    def cycles(self) -> float:
+        """Periods of the oscillation in each quarter of the run compared: frequency_hz × duration / 4."""
+        return self.frequency_hz * self.duration / 4.0
 
     def hunting(self, threshold: float = 2.0e-4) -> bool:
-        """Whether the motion is a sustained oscillation: above ``threshold`` and no longer decaying.
+        """Whether the motion is a sustained oscillation: above ``threshold``, no longer decaying, periodic.
 
         Parameters
         ----------
         threshold : float
-            Amplitude below which the motion counts as decayed, m (> 0; default 0.2 mm).
+            Amplitude of the oscillation below which the motion counts as decayed, m (> 0;
+            default 0.2 mm).
 
         Returns
         -------
         bool
-            True when ``amplitude > threshold`` and ``growth > 0.95``.
+            True when all of:
+
+            * ``oscillation > threshold``: the motion about its trend, so that a drift or a
+              friction-held offset, however large, is not taken for a cycle;
+            * ``growth > 0.95``: no longer dying away;
+            * ``0.3 Hz ≤ frequency_hz ≤ 15 Hz``: the band of hunting, V/L over the kinematic
+              wavelengths L of wheelsets and trucks (about 5 to 40 m) at the speeds where
+              vehicles hunt; slower motion is a drift, faster a chatter;
+            * ``cycles ≥ 1``: each quarter compared holds a whole period, so that its half
+              peak-to-peak is the cycle's amplitude, not a part of one swing, and ``growth``
+              compares like with like (a run too short for its frequency is not judged hunting).
         """
-        return self.amplitude > positive("threshold", threshold) and self.growth > 0.95
+        low, high = _HUNTING_BAND_HZ
+        return (
+            self.oscillation > positive("threshold", threshold)
+            and self.growth > _SUSTAINED_GROWTH
+            and low <= self.frequency_hz <= high
+            and self.cycles >= 1.0
+        )
+
+
+def _measure(t: np.ndarray, x: np.ndarray, duration: float) -> dict:
+    """The fields of :class:`LimitCycle` measured on a run's lateral displacement ``x`` at times ``t``."""
+    last = t >= 0.75 * duration
+    before = (t >= 0.5 * duration) & ~last
+    amplitude = 0.5 * np.ptp(x[last])
+    previous = 0.5 * np.ptp(x[before]) if before.any() else 0.0
+    growth = amplitude / previous if previous > 0 else 1.0
+    # The oscillation about the trend, the least-squares line through the last half.
+    half = t >= 0.5 * duration
+    th, xh = t[half], x[half]
+    tc = th - th.mean()
+    spread = tc @ tc
+    slope = (tc @ xh) / spread if spread > 0 else 0.0
+    r = xh - xh.mean() - slope * tc
+    oscillation = 0.5 * np.ptp(r[th >= 0.75 * duration])
+    frequency_hz = 0.0
+    if oscillation > _MEASURABLE_OSCILLATION:
+        up = np.flatnonzero((r[:-1] < 0.0) & (r[1:] >= 0.0))
+        if up.size >= 2:
+            # The crossing times, interpolated linearly between the samples either side.
+            crossing = th[up] - r[up] * (th[up + 1] - th[up]) / (r[up + 1] - r[up])
+            frequency_hz = (up.size - 1) / (crossing[-1] - crossing[0])
+    return {
+        "amplitude": float(amplitude),
+        "frequency_hz": float(frequency_hz),
+        "growth": float(growth),
+        "oscillation": float(oscillation),
+    }
 
 
 def limit_cycle_amplitude(
@@ -267,12 +373,16 @@ def limit_cycle_amplitude(
     duration: float = 8.0,
     max_step: float = 2.0e-3,
     rtol: float = 1e-6,
+    method: str = "RK45",
 ) -> LimitCycle:
     """Amplitude of the steady hunting of a nonlinear model at one speed, by direct integration.
 
     Starts from a lateral displacement of the first wheelset (or from
-    ``initial_state``) and integrates ``duration`` seconds with RK45; the
-    amplitude is taken over the last quarter of the run.
+    ``initial_state``) and integrates ``duration`` seconds (RK45 by default); the
+    amplitude is taken over the last quarter of the run, the frequency over the
+    last half (see :class:`LimitCycle`). :meth:`LimitCycle.hunting` judges the motion
+    only when each quarter holds a whole period: give a slow motion a run of at least
+    four of its periods.
 
     Parameters
     ----------
@@ -294,11 +404,15 @@ def limit_cycle_amplitude(
         Largest solver step, s (> 0).
     rtol : float
         Relative tolerance of the solver, in [1e-13, 1).
+    method : str
+        The integration method, as for :func:`~raildyn.stability.nonlinear.simulate`
+        (``"BDF"`` for a model made stiff by friction).
 
     Returns
     -------
     LimitCycle
-        Amplitude (m), frequency (Hz), growth over the last two quarters and final state.
+        Amplitude (m), oscillation about the trend (m), frequency (Hz), growth over the last
+        two quarters, final state and the run's duration (s).
 
     Raises
     ------
@@ -312,7 +426,7 @@ def limit_cycle_amplitude(
 
     >>> from raildyn.wheelset import NonlinearWheelset, Wheelset
     >>> model = NonlinearWheelset(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6))
-    >>> cycle = limit_cycle_amplitude(model, 60.0, duration=2.0)
+    >>> cycle = limit_cycle_amplitude(model, 60.0, duration=4.0)
     >>> cycle.hunting(), round(1e3 * cycle.amplitude, 1), round(cycle.frequency_hz, 1)
     (True, 10.3, 5.7)
     """
@@ -320,6 +434,7 @@ def limit_cycle_amplitude(
     T = _duration("duration", duration)
     positive("max_step", max_step)
     _checks.tolerance("rtol", rtol)
+    _method(method)
     y_start = _displacement(initial_displacement)
     m = _at_speed(model, V)
     if initial_state is None:
@@ -327,19 +442,8 @@ def limit_cycle_amplitude(
         y0[m.lateral_index] = y_start
     else:
         y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    run = simulate(m, V, y0, T, max_step=max_step, rtol=rtol)
-    t, y, x = run.t, run.states, run.lateral
-    last = t >= 0.75 * T
-    before = (t >= 0.5 * T) & ~last
-    amplitude = 0.5 * np.ptp(x[last])
-    previous = 0.5 * np.ptp(x[before]) if before.any() else 0.0
-    growth = amplitude / previous if previous > 0 else 1.0
-    tail, tt = x[last], t[last]
-    crossings = np.flatnonzero(np.diff(np.sign(tail - tail.mean())) > 0)
-    frequency_hz = 0.0
-    if amplitude > 1e-6 and crossings.size >= 2:
-        frequency_hz = (crossings.size - 1) / (tt[crossings[-1]] - tt[crossings[0]])
-    return LimitCycle(V, float(amplitude), float(frequency_hz), float(growth), y[:, -1].copy())
+    run = simulate(m, V, y0, T, max_step=max_step, rtol=rtol, method=method)
+    return LimitCycle(speed=V, state=run.states[:, -1].copy(), duration=T, **_measure(run.t, run.lateral, T))
 
 
 _MAX_DISPLACEMENT = 0.05  # m: no wheelset on the rails is further from the centre
@@ -366,12 +470,12 @@ class BifurcationDiagram:
     frequencies_hz : ndarray
         Frequency of the motion at each speed, Hz (≥ 0; 0 where there is no oscillation).
     hunting : ndarray of bool
-        Whether the motion at each speed is a sustained oscillation.
+        Whether the motion at each speed is a sustained oscillation (:meth:`LimitCycle.hunting`).
     nonlinear_critical_speed : float
         Lowest speed at which a limit cycle persists, m/s (> 0), refined by bisection
         between the grid speeds (inf if there is none on the grid).
     threshold : float
-        Amplitude below which the motion counts as decayed, m (> 0).
+        Amplitude of the oscillation below which the motion counts as decayed, m (> 0).
     """
 
     speeds: np.ndarray
@@ -452,6 +556,8 @@ def bifurcation_diagram(
     threshold: float = 2.0e-4,
     refine: int = 4,
     progress: bool = True,
+    rtol: float = 1e-6,
+    method: str = "RK45",
 ) -> BifurcationDiagram:
     """Limit-cycle amplitude along a speed ramp-down, and the nonlinear critical speed.
 
@@ -474,17 +580,26 @@ def bifurcation_diagram(
         a speed where the motion died away), m, either side, 0 < |y₀| ≤ 0.05 m (as for
         :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`).
     duration : float
-        Simulated time at each speed, s, in (0, 120].
+        Simulated time at each speed, s, in (0, 120]: at least four periods of the hunting,
+        so that each quarter of the run compared holds one (:meth:`LimitCycle.hunting`).
     max_step : float
         Largest solver step, s (> 0).
     threshold : float
-        Amplitude below which the motion counts as decayed, m, in (0, 0.05] (no wheelset
-        on the rails moves further).
+        Amplitude of the oscillation below which the motion counts as decayed, m, in (0, 0.05]
+        (no wheelset on the rails moves further).
     refine : int
         Number of bisection steps on the nonlinear critical speed, in [0, 30] (30 halve the
         bracket a billion times).
     progress : bool
         Show a progress bar.
+    rtol : float
+        Relative tolerance of the solver, in [1e-13, 1) (as for
+        :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`). Where friction makes
+        the model stiff, an explicit method's steps are set by stability rather than accuracy,
+        and a coarse tolerance costs little accuracy.
+    method : str
+        The integration method, as for :func:`~raildyn.stability.nonlinear.simulate`
+        (``"BDF"`` for a model made stiff by friction).
 
     Returns
     -------
@@ -496,6 +611,15 @@ def bifurcation_diagram(
     ------
     SolverError
         If an integration fails.
+
+    Notes
+    -----
+    Where the branch of cycles ends in a fold, a run just below the fold lingers near the
+    lost cycle for a time that grows without bound as the speed nears the fold, and may pass
+    for hunting; a decaying motion of two modes can also beat, its amplitude rising for a
+    while. Long runs place the fold closely; a short run's ramp should keep its speeds a
+    step apart that each run judges with a margin (``refine=0``), the fold then lying within
+    one step below the nonlinear critical speed found.
     """
     V = np.sort(_checks.speeds("speeds", speeds))[::-1]
     _displacement(initial_displacement)
@@ -503,6 +627,8 @@ def bifurcation_diagram(
     positive("max_step", max_step)
     scalar("threshold", threshold, low=0.0, low_open=True, high=_MAX_DISPLACEMENT)
     integer("refine", refine, low=0, high=30)
+    _checks.tolerance("rtol", rtol)
+    _method(method)
     _at_speed(model, float(V[0]))
     items = V
     if _checks.flag("progress", progress):
@@ -516,6 +642,8 @@ def bifurcation_diagram(
             initial_state=state,
             duration=duration,
             max_step=max_step,
+            rtol=rtol,
+            method=method,
         )
         cycles.append(cycle)
         state = cycle.state if cycle.hunting(threshold) else None
@@ -529,7 +657,13 @@ def bifurcation_diagram(
             for _ in range(refine):
                 mid = 0.5 * (high + low)
                 trial = limit_cycle_amplitude(
-                    model, mid, initial_state=start, duration=duration, max_step=max_step
+                    model,
+                    mid,
+                    initial_state=start,
+                    duration=duration,
+                    max_step=max_step,
+                    rtol=rtol,
+                    method=method,
                 )
                 if trial.hunting(threshold):
                     high, start = mid, trial.state
