@@ -107,6 +107,17 @@ def test_the_map_holds_the_single_points_and_the_forces_vanish():
     assert artists["contours"] is not None
 
 
+def test_a_fast_car_in_a_gentle_curve_is_found_by_the_homotopy():
+    # At 140 km/h in 1000 m with no cant (a_q = 1.5 m/s²) Newton from the linear state stalls at the
+    # flange's edge and the neighbours' continuation has no neighbour; raising the curve's load from
+    # nothing finds the equilibrium, off the flanges, with the forces balanced.
+    model = Car().nonlinear()
+    state = quasi_static_curving(model, 140 / 3.6, 1000.0)
+    residual = model.arc_forces(state.displacement, 140 / 3.6, 1e-3, state.unbalanced_acceleration)
+    assert np.abs(residual).max() < 1e-9 * GRAVITY * np.trace(model.system.M)
+    assert not state.flange_contact.any() and np.all(np.abs(state.offset) < 9.1e-3)
+
+
 def test_arc_forces_are_the_right_hand_side_on_an_arc():
     # On a long arc the model's right-hand side at rest is M⁻¹ times arc_forces, to rounding.
     model = Car().nonlinear(25.0)

@@ -9,10 +9,11 @@ equilibrium is the zero of its forces (:meth:`~raildyn.wheelset.NonlinearLateral
 The search: Newton's method on every point at once (the forces of a batch of states are one
 vectorised evaluation; the Jacobian by forward differences, n + 1 evaluations; steps halved
 until the residual falls), started from the linear steady state of
-:func:`raildyn.curving.steady_curving`. A point where the flange contact or the creep
-saturation stalls it is taken up alone by Powell's hybrid method, Levenberg–Marquardt, Powell
-from the centred state, and finally Powell after a short run of the dynamics (the creep damps
-it towards the equilibrium), before a :class:`~raildyn.errors.SolverError`.
+:func:`raildyn.curving.steady_curving`. Points where the flange contact or the creep saturation
+stalls it are continued from their solved neighbours, then by a homotopy that raises the curve's
+load from nothing in adaptive steps; a point left after that is taken up alone by Powell's hybrid method,
+Levenberg–Marquardt, Powell from the centred state, and finally Powell after a short run of the
+dynamics (the creep damps it towards the equilibrium), before a :class:`~raildyn.errors.SolverError`.
 
 Friction elements (:class:`~raildyn.wheelset.SuspensionElement` laws that depend only on the
 rate) carry no force at rest, so the equilibrium found is the one friction does not hold
@@ -214,8 +215,8 @@ def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float) -> n
 
     Newton on all the points from their linear states; then, a few times over, on the points it left,
     each from the equilibrium of its nearest solved neighbour in (1/R, a_q) (a continuation: the flange
-    and the saturation that stall Newton from far away are crossed in small steps); then each point it
-    still leaves alone by :func:`_rescue`.
+    and the saturation that stall Newton from far away are crossed in small steps); then each point
+    still left alone, by :func:`_homotopy` and failing that :func:`_rescue`.
     """
     kappa, a_q = 1.0 / R, unbalanced_acceleration(V, R, D)
     q0 = _linear_starts(model.system, V, R, D)
@@ -230,8 +231,27 @@ def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float) -> n
         start = q[:, solved[gap.argmin(axis=1)]]
         q[:, left], done[left] = _newton(model, start, V[left], kappa[left], a_q[left])
     for p in np.flatnonzero(~done):
-        q[:, p] = _rescue(model, q0[:, p], float(V[p]), float(R[p]), D)
+        found = _homotopy(model, float(V[p]), float(kappa[p]), float(a_q[p]))
+        q[:, p] = found if found is not None else _rescue(model, q0[:, p], float(V[p]), float(R[p]), D)
     return q
+
+
+def _homotopy(model: NonlinearLateral, V: float, kappa: float, a_q: float) -> np.ndarray | None:
+    """One point by a homotopy in the curve's load: κ and a_q raised from 0 to theirs, Newton at each
+    share started from the last; a share that fails is approached in halved steps. None if the step
+    falls below a thousandth."""
+    q = np.zeros((model.system.size, 1))
+    share, step = 0.0, 0.1
+    while share < 1.0:
+        trial = min(1.0, share + step)
+        found, ok = _newton(model, q, np.array([V]), np.array([trial * kappa]), np.array([trial * a_q]))
+        if ok[0]:
+            q, share, step = found, trial, min(2 * step, 0.25)
+        else:
+            step /= 2
+            if step < 1e-3:
+                return None
+    return q[:, 0]
 
 
 def _wheels(
