@@ -190,3 +190,33 @@ def test_median_update(label, recipe, control, values):
     # DESIGN.md asks for 50 ms (measured ~35–50 ms here on an idle machine; benchmarks/ records it); a
     # test on a shared machine under load only guards against a widget that recomputes far too much.
     assert median < 250.0
+
+
+# ---------------------------------------------------------------------------
+# The stability–curving trade-off
+
+
+def test_stiffness_tradeoff_draws_the_models_critical_speeds_and_angles_of_attack():
+    from raildyn.curving.stiffness import stability_and_curving
+
+    container, update = chapter08.stiffness_tradeoff()
+    update(conicity=0.25, radius=900.0)
+    ks = chapter08._TRADEOFF_STIFFNESSES
+    speed = geometry.balance_speed(900.0, 0.1)  # the widget's curves all have 100 mm of cant
+    expected = stability_and_curving(
+        Car().replace(conicity=0.25), ks, speed, 900.0, 0.1, speed_range=(1.0, 150.0), tol=0.25, scan=8
+    )
+    left, right = container.live.figure.axes
+    # The same call as the widget's: equal to rounding.
+    np.testing.assert_allclose(left.lines[0].get_ydata(), 3.6 * expected.critical_speed, rtol=1e-12)
+    np.testing.assert_allclose(right.lines[0].get_ydata(), 1e3 * expected.angle_of_attack, rtol=1e-12)
+    np.testing.assert_allclose(left.lines[0].get_xdata(), ks / 1e6)
+    # The status line reads both at the grid's point nearest the car's own k_ψ (62.8 MN·m/rad).
+    i = int(np.argmin(np.abs(ks - Car().wheelset.yaw_stiffness)))
+    status = _status(container)
+    assert f"critical speed {3.6 * expected.critical_speed[i]:.0f} km/h" in status
+    assert f"angle of attack {1e3 * expected.angle_of_attack[i]:.2f} mrad" in status
+    # The trade-off itself: both rise with k_ψ up to the car's own stiffness.
+    below = ks <= Car().wheelset.yaw_stiffness
+    assert np.all(np.diff(expected.critical_speed[below]) > 0)
+    assert np.all(np.diff(expected.angle_of_attack[below]) > 0)

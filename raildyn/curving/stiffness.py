@@ -371,23 +371,38 @@ def _critical_speeds(system, Ks, low: float, high: float, tol: float, scan: int)
 
     The definition of :func:`raildyn.stability.critical_speed` (a coarse scan, then a
     bracketed refinement), with all stiffnesses in one batched eigenvalue call per
-    step: the Illinois variant of regula falsi, each step kept at least tol/2 inside
-    its bracket, until every bracket is narrower than 2 tol; the midpoint is returned.
+    step. The scan rises in speed and leaves a stiffness at its first crossing; the
+    refinement is the Illinois variant of regula falsi, each step kept at least tol/2
+    inside its bracket, until every bracket is narrower than 2 tol; the midpoint is
+    returned.
     """
     m = Ks.shape[0]
     V = np.linspace(low, high, scan)
-    g = _largest_real_parts(system, np.repeat(Ks, scan, axis=0), np.tile(V, m)).reshape(m, scan)
     speed = np.full(m, np.inf)
     status = np.full(m, _STATUSES[1], dtype=object)
-    unstable = g[:, 0] >= 0.0
+    g0 = _largest_real_parts(system, Ks, np.full(m, low))
+    unstable = g0 >= 0.0
     speed[unstable], status[unstable] = low, _STATUSES[2]
-    up = (g[:, :-1] < 0.0) & (g[:, 1:] >= 0.0)
-    todo = np.flatnonzero(~unstable & up.any(axis=1))
+    # The scan goes up in speed and drops each stiffness at its first crossing: the first upward zero
+    # is all that is sought, so the speeds above it need no eigenvalues.
+    open_ = np.flatnonzero(~unstable)
+    g_open = g0[open_]
+    todo, a, b, ga, gb = [], [], [], [], []
+    for j in range(1, scan):
+        if open_.size == 0:
+            break
+        g = _largest_real_parts(system, Ks[open_], np.full(open_.size, V[j]))
+        up = g >= 0.0  # g was < 0 at every lower speed of the scan
+        todo.append(open_[up])
+        a.append(np.full(up.sum(), V[j - 1]))
+        b.append(np.full(up.sum(), V[j]))
+        ga.append(g_open[up])
+        gb.append(g[up])
+        open_, g_open = open_[~up], g[~up]
+    todo, a, b, ga, gb = (np.concatenate(x) if x else np.empty(0) for x in (todo, a, b, ga, gb))
+    todo = todo.astype(int)
     if todo.size == 0:
         return speed, tuple(status)
-    j = up[todo].argmax(axis=1)
-    a, b = V[j], V[j + 1]
-    ga, gb = g[todo, j], g[todo, j + 1]
     side = np.zeros(todo.size, dtype=int)  # which end the last step kept: −1 a, +1 b
     for _ in range(_MAX_ITERATIONS):
         active = (b - a) > 2 * tol

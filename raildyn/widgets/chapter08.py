@@ -1,11 +1,12 @@
-"""Chapter 8 widgets: the car's wheelsets in a curve, Nadal's limit against the car's Y/Q, and a
-bogie's entry into a curve against speed.
+"""Chapter 8 widgets: the car's wheelsets in a curve, Nadal's limit against the car's Y/Q, a
+bogie's entry into a curve against speed, and the car's stability–curving trade-off.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
 models are :mod:`raildyn.curving` and :mod:`raildyn.vehicles`; this module only
 turns control values into model calls and moves artists. The plan view is
 :meth:`raildyn.curving.steady.SteadyCurving.plot` of the quasi-static equilibrium and the
-curve entry :meth:`raildyn.curving.entry.CurveEntry.plot`, both moved in place.
+curve entry :meth:`raildyn.curving.entry.CurveEntry.plot`, both moved in place; the trade-off
+:meth:`raildyn.curving.stiffness.StabilityCurving.plot`.
 """
 
 from __future__ import annotations
@@ -17,11 +18,12 @@ import numpy as np
 
 from raildyn import plots
 from raildyn.curving import climb, curve_entry, geometry, quasi_static_curving
+from raildyn.curving.stiffness import stability_and_curving
 from raildyn.errors import SolverError
 from raildyn.vehicles import Bogie, Car
 from raildyn.widgets._core import Recipe, slider
 
-__all__ = ["curve_entry_speed", "curving_plan", "nadal_chart"]
+__all__ = ["curve_entry_speed", "curving_plan", "nadal_chart", "stiffness_tradeoff"]
 
 _CAR = Car().nonlinear()  # the Manchester benchmark car with saturating creep and flanges
 _EXAGGERATION = 50.0  # on the offsets and angles of attack in the plan view, as SteadyCurving.plot's default
@@ -367,10 +369,110 @@ def curve_entry_speed():
     return CURVE_ENTRY_SPEED.build()
 
 
+# ---------------------------------------------------------------------------
+# The trade-off between stability and curving
+
+_TRADEOFF_STIFFNESSES = np.geomspace(1.0e6, 120.0e6, 20)  # N·m/rad per wheelset; the car's own is 62.8e6
+_TRADEOFF_CANT = 0.1  # m: the curve is run at its balance speed, so the angle of attack is self-steering's
+_TRADEOFF_RANGE = (1.0, 150.0)  # m/s searched for the critical speed
+_TRADEOFF_RADII = (300.0, 2000.0)  # m: the radius slider's range
+
+
+@lru_cache(maxsize=256)
+def _tradeoff(conicity: float, radius: float):
+    """The car's trade-off at a conicity in a curve of ``radius`` m (100 mm of cant, at balance speed)."""
+    model = Car().replace(conicity=conicity)
+    speed = geometry.balance_speed(radius, _TRADEOFF_CANT)
+    # 8 speeds a scan and 0.25 m/s (0.9 km/h) on each critical speed: finer than the plot shows
+    return stability_and_curving(
+        model,
+        _TRADEOFF_STIFFNESSES,
+        speed,
+        radius,
+        _TRADEOFF_CANT,
+        speed_range=_TRADEOFF_RANGE,
+        tol=0.25,
+        scan=8,
+    )
+
+
+def _tradeoff_controls():
+    return {
+        "conicity": slider("conicity λ", 0.15, 0.05, 0.4, 0.01),
+        "radius": slider("radius R (m)", 600.0, *_TRADEOFF_RADII, 50.0, fmt=".0f"),
+    }
+
+
+def _tradeoff_setup(live, status):
+    (ax,) = live.axes[0]
+    result = _tradeoff(0.15, 600.0)
+    chart = result.plot(ax)  # drawn once, then moved in place
+    own = Car().wheelset.yaw_stiffness / 1e6
+    b = Car().bogie.semi_wheelbase
+    ax.axvline(own, color="0.6", lw=1, ls=":")
+    ax.text(own, 0.02, " Manchester car", transform=ax.get_xaxis_transform(), fontsize=8, color="0.4")
+    ax.set_title(
+        "Manchester car: linear critical speed, and angle of attack at the balance speed for 100 mm cant",
+        fontsize="medium",
+    )
+    live.animate(chart["critical"], chart["attack"])
+    left, right = chart["axes"]
+    left.set_ylim(0.0, 3.6 * _TRADEOFF_RANGE[1])  # km/h: fixed, so that a move only moves the lines
+    # mrad: fixed too, up to b/R of the sharpest curve on the slider (the rigid bogie's angle of attack)
+    right.set_ylim(-0.5, 1.1e3 * b / _TRADEOFF_RADII[0])
+    i = int(np.argmin(np.abs(_TRADEOFF_STIFFNESSES / 1e6 - own)))  # the grid's point nearest the car's
+
+    def redraw(v):
+        lam, R = float(v["conicity"]), float(v["radius"])
+        r = _tradeoff(lam, R)
+        r.plot(artists=chart)
+        v_c = r.critical_speed[i]
+        text = f"{3.6 * v_c:.0f} km/h" if np.isfinite(v_c) else "stable up to 540 km/h"
+        status.value = (
+            f"λ = {lam:.2f}, R = {R:.0f} m at {3.6 * r.speed:.0f} km/h · at k_ψ = "
+            f"{_TRADEOFF_STIFFNESSES[i] / 1e6:.0f} MN·m/rad: critical speed {text}, leading wheelset's "
+            f"angle of attack {1e3 * r.angle_of_attack[i]:.2f} mrad (b/R = {1e3 * b / R:.2f} mrad)"
+        )
+
+    return redraw
+
+
+STIFFNESS_TRADEOFF = Recipe(
+    _tradeoff_controls,
+    _tradeoff_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (8.0, 3.8)},
+    static={"conicity": [0.05, 0.08, 0.1, 0.12, 0.15, 0.2, 0.3, 0.4]},
+    title="The Manchester car's critical speed and leading angle of attack against primary yaw stiffness",
+)
+
+
+def stiffness_tradeoff():
+    """The stability–curving trade-off of the Manchester car against its primary yaw stiffness.
+
+    For 20 primary yaw stiffnesses k_ψ per wheelset (1–120 MN·m/rad), the car's linear
+    critical speed (left axis) and its leading wheelset's angle of attack in a curve run at
+    its balance speed for 100 mm of cant (right axis), from
+    :func:`raildyn.curving.stiffness.stability_and_curving`, drawn by
+    :meth:`~raildyn.curving.stiffness.StabilityCurving.plot` and moved in place. The status
+    line reads both at the car's own stiffness. Controls: conicity λ and radius R (m).
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``conicity``, ``radius``), redraws and returns the
+        PNG frame.
+    """
+    return STIFFNESS_TRADEOFF.build()
+
+
 BENCH_MOVES = [
     ("ch08 curving_plan R", CURVING_PLAN, "radius", [300.0, 450.0, 800.0, 1500.0, 3000.0, 600.0]),
     ("ch08 curving_plan V", CURVING_PLAN, "speed_kmh", [40.0, 60.0, 80.0, 100.0, 120.0, 71.0]),
     ("ch08 nadal_chart μ", NADAL_CHART, "friction", [0.1, 0.2, 0.3, 0.5, 0.6, 0.36]),
     ("ch08 nadal_chart R", NADAL_CHART, "radius", [200.0, 400.0, 600.0, 1000.0, 2000.0, 300.0]),
     ("ch08 curve_entry_speed V", CURVE_ENTRY_SPEED, "speed_kmh", [*ENTRY_SPEEDS, 80.0]),
+    ("ch08 stiffness_tradeoff λ", STIFFNESS_TRADEOFF, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
+    ("ch08 stiffness_tradeoff R", STIFFNESS_TRADEOFF, "radius", [300.0, 450.0, 800.0, 1500.0, 2000.0, 600.0]),
 ]

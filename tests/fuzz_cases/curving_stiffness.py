@@ -1,5 +1,5 @@
 """Fuzz registry: self-steering (chapter 8): bending and shear stiffness, the closed-form steady curving of a
-bogie described by them, and the trade-off between stability and curving."""
+bogie described by them, and the trade-off between stability and curving (and its widget)."""
 
 from __future__ import annotations
 
@@ -48,4 +48,7 @@ ENTRIES = [
         accepts={"angle_of_attack": "zero negative", "cant": "zero"},
     ),
     fuzz("raildyn.curving.stiffness.StabilityCurving.plot", lambda: on(tradeoff()), accepts={"ax": "none"}),
+    # a widget factory takes no arguments: only the unknown keyword applies (tests/test_widgets_ch08.py
+    # makes the valid call)
+    fuzz("raildyn.widgets.chapter08.stiffness_tradeoff", lambda: call()),
 ]
