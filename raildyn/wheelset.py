@@ -59,6 +59,7 @@ __all__ = [
     "curve_loads",
     "kinematic_oscillation",
     "kinematic_wavelength",
+    "profile_contact",
     "pure_rolling_offset",
     "rigid_bogie_wavelength",
     "wheel_forces",
@@ -673,6 +674,98 @@ class WheelRailContact:
                     raise ValueError(
                         f"{name} must return values within ±{bound:.4g}, returned {out} at y = {y} m"
                     )
+
+
+_FLANGE_CONTACT_ANGLE = 0.7  # rad (40°): a contact steeper than this is on the flange, not the tread
+_PROFILE_STEP = 2.5e-4  # m, the lateral step of the contact tables
+
+
+def profile_contact(
+    wheel, rail, *, friction=0.3, flange_stiffness=14.6e6, gauge=1.435, tape_distance=1.5
+) -> WheelRailContact:
+    """The nonlinear contact of a wheel and rail profile pair: tread tables and the flange.
+
+    The rigid contact of chapter 4 (:func:`raildyn.contact.profiles.contact_geometry`, with
+    the wheelset's roll) is followed outwards from the centre in steps of 0.25 mm until a
+    contact angle passes 40°: there the contact jumps from the tread to the flange, and that
+    shift is the flangeway clearance δ_f. Inside it, the rolling-radius and contact-angle
+    differences Δr(y) and Δδ(y) are tabulated and interpolated linearly; beyond it the tread
+    keeps its contact, its differences continued along their last slope, while the flange
+    carries the rest as a spring of ``flange_stiffness``: a two-point contact, tread and
+    flange at once (Garg & Dukkipati 1984, ch. 4 and 8).
+
+    Parameters
+    ----------
+    wheel : raildyn.contact.profiles.WheelProfile
+    rail : raildyn.contact.profiles.RailProfile
+    friction : float
+        μ, > 0.
+    flange_stiffness : float
+        k_f, the lateral stiffness of the rail under flange contact, N/m (≥ 0).
+    gauge, tape_distance : float
+        m, as for :func:`raildyn.contact.profiles.contact_geometry`.
+
+    Returns
+    -------
+    WheelRailContact
+
+    Raises
+    ------
+    ValueError
+        If no flange contact is found within 20 mm of the centre (a profile pair with no
+        flange, such as a cone).
+
+    Examples
+    --------
+    The S1002 wheel on UIC 60 rail inclined at 1:40 flanges 6.5 to 6.75 mm off centre:
+
+    >>> from raildyn.contact.profiles import s1002_wheel, uic60_rail
+    >>> contact = profile_contact(s1002_wheel(), uic60_rail(1 / 40))
+    >>> round(1e3 * contact.flange_clearance, 2)
+    6.5
+    """
+    from raildyn.contact.profiles import contact_geometry
+
+    y = np.arange(0.0, 0.02 + _PROFILE_STEP / 2, _PROFILE_STEP)
+    left = contact_geometry(wheel, rail, y, gauge=gauge, tape_distance=tape_distance)
+    right = contact_geometry(wheel, rail, -y, gauge=gauge, tape_distance=tape_distance)
+    steep = (left.contact_angle[0] > _FLANGE_CONTACT_ANGLE) | (right.contact_angle[1] > _FLANGE_CONTACT_ANGLE)
+    if not steep.any():
+        raise ValueError(
+            f"wheel and rail must meet on a flange within {1e3 * y[-1]:g} mm of the centre, got no contact "
+            f"steeper than {np.degrees(_FLANGE_CONTACT_ANGLE):g}° ({wheel.name!r} on {rail.name!r})"
+        )
+    last = int(np.argmax(steep)) - 1  # the last shift on the treads
+    if last < 2:
+        raise ValueError("wheel and rail must run on their treads when centred, got flange contact at y = 0")
+    shifts = np.concatenate([-y[last:0:-1], y[: last + 1]])
+    dr = np.concatenate(
+        [right.rolling_radius_difference[last:0:-1], left.rolling_radius_difference[: last + 1]]
+    )
+    dd = np.concatenate(
+        [right.contact_angle_difference[last:0:-1], left.contact_angle_difference[: last + 1]]
+    )
+    return WheelRailContact(
+        friction=friction,
+        flange_clearance=float(y[last]),
+        flange_stiffness=flange_stiffness,
+        rolling_radius_difference=_Table(shifts, dr),
+        contact_angle_difference=_Table(shifts, dd),
+    )
+
+
+class _Table:
+    """f(y) by linear interpolation in a table, continued along the slope of its end intervals."""
+
+    def __init__(self, x: np.ndarray, f: np.ndarray):
+        self.x, self.f = x, f
+        self.slopes = ((f[1] - f[0]) / (x[1] - x[0]), (f[-1] - f[-2]) / (x[-1] - x[-2]))
+
+    def __call__(self, y):
+        y = np.asarray(y, dtype=float)
+        out = np.interp(y, self.x, self.f)
+        out = np.where(y < self.x[0], self.f[0] + self.slopes[0] * (y - self.x[0]), out)
+        return np.where(y > self.x[-1], self.f[-1] + self.slopes[1] * (y - self.x[-1]), out)
 
 
 def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):

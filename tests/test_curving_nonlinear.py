@@ -9,12 +9,13 @@ import numpy as np
 import pytest
 
 from raildyn.constants import GRAVITY
+from raildyn.contact.profiles import conical_wheel, contact_geometry, s1002_wheel, uic60_rail
 from raildyn.curving import curve_entry, curving_map, quasi_static_curving, steady_curving
 from raildyn.curving.climb import nadal_limit
 from raildyn.curving.geometry import Curve, balance_speed
 from raildyn.errors import SolverError
 from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Bogie, Car
-from raildyn.wheelset import WheelRailContact, Wheelset, contact_forces, wheel_forces
+from raildyn.wheelset import WheelRailContact, Wheelset, contact_forces, profile_contact, wheel_forces
 
 VEHICLES = [Car(), LOADED_FREIGHT_CAR, EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE]
 
@@ -164,6 +165,33 @@ def test_the_curve_model_on_tangent_track_is_the_tangent_model():
     on_curve = dataclasses.replace(model, curve=Curve(straight=1000.0), start=0.0)
     state = np.random.default_rng(1).normal(scale=1e-3, size=model.state_size)
     np.testing.assert_allclose(on_curve.rhs(0.5, state), model.rhs(0.5, state), rtol=1e-12, atol=1e-9)
+
+
+def test_the_profile_contact_holds_chapter_4s_geometry_and_finds_the_flange():
+    # The tables are contact_geometry's at their samples (rounding) and between them within the linear
+    # interpolation's error over 0.25 mm; the clearance is the last shift before a contact steeper than
+    # 40° (S1002 on UIC 60 at 1:40: the tread contact's angle is 0.12 rad at 6.5 mm, the flange's 1.22 rad
+    # at 7 mm). A cone has no flange and is refused.
+    wheel, rail = s1002_wheel(), uic60_rail(1 / 40)
+    contact = profile_contact(wheel, rail)
+    assert contact.flange_clearance == pytest.approx(6.5e-3)
+    on_grid = np.array([-6.5e-3, -2.0e-3, 0.0, 1.25e-3, 6.0e-3])
+    geometry = contact_geometry(wheel, rail, on_grid)
+    np.testing.assert_allclose(contact.rolling_radius_difference(on_grid), geometry.rolling_radius_difference,
+                               atol=1e-12)  # fmt: skip
+    np.testing.assert_allclose(contact.contact_angle_difference(on_grid), geometry.contact_angle_difference,
+                               atol=1e-12)  # fmt: skip
+    steeper = contact_geometry(wheel, rail, [7.0e-3]).contact_angle[0, 0]
+    assert steeper > np.radians(40.0)
+    # Beyond the clearance the tread's difference goes on along its last slope (it keeps growing).
+    assert contact.rolling_radius_difference(0.009) > contact.rolling_radius_difference(0.0065) > 0
+    with pytest.raises(ValueError, match="flange"):
+        profile_contact(conical_wheel(1 / 20), rail)
+    # The Manchester car on these profiles in 600 m: the leading wheelsets steer on the steep treads
+    # near their flanges, at an angle of attack above the geometric b/R.
+    state = quasi_static_curving(Car().nonlinear(contact=contact), balance_speed(600.0, 0.1), 600.0, 0.1)
+    assert np.all(state.angle_of_attack[[0, 2]] > 1.28 / 600.0)
+    assert np.all(np.abs(state.offset) < 7e-3)
 
 
 def test_wheel_forces_add_up_to_the_contact_forces():

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 from fuzzing import call, fuzz, on
 
+from raildyn.contact.profiles import s1002_wheel, uic60_rail
 from raildyn.curving import (
     CurveEntry,
     SteadyCurving,
@@ -136,6 +137,11 @@ ENTRIES = [
         "raildyn.wheelset.NonlinearLateral.relative_to_track",
         lambda: on(curved(), 1.0, np.full(12, 1e-3)),
         accepts={"t": "zero negative", "state": "zero negative"},
+    ),
+    fuzz(
+        "raildyn.wheelset.profile_contact",
+        lambda: call(s1002_wheel(), uic60_rail(1 / 40), friction=0.3, flange_stiffness=1.0e7),
+        accepts={"flange_stiffness": "zero"},
     ),
     fuzz(
         "raildyn.wheelset.wheel_forces",
