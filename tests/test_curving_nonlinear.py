@@ -108,6 +108,18 @@ def test_the_map_holds_the_single_points_and_the_forces_vanish():
     assert artists["contours"] is not None
 
 
+def test_a_start_near_the_answer_gives_the_same_answer():
+    # A widget re-solves from the last equilibrium: the same point to the search's tolerance.
+    model = Car().nonlinear()
+    cold = quasi_static_curving(model, 25.0, 600.0, 0.1, flange_angle=np.radians(65.0))
+    near = quasi_static_curving(model, 26.0, 620.0, 0.1)
+    warm = quasi_static_curving(
+        model, 25.0, 600.0, 0.1, flange_angle=np.radians(65.0), start=near.displacement
+    )
+    np.testing.assert_allclose(warm.displacement, cold.displacement, atol=1e-9)
+    np.testing.assert_allclose(warm.derailment_quotient, cold.derailment_quotient, atol=1e-6)
+
+
 def test_a_fast_car_in_a_gentle_curve_is_found_by_the_homotopy():
     # At 140 km/h in 1000 m with no cant (a_q = 1.5 m/s²) Newton from the linear state stalls at the
     # flange's edge and the neighbours' continuation has no neighbour; raising the curve's load from

@@ -144,7 +144,10 @@ def _newton(model, q, V, kappa, a_q) -> tuple[np.ndarray, np.ndarray]:
             shifted[i] += h
             J[:, :, i] = ((model.arc_forces(shifted, V, kappa, a_q) - r) / h).T
         with np.errstate(all="ignore"):
-            step = np.linalg.solve(J, -r.T[:, :, None])[:, :, 0].T
+            try:
+                step = np.linalg.solve(J, -r.T[:, :, None])[:, :, 0].T
+            except np.linalg.LinAlgError:  # a singular Jacobian somewhere: the other searches take over
+                break
         step[:, ~np.all(np.isfinite(step), axis=0)] = 0.0
         # Halve each column's step until the sum of its squared residuals falls (at most twelve times).
         merit = (r * r).sum(axis=0)
@@ -210,17 +213,18 @@ def _linear_starts(system, V: np.ndarray, R: np.ndarray, D: float) -> np.ndarray
     return np.outer(u, 1.0 / R) + np.outer(w, a_q)
 
 
-def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float) -> np.ndarray:
+def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float, start=None) -> np.ndarray:
     """The equilibria (n, P) at the points (V, R) of a cant D.
 
-    Newton on all the points from their linear states; then, a few times over, on the points it left,
-    each from the equilibrium of its nearest solved neighbour in (1/R, a_q) (a continuation: the flange
-    and the saturation that stall Newton from far away are crossed in small steps); then each point
-    still left alone, by :func:`_homotopy` and failing that :func:`_rescue`.
+    Newton on all the points from ``start`` (n, P) if given, else from their linear states; then, a
+    few times over, on the points it left, each from the equilibrium of its nearest solved neighbour
+    in (1/R, a_q) (a continuation: the flange and the saturation that stall Newton from far away are
+    crossed in small steps); then each point still left alone, by :func:`_homotopy` and failing that
+    :func:`_rescue`.
     """
     kappa, a_q = 1.0 / R, unbalanced_acceleration(V, R, D)
     q0 = _linear_starts(model.system, V, R, D)
-    q, done = _newton(model, q0, V, kappa, a_q)
+    q, done = _newton(model, q0 if start is None else start, V, kappa, a_q)
     where = np.stack([kappa / np.ptp(kappa) if np.ptp(kappa) else kappa, a_q / (np.ptp(a_q) or 1.0)])
     for _ in range(_CONTINUATIONS):
         left = np.flatnonzero(~done)
@@ -314,7 +318,7 @@ def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_ang
 
 
 def quasi_static_curving(
-    model, speed, radius, cant=0.0, *, cg_height=1.8, flange_angle=_FLANGE_ANGLE
+    model, speed, radius, cant=0.0, *, cg_height=1.8, flange_angle=_FLANGE_ANGLE, start=None
 ) -> QuasiStaticCurving:
     """The equilibrium of a nonlinear lateral model in a curve to the left, flanges included.
 
@@ -337,6 +341,10 @@ def quasi_static_curving(
         δ_f, the flange's contact angle, rad, in (0, π/2): the flange's normal force, whose
         lateral part the flange spring gives, bears F/tan δ_f of the wheel's load (so that
         the tread bears the rest). Default 70°, about the flange angle of the S1002 wheel.
+    start : array_like, (n,), optional
+        Where Newton's method starts, m and rad (each within ±1): the ``displacement`` of a nearby
+        equilibrium, so that a widget moving one control re-solves in a step or two.
+        None: the linear steady state.
 
     Returns
     -------
@@ -363,7 +371,11 @@ def quasi_static_curving(
     _checks.scalar("speed", speed)
     _checks.scalar("radius", radius)
     V, R, D, h, tan_flange = _options("speed", "radius", speed, radius, cant, cg_height, flange_angle)
-    q = _solve(model, V, R, D)
+    if start is not None:
+        start = _checks.array("start", start, shape=(model.system.size,))[:, None]
+        if np.abs(start).max() > 1.0:
+            raise ValueError(f"start must be a displacement within ±1 m (rad), got {np.abs(start).max()!r}")
+    q = _solve(model, V, R, D, start)
     out = _wheels(model, q, float(V[0]), R, D, h, tan_flange)
     system = model.system
     return QuasiStaticCurving(
