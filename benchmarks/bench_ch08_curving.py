@@ -1,5 +1,6 @@
 """Chapter 8: a quasi-static curving map of the nonlinear bogie, 40 radii × 30 speeds, raildyn against a
-per-point ``scipy.optimize.fsolve`` loop started cold.
+per-point ``scipy.optimize.fsolve`` loop started cold; and the chapter's widgets, each update against a
+new figure per change (``benchmarks.common.widget_case``).
 
 raildyn (:func:`raildyn.curving.curving_map`) solves all 1200 points together: Newton's method on the
 batch, the forces of every point in one vectorised evaluation, started from the linear steady state
@@ -15,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import fsolve
 
-from benchmarks.common import Case, timed
+from benchmarks.common import Case, timed, widget_case
 from raildyn.curving import curving_map
 from raildyn.curving.geometry import unbalanced_acceleration
 from raildyn.vehicles import Bogie
@@ -40,6 +41,15 @@ def _cold_loop(model) -> tuple[np.ndarray, np.ndarray]:
 
 
 def cases(repeats: int):
+    from raildyn.widgets import chapter08
+
+    return [_map_case(repeats)] + [
+        widget_case(label, recipe, control, values, repeats, goal="median ≤ 50 ms")
+        for label, recipe, control, values in chapter08.BENCH_MOVES
+    ]
+
+
+def _map_case(repeats: int) -> Case:
     model = Bogie().nonlinear()
     ours = curving_map(model, SPEEDS, RADII, CANT)
     theirs, ok = _cold_loop(model)
@@ -55,12 +65,10 @@ def cases(repeats: int):
         raise AssertionError(f"curving maps disagree by {gap:.3g} where fsolve converged")
     fast = timed(lambda i: curving_map(model, SPEEDS, RADII, CANT), repeats)
     slow = timed(lambda i: _cold_loop(model), max(1, repeats // 5))
-    return [
-        Case(
-            f"quasi-static curving map of the bogie, 40 radii × 30 speeds ({ok.sum()} of 1200 checked)",
-            fast,
-            slow,
-            "≥ 20× faster at the same answer (1e-8 m, rad)",
-            "fsolve per point from q = 0",
-        )
-    ]
+    return Case(
+        f"quasi-static curving map of the bogie, 40 radii × 30 speeds ({ok.sum()} of 1200 checked)",
+        fast,
+        slow,
+        "≥ 20× faster at the same answer (1e-8 m, rad)",
+        "fsolve per point from q = 0",
+    )

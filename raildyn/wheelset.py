@@ -1308,6 +1308,54 @@ class NonlinearLateral:
         force -= self._lateral_mass[column] * a_q
         return force
 
+    def arc_jacobian(self, q, speed, curvature, unbalanced_acceleration) -> np.ndarray:
+        """∂F/∂q of :meth:`arc_forces`, for a batch of states at once.
+
+        The suspension's part is −K_s exactly. Each wheelset's contact forces depend on its own
+        y and ψ only, so their 2 × 2 blocks come from forward differences of every wheelset at
+        once (two more evaluations of the contact, not n); each nonlinear element's from one more
+        evaluation of the laws, through its deflection row. The step, 1e-7 m (rad), is well
+        above rounding and below the scale of the flange's and the saturation's bends.
+
+        Parameters
+        ----------
+        q, speed, curvature, unbalanced_acceleration
+            As for :meth:`arc_forces`.
+
+        Returns
+        -------
+        ndarray, (n, n) or (k, n, n)
+            N/m, N, N·m/rad … : row i, column j is ∂F_i/∂q_j; one matrix per column of ``q``.
+        """
+        self.arc_forces(q, speed, curvature, unbalanced_acceleration)  # the checks, and a finite answer
+        q = np.asarray(q, dtype=float)
+        V, kappa = np.asarray(speed, dtype=float), np.asarray(curvature, dtype=float)
+        column = (slice(None),) + (None,) * (q.ndim - 1)
+        n, h = self.system.size, 1.0e-7
+        J = np.broadcast_to(-self._K_suspension, (*q.shape[1:], n, n)).copy()
+        for ws, iy, ipsi, x in self._groups:
+            y = q[iy] - (0.5 * x * x)[column] * kappa
+            psi = q[ipsi] - x[column] * kappa
+            rate = np.zeros_like(y) + V * kappa
+
+            def forces(dy, dpsi, ws=ws, y=y, psi=psi, rate=rate):
+                return _contact_forces(ws, self.contact, y + dy, psi + dpsi, 0.0 * y, rate, V)
+
+            fy, mz = forces(0.0, 0.0)
+            for j, shifted in ((iy, forces(h, 0.0)), (ipsi, forces(0.0, h))):
+                for i, base, moved in ((iy, fy, shifted[0]), (ipsi, mz, shifted[1])):
+                    # one entry per wheelset: its own rows and columns
+                    slope = np.moveaxis(np.asarray((moved - base) / h), 0, -1)
+                    J[..., i, j] += slope
+        if self._laws:
+            d = self._G @ q
+            rest = np.zeros_like(d[0])
+            slope = np.array(
+                [(law(d[i] + h, rest) - law(d[i], rest)) / h for i, law in enumerate(self._laws)]
+            )
+            J -= np.einsum("ei,e...,ej->...ij", self._G, slope, self._G)
+        return J
+
     def _add_curved_contact(self, q, qdot, V, kappa, track, force) -> None:
         """Add the wheel–rail forces in the axes that follow a curve to ``force``: each wheelset at y − y_t
         with y_t = ``track``(x), the yaw ψ − x κ of its path and the yaw rate ψ̇ + V κ."""

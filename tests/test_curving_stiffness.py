@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import sympy as sp  # solves the equilibrium symbolically (requirements.txt: the derivations' tool)
 from matplotlib.figure import Figure
 
 from raildyn.curving import steady_curving
@@ -20,9 +21,6 @@ from raildyn.curving.stiffness import (
 from raildyn.stability import critical_speed
 from raildyn.vehicles import Bogie, Car
 from raildyn.wheelset import Wheelset, pure_rolling_offset
-
-# sympy solves the equilibrium symbolically (a test dependency of the derivations, see DESIGN.md).
-sp = pytest.importorskip("sympy")
 
 # No spin, no gravitational stiffness: the assumptions of the closed form (Wickens 2003, ch. 7).
 _PLAIN = dict(f23=0.0, f33=0.0, contact_angle=0.0, contact_angle_parameter=0.0)

@@ -67,6 +67,7 @@ MOVES = {
     chapter08.curving_plan: dict(radius=900.0, speed_kmh=100.0, cant_mm=50.0),
     chapter08.nadal_chart: dict(flange_angle=65.0, friction=0.2, radius=500.0, speed_kmh=90.0),
     chapter08.curve_entry_speed: dict(speed_kmh=120.0, quantity="offset"),
+    chapter08.stiffness_tradeoff: dict(conicity=0.3, radius=900.0),
     chapter09.string_lining: dict(radius=400.0, force_kn=-600.0),
     chapter09.braking_run_widget: dict(slack_mm=50.0, signal_speed=150.0, speed_kmh=40.0, cars=20),
 }

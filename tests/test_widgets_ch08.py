@@ -49,10 +49,12 @@ def test_curving_plan_shows_the_cars_quasi_static_equilibrium():
     assert [line for line in ax.lines if line.get_marker() == "o"] == axles
     assert all(not np.array_equal(b, line.get_xydata()) for b, line in zip(before, axles, strict=True))
     a, scale = 0.75, 50.0  # the plot's half gauge and the widget's exaggeration
+    # The widget solves from its last equilibrium, this test from the linear state: the two meet within
+    # the search's tolerance (forces to 1e-9 of the weight, about 1e-9 m), so rel 1e-6 on the drawing.
     for line, x, y, alpha in zip(axles, state.positions, state.offset, state.angle_of_attack, strict=True):
         dx = a * np.sin(scale * alpha)
-        np.testing.assert_allclose(line.get_xdata(), [x - dx, x + dx], rtol=1e-12)
-        np.testing.assert_allclose(line.get_ydata(), [-scale * y + a, -scale * y - a], rtol=1e-12)
+        np.testing.assert_allclose(line.get_xdata(), [x - dx, x + dx], rtol=1e-6)
+        np.testing.assert_allclose(line.get_ydata(), [-scale * y + a, -scale * y - a], rtol=1e-6)
     colours = [line.get_color() for line in axles]
     assert colours == [chapter08._FLANGING if f else chapter08._ROLLING for f in state.flange_contact]
     labels = [t.get_text() for t in ax.texts]
@@ -63,7 +65,7 @@ def test_curving_plan_shows_the_cars_quasi_static_equilibrium():
 
 
 def test_curving_plan_gives_the_published_numbers_at_the_balance_speed():
-    # /tmp/curving_api.md and quasi_static_curving's example: 600 m, 100 mm cant, 71.3 km/h: the
+    # quasi_static_curving's example and the closing note of issue 17: 600 m, 100 mm cant, 71.3 km/h: the
     # leading wheelsets flange at 3.8 mrad, Y/Q 0.286. The widget starts at 71 km/h (0.3 km/h below);
     # the angle moves by less than 0.05 mrad and Y/Q by less than 0.005 over that change.
     container, _ = chapter08.curving_plan()
@@ -101,8 +103,9 @@ def test_nadal_chart_draws_the_limit_and_the_cars_quotient():
     assert at_angle.get_xdata()[0] == 65.0 and at_angle.get_ydata()[0] == pytest.approx(nadal, rel=1e-12)
     state = quasi_static_curving(Car().nonlinear(), 80.0 / 3.6, 400.0, 0.1, flange_angle=np.radians(65.0))
     quotient = state.derailment_quotient[0, 1]
-    assert car.get_xdata()[0] == 65.0 and car.get_ydata()[0] == pytest.approx(quotient, rel=1e-12)
-    np.testing.assert_allclose(level.get_ydata(), [quotient, quotient], rtol=1e-12)
+    # the widget's equilibrium from its last one, this from the linear state: within the search's tolerance
+    assert car.get_xdata()[0] == 65.0 and car.get_ydata()[0] == pytest.approx(quotient, rel=1e-6)
+    np.testing.assert_allclose(level.get_ydata(), [quotient, quotient], rtol=1e-6)
     axle = climb.wheel_climb(state.wheel_lateral[0], state.wheel_vertical[0], np.radians(65.0), 0.2)
     status = _status(container)
     assert f"Y/Q = {quotient:.3f}, Nadal's limit at δ = 65.0°, μ = 0.20: {nadal:.3f}" in status

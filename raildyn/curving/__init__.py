@@ -8,20 +8,37 @@
   :func:`~raildyn.curving.quasi_static.curving_map`);
 * :mod:`raildyn.curving.entry` — a nonlinear run from straight track into a curve
   (:func:`~raildyn.curving.entry.curve_entry`);
+* :mod:`raildyn.curving.stiffness` — self-steering in bending and shear stiffness, and the
+  trade-off between stability and curving
+  (:func:`~raildyn.curving.stiffness.stability_and_curving`);
 * :mod:`raildyn.curving.climb` — wheel climb: Nadal's limit and Weinstock's axle sum.
 """
 
 from raildyn.curving.entry import CurveEntry, curve_entry
 from raildyn.curving.quasi_static import CurvingMap, QuasiStaticCurving, curving_map, quasi_static_curving
 from raildyn.curving.steady import SteadyCurving, steady_curving
+from raildyn.curving.stiffness import (
+    BendingShear,
+    SelfSteeringCurving,
+    StabilityCurving,
+    bending_shear_stiffness,
+    self_steering_curving,
+    stability_and_curving,
+)
 
 __all__ = [
+    "BendingShear",
     "CurveEntry",
     "CurvingMap",
     "QuasiStaticCurving",
+    "SelfSteeringCurving",
+    "StabilityCurving",
     "SteadyCurving",
     "curve_entry",
+    "bending_shear_stiffness",
     "curving_map",
     "quasi_static_curving",
+    "self_steering_curving",
+    "stability_and_curving",
     "steady_curving",
 ]

@@ -1,9 +1,11 @@
 """Wheel climb (book chapter 8): Nadal's limit and Weinstock's axle-sum criterion.
 
 A flanging wheel pressed against the rail with a lateral force Y (L) under a vertical
-load Q (V) climbs when the forces at the flange contact, inclined at the flange angle δ,
-overcome friction acting down the flange. At the limit of sliding (friction μ, saturated
-and acting against climb) the quotient is Nadal's (1908):
+load Q (V) is held at its flange contact, inclined at the flange angle δ, by the normal
+force N and the friction T. Rolling with a positive angle of attack, the flange slides
+down the rail's gauge face, so the friction on the wheel acts up the flange face:
+Y = N sin δ − T cos δ and Q = N cos δ + T sin δ. With the friction saturated (T = μN)
+the largest quotient the contact can hold is Nadal's (1908); above it the wheel climbs:
 
     L/V = (tan δ − μ) / (1 + μ tan δ),
 

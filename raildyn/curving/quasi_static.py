@@ -7,13 +7,14 @@ and in :mod:`raildyn.curving.steady`). At rest in those axes its velocities vani
 equilibrium is the zero of its forces (:meth:`~raildyn.wheelset.NonlinearLateral.arc_forces`).
 
 The search: Newton's method on every point at once (the forces of a batch of states are one
-vectorised evaluation; the Jacobian by forward differences, n + 1 evaluations; steps halved
-until the residual falls), started from the linear steady state of
-:func:`raildyn.curving.steady_curving`. Points where the flange contact or the creep saturation
-stalls it are continued from their solved neighbours, then by a homotopy that raises the curve's
-load from nothing in adaptive steps; a point left after that is taken up alone by Powell's hybrid method,
-Levenberg–Marquardt, Powell from the centred state, and finally Powell after a short run of the
-dynamics (the creep damps it towards the equilibrium), before a :class:`~raildyn.errors.SolverError`.
+vectorised evaluation, and so is their Jacobian,
+:meth:`~raildyn.wheelset.NonlinearLateral.arc_jacobian`; steps halved until the residual
+falls), started from the linear steady state of :func:`raildyn.curving.steady_curving`. Points
+where the flange contact or the creep saturation stalls it are continued from their solved
+neighbours, then by a homotopy that raises the curve's load from nothing in adaptive steps; a
+point left after that is taken up alone by Powell's hybrid method, Levenberg–Marquardt, Powell
+from the centred state, and finally Powell after a short run of the dynamics (the creep damps
+it towards the equilibrium), before a :class:`~raildyn.errors.SolverError`.
 
 Friction elements (:class:`~raildyn.wheelset.SuspensionElement` laws that depend only on the
 rate) carry no force at rest, so the equilibrium found is the one friction does not hold
@@ -24,6 +25,7 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -132,17 +134,12 @@ def _newton(model, q, V, kappa, a_q) -> tuple[np.ndarray, np.ndarray]:
     n, P = q.shape
     q = q.copy()
     r = model.arc_forces(q, V, kappa, a_q)
-    h = 1.0e-7  # m or rad: a forward difference well above rounding (q ~ 1e-2) and below any kink's scale
     for _ in range(_NEWTON_STEPS):
         error = np.abs(r).max(axis=0)
         active = error > tolerance
         if not active.any():
             break
-        J = np.empty((P, n, n))
-        for i in range(n):
-            shifted = q.copy()
-            shifted[i] += h
-            J[:, :, i] = ((model.arc_forces(shifted, V, kappa, a_q) - r) / h).T
+        J = model.arc_jacobian(q, V, kappa, a_q)
         with np.errstate(all="ignore"):
             try:
                 step = np.linalg.solve(J, -r.T[:, :, None])[:, :, 0].T
@@ -199,8 +196,9 @@ def _rescue(model: NonlinearLateral, start: np.ndarray, V: float, R: float, D: f
     )
 
 
-def _linear_starts(system, V: np.ndarray, R: np.ndarray, D: float) -> np.ndarray:
-    """The linear steady states (n, P) at each (V, R), from two solves: the linear answer is u κ + w a_q.
+@lru_cache(maxsize=32)
+def _linear_basis(system) -> tuple[np.ndarray, np.ndarray]:
+    """u and w with the linear steady state u κ + w a_q, from two solves (cached for the system).
 
     The curve's loads on the wheelsets are proportional to κ = 1/R whatever the speed, and the cant
     deficiency's to a_q, so one solve at the balance speed (a_q = 0) gives u and one with a_q ≠ 0 gives w.
@@ -208,9 +206,13 @@ def _linear_starts(system, V: np.ndarray, R: np.ndarray, D: float) -> np.ndarray
     R0 = 1000.0
     u = R0 * steady_curving(system, balance_speed(R0, 0.1), R0, 0.1).displacement
     fast = steady_curving(system, 30.0, R0, 0.0)
-    w = (fast.displacement - u / R0) / fast.unbalanced_acceleration
-    a_q = unbalanced_acceleration(V, R, D)
-    return np.outer(u, 1.0 / R) + np.outer(w, a_q)
+    return u, (fast.displacement - u / R0) / fast.unbalanced_acceleration
+
+
+def _linear_starts(system, V: np.ndarray, R: np.ndarray, D: float) -> np.ndarray:
+    """The linear steady states (n, P) at each (V, R) of a cant D."""
+    u, w = _linear_basis(system)
+    return np.outer(u, 1.0 / R) + np.outer(w, unbalanced_acceleration(V, R, D))
 
 
 def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float, start=None) -> np.ndarray:
@@ -218,9 +220,9 @@ def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float, star
 
     Newton on all the points from ``start`` (n, P) if given, else from their linear states; then, a
     few times over, on the points it left, each from the equilibrium of its nearest solved neighbour
-    in (1/R, a_q) (a continuation: the flange and the saturation that stall Newton from far away are
-    crossed in small steps); then each point still left alone, by :func:`_homotopy` and failing that
-    :func:`_rescue`.
+    in (1/R, a_q) moved by the linear model's change between the two (a continuation with a linear
+    predictor: the flange and the saturation that stall Newton from far away are crossed in small
+    steps); then each point still left alone, by :func:`_homotopy` and failing that :func:`_rescue`.
     """
     kappa, a_q = 1.0 / R, unbalanced_acceleration(V, R, D)
     q0 = _linear_starts(model.system, V, R, D)
@@ -232,7 +234,9 @@ def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float, star
             break
         solved = np.flatnonzero(done)
         gap = ((where[:, left, None] - where[:, None, solved]) ** 2).sum(axis=0)
-        start = q[:, solved[gap.argmin(axis=1)]]
+        nearest = solved[gap.argmin(axis=1)]
+        # the neighbour's equilibrium moved by the linear model's change between the two points
+        start = q[:, nearest] + q0[:, left] - q0[:, nearest]
         q[:, left], done[left] = _newton(model, start, V[left], kappa[left], a_q[left])
     for p in np.flatnonzero(~done):
         found = _homotopy(model, float(V[p]), float(kappa[p]), float(a_q[p]))
@@ -341,10 +345,10 @@ def quasi_static_curving(
         δ_f, the flange's contact angle, rad, in (0, π/2): the flange's normal force, whose
         lateral part the flange spring gives, bears F/tan δ_f of the wheel's load (so that
         the tread bears the rest). Default 70°, about the flange angle of the S1002 wheel.
-    start : array_like, (n,), optional
-        Where Newton's method starts, m and rad (each within ±1): the ``displacement`` of a nearby
-        equilibrium, so that a widget moving one control re-solves in a step or two.
-        None: the linear steady state.
+    start : QuasiStaticCurving, optional
+        A nearby equilibrium of the same model: Newton starts from it, moved by the linear
+        model's change from its point to this one, so that a widget moving one control
+        re-solves in a step or two. None: from the linear steady state.
 
     Returns
     -------
@@ -372,9 +376,14 @@ def quasi_static_curving(
     _checks.scalar("radius", radius)
     V, R, D, h, tan_flange = _options("speed", "radius", speed, radius, cant, cg_height, flange_angle)
     if start is not None:
-        start = _checks.array("start", start, shape=(model.system.size,))[:, None]
-        if np.abs(start).max() > 1.0:
-            raise ValueError(f"start must be a displacement within ±1 m (rad), got {np.abs(start).max()!r}")
+        _checks.instance("start", start, QuasiStaticCurving)
+        if start.labels != model.system.labels:
+            raise ValueError(
+                f"start must be an equilibrium of this model {model.system.labels}, got {start.labels}"
+            )
+        here = _linear_starts(model.system, V, R, D)
+        there = _linear_starts(model.system, np.array([start.speed]), np.array([start.radius]), start.cant)
+        start = start.displacement[:, None] + here - there
     q = _solve(model, V, R, D, start)
     out = _wheels(model, q, float(V[0]), R, D, h, tan_flange)
     system = model.system

@@ -31,13 +31,29 @@ _FLANGING = plots.COLORS[1]  # an axle on its flange
 _ROLLING = plots.COLORS[0]  # an axle on its treads
 
 
-@lru_cache(maxsize=512)
-def _car_equilibrium(radius: float, speed: float, cant: float, flange_angle_deg: float = 70.0):
-    """The car's quasi-static equilibrium (m, m/s, m, deg), or the SolverError that says why there is none."""
-    try:
-        return quasi_static_curving(_CAR, speed, radius, cant, flange_angle=np.radians(flange_angle_deg))
-    except SolverError as err:
-        return err
+class _CarEquilibria:
+    """The car's quasi-static equilibria for one widget: each (R, V, D, flange angle) solved once, from
+    the last one solved (a slider moves a little, so Newton meets the new point in a step or two).
+
+    Calling it gives the equilibrium (m, m/s, m, deg) or the SolverError that says why there is none.
+    """
+
+    def __init__(self):
+        self.solved: dict = {}
+        self.last = None
+
+    def __call__(self, radius: float, speed: float, cant: float, flange_angle_deg: float = 70.0):
+        key = (radius, speed, cant, flange_angle_deg)
+        if key not in self.solved:
+            try:
+                state = quasi_static_curving(
+                    _CAR, speed, radius, cant, flange_angle=np.radians(flange_angle_deg), start=self.last
+                )
+                self.last = state
+            except SolverError as err:
+                state = err
+            self.solved[key] = state
+        return self.solved[key]
 
 
 # ---------------------------------------------------------------------------
@@ -54,7 +70,8 @@ def _plan_controls():
 
 def _plan_setup(live, status):
     (ax,) = live.axes[0]
-    state = _car_equilibrium(600.0, 71.0 / 3.6, 0.1)
+    equilibrium = _CarEquilibria()
+    state = equilibrium(600.0, 71.0 / 3.6, 0.1)
     chart = state.plot(ax, exaggeration=_EXAGGERATION)  # drawn once, then moved in place
     ax.set_title(
         f"Manchester car in quasi-static equilibrium, offsets and yaw × {_EXAGGERATION:g}; "
@@ -75,7 +92,7 @@ def _plan_setup(live, status):
             f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h, D = {1e3 * D:.0f} mm: "
             f"cant deficiency {deficiency:.0f} mm"
         )
-        state = _car_equilibrium(R, V, D)
+        state = equilibrium(R, V, D)
         if isinstance(state, SolverError):
             for artist in (*chart["axles"], *chart["labels"][1:]):
                 artist.set_visible(False)
@@ -153,6 +170,7 @@ def _nadal_controls():
 
 def _nadal_setup(live, status):
     (ax,) = live.axes[0]
+    equilibrium = _CarEquilibria()
     references = climb.plot_nadal_limit(
         ax, friction=_REFERENCE_FRICTIONS, flange_angle=np.radians(_FLANGE_ANGLES)
     )
@@ -184,7 +202,7 @@ def _nadal_setup(live, status):
             f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h, {1e3 * _NADAL_CANT:.0f} mm cant "
             f"(deficiency {deficiency:.0f} mm)"
         )
-        state = _car_equilibrium(R, V, _NADAL_CANT, delta)
+        state = equilibrium(R, V, _NADAL_CANT, delta)
         if isinstance(state, SolverError):
             car.set_data([], [])
             level.set_data([], [])
@@ -472,6 +490,7 @@ BENCH_MOVES = [
     ("ch08 curving_plan V", CURVING_PLAN, "speed_kmh", [40.0, 60.0, 80.0, 100.0, 120.0, 71.0]),
     ("ch08 nadal_chart μ", NADAL_CHART, "friction", [0.1, 0.2, 0.3, 0.5, 0.6, 0.36]),
     ("ch08 nadal_chart R", NADAL_CHART, "radius", [200.0, 400.0, 600.0, 1000.0, 2000.0, 300.0]),
+    ("ch08 nadal_chart δ", NADAL_CHART, "flange_angle", [60.0, 62.5, 65.0, 67.5, 72.5, 75.0]),
     ("ch08 curve_entry_speed V", CURVE_ENTRY_SPEED, "speed_kmh", [*ENTRY_SPEEDS, 80.0]),
     ("ch08 stiffness_tradeoff λ", STIFFNESS_TRADEOFF, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
     ("ch08 stiffness_tradeoff R", STIFFNESS_TRADEOFF, "radius", [300.0, 450.0, 800.0, 1500.0, 2000.0, 600.0]),

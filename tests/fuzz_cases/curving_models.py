@@ -12,6 +12,7 @@ from raildyn.curving import (
     SteadyCurving,
     curve_entry,
     curving_map,
+    quasi_static_curving,
     steady_curving,
 )
 from raildyn.curving.geometry import Curve
@@ -35,6 +36,10 @@ def curved():
 
 def entry() -> CurveEntry:
     return curve_entry(Bogie().nonlinear(), 25.0, SHORT)
+
+
+def nearby():
+    return quasi_static_curving(Bogie().nonlinear(), 20.0, 700.0, 0.1)
 
 
 def grid():
@@ -63,8 +68,8 @@ ENTRIES = [
     fuzz("raildyn.curving.SteadyCurving.plot", lambda: on(state()), accepts={"ax": "none"}),
     fuzz(
         "raildyn.curving.quasi_static_curving",
-        lambda: call(Bogie().nonlinear(), 25.0, 600.0, 0.1, start=np.full(6, 1e-3)),
-        accepts={"cant": "zero", "start": "zero negative none"},  # None: from the linear steady state
+        lambda: call(Bogie().nonlinear(), 25.0, 600.0, 0.1, start=nearby()),
+        accepts={"cant": "zero", "start": "none"},  # None: from the linear steady state
         limit=20.0,  # a stalled search tries four methods and a short run before it gives up
     ),
     fuzz(
@@ -127,6 +132,15 @@ ENTRIES = [
         "raildyn.wheelset.NonlinearLateral.arc_forces",
         lambda: on(Bogie().nonlinear(), np.full(6, 1e-3), 25.0, 1.0 / 600.0, 0.5),
         # a state of either sign; a tangent track (κ = 0) and any unbalanced acceleration
+        accepts={
+            "q": "zero negative",
+            "curvature": "zero negative",
+            "unbalanced_acceleration": "zero negative",
+        },
+    ),
+    fuzz(
+        "raildyn.wheelset.NonlinearLateral.arc_jacobian",
+        lambda: on(Bogie().nonlinear(), np.full(6, 1e-3), 25.0, 1.0 / 600.0, 0.5),
         accepts={
             "q": "zero negative",
             "curvature": "zero negative",
