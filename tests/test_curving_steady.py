@@ -143,6 +143,7 @@ def test_the_plot_draws_and_updates_the_wheelsets():
     before = artists["axles"][0].get_xydata().copy()
     steady_curving(Car(), 30.0, 600.0).plot(artists=artists)
     assert not np.allclose(artists["axles"][0].get_xydata(), before)
+    assert artists["title"].get_text().startswith("R = 600 m")
 
 
 def test_bad_input_is_refused_by_name():

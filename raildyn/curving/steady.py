@@ -120,12 +120,13 @@ class SteadyCurving:
         Returns
         -------
         dict
-            ``rails``, ``axles`` (one line per wheelset) and ``labels`` (one text per wheelset).
+            ``rails``, ``axles`` (one line per wheelset), ``labels`` (one text per wheelset) and
+            ``title``.
         """
-        from raildyn.plots import axes_or_new
+        from raildyn.plots import COLORS, axes_or_new
 
         scale = _checks.positive("exaggeration", exaggeration)
-        a = 0.75  # m, half the distance between the rails' contact lines, as raildyn's Wheelset
+        a = 0.75  # m: the rails drawn at ±a, the standard-gauge half-spacing of raildyn's Wheelset
         ends = []
         for x, y, alpha in zip(self.positions, self.offset, self.angle_of_attack, strict=True):
             # the axle across the track, turned by the exaggerated angle of attack: its outer (right)
@@ -136,6 +137,7 @@ class SteadyCurving:
             f"{1e3 * al:+.2f} mrad\n{1e3 * y:+.1f} mm"
             for y, al in zip(self.offset, self.angle_of_attack, strict=True)
         ]
+        title = f"R = {self.radius:g} m, V = {3.6 * self.speed:.0f} km/h; inner rail at the top"
         if artists is not None:
             _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
             if len(artists.get("axles", ())) != len(ends):
@@ -146,11 +148,13 @@ class SteadyCurving:
             for text, s, (xs, _) in zip(artists["labels"], texts, ends, strict=True):
                 text.set_text(s)
                 text.set_x(np.mean(xs))
+            if "title" in artists:  # a caller that titles the axes itself leaves it out
+                artists["title"].set_text(title)
             return artists
         ax = axes_or_new(ax)
         span = np.array([self.positions.min() - 2.0, self.positions.max() + 2.0])
         rails = [ax.plot(span, [s * a, s * a], color="0.5", lw=2)[0] for s in (1, -1)]
-        axles = [ax.plot(xs, ys, color="C0", lw=3, marker="o")[0] for xs, ys in ends]
+        axles = [ax.plot(xs, ys, color=COLORS[0], lw=3, marker="o")[0] for xs, ys in ends]
         labels = [
             ax.text(np.mean(xs), 1.2 * a, s, ha="center", va="bottom", fontsize=8)
             for (xs, _), s in zip(ends, texts, strict=True)
@@ -158,8 +162,7 @@ class SteadyCurving:
         ax.set_xlabel("distance ahead of the vehicle's centre (m)")
         ax.set_ylabel(f"lateral (m); offset and yaw × {scale:g}")
         ax.set_ylim(-2.2 * a, 2.2 * a)
-        ax.set_title(f"R = {self.radius:g} m, V = {3.6 * self.speed:.0f} km/h; inner rail at the top")
-        return {"rails": rails, "axles": axles, "labels": labels}
+        return {"rails": rails, "axles": axles, "labels": labels, "title": ax.set_title(title)}
 
 
 def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:

@@ -73,6 +73,7 @@ def _plan_setup(live, status):
     equilibrium = _CarEquilibria()
     state = equilibrium(600.0, 71.0 / 3.6, 0.1)
     chart = state.plot(ax, exaggeration=_EXAGGERATION)  # drawn once, then moved in place
+    del chart["title"]  # the widget's own title below stays
     ax.set_title(
         f"Manchester car in quasi-static equilibrium, offsets and yaw × {_EXAGGERATION:g}; "
         "inner rail at the top, running to the right",
