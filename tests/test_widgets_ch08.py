@@ -44,7 +44,9 @@ def test_curving_plan_shows_the_cars_quasi_static_equilibrium():
         zip(state.angle_of_attack, state.offset, state.flange_contact, strict=True)
     ):
         contact = "flange" if flange else "treads"
-        assert f"{k + 1}: α {1e3 * alpha:+.2f} mrad, y {1e3 * y:+.1f} mm, {contact}" in status
+        assert f"{k + 1}: α {1e3 * alpha:+.2f} mrad, y {1e3 * y:+.1f} mm, {contact}, creep Tx" in status
+        tx, ty = state.longitudinal_creep_force[k], state.lateral_creep_force[k]
+        assert f"Tx {1e-3 * tx:+.1f} kN, Ty {1e-3 * ty:+.1f} kN" in status
     # The axles are SteadyCurving.plot's, moved in place: the same artists, at the new state, red on a flange.
     assert [line for line in ax.lines if line.get_marker() == "o"] == axles
     assert all(not np.array_equal(b, line.get_xydata()) for b, line in zip(before, axles, strict=True))

@@ -107,15 +107,18 @@ def _plan_setup(live, status):
             label.set_visible(True)
             axle.set_color(_FLANGING if flanging else _ROLLING)
         quotient = state.derailment_quotient[0, 1]
+        forces = zip(state.longitudinal_creep_force, state.lateral_creep_force, strict=True)
         wheelsets = "; ".join(
-            f"{k + 1}: α {1e3 * a:+.2f} mrad, y {1e3 * y:+.1f} mm, {'flange' if f else 'treads'}"
-            for k, (a, y, f) in enumerate(
-                zip(state.angle_of_attack, state.offset, state.flange_contact, strict=True)
+            f"{k + 1}: α {1e3 * a:+.2f} mrad, y {1e3 * y:+.1f} mm, {'flange' if f else 'treads'}, "
+            f"creep Tx {1e-3 * tx:+.1f} kN, Ty {1e-3 * ty:+.1f} kN"
+            for k, (a, y, f, (tx, ty)) in enumerate(
+                zip(state.angle_of_attack, state.offset, state.flange_contact, forces, strict=True)
             )
         )
         status.value = (
             f"{head} (a_q = {state.unbalanced_acceleration:.2f} m/s²) · leading outer wheel "
-            f"Y/Q = {quotient:.3f} · wheelsets front to back: {wheelsets}"
+            f"Y/Q = {quotient:.3f} · wheelsets front to back (Tx: the outer wheel's longitudinal creep "
+            f"force, Ty: both wheels' lateral, outwards): {wheelsets}"
         )
 
     return redraw
