@@ -651,6 +651,11 @@ class WheelRailContact:
     contact_angle_difference : callable or None
         δ_L(y) − δ_R(y), rad, vectorised over y, within ±π/2 (each contact angle lies in
         [0, π/2)). None: the linear 2εy/a of the wheelset.
+    tread_angles : callable or None
+        [δ_L(y), δ_R(y)], the two tread contacts' angles, rad, vectorised: an array of shape
+        (2, *y.shape), each within ±π/2. They tilt each wheel's normal force in its lateral
+        force Y (:func:`raildyn.curving.quasi_static_curving`); the dynamics need only their
+        difference, ``contact_angle_difference``. None: δ₀ ± εy/a of the wheelset (a cone).
 
     Each callable is tried once, at y = −δ_f, 0 and δ_f, and what it returns checked.
     """
@@ -660,6 +665,7 @@ class WheelRailContact:
     flange_stiffness: float = 14.6e6
     rolling_radius_difference: Callable | None = None
     contact_angle_difference: Callable | None = None
+    tread_angles: Callable | None = None
 
     def __post_init__(self):
         positive("friction", self.friction)
@@ -674,6 +680,11 @@ class WheelRailContact:
                     raise ValueError(
                         f"{name} must return values within ±{bound:.4g}, returned {out} at y = {y} m"
                     )
+        if self.tread_angles is not None:
+            fn = _checks.function("tread_angles", self.tread_angles)
+            out = _checks.returned("tread_angles", fn(y), shape=(2, 3), at=f"y = {y} m")
+            if np.abs(out).max() > np.pi / 2:
+                raise ValueError(f"tread_angles must return angles within ±π/2, returned {out} at y = {y} m")
 
 
 _FLANGE_CONTACT_ANGLE = 0.7  # rad (40°): a contact steeper than this is on the flange, not the tread
@@ -689,7 +700,8 @@ def profile_contact(
     the wheelset's roll) is followed outwards from the centre in steps of 0.25 mm until a
     contact angle passes 40°: there the contact jumps from the tread to the flange, and that
     shift is the flangeway clearance δ_f. Inside it, the rolling-radius and contact-angle
-    differences Δr(y) and Δδ(y) are tabulated and interpolated linearly; beyond it the tread
+    differences Δr(y) and Δδ(y) and the two tread angles δ_L(y), δ_R(y) are tabulated and
+    interpolated linearly; beyond it the tread
     keeps its contact, its differences continued along their last slope, while the flange
     carries the rest as a spring of ``flange_stiffness``: a two-point contact, tread and
     flange at once (Garg & Dukkipati 1984, ch. 4 and 8).
@@ -739,6 +751,9 @@ def profile_contact(
     if last < 2:
         raise ValueError("wheel and rail must run on their treads when centred, got flange contact at y = 0")
     shifts = np.concatenate([-y[last:0:-1], y[: last + 1]])
+    angles = [
+        np.concatenate([right.contact_angle[k, last:0:-1], left.contact_angle[k, : last + 1]]) for k in (0, 1)
+    ]
     dr = np.concatenate(
         [right.rolling_radius_difference[last:0:-1], left.rolling_radius_difference[: last + 1]]
     )
@@ -751,7 +766,18 @@ def profile_contact(
         flange_stiffness=flange_stiffness,
         rolling_radius_difference=_Table(shifts, dr),
         contact_angle_difference=_Table(shifts, dd),
+        tread_angles=_Tables(_Table(shifts, angles[0]), _Table(shifts, angles[1])),
     )
+
+
+class _Tables:
+    """Two tables side by side: [f₀(y), f₁(y)], shape (2, *y.shape)."""
+
+    def __init__(self, *tables: _Table):
+        self.tables = tables
+
+    def __call__(self, y):
+        return np.stack([table(y) for table in self.tables])
 
 
 class _Table:

@@ -207,6 +207,7 @@ def test_the_profile_contact_holds_chapter_4s_geometry_and_finds_the_flange():
                                atol=1e-12)  # fmt: skip
     np.testing.assert_allclose(contact.contact_angle_difference(on_grid), geometry.contact_angle_difference,
                                atol=1e-12)  # fmt: skip
+    np.testing.assert_allclose(contact.tread_angles(on_grid), geometry.contact_angle, atol=1e-12)
     steeper = contact_geometry(wheel, rail, [7.0e-3]).contact_angle[0, 0]
     assert steeper > np.radians(40.0)
     # Beyond the clearance the tread's difference goes on along its last slope (it keeps growing).

@@ -291,13 +291,16 @@ def _wheels(
         out["wear"][j] = forces.wear_number.sum(axis=0)
         out["guiding"][j] = contact_forces(ws, model.contact, y[j], psi[j], 0.0, V / R, V)[0]
         # Q: each wheel's share of the axle load with the roll moment of m a_q at h; a flange bears
-        # F/tan δ_f of it, the tread the rest, tilted by its contact angle δ₀ ± εy/a towards the track's
-        # centre line (inner wheel: to the right, outer: to the left).
+        # F/tan δ_f of it, the tread the rest, tilted by its contact angle (the contact's tread_angles, or
+        # the cone's δ₀ ± εy/a) towards the track's centre line (inner wheel: to the right, outer: left).
         a, W = ws.half_gauge, ws.axle_load
         transfer = 0.5 * W * h / a * a_q / GRAVITY
         Q[j] = 0.5 * W - transfer, 0.5 * W + transfer
         tread = Q[j] - np.abs(forces.flange) / tan_flange
-        tilt = ws.contact_angle + np.array([[1.0], [-1.0]]) * ws.contact_angle_parameter * y[j] / a
+        if model.contact.tread_angles is not None:
+            tilt = model.contact.tread_angles(y[j])
+        else:  # the cone's
+            tilt = ws.contact_angle + np.array([[1.0], [-1.0]]) * ws.contact_angle_parameter * y[j] / a
         Y[j] = forces.lateral + forces.flange + np.array([[-1.0], [1.0]]) * tread * np.tan(tilt)
     if np.any(Q <= 0.0):
         raise SolverError(

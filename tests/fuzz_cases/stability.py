@@ -240,9 +240,17 @@ ENTRIES = [
     fuzz("raildyn.wheelset.wickens_critical_speed", lambda: call(SOFT)),
     fuzz(
         "raildyn.wheelset.WheelRailContact",
-        lambda: call(rolling_radius_difference=lambda y: 0.3 * y, contact_angle_difference=lambda y: 0.4 * y),
-        # −1 rad, what the changed callback returns, is a contact angle difference within ±π/2
-        accepts={"flange_stiffness": "zero", "contact_angle_difference": "returns-negative"},
+        lambda: call(
+            rolling_radius_difference=lambda y: 0.3 * y,
+            contact_angle_difference=lambda y: 0.4 * y,
+            tread_angles=lambda y: np.stack([0.05 + 0.2 * y, 0.05 - 0.2 * y]),
+        ),
+        # −1 rad, what the changed callback returns, is a contact angle (difference) within ±π/2
+        accepts={
+            "flange_stiffness": "zero",
+            "contact_angle_difference": "returns-negative",
+            "tread_angles": "returns-negative",
+        },
     ),
     fuzz(
         "raildyn.wheelset.contact_forces",
