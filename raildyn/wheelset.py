@@ -13,7 +13,7 @@ dynamics.
 * on a curve: the pure-rolling offset r₀a/(λR) of a free wheelset
   (:func:`pure_rolling_offset`) and the loads a curve of radius R puts on a
   wheelset through its creepages and gravitational stiffness (:func:`curve_loads`),
-  from which :func:`raildyn.curving.steady_curving` finds the steady state of any
+  from which :func:`raildyn.curving.steady.steady_curving` finds the steady state of any
   vehicle;
 * the nonlinear wheelset (:class:`WheelRailContact`, :class:`NonlinearWheelset`):
   a rolling-radius difference Δr(y), saturating creep forces and a flange
@@ -587,7 +587,7 @@ def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
     The second term holds the longitudinal creepage a/R of the outer rail's extra
     length and the spin 1/R (Garg & Dukkipati 1984, ch. 5 and 8; Wickens 2003, ch. 7).
     These loads are independent of the speed; the cant deficiency's force acts on
-    every mass and is added by :func:`raildyn.curving.steady_curving`.
+    every mass and is added by :func:`raildyn.curving.steady.steady_curving`.
 
     Parameters
     ----------
@@ -654,7 +654,7 @@ class WheelRailContact:
     tread_angles : callable or None
         [δ_L(y), δ_R(y)], the two tread contacts' angles, rad, vectorised: an array of shape
         (2, *y.shape), each within ±π/2. They tilt each wheel's normal force in its lateral
-        force Y (:func:`raildyn.curving.quasi_static_curving`); the dynamics need only their
+        force Y (:func:`raildyn.curving.quasi_static.quasi_static_curving`); the dynamics need only their
         difference, ``contact_angle_difference``. None: δ₀ ± εy/a of the wheelset (a cone).
 
     Each callable is tried once, at y = −δ_f, 0 and δ_f, and what it returns checked.
@@ -1086,7 +1086,7 @@ class NonlinearLateral:
     On a ``curve`` the coordinates are taken in axes that follow the vehicle: their origin
     runs along the track's centre line at V, at s_c = ``start`` + V t, turning with the
     track's tangent there at V κ(s_c) (the steady-curving axes of
-    :func:`raildyn.curving.steady_curving`, here with a curvature that varies). A wheelset
+    :func:`raildyn.curving.steady.steady_curving`, here with a curvature that varies). A wheelset
     x ahead of the origin meets the track displaced by y_t = ∫₀ˣ (x − u) κ(s_c + u) du,
     computed as ½x² κ(s_c + x/3), exact where κ is linear in s (a clothoid); its contact
     forces are those of :func:`contact_forces` at y − y_t, with the yaw ψ − x κ(s_c) that the
@@ -1286,7 +1286,7 @@ class NonlinearLateral:
         In the axes that follow the vehicle round an arc of curvature κ at the speed V (the
         class docstring, with κ the same under every wheelset: y_t = ½x²κ, the path's yaw x κ,
         the yaw rate V κ) and with q̇ = 0. Their zero is the quasi-static equilibrium of
-        :func:`raildyn.curving.quasi_static_curving`. The model's own ``speed``, ``curve`` and
+        :func:`raildyn.curving.quasi_static.quasi_static_curving`. The model's own ``speed``, ``curve`` and
         ``start`` are not used.
 
         Parameters

@@ -131,7 +131,7 @@ def test_the_registry_exports_what_notebooks_and_plug_ins_use():
 
 
 def test_chapter_eight_figures_are_registered_without_book_numbers():
-    for fid in ("curving-plan", "nadal-limit", "curve-entry"):
+    for fid in ("fig8.curving_plan", "fig8.nadal_limit", "fig8.curve_entry"):
         spec = figures.REGISTRY[fid]
         assert spec.chapter == 8 and spec.book_figure is None and spec.caption
 
@@ -140,7 +140,7 @@ def test_nadal_limit_figure_puts_the_cars_quotients_under_nadals_curves():
     from raildyn.curving import climb, geometry, quasi_static_curving
     from raildyn.vehicles import Car
 
-    ax = figures.make("nadal-limit").axes[0]
+    ax = figures.make("fig8.nadal_limit").axes[0]
     curves, markers = ax.lines[:3], ax.lines[3:]
     for line, mu in zip(curves, (0.1, 0.3, 0.5), strict=True):
         delta = np.radians(line.get_xdata())

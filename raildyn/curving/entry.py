@@ -5,7 +5,7 @@ The run is the nonlinear model on the curve (:class:`raildyn.wheelset.NonlinearL
 ``curve``), integrated by :func:`raildyn.stability.nonlinear.simulate` from the centred state
 with every wheelset on the straight. On the transition the wheelsets shift out and the flanges
 take up the curving force; on a long enough arc the motion dies away to the quasi-static
-equilibrium of :func:`raildyn.curving.quasi_static_curving`.
+equilibrium of :func:`raildyn.curving.quasi_static.quasi_static_curving`.
 """
 
 from __future__ import annotations

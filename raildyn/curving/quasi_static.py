@@ -9,7 +9,7 @@ equilibrium is the zero of its forces (:meth:`~raildyn.wheelset.NonlinearLateral
 The search: Newton's method on every point at once (the forces of a batch of states are one
 vectorised evaluation, and so is their Jacobian,
 :meth:`~raildyn.wheelset.NonlinearLateral.arc_jacobian`; steps halved until the residual
-falls), started from the linear steady state of :func:`raildyn.curving.steady_curving`. Points
+falls), started from the linear steady state of :func:`raildyn.curving.steady.steady_curving`. Points
 where the flange contact or the creep saturation stalls it are continued from their solved
 neighbours, then by a homotopy that raises the curve's load from nothing in adaptive steps; a
 point left after that is taken up alone by Powell's hybrid method, Levenberg–Marquardt, Powell

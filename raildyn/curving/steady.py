@@ -91,12 +91,12 @@ class SteadyCurving:
             _checks.array(name, getattr(self, name), shape=(k,))
 
     def coordinate(self, label: str) -> float:
-        """One coordinate of :attr:`displacement`, m or rad.
+        """One coordinate of ``displacement``, m or rad.
 
         Parameters
         ----------
         label : str
-            One of :attr:`labels`.
+            One of ``labels``.
 
         Returns
         -------

@@ -222,7 +222,7 @@ class StabilityCurving:
         or "unstable at the lowest speed".
     angle_of_attack : ndarray, (m,)
         The leading wheelset's angle of attack in the curve, rad, positive towards the
-        outer rail (:func:`raildyn.curving.steady_curving`).
+        outer rail (:func:`raildyn.curving.steady.steady_curving`).
     speed : float
         V in the curve, m/s (> 0).
     radius : float
@@ -369,7 +369,7 @@ def _largest_real_parts(system, Ks: np.ndarray, speeds: np.ndarray) -> np.ndarra
 def _critical_speeds(system, Ks, low: float, high: float, tol: float, scan: int):
     """The first upward zero of max Re λ(V) in [low, high] for every K at once.
 
-    The definition of :func:`raildyn.stability.critical_speed` (a coarse scan, then a
+    The definition of :func:`raildyn.stability.linear.critical_speed` (a coarse scan, then a
     bracketed refinement), with all stiffnesses in one batched eigenvalue call per
     step. The scan rises in speed and leaves a stiffness at its first crossing; the
     refinement is the Illinois variant of regula falsi, each step kept at least tol/2
@@ -434,9 +434,9 @@ def stability_and_curving(
     """The trade-off: linear critical speed and angle of attack in a curve against the primary yaw stiffness.
 
     For each k_ψ, the model with ``model.replace(yaw_stiffness=k_ψ)`` gives its linear
-    critical speed (chapter 7, :func:`raildyn.stability.critical_speed`: the lowest
+    critical speed (chapter 7, :func:`raildyn.stability.linear.critical_speed`: the lowest
     speed where the largest real part of the eigenvalues crosses zero) and its
-    leading wheelset's angle of attack in a curve (:func:`raildyn.curving.steady_curving`).
+    leading wheelset's angle of attack in a curve (:func:`raildyn.curving.steady.steady_curving`).
     A stiff yaw suspension holds the wheelsets against hunting and raises the critical
     speed; it also holds them square to the bogie frame, so that in a curve they cannot
     turn radial and the leading wheelset runs at an angle of attack near b/R (Wickens
@@ -445,7 +445,7 @@ def stability_and_curving(
     Vectorised: the stiffness matrix is linear in k_ψ (checked), so every critical
     speed comes from one batched coarse scan and a few batched refinement steps, and
     every steady state from one batched linear solve with the curve's loads of one
-    :func:`~raildyn.curving.steady_curving` call.
+    :func:`~raildyn.curving.steady.steady_curving` call.
 
     Parameters
     ----------
@@ -457,7 +457,7 @@ def stability_and_curving(
     yaw_stiffnesses : array_like, (m,)
         k_ψ per wheelset, N·m/rad: at least one, ≥ 0, strictly increasing.
     speed : float
-        V in the curve, m/s (as :func:`~raildyn.curving.steady_curving`).
+        V in the curve, m/s (as :func:`~raildyn.curving.steady.steady_curving`).
     radius : float
         R, m (≥ 50 m).
     cant : float
@@ -468,7 +468,7 @@ def stability_and_curving(
         Absolute tolerance on each critical speed, m/s (> 0).
     scan : int
         Speeds of the coarse scan, in [8, 10 000]; a crossing and recrossing between two
-        of them would be missed, as in :func:`raildyn.stability.critical_speed`.
+        of them would be missed, as in :func:`raildyn.stability.linear.critical_speed`.
 
     Returns
     -------

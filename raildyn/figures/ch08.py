@@ -23,7 +23,7 @@ _DEFICIENCY = 0.1  # m
 
 
 @register(
-    "curving-plan",
+    "fig8.curving_plan",
     "The Manchester car with saturating creep and flanges in a 600 m curve with 100 mm of cant, in "
     "quasi-static equilibrium, drawn in plan on the straightened track (offsets and angles of attack "
     "× 50; red: an axle on its flange): at the balance speed (top) and at 100 mm of cant deficiency "
@@ -53,7 +53,7 @@ def curving_plan() -> Figure:
 
 
 @register(
-    "nadal-limit",
+    "fig8.nadal_limit",
     "Nadal's limit of the flanging wheel's L/V against the flange angle for three coefficients of "
     "friction at the flange, with the Manchester car's leading outer wheel Y/Q (quasi-static, 70° "
     "flange angle, 100 mm of cant) in a 600 m curve at the balance speed and at 100 mm of cant "
@@ -93,7 +93,7 @@ def nadal_limit() -> Figure:
 
 
 @register(
-    "curve-entry",
+    "fig8.curve_entry",
     "The Manchester car's bogie with saturating creep and flanges entering a 600 m curve with 100 mm "
     "of cant by a 50 m clothoid with a linear cant ramp, at 100 km/h (97 mm of cant deficiency): each "
     "wheelset's flange force (left) and angle of attack (right) against the distance of the bogie's "
