@@ -653,7 +653,7 @@ class WheelRailContact:
         [0, π/2)). None: the linear 2εy/a of the wheelset.
     tread_angles : callable or None
         [δ_L(y), δ_R(y)], the two tread contacts' angles, rad, vectorised: an array of shape
-        (2, *y.shape), each within ±π/2. They tilt each wheel's normal force in its lateral
+        ``(2, *y.shape)``, each within ±π/2. They tilt each wheel's normal force in its lateral
         force Y (:func:`raildyn.curving.quasi_static.quasi_static_curving`); the dynamics need only their
         difference, ``contact_angle_difference``. None: δ₀ ± εy/a of the wheelset (a cone).
 

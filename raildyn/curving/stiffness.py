@@ -218,7 +218,7 @@ class StabilityCurving:
         Linear critical speed at each k_ψ, m/s (> 0; ``inf`` where stable over ``speed_range``,
         the lower end of the range where already unstable there: see ``status``).
     status : tuple of str
-        Per k_ψ, as :class:`raildyn.stability.CriticalSpeed`: "crossing", "stable over the range"
+        Per k_ψ, as :class:`raildyn.stability.linear.CriticalSpeed`: "crossing", "stable over the range"
         or "unstable at the lowest speed".
     angle_of_attack : ndarray, (m,)
         The leading wheelset's angle of attack in the curve, rad, positive towards the
