@@ -230,7 +230,9 @@ def test_book_page_reads_offline(browser, book_server, page_path):
     page.wait_for_load_state("networkidle", timeout=60_000)
     has_math = page.evaluate("() => document.body.innerHTML.includes('class=\"math')")
     if has_math:
-        page.wait_for_selector("mjx-container", timeout=30_000)
+        # a visible one: a heading's mathematics also stands in the page's table of contents, which a
+        # narrow window hides
+        page.wait_for_selector("mjx-container >> visible=true", timeout=30_000)
     text = page.inner_text("main") if page.locator("main").count() else page.inner_text("body")
     assert "$$" not in text, f"{page_path}: raw $$ left, MathJax did not typeset"
     broken = page.evaluate(
