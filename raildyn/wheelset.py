@@ -1091,7 +1091,8 @@ class NonlinearLateral:
     computed as ½x² κ(s_c + x/3), exact where κ is linear in s (a clothoid); its contact
     forces are those of :func:`contact_forces` at y − y_t, with the yaw ψ − x κ(s_c) that the
     axes' own turning gives its path, and the yaw rate ψ̇ + V κ(s_c). Every lateral
-    coordinate (label ending in " y") carries −m a_q, a_q = V²κ(s_c) − g D(s_c)/G. The
+    coordinate (label ending in " y") carries −m a_q, a_q = V²κ(s_c) − g D(s_c)/G
+    (:meth:`raildyn.curving.geometry.Curve.unbalanced_acceleration`). The
     Coriolis and Euler forces of the turning axes (of order m V κ ẏ) are left out.
 
     Attributes
@@ -1399,8 +1400,7 @@ class NonlinearLateral:
         V, curve = self.speed, self.curve
         s_c = self.start + V * t
         kappa = float(curve.curvature(s_c))
-        cant = float(curve.cant_at(s_c))
-        a_q = V * V * kappa - GRAVITY * cant / curve.rail_spacing  # the small-angle g I/G of raildyn.curving
+        a_q = float(curve.unbalanced_acceleration(s_c, V))
         column = (slice(None),) + (None,) * (q.ndim - 1)
         self._add_curved_contact(
             q, qdot, V, kappa, lambda x: (0.5 * x * x * curve.curvature(s_c + x / 3.0))[column], force

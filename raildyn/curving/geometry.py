@@ -460,6 +460,35 @@ class Curve:
         out[exit_] = D * (s3 - s[exit_]) / L
         return self._out(out, s)
 
+    def unbalanced_acceleration(self, s, speed):
+        """The unbalanced lateral acceleration a_q(s) = V² κ(s) − g D(s)/G at distance s, m/s².
+
+        :func:`unbalanced_acceleration` along the curve, in the module's small-angle convention
+        (g I/G with I = G V² κ/g − D): zero on the straights, growing along the transitions.
+
+        Parameters
+        ----------
+        s : float or array_like
+            Distance along the centre line, m (any finite value).
+        speed : float
+            V, m/s, in [0, :data:`MAXIMUM_SPEED`].
+
+        Returns
+        -------
+        float or ndarray
+            a_q(s), m/s², positive outwards, shaped like ``s``.
+
+        Examples
+        --------
+        On the arc, the function's value for its radius and cant:
+
+        >>> c, V = Curve(radius=600.0, cant=0.1), 120 / 3.6
+        >>> bool(np.isclose(c.unbalanced_acceleration(150.0, V), unbalanced_acceleration(V, 600.0, 0.1)))
+        True
+        """
+        V = scalar("speed", speed, low=0.0, high=MAXIMUM_SPEED)
+        return V * V * self.curvature(s) - GRAVITY * self.cant_at(s) / self.rail_spacing
+
     def cant_gradient(self, s):
         """The cant gradient dD/ds at distance s, m/m (× 1000 for mm/m).
 

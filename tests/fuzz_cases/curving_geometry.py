@@ -71,6 +71,11 @@ ENTRIES = [
     fuzz("raildyn.curving.geometry.Curve.replace", lambda: on(geometry.Curve(), radius=800.0)),
     fuzz("raildyn.curving.geometry.Curve.curvature", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
     fuzz("raildyn.curving.geometry.Curve.cant_at", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz(
+        "raildyn.curving.geometry.Curve.unbalanced_acceleration",
+        lambda: on(geometry.Curve(), S, 30.0),
+        accepts=DISTANCES | {"speed": "zero"},
+    ),
     fuzz("raildyn.curving.geometry.Curve.cant_gradient", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
     fuzz("raildyn.curving.geometry.Curve.twist", lambda: on(geometry.Curve(), S, 2.5), accepts=DISTANCES),
     fuzz("raildyn.curving.geometry.Curve.heading", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
