@@ -1,0 +1,48 @@
+"""Fuzz registry: the bridge of chapter 10."""
+
+from __future__ import annotations
+
+import numpy as np
+from fuzzing import call, fuzz, on
+
+from raildyn.bridge import MovingForceResponse, SimplySupportedBeam, moving_force
+
+BEAM = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=5)
+
+
+def response() -> MovingForceResponse:
+    return moving_force(BEAM, [20.0, 40.0], 1.0e5, samples=50)
+
+
+ENTRIES = [
+    fuzz(
+        "raildyn.bridge.SimplySupportedBeam",
+        lambda: call(20.0, 1.0e10, 1.0e4, 0.02, 5),
+        accepts={"damping_ratio": "zero"},
+    ),  # fmt: skip
+    fuzz(
+        "raildyn.bridge.SimplySupportedBeam.static_midspan_deflection",
+        lambda: on(BEAM, 1.0e5),
+        accepts={"force": "zero negative"},
+    ),  # fmt: skip
+    fuzz(
+        "raildyn.bridge.moving_force",
+        lambda: call(BEAM, [20.0, 40.0], 1.0e5, position=5.0, samples=50),
+        accepts={"force": "zero negative", "position": "zero none", "speeds": "list"},  # None: midspan
+    ),
+    fuzz(
+        "raildyn.bridge.MovingForceResponse",
+        lambda: call(np.array([20.0]), np.linspace(0, 1, 5)[None], np.ones((1, 5)), 10.0, 1e-3),
+        accepts={
+            "deflection": "zero negative",
+            "time": "zero negative",
+            "position": "zero",
+            "static": "zero negative",
+        },  # fmt: skip
+    ),
+    fuzz(
+        "raildyn.bridge.fryba_deflection",
+        lambda: call(BEAM, 30.0, 1.0e5, [0.0, 0.2, 0.5], position=5.0),
+        accepts={"force": "zero negative", "position": "zero none", "time": "zero list"},  # None: midspan
+    ),
+]
