@@ -18,7 +18,14 @@ from raildyn.vehicles import (
     Car,
     VerticalCar,
 )
-from raildyn.wheelset import Wheelset, creep_terms, curve_loads, pure_rolling_offset
+from raildyn.wheelset import (
+    WheelRailContact,
+    Wheelset,
+    contact_forces,
+    creep_terms,
+    curve_loads,
+    pure_rolling_offset,
+)
 
 # No spin, no gravitational stiffness: the assumptions of the classical closed forms (Wickens 2003, ch. 7).
 _PLAIN = dict(f23=0.0, f33=0.0, contact_angle=0.0, contact_angle_parameter=0.0)
@@ -134,6 +141,23 @@ def test_the_curve_loads_are_the_tangent_terms_with_the_track_moved(radius, posi
     q_t = np.array([0.5 * position**2 / radius, position / radius])
     expected = K @ q_t - terms.C1[:, 1] / radius
     np.testing.assert_allclose(curve_loads(ws, radius, position), expected, rtol=1e-12, atol=1e-9)
+
+
+@pytest.mark.parametrize("position", [0.0, 1.28, -1.28])
+def test_the_curve_loads_are_the_nonlinear_contacts_in_the_small(position):
+    # An independent path: raildyn.wheelset.contact_forces (creepages by wheelset_creepages, Kalker's forces,
+    # their saturation) on a wheelset held where the track would put it (y = −y_t, ψ = −ψ_t, yaw rate V/R).
+    # Only the saturation differs from the linear loads, by a part of order the creep force over μW/2, ∝ 1/R:
+    # measured 2.5 % of the largest load at R = 10 km and 0.25 % at 100 km, so the gap falls tenfold.
+    ws, contact, V = Wheelset(), WheelRailContact(), 30.0
+    gaps = []
+    for radius in (1.0e4, 1.0e5):
+        linear = curve_loads(ws, radius, position)
+        y_t, psi_t = 0.5 * position**2 / radius, position / radius
+        nonlinear = np.ravel(contact_forces(ws, contact, -y_t, -psi_t, 0.0, V / radius, V))
+        gaps.append(np.abs(nonlinear - linear).max() / np.abs(linear).max())
+    assert gaps[1] < 3e-3
+    assert gaps[0] / gaps[1] == pytest.approx(10.0, rel=0.05)
 
 
 def test_the_plot_draws_and_updates_the_wheelsets():
