@@ -62,6 +62,7 @@ __all__ = [
     "profile_contact",
     "pure_rolling_offset",
     "rigid_bogie_wavelength",
+    "track_on_arc",
     "wheel_forces",
     "wickens_critical_speed",
 ]
@@ -570,6 +571,44 @@ def pure_rolling_offset(rolling_radius, half_gauge, conicity, radius) -> float:
 
 
 _MAX_POSITION = 100.0  # m: a wheelset's distance from the centre of its vehicle
+_MIN_RADIUS = 50.0  # m: raildyn.curving.geometry.MINIMUM_RADIUS (that module imports this one)
+
+
+def track_on_arc(position, curvature) -> tuple[np.ndarray, np.ndarray]:
+    """Where an arc puts the track under a wheelset, in axes tangent to it at their origin.
+
+    A wheelset x ahead of the origin of axes that follow the vehicle round an arc of curvature
+    κ = 1/R meets the track's centre line displaced by y_t = ½x²κ and turned by ψ_t = xκ (the
+    small-angle arc; Garg & Dukkipati 1984, ch. 8). The one place this geometry is written:
+    :func:`curve_loads`, :meth:`NonlinearLateral.arc_forces` and the curving models use it.
+
+    Parameters
+    ----------
+    position : float or array_like
+        x, m, each within ±100 m (a wheelset's place along its vehicle); not empty.
+    curvature : float or array_like
+        κ, 1/m, each within ±1/50 m (the sharpest curve of :mod:`raildyn.curving.geometry`),
+        broadcasting with ``position``; not empty.
+
+    Returns
+    -------
+    y_t : ndarray
+        m, to the left (towards the centre of a left-hand curve).
+    psi_t : ndarray
+        rad, anticlockwise.
+
+    Examples
+    --------
+    >>> y_t, psi_t = track_on_arc(10.0, 1 / 500.0)
+    >>> round(float(y_t), 3), round(float(psi_t), 3)
+    (0.1, 0.02)
+    """
+    x = _checks.array("position", position, allow_empty=False)
+    kappa = _checks.array("curvature", curvature, allow_empty=False)
+    scalar("position", np.abs(x).max(), high=_MAX_POSITION)
+    scalar("curvature", np.abs(kappa).max(), high=1.0 / _MIN_RADIUS)
+    _checks.broadcast(position=x, curvature=kappa)
+    return 0.5 * x * x * kappa, x * kappa
 
 
 def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
@@ -615,7 +654,7 @@ def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
     terms = creep_terms(_checks.instance("ws", ws, Wheelset))
     R = positive("radius", radius)
     x = scalar("position", position, low=-_MAX_POSITION, high=_MAX_POSITION)
-    track = np.array([0.5 * x * x / R, x / R])
+    track = np.array(track_on_arc(x, 1.0 / R))
     return (terms.K_creep + terms.K_gravity) @ track - terms.C1[:, 1] / R
 
 
@@ -1326,7 +1365,7 @@ class NonlinearLateral:
         column = (slice(None),) + (None,) * (q.ndim - 1)
         force = -self._K_suspension @ q
         self._add_curved_contact(
-            q, np.zeros_like(q), V, kappa, lambda x: (0.5 * x * x)[column] * kappa, force
+            q, np.zeros_like(q), V, kappa, lambda x: track_on_arc(x[column], kappa)[0], force
         )
         if self._laws:
             d = self._G @ q
@@ -1361,8 +1400,8 @@ class NonlinearLateral:
         n, h = self.system.size, 1.0e-7
         J = np.broadcast_to(-self._K_suspension, (*q.shape[1:], n, n)).copy()
         for ws, iy, ipsi, x in self._groups:
-            y = q[iy] - (0.5 * x * x)[column] * kappa
-            psi = q[ipsi] - x[column] * kappa
+            y_t, psi_t = track_on_arc(x[column], kappa)
+            y, psi = q[iy] - y_t, q[ipsi] - psi_t
             rate = np.zeros_like(y) + V * kappa
 
             def forces(dy, dpsi, ws=ws, y=y, psi=psi, rate=rate):

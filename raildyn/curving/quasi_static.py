@@ -43,7 +43,7 @@ from raildyn.curving.geometry import (
 )
 from raildyn.curving.steady import SteadyCurving, steady_curving
 from raildyn.errors import SolverError
-from raildyn.wheelset import NonlinearLateral, contact_forces, wheel_forces
+from raildyn.wheelset import NonlinearLateral, contact_forces, track_on_arc, wheel_forces
 
 __all__ = ["CurvingMap", "QuasiStaticCurving", "curving_map", "quasi_static_curving"]
 
@@ -272,8 +272,8 @@ def _wheels(
     iy = np.array([w[0] for w in system.wheelsets])
     ipsi = np.array([w[1] for w in system.wheelsets])
     # relative to the track where each wheelset runs on the arc (y_t = ½x²/R, its tangent x/R)
-    y = q[iy] - np.outer(0.5 * x * x, 1.0 / R)
-    psi = q[ipsi] - np.outer(x, 1.0 / R)
+    y_t, psi_t = track_on_arc(x[:, None], 1.0 / R[None, :])
+    y, psi = q[iy] - y_t, q[ipsi] - psi_t
     if np.abs(y).max() > _ON_THE_RAILS:
         raise SolverError(
             f"the only equilibrium found has a wheelset {1e3 * np.abs(y).max():.4g} mm off the track's "

@@ -26,7 +26,7 @@ from raildyn import _checks
 from raildyn.contact.creep import wheelset_creepages
 from raildyn.curving.geometry import MAXIMUM_CANT, MAXIMUM_SPEED, MINIMUM_RADIUS, unbalanced_acceleration
 from raildyn.linear_model import as_linear_system
-from raildyn.wheelset import curve_loads
+from raildyn.wheelset import curve_loads, track_on_arc
 
 __all__ = ["SteadyCurving", "steady_curving"]
 
@@ -227,8 +227,9 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
         raise ValueError("model: its stiffness matrix is singular, so it has no steady state in a curve")
     iy = np.array([w[0] for w in system.wheelsets])
     ipsi = np.array([w[1] for w in system.wheelsets])
-    y = q[iy] - 0.5 * x**2 / R  # from the local centre line, to the left
-    psi = q[ipsi] - x / R  # from the local tangent, anticlockwise
+    y_t, psi_t = track_on_arc(x, 1.0 / R)
+    y = q[iy] - y_t  # from the local centre line, to the left
+    psi = q[ipsi] - psi_t  # from the local tangent, anticlockwise
     fx, fy = np.empty(len(x)), np.empty(len(x))
     for k, (_, _, ws) in enumerate(system.wheelsets):
         r0, lam = ws.rolling_radius, ws.conicity

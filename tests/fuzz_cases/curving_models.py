@@ -50,6 +50,13 @@ RESULT = {"*": "zero negative", "radius": "", "speed": "", "cant": "zero"}
 
 
 ENTRIES = [
+    fuzz(
+        "raildyn.wheelset.track_on_arc",
+        lambda: call(np.array([-1.28, 1.28]), 1 / 600.0),
+        # behind the origin, on straight track, turning right: every sign is a place on some track
+        # arrays broadcast: an extra axis is a grid of places
+        accepts={"position": "zero negative list shape", "curvature": "zero negative list"},
+    ),
     fuzz("raildyn.wheelset.pure_rolling_offset", lambda: call(0.46, 0.75, 0.15, 600.0)),
     # a wheelset behind the axes' origin is at a negative position; at the origin it is zero
     fuzz(
