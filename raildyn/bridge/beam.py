@@ -66,6 +66,36 @@ class SimplySupportedBeam:
         j = np.arange(1, self.modes + 1)
         return j**2 * np.pi / (2 * self.span**2) * np.sqrt(self.flexural_rigidity / self.mass_per_length)
 
+    @property
+    def length(self) -> float:
+        """The length a load crosses, m: the span."""
+        return self.span
+
+    @property
+    def modal_masses(self) -> np.ndarray:
+        """∫ m φ_j² dx = mL/2 of each kept mode, kg (φ_j = sin(jπx/L))."""
+        return np.full(self.modes, self.mass_per_length * self.span / 2)
+
+    def mode_shapes(self, x, derivative: int = 0) -> np.ndarray:
+        """φ_j(x) = sin(jπx/L) of the kept modes, or its first or second derivative; 0 off the span.
+
+        Parameters
+        ----------
+        x : array_like, (k,)
+            Positions along the beam, m (finite, at least one; any outside [0, L] give 0).
+        derivative : {0, 1, 2}
+            φ, φ′ (1/m) or φ″ (1/m²).
+
+        Returns
+        -------
+        ndarray, (modes, k)
+        """
+        xs = _checks.array("x", x, ndim=1, allow_empty=False)
+        d = _checks.integer("derivative", derivative, low=0, high=2)
+        k = np.arange(1, self.modes + 1)[:, None] * np.pi / self.span
+        phase = k * xs + d * np.pi / 2  # each derivative advances sin by a quarter turn, times k
+        return np.where((xs >= 0) & (xs <= self.span), k**d * np.sin(phase), 0.0)
+
     def static_midspan_deflection(self, force) -> float:
         """P L³/(48 EI), m: the deflection under a force P at midspan (the beam formula).
 

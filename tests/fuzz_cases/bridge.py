@@ -26,6 +26,16 @@ ENTRIES = [
         accepts={"force": "zero negative"},
     ),  # fmt: skip
     fuzz(
+        "raildyn.bridge.SimplySupportedBeam.mode_shapes",
+        lambda: on(BEAM, [0.0, 5.0, 25.0], derivative=1),
+        accepts={"x": "zero negative list", "derivative": "zero"},  # off the span: 0; derivative 0: φ
+    ),
+    fuzz(
+        "raildyn.bridge.AxleSequence",
+        lambda: call([0.0, 2.5, 17.5, 20.0], [1.7e5] * 4, "coach"),
+        accepts={"positions": "zero", "name": "empty"},  # one axle, or all at 0: a single point load
+    ),
+    fuzz(
         "raildyn.bridge.moving_force",
         lambda: call(BEAM, [20.0, 40.0], 1.0e5, position=5.0, samples=50),
         accepts={"force": "zero negative", "position": "zero none", "speeds": "list"},  # None: midspan
