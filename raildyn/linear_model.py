@@ -151,6 +151,12 @@ class LinearSystem:
         Indices of the [y, ψ] coordinates of each wheelset in contact with the
         rails and its parameters, for the nonlinear counterpart
         (:class:`raildyn.wheelset.NonlinearLateral`).
+    input_stiffness, input_damping : ndarray, (q, q) or None
+        The inputs' own block of the suspension's stiffness and damping, N/m and N·s/m
+        (symmetric), so that the force of the suspension on the wheel at input j, upwards, is
+        (G_Kᵀ q + G_Cᵀ q̇ − K_W w − C_W ẇ)_j: what a flexible track or bridge under the vehicle
+        needs. None: not known (an input force added directly rather than by an element);
+        :meth:`input_forces` then refuses.
 
     M must be symmetric and positive definite; C₀, C₁ and K hold damper, creep and
     gravity terms of either sign and need not be symmetric.
@@ -168,6 +174,8 @@ class LinearSystem:
     input_rails: np.ndarray = None
     gravity_load: np.ndarray = None
     wheelsets: tuple = field(default=())
+    input_stiffness: np.ndarray = None
+    input_damping: np.ndarray = None
 
     def __post_init__(self):
         M = _mass_matrix("M", self.M)
@@ -200,6 +208,13 @@ class LinearSystem:
             raise ValueError(f"input_kinds must be {q} of {INPUT_KINDS}, got {self.input_kinds!r}")
         set_(self, "input_kinds", kinds)
         set_(self, "wheelsets", _wheelsets(self.wheelsets, self.labels))
+        if (self.input_stiffness is None) != (self.input_damping is None):
+            raise ValueError("input_stiffness and input_damping must be given together or both be None")
+        for name in ("input_stiffness", "input_damping"):
+            if getattr(self, name) is not None:
+                value = getattr(self, name)
+                block = _checks.square_matrix(name, value, size=q) if q else _checks.array(name, value)
+                set_(self, name, _frozen(name, block, (q, q)))
 
     @property
     def size(self) -> int:
@@ -240,6 +255,46 @@ class LinearSystem:
             behind.append(self.input_positions[found[0]])
         behind = np.array(behind)
         return 0.5 * (behind.min() + behind.max()) - behind
+
+    def input_forces(self, q, qdot, w, wdot) -> np.ndarray:
+        """The suspension's force on the wheel at each track input, upwards, N.
+
+        (G_Kᵀ q + G_Cᵀ q̇ − K_W w − C_W ẇ): minus the derivative of the suspension's energy
+        with respect to each input, with its damping; displacements from the static position.
+
+        Parameters
+        ----------
+        q, qdot : array_like, (..., n)
+            Coordinates (m, rad) and their rates.
+        w, wdot : array_like, (..., q)
+            Track inputs (m) and their rates.
+
+        Returns
+        -------
+        ndarray, (..., q)
+
+        Raises
+        ------
+        ValueError
+            If the system does not know its inputs' own stiffness (``input_stiffness`` None).
+        """
+        if self.input_stiffness is None:
+            raise ValueError(
+                "this system does not know its inputs' own stiffness (input_stiffness None): build it with "
+                "Assembler.element, which records it"
+            )
+        n, k = self.size, self.n_inputs
+        q = _checks.array("q", q)
+        lead = q.shape[:-1] if q.ndim else ()  # the leading axes every argument shares (times, say)
+        q = _checks.array("q", q, shape=(*lead, n))
+        for name, value, size in (("qdot", qdot, n), ("w", w, k), ("wdot", wdot, k)):
+            if np.shape(value) != (*lead, size):
+                raise ValueError(
+                    f"{name} must have shape {(*lead, size)} (the leading axes of q, shape {q.shape}), "
+                    f"got shape {np.shape(value)}"
+                )
+        qdot, w, wdot = (_checks.array(s, v) for s, v in (("qdot", qdot), ("w", w), ("wdot", wdot)))
+        return q @ self.GK + qdot @ self.GC - w @ self.input_stiffness - wdot @ self.input_damping
 
     # -- the protocol ------------------------------------------------------------------------------
 
@@ -651,6 +706,9 @@ class Assembler:
         self.K = np.zeros((n, n))
         self.GK = np.zeros((n, q))
         self.GC = np.zeros((n, q))
+        self.KW = np.zeros((q, q))  # the inputs' own block, known while every input enters by an element
+        self.CW = np.zeros((q, q))
+        self.input_block_known = True
         self.wheelsets: list = []
 
     def index(self, label: str) -> int:
@@ -728,6 +786,8 @@ class Assembler:
         self.C0 += c * np.outer(g, g)
         self.GK += k * np.outer(g, h)
         self.GC += c * np.outer(g, h)
+        self.KW += k * np.outer(h, h)
+        self.CW += c * np.outer(h, h)
 
     def _input(self, name: str, j) -> int:
         """A track input index in [0, q − 1]."""
@@ -775,6 +835,7 @@ class Assembler:
         j = self._input("j", j)
         self.GK[i, j] += _checks.scalar("stiffness", stiffness)
         self.GC[i, j] += _checks.scalar("damping", damping)
+        self.input_block_known = False  # a force with no element: the reaction on the input is not known
 
     def system(self, **inputs) -> LinearSystem:
         """The assembled :class:`LinearSystem`.
@@ -788,7 +849,9 @@ class Assembler:
         -------
         LinearSystem
         """
+        known = self.input_block_known
         return LinearSystem(
             self.M, self.C0, self.C1, self.K, self.GK, self.GC, tuple(self.labels),
-            wheelsets=tuple(self.wheelsets), **inputs,
+            wheelsets=tuple(self.wheelsets), input_stiffness=self.KW if known else None,
+            input_damping=self.CW if known else None, **inputs,
         )  # fmt: skip

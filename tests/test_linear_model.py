@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from raildyn import stability
-from raildyn.linear_model import LinearModel, LinearSystem, SystemMatrices, as_linear_system
+from raildyn.linear_model import Assembler, LinearModel, LinearSystem, SystemMatrices, as_linear_system
 from raildyn.vehicles import (
     COOPERRIDER_CAR,
     DEFAULT_LOCOMOTIVE,
@@ -161,3 +161,36 @@ def test_linear_system_refuses_a_negative_mass_and_bad_fields():
 def test_as_linear_system_names_its_parameter(bad):
     with pytest.raises(TypeError, match="model"):
         as_linear_system(bad)
+
+
+def test_the_input_forces_carry_the_weight_and_are_minus_the_energys_gradient():
+    # The vertical car at rest: the wheel forces (upwards on the wheels) sum to minus its weight, to rounding;
+    # and for a displaced state they are −∂V/∂w of V = ½[q; w]ᵀ[[K, −G_K], [−G_Kᵀ, K_W]][q; w], by central
+    # differences (exact for a quadratic, to rounding).
+    from raildyn.vehicles import VerticalCar
+
+    system = VerticalCar().linear_system()
+    rest = system.static_deflection()
+    zeros = np.zeros(system.n_inputs)
+    forces = system.input_forces(rest, 0 * rest, zeros, zeros)
+    assert forces.sum() == pytest.approx(system.gravity_load.sum(), rel=1e-12)
+    rng = np.random.default_rng(3)
+    q, w = rng.normal(size=system.size) * 1e-3, rng.normal(size=system.n_inputs) * 1e-3
+    K_full = np.block([[system.K, -system.GK], [-system.GK.T, system.input_stiffness]])
+
+    def energy(w_):
+        x = np.concatenate([q, w_])
+        return 0.5 * x @ K_full @ x
+
+    h = 1e-6
+    gradient = [(energy(w + h * e) - energy(w - h * e)) / (2 * h) for e in np.eye(system.n_inputs)]
+    np.testing.assert_allclose(system.input_forces(q, 0 * q, w, 0 * w), -np.array(gradient), rtol=1e-6)
+
+
+def test_a_system_with_a_direct_input_force_does_not_know_its_reaction():
+    asm = Assembler(["z"], n_inputs=1)
+    asm.mass("z", 1.0)
+    asm.element({"z": 1.0}, 10.0)
+    asm.track_force("z", 0, 5.0)
+    with pytest.raises(ValueError, match="input_stiffness"):
+        asm.system().input_forces([0.0], [0.0], [0.0], [0.0])

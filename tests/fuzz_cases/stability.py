@@ -166,6 +166,11 @@ ENTRIES = [
         lambda: on(system2(), np.array([1.0, 5.0, 20.0]), 30.0, output="body z"),
         accepts={"omega": "zero", "derivative": "zero"},
     ),
+    fuzz(
+        "raildyn.linear_model.LinearSystem.input_forces",
+        lambda: on(built_assembler().system(), [1e-3, 2e-3], [0.0, 0.1], [1e-3], [0.05]),
+        accepts={s: "zero negative list" for s in ("q", "qdot", "w", "wdot")},  # displacements of either sign
+    ),
     fuzz("raildyn.linear_model.LinearSystem.linear_system", lambda: on(system2())),
     fuzz("raildyn.linear_model.LinearSystem.matrices", lambda: on(system2(), 30.0)),
     fuzz("raildyn.linear_model.LinearSystem.output_vector", lambda: on(system2(), "body z")),
