@@ -20,4 +20,31 @@ ENTRIES = [
         lambda: on(CONTINUOUS, [0.0, 5.0, 50.0], derivative=1),
         accepts={"x": "zero negative", "derivative": "zero"},  # off the beam: 0; derivative 0: φ
     ),
+    # ------------------------------------------------------------------ codes
+    fuzz(
+        "raildyn.bridge.codes.arema_impact_factor",
+        lambda: call(20.0, 2.0),
+        accepts={"span": "list", "girder_spacing": "none"},  # spans as an array; None: no rocking term
+    ),
+    fuzz(
+        "raildyn.bridge.codes.en1991_dynamic_factor",
+        lambda: call(20.0, "careful"),
+        accepts={"determinant_length": "list"},  # an array of lengths
+    ),
+    fuzz(
+        "raildyn.bridge.codes.en1991_real_train_factor",
+        lambda: call(40.0, 20.0, 4.0, "careful"),
+        accepts={"speed": "zero"},  # at rest: 1
+    ),
+    fuzz("raildyn.bridge.codes.deck_acceleration_limit", lambda: call("ballasted")),
+    fuzz("raildyn.bridge.codes.comfort_acceleration_limit", lambda: call("good")),
+    fuzz("raildyn.bridge.codes.resonance_speeds", lambda: call(4.0, 18.0, 3)),
+    fuzz("raildyn.bridge.codes.cancellation_spans", lambda: call(18.0, 1, 3)),
+    # ------------------------------------------------------------------ trains
+    fuzz("raildyn.bridge.trains.hslm", lambda: call(3)),
+    fuzz(
+        "raildyn.bridge.trains.regular_train",
+        lambda: call(5, 20.0, 2.5, 1.5e5, bogie_centres=15.0),
+        accepts={"bogie_centres": "none"},  # None: articulated coaches
+    ),
 ]
