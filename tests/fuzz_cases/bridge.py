@@ -5,7 +5,16 @@ from __future__ import annotations
 import numpy as np
 from fuzzing import call, fuzz, on
 
-from raildyn.bridge import MovingForceResponse, SimplySupportedBeam, moving_force
+from raildyn.bridge import (
+    AxleSequence,
+    MovingForceResponse,
+    SimplySupportedBeam,
+    crossing,
+    moving_force,
+    moving_mass,
+    sprung_mass,
+)
+from raildyn.vehicles import VerticalCar
 
 BEAM = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=5)
 
@@ -54,5 +63,45 @@ ENTRIES = [
         "raildyn.bridge.fryba_deflection",
         lambda: call(BEAM, 30.0, 1.0e5, [0.0, 0.2, 0.5], position=5.0),
         accepts={"force": "zero negative", "position": "zero none", "time": "zero list"},  # None: midspan
+    ),
+]
+
+# -- raildyn.bridge.loads and raildyn.bridge.coupled ---------------------------------------------------------
+
+SHORT = SimplySupportedBeam(10.0, 1.0e9, 1.0e4, modes=2)  # a short, light span: a crossing of ~10 ms
+PAIR = AxleSequence([0.0, 3.0], [1.0e5, 1.0e5])
+
+ENTRIES += [
+    fuzz(
+        "raildyn.bridge.MovingLoad",
+        lambda: call([0.0, 3.0], [1.0e5, 1.0e5], [100.0, 100.0], None, "pair"),
+        accepts={"positions": "zero", "unsprung_masses": "zero", "system": "none", "name": "empty"},
+    ),
+    fuzz("raildyn.bridge.moving_forces", lambda: call(PAIR)),
+    fuzz("raildyn.bridge.moving_mass", lambda: call(1000.0)),
+    fuzz(
+        "raildyn.bridge.sprung_mass",
+        lambda: call(5000.0, 1.0e6, 1.0e3, 500.0),
+        accepts={"damping": "zero", "unsprung_mass": "zero"},
+    ),
+    fuzz("raildyn.bridge.vehicle", lambda: call(VerticalCar(), 1813.0), accepts={"wheelset_mass": "zero"}),
+    fuzz(
+        "raildyn.bridge.train",
+        lambda: call([moving_mass(1000.0), sprung_mass(5000.0, 1.0e6)], [5.0]),
+        accepts={"gaps": "zero list"},
+    ),
+    fuzz(
+        "raildyn.bridge.crossing",
+        lambda: call(SHORT, PAIR, 40.0, at=3.0, time_step=1e-3, free_time=0.05),
+        accepts={
+            "at": "zero none",  # None: the middle of the first span
+            "time_step": "none",
+            "free_time": "zero none",
+            "irregularity": "none",
+        },
+    ),
+    fuzz(
+        "raildyn.bridge.BridgeCrossing.vehicle_acceleration",
+        lambda: on(crossing(SHORT, sprung_mass(5000.0, 1.0e6), 40.0, time_step=1e-3), "body z"),
     ),
 ]

@@ -1,0 +1,212 @@
+"""The time march of a vehicle crossing a bridge, compiled with numba.
+
+Every step the axles stand somewhere else on the beam, so the coupled mass, damping
+and stiffness matrices change and the step's equations are assembled and solved
+afresh: a few hundred small operations where numpy's per-call cost would dominate.
+:func:`raildyn.bridge.coupled.crossing` checks every input and documents the
+equations; nothing here checks anything.
+
+The mode shapes come as tables on a uniform grid over the beam (φ, φ′ and φ″ at
+each point): φ and φ′ are interpolated by cubic Hermite polynomials (from φ′ and φ″),
+φ″ linearly.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+__all__ = ["march"]
+
+
+@numba.njit(cache=True)
+def _shapes(x, length, dx, phi, dphi, ddphi, out):
+    """φ, φ′, φ″ of every mode at x into out[0:3, :]; zero off the beam."""
+    n = phi.shape[0]
+    if x < 0.0 or x > length:
+        for i in range(n):
+            out[0, i] = 0.0
+            out[1, i] = 0.0
+            out[2, i] = 0.0
+        return False
+    g = min(int(x / dx), phi.shape[1] - 2)
+    s = x / dx - g
+    h00 = (1.0 + 2.0 * s) * (1.0 - s) ** 2
+    h10 = s * (1.0 - s) ** 2
+    h01 = s * s * (3.0 - 2.0 * s)
+    h11 = s * s * (s - 1.0)
+    for i in range(n):
+        out[0, i] = h00 * phi[i, g] + h10 * dx * dphi[i, g] + h01 * phi[i, g + 1] + h11 * dx * dphi[i, g + 1]
+        out[1, i] = (
+            h00 * dphi[i, g] + h10 * dx * ddphi[i, g] + h01 * dphi[i, g + 1] + h11 * dx * ddphi[i, g + 1]
+        )
+        out[2, i] = (1.0 - s) * ddphi[i, g] + s * ddphi[i, g + 1]
+    return True
+
+
+@numba.njit(cache=True)
+def _assemble(
+    t, v, length, dx, phi, dphi, ddphi, Mb, Cb, Kb, M, C, K, GK, GC, KW, CW, W, m, d, r, A, B, Z, f, S
+):
+    """The coupled M (A), C (B), K (Z) and load f at time t; S (a, 3, n) receives the shapes at the axles."""
+    n, p, a = Mb.size, M.shape[0], W.size
+    A[:] = 0.0
+    B[:] = 0.0
+    Z[:] = 0.0
+    f[:] = 0.0
+    for i in range(n):
+        A[i, i] = Mb[i]
+        B[i, i] = Cb[i]
+        Z[i, i] = Kb[i]
+    A[n:, n:] = M
+    B[n:, n:] = C
+    Z[n:, n:] = K
+    on = np.empty(a, dtype=np.int64)  # the axles on the beam: only they load it
+    count = 0
+    for j in range(a):
+        if _shapes(v * t - d[j], length, dx, phi, dphi, ddphi, S[j]):
+            on[count] = j
+            count += 1
+    # the vehicle's rail inputs u = −Φᵀb + r, u̇ = −Φᵀḃ − vΦ′ᵀb + v r′ and ü (module docstring)
+    for j in range(a):
+        for k in range(p):
+            f[n + k] += GK[k, j] * r[j, 0] + GC[k, j] * v * r[j, 1]
+    for jj in range(count):
+        j = on[jj]
+        load = W[j] + m[j] * v * v * r[j, 2]
+        for k in range(a):
+            load += KW[j, k] * r[k, 0] + CW[j, k] * v * r[k, 1]
+        for i in range(n):
+            pi = S[j, 0, i]
+            f[i] += pi * load
+            for ii in range(n):
+                A[i, ii] += m[j] * pi * S[j, 0, ii]
+                B[i, ii] += 2.0 * v * m[j] * pi * S[j, 1, ii]
+                Z[i, ii] += v * v * m[j] * pi * S[j, 2, ii]
+                for kk in range(count):
+                    k = on[kk]
+                    B[i, ii] += pi * CW[j, k] * S[k, 0, ii]
+                    Z[i, ii] += pi * (KW[j, k] * S[k, 0, ii] + v * CW[j, k] * S[k, 1, ii])
+            for k in range(p):
+                B[i, n + k] += pi * GC[k, j]
+                Z[i, n + k] += pi * GK[k, j]
+                B[n + k, i] += GC[k, j] * pi
+                Z[n + k, i] += GK[k, j] * pi + v * GC[k, j] * S[j, 1, i]
+
+
+@numba.njit(cache=True)
+def _contact(v, n, p, x, xd, xdd, W, m, GK, GC, KW, CW, r, S, F):
+    """Each axle's force on the rail, downwards: W + m ü − (G_Kᵀq + G_Cᵀq̇ − K_W u − C_W u̇)."""
+    a = W.size
+    u = np.empty(a)
+    ud = np.empty(a)
+    udd = np.empty(a)
+    for j in range(a):
+        u[j], ud[j], udd[j] = r[j, 0], v * r[j, 1], v * v * r[j, 2]
+        for i in range(n):
+            u[j] -= S[j, 0, i] * x[i]
+            ud[j] -= S[j, 0, i] * xd[i] + v * S[j, 1, i] * x[i]
+            udd[j] -= S[j, 0, i] * xdd[i] + 2.0 * v * S[j, 1, i] * xd[i] + v * v * S[j, 2, i] * x[i]
+    for j in range(a):
+        up = 0.0
+        for k in range(p):
+            up += GK[k, j] * x[n + k] + GC[k, j] * xd[n + k]
+        for k in range(a):
+            up -= KW[j, k] * u[k] + CW[j, k] * ud[k]
+        F[j] = W[j] + m[j] * udd[j] - up
+
+
+@numba.njit(cache=True)
+def march(
+    h, steps, v, length, dx, phi, dphi, ddphi, Mb, Cb, Kb, M, C, K, GK, GC, KW, CW, W, m, d, r, X, V, Acc, F
+):
+    """Average-acceleration Newmark steps from rest; X, V, Acc (steps + 1, n + p) and F (steps + 1, a) filled.
+
+    r is (steps + 1, a, 3): the rail's height, slope and curvature under each axle at each time.
+    Returns the index of the first step whose state is not finite, or −1.
+    """
+    n, p, a = Mb.size, M.shape[0], W.size
+    N = n + p
+    A = np.empty((N, N))
+    B = np.empty((N, N))
+    Z = np.empty((N, N))
+    f = np.empty(N)
+    S = np.empty((a, 3, n))
+    X[0, :] = 0.0
+    V[0, :] = 0.0
+    _assemble(
+        0.0,
+        v,
+        length,
+        dx,
+        phi,
+        dphi,
+        ddphi,
+        Mb,
+        Cb,
+        Kb,
+        M,
+        C,
+        K,
+        GK,
+        GC,
+        KW,
+        CW,
+        W,
+        m,
+        d,
+        r[0],
+        A,
+        B,
+        Z,
+        f,
+        S,
+    )
+    if not np.all(np.isfinite(f)):
+        return 0
+    Acc[0, :] = np.linalg.solve(A, f)
+    _contact(v, n, p, X[0], V[0], Acc[0], W, m, GK, GC, KW, CW, r[0], S, F[0])
+    for s in range(steps):
+        t = (s + 1) * h
+        _assemble(
+            t,
+            v,
+            length,
+            dx,
+            phi,
+            dphi,
+            ddphi,
+            Mb,
+            Cb,
+            Kb,
+            M,
+            C,
+            K,
+            GK,
+            GC,
+            KW,
+            CW,
+            W,
+            m,
+            d,
+            r[s + 1],
+            A,
+            B,
+            Z,
+            f,
+            S,
+        )
+        xp = X[s] + h * V[s] + 0.25 * h * h * Acc[s]
+        vp = V[s] + 0.5 * h * Acc[s]
+        lhs = A + 0.5 * h * B + 0.25 * h * h * Z
+        rhs = f - B @ vp - Z @ xp
+        if not np.all(np.isfinite(rhs)):
+            return s + 1
+        acc = np.linalg.solve(lhs, rhs)
+        X[s + 1] = xp + 0.25 * h * h * acc
+        V[s + 1] = vp + 0.5 * h * acc
+        Acc[s + 1] = acc
+        if not np.all(np.isfinite(X[s + 1])):
+            return s + 1
+        _contact(v, n, p, X[s + 1], V[s + 1], acc, W, m, GK, GC, KW, CW, r[s + 1], S, F[s + 1])
+    return -1
