@@ -5,8 +5,10 @@ from __future__ import annotations
 from fuzzing import call, fuzz, on
 
 from raildyn.bridge.continuous import ContinuousBeam
+from raildyn.bridge.winkler import WinklerBeam
 
 CONTINUOUS = ContinuousBeam((20.0, 25.0), 1.0e10, 1.0e4, modes=4)
+RAIL = WinklerBeam(6.4e6, 60.34, 5.0e7, 2.0e4)
 
 
 ENTRIES = [
@@ -19,6 +21,22 @@ ENTRIES = [
         "raildyn.bridge.continuous.ContinuousBeam.mode_shapes",
         lambda: on(CONTINUOUS, [0.0, 5.0, 50.0], derivative=1),
         accepts={"x": "zero negative", "derivative": "zero"},  # off the beam: 0; derivative 0: φ
+    ),
+    # ------------------------------------------------------------------ Winkler
+    fuzz(
+        "raildyn.bridge.winkler.WinklerBeam",
+        lambda: call(6.4e6, 60.34, 5.0e7, 2.0e4),
+        accepts={"damping": "zero"},
+    ),
+    fuzz(
+        "raildyn.bridge.winkler.WinklerBeam.static_deflection",
+        lambda: on(RAIL, [0.0, 1.0, 2.0], 1.0e5),
+        accepts={"x": "zero negative", "force": "zero negative"},  # any position; a force either way
+    ),
+    fuzz(
+        "raildyn.bridge.winkler.WinklerBeam.steady_deflection",
+        lambda: on(RAIL, [-1.0, 0.0, 1.0], 300.0, 1.0e5),
+        accepts={"x": "zero negative", "speed": "zero", "force": "zero negative"},  # at rest: Hetényi's
     ),
     # ------------------------------------------------------------------ codes
     fuzz(
