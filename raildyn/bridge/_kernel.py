@@ -210,3 +210,61 @@ def march(
             return s + 1
         _contact(v, n, p, X[s + 1], V[s + 1], acc, W, m, GK, GC, KW, CW, r[s + 1], S, F[s + 1])
     return -1
+
+
+@numba.njit(cache=True)
+def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape, out):
+    """Closed-form modal responses of a simply supported beam to constant forces, summed; into out (s, k).
+
+    Mode j of unit modal load sin(Ω_j t) while a force is on the span (0 ≤ t − τ ≤ T = L/v) is
+    q = a sin Ω(t−τ) + b cos Ω(t−τ) + Re{C_f e^{λ(t−τ)}}, λ = −ζω + iω_d, from rest; after it
+    leaves, Re{C_e e^{λ(t−τ−T)}} from its state at exit. The forces that have left are carried
+    as one complex sum, advanced by e^{λΔt} from sample to sample, so a long train costs
+    O(samples + axles) per mode and speed, not their product. ``shape`` holds 2φ_j(x)/(mL).
+    """
+    n = omega.size
+    a_count = delays.size
+    for si in range(speeds.size):
+        v = speeds[si]
+        T = span / v
+        dt = duration[si] / (samples - 1)
+        for j in range(n):
+            w = omega[j]
+            wd = w * np.sqrt(1.0 - zeta * zeta)
+            Om = (j + 1) * np.pi * v / span
+            den = (w * w - Om * Om) ** 2 + (2.0 * zeta * w * Om) ** 2
+            a = (w * w - Om * Om) / den
+            b = -2.0 * zeta * w * Om / den
+            c = -b
+            d = (zeta * w * c - a * Om) / wd
+            lam = complex(-zeta * w, wd)
+            cf = complex(c, -d)  # Re{(c − id) e^{iω_d t}} = c cos + d sin
+            # the state at exit of one unit force, then the free vibration's phasor
+            decay = np.exp(-zeta * w * T)
+            q_end = a * np.sin(Om * T) + b * np.cos(Om * T) + decay * (c * np.cos(wd * T) + d * np.sin(wd * T))
+            qd_end = (
+                a * Om * np.cos(Om * T)
+                - b * Om * np.sin(Om * T)
+                + decay * ((d * wd - zeta * w * c) * np.cos(wd * T) - (c * wd + zeta * w * d) * np.sin(wd * T))
+            )
+            ce = complex(q_end, -(qd_end + zeta * w * q_end) / wd)
+            step = np.exp(lam * dt)
+            gone = 0j  # Σ over the forces that have left of P C_e e^{λ(t − τ − T)}
+            first_on = 0  # forces [first_on, entered) are on the span
+            entered = 0
+            for i in range(samples):
+                t = i * dt
+                if i:
+                    gone *= step
+                while first_on < a_count and delays[first_on] / v + T <= t:
+                    gone += loads[first_on] * ce * np.exp(lam * (t - delays[first_on] / v - T))
+                    first_on += 1
+                while entered < a_count and delays[entered] / v <= t:
+                    entered += 1
+                total = gone.real
+                for k in range(first_on, entered):
+                    s = t - delays[k] / v
+                    total += loads[k] * (
+                        a * np.sin(Om * s) + b * np.cos(Om * s) + (cf * np.exp(lam * s)).real
+                    )
+                out[si, i] += shape[j] * total

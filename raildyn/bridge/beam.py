@@ -4,9 +4,11 @@ The beam of span L, flexural rigidity EI and mass per length m has the modes sin
 ω_j = (jπ/L)² √(EI/m). A force P crossing at the speed v loads mode j with
 p_j(t) = (2P/(mL)) sin(jπvt/L) while it is on the span (0 ≤ t ≤ L/v), so each modal
 coordinate obeys q̈ + 2ζω_j q̇ + ω_j² q = p_j(t): a damped oscillator under a harmonic force
-from rest, solved here in closed form, mode by mode, for every time and speed at once
-(Frýba 1972, ch. 1; Garg & Dukkipati 1984, ch. 10). After the force leaves, each mode
-vibrates freely.
+from rest, solved here in closed form, mode by mode (Frýba 1972, ch. 1; Garg & Dukkipati
+1984, ch. 10). After the force leaves, each mode vibrates freely. A train of forces is the
+sum of one force's response delayed by each axle's distance over the speed; the compiled
+:func:`raildyn.bridge._kernel.superpose` carries the forces that have left as one decaying
+phasor, so the cost grows with the samples plus the axles, not their product.
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn.bridge import _kernel
 
 __all__ = ["MovingForceResponse", "SimplySupportedBeam", "fryba_deflection", "moving_force"]
 
@@ -150,41 +153,6 @@ class MovingForceResponse:
         return np.abs(self.deflection).max(axis=1) / abs(self.static)
 
 
-def _modal_response(omega, zeta, Omega, t, crossing):
-    """Damped oscillators from rest under sin(Ω t) for t ≤ T, free after: q(t)/(unit force per unit mass)."""
-    wd = omega * np.sqrt(1.0 - zeta**2)
-    # The steady part X sin(Ω t − θ) and the transient that starts the motion from rest.
-    denominator = (omega**2 - Omega**2) ** 2 + (2 * zeta * omega * Omega) ** 2
-    a = (omega**2 - Omega**2) / denominator  # the sine part of the steady response
-    b = -2 * zeta * omega * Omega / denominator  # the cosine part
-    # q = a sin Ωt + b cos Ωt + e^{−ζωt}(c cos ω_d t + d sin ω_d t), q(0) = q̇(0) = 0
-    c = -b
-    d = (zeta * omega * c - a * Omega) / wd  # q̇(0) = aΩ − ζωc + ω_d d = 0
-
-    def forced(tt):
-        decay = np.exp(-zeta * omega * tt)
-        q = (
-            a * np.sin(Omega * tt)
-            + b * np.cos(Omega * tt)
-            + decay * (c * np.cos(wd * tt) + d * np.sin(wd * tt))
-        )
-        qd = (
-            a * Omega * np.cos(Omega * tt)
-            - b * Omega * np.sin(Omega * tt)
-            + decay
-            * ((d * wd - zeta * omega * c) * np.cos(wd * tt) - (c * wd + zeta * omega * d) * np.sin(wd * tt))
-        )
-        return q, qd
-
-    on = t <= crossing
-    q, _ = forced(np.minimum(t, crossing))
-    q_end, qd_end = forced(crossing)
-    tau = t - crossing  # free vibration after the force has left, from the state at its exit
-    decay = np.exp(-zeta * omega * tau)
-    free = decay * (q_end * np.cos(wd * tau) + (qd_end + zeta * omega * q_end) / wd * np.sin(wd * tau))
-    return np.where(on, q, free)
-
-
 def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None, samples: int = 400):
     """The deflection at a point of the beam as a constant force, or a train of them, crosses it.
 
@@ -232,20 +200,13 @@ def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None,
     L = beam.span
     x = L / 2 if position is None else _checks.scalar("position", position, low=0.0, high=L)
     n = _checks.integer("samples", samples, low=10, high=100_000)
-    crossing = L / v  # (s,)
-    end = (2 * L + delays[-1]) / v
+    end = (2 * L + delays[-1]) / v  # the last force off the span for as long as one crossing takes
     t = np.linspace(0.0, 1.0, n)[None, :] * end[:, None]  # (s, k)
-    j = np.arange(1, beam.modes + 1)[:, None, None]  # (modes, 1, 1)
-    omega = 2 * np.pi * beam.frequencies_hz[:, None, None]
-    Omega = j * np.pi * v[None, :, None] / L
+    j = np.arange(1, beam.modes + 1)
     shape = 2 / (beam.mass_per_length * L) * np.sin(j * np.pi * x / L)
     w = np.zeros_like(t)
-    for delay, P in zip(delays, loads, strict=True):
-        tk = t - delay / v[:, None]
-        q = _modal_response(
-            omega, beam.damping_ratio, Omega, np.maximum(tk, 0.0)[None], crossing[None, :, None]
-        )
-        w += np.where(tk >= 0.0, P * (shape * q).sum(axis=0), 0.0)
+    omega = 2 * np.pi * beam.frequencies_hz
+    _kernel.superpose(omega, float(beam.damping_ratio), L, v, end, n, delays, loads, shape, w)
     static = _largest_static(beam, x, delays, loads)
     return MovingForceResponse(v, t, w, float(x), float(static))
 
