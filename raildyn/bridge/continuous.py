@@ -297,6 +297,69 @@ class ContinuousBeam:
             [self.mass_per_length * self._inner(b, c, c) for b, c in zip(betas, shapes, strict=True)]
         )
 
+    def static_deflection(self, force_position, at, force=1.0) -> np.ndarray:
+        """The static deflection under a point force, m: one column of the beam's flexibility.
+
+        By the slope-deflection method, exact: the loaded span clamped at both ends first (its
+        deflection and end moments P a b²/L² and P a² b/L², Roark's formulas), then the support
+        slopes θ that restore moment equilibrium, K θ = −F with K the static stiffness (EI/L)[[4, 2],
+        [2, 4]] of every span, and each span's deflection from its end slopes,
+        θ_a s(1 − s/L)² − θ_b s²(1 − s/L)/L.
+
+        Parameters
+        ----------
+        force_position : float
+            a, m, from the left end, in [0, length].
+        at : array_like, (k,)
+            Positions where the deflection is wanted, m (finite, at least one; outside the beam: 0).
+        force : float
+            P, N (finite; downwards positive gives a downward, positive deflection).
+
+        Returns
+        -------
+        ndarray, (k,)
+            w, m.
+
+        Examples
+        --------
+        A single span: P L³/(48 EI) at midspan.
+
+        >>> beam = ContinuousBeam((20.0,), 1.0e10, 1.0e4)
+        >>> float(beam.static_deflection(10.0, [10.0], 1.0e5)[0]) == 1.0e5 * 20.0**3 / (48 * 1.0e10)
+        True
+        """
+        supports = self._supports
+        a_global = _checks.scalar("force_position", force_position, low=0.0, high=supports[-1])
+        xs = _checks.array("at", at, ndim=1, allow_empty=False)
+        P = _checks.scalar("force", force)
+        EI = self.flexural_rigidity
+        spans = np.array(self.spans)
+        n = spans.size
+        i = int(np.clip(np.searchsorted(supports, a_global, side="right") - 1, 0, n - 1))
+        L = spans[i]
+        a = a_global - supports[i]
+        b = L - a
+        K = np.zeros((n + 1, n + 1))
+        for j, Lj in enumerate(spans):
+            K[j : j + 2, j : j + 2] += EI / Lj * np.array([[4.0, 2.0], [2.0, 4.0]])
+        F = np.zeros(n + 1)
+        F[i : i + 2] = [-P * a * b**2 / L**2, P * a**2 * b / L**2]  # the clamped span's end actions
+        theta = np.linalg.solve(K, -F)
+        span_index = np.clip(np.searchsorted(supports, xs, side="right") - 1, 0, n - 1)
+        inside = (xs >= 0.0) & (xs <= supports[-1])
+        s = np.where(inside, xs - supports[span_index], 0.0)  # off the beam: computed at a support, then 0
+        Ls = spans[span_index]
+        xi = s / Ls
+        w = theta[span_index] * s * (1 - xi) ** 2 - theta[span_index + 1] * s * xi * (1 - xi)
+        here = span_index == i
+        left = here & (s <= a)
+        right = here & (s > a)
+        # The clamped span under P (Roark): x ≤ a, P b² x² (3aL − (3a + b)x)/(6 EI L³), mirrored beyond.
+        w[left] += P * b**2 * s[left] ** 2 * (3 * a * L - (3 * a + b) * s[left]) / (6 * EI * L**3)
+        r = L - s[right]
+        w[right] += P * a**2 * r**2 * (3 * b * L - (3 * b + a) * r) / (6 * EI * L**3)
+        return np.where(inside, w, 0.0)
+
     def mode_shapes(self, x, derivative: int = 0) -> np.ndarray:
         """φ_j(x) of the kept modes, or its first or second derivative; 0 off the beam.
 

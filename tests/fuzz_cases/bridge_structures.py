@@ -22,6 +22,15 @@ ENTRIES = [
         lambda: on(CONTINUOUS, [0.0, 5.0, 50.0], derivative=1),
         accepts={"x": "zero negative", "derivative": "zero"},  # off the beam: 0; derivative 0: φ
     ),
+    fuzz(
+        "raildyn.bridge.continuous.ContinuousBeam.static_deflection",
+        lambda: on(CONTINUOUS, 10.0, [0.0, 5.0, 30.0], 1.0e5),
+        accepts={
+            "force_position": "zero",  # on the end support: no deflection
+            "at": "zero negative",  # on a support or off the beam: 0
+            "force": "zero negative",
+        },
+    ),
     # ------------------------------------------------------------------ Winkler
     fuzz(
         "raildyn.bridge.winkler.WinklerBeam",
