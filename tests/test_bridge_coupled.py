@@ -255,3 +255,28 @@ def test_moving_forces_keep_the_sequence():
     load = moving_forces(AxleSequence([0.0, 3.0], [1.0, 2.0], "pair"))
     assert load.name == "pair" and load.system is None
     np.testing.assert_array_equal(load.axles.loads, [1.0, 2.0])
+
+
+def test_a_continuous_beam_of_one_span_crosses_as_the_simple_beam():
+    # The same modes by two constructions (the continuous beam's exact modes are the simple beam's for one
+    # span, to 1e-12, and scaled alike): the coupled crossings agree to 1e-9 of the peak.
+    from raildyn.bridge.continuous import ContinuousBeam
+
+    single = ContinuousBeam((20.0,), 1.0e10, 1.0e4, modes=5)
+    ours, simple = (crossing(beam, CAR, 40.0, time_step=2e-4) for beam in (single, BEAM))
+    assert np.abs(ours.deflection - simple.deflection).max() < 1e-9 * np.abs(simple.deflection).max()
+
+
+def test_a_slow_force_over_two_spans_draws_the_influence_line():
+    # Over two continuous 20 m spans a slow force bends the first span's middle as the static influence line
+    # does (ContinuousBeam.static_deflection, by slope-deflection): to 1 % of the peak, the modes
+    # kept (10) and the small dynamic part at α = 0.005 (order α). The second span lifts the first.
+    from raildyn.bridge.continuous import ContinuousBeam
+
+    two = ContinuousBeam((20.0, 20.0), 1.0e10, 1.0e4, modes=10)
+    v = 0.005 * 2 * two.frequencies_hz[0] * 20.0
+    run = crossing(two, FORCE, v, free_time=0.0)
+    x = np.clip(v * run.time, 0.0, 40.0)
+    line = two.static_deflection(10.0, x, 1.0e5)  # Maxwell: the force at x bends 10 m as one at 10 m bends x
+    assert np.abs(run.deflection - line).max() < 0.01 * np.abs(line).max()
+    assert run.deflection[x > 25.0].min() < 0.0
