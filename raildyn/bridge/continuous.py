@@ -378,10 +378,8 @@ class ContinuousBeam:
         Examples
         --------
         >>> beam = ContinuousBeam((20.0, 30.0), 1.0e10, 1.0e4, modes=3)
-        >>> beam.mode_shapes([0.0, 20.0, 50.0]).round(12)  # zero at every support
-        array([[ 0.,  0.,  0.],
-               [ 0.,  0.,  0.],
-               [ 0., -0.,  0.]])
+        >>> bool(np.all(np.abs(beam.mode_shapes([0.0, 20.0, 50.0])) < 1e-12))  # zero at every support
+        True
         """
         xs = _checks.array("x", x, ndim=1, allow_empty=False)
         d = _checks.integer("derivative", derivative, low=0, high=2)
