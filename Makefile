@@ -8,7 +8,7 @@ BOOK_HTML := book/_build/html
 # rewritten by another checkout's half-deleted venv and lose matplotlib's own fonts.
 export MPLCONFIGDIR := $(CURDIR)/.venv/matplotlib
 
-.PHONY: book test test-fast lab app bench figures lint clean chromium install
+.PHONY: book test test-fast lab app bench figures lint clean chromium fe-libs install
 
 # A fresh virtual environment with the pinned ranges, raildyn installed editable
 # so that the notebooks import the working tree.
@@ -28,7 +28,7 @@ book: $(STAMP)
 	@echo "The book is at $(abspath $(BOOK_HTML))/index.html"
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
-test: $(STAMP) chromium
+test: $(STAMP) chromium fe-libs
 	$(PY) -m pytest
 
 # Debian's chromium for the browser tests; Playwright drives it, nothing is downloaded.
@@ -38,8 +38,15 @@ chromium:
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq chromium >/dev/null; \
 	fi
 
+# Debian's BLAS and LAPACK, which OpenSeesPy's Linux wheel links to (the bridge's finite-element cross-check).
+fe-libs:
+	@if ! dpkg -s libblas3 liblapack3 >/dev/null 2>&1; then \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq libblas3 liblapack3 >/dev/null; \
+	fi
+
 ## test-fast: the unit and property tests only
-test-fast: $(STAMP)
+test-fast: $(STAMP) fe-libs
 	$(PY) -m pytest -m "not slow"
 
 ## lab: JupyterLab on the notebooks
