@@ -69,9 +69,10 @@ def arema_impact_factor(span, girder_spacing=None):
 
         I_r = 100/S percent.
 
-    The rocking term is taken from the Manual's rule as practitioners state it (20 % of the live
-    load times 5 ft over S); the vertical formulas follow the Manual as the brief of this module and
-    the Chu–Garg papers give them — the Manual's own text was not at hand to check them against.
+    The rocking term is the Manual's rule as a practitioner states it (20 % of the live load times
+    5 ft over S: H. Swanson, Eng-Tips thread 115832, "AREMA steel structures load combination"); the
+    vertical formulas follow the Manual as Chu, Garg & Dhar (1979) use it — the Manual's own text
+    was not at hand to check them against (they meet continuously at 80 ft, as they should).
 
     Parameters
     ----------
