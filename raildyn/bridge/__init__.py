@@ -1,11 +1,25 @@
 """Vehicle–bridge interaction (book chapter 10).
 
 * :mod:`raildyn.bridge.beam` — the simply supported beam under moving forces, modal and in closed form.
+* :mod:`raildyn.bridge.continuous` — a beam continuous over several spans, by its exact modes.
+* :mod:`raildyn.bridge.winkler` — an infinite beam on an elastic foundation under a moving force.
 * :mod:`raildyn.bridge.loads` — what crosses: axle sequences, moving masses, sprung masses, vehicles, trains.
+* :mod:`raildyn.bridge.trains` — the design trains of EN 1991-2 (HSLM-A) and regular trains.
 * :mod:`raildyn.bridge.coupled` — the crossing, bridge and vehicle coupled through the wheel forces.
+* :mod:`raildyn.bridge.codes` — what practice checks: impact factors, resonance, acceleration limits.
 """
 
 from raildyn.bridge.beam import MovingForceResponse, SimplySupportedBeam, fryba_deflection, moving_force
+from raildyn.bridge.codes import (
+    arema_impact_factor,
+    cancellation_spans,
+    comfort_acceleration_limit,
+    deck_acceleration_limit,
+    en1991_dynamic_factor,
+    en1991_real_train_factor,
+    resonance_speeds,
+)
+from raildyn.bridge.continuous import ContinuousBeam
 from raildyn.bridge.coupled import BridgeCrossing, crossing
 from raildyn.bridge.loads import (
     AxleSequence,
@@ -16,18 +30,32 @@ from raildyn.bridge.loads import (
     train,
     vehicle,
 )
+from raildyn.bridge.trains import HSLM_A, hslm, regular_train
+from raildyn.bridge.winkler import WinklerBeam
 
 __all__ = [
+    "HSLM_A",
     "AxleSequence",
     "BridgeCrossing",
+    "ContinuousBeam",
     "MovingForceResponse",
     "MovingLoad",
     "SimplySupportedBeam",
+    "WinklerBeam",
+    "arema_impact_factor",
+    "cancellation_spans",
+    "comfort_acceleration_limit",
     "crossing",
+    "deck_acceleration_limit",
+    "en1991_dynamic_factor",
+    "en1991_real_train_factor",
     "fryba_deflection",
+    "hslm",
     "moving_force",
     "moving_forces",
     "moving_mass",
+    "regular_train",
+    "resonance_speeds",
     "sprung_mass",
     "train",
     "vehicle",

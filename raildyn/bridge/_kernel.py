@@ -241,11 +241,14 @@ def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape
             cf = complex(c, -d)  # Re{(c − id) e^{iω_d t}} = c cos + d sin
             # the state at exit of one unit force, then the free vibration's phasor
             decay = np.exp(-zeta * w * T)
-            q_end = a * np.sin(Om * T) + b * np.cos(Om * T) + decay * (c * np.cos(wd * T) + d * np.sin(wd * T))
+            q_end = (
+                a * np.sin(Om * T) + b * np.cos(Om * T) + decay * (c * np.cos(wd * T) + d * np.sin(wd * T))
+            )
             qd_end = (
                 a * Om * np.cos(Om * T)
                 - b * Om * np.sin(Om * T)
-                + decay * ((d * wd - zeta * w * c) * np.cos(wd * T) - (c * wd + zeta * w * d) * np.sin(wd * T))
+                + decay
+                * ((d * wd - zeta * w * c) * np.cos(wd * T) - (c * wd + zeta * w * d) * np.sin(wd * T))
             )
             ce = complex(q_end, -(qd_end + zeta * w * q_end) / wd)
             step = np.exp(lam * dt)

@@ -31,6 +31,7 @@ from raildyn import _checks
 from raildyn.bridge import _kernel
 from raildyn.bridge.loads import AxleSequence, MovingLoad, moving_forces
 from raildyn.errors import SolverError
+from raildyn.plots import axes_or_new
 
 __all__ = ["BridgeCrossing", "crossing"]
 
@@ -95,7 +96,12 @@ class BridgeCrossing:
         _checks.array("contact_forces", self.contact_forces, shape=(k, None))
         _checks.array("modal", self.modal, shape=(k, 2, None))
         p = 0 if self.vehicle is None else _checks.array("vehicle", self.vehicle, shape=(k, 3, None)).shape[2]
-        _checks.strings("vehicle_labels", self.vehicle_labels, p)
+        labels = _checks.strings("vehicle_labels", self.vehicle_labels)
+        if len(labels) != p:
+            raise ValueError(
+                f"vehicle_labels must name the {p} coordinates of vehicle (none when vehicle is None), "
+                f"got {len(labels)}: {labels!r:.80}"
+            )
 
     @property
     def amplification(self) -> float:
@@ -133,9 +139,7 @@ class BridgeCrossing:
         list of Line2D
             The dynamic and the static line.
         """
-        import matplotlib.pyplot as plt
-
-        ax = ax or plt.figure().add_subplot()
+        ax = axes_or_new(ax)
         x = self.speed * self.time
         lines = ax.plot(x, 1e3 * self.deflection, label=f"{self.speed * 3.6:.0f} km/h")
         lines += ax.plot(x, 1e3 * self.static_deflection, "k--", lw=1, label="static")

@@ -101,6 +101,29 @@ ENTRIES += [
         },
     ),
     fuzz(
+        "raildyn.bridge.BridgeCrossing",
+        lambda: call(
+            30.0,
+            5.0,
+            np.linspace(0.0, 1.0, 4),
+            np.ones(4),
+            np.ones(4),
+            np.ones(4),
+            np.ones(4),
+            np.ones((4, 2)),
+            np.ones((4, 2, 3)),
+            np.ones((4, 3, 1)),
+            ("body z",),
+        ),  # fmt: skip
+        accepts={
+            **{name: "zero negative" for name in ("deflection", "static_deflection", "moment")},
+            **{name: "zero negative" for name in ("deck_acceleration", "contact_forces", "modal", "vehicle")},
+            "at": "zero negative",  # a point of the beam; the crossing checks it lies on the beam
+            "time": "zero negative",
+        },
+    ),
+    fuzz("raildyn.bridge.BridgeCrossing.plot", lambda: on(crossing(SHORT, PAIR, 40.0, time_step=1e-3))),
+    fuzz(
         "raildyn.bridge.BridgeCrossing.vehicle_acceleration",
         lambda: on(crossing(SHORT, sprung_mass(5000.0, 1.0e6), 40.0, time_step=1e-3), "body z"),
     ),
