@@ -213,14 +213,17 @@ def march(
 
 
 @numba.njit(cache=True)
-def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape, out):
-    """Closed-form modal responses of a simply supported beam to constant forces, summed; into out (s, k).
+def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape, out, accel):
+    """Closed-form modal responses of a simply supported beam to constant forces, summed into out (s, k),
+    and their second time derivative into accel (s, k).
 
     Mode j of unit modal load sin(Ω_j t) while a force is on the span (0 ≤ t − τ ≤ T = L/v) is
     q = a sin Ω(t−τ) + b cos Ω(t−τ) + Re{C_f e^{λ(t−τ)}}, λ = −ζω + iω_d, from rest; after it
     leaves, Re{C_e e^{λ(t−τ−T)}} from its state at exit. The forces that have left are carried
     as one complex sum, advanced by e^{λΔt} from sample to sample, so a long train costs
     O(samples + axles) per mode and speed, not their product. ``shape`` holds 2φ_j(x)/(mL).
+    The acceleration is the same sums differentiated twice: −Ω² on the harmonic part, λ² on the
+    exponentials.
     """
     n = omega.size
     a_count = delays.size
@@ -265,9 +268,12 @@ def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape
                 while entered < a_count and delays[entered] / v <= t:
                     entered += 1
                 total = gone.real
+                second = (lam * lam * gone).real
                 for k in range(first_on, entered):
                     s = t - delays[k] / v
-                    total += loads[k] * (
-                        a * np.sin(Om * s) + b * np.cos(Om * s) + (cf * np.exp(lam * s)).real
-                    )
+                    harmonic = a * np.sin(Om * s) + b * np.cos(Om * s)
+                    transient = cf * np.exp(lam * s)
+                    total += loads[k] * (harmonic + transient.real)
+                    second += loads[k] * (-Om * Om * harmonic + (lam * lam * transient).real)
                 out[si, i] += shape[j] * total
+                accel[si, i] += shape[j] * second

@@ -129,7 +129,11 @@ class MovingForceResponse:
     position : float
         x, m, on the span.
     static : float
-        The static deflection there under the force, m (the beam formula at midspan).
+        The largest static deflection there as the forces pass, m (the beam formula).
+    acceleration : ndarray, (s, k) or None
+        ẅ at ``position``, m/s² (downwards); None when not computed. Acceleration needs the
+        modes up to the frequency of interest (EN 1991-2 §6.4.6.5: 30 Hz, 1.5 f₁ or the third
+        mode, whichever is highest) and samples fine enough to catch their peaks.
 
     Each array is finite.
     """
@@ -139,6 +143,7 @@ class MovingForceResponse:
     deflection: np.ndarray
     position: float
     static: float
+    acceleration: np.ndarray | None = None
 
     def __post_init__(self):
         s = _checks.array("speeds", self.speeds, ndim=1, low=0.0, low_open=True, allow_empty=False).size
@@ -146,6 +151,15 @@ class MovingForceResponse:
         _checks.array("deflection", self.deflection, shape=(s, k))
         _checks.scalar("position", self.position, low=0.0)
         _checks.scalar("static", self.static)
+        if self.acceleration is not None:
+            _checks.array("acceleration", self.acceleration, shape=(s, k))
+
+    @property
+    def peak_acceleration(self) -> np.ndarray:
+        """The largest |ẅ| of each speed over the run, m/s² (what EN 1990 A2.4.4.2.1 limits)."""
+        if self.acceleration is None:
+            raise ValueError("acceleration was not computed for this response (acceleration None)")
+        return np.abs(self.acceleration).max(axis=1)
 
     @property
     def amplification(self) -> np.ndarray:
@@ -204,11 +218,11 @@ def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None,
     t = np.linspace(0.0, 1.0, n)[None, :] * end[:, None]  # (s, k)
     j = np.arange(1, beam.modes + 1)
     shape = 2 / (beam.mass_per_length * L) * np.sin(j * np.pi * x / L)
-    w = np.zeros_like(t)
+    w, acceleration = np.zeros_like(t), np.zeros_like(t)
     omega = 2 * np.pi * beam.frequencies_hz
-    _kernel.superpose(omega, float(beam.damping_ratio), L, v, end, n, delays, loads, shape, w)
+    _kernel.superpose(omega, float(beam.damping_ratio), L, v, end, n, delays, loads, shape, w, acceleration)
     static = _largest_static(beam, x, delays, loads)
-    return MovingForceResponse(v, t, w, float(x), float(static))
+    return MovingForceResponse(v, t, w, float(x), float(static), acceleration)
 
 
 def _influence(beam: SimplySupportedBeam, x, a):
