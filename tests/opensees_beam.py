@@ -49,8 +49,8 @@ class FEResponse:
     deflection : ndarray, (k,)
         w at ``position``, m, downwards positive.
     moment : ndarray, (k,)
-        Bending moment at the node nearest ``position``, N·m, sagging positive (the mean of the two
-        elements that meet there).
+        Bending moment at the node nearest ``position``, N·m, sagging positive: the mean of the two
+        elements that meet there, each's end moment K u less its axles' equivalent nodal moment.
     position : float
         x, m.
     frequencies_hz : ndarray, (2,)
@@ -84,7 +84,8 @@ class SprungMassFEResponse:
         The sprung mass's displacement from its static equilibrium on a rigid support, m,
         downwards positive.
     iterations : ndarray, (k,)
-        Fixed-point iterations each step needed for the contact force (0 after the wheel left).
+        ``ops.analyze(1)`` calls each step took to settle the contact force (0 after the wheel left;
+        3 as a rule: the previous force, the force it gives, the secant's).
     position : float
         x, m.
     seconds : float
