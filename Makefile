@@ -60,7 +60,7 @@ app: $(STAMP)
 ## bench: widget and model timings against their baselines, same run
 # One BLAS thread: on a shared 2-core machine, thread scheduling otherwise swings the
 # matrix-heavy cases (raildyn and baseline alike) by more than the ratios measured.
-bench: $(STAMP)
+bench: $(STAMP) fe-libs
 	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 $(PY) benchmarks/run.py
 
 ## figures: write every registered book figure
