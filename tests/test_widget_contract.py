@@ -31,6 +31,7 @@ from raildyn.widgets import (
     chapter07,
     chapter08,
     chapter09,
+    chapter10,
 )
 from raildyn.widgets._core import Recipe, _nearest
 
@@ -70,6 +71,9 @@ MOVES = {
     chapter08.stiffness_tradeoff: dict(conicity=0.3, radius=900.0),
     chapter09.string_lining: dict(radius=400.0, force_kn=-600.0),
     chapter09.braking_run_widget: dict(slack_mm=50.0, signal_speed=150.0, speed_kmh=40.0, cars=20),
+    chapter10.moving_load_explorer: dict(speed_kmh=300.0, position=0.8, damping=0.02),
+    chapter10.train_resonance: dict(coach_length=22.0, span=25.0, frequency_hz=5.0),
+    chapter10.load_models: dict(speed_kmh=150.0),
 }
 
 
