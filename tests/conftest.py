@@ -1,9 +1,12 @@
-"""Shared test set-up: a display-free matplotlib that every test leaves as it found it."""
+"""Shared test set-up: a display-free matplotlib that every test leaves as it found it, the book built once,
+and the record of every model checked against its independent reference, from which the book's validation
+page is generated (``book/_generated/validation.json``, read by ``book/_ext/raildyn_book.py``)."""
 
 import matplotlib
 
 matplotlib.use("Agg")
 
+import json  # noqa: E402
 import os  # noqa: E402
 import subprocess  # noqa: E402
 import sys  # noqa: E402
@@ -49,7 +52,66 @@ def built_book():
         "-n",
         "--keep-going",
     ]
+    write_references()  # the validation page reads the checks recorded so far in this session
     # As `make book`: no progress bars, which a page without a kernel would show frozen at 0 %.
     env = {**os.environ, "RAILDYN_PROGRESS": "0"}
     proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900, env=env)
     return proc, ROOT / "book" / "_build" / "html"
+
+
+# -- the validation page's record ------------------------------------------------------------------------
+
+REFERENCES = ROOT / "book" / "_generated" / "validation.json"
+_KINDS = ("closed form", "published", "python-control", "scipy", "finite elements", "independent model")
+_RECORDED: dict[str, dict] = {}
+
+
+@pytest.fixture
+def reference(request):
+    """Check a model against its independent reference, and record the check for the validation page.
+
+    Call it as ``reference(chapter, model, against, kind, error, tolerance)``: the relative (or stated)
+    error measured and the tolerance the test holds it to; it asserts ``error <= tolerance``. ``kind`` is
+    one of ``_KINDS``. The page lists every such check with its numbers, so nothing on it is typed by hand.
+    """
+    calls = []
+
+    def record(
+        chapter: int, model: str, against: str, kind: str, error: float, tolerance: float, unit="rel."
+    ):
+        assert kind in _KINDS, f"kind must be one of {_KINDS}, got {kind!r}"
+        error, tolerance = float(error), float(tolerance)
+        key = f"{request.node.nodeid}#{len(calls)}"
+        calls.append(key)
+        _RECORDED[key] = dict(
+            chapter=int(chapter), model=model, reference=against, kind=kind, error=error,
+            tolerance=tolerance, unit=unit, within=bool(error <= tolerance), test=request.node.nodeid,
+        )  # fmt: skip
+        assert error <= tolerance, (
+            f"{model} against {against}: error {error:.3g} above tolerance {tolerance:.3g}"
+        )
+
+    return record
+
+
+def write_references() -> None:
+    """Merge this session's checks into the record; drop those of test files that no longer exist."""
+    if not _RECORDED:
+        return
+    old = json.loads(REFERENCES.read_text()) if REFERENCES.exists() else {}
+    kept = {k: v for k, v in old.items() if (ROOT / k.split("::")[0]).exists()}
+    REFERENCES.parent.mkdir(parents=True, exist_ok=True)
+    REFERENCES.write_text(json.dumps({**kept, **_RECORDED}, indent=1, sort_keys=True))
+
+
+def pytest_collection_modifyitems(config, items):
+    """Mark the reference checks (``pytest -m reference`` runs them alone) and build the book last."""
+    for item in items:
+        if "reference" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.reference)
+    # stable: the book's tests move to the end, so its validation page sees every check of the session
+    items.sort(key=lambda item: "built_book" in getattr(item, "fixturenames", ()))
+
+
+def pytest_sessionfinish(session, exitstatus):
+    write_references()

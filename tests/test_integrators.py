@@ -157,7 +157,7 @@ def test_energy_conserved_for_any_chain_and_step(masses, ratio, dt, seed):
 
 
 @pytest.mark.parametrize("ratio", [0.001, 0.01, 0.05, 0.1, 0.2, 0.3, 0.31])
-def test_period_elongation_closed_forms(ratio):
+def test_period_elongation_closed_forms(ratio, reference):
     omega_dt = TWO_PI * ratio
     # Average acceleration: ω̄Δt = 2 arctan(ωΔt/2); central difference: cos ω̄Δt = 1 − (ωΔt)²/2.
     aa = omega_dt / (2 * np.arctan(omega_dt / 2)) - 1
@@ -165,6 +165,16 @@ def test_period_elongation_closed_forms(ratio):
     # The computed phase arg λ carries a rounding of ~1e-16 absolute, so PE = ωΔt/arg λ − 1 is good
     # to ~1e-16/(ωΔt) absolute: 1e-12 covers the smallest step here.
     assert ri.period_elongation("average_acceleration", ratio) == pytest.approx(aa, rel=1e-9, abs=1e-12)
+    if ratio == 0.1:
+        got = ri.period_elongation("average_acceleration", ratio)
+        reference(
+            2,
+            "period elongation of average acceleration at Δt/T = 0.1",
+            "2 arctan(ωΔt/2) (Bathe 1996)",
+            "closed form",
+            abs(got / aa - 1),
+            1e-9,
+        )
     assert ri.period_elongation("central_difference", ratio) == pytest.approx(cd, rel=1e-9, abs=1e-12)
     assert ri.amplitude_decay("average_acceleration", ratio) == pytest.approx(0.0, abs=1e-10)
     assert ri.amplitude_decay("central_difference", ratio) == pytest.approx(0.0, abs=1e-10)

@@ -146,7 +146,7 @@ def test_sdof_white_noise_numerical_integral_matches_closed_form():
     assert discretisation < 1e-4 * exact  # the bound is meaningful, not vacuous
 
 
-def test_sdof_white_noise_against_lyapunov():
+def test_sdof_white_noise_against_lyapunov(reference):
     # state z = (x, ẋ), ż = A z + B F. One-sided G0 per rad/s is two-sided G0/2, whose autocorrelation
     # is 2π(G0/2) δ(τ): noise intensity W = π G0. The stationary covariance P solves A P + P Aᵀ + B W Bᵀ = 0.
     G0 = 4.0e4
@@ -154,7 +154,15 @@ def test_sdof_white_noise_against_lyapunov():
     B = np.array([[0.0], [1.0 / MASS]])
     P = scipy.linalg.solve_continuous_lyapunov(A, -(B @ B.T) * np.pi * G0)
     # Bartels-Stewart on a 2x2: error ~ condition (~1/ζ) times machine epsilon; 1e-10 is ample
-    assert P[0, 0] == pytest.approx(rv.sdof_white_noise_mean_square(MASS, DAMPING, STIFFNESS, G0), rel=1e-10)
+    ours = rv.sdof_white_noise_mean_square(MASS, DAMPING, STIFFNESS, G0)
+    reference(
+        1,
+        "SDOF mean square under white noise",
+        "Lyapunov equation (scipy)",
+        "scipy",
+        abs(ours / P[0, 0] - 1),
+        1e-10,
+    )
     # velocity: σ_v² = π G0/(2 m c) (Crandall & Mark 1963, with G0 = 2 S0)
     assert P[1, 1] == pytest.approx(np.pi * G0 / (2 * MASS * DAMPING), rel=1e-10)
     assert abs(P[0, 1]) <= 1e-10 * np.sqrt(P[0, 0] * P[1, 1])  # x and ẋ are uncorrelated when stationary

@@ -19,14 +19,23 @@ LOCO = train.VEHICLES["SD40-2"]
 # --- tier 2: published worked examples and data -------------------------------------------------
 
 
-def test_davis_original_worked_example_7200_ton_train():
+def test_davis_original_worked_example_7200_ton_train(reference):
     # 1970 Car & Locomotive Cyclopedia p. 842 form of the original Davis formula (A = 88 ft², so
     # C·A = 0.044), worked for a 7,200-ton train of 286,000 lb four-axle cars at 50 mph, level
     # tangent track {trains_forum_resistance}: terms 9,360 + 5,840.6 + 16,200 + 5,538 lbf.
     # The printed terms are rounded to the pound (the last to 1 lbf), so the total is held to 1 lbf.
     cars = 7200 / 143
     per_car = train.davis_resistance(50.0, 143.0, 4, 88.0, units="US")
-    assert per_car * cars == pytest.approx(9360 + 5840.6 + 16200 + 5538, abs=1.0)
+    printed = 9360 + 5840.6 + 16200 + 5538
+    reference(
+        9,
+        "Davis resistance of a 7,200-ton train at 50 mph",
+        "Car & Locomotive Cyclopedia 1970, p. 842",
+        "published",
+        abs(per_car * cars - printed),
+        1.0,
+        "lbf",
+    )
 
 
 def test_davis_si_matches_us_units():

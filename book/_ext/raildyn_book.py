@@ -9,9 +9,24 @@
 * The executed notebooks carry the kernel's widget state. Without a kernel the
   state is dead weight (hundreds of kB of PNG per page), and every raildyn widget
   already brings its own kernel-free HTML, so the state is left out of the pages.
+* The ``validation-table`` directive writes the validation page's tables from the
+  checks the test suite recorded (``book/_generated/validation.json``, see
+  ``tests/conftest.py``); when there is no record yet it runs those checks first
+  (``pytest -m reference``), so ``make book`` alone still gets a complete page.
 """
 
+import json
 import re
+import subprocess
+import sys
+from collections import defaultdict
+from pathlib import Path
+
+from docutils import nodes
+from sphinx.util.docutils import SphinxDirective
+
+_ROOT = Path(__file__).resolve().parents[2]
+_RECORD = _ROOT / "book" / "_generated" / "validation.json"
 
 _LITERAL = re.compile(r"(``.*?``)")
 
@@ -49,7 +64,71 @@ def set_colour_mode(app, pagename, templatename, context, doctree):
         context["default_mode"] = "auto"
 
 
+def _record() -> dict:
+    """The recorded checks; the reference tests are run first when nothing is recorded."""
+    if not _RECORD.exists():
+        subprocess.run(
+            [sys.executable, "-m", "pytest", "-q", "-m", "reference", "-p", "no:cacheprovider", "tests"],
+            cwd=_ROOT, capture_output=True, text=True, timeout=1800, check=False,
+        )  # fmt: skip
+    return json.loads(_RECORD.read_text()) if _RECORD.exists() else {}
+
+
+def _table(rows) -> nodes.table:
+    """A docutils table with a header row."""
+    header = ("model", "reference", "kind", "error", "tolerance", "within")
+    table = nodes.table(classes=["validation"])
+    group = nodes.tgroup(cols=len(header))
+    table += group
+    group.extend(nodes.colspec(colwidth=w) for w in (30, 34, 12, 8, 8, 6))
+    head, body = nodes.thead(), nodes.tbody()
+    group += head
+    group += body
+    for target, cells in ((head, header), *((body, r) for r in rows)):
+        row = nodes.row()
+        for cell in cells:
+            entry = nodes.entry()
+            entry += nodes.paragraph(text=str(cell))
+            row += entry
+        target += row
+    return table
+
+
+def _unit(check) -> str:
+    """A check's unit after its numbers; none for a relative error."""
+    return f" {check['unit']}" if check.get("unit", "rel.") != "rel." else ""
+
+
+class ValidationTable(SphinxDirective):
+    """Every recorded check of a model against its reference, by chapter, with its error and tolerance."""
+
+    def run(self):
+        record = _record()
+        if not record:
+            return [nodes.paragraph(text="No reference check has been recorded: run `make test`.")]
+        by_chapter = defaultdict(list)
+        for check in sorted(record.values(), key=lambda c: (c["chapter"], c["model"], c["reference"])):
+            by_chapter[check["chapter"]].append(check)
+        within = sum(c["within"] for c in record.values())
+        out = [
+            nodes.paragraph(
+                text=f"{len(record)} checks of {len({c['model'] for c in record.values()})} models; "
+                f"{within} of them ({100 * within / len(record):.0f} %) within their tolerance."
+            )
+        ]
+        for chapter, checks in sorted(by_chapter.items()):
+            section = nodes.rubric(text=f"Chapter {chapter}")
+            rows = [
+                (c["model"], c["reference"], c["kind"], f"{c['error']:.2g}{_unit(c)}",
+                 f"{c['tolerance']:.2g}{_unit(c)}", "yes" if c["within"] else "NO")
+                for c in checks
+            ]  # fmt: skip
+            out += [section, _table(rows)]
+        return out
+
+
 def setup(app):
+    app.add_directive("validation-table", ValidationTable)
     app.connect("autodoc-process-docstring", escape_bars)
     # Before myst-nb (priority 500) adds the page's scripts.
     app.connect("html-page-context", drop_widget_state, priority=400)
