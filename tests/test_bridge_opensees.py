@@ -66,13 +66,21 @@ PEAK_RTOL = 1e-3
         (0.55, 0.02, "modal"),
     ],
 )
-def test_a_single_force_matches_the_modal_solution(alpha, zeta, damping_model):
+def test_a_single_force_matches_the_modal_solution(alpha, zeta, damping_model, reference):
     v = _speed(alpha)
     fe = fe_moving_forces(L, EI, MASS, zeta, [0.0], [P], v, damping_model=damping_model)
-    reference = moving_force(_beam(zeta), v, P, samples=fe.time.size)
-    assert _history_error(fe, reference) < HISTORY_TOL
-    daf = np.abs(fe.deflection).max() / reference.static
-    assert daf == pytest.approx(reference.amplification[0], rel=PEAK_RTOL)
+    modal = moving_force(_beam(zeta), v, P, samples=fe.time.size)
+    reference(
+        10,
+        f"moving force over a simple span, α = {alpha:g}, ζ = {zeta:g}",
+        f"OpenSeesPy beam elements ({damping_model} damping)",
+        "finite elements",
+        _history_error(fe, modal),
+        HISTORY_TOL,
+        "of static",
+    )
+    daf = np.abs(fe.deflection).max() / modal.static
+    assert daf == pytest.approx(modal.amplification[0], rel=PEAK_RTOL)
     # The mesh's own first two frequencies: the consistent-mass Hermite element gives them to ~1e-6.
     np.testing.assert_allclose(fe.frequencies_hz, [F1, 4 * F1], rtol=1e-6)
 
@@ -259,7 +267,7 @@ def test_a_stiffening_spring_tends_to_a_moving_mass():
 
 
 @pytest.mark.parametrize(("alpha", "zeta", "damping_model"), [(0.25, 0.0, "rayleigh"), (0.5, 0.02, "modal")])
-def test_the_coupled_crossing_matches_the_finite_element_coupling(alpha, zeta, damping_model):
+def test_the_coupled_crossing_matches_the_finite_element_coupling(alpha, zeta, damping_model, reference):
     # raildyn's coupled march (raildyn.bridge.coupled.crossing: the modal beam and the vehicle in one
     # Newmark system, assembled as the wheel moves) against the FE beam coupled to the same vehicle
     # by iteration on the contact force. Both step by average acceleration at the same Δt, so this
@@ -281,7 +289,15 @@ def test_the_coupled_crossing_matches_the_finite_element_coupling(alpha, zeta, d
     weight = (VEHICLE + WHEEL) * G
     static = weight * L**3 / (48 * EI)
     on = v * fe.time <= L
-    assert np.abs(fe.deflection - w).max() < 2e-4 * static
+    reference(
+        10,
+        f"coupled sprung mass over a simple span, α = {alpha:g}, ζ = {zeta:g}",
+        "OpenSeesPy beam coupled by iteration",
+        "finite elements",
+        np.abs(fe.deflection - w).max() / static,
+        2e-4,
+        "of static",
+    )
     assert np.abs(fe.deflection).max() == pytest.approx(np.abs(run.deflection).max(), rel=1e-4)
     assert np.abs(fe.body_displacement - z)[on].max() < 1e-3 * np.abs(z[on]).max()
     assert np.abs(fe.contact_force - force)[on].max() < 0.01 * weight

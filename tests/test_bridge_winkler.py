@@ -56,13 +56,20 @@ def test_critical_speed_formula():
     assert beam.critical_speed == pytest.approx(1.6e11**0.25, rel=1e-14)
 
 
-def test_slow_force_is_the_static_deflection():
+def test_slow_force_is_the_static_deflection(reference):
     # v → 0: the steady state is Hetényi's static deflection. At v = 1e-6 v_cr the speed enters as α² = 1e-12;
     # tolerance 1e-9 of the peak (measured 1e-13).
     x = np.linspace(-8.0, 8.0, 41)
     slow = RAIL.steady_deflection(x, 1e-6 * RAIL.critical_speed, P)
     static = RAIL.static_deflection(x, P)
-    np.testing.assert_allclose(slow, static, atol=1e-9 * static.max())
+    reference(
+        10,
+        "Winkler beam under a slow force (v = 1e-6 v_cr)",
+        "Hetényi 1946 static deflection",
+        "closed form",
+        np.abs(slow - static).max() / static.max(),
+        1e-9,
+    )
     np.testing.assert_allclose(RAIL.steady_deflection(x, 0.0, P), static, atol=1e-12 * static.max())
 
 
@@ -70,7 +77,7 @@ def test_slow_force_is_the_static_deflection():
     ("damping", "ratio"),
     [(0.0, 0.3), (0.0, 0.7), (0.0, 0.9), (2.0e4, 0.5), (2.0e4, 1.5), (2.0e5, 3.0)],
 )
-def test_closed_form_is_the_fourier_integral(damping, ratio):
+def test_closed_form_is_the_fourier_integral(damping, ratio, reference):
     # The residue sum against the integral it sums, by adaptive quadrature (relative tolerance 1e-11, tail
     # 3e-10): agreement to 1e-7 of the peak (measured 3e-9 to 2e-8). Undamped below the critical speed; with
     # damping (ζ = 0.18 and 1.8) below and beyond it.
@@ -79,7 +86,14 @@ def test_closed_form_is_the_fourier_integral(damping, ratio):
     x = np.array([-3.0, -1.0, -0.2, 0.0, 0.7, 2.5, 5.0])
     closed = beam.steady_deflection(x, v, P)
     numeric = np.array([fourier(beam, xx, v, P) for xx in x])
-    np.testing.assert_allclose(closed, numeric, atol=1e-7 * np.abs(closed).max())
+    reference(
+        10,
+        f"Winkler beam under a moving force, v/v_cr = {ratio:g}, c = {damping:g} N·s/m²",
+        "Fourier integral by quadrature (scipy)",
+        "scipy",
+        np.abs(closed - numeric).max() / np.abs(closed).max(),
+        1e-7,
+    )
 
 
 def test_undamped_deflection_grows_without_bound_towards_the_critical_speed():

@@ -36,13 +36,20 @@ def _balance_speed(radius: float, cant: float) -> float:
     return float(np.sqrt(GRAVITY * radius * cant / 1.5))
 
 
-def test_the_free_wheelset_rolls_at_the_pure_rolling_offset():
+def test_the_free_wheelset_rolls_at_the_pure_rolling_offset(reference):
     # r₀a/(λR) towards the outer rail, square to the rails, no creep force: exact but for rounding.
     ws = Wheelset(**_PLAIN).free()
     for radius in (300.0, 600.0, 2500.0):
         state = steady_curving(ws, _balance_speed(radius, 0.1), radius, cant=0.1)
         expected = pure_rolling_offset(ws.rolling_radius, ws.half_gauge, ws.conicity, radius)
-        assert state.offset[0] == pytest.approx(expected, rel=1e-12)
+        reference(
+            8,
+            f"free wheelset's steady offset on a {radius:g} m curve",
+            "r₀a/(λR), pure rolling",
+            "closed form",
+            abs(state.offset[0] / expected - 1),
+            1e-12,
+        )
         assert abs(state.angle_of_attack[0]) < 1e-12
         assert abs(state.longitudinal_creep_force[0]) < 1e-6 * ws.f11 * ws.half_gauge / radius
 

@@ -118,7 +118,7 @@ def test_self_steering_curving_is_the_symbolic_solution_of_the_four_equations():
 
 
 @pytest.mark.parametrize(("k_psi", "k_y"), _PAIRS)
-def test_steady_curving_of_the_bogie_reproduces_the_closed_form(k_psi, k_y):
+def test_steady_curving_of_the_bogie_reproduces_the_closed_form(k_psi, k_y, reference):
     # The "published linear steady-curving result" of issue 17: the closed form for two wheelsets
     # joined by a bending and a shear stiffness is derived here (test above, by sympy) by the
     # method of Wickens (2003, ch. 7) after Boocock (1969) — we do not quote the published
@@ -132,6 +132,15 @@ def test_steady_curving_of_the_bogie_reproduces_the_closed_form(k_psi, k_y):
         closed = self_steering_curving(bogie, radius)
         np.testing.assert_allclose(state.offset, closed.offset, rtol=1e-9)
         np.testing.assert_allclose(state.angle_of_attack, closed.angle_of_attack, rtol=1e-9)
+    gap = np.abs(state.angle_of_attack / closed.angle_of_attack - 1).max()
+    reference(
+        8,
+        f"bogie's angle of attack, k_ψ = {k_psi:.2g}, k_y = {k_y:.2g}",
+        "two wheelsets in bending and shear (Wickens 2003)",
+        "closed form",
+        gap,
+        1e-9,
+    )
 
 
 def test_the_rigid_bogie_and_the_radial_limits():
