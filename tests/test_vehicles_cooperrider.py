@@ -96,7 +96,7 @@ def _bisect_critical_speed(system, low, high, step=5.0, tol=0.01):
     return 0.5 * (a + b)
 
 
-def test_cooperrider_critical_speed_matches_bisection_on_control_poles():
+def test_cooperrider_critical_speed_matches_bisection_on_control_poles(reference):
     # raildyn's batched eigenvalues and Brent's method against python-control's poles and plain
     # bisection: the same speed to 0.1 m/s. The range is a coarse guard: on a 1:40 cone the
     # kinematic frequency of the wheelsets, V√(λ/(a r₀)), reaches the ~10 Hz of their lateral
@@ -104,8 +104,16 @@ def test_cooperrider_critical_speed_matches_bisection_on_control_poles():
     cs = stability.critical_speed(COOPERRIDER_CAR, (1.0, 400.0))
     assert cs.found
     assert 150.0 < cs.speed < 300.0
-    reference = _bisect_critical_speed(COOPERRIDER_CAR.linear_system(), 5.0, 400.0)
-    assert cs.speed == pytest.approx(reference, abs=0.1)
+    bisected = _bisect_critical_speed(COOPERRIDER_CAR.linear_system(), 5.0, 400.0)
+    reference(
+        7,
+        "critical speed of Cooperrider's car",
+        "bisection on python-control poles",
+        "python-control",
+        abs(cs.speed - bisected),
+        0.1,
+        "m/s",
+    )
 
 
 def _hunting_and_kinematic_limits(car):
