@@ -427,7 +427,7 @@ LOAD_MODELS = Recipe(
 def load_models():
     """One car crossing the chapter's beam as four models: forces, masses, sprung masses, the full car.
 
-    The Manchester car in the vertical plane (:class:`raildyn.vehicles.VerticalCar`, 1813 kg
+    The Manchester car in the vertical plane (:class:`raildyn.vehicles.vertical.VerticalCar`, 1813 kg
     wheelsets) on its four axles crosses the 20 m beam (f₁ = 3.93 Hz, 1 % damping, three modes)
     as four moving loads with the same axle loads and spacing: constant forces; rigid masses
     (each axle's whole load riding on the rail); Biggs's sprung masses (a quarter of the body and
