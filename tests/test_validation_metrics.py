@@ -3,8 +3,9 @@
 Sources of the closed forms: Sprague & Geers (2004) and Schwer (2007) for M, P and C;
 Theil (1961) for U; IEC 61260-1:2014 for the one-third-octave band edges (base 10);
 Bendat & Piersol (2010), ch. 6 and 9, for H1, the coherence and their random errors;
-Welch (1967) for the PSD; David & Nagaraja (2003), *Order Statistics*, §10.2, for the
-standard error of a sample quantile.
+Welch (1967) for the PSD; the asymptotic normality of a central sample quantile (e.g. H. A.
+David and H. N. Nagaraja, *Order Statistics*, 3rd ed., Wiley, 2003, ch. 10) for its
+standard error.
 """
 
 from __future__ import annotations
@@ -308,7 +309,7 @@ def test_frequency_results_plot():
 
 def test_percentiles_of_a_gaussian_record():
     # For a Gaussian record the 0.15 % and 99.85 % percentiles lie at ∓2.968σ (scipy.stats.norm.ppf).
-    # The standard error of a sample quantile is √(p(1 − p)/n)/φ(z) (David & Nagaraja 2003, §10.2):
+    # The standard error of a sample quantile is √(p(1 − p)/n)/φ(z) (David & Nagaraja 2003, ch. 10):
     # 0.018σ here; the test allows 5 of them.
     n, sigma = 200_000, 3.0
     x = sigma * _rng(11).standard_normal(n)
@@ -405,8 +406,10 @@ def test_degenerate_records_are_refused_by_name():
         nrmse(np.ones(100), m)
     with pytest.raises(ValueError, match="normalisation must be one of"):
         nrmse(m, m, normalisation="max")
-    with pytest.raises(ValueError, match="excitation must not be zero"):
+    with pytest.raises(ValueError, match="excitation must not be constant"):
         frequency_response_h1(np.zeros(100), m, 0.01)
+    with pytest.raises(ValueError, match="excitation must not be constant"):
+        frequency_response_h1(np.full(100, 0.1), m, 0.01)
     with pytest.raises(ValueError, match="response must have as many samples as excitation"):
         frequency_response_h1(m, m[:90], 0.01)
     with pytest.raises(ValueError, match="resolves no one-third-octave band"):

@@ -7,7 +7,8 @@ Three groups, each on records sampled at one uniform step:
   :func:`compare`, which gives all of them at once as an :class:`Agreement` with a
   ``.plot``;
 * **in frequency**: PSDs come from :func:`raildyn.random_vibration.welch_psd`, the
-  package's one Welch estimator (one-sided, per rad/s); here :func:`third_octave_rms`
+  package's one Welch estimator (one-sided, per rad/s; ``welch_psd(np.stack([measured,
+  predicted]), dt)`` gives both at once); here :func:`third_octave_rms`
   (RMS in the one-third-octave bands of IEC 61260-1) and :func:`frequency_response_h1`
   (the H1 estimate and the coherence from an excitation and a response record);
 * **the statistics of acceptance testing** (UIC 518, EN 14363): :func:`percentiles`,
@@ -21,7 +22,11 @@ References
 ----------
 * H. Theil, *Economic Forecasts and Policy*, 2nd ed., North-Holland, 1961 (the
   inequality coefficient U, bounded form); *Applied Economic Forecasting*,
-  North-Holland, 1966 (the unbounded form, relative to the measurement alone).
+  North-Holland, 1966 (an unbounded coefficient, for predicted changes; not used here).
+* K. Pearson, "Mathematical contributions to the theory of evolution. III. Regression,
+  heredity and panmixia", *Phil. Trans. R. Soc. A* 187, 253–318, 1896 (the correlation).
+* R. J. Hyndman and Y. Fan, "Sample quantiles in statistical packages", *The American
+  Statistician* 50(4), 361–365, 1996 (definition 7: numpy's default percentile).
 * M. A. Sprague and T. L. Geers, "A spectral-element method for modelling cavitation
   in transient fluid–structure interaction", *Int. J. Numer. Meth. Engng* 60(15),
   2467–2499, 2004 (the magnitude, phase and combined errors).
@@ -227,7 +232,7 @@ def nrmse(measured, predicted, *, normalisation: str = "range") -> float:
 def correlation(measured, predicted) -> float:
     """Pearson's correlation coefficient of the two records, dimensionless.
 
-    r = Σ (m − m̄)(p − p̄) / √(Σ (m − m̄)² Σ (p − p̄)²) (Pearson 1895): 1 for a prediction
+    r = Σ (m − m̄)(p − p̄) / √(Σ (m − m̄)² Σ (p − p̄)²) (Pearson 1896): 1 for a prediction
     that is a positive gain and offset of the measurement, blind to amplitude errors.
 
     Parameters
@@ -264,8 +269,8 @@ def theil_u(measured, predicted) -> float:
 
     U = √(mean (p − m)²) / (√(mean p²) + √(mean m²)) (Theil 1961): 0 for a perfect
     prediction, 1 for one of the wrong sign everywhere (p = −k m) or a zero one. For a pure
-    gain p = g m with g >= 0, U = |g − 1| / (g + 1). (Theil's 1966 form divides by
-    √(mean m²) alone and is unbounded; it equals the ``"rms"`` :func:`nrmse`.)
+    gain p = g m with g >= 0, U = |g − 1| / (g + 1). Theil (1966) also gave an unbounded
+    coefficient, for predicted and actual changes; it is not computed here.
 
     Parameters
     ----------
@@ -702,7 +707,7 @@ def frequency_response_h1(excitation, response, dt, *, nperseg=None) -> Frequenc
 
     H1(ω) = G_xy(ω)/G_xx(ω) and γ²(ω) = |G_xy|²/(G_xx G_yy) (Bendat & Piersol 2010, ch. 6),
     with the auto- and cross-spectra by Welch's method (``scipy.signal.csd`` and
-    ``scipy.signal.welch``: Hann window, 50 % overlap, mean removed; G_xy ∝ E[X* Y]).
+    ``scipy.signal.welch``: Hann window, 50 % overlap, mean removed; G_xy ∝ E[conj(X) Y]).
     H1 is unbiased by noise on the response and biased low by noise on the excitation;
     γ² near 1 says the response is a linear function of the excitation, near 0 that it is
     not. With a single segment γ² is 1 everywhere: use several (``nperseg`` < n).
@@ -710,7 +715,7 @@ def frequency_response_h1(excitation, response, dt, *, nperseg=None) -> Frequenc
     Parameters
     ----------
     excitation : array_like, shape (n,)
-        The input x(t), any unit, finite, n >= 8, not zero everywhere.
+        The input x(t), any unit, finite, n >= 8, not constant.
     response : array_like, shape (n,)
         The output y(t) on the same time base, any unit, finite.
     dt : float
@@ -737,8 +742,8 @@ def frequency_response_h1(excitation, response, dt, *, nperseg=None) -> Frequenc
     nperseg = min(256, x.size) if nperseg is None else _checks.integer("nperseg", nperseg, low=8, high=x.size)
     u, su = _scaled(x)
     v, sv = _scaled(y)
-    if su == 0.0:
-        raise ValueError("excitation must not be zero everywhere: H1 divides by its spectrum")
+    if np.ptp(u) == 0.0:
+        raise ValueError("excitation must not be constant (or zero): H1 divides by its spectrum")
     u, v = u - np.mean(u), v - np.mean(v)
     f, g_uu = scipy.signal.welch(u, fs=1.0, nperseg=nperseg)
     _, g_vv = scipy.signal.welch(v, fs=1.0, nperseg=nperseg)
@@ -765,8 +770,8 @@ def percentiles(record, percent=(0.15, 99.85)) -> np.ndarray:
     forces, Y/Q, accelerations) by their 0.15 % and 99.85 % percentiles, and the
     quasi-static ones by the 50 % percentile (see the module's references). The
     percentile here is numpy's linear interpolation between order statistics
-    (Hyndman & Fan 1996, definition 7); the standards' own class-based rule is not
-    reproduced, and differs by at most one sample's step.
+    (Hyndman & Fan 1996, definition 7); whether it matches the standards' own rule to the
+    sample is not checked here.
 
     Parameters
     ----------
