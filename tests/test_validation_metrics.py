@@ -16,6 +16,8 @@ import pytest
 import scipy.integrate
 import scipy.signal
 import scipy.stats
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from raildyn.random_vibration import welch_psd
 from raildyn.validation.metrics import (
@@ -160,6 +162,31 @@ def test_compare_gathers_the_single_metrics_and_plots():
     _, ax = plt.subplots()
     lines = compare(m, p).plot(ax)
     np.testing.assert_array_equal(lines["measured"].get_xdata(), np.arange(m.size))
+
+
+@given(st.integers(0, 2**32 - 1), st.integers(3, 400), st.floats(-3.0, 3.0), st.floats(0.0, 2.0))
+@settings(max_examples=60, deadline=None)
+def test_metric_bounds_and_identities(seed, n, offset, noise):
+    # Invariants of the definitions, on arbitrary records: r in [−1, 1], U in [0, 1] (Theil 1961,
+    # by the triangle inequality), P in [0, 1] and M >= −1 (Sprague & Geers 2004), C² = M² + P²;
+    # swapping the records keeps r and U and maps 1 + M to 1/(1 + M); a record against itself
+    # scores perfectly. Rounding only: 1e-12, and 1e-7 for P of a record against itself (arccos
+    # magnifies a rounding ε of the cosine to √(2ε)/π ≈ 5e-9 there).
+    rng = np.random.default_rng(seed)
+    m = offset + rng.standard_normal(n)
+    p = rng.standard_normal() * m + noise * rng.standard_normal(n)
+    a = compare(m, p)
+    assert -1.0 <= a.correlation <= 1.0 and 0.0 <= a.theil_u <= 1.0
+    assert 0.0 <= a.phase <= 1.0 and a.magnitude >= -1.0 and a.nrmse >= 0.0
+    assert a.combined == pytest.approx(np.hypot(a.magnitude, a.phase), abs=1e-12)
+    b = compare(p, m)
+    assert b.correlation == pytest.approx(a.correlation, abs=1e-12)
+    assert b.theil_u == pytest.approx(a.theil_u, abs=1e-12)
+    assert (1.0 + b.magnitude) * (1.0 + a.magnitude) == pytest.approx(1.0, rel=1e-12)
+    assert b.phase == pytest.approx(a.phase, abs=1e-12)
+    same = compare(m, m.copy())
+    assert same.nrmse == 0.0 and same.theil_u == 0.0 and same.magnitude == pytest.approx(0.0, abs=1e-12)
+    assert same.correlation == pytest.approx(1.0, abs=1e-12) and same.phase < 1e-7
 
 
 # --------------------------------------------------------------------------- frequency
