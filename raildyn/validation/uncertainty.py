@@ -103,6 +103,7 @@ class MonteCarloResult:
                     f"{field} must have the shape of one output {shape[1:]}, "
                     f"got {np.shape(getattr(self, field))}"
                 )
+        _checks.array("std", self.std, low=0.0)
         p = _percentiles("percentiles", self.percentiles)
         if np.shape(self.bands) != (p.size, *shape[1:]):
             raise ValueError(
@@ -140,6 +141,10 @@ class MonteCarloResult:
             raise ValueError(
                 f"plot draws a scalar or a 1-D output; this result's outputs have shape "
                 f"{self.outputs.shape[1:]} per sample"
+            )
+        if self.outputs.ndim == 1 and x is not None:
+            raise ValueError(
+                f"x is the abscissa of a 1-D output; this result's output is a scalar, got x = {x!r}"
             )
         with matplotlib.rc_context(plots.STYLE):
             ax = plots.axes_or_new(ax)
@@ -218,6 +223,12 @@ class SobolResult:
             ("total_interval", (d, 2)),
         ):
             _checks.array(field, getattr(self, field), shape=shape)
+        _checks.array("total", self.total, low=0.0)  # Jansen's estimator: a mean of squares
+        for field in ("first_order_interval", "total_interval"):
+            iv = getattr(self, field)
+            if np.any(iv[:, 0] > iv[:, 1]):
+                i = int(np.flatnonzero(iv[:, 0] > iv[:, 1])[0])
+                raise ValueError(f"{field} must hold (lower, upper) pairs, got {iv[i].tolist()} in row {i}")
         _checks.scalar("confidence", self.confidence, low=0.0, high=1.0, low_open=True, high_open=True)
         _checks.integer("samples", self.samples, low=2)
         _checks.positive("variance", self.variance)
