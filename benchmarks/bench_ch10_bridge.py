@@ -13,13 +13,15 @@ engine couples by iterating on the contact force each step, against raildyn's co
 (:func:`raildyn.bridge.crossing`) at the same time step. And the Manchester car, coupled in raildyn,
 beside the FE beam under the car's axle loads as moving forces: what the modal, compiled path costs for a
 whole vehicle against the FE engine's simplest load.
+
+The chapter's widgets, each update against a new figure per change (``benchmarks.common.widget_case``).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from benchmarks.common import Case, timed
+from benchmarks.common import Case, timed, widget_case
 from raildyn.bridge import SimplySupportedBeam, crossing, moving_force, sprung_mass, vehicle
 from raildyn.integrators import average_acceleration
 from raildyn.vehicles import VerticalCar
@@ -102,4 +104,10 @@ def _crossing_cases(repeats: int) -> list[Case]:
 
 
 def cases(repeats: int):
-    return [_spectrum_case(repeats), *_crossing_cases(repeats)]
+    from raildyn.widgets import chapter10
+
+    widgets = [
+        widget_case(label, recipe, control, values, repeats, goal="median ≤ 50 ms")
+        for label, recipe, control, values in chapter10.BENCH_MOVES
+    ]
+    return [_spectrum_case(repeats), *_crossing_cases(repeats), *widgets]
