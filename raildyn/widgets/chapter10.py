@@ -362,7 +362,7 @@ def _models_setup(live, status):
     ]
     histories.set(xlim=(0.0, xs), ylim=(11.0, -10.0), xlabel="leading axle's position (m)")
     histories.set_ylabel("midspan deflection (mm)")
-    histories.legend(loc="lower right", fontsize=7)
+    histories.legend(loc="upper left", fontsize=7, ncol=2)  # above the line: upward, where little goes
     histories.set_title("midspan, downwards drawn down", fontsize="medium")
     rects = bars.bar(range(4), [1.0] * 4, color=plots.COLORS[:4], width=0.6)
     arema = 1.0 + codes.arema_impact_factor(_SPAN)
@@ -371,8 +371,8 @@ def _models_setup(live, status):
     bars.axhline(phi2, color="0.3", ls="--", lw=1.2, label="EN 1991-2 Φ₂")
     (annex,) = bars.plot([-0.45, 3.45], [1.0, 1.0], color=plots.COLORS[4], lw=1.6, label="EN 1991-2 Annex C")
     bars.set_xticks(range(4), ["force", "mass", "sprung", "car"])
-    bars.set(ylim=(0.0, 3.0), ylabel="dynamic amplification")
-    bars.legend(loc="upper left", fontsize=7)
+    bars.set(ylim=(0.0, 3.8), ylabel="dynamic amplification")  # the bars reach 2.75 at most
+    bars.legend(loc="upper center", fontsize=7)
     bars.set_title("midspan amplification", fontsize="medium")
     levels = codes.COMFORT_ACCELERATION_LIMITS
     for (name, value), style in zip(levels.items(), (":", "--", "-"), strict=True):
