@@ -26,7 +26,7 @@ from scipy import signal
 from raildyn import _checks
 from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force
 from raildyn.constants import GRAVITY
-from raildyn.validation.identification import WeighInMotionFit, _lag_speed, weigh_in_motion
+from raildyn.validation.identification import WeighInMotionFit, weigh_in_motion
 from raildyn.validation.metrics import Agreement, compare
 
 __all__ = [
@@ -40,7 +40,7 @@ __all__ = [
 ]
 
 _DATA = Path(__file__).resolve().parent / "data"
-RUNS = ("1603161045",)
+_RUNS = ("1603161045",)
 
 #: Length of the stringer panel the gauges are on, m: the 25 m truss in six panels (Slettebak 2016, §3.2).
 LERELVA_PANEL = 25.0 / 6.0
@@ -177,7 +177,7 @@ def lerelva_strain(run: str = "1603161045") -> StrainRecord:
     >>> rec.strain.shape, rec.rate_hz
     ((3, 2560), 256.0)
     """
-    _checks.choice("run", run, RUNS)
+    _checks.choice("run", run, _RUNS)
     with np.load(_DATA / f"lerelva_{run}.npz") as data:
         rate = float(data["rate"])
         strain = data["strain"].astype(float)
@@ -298,6 +298,27 @@ class LerelvaCase:
             ax.set_ylabel("strain (µε); dashed: chapter-10 prediction")
             ax.legend()
         return drawn
+
+
+def _lag_speed(t, first, second, distance):
+    """Speed from the lag of the cross-correlation's peak of two records ``distance`` apart (m)."""
+    dt = t[1] - t[0]
+    a, b = first - first.mean(), second - second.mean()
+    corr = signal.correlate(b, a, mode="full")
+    lags = signal.correlation_lags(b.size, a.size, mode="full")
+    k = int(np.argmax(corr))
+    shift = float(lags[k])
+    if 0 < k < corr.size - 1:  # parabolic interpolation of the peak: a fraction of a sample
+        y0, y1, y2 = corr[k - 1], corr[k], corr[k + 1]
+        den = y0 - 2 * y1 + y2
+        if den != 0.0:
+            shift += 0.5 * (y0 - y2) / den
+    if shift <= 0.0:
+        raise ValueError(
+            "the sensors' cross-correlation puts the second before the first: give positions in the "
+            "direction of travel, or speed"
+        )
+    return distance / (shift * dt)
 
 
 def _peak_speed(t, midspan, rate):
