@@ -83,6 +83,18 @@ def test_a_noisy_decay_recovers_frequency_and_damping_within_their_intervals():
     assert fit.confidence == 0.95
 
 
+def test_under_noise_the_fit_beats_the_decrement_of_two_maxima():
+    # Chapter 1's decrement reads two maxima; the fit uses every sample. Over 20 seeds at σ = 5 % the fit's
+    # mean |ξ error| is below a tenth of the decrement's (measured 3e-4 against 1.0e-2: the last maximum
+    # clear of the noise is biased upwards by it, so the decrement's ξ comes out low).
+    fit_err, dec_err = [], []
+    for seed in range(20):
+        fit = free_decay(*noisy_decay(seed))
+        fit_err.append(abs(fit.damping_ratio - 0.03))
+        dec_err.append(abs(fit.decrement_damping_ratio - 0.03))
+    assert np.mean(fit_err) < 0.1 * np.mean(dec_err)
+
+
 def test_free_decay_intervals_cover_the_truth_at_their_stated_rate():
     hits = np.zeros(2, int)
     for seed in range(REPEATS):

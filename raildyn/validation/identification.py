@@ -284,16 +284,21 @@ def _decay_linear(f, xi, t, x):
     return math.hypot(c, s), math.atan2(-s, c), offset
 
 
-def _decrement(t, x, offset, noise):
-    """δ and ξ from the first and the last maxima standing clear of the noise (eq. 1.17), or Nones."""
+def _decrement(t, x, offset, noise, frequency):
+    """δ and ξ from the first and the last maxima standing clear of the noise (eq. 1.17), or Nones.
+
+    Maxima are taken at least 0.7 of a period apart (``frequency``, Hz, from the fit), so that
+    noise on one crest does not count as a second crest; the periods between the first and
+    the last are counted from their time apart.
+    """
     y = x - offset
-    peaks, _ = signal.find_peaks(y, height=max(4.0 * noise, 0.0))
+    dt = t[1] - t[0]
+    apart = max(int(0.7 / (frequency * dt)), 1)
+    peaks, _ = signal.find_peaks(y, height=max(4.0 * noise, 0.0), distance=apart)
     peaks = peaks[y[peaks] > 0.0]
     if peaks.size < 2:
         return None, None
-    # the maxima must be one period apart: count the periods by the spacing of the first two
-    period = np.median(np.diff(t[peaks]))
-    cycles = int(round((t[peaks[-1]] - t[peaks[0]]) / period))
+    cycles = int(round((t[peaks[-1]] - t[peaks[0]]) * frequency))
     if cycles < 1 or y[peaks[-1]] >= y[peaks[0]]:
         return None, None
     delta = decrement_from_peaks(float(y[peaks[0]]), float(y[peaks[-1]]), cycles=cycles)
@@ -364,7 +369,7 @@ def free_decay(time, response, *, confidence: float = 0.95) -> FreeDecayFit:
     sol = optimize.least_squares(residual, start, bounds=(lower, upper), x_scale=scale, method="trf")
     se, interval, rms = _intervals(sol, t.size, level)
     fitted = _decay_model(sol.x, tau)
-    delta, xi_d = _decrement(t, x, sol.x[4], rms)
+    delta, xi_d = _decrement(t, x, sol.x[4], rms, sol.x[0] * np.sqrt(1.0 - sol.x[1] ** 2))
     return FreeDecayFit(
         ("frequency_hz", "damping_ratio", "amplitude", "phase", "offset"),
         sol.x,
