@@ -90,8 +90,8 @@ def test_explorer_says_when_the_force_has_left():
     force = container.live.figure.axes[0].lines[4]
     assert force.get_xdata()[0] == pytest.approx(26.0, abs=0.2)  # 1.3 L, to the march's step
     assert force.get_ydata()[0] == 0.0
-    # At α = 1.06 the largest midspan deflection comes after the force has left (Frýba 1972, ch. 1:
-    # beyond α ≈ 1 the free vibration's amplitude exceeds the forced one).
+    # At α = 1.06 the crossing lasts L/v = 1/(2f₁α), less than half the first mode's period: the
+    # beam has not reached its peak when the force leaves, and the largest deflection comes after.
     assert "after it left" in status
 
 
