@@ -4,8 +4,31 @@ parameters from records, and spreading uncertain parameters into the answer.
 * :mod:`raildyn.validation.metrics` — a prediction against a measurement: in time (NRMSE, correlation,
   Theil's U, Sprague–Geers), in frequency (one-third-octave RMS, H1 and coherence), and the statistics of
   acceptance tests (percentiles, sliding RMS, maxima per section).
+* :mod:`raildyn.validation.identification` — parameters from records by least squares, with confidence
+  intervals: a free decay, a bridge's free vibration, weigh-in-motion, a coast-down.
+* :mod:`raildyn.validation.measured` — a measured case: strain at midspan of a railway bridge near
+  Trondheim under an NSB class 92 train, and the chapter-10 prediction beside it.
 """
 
+from raildyn.validation.identification import (
+    CoastDownFit,
+    FreeDecayFit,
+    ParameterFit,
+    WeighInMotionFit,
+    bridge_free_vibration,
+    coast_down,
+    free_decay,
+    weigh_in_motion,
+)
+from raildyn.validation.measured import (
+    LERELVA_PANEL,
+    NSB92_LOADS,
+    NSB92_SPACINGS,
+    LerelvaCase,
+    StrainRecord,
+    lerelva_case,
+    lerelva_strain,
+)
 from raildyn.validation.metrics import (
     NORMALISATIONS,
     Agreement,
@@ -27,6 +50,21 @@ from raildyn.validation.metrics import (
 )
 
 __all__ = [
+    "LERELVA_PANEL",
+    "NSB92_LOADS",
+    "NSB92_SPACINGS",
+    "CoastDownFit",
+    "FreeDecayFit",
+    "LerelvaCase",
+    "ParameterFit",
+    "StrainRecord",
+    "WeighInMotionFit",
+    "bridge_free_vibration",
+    "coast_down",
+    "free_decay",
+    "lerelva_case",
+    "lerelva_strain",
+    "weigh_in_motion",
     "NORMALISATIONS",
     "Agreement",
     "BandRMS",
