@@ -20,7 +20,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn.random_vibration import welch_psd
-from raildyn.validation.metrics import (
+from raildyn.validation import (
     Agreement,
     compare,
     correlation,

@@ -1,15 +1,18 @@
 """Validating models (book chapter 11): comparing predictions with measurements, identifying
 parameters from records, and spreading uncertain parameters into the answer.
 
-* :mod:`raildyn.validation.metrics` — a prediction against a measurement: in time (NRMSE, correlation,
-  Theil's U, Sprague–Geers), in frequency (one-third-octave RMS, H1 and coherence), and the statistics of
-  acceptance tests (percentiles, sliding RMS, maxima per section).
+* :mod:`raildyn.validation.metrics` — a prediction against a measurement in time: NRMSE, correlation,
+  Theil's U, Sprague–Geers.
+* :mod:`raildyn.validation.spectra` — in frequency: one-third-octave RMS, H1 and the coherence.
+* :mod:`raildyn.validation.acceptance` — the statistics of acceptance tests: percentiles, sliding RMS,
+  maxima per section.
 * :mod:`raildyn.validation.identification` — parameters from records by least squares, with confidence
   intervals: a free decay, a bridge's free vibration, weigh-in-motion, a coast-down.
 * :mod:`raildyn.validation.measured` — a measured case: strain at midspan of a railway bridge near
   Trondheim under an NSB class 92 train, and the chapter-10 prediction beside it.
 """
 
+from raildyn.validation.acceptance import SectionMaxima, SlidingRMS, percentiles, section_maxima, sliding_rms
 from raildyn.validation.identification import (
     CoastDownFit,
     FreeDecayFit,
@@ -32,20 +35,17 @@ from raildyn.validation.measured import (
 from raildyn.validation.metrics import (
     NORMALISATIONS,
     Agreement,
-    BandRMS,
-    FrequencyResponseEstimate,
-    SectionMaxima,
-    SlidingRMS,
     SpragueGeers,
     compare,
     correlation,
-    frequency_response_h1,
     nrmse,
-    percentiles,
-    section_maxima,
-    sliding_rms,
     sprague_geers,
     theil_u,
+)
+from raildyn.validation.spectra import (
+    BandRMS,
+    FrequencyResponseEstimate,
+    frequency_response_h1,
     third_octave_rms,
 )
 

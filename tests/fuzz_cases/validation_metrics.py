@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 from fuzzing import call, fuzz, on
 
-from raildyn.validation.metrics import (
+from raildyn.validation import (
     BandRMS,
     compare,
     frequency_response_h1,
@@ -74,7 +74,7 @@ ENTRIES = [
     ),
     fuzz("raildyn.validation.metrics.Agreement.plot", lambda: on(compare(MEASURED, PREDICTED, 0.01))),
     fuzz(
-        "raildyn.validation.metrics.third_octave_rms",
+        "raildyn.validation.spectra.third_octave_rms",
         lambda: call(RECORD, 1e-3, nperseg=2000, f_min=5.0, f_max=100.0),
         accepts={
             "record": VALID_RECORD,
@@ -85,16 +85,16 @@ ENTRIES = [
         },
     ),
     fuzz(
-        "raildyn.validation.metrics.BandRMS",
+        "raildyn.validation.spectra.BandRMS",
         lambda: call([10.0, 12.5], [8.9, 11.2], [11.2, 14.1], [0.5, 0.2]),
         accepts={"rms": "zero huge", "upper_hz": "huge"},
     ),
     fuzz(
-        "raildyn.validation.metrics.BandRMS.plot",
+        "raildyn.validation.spectra.BandRMS.plot",
         lambda: on(BandRMS(np.array([10.0, 12.5]), [8.9, 11.2], [11.2, 14.1], [0.5, 0.2])),
     ),
     fuzz(
-        "raildyn.validation.metrics.frequency_response_h1",
+        "raildyn.validation.spectra.frequency_response_h1",
         lambda: call(NOISE, np.convolve(NOISE, [0.5, 0.3, 0.2])[:2048], 1e-3, nperseg=256),
         accepts={
             "excitation": "negative huge",
@@ -104,37 +104,37 @@ ENTRIES = [
         },
     ),
     fuzz(
-        "raildyn.validation.metrics.FrequencyResponseEstimate",
+        "raildyn.validation.spectra.FrequencyResponseEstimate",
         lambda: call([0.0, 1.0, 2.0], np.array([1.0, 0.5 - 0.5j, 0.1j]), [0.9, 0.8, 0.2]),
         accepts={"h1": "zero negative huge", "coherence": "zero", "omega": "huge"},
     ),
     fuzz(
-        "raildyn.validation.metrics.FrequencyResponseEstimate.plot",
+        "raildyn.validation.spectra.FrequencyResponseEstimate.plot",
         lambda: on(frequency_response_h1(NOISE, 2.0 * NOISE, 1e-3)),
     ),
     fuzz(
-        "raildyn.validation.metrics.percentiles",
+        "raildyn.validation.acceptance.percentiles",
         lambda: call(RECORD, (0.15, 50.0, 99.85)),
         accepts={"record": VALID_RECORD, "percent": "zero"},
     ),
     fuzz(
-        "raildyn.validation.metrics.sliding_rms",
+        "raildyn.validation.acceptance.sliding_rms",
         lambda: call(RECORD, 0.5, 100.0, step=10.0),
         accepts={"record": VALID_RECORD, "step": "none"},
     ),
     fuzz(
-        "raildyn.validation.metrics.SlidingRMS",
+        "raildyn.validation.acceptance.SlidingRMS",
         lambda: call([0.5, 1.5, 2.5], [0.1, 0.2, 0.0], 1.0),
         accepts={"rms": "zero huge", "window": "huge", "position": "zero"},
     ),
-    fuzz("raildyn.validation.metrics.SlidingRMS.plot", lambda: on(sliding_rms(RECORD, 0.5, 100.0))),
+    fuzz("raildyn.validation.acceptance.SlidingRMS.plot", lambda: on(sliding_rms(RECORD, 0.5, 100.0))),
     fuzz(
-        "raildyn.validation.metrics.section_maxima",
+        "raildyn.validation.acceptance.section_maxima",
         lambda: call(RECORD, 0.5, 250.0, percent=(0.15, 99.85)),
         accepts={"record": VALID_RECORD, "percent": "zero"},
     ),
     fuzz(
-        "raildyn.validation.metrics.SectionMaxima",
+        "raildyn.validation.acceptance.SectionMaxima",
         lambda: call([0.0, 10.0], [-1.0, -2.0], [1.0, 3.0], 10.0, (0.15, 99.85)),
         accepts={
             "start": "zero",
@@ -144,5 +144,5 @@ ENTRIES = [
             "percent": "zero",
         },
     ),
-    fuzz("raildyn.validation.metrics.SectionMaxima.plot", lambda: on(section_maxima(RECORD, 0.5, 250.0))),
+    fuzz("raildyn.validation.acceptance.SectionMaxima.plot", lambda: on(section_maxima(RECORD, 0.5, 250.0))),
 ]
