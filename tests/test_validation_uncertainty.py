@@ -328,6 +328,16 @@ def test_a_non_finite_output_names_its_sample(client):
         monte_carlo(model, dists, 200, rng=4, client=client)
 
 
+def test_an_error_in_the_model_names_its_sample(client):
+    dists = {"x": stats.norm()}
+    ok = monte_carlo(lambda x: x, dists, 100, rng=2, client=client)
+    worst = int(np.argmax(ok.samples[:, 0]))
+    top = float(ok.samples[worst, 0])
+    with pytest.raises(ZeroDivisionError) as info:
+        monte_carlo(lambda x: 1 / 0 if x >= top else x, dists, 100, rng=2, client=client)
+    assert f"raised by model_fn at sample {worst} (x = " in " ".join(getattr(info.value, "__notes__", []))
+
+
 def test_a_model_that_changes_shape_is_refused(client):
     dists = {"x": stats.uniform()}
     with pytest.raises(ValueError, match="model_fn must return an array of shape"):

@@ -12,6 +12,9 @@ machines. A ``LocalCluster`` of ``workers`` processes is started (and closed) by
 when no ``client`` is given; a ``distributed.Client``, a scheduler address or a cluster
 object (``LocalCluster``, a dask-jobqueue ``SLURMCluster``...) runs the same call elsewhere.
 
+In a script, call these under ``if __name__ == "__main__":``: the worker processes are
+started by spawning, and each imports the script that started them.
+
 Processes, not threads, are the default workers: a model written in Python holds the GIL, so
 threads would take turns on it, while processes compute side by side (the models are sent to
 them by cloudpickle, so a lambda or a function defined in a notebook is fine).
@@ -351,7 +354,7 @@ def monte_carlo(
     ((400,), True)
     """
     names, gen, n_workers, chunk = _common(
-        model_fn, distributions, samples, rng, client, workers, batch, vectorized, "samples"
+        model_fn, distributions, samples, rng, client, workers, batch, vectorized
     )
     p = _percentiles("percentiles", percentiles)
     X = _draw(distributions, names, samples, gen)
@@ -440,10 +443,9 @@ def sobol_indices(
     ([0.2, 0.8], [0.2, 0.8])
     """
     names, gen, n_workers, chunk = _common(
-        model_fn, distributions, samples, rng, client, workers, batch, vectorized, "samples", per=None
+        model_fn, distributions, samples, rng, client, workers, batch, vectorized, sobol=True
     )
     d = len(names)
-    _checks.integer("samples", samples, low=2, high=_MAX_EVALUATIONS // (d + 2))
     resamples = _checks.integer("bootstrap", bootstrap, low=10, high=10**5)
     level = _checks.scalar("confidence", confidence, low=0.0, high=1.0, low_open=True, high_open=True)
     N = samples
@@ -503,12 +505,13 @@ def _sobol_estimators(fA, fB, fAB):
 # --------------------------------------------------------------------------- checks
 
 
-def _common(model_fn, distributions, samples, rng, client, workers, batch, vectorized, what, per=1):
+def _common(model_fn, distributions, samples, rng, client, workers, batch, vectorized, *, sobol=False):
     """Check what both analyses take, before anything is drawn or sent; return the names and the rest."""
     _checks.function("model_fn", model_fn)
     names = _names(distributions)
     _check_signature(model_fn, names)
-    _checks.integer(what, samples, low=2, high=_MAX_EVALUATIONS if per else None)
+    per_sample = len(names) + 2 if sobol else 1  # model runs per sample: N (d + 2) for Sobol' indices
+    _checks.integer("samples", samples, low=2, high=_MAX_EVALUATIONS // per_sample)
     gen = _checks.generator(rng)
     n_workers = _checks.integer("workers", workers, low=1, high=_MAX_WORKERS)
     chunk = None if batch is None else _checks.integer("batch", batch, low=1)
@@ -563,9 +566,6 @@ def _check_signature(model_fn, names) -> None:
             f"model_fn needs {needed}, which distributions does not give; give each a distribution "
             "or a default value"
         )
-
-
-_ADDRESS = re.compile(r"^([a-z][a-z0-9+.-]*://)?[^\s/:]+(:\d+)?$|^[a-z][a-z0-9+.-]*://\S+$", re.IGNORECASE)
 
 
 def _check_client(client) -> None:
@@ -644,10 +644,17 @@ def _batch_task():
             except (TypeError, ValueError):
                 raise TypeError(f"model_fn must return numbers, returned {out!r:.80} at {at}") from None
 
+        def run(params, at):
+            try:
+                return model_fn(**params)
+            except Exception as err:
+                err.add_note(f"raised by model_fn at {at}")  # the sample travels back with the error
+                raise
+
         m = X.shape[0]
         if vectorized:
             at = f"samples {start} to {start + m - 1} (called with arrays)"
-            Y = as_numbers(model_fn(**{name: X[:, j].copy() for j, name in enumerate(names)}), at)
+            Y = as_numbers(run({name: X[:, j].copy() for j, name in enumerate(names)}, at), at)
             if Y.shape != (m, *shape):
                 raise ValueError(
                     f"model_fn must return an array of shape {(m, *shape)} at {at}, got {Y.shape}"
@@ -660,7 +667,7 @@ def _batch_task():
             return Y
         Y = np.empty((m, *shape))
         for k in range(m):
-            y = as_numbers(model_fn(**{name: float(X[k, j]) for j, name in enumerate(names)}), where(k))
+            y = as_numbers(run({name: float(X[k, j]) for j, name in enumerate(names)}, where(k)), where(k))
             if y.shape != shape:
                 raise ValueError(
                     f"model_fn must return an array of shape {shape}, returned shape {y.shape} at {where(k)}"
