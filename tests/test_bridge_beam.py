@@ -95,3 +95,17 @@ def test_the_acceleration_is_the_deflections_second_derivative_and_the_coupled_m
     np.testing.assert_allclose(run.time, t[:k], atol=1e-12)
     assert np.abs(run.deck_acceleration - a[:k]).max() < 1e-3 * peak
     assert closed.peak_acceleration[0] == pytest.approx(peak)
+
+
+def test_an_undamped_resonance_has_its_finite_limit():
+    # At α = 1 exactly the first mode is forced at its own frequency: q = (sin ωs − ωs cos ωs)/(2ω²) while
+    # the force is on. The answer is the limit of its neighbours: within 1e-6 of α(1 ± 1e-7) (the series'
+    # slope in α times 1e-7 is ~1e-7), and the deflection is finite everywhere.
+    beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=5)
+    v = 2 * beam.frequencies_hz[0] * beam.span  # α = 1
+    at, below, above = (moving_force(beam, v * f, 1.0e5, samples=2001) for f in (1.0, 1 - 1e-7, 1 + 1e-7))
+    assert np.isfinite(at.deflection).all() and np.isfinite(at.acceleration).all()
+    assert at.amplification[0] == pytest.approx(
+        0.5 * (below.amplification[0] + above.amplification[0]), rel=1e-6
+    )
+    np.testing.assert_allclose(at.deflection, below.deflection, atol=1e-6 * np.abs(at.deflection).max())

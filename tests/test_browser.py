@@ -216,9 +216,13 @@ def book_server(built_book):
 
 
 def book_pages():
-    return ["index.html", "book/intro.html", "book/api.html", "book/bibliography.html"] + [
-        f"notebooks/{p.stem}.html" for p in NOTEBOOKS
-    ]
+    return [
+        "index.html",
+        "book/intro.html",
+        "book/api.html",
+        "book/bibliography.html",
+        "book/validation.html",
+    ] + [f"notebooks/{p.stem}.html" for p in NOTEBOOKS]
 
 
 @pytest.mark.parametrize("page_path", book_pages())

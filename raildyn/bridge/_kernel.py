@@ -236,6 +236,10 @@ def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape
             wd = w * np.sqrt(1.0 - zeta * zeta)
             Om = (j + 1) * np.pi * v / span
             den = (w * w - Om * Om) ** 2 + (2.0 * zeta * w * Om) ** 2
+            # undamped at resonance (Ω = ω): q = (sin ωs − ωs cos ωs)/(2ω²), growing while on the span
+            resonant = den <= 1e-24 * w**4
+            if resonant:
+                den = 1.0
             a = (w * w - Om * Om) / den
             b = -2.0 * zeta * w * Om / den
             c = -b
@@ -253,6 +257,9 @@ def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape
                 + decay
                 * ((d * wd - zeta * w * c) * np.cos(wd * T) - (c * wd + zeta * w * d) * np.sin(wd * T))
             )
+            if resonant:
+                q_end = (np.sin(w * T) - w * T * np.cos(w * T)) / (2.0 * w * w)
+                qd_end = T * np.sin(w * T) / 2.0
             ce = complex(q_end, -(qd_end + zeta * w * q_end) / wd)
             step = np.exp(lam * dt)
             gone = 0j  # Σ over the forces that have left of P C_e e^{λ(t − τ − T)}
@@ -271,6 +278,11 @@ def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape
                 second = (lam * lam * gone).real
                 for k in range(first_on, entered):
                     s = t - delays[k] / v
+                    if resonant:
+                        q = (np.sin(w * s) - w * s * np.cos(w * s)) / (2.0 * w * w)
+                        total += loads[k] * q
+                        second += loads[k] * (np.sin(w * s) - w * w * q)  # q̈ = sin ωs − ω²q
+                        continue
                     harmonic = a * np.sin(Om * s) + b * np.cos(Om * s)
                     transient = cf * np.exp(lam * s)
                     total += loads[k] * (harmonic + transient.real)

@@ -7,7 +7,7 @@ coordinate obeys q̈ + 2ζω_j q̇ + ω_j² q = p_j(t): a damped oscillator unde
 from rest, solved here in closed form, mode by mode (Frýba 1972, ch. 1; Garg & Dukkipati
 1984, ch. 10). After the force leaves, each mode vibrates freely. A train of forces is the
 sum of one force's response delayed by each axle's distance over the speed; the compiled
-:func:`raildyn.bridge._kernel.superpose` carries the forces that have left as one decaying
+``raildyn.bridge._kernel.superpose`` carries the forces that have left as one decaying
 phasor, so the cost grows with the samples plus the axles, not their product.
 """
 
@@ -16,6 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.optimize
 
 from raildyn import _checks
 from raildyn.bridge import _kernel
@@ -225,24 +226,6 @@ def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None,
     return MovingForceResponse(v, t, w, float(x), float(static), acceleration)
 
 
-def _influence(beam: SimplySupportedBeam, x, a):
-    """Static deflection at x under a unit force at a, m/N (the beam formula, both sides)."""
-    L, EI = beam.span, beam.flexural_rigidity
-    lo, hi = np.minimum(x, a), np.maximum(x, a)  # the nearer end's point and the other
-    return lo * (L - hi) * (L**2 - lo**2 - (L - hi) ** 2) / (6 * EI * L)
-
-
-def _largest_static(beam: SimplySupportedBeam, x, delays, loads) -> float:
-    """Max over the front's positions of Σ P_k × influence(x, front − d_k): the slow crossing's peak."""
-    L = beam.span
-    # the peak of a sum of piecewise cubics lies at a kink (an axle at x) or between two: the kinks
-    # plus a grid of 4000 steps over the passage find it to about 1e-6 of its value
-    fronts = np.unique(np.concatenate([np.linspace(0.0, L + delays[-1], 4001), x + delays]))
-    at = fronts[:, None] - delays[None, :]
-    on = (at >= 0.0) & (at <= L)
-    return float((np.where(on, _influence(beam, x, np.clip(at, 0.0, L)), 0.0) @ loads).max())
-
-
 def fryba_deflection(beam: SimplySupportedBeam, speed, force, time, position=None) -> np.ndarray:
     """Frýba's series for the undamped beam while the force is on it, m.
 
@@ -289,3 +272,31 @@ def fryba_deflection(beam: SimplySupportedBeam, speed, force, time, position=Non
     tt = t[..., None]
     terms = (np.sin(j * w * tt) - alpha / j * np.sin(j**2 * omega1 * tt)) / (j**2 * (j**2 - alpha**2))
     return w0 * (terms * np.sin(j * np.pi * x / L)).sum(axis=-1)
+
+
+def _influence(beam: SimplySupportedBeam, x, a):
+    """Static deflection at x under a unit force at a, m/N (the beam formula, both sides)."""
+    L, EI = beam.span, beam.flexural_rigidity
+    lo, hi = np.minimum(x, a), np.maximum(x, a)  # the nearer end's point and the other
+    return lo * (L - hi) * (L**2 - lo**2 - (L - hi) ** 2) / (6 * EI * L)
+
+
+def _largest_static(beam: SimplySupportedBeam, x, delays, loads) -> float:
+    """Max over the front's positions of Σ P_k × influence(x, front − d_k): the slow crossing's peak."""
+    L = beam.span
+
+    def static(front):
+        at = np.asarray(front)[..., None] - delays
+        on = (at >= 0.0) & (at <= L)
+        return np.where(on, _influence(beam, x, np.clip(at, 0.0, L)), 0.0) @ loads
+
+    # the sum of piecewise cubics peaks at a kink (an axle at x) or inside a piece: the kinks and a
+    # coarse grid find the piece, and Brent's method its peak, to 1e-10 of the value
+    fronts = np.unique(np.concatenate([np.linspace(0.0, L + delays[-1], 401), x + delays]))
+    values = static(fronts)
+    i = int(np.argmax(values))
+    lo, hi = fronts[max(i - 1, 0)], fronts[min(i + 1, fronts.size - 1)]
+    refined = scipy.optimize.minimize_scalar(
+        lambda f: -static(f), bounds=(lo, hi), method="bounded", options={"xatol": 1e-10 * (L + delays[-1])}
+    )
+    return float(max(values[i], -refined.fun))

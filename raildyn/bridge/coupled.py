@@ -16,7 +16,7 @@ wheel presses on the rail with
 The beam's modes take the forces of the axles on it, μ_i(b̈_i + 2ζω_i ḃ_i + ω_i² b_i) =
 Σ_j φ_i(x_j) F_j. Put together, the coupled matrices change as the axles move, and each
 step of the average-acceleration Newmark scheme (chapter 2's, unconditionally stable) is
-assembled and solved afresh; the loop is compiled (:mod:`raildyn.bridge._kernel`).
+assembled and solved afresh; the loop is compiled (``raildyn.bridge._kernel``).
 (Frýba 1972, ch. 1 and 8; Biggs 1964; Yang, Yau & Wu 2004, ch. 2.)
 """
 

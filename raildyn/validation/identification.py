@@ -566,7 +566,7 @@ def weigh_in_motion(
 
     with D_k the distance of axle k behind the leading one, M_x(a) the moment at x under a
     unit force at a (statics of the simple beam, the static limit of chapter 10's
-    :func:`raildyn.bridge.moving_force`) and ε₀ a zero offset per sensor. Given v, t₀ and the
+    :func:`raildyn.bridge.beam.moving_force`) and ε₀ a zero offset per sensor. Given v, t₀ and the
     spacings, the loads and offsets are linear: they come by linear least squares, as in
     Moses's algorithm. The speed, arrival and (with ``fit_spacings``) the spacings are found
     by nonlinear least squares over that projected problem (variable projection
