@@ -50,13 +50,21 @@ def _rng(seed=19):
 
 
 @pytest.mark.parametrize("gain", [0.25, 0.9, 1.0, 1.3, 3.0])
-def test_pure_gain_closed_forms(gain):
+def test_pure_gain_closed_forms(gain, reference):
     # A record with a mean and two harmonics, so that nothing rests on the record being a pure sine.
     m = 0.3 + SINE + 0.2 * np.cos(3 * OMEGA * T)
     p = gain * m
     sg = sprague_geers(m, p, T)
     # M = √(ψ_pp/ψ_mm) − 1 = g − 1 exactly (Sprague & Geers 2004); rounding only: 1e-12.
-    assert sg.magnitude == pytest.approx(gain - 1.0, abs=1e-12)
+    reference(
+        11,
+        f"Sprague–Geers magnitude of a pure gain {gain:g}",
+        "M = g − 1 (Sprague & Geers 2004)",
+        "closed form",
+        abs(sg.magnitude - (gain - 1.0)),
+        1e-12,
+        "abs.",
+    )
     # P = arccos(1)/π = 0; arccos near 1 magnifies a rounding ε of the cosine to √(2ε)/π ≈ 5e-9.
     assert sg.phase == pytest.approx(0.0, abs=1e-7)
     assert sg.combined == pytest.approx(abs(gain - 1.0), abs=1e-7)
@@ -269,7 +277,7 @@ def test_third_octave_rms_of_white_noise():
     assert bands.centre_hz[0] >= 20.0 and bands.centre_hz[-1] <= 300.0
 
 
-def test_h1_of_noise_through_a_known_filter():
+def test_h1_of_noise_through_a_known_filter(reference):
     # Broadband noise through scipy.signal.lfilter (a 2nd-order Butterworth low-pass at 50 Hz): H1
     # equals the filter's frequency response from scipy.signal.freqz. Without output noise γ² ≈ 1
     # and the random error of |H1|, √(1 − γ²)/(|γ|√(2 n_d)) (Bendat & Piersol 2010, ch. 9), is below
@@ -281,7 +289,14 @@ def test_h1_of_noise_through_a_known_filter():
     est = frequency_response_h1(x, y, dt, nperseg=1024)
     _, H = scipy.signal.freqz(b, a, worN=est.omega * dt)
     keep = (est.omega > 0) & (est.omega <= 2 * np.pi * 250.0)
-    np.testing.assert_allclose(est.h1[keep], H[keep], rtol=0.02)
+    reference(
+        11,
+        "H1 estimate of noise through a Butterworth filter",
+        "the filter's response (scipy freqz)",
+        "scipy",
+        (np.abs(est.h1[keep] - H[keep]) / np.abs(H[keep])).max(),
+        0.02,
+    )
     assert est.coherence[keep].min() > 0.99
 
 
