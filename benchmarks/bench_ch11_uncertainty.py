@@ -15,7 +15,9 @@ ratio is the speed-up; the parallel efficiency is the speed-up over the number o
 other work takes cores from the workers and not from the loop, which needs only one. So is what
 the machine itself allows two processes at that moment: the same draws split in halves over two
 plain processes (``concurrent.futures``, no dask), started and warmed outside the timing; the
-cluster's speed-up is to be read against that ceiling.
+cluster's speed-up is to be read against that ceiling. The three are timed in interleaved rounds
+(cluster, loop, bare processes; at least two rounds), so that a change in the machine's load
+between rounds falls on all three alike.
 """
 
 from __future__ import annotations
@@ -78,37 +80,44 @@ def cases(repeats: int):
     from distributed import Client, LocalCluster
 
     start = time.perf_counter()
+    spawn = multiprocessing.get_context("spawn")
     with (
         LocalCluster(
             n_workers=WORKERS, threads_per_worker=1, processes=True, dashboard_address=":0"
         ) as cluster,
         Client(cluster) as client,
+        ProcessPoolExecutor(WORKERS, mp_context=spawn) as pool,
     ):
         startup = time.perf_counter() - start
-        mc = monte_carlo(car_critical_speed, DISTRIBUTIONS, EVALUATIONS, rng=11, client=client)
+
+        def on_cluster(i):
+            return monte_carlo(car_critical_speed, DISTRIBUTIONS, EVALUATIONS, rng=11, client=client)
+
+        mc = on_cluster(0)  # also warms the workers
         serial = _serial(mc.samples)
         gap = np.abs(mc.outputs - serial).max()
         if gap > 1e-9:
             raise AssertionError(f"critical speeds on the cluster and in the loop differ by {gap:.3g} m/s")
-        runs = max(1, repeats // 5)
-        fast = timed(
-            lambda i: monte_carlo(car_critical_speed, DISTRIBUTIONS, EVALUATIONS, rng=11, client=client), runs
-        )
-        slow = timed(lambda i: _serial(mc.samples), runs)
-    with ProcessPoolExecutor(WORKERS, mp_context=multiprocessing.get_context("spawn")) as pool:
-        _bare_processes(pool, mc.samples[: 2 * WORKERS])  # start and warm the processes, untimed
-        bare = timed(lambda i: _bare_processes(pool, mc.samples), runs)
+        _bare_processes(pool, mc.samples[: 2 * WORKERS])  # start and warm the plain processes
+        load = [os.getloadavg()[0]]  # other work on the machine takes cores from the workers
+        # Interleaved, one of each per round, so that a change in the machine's load between
+        # rounds falls on all three alike.
+        fast, slow, bare = [], [], []
+        for _ in range(max(2, repeats // 5)):
+            fast += timed(on_cluster, 1)
+            slow += timed(lambda i: _serial(mc.samples), 1)
+            bare += timed(lambda i: _bare_processes(pool, mc.samples), 1)
+        load.append(os.getloadavg()[0])
     speedup = statistics.median(slow) / statistics.median(fast)
     ceiling = statistics.median(slow) / statistics.median(bare)
-    load = os.getloadavg()[0]  # other work on the machine takes cores from the workers
     return [
         Case(
             f"{EVALUATIONS} critical speeds of the car, ±10 % scatter on 4 stiffnesses and the conicity "
             f"(V_c {mc.bands[0]:.1f}–{mc.bands[-1]:.1f} m/s, 95 %), {WORKERS}-worker LocalCluster: "
             f"speed-up {speedup:.2f}, efficiency {speedup / WORKERS:.2f}; cluster start-up "
             f"{startup:.1f} s, not timed; {'bit-identical' if gap == 0 else f'agree to {gap:.1g} m/s'}; "
-            f"load average {load:.1f} on {os.cpu_count()} cores; {WORKERS} bare processes without dask "
-            f"(concurrent.futures, halves of the same draws) reach {ceiling:.2f}",
+            f"load average {load[0]:.1f} to {load[1]:.1f} on {os.cpu_count()} cores; {WORKERS} bare "
+            f"processes without dask (concurrent.futures, halves of the same draws) reach {ceiling:.2f}",
             fast,
             slow,
             f"speed-up ≥ 1.6 on {WORKERS} workers (efficiency ≥ 0.8; ideal {WORKERS})",
