@@ -387,12 +387,16 @@ def sobol_indices(
 
     Two independent N × d samples A and B are drawn; for each parameter i the matrix
     A_B⁽ⁱ⁾ is A with its column i taken from B. The model runs on A, B and the d matrices
-    A_B⁽ⁱ⁾, N (d + 2) times in all, on dask.distributed. With V the variance of f over A
-    and B together, the first-order index uses Saltelli's estimator and the total index
-    Jansen's (Saltelli et al. 2010, Table 2, estimators (b) and (f)):
+    A_B⁽ⁱ⁾, N (d + 2) times in all, on dask.distributed. With f₀ and V the mean and the
+    variance of f over A and B together, the first-order index uses Saltelli's estimator
+    and the total index Jansen's (Saltelli et al. 2010, Table 2, estimators (b) and (f)):
 
-    S_i = (1/N) Σ_j f(B)_j (f(A_B⁽ⁱ⁾)_j − f(A)_j) / V,
+    S_i = (1/N) Σ_j (f(B)_j − f₀) (f(A_B⁽ⁱ⁾)_j − f(A)_j) / V,
     S_Ti = (1/2N) Σ_j (f(A)_j − f(A_B⁽ⁱ⁾)_j)² / V.
+
+    Saltelli's estimator is written with f(B) itself; subtracting f₀ leaves its expectation
+    unchanged and removes the noise an output's mean adds to it (SALib centres the
+    same way), so the indices of f and of f + c agree.
 
     The intervals are bootstrap percentile intervals over the N rows (Efron & Tibshirani
     1993, ch. 13), resampled ``bootstrap`` times with draws from ``rng`` after the samples.
@@ -496,8 +500,13 @@ def _sobol_estimators(fA, fB, fAB):
     ``fA`` and ``fB`` have shape (..., N); ``fAB`` has shape (d, ..., N). Returns arrays of
     shape (d, ...) and the variance of shape (...).
     """
-    variance = np.var(np.concatenate([fA, fB], axis=-1), axis=-1)
-    first = np.mean(fB * (fAB - fA), axis=-1) / variance
+    both = np.concatenate([fA, fB], axis=-1)
+    variance = np.var(both, axis=-1)
+    # Centred first: f(B) multiplies a difference whose mean is S_i V, so an output's mean f0
+    # adds f0 (f(A_B) − f(A)), zero on average but with f0² times its variance to the estimate
+    # (a critical speed of 78 ± 1 m/s would drown its indices in noise).
+    mean = both.mean(axis=-1, keepdims=True)
+    first = np.mean((fB - mean) * (fAB - fA), axis=-1) / variance
     total = 0.5 * np.mean((fA - fAB) ** 2, axis=-1) / variance
     return first, total, variance
 
