@@ -32,6 +32,7 @@ from raildyn.widgets import (
     chapter08,
     chapter09,
     chapter10,
+    chapter11,
 )
 from raildyn.widgets._core import Recipe, _nearest
 
@@ -74,6 +75,11 @@ MOVES = {
     chapter10.moving_load_explorer: dict(speed_kmh=300.0, position=0.8, damping=0.02),
     chapter10.train_resonance: dict(coach_length=22.0, span=25.0, frequency_hz=5.0),
     chapter10.load_models: dict(speed_kmh=150.0),
+    chapter11.prediction_vs_measurement: dict(
+        speed_kmh=70.0, scale=1.2, frequency_hz=10.0, damping=5.0, gauge=2
+    ),
+    chapter11.metrics_explorer: dict(gain=1.2, delay_ms=-30.0, noise=10.0),
+    chapter11.sensitivity_bars: dict(output="frequency_hz", kind="total"),
 }
 
 
