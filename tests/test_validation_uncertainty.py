@@ -69,8 +69,8 @@ def linear_moments():
 
 
 def test_ishigami_closed_form_matches_the_published_values():
-    # The brief's values (Ishigami & Homma 1990, a = 7, b = 0.1, as tabulated by Saltelli et al. 2010
-    # section 4) against the closed form, to their 4 printed decimals.
+    # The indices issue 19 states for Ishigami & Homma's (1990) function with a = 7, b = 0.1, against
+    # the closed form above, to their 4 printed decimals.
     S, ST = ishigami_indices(7.0, 0.1)
     np.testing.assert_allclose(S, [0.3139, 0.4424, 0.0], atol=5e-5)
     np.testing.assert_allclose(ST, [0.5576, 0.4424, 0.2437], atol=5e-5)

@@ -389,14 +389,14 @@ def sobol_indices(
     A_B⁽ⁱ⁾ is A with its column i taken from B. The model runs on A, B and the d matrices
     A_B⁽ⁱ⁾, N (d + 2) times in all, on dask.distributed. With f₀ and V the mean and the
     variance of f over A and B together, the first-order index uses Saltelli's estimator
-    and the total index Jansen's (Saltelli et al. 2010, Table 2, estimators (b) and (f)):
+    and the total index Jansen's (Jansen 1999), both as Saltelli et al. (2010, Table 2) list them:
 
     S_i = (1/N) Σ_j (f(B)_j − f₀) (f(A_B⁽ⁱ⁾)_j − f(A)_j) / V,
     S_Ti = (1/2N) Σ_j (f(A)_j − f(A_B⁽ⁱ⁾)_j)² / V.
 
     Saltelli's estimator is written with f(B) itself; subtracting f₀ leaves its expectation
-    unchanged and removes the noise an output's mean adds to it (SALib centres the
-    same way), so the indices of f and of f + c agree.
+    unchanged and removes the noise an output's mean adds to it (SALib's analysis centres its
+    outputs too), so the indices of f and of f + c agree.
 
     The intervals are bootstrap percentile intervals over the N rows (Efron & Tibshirani
     1993, ch. 13), resampled ``bootstrap`` times with draws from ``rng`` after the samples.
@@ -495,7 +495,7 @@ def sobol_indices(
 
 
 def _sobol_estimators(fA, fB, fAB):
-    """S_i (Saltelli et al. 2010, Table 2 (b)) and S_Ti (Jansen 1999; ibid., (f)), and V.
+    """S_i by Saltelli's estimator and S_Ti by Jansen's (Saltelli et al. 2010, Table 2), centred, and V.
 
     ``fA`` and ``fB`` have shape (..., N); ``fAB`` has shape (d, ..., N). Returns arrays of
     shape (d, ...) and the variance of shape (...).
