@@ -114,8 +114,8 @@ def _deflection(speed: float, frequency_hz: float, damping_ratio: float, gauge: 
 
     Strain is c M/EI and the case fitted one factor c/EI₀ from deflection to strain at the assumed
     EI₀ (f₁ = 28.6 Hz); a deflection times EI/EI₀ keeps that factor whatever f₁ is chosen, so that
-    f₁ changes only the dynamics. The time at which the train's centre passes the panel's middle is kept at the identified one:
-    a changed speed stretches the passage about it.
+    f₁ changes only the dynamics. The time at which the train's centre passes the panel's middle is
+    kept at the identified one: a changed speed stretches the passage about it.
     """
     case = _case()
     beam = _stringer(frequency_hz, damping_ratio)
@@ -340,8 +340,8 @@ def _uniform(value: float):
 _CAR_OUTPUTS: dict = {}
 
 
-def _car_output(output: str, nominal: float = 0.0, **params) -> float:
-    """One output of the car with the given stiffnesses and conicity, less ``nominal``.
+def _car_output(output: str, **params) -> float:
+    """One output of the car with the given stiffnesses and conicity.
 
     ``output`` is 'speed_kmh' (the critical speed, km/h) or 'frequency_hz' (the hunting frequency
     there, Hz).
@@ -350,7 +350,7 @@ def _car_output(output: str, nominal: float = 0.0, **params) -> float:
     if key not in _CAR_OUTPUTS:
         r = critical_speed(_CAR.replace(**params), _SPEED_RANGE)
         _CAR_OUTPUTS[key] = {"speed_kmh": 3.6 * r.speed, "frequency_hz": r.frequency_hz}
-    return _CAR_OUTPUTS[key][output] - nominal
+    return _CAR_OUTPUTS[key][output]
 
 
 @lru_cache(maxsize=1)
@@ -365,12 +365,7 @@ def _sobol_study() -> dict:
     """
     from distributed import Client
 
-    # Each output less its value for the default car: the indices do not change, but Saltelli's
-    # first-order estimator multiplies f(B) itself, and a large mean beside a small spread (280 km/h
-    # against 4 km/h here) swamps its sum with noise: unshifted, Σ S_i came out 13 at N = 32.
     defaults = {name: getattr(getattr(_CAR, part), name) for name, (part, _) in _PARAMETERS.items()}
-    nominal = {output: _car_output(output, **defaults) for output in _OUTPUTS.values()}
-    default = tuple(float(defaults[name]) for name in _PARAMETERS)
     distributions = {name: _uniform(value) for name, value in defaults.items()}
     results = {}
     with Client(
@@ -378,16 +373,15 @@ def _sobol_study() -> dict:
     ) as client:
         for output in _OUTPUTS.values():
             results[output] = sobol_indices(
-                partial(_car_output, output, nominal[output]),
+                partial(_car_output, output),
                 distributions,
                 _SOBOL_N,
                 rng=_SOBOL_SEED,
                 client=client,
                 bootstrap=500,
             )
-    drawn = [v for key, v in _CAR_OUTPUTS.items() if key != default]  # the samples, not the default car
-    values = {output: np.array([v[output] for v in drawn]) for output in _OUTPUTS.values()}
-    return {"sobol": results, "values": values, "evaluations": len(drawn), "nominal": nominal}
+    values = {output: np.array([v[output] for v in _CAR_OUTPUTS.values()]) for output in _OUTPUTS.values()}
+    return {"sobol": results, "values": values, "evaluations": len(_CAR_OUTPUTS)}
 
 
 def _kind_values(result, kind: str) -> tuple[np.ndarray, np.ndarray]:
