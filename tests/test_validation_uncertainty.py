@@ -200,9 +200,10 @@ def test_sobol_indices_ignore_a_constant_added_to_the_output(client):
 
 def test_sobol_bootstrap_is_reproducible_and_seeded(client):
     dists = {"x": stats.norm(), "y": stats.uniform()}
-    a = sobol_indices(lambda x, y: x + y**2, dists, 300, rng=5, client=client, bootstrap=100)
-    b = sobol_indices(lambda x, y: x + y**2, dists, 300, rng=5, client=client, bootstrap=100, batch=17)
-    c = sobol_indices(lambda x, y: x + y**2, dists, 300, rng=6, client=client, bootstrap=100)
+    # the same seed in other batches (300, then 7 of 180 and one of 120), then another seed
+    a = sobol_indices(lambda x, y: x + y**2, dists, 300, rng=5, client=client, bootstrap=100, batch=300)
+    b = sobol_indices(lambda x, y: x + y**2, dists, 300, rng=5, client=client, bootstrap=100, batch=180)
+    c = sobol_indices(lambda x, y: x + y**2, dists, 300, rng=6, client=client, bootstrap=100, batch=300)
     assert np.array_equal(a.first_order_interval, b.first_order_interval)
     assert np.array_equal(a.total, b.total)
     assert not np.array_equal(a.total, c.total)
