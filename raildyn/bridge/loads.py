@@ -96,7 +96,7 @@ class MovingLoad:
     system : LinearSystem or None
         The sprung vehicle, its coordinates measured from rest on a rigid track; track input j
         is the rail's height under axle j (vertical, both rails), and the system knows its
-        inputs' own stiffness (:attr:`raildyn.linear_model.LinearSystem.input_forces`). None: no
+        inputs' own stiffness (:meth:`raildyn.linear_model.LinearSystem.input_forces`). None: no
         sprung part.
     name : str
         For legends.

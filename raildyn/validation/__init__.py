@@ -10,6 +10,8 @@ parameters from records, and spreading uncertain parameters into the answer.
   intervals: a free decay, a bridge's free vibration, weigh-in-motion, a coast-down.
 * :mod:`raildyn.validation.measured` — a measured case: strain at midspan of a railway bridge near
   Trondheim under an NSB class 92 train, and the chapter-10 prediction beside it.
+* :mod:`raildyn.validation.uncertainty` — Monte Carlo prediction bands and Sobol' indices, run on
+  dask.distributed (a local cluster by default, any scheduler on request), reproducible from a seed.
 """
 
 from raildyn.validation.acceptance import SectionMaxima, SlidingRMS, percentiles, section_maxima, sliding_rms
@@ -48,8 +50,13 @@ from raildyn.validation.spectra import (
     frequency_response_h1,
     third_octave_rms,
 )
+from raildyn.validation.uncertainty import MonteCarloResult, SobolResult, monte_carlo, sobol_indices
 
 __all__ = [
+    "MonteCarloResult",
+    "SobolResult",
+    "monte_carlo",
+    "sobol_indices",
     "LERELVA_PANEL",
     "NSB92_LOADS",
     "NSB92_SPACINGS",

@@ -1,7 +1,7 @@
 """Parameter identification from test records by least squares, with confidence intervals.
 
 Four identifications a railway dynamics course meets, each a fit of a physical model to a
-record with :func:`scipy.optimize.least_squares`:
+record with ``scipy.optimize.least_squares``:
 
 * :func:`free_decay` — natural frequency and damping ratio from a free decay (a damped
   sinusoid), beside chapter 1's logarithmic decrement of the same record (book eq. 1.17);
@@ -172,7 +172,7 @@ class ParameterFit:
         Parameters
         ----------
         name : str
-            One of :attr:`names`.
+            One of ``names``.
 
         Returns
         -------
@@ -181,12 +181,12 @@ class ParameterFit:
         return float(self.estimate[self._index(name)])
 
     def bounds(self, name: str) -> tuple[float, float]:
-        """The interval of one parameter at :attr:`confidence`, by name.
+        """The interval of one parameter at ``confidence``, by name.
 
         Parameters
         ----------
         name : str
-            One of :attr:`names`.
+            One of ``names``.
 
         Returns
         -------
@@ -239,7 +239,7 @@ class ParameterFit:
 class FreeDecayFit(ParameterFit):
     """A damped sinusoid fitted to a free decay, beside the logarithmic decrement of its maxima.
 
-    The parameters (:attr:`names`) are ``frequency_hz`` (f_n = ω_n/2π, Hz), ``damping_ratio``
+    The parameters (``names``) are ``frequency_hz`` (f_n = ω_n/2π, Hz), ``damping_ratio``
     (ξ), ``amplitude`` (A, the record's unit), ``phase`` (φ, rad) and ``offset`` (the record's
     unit) of x(t) = A e^(−ξω_n t) cos(ω_d t + φ) + offset (book eqs. 1.12-1.14).
 
@@ -449,7 +449,7 @@ def _moment_influence(span, x, a):
 class WeighInMotionFit(ParameterFit):
     """A bridge weigh-in-motion fit: speed, arrival time, axle spacings, axle loads and offsets.
 
-    The parameters (:attr:`names`) are ``speed`` (m/s), ``arrival`` (s: the leading axle at
+    The parameters (``names``) are ``speed`` (m/s), ``arrival`` (s: the leading axle at
     the entry support), ``spacing_1`` … (m, between consecutive axles, when they were fitted),
     ``load_1`` … (N, leading axle first) and ``offset_1`` … (strain, one per sensor).
 
@@ -719,7 +719,7 @@ def weigh_in_motion(
 class CoastDownFit(ParameterFit):
     """The Davis coefficients fitted to a coast-down record.
 
-    The parameters (:attr:`names`) are ``A`` (N), ``B`` (N·s/m), ``C`` (N·s²/m²) of the
+    The parameters (``names``) are ``A`` (N), ``B`` (N·s/m), ``C`` (N·s²/m²) of the
     resistance R(v) = A + Bv + Cv² and ``initial_speed`` (m/s, at the record's first sample).
     """
 

@@ -259,7 +259,7 @@ class LerelvaCase:
 
     @property
     def pattern_spacings(self) -> np.ndarray:
-        """The free fit's axle spacings rescaled to :attr:`peak_speed`, m.
+        """The free fit's axle spacings rescaled to ``peak_speed``, m.
 
         The record fixes the times between axles, d_k/v, far better than v itself (the only
         length in the model is the span); these are those times at the independent speed.
