@@ -53,26 +53,22 @@ def _metric_values(agreement) -> np.ndarray:
 
 
 def _metric_panel(ax, reference=None):
-    """Bars for the six metrics (heights moved later) and their value labels; returns both lists."""
+    """Bars for the six metrics, their heights moved later (the values go in the status line)."""
     pos = np.arange(len(_METRICS))
     rects = ax.bar(pos, np.zeros(len(_METRICS)), width=0.6, color=plots.COLORS[0])
     if reference is not None:
         ax.plot(pos, reference, "_", color="k", ms=26, mew=2.5, zorder=4, label="the fitted case")
         ax.legend(loc="upper right", fontsize=7)
-    labels = [ax.text(p, 0.0, "", ha="center", va="bottom", fontsize=7) for p in pos]
     ax.axhline(0.0, color="0.3", lw=0.8)
     ax.set_xticks(pos, [name for name, _ in _METRICS], fontsize=8)
     ax.set(ylim=(-0.6, _BAR_TOP + 0.15), ylabel="metric (0: perfect)")
-    return list(rects), labels
+    return list(rects)
 
 
-def _move_bars(rects, labels, values) -> None:
-    """Bar heights and their labels; a bar beyond the axis is drawn to its edge and labelled."""
-    for rect, label, value in zip(rects, labels, values, strict=True):
-        shown = float(np.clip(value, -0.6, _BAR_TOP))
-        rect.set_height(shown)
-        label.set_text(f"{value:.3f}")
-        label.set_position((rect.get_x() + rect.get_width() / 2, max(shown, 0.0) + 0.01))
+def _move_bars(rects, values) -> None:
+    """Bar heights; a bar beyond the axis is drawn to its edge (the status line has its value)."""
+    for rect, value in zip(rects, values, strict=True):
+        rect.set_height(float(np.clip(value, -0.6, _BAR_TOP)))
 
 
 def _agreement_text(a) -> str:
@@ -164,10 +160,10 @@ def _lerelva_setup(live, status):
         fontsize="medium",
     )
     reference = [_metric_values(a) for a in case.agreement]
-    rects, labels = _metric_panel(bars, reference[0])
+    rects = _metric_panel(bars, reference[0])
     (ref_marks,) = [line for line in bars.lines if line.get_label() == "the fitted case"]
     bars.set_title("agreement at this gauge", fontsize="medium")
-    live.animate(measured, predicted, *rects, ref_marks, *labels)
+    live.animate(measured, predicted, *rects, ref_marks)
     fitted_kmh = 3.6 * case.fit.speed
 
     def redraw(v):
@@ -178,7 +174,7 @@ def _lerelva_setup(live, status):
         measured.set_ydata(1e6 * m)
         predicted.set_ydata(1e6 * p)
         agreement = compare(m, p, t)
-        _move_bars(rects, labels, _metric_values(agreement))
+        _move_bars(rects, _metric_values(agreement))
         ref_marks.set_ydata(reference[gauge])
         alpha = (kmh / 3.6) / (2 * f1 * LERELVA_PANEL)
         status.value = (
@@ -262,16 +258,16 @@ def _explorer_setup(live, status):
     history.set(xlim=(0.0, 2.0), ylim=(-1.8, 1.8), xlabel="time (s)", ylabel="signal")
     history.legend(loc="upper right", fontsize=8)
     history.set_title("prediction = gain × measured(t − delay) + noise", fontsize="medium")
-    rects, labels = _metric_panel(bars)
+    rects = _metric_panel(bars)
     bars.set_title("what each metric sees", fontsize="medium")
-    live.animate(predicted, *rects, *labels)
+    live.animate(predicted, *rects)
 
     def redraw(v):
         gain, delay, noise = float(v["gain"]), float(v["delay_ms"]) / 1e3, float(v["noise"]) / 100.0
         p = gain * _synthetic(t - delay) + noise * _noise()
         predicted.set_ydata(p)
         agreement = compare(m, p, t)
-        _move_bars(rects, labels, _metric_values(agreement))
+        _move_bars(rects, _metric_values(agreement))
         status.value = f"gain {gain:.2f}, delay {1e3 * delay:.0f} ms, noise {100 * noise:.0f} % · " + (
             _agreement_text(agreement)
         )
