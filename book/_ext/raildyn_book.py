@@ -112,12 +112,12 @@ class ValidationTable(SphinxDirective):
         within = sum(c["within"] for c in record.values())
         out = [
             nodes.paragraph(
-                text=f"{len(record)} checks of {len({c['model'] for c in record.values()})} models; "
-                f"{within} of them ({100 * within / len(record):.0f} %) within their tolerance."
+                text=f"{len(record)} checks in {len(by_chapter)} chapters; {within} of them "
+                f"({100 * within / len(record):.0f} %) within their tolerance."
             )
         ]
         for chapter, checks in sorted(by_chapter.items()):
-            section = nodes.rubric(text=f"Chapter {chapter}")
+            section = nodes.rubric(text=f"Chapter {chapter} ({len(checks)} checks)")
             rows = [
                 (c["model"], c["reference"], c["kind"], f"{c['error']:.2g}{_unit(c)}",
                  f"{c['tolerance']:.2g}{_unit(c)}", "yes" if c["within"] else "NO")
