@@ -161,7 +161,7 @@ def test_sobol_bootstrap_intervals_cover_the_truth_at_their_level(client):
 
 
 def test_progress_bar_counts_the_batches(client, monkeypatch):
-    from raildyn.validation import uncertainty
+    from raildyn.validation import _cluster
 
     seen = []
 
@@ -178,7 +178,7 @@ def test_progress_bar_counts_the_batches(client, monkeypatch):
         def update(self, k):
             seen[-1][1] += k
 
-    monkeypatch.setattr(uncertainty, "progress_bar", lambda total, desc: Bar(total, desc))
+    monkeypatch.setattr(_cluster, "progress_bar", lambda total, desc: Bar(total, desc))
     monte_carlo(lambda x: x, {"x": stats.norm()}, 100, rng=1, client=client, batch=30)
     assert seen == [[4, 4, "Monte Carlo (100 evaluations, batches)"]]  # 30 + 30 + 30 + 10
 
