@@ -134,81 +134,28 @@ def march(
     S = np.empty((a, 3, n))
     X[0, :] = 0.0
     V[0, :] = 0.0
-    _assemble(
-        0.0,
-        v,
-        length,
-        dx,
-        phi,
-        dphi,
-        ddphi,
-        Mb,
-        Cb,
-        Kb,
-        M,
-        C,
-        K,
-        GK,
-        GC,
-        KW,
-        CW,
-        W,
-        m,
-        d,
-        r[0],
-        A,
-        B,
-        Z,
-        f,
-        S,
-    )
-    if not np.all(np.isfinite(f)):
-        return 0
-    Acc[0, :] = np.linalg.solve(A, f)
-    _contact(v, n, p, X[0], V[0], Acc[0], W, m, GK, GC, KW, CW, r[0], S, F[0])
-    for s in range(steps):
-        t = (s + 1) * h
-        _assemble(
-            t,
-            v,
-            length,
-            dx,
-            phi,
-            dphi,
-            ddphi,
-            Mb,
-            Cb,
-            Kb,
-            M,
-            C,
-            K,
-            GK,
-            GC,
-            KW,
-            CW,
-            W,
-            m,
-            d,
-            r[s + 1],
-            A,
-            B,
-            Z,
-            f,
-            S,
-        )
-        xp = X[s] + h * V[s] + 0.25 * h * h * Acc[s]
-        vp = V[s] + 0.5 * h * Acc[s]
-        lhs = A + 0.5 * h * B + 0.25 * h * h * Z
-        rhs = f - B @ vp - Z @ xp
-        if not np.all(np.isfinite(rhs)):
-            return s + 1
-        acc = np.linalg.solve(lhs, rhs)
-        X[s + 1] = xp + 0.25 * h * h * acc
-        V[s + 1] = vp + 0.5 * h * acc
-        Acc[s + 1] = acc
-        if not np.all(np.isfinite(X[s + 1])):
-            return s + 1
-        _contact(v, n, p, X[s + 1], V[s + 1], acc, W, m, GK, GC, KW, CW, r[s + 1], S, F[s + 1])
+    for s in range(steps + 1):
+        # fmt: off
+        _assemble(s * h, v, length, dx, phi, dphi, ddphi, Mb, Cb, Kb, M, C, K, GK, GC, KW, CW, W, m, d,
+                  r[s], A, B, Z, f, S)
+        # fmt: on
+        if s == 0:  # from rest: the acceleration that balances the loads at t = 0
+            if not np.all(np.isfinite(f)):
+                return 0
+            Acc[0, :] = np.linalg.solve(A, f)
+        else:
+            xp = X[s - 1] + h * V[s - 1] + 0.25 * h * h * Acc[s - 1]
+            vp = V[s - 1] + 0.5 * h * Acc[s - 1]
+            rhs = f - B @ vp - Z @ xp
+            if not np.all(np.isfinite(rhs)):
+                return s
+            acc = np.linalg.solve(A + 0.5 * h * B + 0.25 * h * h * Z, rhs)
+            X[s] = xp + 0.25 * h * h * acc
+            V[s] = vp + 0.5 * h * acc
+            Acc[s] = acc
+            if not np.all(np.isfinite(X[s])):
+                return s
+        _contact(v, n, p, X[s], V[s], Acc[s], W, m, GK, GC, KW, CW, r[s], S, F[s])
     return -1
 
 
