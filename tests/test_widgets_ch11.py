@@ -185,7 +185,7 @@ def test_metrics_explorer_noise_raises_every_error():
 # Sobol' indices of the car's critical speed
 
 
-# The Sobol' study behind the bars takes 5-8 s (224 critical speeds, once per process): its tests are slow.
+# The Sobol' study behind the bars takes 3-5 s (224 critical speeds, once per process): its tests are slow.
 @pytest.mark.slow
 def test_sensitivity_bars_are_the_sobol_result():
     container, update = chapter11.sensitivity_bars()

@@ -131,7 +131,10 @@ _SCATTERED = {
 
 def _speed_kmh(**params) -> float:
     """The car's linear critical speed, km/h."""
-    return 3.6 * critical_speed(_CAR.replace(**params), (1.0, 150.0)).speed
+    r = critical_speed(_CAR.replace(**params), (50.0, 110.0), scan=16)  # 77.9 m/s ± 5 %: the widget's bracket
+    if r.status != "crossing":
+        raise ValueError(f"no critical speed within 50-110 m/s for {params} (status {r.status!r})")
+    return 3.6 * r.speed
 
 
 @register(
