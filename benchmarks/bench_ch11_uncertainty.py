@@ -33,7 +33,7 @@ import cloudpickle
 import numpy as np
 from scipy import stats
 
-from benchmarks.common import Case, timed
+from benchmarks.common import Case, timed, widget_case
 from raildyn.stability.linear import critical_speed
 from raildyn.validation.uncertainty import monte_carlo
 from raildyn.vehicles import Car
@@ -122,5 +122,16 @@ def cases(repeats: int):
             slow,
             f"speed-up ≥ 1.6 on {WORKERS} workers (efficiency ≥ 0.8; ideal {WORKERS})",
             "serial loop, same draws",
-        )
+        ),
+        *_widget_cases(repeats),
+    ]
+
+
+def _widget_cases(repeats: int) -> list[Case]:
+    """Chapter 11's widgets, each update against a new figure per change."""
+    from raildyn.widgets import chapter11
+
+    return [
+        widget_case(label, recipe, control, values, repeats, goal="median ≤ 50 ms")
+        for label, recipe, control, values in chapter11.BENCH_MOVES
     ]
