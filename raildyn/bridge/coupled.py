@@ -38,6 +38,7 @@ __all__ = ["BridgeCrossing", "crossing"]
 _STEPS_PER_PERIOD = 20  # of the shortest period kept: the scheme's period error is then below 1 %
 _SPAN_STEPS = 200  # at least this many steps while one axle crosses the span
 _MAX_STEPS = 2_000_000
+_MAX_AXLE_SAMPLES = 10_000_000  # the rail under every axle at every step: 240 MB at most
 _TABLE_POINTS_PER_MODE = 200  # Hermite tables: φ to ~1e-10 of its peak (module _kernel)
 
 
@@ -259,10 +260,11 @@ def crossing(
     )
     duration = (L + load.length) / v + free
     steps = int(np.ceil(duration / h))
-    if steps > _MAX_STEPS:
+    if steps > _MAX_STEPS or (steps + 1) * load.positions.size > _MAX_AXLE_SAMPLES:
         raise ValueError(
-            f"time_step {h!r} s gives {steps} steps over the {duration:.4g} s run; "
-            f"at most {_MAX_STEPS} are allowed"
+            f"time_step {h!r} s gives {steps} steps over the {duration:.4g} s run for "
+            f"{load.positions.size} axles; at most {_MAX_STEPS} steps and {_MAX_AXLE_SAMPLES:.0e} "
+            "axle-steps are allowed (a longer step, fewer modes or a shorter train)"
         )
     time = np.arange(steps + 1) * h
     x_axles = v * time[:, None] - load.positions[None, :]
