@@ -30,9 +30,19 @@ def _matplotlib_hygiene():
     assert not changed, f"the test changed matplotlib rcParams: {changed}"
 
 
+# Run first in every kernel the book build starts (an IPython start-up file): any warning raised by
+# raildyn, numpy or matplotlib becomes an error, so the executed notebooks that tests/test_notebooks.py
+# reads ran strict. (The one exception is ipykernel's own notice at kernel shutdown, not the notebook's.)
+STRICT = """import warnings
+warnings.simplefilter("error")
+warnings.filterwarnings("ignore", category=PendingDeprecationWarning, module="ipykernel")
+"""
+
+
 @pytest.fixture(scope="session")
-def built_book():
-    """Build the book once per session into book/_build, as ``make book`` does, warnings reported.
+def built_book(tmp_path_factory):
+    """Build the book once per session into book/_build, as ``make book`` does, warnings reported,
+    every notebook executed in a strict kernel (``STRICT``).
 
     Returns the finished process and the folder of the HTML pages.
     """
@@ -54,7 +64,11 @@ def built_book():
     ]
     write_references()  # the validation page reads the checks recorded so far in this session
     # As `make book`: no progress bars, which a page without a kernel would show frozen at 0 %.
-    env = {**os.environ, "RAILDYN_PROGRESS": "0"}
+    ipython = tmp_path_factory.mktemp("ipython")
+    startup = ipython / "profile_default" / "startup"
+    startup.mkdir(parents=True)
+    (startup / "00-strict.py").write_text(STRICT)
+    env = {**os.environ, "RAILDYN_PROGRESS": "0", "IPYTHONDIR": str(ipython)}
     proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900, env=env)
     return proc, ROOT / "book" / "_build" / "html"
 
