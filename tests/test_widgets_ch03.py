@@ -4,13 +4,10 @@ import re
 
 import numpy as np
 import pytest
+from widget_helpers import status_line
 
 from raildyn import track
 from raildyn.widgets import chapter03
-
-
-def _status(container):
-    return container.children[-2].children[-1].value
 
 
 def test_random_track_status_gives_the_analytic_band_rms():
@@ -19,7 +16,7 @@ def test_random_track_status_gives_the_analytic_band_rms():
     band = track.wavelength_band((2.0, 200.0))
     expected = 1e3 * np.sqrt(track.band_variance("fra", "vertical", 4, band))
     analytic, sampled = (
-        float(s) for s in re.findall(r"(?:analytic|sample) ([0-9.]+) mm", _status(container))
+        float(s) for s in re.findall(r"(?:analytic|sample) ([0-9.]+) mm", status_line(container))
     )
     assert analytic == pytest.approx(expected, abs=0.006)  # printed to 0.01 mm
     assert sampled == pytest.approx(analytic, abs=0.011)  # the sample's mean square is the band integral
@@ -29,7 +26,7 @@ def test_random_track_german_gauge_has_its_spectrum():
     container, update = chapter03.random_track()
     low = update(track="German low", component="gauge")
     high = update(track="German high")
-    assert low != high and "RMS" in _status(container)
+    assert low != high and "RMS" in status_line(container)
 
 
 def test_jointed_rail_harmonics_vanish_for_roll_when_in_phase():
@@ -38,4 +35,4 @@ def test_jointed_rail_harmonics_vanish_for_roll_when_in_phase():
     ax_h = container.live.axes[0][1]
     roll = ax_h.containers[1]
     assert max(bar.get_height() for bar in roll.patches) == pytest.approx(0.0, abs=1e-9)
-    assert "Hz" in _status(container)
+    assert "Hz" in status_line(container)

@@ -4,6 +4,7 @@ import re
 
 import numpy as np
 import pytest
+from widget_helpers import status_line
 
 from raildyn import figures, stability, wheelset
 from raildyn.curving import geometry, steady_curving
@@ -11,15 +12,11 @@ from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIG
 from raildyn.widgets import chapter05, chapter07
 
 
-def _status(container):
-    return container.children[-2].children[-1].value
-
-
 def test_klingel_status_gives_the_wavelength():
     container, update = chapter05.klingel()
     update(conicity=0.1, rolling_radius_mm=500.0)
     expected = wheelset.kinematic_wavelength(0.5, 0.75, 0.1)
-    assert f"{expected:.2f} m" in _status(container)
+    assert f"{expected:.2f} m" in status_line(container)
 
 
 def test_wheelset_roots_status_gives_the_critical_speed():
@@ -28,14 +25,14 @@ def test_wheelset_roots_status_gives_the_critical_speed():
     ws = wheelset.Wheelset(conicity=0.2, yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
     cs = stability.critical_speed(ws, (2.0, 120.0))
     # The widget's root is found to 0.05 m/s and printed to 0.1 m/s.
-    shown = float(re.search(r"critical speed ([\d.]+) m/s", _status(container)).group(1))
+    shown = float(re.search(r"critical speed ([\d.]+) m/s", status_line(container)).group(1))
     assert shown == pytest.approx(cs.speed, abs=0.1)
 
 
 def test_free_wheelset_is_reported_unstable():
     container, update = chapter05.wheelset_roots()
     update(yaw_stiffness=0.0, lateral_stiffness=0.0)
-    assert "unstable at the lowest speed" in _status(container)
+    assert "unstable at the lowest speed" in status_line(container)
 
 
 def test_curved_wheelset_shows_the_steady_state_of_the_suspended_wheelset():
@@ -44,7 +41,7 @@ def test_curved_wheelset_shows_the_steady_state_of_the_suspended_wheelset():
     ws = wheelset.Wheelset(yaw_stiffness=10.0e6, lateral_stiffness=5.0e6)
     speed = geometry.speed_for_deficiency(800.0, 0.1, 0.1)  # the widget's curves all have 100 mm of cant
     state = steady_curving(ws, speed, 800.0, cant=0.1)
-    status = _status(container)
+    status = status_line(container)
     assert f"{3.6 * state.speed:.0f} km/h" in status
     assert f"offset {1e3 * state.offset[0]:.2f} mm" in status
     assert f"angle of attack {1e3 * state.angle_of_attack[0]:.2f} mrad" in status
@@ -99,7 +96,9 @@ def test_car_roots_status_and_chart_give_the_critical_speed():
     car = Car().replace(conicity=0.2, yaw_stiffness=20.0e6)
     # The widget's root is found to 0.05 m/s over its own speed range; the same call here.
     cs = stability.critical_speed(car, (5.0, 150.0), tol=0.05)
-    shown = re.search(r"critical speed ([\d.]+) m/s = \d+ km/h, hunting at ([\d.]+) Hz", _status(container))
+    shown = re.search(
+        r"critical speed ([\d.]+) m/s = \d+ km/h, hunting at ([\d.]+) Hz", status_line(container)
+    )
     assert float(shown.group(1)) == pytest.approx(cs.speed, abs=0.1)
     assert float(shown.group(2)) == pytest.approx(cs.frequency_hz, abs=0.01)
     # The chart (ModeSweep.plot, moved in place) marks the same speed and names it beside the marker.
@@ -136,7 +135,7 @@ def test_critical_curve_follows_the_critical_speed_map():
     car_line = container.live.figure.axes[0].lines[0]
     np.testing.assert_allclose(car_line.get_ydata(), 3.6 * expected.speeds[0], rtol=1e-12)
     i = int(np.argmin(np.abs(conicities - 0.15)))
-    assert f"car {3.6 * expected.speeds[0, i]:.0f} km/h" in _status(container)
+    assert f"car {3.6 * expected.speeds[0, i]:.0f} km/h" in status_line(container)
 
 
 @pytest.mark.parametrize(
@@ -152,8 +151,10 @@ def test_vehicle_comparison_marks_each_vehicles_critical_speed(vehicle, model):
     container, update = chapter07.vehicle_comparison()
     update(vehicle=vehicle, conicity=0.2)
     cs = stability.critical_speed(model.replace(conicity=0.2), (1.0, 200.0), tol=0.05)
-    shown = re.search(r"critical speed ([\d.]+) m/s = \d+ km/h, hunting at ([\d.]+) Hz", _status(container))
-    assert shown and _status(container).startswith(vehicle)
+    shown = re.search(
+        r"critical speed ([\d.]+) m/s = \d+ km/h, hunting at ([\d.]+) Hz", status_line(container)
+    )
+    assert shown and status_line(container).startswith(vehicle)
     assert float(shown.group(1)) == pytest.approx(cs.speed, abs=0.1)
     assert float(shown.group(2)) == pytest.approx(cs.frequency_hz, abs=0.01)
     curves_ax, shape_ax = container.live.figure.axes
@@ -195,4 +196,4 @@ def test_klingel_widget_and_figure_draw_the_same_kinematic_oscillation():
     np.testing.assert_allclose(
         figure_free.get_ydata(), 5.0 * np.sin(2 * np.pi * x / k.wavelength), atol=1e-12
     )
-    assert f"{k.wavelength:.2f} m" in _status(container)
+    assert f"{k.wavelength:.2f} m" in status_line(container)

@@ -5,20 +5,17 @@ import re
 
 import numpy as np
 import pytest
+from widget_helpers import status_line
 
 from raildyn import ride, track
 from raildyn.vehicles import MANCHESTER_VERTICAL, response_spectrum
 from raildyn.widgets import chapter06
 
 
-def _status(container):
-    return container.children[-2].children[-1].value
-
-
 def test_ride_status_gives_the_frequency_domain_index_and_a_matching_run():
     container, update = chapter06.ride_quality()
     update(track="FRA class 4", speed_kmh=120.0, seed=3)
-    text = _status(container)
+    text = status_line(container)
     rms_fd, rms_td = (float(x) for x in re.findall(r"RMS ([0-9.]+) m/s²", text))
     wz_fd, wz_td = (float(x) for x in re.findall(r"Wz ([0-9.]+)", text))
     w = np.linspace(0.2, 2 * np.pi * 30, 3000)
@@ -41,7 +38,9 @@ def test_ride_status_gives_the_frequency_domain_index_and_a_matching_run():
 def test_rock_widget_marks_the_resonance_speed(label):
     container, update = chapter06.rock_and_roll_widget()
     update(car=label, speed_kmh=40.0)
-    resonance = float(re.search(r"roll resonance \(springs alone\) at ([0-9.]+) km/h", _status(container))[1])
+    resonance = float(
+        re.search(r"roll resonance \(springs alone\) at ([0-9.]+) km/h", status_line(container))[1]
+    )
     assert resonance == pytest.approx(3.6 * chapter06.FREIGHT_CARS[label].roll_resonance_speed(), abs=0.51)
     ax = container.live.axes[0][0]
     amp = ax.lines[0].get_ydata()

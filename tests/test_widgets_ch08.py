@@ -1,29 +1,15 @@
 """Chapter 8 widgets driven without a browser: the numbers shown are the models', moved in place."""
 
 import re
-import statistics
 import time
 
 import numpy as np
 import pytest
+from widget_helpers import median_update_ms, status_line
 
 from raildyn.curving import climb, curve_entry, geometry, quasi_static_curving
 from raildyn.vehicles import Bogie, Car
 from raildyn.widgets import chapter08
-
-
-def _status(container):
-    return container.children[-2].children[-1].value
-
-
-def _median_update_ms(update, control, values) -> float:
-    times = []
-    for value in values:
-        start = time.perf_counter()
-        update(**{control: value})
-        times.append(time.perf_counter() - start)
-    return 1e3 * statistics.median(times)
-
 
 # ---------------------------------------------------------------------------
 # The car in plan
@@ -36,7 +22,7 @@ def test_curving_plan_shows_the_cars_quasi_static_equilibrium():
     before = [line.get_xydata().copy() for line in axles]
     update(radius=800.0, speed_kmh=90.0, cant_mm=50.0)
     state = quasi_static_curving(Car().nonlinear(), 90.0 / 3.6, 800.0, 0.05)
-    status = _status(container)
+    status = status_line(container)
     deficiency = 1e3 * geometry.cant_deficiency(90.0 / 3.6, 800.0, 0.05)
     assert f"cant deficiency {deficiency:.0f} mm" in status
     assert f"leading outer wheel Y/Q = {state.derailment_quotient[0, 1]:.3f}" in status
@@ -71,7 +57,7 @@ def test_curving_plan_gives_the_published_numbers_at_the_balance_speed():
     # leading wheelsets flange at 3.8 mrad, Y/Q 0.286. The widget starts at 71 km/h (0.3 km/h below);
     # the angle moves by less than 0.05 mrad and Y/Q by less than 0.005 over that change.
     container, _ = chapter08.curving_plan()
-    status = _status(container)
+    status = status_line(container)
     assert re.search(r"1: α \+3\.8\d mrad, y \+[\d.]+ mm, flange", status)
     assert re.search(r"3: α \+3\.[5-8]\d mrad, y \+[\d.]+ mm, flange", status)
     quotient = float(re.search(r"Y/Q = ([\d.]+)", status).group(1))
@@ -82,12 +68,12 @@ def test_curving_plan_says_why_the_car_has_no_equilibrium():
     container, update = chapter08.curving_plan()
     ax = container.live.figure.axes[0]
     update(radius=150.0, speed_kmh=140.0, cant_mm=0.0)
-    assert "no equilibrium" in _status(container) and "overturns" in _status(container)
+    assert "no equilibrium" in status_line(container) and "overturns" in status_line(container)
     axles = [line for line in ax.lines if line.get_marker() == "o"]
     assert not any(line.get_visible() for line in axles)
     assert ax.texts[0].get_text() == "no equilibrium"
     update(radius=600.0, speed_kmh=71.0, cant_mm=100.0)
-    assert all(line.get_visible() for line in axles) and "no equilibrium" not in _status(container)
+    assert all(line.get_visible() for line in axles) and "no equilibrium" not in status_line(container)
 
 
 # ---------------------------------------------------------------------------
@@ -109,7 +95,7 @@ def test_nadal_chart_draws_the_limit_and_the_cars_quotient():
     assert car.get_xdata()[0] == 65.0 and car.get_ydata()[0] == pytest.approx(quotient, rel=1e-6)
     np.testing.assert_allclose(level.get_ydata(), [quotient, quotient], rtol=1e-6)
     axle = climb.wheel_climb(state.wheel_lateral[0], state.wheel_vertical[0], np.radians(65.0), 0.2)
-    status = _status(container)
+    status = status_line(container)
     assert f"Y/Q = {quotient:.3f}, Nadal's limit at δ = 65.0°, μ = 0.20: {nadal:.3f}" in status
     assert "below Nadal's limit: no climb" in status
     assert f"Σ|Y/Q| = {axle.axle_sum:.3f} against Weinstock's {axle.weinstock_limit:.3f}" in status
@@ -120,7 +106,7 @@ def test_nadal_chart_flags_a_wheel_above_the_limit():
     # A sharp curve at speed, a shallow flange and high friction: Y/Q about 0.70 against a limit of 0.66.
     container, update = chapter08.nadal_chart()
     update(flange_angle=60.0, friction=0.5, radius=200.0, speed_kmh=100.0)
-    assert "above Nadal's limit: the flange may climb" in _status(container)
+    assert "above Nadal's limit: the flange may climb" in status_line(container)
     assert container.live.figure.axes[0].texts[-1].get_text().endswith("may climb")
 
 
@@ -147,7 +133,7 @@ def test_curve_entry_speed_draws_the_run_and_its_quasi_static_end():
     # The run settles on the 30 m arc to the quasi-static flange force: within 0.5 % of it (the solver's
     # relative tolerance is 1e-6; what is left is the motion still dying away).
     assert run.flange_force[0, -1] == pytest.approx(state.flange_force[0], rel=5e-3)
-    status = _status(container)
+    status = status_line(container)
     assert f"at the end {1e-3 * run.flange_force[0, -1]:.2f} kN" in status
     assert f"quasi-static {1e-3 * state.flange_force[0]:.2f} kN" in status
 
@@ -163,7 +149,7 @@ def test_curve_entry_speed_shows_the_other_quantities_on_their_own_axis():
     assert low < 1e3 * run.angle_of_attack.min() and high > 1e3 * run.angle_of_attack.max()
     update(quantity="offset")
     assert ax.get_ylabel() == "offset (mm)"
-    assert f"quasi-static {1e3 * state.offset[0]:.2f} mm" in _status(container)
+    assert f"quasi-static {1e3 * state.offset[0]:.2f} mm" in status_line(container)
 
 
 # ---------------------------------------------------------------------------
@@ -190,7 +176,7 @@ def test_curve_entry_speed_is_built_in_a_few_seconds_and_then_from_the_cache():
 )
 def test_median_update(label, recipe, control, values):
     _, update = recipe.build()
-    median = _median_update_ms(update, control, values)
+    median = median_update_ms(update, control, values)
     print(f"{label}: median update {median:.1f} ms")
     # DESIGN.md asks for 50 ms (measured ~35–50 ms here on an idle machine; benchmarks/ records it); a
     # test on a shared machine under load only guards against a widget that recomputes far too much.
@@ -218,7 +204,7 @@ def test_stiffness_tradeoff_draws_the_models_critical_speeds_and_angles_of_attac
     np.testing.assert_allclose(left.lines[0].get_xdata(), ks / 1e6)
     # The status line reads both at the grid's point nearest the car's own k_ψ (62.8 MN·m/rad).
     i = int(np.argmin(np.abs(ks - Car().wheelset.yaw_stiffness)))
-    status = _status(container)
+    status = status_line(container)
     assert f"critical speed {3.6 * expected.critical_speed[i]:.0f} km/h" in status
     assert f"angle of attack {1e3 * expected.angle_of_attack[i]:.2f} mrad" in status
     # The trade-off itself: both rise with k_ψ up to the car's own stiffness.

@@ -1,29 +1,13 @@
 """Chapter 10 widgets driven without a browser: what they draw is the models' answer, checked against
 an independent path where there is one (Frýba's series, the closed form against the march)."""
 
-import statistics
-import time
-
 import numpy as np
 import pytest
+from widget_helpers import median_update_ms, status_line
 
 from raildyn.bridge import SimplySupportedBeam, codes, fryba_deflection, moving_force
 from raildyn.bridge.trains import regular_train
 from raildyn.widgets import chapter10
-
-
-def _status(container):
-    return container.children[-2].children[-1].value
-
-
-def _median_update_ms(update, control, values) -> float:
-    times = []
-    for value in values:
-        start = time.perf_counter()
-        update(**{control: value})
-        times.append(time.perf_counter() - start)
-    return 1e3 * statistics.median(times)
-
 
 # ---------------------------------------------------------------------------
 # One force crossing the beam
@@ -69,7 +53,7 @@ def test_explorer_marks_the_closed_form_amplification_near_frybas_peak():
     # moving_force samples 400 instants over twice the crossing: its sampled peak is within 0.1 % here
     assert mark.get_ydata()[0] == pytest.approx(peak, rel=1e-3)
     assert peak == pytest.approx(1.73, abs=0.01)
-    assert f"amplification {mark.get_ydata()[0]:.3f}" in _status(container)
+    assert f"amplification {mark.get_ydata()[0]:.3f}" in status_line(container)
     # the bold curve is the closed form for the chosen damping, and the curve's peak is Frýba's
     update(damping=0.05)
     speeds = chapter10._ALPHAS * 2 * beam.frequencies_hz[0] * 20.0
@@ -85,7 +69,7 @@ def test_explorer_marks_the_closed_form_amplification_near_frybas_peak():
 def test_explorer_says_when_the_force_has_left():
     container, update = chapter10.moving_load_explorer()
     update(speed_kmh=600.0, position=1.3)
-    status = _status(container)
+    status = status_line(container)
     assert "(off the span)" in status
     force = container.live.figure.axes[0].lines[4]
     assert force.get_xdata()[0] == pytest.approx(26.0, abs=0.2)  # 1.3 L, to the march's step
@@ -142,7 +126,7 @@ def test_train_resonance_cancels_at_one_and_a_half_coach_lengths():
     # bogie's own α-peak), and stays below a fifth of the 20 m span's build-up
     assert cancelled[0] < cancelled[1]
     assert cancelled[0] < resonant[0] / 5
-    assert "L = 27, 45, 63 m" in _status(container)
+    assert "L = 27, 45, 63 m" in status_line(container)
 
 
 def test_train_resonance_hides_resonances_off_the_axis():
@@ -179,7 +163,7 @@ def test_load_models_bars_are_the_crossings_and_forces_match_the_closed_form():
     annex = bars.lines[2]
     factor = codes.en1991_real_train_factor(150.0 / 3.6, 20.0, beam.frequencies_hz[0])
     np.testing.assert_allclose(annex.get_ydata(), [factor, factor], rtol=1e-12)
-    status = _status(container)
+    status = status_line(container)
     assert f"Φ₂ {codes.en1991_dynamic_factor(20.0):.3f}" in status
     assert f"AREMA {1 + codes.arema_impact_factor(20.0):.3f}" in status
 
@@ -220,7 +204,7 @@ def test_sprung_masses_approach_the_forces_and_the_car_at_low_speed():
 )
 def test_median_update(label, recipe, control, values):
     _, update = recipe.build()
-    median = _median_update_ms(update, control, values)
+    median = median_update_ms(update, control, values)
     print(f"{label}: median update {median:.1f} ms")
     # DESIGN.md asks for 50 ms (measured 9–43 ms here on an idle machine, uncached); a test on a shared
     # machine under load only guards against a widget that recomputes far too much.

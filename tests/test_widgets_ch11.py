@@ -2,29 +2,14 @@
 against an independent path where there is one (the static influence line of a simple span, the
 metrics' definitions on signals with known answers, a linearised variance decomposition)."""
 
-import statistics
-import time
-
 import numpy as np
 import pytest
+from widget_helpers import median_update_ms, status_line
 
 from raildyn.stability.linear import critical_speed
 from raildyn.validation.measured import LERELVA_PANEL, NSB92_LOADS, NSB92_SPACINGS
 from raildyn.validation.metrics import compare
 from raildyn.widgets import chapter11
-
-
-def _status(container):
-    return container.children[-2].children[-1].value
-
-
-def _median_update_ms(update, control, values) -> float:
-    times = []
-    for value in values:
-        start = time.perf_counter()
-        update(**{control: value})
-        times.append(time.perf_counter() - start)
-    return 1e3 * statistics.median(times)
 
 
 def _bar_heights(ax) -> np.ndarray:
@@ -91,7 +76,7 @@ def test_prediction_at_the_identified_values_is_the_case_and_its_metrics():
     # the same model on the same numbers (the arrival recomputed from the unit's centre): rounding only
     assert np.abs(drawn - case.predicted[1]).max() < 1e-9 * np.abs(case.predicted[1]).max()
     a = compare(case.measured[1], drawn, case.time)
-    assert f"r = {a.correlation:.3f}" in _status(container)
+    assert f"r = {a.correlation:.3f}" in status_line(container)
     assert a.correlation == pytest.approx(case.agreement[1].correlation, rel=1e-9)
     expected = [a.nrmse, 1 - a.correlation, a.theil_u, a.magnitude, a.phase, a.combined]
     np.testing.assert_allclose(_bar_heights(bars), expected, rtol=1e-12)
@@ -203,7 +188,7 @@ def test_sensitivity_bars_are_the_sobol_result():
     update(output="speed_kmh", kind="total")
     whiskers = ax.lines[: len(chapter11._PARAMETERS)]
     np.testing.assert_allclose([w.get_ydata() for w in whiskers], study["sobol"]["speed_kmh"].total_interval)
-    assert "conicity λ" in _status(container)
+    assert "conicity λ" in status_line(container)
 
 
 @pytest.mark.slow
@@ -243,7 +228,7 @@ def test_sobol_indices_agree_with_the_linearised_variance_shares():
 )
 def test_median_update(label, recipe, control, values):
     _, update = recipe.build()
-    median = _median_update_ms(update, control, values)
+    median = median_update_ms(update, control, values)
     print(f"{label}: median update {median:.1f} ms")
     # DESIGN.md asks for 50 ms (measured 15–48 ms here, uncached, under a load average of 4 on 2 cores);
     # a test on a shared machine under load only guards against a widget that recomputes far too much.
