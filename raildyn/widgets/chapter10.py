@@ -259,7 +259,8 @@ def _resonance_setup(live, status):
             f"d = {d:.1f} m, L = {L:.1f} m, f₁ = {f1:.1f} Hz · resonances v = f₁d/i: "
             + ", ".join(f"{3.6 * s:.0f}" for s in resonances)
             + f" km/h · largest amplification {daf[top]:.2f} at {3.6 * _TRAIN_SPEEDS[top]:.0f} km/h · "
-            f"L/d = {L / d:.2f}: the first resonance cancels at L/d = 1.5, 2.5, 3.5 "
+            f"L/d = {L / d:.2f}: the first resonance cancels at L/d = "
+            f"{', '.join(f'{c / d:g}' for c in cancel)} "
             f"(L = {', '.join(f'{c:.0f}' for c in cancel)} m)"
         )
 
