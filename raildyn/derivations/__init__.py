@@ -1,0 +1,16 @@
+"""Equations of motion derived symbolically (sympy), one module per chapter's models.
+
+Each function returns a :class:`Derivation`: the matrices M, C, K, G_K, G_C of a raildyn model
+derived from energies and forces (Lagrange's equations, :func:`lagrange`), the steps a notebook
+shows, and the map from each symbol to the model's parameter. The tests lambdify the derived
+matrices and hold them to the model's ``matrices(speed)`` over random parameter sets, so a reader
+sees that the code implements exactly the equations derived. Derivations are cached: the first
+call does the algebra, later calls are free.
+
+sympy is imported only when this package is, never by the numerical models.
+"""
+
+from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
+from raildyn.derivations.vibration import chain, sdof
+
+__all__ = ["Derivation", "Step", "chain", "coordinates", "generalized_forces", "lagrange", "sdof", "time"]
