@@ -20,7 +20,7 @@ __all__ = ["chain", "sdof"]
 def sdof() -> Derivation:
     """The oscillator of book eq. 1.3 on a base that moves by y(t) (chapter 1's base excitation).
 
-    T = ½ m ẋ², V = ½ k (x − y)², D = ½ c (ẋ − ẏ)² give m ẍ + c ẋ + k x = k y + c ẏ.
+    T = ½ m ẋ², U = ½ k (x − y)², D = ½ c (ẋ − ẏ)² give m ẍ + c ẋ + k x = k y + c ẏ.
 
     Returns
     -------
@@ -39,9 +39,9 @@ def sdof() -> Derivation:
     (y,) = coordinates("y")
     xd, yd = x.diff(time), y.diff(time)
     T = m * xd**2 / 2
-    V = k * (x - y) ** 2 / 2
+    U = k * (x - y) ** 2 / 2
     D = c * (xd - yd) ** 2 / 2
-    M, C, K, GK, GC = lagrange(T, V, D, [x], inputs=[y])
+    M, C, K, GK, GC = lagrange(T, U, D, [x], inputs=[y])
     return Derivation(
         title="single-degree-of-freedom oscillator on a moving base",
         coordinates=(x,),
@@ -54,7 +54,7 @@ def sdof() -> Derivation:
         parameters=((m, "mass"), (c, "damping"), (k, "stiffness")),
         steps=(
             Step("kinetic energy", sympy.Eq(sympy.Symbol("T"), T)),
-            Step("potential energy of the spring", sympy.Eq(sympy.Symbol("V"), V)),
+            Step("potential energy of the spring", sympy.Eq(sympy.Symbol("U"), U)),
             Step("Rayleigh's dissipation function", sympy.Eq(sympy.Symbol("D"), D)),
         ),
     )
@@ -101,9 +101,9 @@ def _chain(n: int, grounded: bool) -> Derivation:
     )
     rate = [s.diff(time) for s in stretch]
     T = sum(mi * v**2 for mi, v in zip(ms, xd, strict=True)) / 2
-    V = sum(kj * s**2 for kj, s in zip(ks, stretch, strict=True)) / 2
+    U = sum(kj * s**2 for kj, s in zip(ks, stretch, strict=True)) / 2
     D = sum(cj * r**2 for cj, r in zip(cs, rate, strict=True)) / 2
-    M, C, K, GK, GC = lagrange(T, V, D, x)
+    M, C, K, GK, GC = lagrange(T, U, D, x)
 
     def item(field, i):
         return lambda p: p[field][i]
@@ -124,7 +124,7 @@ def _chain(n: int, grounded: bool) -> Derivation:
         parameters=parameters,
         steps=(
             Step("kinetic energy", sympy.Eq(sympy.Symbol("T"), T)),
-            Step("potential energy of the springs", sympy.Eq(sympy.Symbol("V"), V)),
+            Step("potential energy of the springs", sympy.Eq(sympy.Symbol("U"), U)),
             Step("Rayleigh's dissipation function", sympy.Eq(sympy.Symbol("D"), D)),
         ),
     )
