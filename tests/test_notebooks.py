@@ -3,6 +3,8 @@
 The book build executes them (once, strict: see ``tests/conftest.py``); these tests read what it ran.
 """
 
+import re
+import sys
 from pathlib import Path
 
 import nbformat
@@ -44,3 +46,27 @@ def test_notebook_runs_clean(path, built_book):
             assert output.output_type != "error", f"{path.name} cell {index}: {output.get('ename')}"
             if output.output_type == "stream":
                 assert output.name != "stderr", f"{path.name} cell {index} wrote to stderr:\n{output.text}"
+
+
+_ROLE = re.compile(r"\{(cite|eq|ref|numref|doc)(:\w+)?\}`")
+_CITE = re.compile(r"\]\(cite:([^)\s]+)\)")
+_EQ = re.compile(r"\]\(eq:([^)\s]+)\)")
+_LABEL = re.compile(r"\$\$\s*\((eq-[\w-]+)\)")
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_citations_read_as_text_outside_the_book(path):
+    # JupyterLab and Voilà show a MyST role as raw markup ("{cite}`kalker1967`"); notebooks link
+    # instead ([Kalker 1967](cite:kalker1967)), and the book turns the links into its roles.
+    sys.path.insert(0, str(ROOT / "book" / "_ext"))
+    from raildyn_book import load_bib
+
+    bib = load_bib()
+    text = "\n".join(c.source for c in nbformat.read(path, as_version=4).cells if c.cell_type == "markdown")
+    assert not _ROLE.findall(text), f"{path.name}: MyST roles that JupyterLab shows raw"
+    unknown = {k for keys in _CITE.findall(text) for k in keys.split(",") if k not in bib}
+    assert not unknown, f"{path.name}: citations of keys no .bib holds: {unknown}"
+    labels = {
+        l for nb in NOTEBOOKS for c in nbformat.read(nb, as_version=4).cells for l in _LABEL.findall(c.source)
+    }
+    assert not set(_EQ.findall(text)) - labels, f"{path.name}: links to equations no notebook labels"

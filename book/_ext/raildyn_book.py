@@ -9,6 +9,11 @@
 * The executed notebooks carry the kernel's widget state. Without a kernel the
   state is dead weight (hundreds of kB of PNG per page), and every raildyn widget
   already brings its own kernel-free HTML, so the state is left out of the pages.
+* Notebooks cite and cross-reference with plain Markdown links, ``[Kalker 1967](cite:kalker1967)``
+  and ``[(eq-creepages)](eq:eq-creepages)``, which read as text in JupyterLab and under Voilà
+  (where a ``{cite}`` role would show its raw markup); as the book reads a notebook they
+  become the ``{cite}`` and ``{eq}`` roles, so the book keeps its numbered equations and its
+  bibliography. :func:`cite_text` writes the link text from the bibliography.
 * The ``validation-table`` directive writes the validation page's tables from the
   checks the test suite recorded (``book/_generated/validation.json``, see
   ``tests/conftest.py``); when there is no record yet it runs those checks first
@@ -29,6 +34,66 @@ _ROOT = Path(__file__).resolve().parents[2]
 _RECORD = _ROOT / "book" / "_generated" / "validation.json"
 
 _LITERAL = re.compile(r"(``.*?``)")
+
+_BIB_ENTRY = re.compile(r"@\w+\{([^,\s]+),(.*?)\n\}", re.S)
+_CITE_LINK = re.compile(r"\[[^\]]*\]\(cite:([^)\s]+)\)")
+_EQ_LINK = re.compile(r"\[[^\]]*\]\(eq:([^)\s]+)\)")
+
+
+def _field(body: str, name: str) -> str:
+    match = re.search(rf"\b{name}\s*=\s*[{{\"](.*?)[}}\"]\s*,?\s*\n", body, re.S)
+    return re.sub(r"[{}]", "", match.group(1)).strip() if match else ""
+
+
+_ACCENTS = {"'": "\u0301", "`": "\u0300", '"': "\u0308", "^": "\u0302", "~": "\u0303", "v": "\u030c"}
+
+
+def _latin(text: str) -> str:
+    """LaTeX accents and quotes as the characters they stand for: Fr\\'yba → Frýba."""
+    import unicodedata
+
+    text = re.sub(r"\\([`'\"^~v])\{?(\w)\}?", lambda m: m.group(2) + _ACCENTS[m.group(1)], text)
+    return unicodedata.normalize("NFC", text.replace("``", "“").replace("''", "”"))
+
+
+def load_bib() -> dict:
+    """Every entry of the book's bibliographies: key → (authors, year) as the .bib files write them."""
+    entries = {}
+    for path in sorted((_ROOT / "book").glob("*.bib")):
+        for key, body in _BIB_ENTRY.findall(path.read_text(encoding="utf-8")):
+            body += "\n"
+            who = _field(body, "author") or _field(body, "editor")
+            entries[key] = (_latin(who), _field(body, "year"), _latin(_field(body, "title")))
+    return entries
+
+
+def cite_text(keys: str, bib: dict) -> str:
+    """The text a reader sees for a citation outside the book: "Kalker 1967", "Chu et al. 1979"."""
+    out = []
+    for key in keys.split(","):
+        authors, year, title = bib[key.strip()]
+        names = [a.strip() for a in authors.split(" and ") if a.strip()]
+        last = [n.split(",")[0] if "," in n else n.split()[-1] for n in names]
+        if not names or (len(names) == 1 and "," not in names[0] and len(names[0].split()) > 3):
+            # No person named (a standard, a web page): the title's lead, "ISO 2631-1:1997".
+            who = re.split(r"[:(]| -- ", title)[0].strip()
+            who = " ".join(who.split()[:3]) if who else key.strip()
+        elif len(last) == 1:
+            who = last[0]
+        elif len(last) == 2:
+            who = f"{last[0]} and {last[1]}"
+        else:
+            who = f"{last[0]} et al."
+        out.append(f"{who} {year}".strip())
+    return "; ".join(out)
+
+
+def book_roles(app, docname, source):
+    """A notebook's citation and equation links become the book's {cite} and {eq} roles."""
+    if not docname.startswith("notebooks/"):
+        return
+    text = _CITE_LINK.sub(lambda m: "{cite}`" + m.group(1) + "`", source[0])
+    source[0] = _EQ_LINK.sub(lambda m: "{eq}`" + m.group(1) + "`", text)
 
 
 def _escape(line: str) -> str:
@@ -130,6 +195,7 @@ class ValidationTable(SphinxDirective):
 def setup(app):
     app.add_directive("validation-table", ValidationTable)
     app.connect("autodoc-process-docstring", escape_bars)
+    app.connect("source-read", book_roles)
     # Before myst-nb (priority 500) adds the page's scripts.
     app.connect("html-page-context", drop_widget_state, priority=400)
     app.connect("html-page-context", drop_repeated_scripts, priority=900)
