@@ -36,8 +36,8 @@ _RECORD = _ROOT / "book" / "_generated" / "validation.json"
 _LITERAL = re.compile(r"(``.*?``)")
 
 _BIB_ENTRY = re.compile(r"@\w+\{([^,\s]+),(.*?)\n\}", re.S)
-_CITE_LINK = re.compile(r"\[[^\]]*\]\(cite:([^)\s]+)\)")
-_EQ_LINK = re.compile(r"\[[^\]]*\]\(eq:([^)\s]+)\)")
+_CITE_LINK = re.compile(r"\[[^\[\]]*\]\(cite:([^)\s]+)\)")
+_EQ_LINK = re.compile(r"\[[^\[\]]*\]\(eq:([^)\s]+)\)")
 
 
 def _field(body: str, name: str) -> str:
@@ -92,8 +92,13 @@ def book_roles(app, docname, source):
     """A notebook's citation and equation links become the book's {cite} and {eq} roles."""
     if not docname.startswith("notebooks/"):
         return
-    text = _CITE_LINK.sub(lambda m: "{cite}`" + m.group(1) + "`", source[0])
-    source[0] = _EQ_LINK.sub(lambda m: "{eq}`" + m.group(1) + "`", text)
+    notebook = json.loads(source[0])
+    for cell in notebook["cells"]:
+        if cell["cell_type"] == "markdown":
+            text = "".join(cell["source"])
+            text = _CITE_LINK.sub(lambda m: "{cite}`" + m.group(1) + "`", text)
+            cell["source"] = _EQ_LINK.sub(lambda m: "{eq}`" + m.group(1) + "`", text)
+    source[0] = json.dumps(notebook, ensure_ascii=False)
 
 
 def _escape(line: str) -> str:
