@@ -8,7 +8,7 @@ BOOK_HTML := book/_build/html
 # rewritten by another checkout's half-deleted venv and lose matplotlib's own fonts.
 export MPLCONFIGDIR := $(CURDIR)/.venv/matplotlib
 
-.PHONY: book test test-fast lab app bench figures lint clean chromium fe-libs install
+.PHONY: book pdf test test-fast lab app bench figures lint clean chromium fe-libs install
 
 # A fresh virtual environment with the pinned ranges, raildyn installed editable
 # so that the notebooks import the working tree.
@@ -26,6 +26,10 @@ install: $(STAMP)
 book: $(STAMP)
 	RAILDYN_PROGRESS=0 $(VENV)/bin/jupyter-book build . --config book/_config.yml --toc book/_toc.yml --path-output book
 	@echo "The book is at $(abspath $(BOOK_HTML))/index.html"
+
+## pdf: the whole book as one PDF (book/_build/raildyn.pdf), printed offline by headless chromium
+pdf: book chromium
+	$(PY) scripts/book_pdf.py $(BOOK_HTML) book/_build/raildyn.pdf
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
 test: $(STAMP) chromium fe-libs

@@ -34,3 +34,16 @@ def test_no_progress_bar_is_left_frozen_on_a_page(built_book):
     _, html = built_book
     for page in (html / "notebooks").glob("*.html"):
         assert "0%|" not in page.read_text(encoding="utf-8"), f"{page.name} shows a progress bar stuck at 0 %"
+
+
+@pytest.mark.slow
+def test_book_links_its_repository_and_its_issues(built_book):
+    # A course reports errata where the book's buttons point: both come from repository.url.
+    import yaml
+
+    _, html = built_book
+    config = yaml.safe_load((html.parents[1] / "_config.yml").read_text(encoding="utf-8"))
+    url = config["repository"]["url"]
+    page = (html / "book" / "intro.html").read_text(encoding="utf-8")
+    assert f'href="{url}"' in page, "no repository button"
+    assert f'href="{url}/issues' in page, "no issues button"
