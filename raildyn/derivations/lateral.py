@@ -1,0 +1,446 @@
+"""Chapter 7's lateral models derived: the two-axle bogie and the 15-coordinate passenger car.
+
+Both by Lagrange's equations (:func:`raildyn.derivations.lagrange`): the kinetic energy of the
+rigid bodies, the potential energy and Rayleigh's dissipation function of the primary and
+secondary springs and dampers, written from the lateral displacement of each spring's two ends
+in the coordinates, and the wheel–rail forces of every wheelset as generalized forces by
+virtual work: Kalker's linear creep law on the creepages of each wheel (Kalker 1967; Garg &
+Dukkipati 1984, ch. 5) and the lateral and yaw components of the normal loads (the
+gravitational stiffness, Wickens 2003, ch. 2). The tests hold them to
+:class:`raildyn.vehicles.lateral.Bogie` and :class:`raildyn.vehicles.lateral.Car`.
+
+Sign convention: x forward, y to the left, z up; ψ (yaw) turns x towards y, the roll ϕ turns y
+towards z. The track inputs are the alignment y_a (lateral position of the track centre line)
+and the cross-level c (left rail height minus right rail height) under each wheelset, m.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import sympy
+
+from raildyn.constants import GRAVITY
+from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, time
+
+__all__ = ["bogie", "lateral_car"]
+
+
+@dataclass(frozen=True)
+class _WheelsetSymbols:
+    """The symbols of one wheelset's parameters (shared by every wheelset of a vehicle)."""
+
+    m: sympy.Symbol
+    I: sympy.Symbol  # noqa: E741 - the book's yaw inertia I_w
+    r0: sympy.Symbol
+    a: sympy.Symbol
+    lam: sympy.Symbol
+    W: sympy.Symbol
+    f11: sympy.Symbol
+    f22: sympy.Symbol
+    f23: sympy.Symbol
+    f33: sympy.Symbol
+    theta0: sympy.Symbol
+    eps: sympy.Symbol
+    ky: sympy.Symbol
+    kpsi: sympy.Symbol
+    cy: sympy.Symbol
+    cpsi: sympy.Symbol
+
+
+_WHEELSET_FIELDS = {
+    "m": ("m_w", "mass"),
+    "I": ("I_w", "yaw_inertia"),
+    "r0": ("r_0", "rolling_radius"),
+    "a": ("a", "half_gauge"),
+    "lam": ("lambda", "conicity"),
+    "W": ("W", "axle_load"),
+    "f11": ("f_11", "f11"),
+    "f22": ("f_22", "f22"),
+    "f23": ("f_23", "f23"),
+    "f33": ("f_33", "f33"),
+    "theta0": ("vartheta_0", "contact_angle"),
+    "eps": ("epsilon", "contact_angle_parameter"),
+    "ky": ("k_y", "lateral_stiffness"),
+    "kpsi": ("k_psi", "yaw_stiffness"),
+    "cy": ("c_y", "lateral_damping"),
+    "cpsi": ("c_psi", "yaw_damping"),
+}
+
+
+def _wheelset_symbols(path: str) -> tuple:
+    """The wheelset's symbols and their (symbol, attribute path) pairs, the wheelset at ``path``."""
+    made = {}
+    pairs = []
+    for key, (name, attribute) in _WHEELSET_FIELDS.items():
+        # ϑ₀, ε, f₂₃ may be zero and W a ϑ₀ enters with its sign: only lengths and masses are positive.
+        symbol = sympy.Symbol(name, nonnegative=True) if key != "a" else sympy.Symbol(name, positive=True)
+        made[key] = symbol
+        pairs.append((symbol, f"{path}.{attribute}"))
+    return _WheelsetSymbols(**made), tuple(pairs)
+
+
+def _rate(expr):
+    return sympy.diff(expr, time)
+
+
+def _wheelset_terms(y, psi, ya, c, p: _WheelsetSymbols, V) -> tuple:
+    """One wheelset's kinetic energy and the virtual-work pairs of its wheel–rail forces.
+
+    Parameters
+    ----------
+    y, psi : sympy functions of t
+        The wheelset's lateral displacement (m) and yaw (rad).
+    ya, c : sympy functions of t
+        The alignment and the cross-level under it (m).
+    p : _WheelsetSymbols
+    V : sympy.Symbol
+        The forward speed, m/s.
+
+    Returns
+    -------
+    (T, pairs, creepages)
+        T the kinetic energy; pairs the (force, displacement) of every wheel–rail force for
+        :func:`generalized_forces`; creepages a dict of the creepages for the steps.
+    """
+    yd, psid = _rate(y), _rate(psi)
+    T = p.m * yd**2 / 2 + p.I * psid**2 / 2
+    # Rolling radii r_L,R = r₀ ± λ(y − y_a): the wheel on the side the wheelset moves to rolls on a
+    # larger radius. Each contact point at ±a from the centre line moves forward at V ∓ aψ̇ while
+    # the wheel's rim there turns at (V/r₀)·r_L,R: the longitudinal creepages (Kalker's ξ, γ_x here).
+    gx_left = -p.a * psid / V - p.lam * (y - ya) / p.r0
+    gx_right = -gx_left
+    # Lateral creepage (same for both wheels): the contact point slides sideways at ẏ − Vψ.
+    gy = yd / V - psi
+    # Spin creepage ψ̇/V; the contact-angle part ±ϑ/r₀ cancels between the two wheels to first
+    # order, and its ε y part (f₂₃ε/(a r₀)) is left out, as raildyn.wheelset.creep_terms does.
+    spin = psid / V
+    pairs = []
+    for gx, arm in ((gx_left, p.a), (gx_right, -p.a)):
+        # Kalker's linear law on one wheel: F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ, M_z = f₂₃γ_y − f₃₃φ.
+        Fx = -p.f11 * gx
+        Fy = -p.f22 * gy - p.f23 * spin
+        Mz = p.f23 * gy - p.f33 * spin
+        # A point at y = arm on the axle moves forward by −arm·ψ when the wheelset yaws by ψ.
+        pairs += [(Fx, -arm * psi), (Fy, y), (Mz, psi)]
+    # The normal loads W/2 at the contact angles ϑ_L,R = ϑ₀ ± ε(y − y_a)/a: their lateral components
+    # leave −(W/2)(ϑ_L − ϑ_R) = −(Wε/a)(y − y_a); on rails tilted by c/(2a) the weight has the
+    # component −W c/(2a) along the track plane; yawed by ψ, the normal loads give the yaw moment
+    # W a ϑ₀ ψ (Wickens 2003, ch. 2: the gravitational stiffness).
+    pairs += [(-p.W * p.eps * (y - ya) / p.a - p.W * c / (2 * p.a), y), (p.W * p.a * p.theta0 * psi, psi)]
+    return T, pairs, {"gx": gx_left, "gy": gy, "spin": spin}
+
+
+def _creepage_steps(subscript: str, creepages: dict) -> tuple:
+    """Steps that show the creepages of one wheelset (left wheel; the right one's γ_x is −γ_x,L)."""
+    return (
+        Step(
+            f"longitudinal creepage of the left wheel of wheelset {subscript}",
+            sympy.Eq(sympy.Symbol(f"gamma_xL{subscript}"), creepages["gx"]),
+        ),
+        Step(
+            f"lateral creepage of wheelset {subscript}",
+            sympy.Eq(sympy.Symbol(f"gamma_y{subscript}"), creepages["gy"]),
+        ),
+        Step(
+            f"spin creepage of wheelset {subscript}",
+            sympy.Eq(sympy.Symbol(f"varphi{subscript}"), creepages["spin"]),
+        ),
+    )
+
+
+@dataclass(frozen=True)
+class _BogieSymbols:
+    mf: sympy.Symbol
+    If: sympy.Symbol
+    b: sympy.Symbol
+    ksy: sympy.Symbol
+    csy: sympy.Symbol
+    kspsi: sympy.Symbol
+    cspsi: sympy.Symbol
+
+
+def _bogie_symbols(path: str) -> tuple:
+    fields = {
+        "mf": ("m_f", "frame_mass", True),
+        "If": ("I_f", "frame_yaw_inertia", True),
+        "b": ("b", "semi_wheelbase", True),
+        "ksy": ("k_sy", "secondary_lateral_stiffness", False),
+        "csy": ("c_sy", "secondary_lateral_damping", False),
+        "kspsi": ("k_spsi", "secondary_yaw_stiffness", False),
+        "cspsi": ("c_spsi", "secondary_yaw_damping", False),
+    }
+    made, pairs = {}, []
+    for key, (name, attribute, positive) in fields.items():
+        symbol = sympy.Symbol(name, positive=True) if positive else sympy.Symbol(name, nonnegative=True)
+        made[key] = symbol
+        pairs.append((symbol, f"{path}{attribute}"))
+    return _BogieSymbols(**made), tuple(pairs)
+
+
+def _bogie_pieces(tag, frame, wheelsets, inputs, seat_y, seat_psi, w: _WheelsetSymbols, s: _BogieSymbols, V):
+    """T, U, D and the wheel–rail pairs of one bogie: frame, two wheelsets, primary and secondary.
+
+    ``seat_y`` and ``seat_psi`` are the lateral displacement and yaw of the body at the secondary
+    suspension (0 for a body that runs straight).
+    """
+    yf, psif = frame
+    T = s.mf * _rate(yf) ** 2 / 2 + s.If * _rate(psif) ** 2 / 2
+    U = sympy.Integer(0)
+    D = sympy.Integer(0)
+    pairs = []
+    creepages = []
+    for (y, psi), (ya, c), x in zip(wheelsets, inputs, (s.b, -s.b), strict=True):
+        Tw, pw, cw = _wheelset_terms(y, psi, ya, c, w, V)
+        T += Tw
+        pairs += pw
+        creepages.append(cw)
+        # Primary: the axlebox at x = ±b moves with the wheelset by y; the frame's end of the
+        # spring, x ahead of the frame's centre, by y_f + x ψ_f. Yaw: relative yaw ψ − ψ_f.
+        u_lat = y - yf - x * psif
+        u_yaw = psi - psif
+        U += w.ky * u_lat**2 / 2 + w.kpsi * u_yaw**2 / 2
+        D += w.cy * _rate(u_lat) ** 2 / 2 + w.cpsi * _rate(u_yaw) ** 2 / 2
+    # Secondary: between the frame's centre and the body's seat above it.
+    u_sec = yf - seat_y
+    u_sec_yaw = psif - seat_psi
+    U += s.ksy * u_sec**2 / 2 + s.kspsi * u_sec_yaw**2 / 2
+    D += s.csy * _rate(u_sec) ** 2 / 2 + s.cspsi * _rate(u_sec_yaw) ** 2 / 2
+    return T, U, D, pairs, creepages
+
+
+def _quadratic_matrices(T, U, D, Q, q, w):
+    """M, C, K, G_K, G_C of Lagrange's equations when T, U, D are quadratic and Q linear.
+
+    The same equations as :func:`raildyn.derivations.lagrange` (d/dt ∂T/∂q̇ − ∂T/∂q + ∂U/∂q + ∂D/∂q̇
+    = Q, linearised at rest), taken term by term: for quadratic T, U, D the matrices are their
+    second derivatives, M = ∂²T/∂q̇², K = ∂²U/∂q² − ∂Q/∂q, and so on. The coordinates and rates are
+    first replaced by plain symbols and every expression expanded, so that no large expression is
+    simplified (sympy differentiates functions of t slowly). A cosine in U (the body's weight) is
+    replaced by its Taylor polynomial 1 − x²/2, which is all a linearisation keeps of it.
+    """
+    q_plain = sympy.symbols(f"q0:{len(q)}")
+    qd_plain = sympy.symbols(f"qd0:{len(q)}")
+    w_plain = sympy.symbols(f"w0:{len(w)}")
+    wd_plain = sympy.symbols(f"wd0:{len(w)}")
+    plain = {c.diff(time): s for c, s in zip([*q, *w], [*qd_plain, *wd_plain], strict=True)}
+    plain |= dict(zip([*q, *w], [*q_plain, *w_plain], strict=True))
+
+    def polynomial(expr):
+        expr = sympy.sympify(expr).xreplace(plain)  # top down: a derivative is replaced whole
+        return sympy.expand(expr.replace(sympy.cos, lambda x: 1 - x**2 / 2))
+
+    gens = [*q_plain, *qd_plain, *w_plain, *wd_plain]
+    T, U, D = (_monomials(polynomial(e), gens) for e in (T, U, D))
+    Q = [_monomials(polynomial(f), gens) for f in Q]
+
+    def second(form, rows, cols):
+        # ∂²/∂a∂b of c·a·b is c, of c·a² is 2c.
+        def entry(i, j):
+            a, b = rows[i], cols[j]
+            key = tuple(sorted((a, b), key=gens.index))
+            return form.get(key, sympy.Integer(0)) * (2 if a == b else 1)
+
+        return sympy.Matrix(len(rows), len(cols), entry)
+
+    def first(vector, cols):
+        return sympy.Matrix(len(vector), len(cols), lambda i, j: vector[i].get((cols[j],), sympy.Integer(0)))
+
+    M = second(T, qd_plain, qd_plain)
+    C = second(D, qd_plain, qd_plain) - first(Q, qd_plain)
+    K = second(U, q_plain, q_plain) - first(Q, q_plain)
+    GK = -second(U, q_plain, w_plain) + first(Q, w_plain)
+    GC = -second(D, qd_plain, wd_plain) + first(Q, wd_plain)
+    return M, C, K, GK, GC
+
+
+def _monomials(expr, gens) -> dict:
+    """An expanded polynomial in ``gens`` as {monomial: coefficient}, a monomial a tuple of gens in order.
+
+    The coefficients are expressions in the other symbols (the parameters), each collected by
+    ``sympy.Add`` once; splitting the terms this way is much quicker than differentiating.
+    """
+    order = {g: i for i, g in enumerate(gens)}
+    parts: dict = {}
+    for term in sympy.Add.make_args(expr):
+        coefficient, monomial = [], []
+        for factor in sympy.Mul.make_args(term):
+            base, power = factor.as_base_exp()
+            if base in order:
+                monomial += [base] * int(power)
+            else:
+                coefficient.append(factor)
+        key = tuple(sorted(monomial, key=order.__getitem__))
+        parts.setdefault(key, []).append(sympy.Mul(*coefficient))
+    return {key: sympy.Add(*terms) for key, terms in parts.items()}
+
+
+@functools.cache
+def bogie() -> Derivation:
+    """The bogie of :class:`raildyn.vehicles.lateral.Bogie` under a body that runs straight.
+
+    Coordinates q = [y_f, ψ_f, y₁, ψ₁, y₂, ψ₂]: the frame's and each wheelset's lateral displacement
+    (m) and yaw (rad), wheelset 1 leading at x = +b. Inputs w = [y_a1, y_a2, c₁, c₂], the alignment
+    and the cross-level under each wheelset (m). Lagrange's equations (book ch. 7) with
+
+    * T = ½ m_f ẏ_f² + ½ I_f ψ̇_f² + Σ_j (½ m_w ẏ_j² + ½ I_w ψ̇_j²);
+    * U = Σ_j [½ k_y (y_j − y_f ∓ bψ_f)² + ½ k_ψ (ψ_j − ψ_f)²] + ½ k_sy y_f² + ½ k_sψ ψ_f², and D
+      alike with the dampers;
+    * Q: Kalker's linear creep forces on each wheel and the normal loads' lateral and yaw
+      components, by virtual work (Garg & Dukkipati 1984, ch. 5; Wickens 2003, ch. 2).
+
+    Returns
+    -------
+    Derivation
+        Parameters read from a :class:`~raildyn.vehicles.lateral.Bogie`; the damping holds the
+        speed V (m/s).
+
+    Examples
+    --------
+    >>> from raildyn.vehicles.lateral import Bogie
+    >>> d = bogie()
+    >>> d.K[0, 2]  # the frame's lateral row, wheelset 1's column: the primary spring pulls back
+    -k_y
+    >>> m = Bogie().matrices(30.0)
+    >>> d.difference((m.M, m.C, m.K, m.GK, m.GC), Bogie(), 30.0) < 1e-14
+    True
+    """
+    V = sympy.Symbol("V", positive=True)
+    w, wheelset_pairs = _wheelset_symbols("wheelset")
+    s, bogie_pairs = _bogie_symbols("")
+    q = coordinates("y_f psi_f y_1 psi_1 y_2 psi_2")
+    inputs = coordinates("y_a1 y_a2 c_1 c_2")
+    wheelsets = ((q[2], q[3]), (q[4], q[5]))
+    track = ((inputs[0], inputs[2]), (inputs[1], inputs[3]))
+    T, U, D, pairs, creepages = _bogie_pieces(
+        "", (q[0], q[1]), wheelsets, track, sympy.Integer(0), sympy.Integer(0), w, s, V
+    )
+    Q = generalized_forces(pairs, q)
+    M, C, K, GK, GC = _quadratic_matrices(T, U, D, Q, q, inputs)
+    return Derivation(
+        title="two-axle bogie under a body that runs straight",
+        coordinates=q,
+        inputs=inputs,
+        M=M,
+        C=C,
+        K=K,
+        GK=GK,
+        GC=GC,
+        parameters=wheelset_pairs + bogie_pairs,
+        speed=V,
+        steps=(
+            Step("kinetic energy", sympy.Eq(sympy.Symbol("T"), T)),
+            Step("potential energy of the primary and secondary springs", sympy.Eq(sympy.Symbol("U"), U)),
+            Step("Rayleigh's dissipation function of the dampers", sympy.Eq(sympy.Symbol("D"), D)),
+            *_creepage_steps("1", creepages[0]),
+            Step(
+                "generalized forces of the wheel–rail contact (virtual work)",
+                sympy.Eq(sympy.Symbol("Q"), Q.applyfunc(sympy.expand), evaluate=False),
+            ),
+        ),
+    )
+
+
+@functools.cache
+def lateral_car() -> Derivation:
+    """The 15-coordinate passenger car of :class:`raildyn.vehicles.lateral.Car`.
+
+    Coordinates q = [y_c, ψ_c, ϕ_c; y_f1, ψ_f1, y₁₁, ψ₁₁, y₁₂, ψ₁₂; y_f2, ψ_f2, y₂₁, ψ₂₁, y₂₂, ψ₂₂]:
+    the body's lateral displacement (m), yaw and roll (rad); each bogie frame's lateral
+    displacement and yaw; each wheelset's (bogie 1 leading, at x = +l; wheelset j1 leading in its
+    bogie). Inputs w: the alignment y_a under the four wheelsets, then the cross-level c there (m).
+    Lagrange's equations (book ch. 7) with the bogie's T, U, D and Q (:func:`bogie`) for each bogie,
+    the secondary seat at x = ±l, h below the body's centre of gravity, moving by
+    y_c ± lψ_c + hϕ_c, and for the body
+
+    * T = ½ m_c ẏ_c² + ½ I_cz ψ̇_c² + ½ I_cx ϕ̇_c²;
+    * U = Σ_bogies ½ k_ϕ (ϕ_c − (c_k1 + c_k2)/(4a))² + m_c g h (cos ϕ_c − 1): the roll springs
+      stand on frames that tilt with the mean cross-level under their wheelsets, and the body's
+      weight, h above the seat about which it rolls, lowers the roll stiffness by m_c g h.
+
+    Returns
+    -------
+    Derivation
+        Parameters read from a :class:`~raildyn.vehicles.lateral.Car`; the damping holds the speed
+        V (m/s).
+
+    Examples
+    --------
+    >>> from raildyn.vehicles.lateral import Car
+    >>> d = lateral_car()
+    >>> d.K[2, 2]  # roll: two bogies' roll springs, the lateral springs' arm h, less the weight's moment
+    -g*h*m_c + 2*h**2*k_sy + 2*k_phi
+    >>> m = Car().matrices(40.0)
+    >>> d.difference((m.M, m.C, m.K, m.GK, m.GC), Car(), 40.0) < 1e-14
+    True
+    """
+    V = sympy.Symbol("V", positive=True)
+    w, wheelset_pairs = _wheelset_symbols("bogie.wheelset")
+    s, bogie_pairs = _bogie_symbols("bogie.")
+    mc, Icz, Icx, l = sympy.symbols("m_c I_cz I_cx l", positive=True)
+    h, kphi, cphi, g = sympy.symbols("h k_phi c_phi g", nonnegative=True)
+    body_pairs = (
+        (mc, "body_mass"),
+        (Icz, "body_yaw_inertia"),
+        (Icx, "body_roll_inertia"),
+        (l, "semi_bogie_spacing"),
+        (h, "body_height"),
+        (kphi, "roll_stiffness"),
+        (cphi, "roll_damping"),
+        (g, lambda model: GRAVITY),
+    )
+    q = coordinates("y_c psi_c phi_c y_f1 psi_f1 y_11 psi_11 y_12 psi_12 y_f2 psi_f2 y_21 psi_21 y_22 psi_22")
+    inputs = coordinates("y_a11 y_a12 y_a21 y_a22 c_11 c_12 c_21 c_22")
+    yc, psic, phic = q[:3]
+    T = mc * _rate(yc) ** 2 / 2 + Icz * _rate(psic) ** 2 / 2 + Icx * _rate(phic) ** 2 / 2
+    # The body rests on the secondary springs at the seat, h below its centre of gravity: rolling by
+    # ϕ about the seat lowers the centre of gravity by h(1 − cos ϕ).
+    U = mc * g * h * (sympy.cos(phic) - 1)
+    D = sympy.Integer(0)
+    pairs = []
+    pieces = {}
+    for k, x in ((0, l), (1, -l)):
+        base = 3 + 6 * k
+        frame = (q[base], q[base + 1])
+        wheelsets = ((q[base + 2], q[base + 3]), (q[base + 4], q[base + 5]))
+        track = ((inputs[2 * k], inputs[4 + 2 * k]), (inputs[2 * k + 1], inputs[4 + 2 * k + 1]))
+        seat = yc + x * psic + h * phic  # the seat, x along and h below the centre, moves by this
+        Tb, Ub, Db, pb, _ = _bogie_pieces(str(k + 1), frame, wheelsets, track, seat, psic, w, s, V)
+        # Roll: the secondary vertical springs (and anti-roll bar) between the body and a frame that
+        # tilts by the mean cross-level of its two wheelsets over the contact spacing 2a.
+        u_roll = phic - (track[0][1] + track[1][1]) / (4 * w.a)
+        Ub += kphi * u_roll**2 / 2
+        Db += cphi * _rate(u_roll) ** 2 / 2
+        T += Tb
+        U += Ub
+        D += Db
+        pairs += pb
+        if k == 0:
+            pieces = {"U": Ub, "D": Db}
+    Q = generalized_forces(pairs, q)
+    M, C, K, GK, GC = _quadratic_matrices(T, U, D, Q, q, inputs)
+    return Derivation(
+        title="passenger car on two bogies (15 coordinates)",
+        coordinates=q,
+        inputs=inputs,
+        M=M,
+        C=C,
+        K=K,
+        GK=GK,
+        GC=GC,
+        parameters=wheelset_pairs + bogie_pairs + body_pairs,
+        speed=V,
+        steps=(
+            Step("kinetic energy", sympy.Eq(sympy.Symbol("T"), T)),
+            Step(
+                "potential energy of the body's weight",
+                sympy.Eq(sympy.Symbol("U_g"), mc * g * h * (sympy.cos(phic) - 1)),
+            ),
+            Step(
+                "potential energy of bogie 1's springs (bogie 2 alike, at x = −l)",
+                sympy.Eq(sympy.Symbol("U_1"), pieces["U"]),
+            ),
+            Step("dissipation of bogie 1's dampers", sympy.Eq(sympy.Symbol("D_1"), pieces["D"])),
+        ),
+    )
