@@ -1,5 +1,5 @@
-"""Chapter 8's steady curving derived: a suspended wheelset, a two-axle bogie, and the bogie's two wheelsets
-joined by a bending and a shear stiffness.
+"""Chapter 8's steady curving derived: a suspended wheelset, a two-axle bogie, and the bogie's two
+wheelsets joined by a bending and a shear stiffness.
 
 A vehicle that runs steadily round a curve of radius R is at rest in axes that follow it (origin on the
 track's centre line, x along the tangent there, y to the left, turning at V/R). In those axes the
@@ -10,9 +10,10 @@ equations of motion lose their time derivatives and become K q = G_K w, with the
 Each derivation builds the primary and secondary springs' strain energy U from where each spring's ends
 are, the creep forces from the creepages written out wheel by wheel (Kalker's linear law), the
 gravitational forces of the contact geometry and the outward force −m a_q on every mass, and calls
-:func:`raildyn.derivations.lagrange` (with T = D = 0, so M and C are zero matrices). The tests hold K and
-G_K to the package's :func:`raildyn.curving.steady.steady_curving` (its stiffness matrix and its loads,
-:func:`raildyn.wheelset.curve_loads` and −M r a_q) and to :func:`raildyn.curving.stiffness.bending_shear_stiffness`.
+:func:`raildyn.derivations.lagrange` (with T = D = 0, so M and C are zero matrices). The tests hold
+K and G_K to the package's :func:`raildyn.curving.steady.steady_curving` (its stiffness matrix and
+its loads, :func:`raildyn.wheelset.curve_loads` and −M r a_q) and to
+:func:`raildyn.curving.stiffness.bending_shear_stiffness`.
 
 Sources: Garg & Dukkipati (1984), ch. 5 and 8; Wickens (2003), ch. 7; Boocock (1969).
 """
@@ -75,7 +76,7 @@ def _wheelset_in_curve(y, psi, x, kappa):
     gamma_y, phi = sympy.symbols("gamma_y varphi")
     steps = (
         Step("the track under the wheelset: displaced and turned",
-             sympy.Eq(sympy.Matrix([sympy.Symbol("y_t"), sympy.Symbol("psi_t")]), sympy.Matrix([y_t, psi_t]))),
+             sympy.Eq(sympy.Matrix(sympy.symbols("y_t psi_t")), sympy.Matrix([y_t, psi_t]))),
         Step("longitudinal creepage, left (inner) and right (outer) wheel",
              sympy.Eq(sympy.Matrix([sympy.Symbol("gamma_xL"), sympy.Symbol("gamma_xR")]),
                       sympy.Matrix([gx_L, gx_R]))),
