@@ -17,8 +17,8 @@ from hypothesis import strategies as st
 
 from raildyn.constants import GRAVITY
 from raildyn.curving import geometry, steady_curving
-from raildyn.derivations.wheelset import curved_wheelset, tangent_wheelset
-from raildyn.wheelset import Wheelset, curve_loads, pure_rolling_offset
+from raildyn.derivations.wheelset import critical_speed_limit, curved_wheelset, tangent_wheelset
+from raildyn.wheelset import Wheelset, curve_loads, pure_rolling_offset, wickens_critical_speed
 
 FIELDS = (
     "mass", "yaw_inertia", "rolling_radius", "half_gauge", "conicity", "axle_load", "f11", "f22", "f23",
@@ -129,3 +129,23 @@ def test_pure_rolling_offset_comes_out_of_the_curved_derivation(radius):
     value = float(y.subs({r0: ws.rolling_radius, a: ws.half_gauge, lam: ws.conicity, kappa: 1.0 / radius}))
     expected = pure_rolling_offset(ws.rolling_radius, ws.half_gauge, ws.conicity, radius)
     assert value == pytest.approx(-expected, rel=1e-14)
+
+
+@settings(max_examples=20, deadline=None)
+@given(changes=factors(FIELDS))
+def test_critical_speed_limit_is_wickens(changes):
+    ws = scaled(Wheelset(), changes)
+    steps, d = critical_speed_limit(), tangent_wheelset()
+    symbols = [symbol for symbol, _ in d.parameters]
+    values = list(d.values(ws).values())
+    V_c = np.sqrt(sympy.lambdify(symbols, steps[-1].equation.rhs)(*values))
+    assert V_c == pytest.approx(wickens_critical_speed(ws), rel=1e-12)
+    # The first step is the full characteristic polynomial: its roots are the eigenvalues of the
+    # state matrix (to the root-finder's accuracy, relative to the largest root).
+    V = 40.0
+    coefficients = sympy.Poly(steps[0].equation.lhs, sympy.Symbol("s")).all_coeffs()
+    roots = np.roots(sympy.lambdify([*symbols, d.speed], coefficients)(*values, V))
+    eig = np.linalg.eigvals(ws.matrices(V).state_matrix())
+    np.testing.assert_allclose(
+        np.sort_complex(roots), np.sort_complex(eig), rtol=0.0, atol=1e-6 * np.abs(eig).max()
+    )

@@ -23,7 +23,7 @@ from raildyn.constants import GRAVITY
 from raildyn.curving.geometry import STANDARD_RAIL_SPACING
 from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
 
-__all__ = ["curved_wheelset", "tangent_wheelset"]
+__all__ = ["critical_speed_limit", "curved_wheelset", "tangent_wheelset"]
 
 
 def _symbols() -> dict:
@@ -345,4 +345,59 @@ def curved_wheelset() -> Derivation:
                 sympy.Eq(sympy.Matrix([sympy.Symbol("y"), sympy.Symbol("psi")]), rest),
             ),
         ),
+    )
+
+
+@functools.cache
+def critical_speed_limit() -> tuple:
+    """Wickens' critical speed of the suspended wheelset, derived from :func:`tangent_wheelset`.
+
+    The characteristic equation det(s²M + sC + K) = 0 of the wheelset is a quartic in s. With
+    the spin, gravitational and damping terms removed and f₁₁ = f₂₂ = f, its Hurwitz condition
+    a₃a₂a₁ − a₄a₁² − a₀a₃² > 0 (all roots in the left half-plane, the coefficients being positive)
+    is, to leading order as f → ∞ (order f⁴), a bound on the speed:
+
+        V² < V_c² = (a r₀ / λ) · (k_ψ + a² k_y) / (I_z + m a²)
+
+    (Wickens 1965; Wickens 2003, ch. 3), as :func:`raildyn.wheelset.wickens_critical_speed`
+    evaluates it.
+
+    Returns
+    -------
+    tuple of Step
+        The characteristic polynomial, its coefficients in the reduced case, the Hurwitz
+        expression, its leading term in f, and V_c² (the last step's right-hand side, in the
+        symbols of :func:`tangent_wheelset`'s parameters).
+
+    Examples
+    --------
+    >>> critical_speed_limit()[-1].equation.lhs
+    V_c**2
+    """
+    d = tangent_wheelset()
+    s_ = sympy.Symbol("s")
+    f = sympy.Symbol("f", positive=True)
+    V = d.speed
+    names = {symbol.name: symbol for symbol, _ in d.parameters}
+    reduced = {names[k]: 0 for k in ("f_23", "f_33", "vartheta_0", "varepsilon", "c_y", "c_psi")}
+    reduced.update({names["f_11"]: f, names["f_22"]: f})
+    A = s_**2 * d.M + s_ * d.C + d.K
+    P = sympy.expand(A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0])
+    coefficients = sympy.Poly(sympy.expand(P.subs(reduced)), s_).all_coeffs()
+    a4, a3, a2, a1, a0 = coefficients
+    H = sympy.expand(a3 * a2 * a1 - a4 * a1**2 - a0 * a3**2)
+    lead = sympy.factor(sympy.Poly(H, f).LC())
+    # The one factor that changes sign with the speed.
+    (bracket,) = [m for m in sympy.Mul.make_args(lead) if m.has(V) and m.has(names["lambda"])]
+    (V_c2,) = sympy.solve(bracket, V**2)
+    a_symbols = sympy.symbols("a_4 a_3 a_2 a_1 a_0")
+    return (
+        Step("characteristic equation det(s²M + sC + K) = 0", sympy.Eq(sympy.collect(P, s_), 0)),
+        *(
+            Step(f"coefficient of s^{4 - i}: no spin, gravity or damping, f_11 = f_22 = f", sympy.Eq(ai, c))
+            for i, (ai, c) in enumerate(zip(a_symbols, coefficients, strict=True))
+        ),
+        Step("Hurwitz condition for the quartic: > 0 when stable", _eq("H", H)),
+        Step("its leading term as f grows (order f^4)", _eq("H_4", lead)),
+        Step("the leading term changes sign at the critical speed", sympy.Eq(sympy.Symbol("V_c") ** 2, V_c2)),
     )
