@@ -252,22 +252,23 @@ def _position(model):
 
 @functools.cache
 def curved_wheelset() -> Derivation:
-    """The wheelset on a curve of curvature κ = 1/R with cant D, in axes that follow the vehicle.
+    """The wheelset on a curve of curvature κ = 1/R with cant h_t, in axes that follow the vehicle.
 
     The axes' origin runs along the track's centre line at V, x along its tangent, and the axes
     turn at Vκ. The wheelset sits x ahead of the origin (0 for a lone wheelset, ±b in a bogie),
     where the centre line is displaced by y_t = x²κ/2 and turned by ψ_t = xκ, and the path of a
     point fixed in the axes is turned by xκ. Its kinetic energy in these axes,
     T = ½m[(V − Vκy)² + (ẏ + Vκx)²] + ½I_z(ψ̇ + Vκ)², and the potential energy of its weight in
-    the plane of the track rolled by D/G, −m g (D/G) y, give the inertia force −mV²κ and the
-    weight's share m g D/G: together −m a_q, a_q = V²κ − gD/G (the unbalanced lateral
+    the plane of the track rolled by h_t/(2a_r) (2a_r the rail spacing on which the cant is
+    stated), −m g h_t y/(2a_r), give the inertia force −mV²κ and the weight's share
+    m g h_t/(2a_r): together −m a_q, a_q = V²κ − g h_t/(2a_r) (the unbalanced lateral
     acceleration). The contact is that of :func:`tangent_wheelset` with y − y_t in the rolling
     radii and contact angles, ψ − xκ in the lateral creepage, the yaw rate ψ̇ + Vκ in the
     longitudinal and spin creepages, and the normal forces across the rails turned by ψ_t
     (Garg & Dukkipati 1984, ch. 5 and 8; Wickens 2003, ch. 7).
 
-    Inputs w = [κ, D] (1/m, m). G_K's first column, less the inertia force −mV² on y, is
-    R·:func:`raildyn.wheelset.curve_loads`; its second is m g/G on y. G_C holds the Euler
+    Inputs w = [κ, h_t] (1/m, m). G_K's first column, less the inertia force −mV² on y, is
+    R·:func:`raildyn.wheelset.curve_loads`; its second is m g/(2a_r) on y. G_C holds the Euler
     force and moment of a changing curvature, −m x V and −I_z V per unit κ̇, which the steady
     state does not see and :func:`raildyn.curving.steady.steady_curving` leaves out. The steps
     end with the free wheelset's steady offset, −r₀a κ/λ: the pure-rolling offset r₀a/(λR)
@@ -277,7 +278,7 @@ def curved_wheelset() -> Derivation:
     -------
     Derivation
         Parameters read from a :class:`raildyn.wheelset.Wheelset` (the wheelset at x = 0) or a
-        pair (Wheelset, x); g and G from :mod:`raildyn.constants` and
+        pair (Wheelset, x); g and 2a_r from :mod:`raildyn.constants` and
         :data:`raildyn.curving.geometry.STANDARD_RAIL_SPACING`; ``speed`` V (m/s).
 
     Examples
@@ -294,23 +295,23 @@ def curved_wheelset() -> Derivation:
     k_y, k_psi, c_y, c_psi = (s[k][0] for k in ("k_y", "k_psi", "c_y", "c_psi"))
     V = sympy.Symbol("V", positive=True)
     x = sympy.Symbol("x", real=True)
-    g, G = sympy.symbols("g G", positive=True)
+    g, a_r = sympy.symbols("g a_r", positive=True)
     y, psi = coordinates("y psi")
-    kappa, D = coordinates("kappa D")
+    kappa, h_t = coordinates("kappa h_t")
     yd, psid = y.diff(time), psi.diff(time)
     y_t, psi_t = x**2 * kappa / 2, x * kappa
     contact = _contact(s, y, psi, yd, psid, V, y - y_t, x * kappa, V * kappa, 0)
     Q, _ = _forces(contact, y, psi, a, psi_t)
     Omega = V * kappa
     T = m * ((V - Omega * y) ** 2 + (yd + Omega * x) ** 2) / 2 + I_z * (psid + Omega) ** 2 / 2
-    U = k_y * y**2 / 2 + k_psi * psi**2 / 2 - m * g * (D / G) * y
+    U = k_y * y**2 / 2 + k_psi * psi**2 / 2 - m * g * h_t / (2 * a_r) * y
     Dr = c_y * yd**2 / 2 + c_psi * psid**2 / 2
-    M, C, K, GK, GC = lagrange(T, U, Dr, [y, psi], forces=Q, inputs=[kappa, D])
+    M, C, K, GK, GC = lagrange(T, U, Dr, [y, psi], forces=Q, inputs=[kappa, h_t])
     # The steady state of the free, spin-free wheelset with no gravitational stiffness, at the
-    # balance speed: K q = G_K w with the suspension, f₂₃, f₃₃, ε, ϑ₀ zero and D = G V²κ/g.
+    # balance speed: K q = G_K w with the suspension, f₂₃, f₃₃, ε, ϑ₀ zero and h_t = 2a_r V²κ/g.
     ideal = {s[k][0]: 0 for k in ("k_y", "k_psi", "f_23", "f_33", "varepsilon", "vartheta_0")}
-    balance = {D: G * V**2 * kappa / g, x: 0}
-    w = sympy.Matrix([kappa, D])
+    balance = {h_t: 2 * a_r * V**2 * kappa / g, x: 0}
+    w = sympy.Matrix([kappa, h_t])
     rest = sympy.Matrix(K.subs(ideal)).LUsolve(sympy.Matrix(GK.subs(ideal) * w).subs(balance))
     rest = rest.applyfunc(sympy.simplify)
     T_shown = sympy.expand(T)
@@ -321,12 +322,12 @@ def curved_wheelset() -> Derivation:
     parameters = _parameters(s, field) + (
         (x, _position),
         (g, lambda model: GRAVITY),
-        (G, lambda model: STANDARD_RAIL_SPACING),
+        (a_r, lambda model: STANDARD_RAIL_SPACING / 2),
     )
     return Derivation(
         title="wheelset on its primary suspension, on a curve",
         coordinates=(y, psi),
-        inputs=(kappa, D),
+        inputs=(kappa, h_t),
         M=M,
         C=C,
         K=K,
