@@ -1,16 +1,16 @@
 """Suspension force laws for the vehicle models (chapter 3, the building blocks of a model).
 
-Each law gives the force an element carries for a relative displacement δ (m)
-or relative velocity v (m/s) across it, positive in the sense of δ (a spring
-pushed by δ > 0 answers with a positive force). All are vectorized: arrays of
+Each law gives the force an element carries for a deflection u (m, the relative
+displacement across it) or relative velocity v = u̇ (m/s), positive in the sense of u
+(a spring pushed by u > 0 answers with a positive force). All are vectorized: arrays of
 any shape broadcast against each other, and parameters may be arrays too. Every
 input is finite and non-empty; arrays whose shapes do not broadcast are refused,
 naming the one that does not fit.
 
-* linear spring          F = k δ + F₀
+* linear spring          F = k u + F₀
 * viscous damper         F = c v
 * Coulomb friction       F = F_f sgn v, or the smooth F = F_f tanh(v/v_ε)
-* clearance, bump stop   F = k δ + k_s (|δ| − g)₊ sgn δ
+* clearance, bump stop   F = k u + k_s (|u| − e)₊ sgn u
 
 The smooth friction law replaces the jump of sgn v at v = 0 by a slope F_f/v_ε,
 so that an ODE solver need not stop at each stick–slip change; it misses the
@@ -53,12 +53,12 @@ def _field(name: str, value, *, low=None, low_open=False) -> np.ndarray:
 
 
 def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
-    """Linear spring: F = k δ + F₀ (N).
+    """Linear spring: F = k u + F₀ (N).
 
     Parameters
     ----------
     deflection : array_like
-        δ, m.
+        u, m.
     stiffness : array_like
         k >= 0, N/m.
     preload : array_like
@@ -245,17 +245,17 @@ def friction_amplitude_loss(friction_force, stiffness) -> np.ndarray:
 def clearance_force(deflection, clearance, stop_stiffness, stiffness=0.0) -> np.ndarray:
     """A spring (or nothing) inside a clearance, and a bump stop beyond it.
 
-    F = k δ + k_s (|δ| − g)₊ sgn δ (N): a free gap (k = 0) such as the lateral
+    F = k u + k_s (|u| − e)₊ sgn u (N): a free gap (k = 0) such as the lateral
     clearance between an axle box and its guide, or a suspension spring whose
-    travel is limited by a rubber bump stop after g. F is continuous and odd in
-    δ; its slope jumps from k to k + k_s at |δ| = g.
+    travel is limited by a rubber bump stop after e. F is continuous and odd in
+    u; its slope jumps from k to k + k_s at |u| = e.
 
     Parameters
     ----------
     deflection : array_like
-        δ, m.
+        u, m.
     clearance : array_like
-        g >= 0, free travel each way, m.
+        e >= 0, free travel each way, m.
     stop_stiffness : array_like
         k_s >= 0, N/m.
     stiffness : array_like

@@ -7,13 +7,13 @@ each function returns when given ``speed=V``.
 
 Jointed rail (Garg & Dukkipati 1984, ch. 3): rails of length L (11.9 m, the
 39-ft North American rail) whose ends are pushed down at each joint. Each joint
-is a cusp of depth δ and half-width a,
+is a cusp of depth h_j and half-length ℓ_j,
 
-    z(ξ) = −δ (1 − |ξ|/a)²  for |ξ| < a,   0 elsewhere,
+    z(s) = −h_j (1 − |s|/ℓ_j)²  for |s| < ℓ_j,   0 elsewhere,
 
-ξ being the distance to the nearest joint. z and its slope are continuous away
-from the joint, where the slope jumps by 4δ/a (the cusp) — the kick that a
-wheel receives on each joint; the curvature jumps at |ξ| = a. With a = L/2 the
+s being the signed distance to the nearest joint. z and its slope are continuous away
+from the joint, where the slope jumps by 4h_j/ℓ_j (the cusp) — the kick that a
+wheel receives on each joint; the curvature jumps at |s| = ℓ_j. With ℓ_j = L/2 the
 whole rail sags between joints. On the two rails the joints are either *in
 phase* (opposite each other: a bounce and pitch input) or *staggered* by L/2
 (a roll input, the source of rock-and-roll of freight cars).
@@ -82,9 +82,9 @@ def dipped_joints(
     x : array_like
         Distance along the track, m; any shape, not empty.
     depth : float
-        δ >= 0, depth of the dip at each joint, m.
+        h_j >= 0, depth of the dip at each joint, m.
     half_width : float
-        a, half the length of track each dip spans, m, 0 < a <= L/2.
+        ℓ_j, half the length of track each dip spans, m, 0 < ℓ_j <= L/2.
     rail_length : float
         L > 0, distance between joints, m (default 11.9).
     offset : float
@@ -92,7 +92,7 @@ def dipped_joints(
     derivative : {0, 1, 2}
         Return z (m), dz/dx or d²z/dx² (1/m). At a joint itself the slope is
         taken as the mean of its two one-sided values (0); the curvature returned
-        is the regular part, without the Dirac term of the slope jump 4δ/a.
+        is the regular part, without the Dirac term of the slope jump 4h_j/ℓ_j.
     speed : float, optional
         V, m/s, 0 < V <= 1000 (six times the rail speed record, so that the rates
         stay finite): return the rates met in time instead, dz/dt = V dz/dx (m/s)
@@ -231,9 +231,9 @@ def jointed_track(
     x : array_like
         Distance along the track, m; any shape, not empty.
     depth : float
-        δ >= 0, depth of each dip, m.
+        h_j >= 0, depth of each dip, m.
     half_width : float
-        a, m, 0 < a <= L/2.
+        ℓ_j, half the length of track each dip spans, m, 0 < ℓ_j <= L/2.
     rail_length : float
         L > 0, m (default 11.9).
     arrangement : {"staggered", "in_phase"}

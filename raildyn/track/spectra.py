@@ -38,14 +38,14 @@ With Ω_c, Ω_r, Ω_s in rad/m and A_v, A_a, A_g in m·rad (= m²·rad/m):
 
 * vertical profile   S_v(Ω) = A_v Ω_c² / [(Ω² + Ω_r²)(Ω² + Ω_c²)]
 * alignment          S_a(Ω) = A_a Ω_c² / [(Ω² + Ω_r²)(Ω² + Ω_c²)]
-* cross-level        S_c(Ω) = (A_v/b²) Ω_c² Ω² / [(Ω² + Ω_r²)(Ω² + Ω_c²)(Ω² + Ω_s²)]
+* cross-level        S_c(Ω) = (A_v/a²) Ω_c² Ω² / [(Ω² + Ω_r²)(Ω² + Ω_c²)(Ω² + Ω_s²)]
 * gauge              S_g(Ω) = A_g Ω_c² Ω² / [(Ω² + Ω_r²)(Ω² + Ω_c²)(Ω² + Ω_s²)]
 
 in m²/(rad/m) for S_v, S_a, S_g and rad²/(rad/m) for the cross-level *angle*
-S_c, b being half the distance between the rails' contact points (0.75 m).
+S_c, a being half the distance between the rails' contact points (0.75 m; field ``b``).
 raildyn returns the cross-level as the height difference between the rails,
-2b × the angle, so its spectrum is (2b)² S_c = 4 A_v Ω_c² Ω²/[…] and b drops
-out. The gauge spectrum is already a length (no b). The low/high-disturbance
+2a × the angle, so its spectrum is (2a)² S_c = 4 A_v Ω_c² Ω²/[…] and a drops
+out. The gauge spectrum is already a length (no a). The low/high-disturbance
 values are those quoted by Zhai (2020, ch. 2) and by Guo et al. (2012; A_v,
 Ω_c, Ω_r also coded in TTB-2D); they are used one-sided per rad/m as those
 sources use them. A_g (5.32e-8 low, 1.032e-7 high) is Zhai's value; the one
@@ -146,7 +146,8 @@ class GermanParameters:
     omega_c, omega_r, omega_s : float
         Corner wavenumbers, rad/m.
     b : float
-        Half the distance between the contact points of the two rails, m.
+        a, half the distance between the contact points of the two rails, m (the notation's a;
+        the field keeps its name).
     """
 
     A_v: float
@@ -260,7 +261,7 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
     ----------
     component : {"vertical", "alignment", "cross_level", "gauge"}
         Vertical profile, alignment, cross-level as the height difference
-        between the rails (2b × the cross-level angle of the source), or gauge.
+        between the rails (2a × the cross-level angle of the source), or gauge.
     level : {"low", "high"}
         Low or high disturbance.
     wavenumber : array_like

@@ -149,8 +149,8 @@ def random_track():
 
 def _jointed_rail_controls():
     return {
-        "half_width": slider("dip half-width a (m)", 2.0, 0.5, 5.9, 0.1, fmt=".1f"),
-        "depth_mm": slider("dip depth δ (mm)", 8.0, 0.0, 20.0, 0.5, fmt=".1f"),
+        "half_width": slider("dip half-length ℓ_j (m)", 2.0, 0.5, 5.9, 0.1, fmt=".1f"),
+        "depth_mm": slider("dip depth h_j (mm)", 8.0, 0.0, 20.0, 0.5, fmt=".1f"),
         "arrangement": widgets.Dropdown(
             options=[("staggered", "staggered"), ("in phase", "in_phase")],
             value="staggered",
@@ -195,7 +195,7 @@ def _jointed_rail_setup(live, status):
             r.set_x(n * f1)
         status.value = (
             f"first harmonic nV/L = {f1:.2f} Hz at {v['speed_kmh']:.0f} km/h (L = {L} m); "
-            f"slope jump at each joint 4δ/a = {4e3 * depth / a:.1f} mm/m"
+            f"slope jump at each joint 4h_j/ℓ_j = {4e3 * depth / a:.1f} mm/m"
         )
 
     return redraw
@@ -213,7 +213,7 @@ JOINTED_RAIL = Recipe(
 def jointed_rail():
     """Jointed rail with cusp-shaped dipped joints, staggered or in phase, and its harmonics.
 
-    Controls: half-width a and depth δ of each dip, joint arrangement, speed
+    Controls: half-length ℓ_j and depth h_j of each dip, joint arrangement, speed
     (km/h). Left: both rails and the cross-level over three rail lengths; right:
     the Fourier amplitudes of the bounce (mean) and roll (cross-level) inputs,
     placed at their frequencies nV/L in Hz.

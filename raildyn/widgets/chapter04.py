@@ -57,10 +57,10 @@ def _hertz_setup(live, status):
         p_x.set_data(1e3 * c.a * s, 1e-6 * c.pressure(c.a * s, 0.0))
         p_y.set_data(1e3 * c.b * s, 1e-6 * c.pressure(0.0, c.b * s))
         status.value = (
-            f"a = {1e3 * c.a:.2f} mm, b = {1e3 * c.b:.2f} mm, a/b = {c.a_over_b:.3f} · θ = "
+            f"a_c = {1e3 * c.a:.2f} mm, b_c = {1e3 * c.b:.2f} mm, a_c/b_c = {c.a_over_b:.3f} · θ = "
             f"{math.degrees(c.theta):.1f}°, m = {c.m:.3f}, n = {c.n:.3f} · "
             f"p₀ = {1e-6 * c.peak_pressure:.0f} MPa"
-            f" · δ = {1e6 * c.approach:.1f} µm · k = {1e-9 * c.stiffness:.2f} kN/µm"
+            f" · u_N = {1e6 * c.approach:.1f} µm · k = {1e-9 * c.stiffness:.2f} kN/µm"
         )
 
     return redraw
@@ -79,7 +79,7 @@ def hertz():
     """Hertz ellipse (left) and the pressure along its axes (right) for a conical tread on a rail.
 
     Controls: wheel load (kN), wheel rolling radius and rail crown radius (mm).
-    The status line gives a, b, θ, Hertz's m and n, p₀, the approach and the
+    The status line gives the semi-axes a_c, b_c, θ, Hertz's m and n, p₀, the approach u_N and the
     linearized normal stiffness.
 
     Returns
@@ -97,7 +97,7 @@ def hertz():
 
 def _creep_controls():
     return {
-        "a_over_b": slider("a/b", 1.0, 0.2, 5.0, 0.05),
+        "a_over_b": slider("a_c/b_c", 1.0, 0.2, 5.0, 0.05),
         "spin": slider("spin φ (1/m)", 0.0, 0.0, 2.0, 0.05),
         "friction": slider("friction μ", 0.3, 0.1, 0.6, 0.01),
         "load_kn": slider("wheel load N (kN)", 100.0, 20.0, 200.0, 5.0, fmt=".0f"),
@@ -105,7 +105,7 @@ def _creep_controls():
 
 
 def _ellipse(load, a_over_b):
-    """Semi-axes with ratio a/b and the area of the circular Hertz contact of radius-460-mm bodies."""
+    """Semi-axes a_c, b_c in the ratio a_c/b_c with the area of Hertz's circle for radius-460-mm bodies."""
     c = contact.hertz_contact(load, 0.46, 0.46, math.inf)  # circle: a = b
     size = math.sqrt(c.a * c.b)
     return size * math.sqrt(a_over_b), size / math.sqrt(a_over_b)
@@ -129,7 +129,7 @@ def _creep_setup(live, status):
         curves.plot(artists=lines)
         a, b, f = curves.a, curves.b, curves.coefficients
         status.value = (
-            f"a = {1e3 * a:.2f} mm, b = {1e3 * b:.2f} mm · f₂₂ = {f.f22 / 1e6:.2f} MN, "
+            f"a_c = {1e3 * a:.2f} mm, b_c = {1e3 * b:.2f} mm · f₂₂ = {f.f22 / 1e6:.2f} MN, "
             f"f₂₃ = {f.f23 / 1e3:.2f} kN m · μN = {mu * load / 1e3:.1f} kN "
             "(Carter and Johnson–Vermeulen take no spin)"
         )
@@ -149,7 +149,7 @@ CREEP_LAWS = Recipe(
 def creep_laws():
     """Lateral creep force against creepage for Kalker linear, Carter, JV, SHE, Polach and FASTSIM.
 
-    Controls: a/b, spin φ (1/m), friction μ and wheel load (kN); the ellipse
+    Controls: a_c/b_c, spin φ (1/m), friction μ and wheel load (kN); the ellipse
     area is that of Hertz's circular contact for 460 mm radii in both directions. Forces are
     shown as −F_y/(μN), so the saturation level is 1.
 
@@ -168,8 +168,8 @@ def creep_laws():
 
 def _patch_controls():
     return {
-        "xi_permille": slider("ξ (‰)", 1.0, -5.0, 5.0, 0.1, fmt=".1f"),
-        "eta_permille": slider("η (‰)", 0.5, -5.0, 5.0, 0.1, fmt=".1f"),
+        "xi_permille": slider("γ_x (‰)", 1.0, -5.0, 5.0, 0.1, fmt=".1f"),
+        "eta_permille": slider("γ_y (‰)", 0.5, -5.0, 5.0, 0.1, fmt=".1f"),
         "spin": slider("spin φ (1/m)", 0.0, -2.0, 2.0, 0.05),
         "friction": slider("friction μ", 0.3, 0.1, 0.6, 0.01),
     }
@@ -236,7 +236,7 @@ FASTSIM_PATCH = Recipe(
 def fastsim_patch():
     """Traction over the contact ellipse by FASTSIM with its adhesion (blue) and slip (red) cells.
 
-    N = 100 kN, a = 6 mm, b = 4 mm. Controls: ξ and η (‰), spin φ (1/m),
+    N = 100 kN, a_c = 6 mm, b_c = 4 mm. Controls: γ_x and γ_y (‰), spin φ (1/m),
     friction μ. Right: the traction along the centre strip against the
     traction bound ±μp_z; the adhesion zone is where the traction stays inside.
 
