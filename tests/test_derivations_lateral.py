@@ -97,7 +97,7 @@ def test_bogie_frame_yaw_stiffness_closed_form():
     # two primary yaw springs (2 k_ψ) and the secondary yaw spring (k_sψ); the wheelset's lateral
     # row holds −2f₂₂ on its yaw (the creep force of the lateral creepage −ψ).
     d = bogie()
-    ky, kpsi, kspsi, b, f22 = sympy.symbols("k_y k_psi k_spsi b f_22", positive=True)
+    ky, kpsi, kspsi, b, f22 = sympy.symbols("k_y k_psi k_spsi b f_22")
     values = dict(zip((s.name for s, _ in d.parameters), (s for s, _ in d.parameters), strict=True))
     frame_yaw = d.K[1, 1].subs({values[s.name]: s for s in (ky, kpsi, kspsi, b)})
     assert sympy.expand(frame_yaw - (2 * ky * b**2 + 2 * kpsi + kspsi)) == 0

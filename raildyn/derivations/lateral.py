@@ -26,6 +26,24 @@ from raildyn.derivations._core import Derivation, Step, coordinates, generalized
 
 __all__ = ["bogie", "lateral_car"]
 
+_BOGIE_ROWS = (
+    "frame lateral",
+    "frame yaw",
+    "leading wheelset lateral",
+    "leading wheelset yaw",
+    "trailing wheelset lateral",
+    "trailing wheelset yaw",
+)
+_CAR_ROWS = (
+    "body lateral",
+    "body yaw",
+    "body roll",
+    "front frame lateral",
+    "front frame yaw",
+    "leading wheelset lateral",
+    "leading wheelset yaw",
+)
+
 
 @dataclass(frozen=True)
 class _WheelsetSymbols:
@@ -74,8 +92,9 @@ def _wheelset_symbols(path: str) -> tuple:
     made = {}
     pairs = []
     for key, (name, attribute) in _WHEELSET_FIELDS.items():
-        # ϑ₀, ε, f₂₃ may be zero and W a ϑ₀ enters with its sign: only lengths and masses are positive.
-        symbol = sympy.Symbol(name, nonnegative=True) if key != "a" else sympy.Symbol(name, positive=True)
+        # No assumptions (positive, ...) on any symbol: nothing here simplifies, and sympy's
+        # assumption queries would take most of the time of building the car's matrices.
+        symbol = sympy.Symbol(name)
         made[key] = symbol
         pairs.append((symbol, f"{path}.{attribute}"))
     return _WheelsetSymbols(**made), tuple(pairs)
@@ -86,7 +105,7 @@ def _rate(expr):
 
 
 def _wheelset_terms(y, psi, ya, c, p: _WheelsetSymbols, V) -> tuple:
-    """One wheelset's kinetic energy and the virtual-work pairs of its wheel–rail forces.
+    """One wheelset's kinetic energy and the generalized forces of its wheel–rail forces (virtual work).
 
     Parameters
     ----------
@@ -100,9 +119,10 @@ def _wheelset_terms(y, psi, ya, c, p: _WheelsetSymbols, V) -> tuple:
 
     Returns
     -------
-    (T, pairs, creepages)
-        T the kinetic energy; pairs the (force, displacement) of every wheel–rail force for
-        :func:`generalized_forces`; creepages a dict of the creepages for the steps.
+    (T, forces, creepages)
+        T the kinetic energy; forces a dict {y: Q_y, ψ: Q_ψ} of the generalized forces, from each
+        wheel–rail force and the displacement it works through (:func:`generalized_forces`);
+        creepages a dict of the creepages for the steps.
     """
     yd, psid = _rate(y), _rate(psi)
     T = p.m * yd**2 / 2 + p.I * psid**2 / 2
@@ -129,7 +149,10 @@ def _wheelset_terms(y, psi, ya, c, p: _WheelsetSymbols, V) -> tuple:
     # component −W c/(2a) along the track plane; yawed by ψ, the normal loads give the yaw moment
     # W a ϑ₀ ψ (Wickens 2003, ch. 2: the gravitational stiffness).
     pairs += [(-p.W * p.eps * (y - ya) / p.a - p.W * c / (2 * p.a), y), (p.W * p.a * p.theta0 * psi, psi)]
-    return T, pairs, {"gx": gx_left, "gy": gy, "spin": spin}
+    # Virtual work on this wheelset's own coordinates only: the other coordinates do not move its
+    # contact points, so their generalized forces from this wheelset are zero.
+    Qy, Qpsi = generalized_forces(pairs, (y, psi))
+    return T, {y: Qy, psi: Qpsi}, {"gx": gx_left, "gy": gy, "spin": spin}
 
 
 def _creepage_steps(subscript: str, creepages: dict) -> tuple:
@@ -162,25 +185,26 @@ class _BogieSymbols:
 
 
 def _bogie_symbols(path: str) -> tuple:
+    """The frame's and the secondary suspension's symbols and their pairs, the bogie at ``path``."""
     fields = {
-        "mf": ("m_f", "frame_mass", True),
-        "If": ("I_f", "frame_yaw_inertia", True),
-        "b": ("b", "semi_wheelbase", True),
-        "ksy": ("k_sy", "secondary_lateral_stiffness", False),
-        "csy": ("c_sy", "secondary_lateral_damping", False),
-        "kspsi": ("k_spsi", "secondary_yaw_stiffness", False),
-        "cspsi": ("c_spsi", "secondary_yaw_damping", False),
+        "mf": ("m_f", "frame_mass"),
+        "If": ("I_f", "frame_yaw_inertia"),
+        "b": ("b", "semi_wheelbase"),
+        "ksy": ("k_sy", "secondary_lateral_stiffness"),
+        "csy": ("c_sy", "secondary_lateral_damping"),
+        "kspsi": ("k_spsi", "secondary_yaw_stiffness"),
+        "cspsi": ("c_spsi", "secondary_yaw_damping"),
     }
     made, pairs = {}, []
-    for key, (name, attribute, positive) in fields.items():
-        symbol = sympy.Symbol(name, positive=True) if positive else sympy.Symbol(name, nonnegative=True)
+    for key, (name, attribute) in fields.items():
+        symbol = sympy.Symbol(name)
         made[key] = symbol
         pairs.append((symbol, f"{path}{attribute}"))
     return _BogieSymbols(**made), tuple(pairs)
 
 
 def _bogie_pieces(tag, frame, wheelsets, inputs, seat_y, seat_psi, w: _WheelsetSymbols, s: _BogieSymbols, V):
-    """T, U, D and the wheel–rail pairs of one bogie: frame, two wheelsets, primary and secondary.
+    """T, U, D and the wheel–rail generalized forces of one bogie: frame, two wheelsets, suspension.
 
     ``seat_y`` and ``seat_psi`` are the lateral displacement and yaw of the body at the secondary
     suspension (0 for a body that runs straight).
@@ -189,12 +213,12 @@ def _bogie_pieces(tag, frame, wheelsets, inputs, seat_y, seat_psi, w: _WheelsetS
     T = s.mf * _rate(yf) ** 2 / 2 + s.If * _rate(psif) ** 2 / 2
     U = sympy.Integer(0)
     D = sympy.Integer(0)
-    pairs = []
+    forces = {}
     creepages = []
     for (y, psi), (ya, c), x in zip(wheelsets, inputs, (s.b, -s.b), strict=True):
         Tw, pw, cw = _wheelset_terms(y, psi, ya, c, w, V)
         T += Tw
-        pairs += pw
+        forces |= pw
         creepages.append(cw)
         # Primary: the axlebox at x = ±b moves with the wheelset by y; the frame's end of the
         # spring, x ahead of the frame's centre, by y_f + x ψ_f. Yaw: relative yaw ψ − ψ_f.
@@ -207,7 +231,7 @@ def _bogie_pieces(tag, frame, wheelsets, inputs, seat_y, seat_psi, w: _WheelsetS
     u_sec_yaw = psif - seat_psi
     U += s.ksy * u_sec**2 / 2 + s.kspsi * u_sec_yaw**2 / 2
     D += s.csy * _rate(u_sec) ** 2 / 2 + s.cspsi * _rate(u_sec_yaw) ** 2 / 2
-    return T, U, D, pairs, creepages
+    return T, U, D, forces, creepages
 
 
 def _quadratic_matrices(T, U, D, Q, q, w):
@@ -276,6 +300,28 @@ def _monomials(expr, gens) -> dict:
     return {key: sympy.Add(*terms) for key, terms in parts.items()}
 
 
+def _equation_steps(M, C, K, GK, GC, q, w, rows, names) -> tuple:
+    """Steps that write out the equations of motion of some coordinates, row by row of the matrices.
+
+    Row i reads Σ_j (M_ij q̈_j + C_ij q̇_j + K_ij q_j) = Σ_k (G_K,ik w_k + G_C,ik ẇ_k); nothing is
+    simplified, so that a notebook shows each row at once.
+    """
+    rates = [c.diff(time) for c in q]
+    accelerations = [c.diff(time, 2) for c in q]
+    input_rates = [v.diff(time) for v in w]
+    steps = []
+    for i, name in zip(rows, names, strict=True):
+        left = [M[i, j] * accelerations[j] for j in range(len(q)) if M[i, j] != 0]
+        left += [C[i, j] * rates[j] for j in range(len(q)) if C[i, j] != 0]
+        left += [K[i, j] * q[j] for j in range(len(q)) if K[i, j] != 0]
+        right = [GK[i, k] * w[k] for k in range(len(w)) if GK[i, k] != 0]
+        right += [GC[i, k] * input_rates[k] for k in range(len(w)) if GC[i, k] != 0]
+        # Not evaluated: sympy would otherwise try to decide whether the two sides are equal.
+        equation = sympy.Eq(sympy.Add(*left), sympy.Add(*right), evaluate=False)
+        steps.append(Step(f"equation of motion: {name}", equation))
+    return tuple(steps)
+
+
 @functools.cache
 def bogie() -> Derivation:
     """The bogie of :class:`raildyn.vehicles.lateral.Bogie` under a body that runs straight.
@@ -306,17 +352,17 @@ def bogie() -> Derivation:
     >>> d.difference((m.M, m.C, m.K, m.GK, m.GC), Bogie(), 30.0) < 1e-14
     True
     """
-    V = sympy.Symbol("V", positive=True)
+    V = sympy.Symbol("V")
     w, wheelset_pairs = _wheelset_symbols("wheelset")
     s, bogie_pairs = _bogie_symbols("")
     q = coordinates("y_f psi_f y_1 psi_1 y_2 psi_2")
     inputs = coordinates("y_a1 y_a2 c_1 c_2")
     wheelsets = ((q[2], q[3]), (q[4], q[5]))
     track = ((inputs[0], inputs[2]), (inputs[1], inputs[3]))
-    T, U, D, pairs, creepages = _bogie_pieces(
+    T, U, D, forces, creepages = _bogie_pieces(
         "", (q[0], q[1]), wheelsets, track, sympy.Integer(0), sympy.Integer(0), w, s, V
     )
-    Q = generalized_forces(pairs, q)
+    Q = sympy.Matrix([forces.get(c, 0) for c in q])
     M, C, K, GK, GC = _quadratic_matrices(T, U, D, Q, q, inputs)
     return Derivation(
         title="two-axle bogie under a body that runs straight",
@@ -338,6 +384,7 @@ def bogie() -> Derivation:
                 "generalized forces of the wheel–rail contact (virtual work)",
                 sympy.Eq(sympy.Symbol("Q"), Q.applyfunc(sympy.expand), evaluate=False),
             ),
+            *_equation_steps(M, C, K, GK, GC, q, inputs, range(6), _BOGIE_ROWS),
         ),
     )
 
@@ -346,18 +393,18 @@ def bogie() -> Derivation:
 def lateral_car() -> Derivation:
     """The 15-coordinate passenger car of :class:`raildyn.vehicles.lateral.Car`.
 
-    Coordinates q = [y_c, ψ_c, ϕ_c; y_f1, ψ_f1, y₁₁, ψ₁₁, y₁₂, ψ₁₂; y_f2, ψ_f2, y₂₁, ψ₂₁, y₂₂, ψ₂₂]:
+    Coordinates q = [y, ψ, ϕ; y_f1, ψ_f1, y₁₁, ψ₁₁, y₁₂, ψ₁₂; y_f2, ψ_f2, y₂₁, ψ₂₁, y₂₂, ψ₂₂]:
     the body's lateral displacement (m), yaw and roll (rad); each bogie frame's lateral
     displacement and yaw; each wheelset's (bogie 1 leading, at x = +l; wheelset j1 leading in its
     bogie). Inputs w: the alignment y_a under the four wheelsets, then the cross-level c there (m).
     Lagrange's equations (book ch. 7) with the bogie's T, U, D and Q (:func:`bogie`) for each bogie,
     the secondary seat at x = ±l, h below the body's centre of gravity, moving by
-    y_c ± lψ_c + hϕ_c, and for the body
+    y ± lψ + hϕ, and for the body
 
-    * T = ½ m_c ẏ_c² + ½ I_cz ψ̇_c² + ½ I_cx ϕ̇_c²;
-    * U = Σ_bogies ½ k_ϕ (ϕ_c − (c_k1 + c_k2)/(4a))² + m_c g h (cos ϕ_c − 1): the roll springs
+    * T = ½ m ẏ² + ½ I_z ψ̇² + ½ I_x ϕ̇²;
+    * U = Σ_bogies ½ k_ϕ (ϕ − (c_k1 + c_k2)/(4a))² + m g h (cos ϕ − 1): the roll springs
       stand on frames that tilt with the mean cross-level under their wheelsets, and the body's
-      weight, h above the seat about which it rolls, lowers the roll stiffness by m_c g h.
+      weight, h above the seat about which it rolls, lowers the roll stiffness by m g h.
 
     Returns
     -------
@@ -370,16 +417,15 @@ def lateral_car() -> Derivation:
     >>> from raildyn.vehicles.lateral import Car
     >>> d = lateral_car()
     >>> d.K[2, 2]  # roll: two bogies' roll springs, the lateral springs' arm h, less the weight's moment
-    -g*h*m_c + 2*h**2*k_sy + 2*k_phi
+    -g*h*m + 2*h**2*k_sy + 2*k_phi
     >>> m = Car().matrices(40.0)
     >>> d.difference((m.M, m.C, m.K, m.GK, m.GC), Car(), 40.0) < 1e-14
     True
     """
-    V = sympy.Symbol("V", positive=True)
+    V = sympy.Symbol("V")
     w, wheelset_pairs = _wheelset_symbols("bogie.wheelset")
     s, bogie_pairs = _bogie_symbols("bogie.")
-    mc, Icz, Icx, l = sympy.symbols("m_c I_cz I_cx l", positive=True)
-    h, kphi, cphi, g = sympy.symbols("h k_phi c_phi g", nonnegative=True)
+    mc, Icz, Icx, l, h, kphi, cphi, g = sympy.symbols("m I_z I_x l h k_phi c_phi g")
     body_pairs = (
         (mc, "body_mass"),
         (Icz, "body_yaw_inertia"),
@@ -390,7 +436,7 @@ def lateral_car() -> Derivation:
         (cphi, "roll_damping"),
         (g, lambda model: GRAVITY),
     )
-    q = coordinates("y_c psi_c phi_c y_f1 psi_f1 y_11 psi_11 y_12 psi_12 y_f2 psi_f2 y_21 psi_21 y_22 psi_22")
+    q = coordinates("y psi phi y_f1 psi_f1 y_11 psi_11 y_12 psi_12 y_f2 psi_f2 y_21 psi_21 y_22 psi_22")
     inputs = coordinates("y_a11 y_a12 y_a21 y_a22 c_11 c_12 c_21 c_22")
     yc, psic, phic = q[:3]
     T = mc * _rate(yc) ** 2 / 2 + Icz * _rate(psic) ** 2 / 2 + Icx * _rate(phic) ** 2 / 2
@@ -398,7 +444,7 @@ def lateral_car() -> Derivation:
     # ϕ about the seat lowers the centre of gravity by h(1 − cos ϕ).
     U = mc * g * h * (sympy.cos(phic) - 1)
     D = sympy.Integer(0)
-    pairs = []
+    forces = {}
     pieces = {}
     for k, x in ((0, l), (1, -l)):
         base = 3 + 6 * k
@@ -415,10 +461,10 @@ def lateral_car() -> Derivation:
         T += Tb
         U += Ub
         D += Db
-        pairs += pb
+        forces |= pb
         if k == 0:
             pieces = {"U": Ub, "D": Db}
-    Q = generalized_forces(pairs, q)
+    Q = sympy.Matrix([forces.get(c, 0) for c in q])
     M, C, K, GK, GC = _quadratic_matrices(T, U, D, Q, q, inputs)
     return Derivation(
         title="passenger car on two bogies (15 coordinates)",
@@ -442,5 +488,6 @@ def lateral_car() -> Derivation:
                 sympy.Eq(sympy.Symbol("U_1"), pieces["U"]),
             ),
             Step("dissipation of bogie 1's dampers", sympy.Eq(sympy.Symbol("D_1"), pieces["D"])),
+            *_equation_steps(M, C, K, GK, GC, q, inputs, range(7), _CAR_ROWS),
         ),
     )
