@@ -35,7 +35,7 @@ def _symbols(derivation) -> dict:
 
 
 def _behind(derivation, model) -> np.ndarray:
-    """s_j, m, read from the last step w_j(t) = u(t − s_j/V), for the model's parameters."""
+    """s_j, m, read from the last step w_j(t) = z_v(t − s_j/V), for the model's parameters."""
     equation = derivation.steps[-1].equation
     (V,) = {s for s in equation.rhs.free_symbols if str(s) == "V"}
     values = derivation.values(model)
@@ -163,4 +163,4 @@ def test_freight_rock_and_roll_delays_are_the_models():
     # left rail first at each axle, as the model's input_rails (+1 left, −1 right)
     names = [e.func.__name__ for e in freight_rock_and_roll().steps[-1].equation.rhs]
     rails = car.linear_system().input_rails
-    assert names == ["u_L" if r > 0 else "u_R" for r in rails]
+    assert names == ["z_L" if r > 0 else "z_R" for r in rails]

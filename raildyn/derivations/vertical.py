@@ -32,10 +32,11 @@ def _eq(name: str, value) -> sympy.Eq:
     return sympy.Eq(sympy.Symbol(name), value, evaluate=False)
 
 
-def _delays(w, behind, rails=("u",)) -> Step:
-    """The step w_j(t) = u(t − s_j/V): input j meets the track s_j behind the leading wheelset.
+def _delays(w, behind, rails=("z_v",)) -> Step:
+    """The step w_j(t) = z_v(t − s_j/V): input j meets the track s_j behind the leading wheelset.
 
-    ``rails`` names the profile of each input in turn (repeated): ("u_L", "u_R") for left and right.
+    ``rails`` names the profile of each input in turn (repeated): ("z_L", "z_R") for the left and
+    right rail, z_v for a vertical profile that both rails share (chapter 3's names).
     """
     V = sympy.Symbol("V", positive=True)
     profiles = [sympy.Function(rails[j % len(rails)]) for j in range(len(w))]
@@ -136,7 +137,7 @@ def vertical_car() -> Derivation:
 
     and Lagrange's equations give M q̈ + C q̇ + K q = G_K w + G_C ẇ (chapter 6's vertical car; the
     Manchester benchmark vehicle's layout, Iwnicki 1998). Wheelset j lies s_j = 0, 2b, 2l, 2l + 2b
-    behind the leading one, so w_j(t) = u(t − s_j/V) for a track profile u.
+    behind the leading one, so w_j(t) = z_v(t − s_j/V) for a vertical track profile z_v.
 
     Returns
     -------
@@ -302,6 +303,6 @@ def freight_rock_and_roll() -> Derivation:
             Step("potential energy of the nests and of the weight", _eq("U", U_springs + U_weight)),
             Step("Rayleigh's dissipation function", _eq("D", D)),
             # the left and right rail under axles 0, 2b, 2l, 2l + 2b behind the leading one
-            _delays(w, [s for s in (0, 2 * b, 2 * l, 2 * l + 2 * b) for _ in range(2)], ("u_L", "u_R")),
+            _delays(w, [s for s in (0, 2 * b, 2 * l, 2 * l + 2 * b) for _ in range(2)], ("z_L", "z_R")),
         ),
     )

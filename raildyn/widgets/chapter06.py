@@ -220,7 +220,7 @@ def _rock_controls():
         "car": widgets.Dropdown(options=list(FREIGHT_CARS), value="286K hopper (derived)", description="car"),
         "speed_kmh": slider("V (km/h)", 40.0, 20.0, 70.0, 5.0, fmt=".0f"),
         "friction_kn": slider("wedge friction (kN per nest)", 6.0, 2.0, 20.0, 2.0, fmt=".0f"),
-        "depth_mm": slider("joint dip δ (mm)", 20.0, 5.0, 30.0, 5.0, fmt=".0f"),
+        "depth_mm": slider("joint dip hⱼ (mm)", 20.0, 5.0, 30.0, 5.0, fmt=".0f"),
     }
 
 
