@@ -64,7 +64,7 @@ def _plan_controls():
     return {
         "radius": slider("radius R (m)", 600.0, 150.0, 3000.0, 10.0, fmt=".0f"),
         "speed_kmh": slider("speed V (km/h)", 71.0, 10.0, 160.0, 1.0, fmt=".0f"),
-        "cant_mm": slider("cant D (mm)", 100.0, 0.0, 150.0, 5.0, fmt=".0f"),
+        "cant_mm": slider("cant h_t (mm)", 100.0, 0.0, 150.0, 5.0, fmt=".0f"),
     }
 
 
@@ -90,7 +90,7 @@ def _plan_setup(live, status):
         R, V, D = float(v["radius"]), float(v["speed_kmh"]) / 3.6, 1e-3 * float(v["cant_mm"])
         deficiency = 1e3 * geometry.cant_deficiency(V, R, D)
         head = (
-            f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h, D = {1e3 * D:.0f} mm: "
+            f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h, h_t = {1e3 * D:.0f} mm: "
             f"cant deficiency {deficiency:.0f} mm"
         )
         state = equilibrium(R, V, D)
@@ -142,7 +142,7 @@ def curving_plan():
     flange is drawn in red. The status line gives the cant deficiency, the leading outer
     wheel's Y/Q and each wheelset's angle of attack, offset and contact; where the car has
     no equilibrium (it overturns, or no search finds one) it says why. Controls: radius R
-    (m), speed V (km/h) and cant D (mm).
+    (m), speed V (km/h) and cant h_t (mm).
 
     Returns
     -------
@@ -165,7 +165,7 @@ _REFERENCE_FRICTIONS = (0.0, 0.2, 0.4, 0.6)
 
 def _nadal_controls():
     return {
-        "flange_angle": slider("flange angle δ (deg)", 70.0, 50.0, 80.0, 0.5, fmt=".1f"),
+        "flange_angle": slider("flange angle ϑ_f (deg)", 70.0, 50.0, 80.0, 0.5, fmt=".1f"),
         "friction": slider("flange friction μ", 0.36, 0.0, 0.8, 0.01),
         "radius": slider("radius R (m)", 300.0, 150.0, 3000.0, 10.0, fmt=".0f"),
         "speed_kmh": slider("speed V (km/h)", 71.0, 10.0, 140.0, 1.0, fmt=".0f"),
@@ -243,12 +243,12 @@ NADAL_CHART = Recipe(
 def nadal_chart():
     """Nadal's limit against the flange angle, and the Manchester car's leading outer wheel's Y/Q on it.
 
-    The limit L/V = (tan δ − μ)/(1 + μ tan δ) (:func:`raildyn.curving.climb.nadal_limit`)
-    for the chosen friction, over faint curves for μ = 0 (tan δ), 0.2, 0.4 and 0.6; the
+    The limit Y/Q = (tan ϑ_f − μ)/(1 + μ tan ϑ_f) (:func:`raildyn.curving.climb.nadal_limit`)
+    for the chosen friction, over faint curves for μ = 0 (tan ϑ_f), 0.2, 0.4 and 0.6; the
     car's quotient comes from its quasi-static equilibrium
     (:func:`raildyn.curving.quasi_static.quasi_static_curving`, with the chosen flange angle) in a curve
     with 100 mm of cant, at the chosen radius and speed. The status line gives the verdict
-    and the leading axle's sum against Weinstock's limit. Controls: flange angle δ (deg),
+    and the leading axle's sum against Weinstock's limit. Controls: flange angle ϑ_f (deg),
     flange friction μ, radius R (m) and speed V (km/h).
 
     Returns
