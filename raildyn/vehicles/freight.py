@@ -70,7 +70,11 @@ class FreightCar(LinearModelBase):
     Every field is finite; masses, inertias, lengths and the nest stiffness are > 0,
     ``cg_height``, ``wedge_friction`` and ``equivalent_damping`` ≥ 0. The truck's
     semi-wheelbase is less than the semi truck spacing, and the roll stiffness
-    4 k b² − m g h is > 0 (else the body topples).
+    4 k d² − m g h is > 0, d the semi spring spacing (else the body topples). The linear
+    model's equations are derived from the energies in
+    :func:`raildyn.derivations.vertical.freight_rock_and_roll` (notebook 06, section 6.4); its
+    pitch turns about a transverse axis through the centre of gravity, so that the height h
+    enters the roll alone.
 
     Attributes
     ----------
@@ -84,12 +88,12 @@ class FreightCar(LinearModelBase):
     cg_height : float
         Centre of gravity above the spring plane, m (2.1 m above rail, nests 0.6 m).
     semi_truck_spacing : float
-        Half the distance between truck centres, m (40 ft 8 in centres, the value
+        l, half the distance between truck centres, m (40 ft 8 in centres, the value
         :mod:`raildyn.train.vehicles` takes for the loaded hopper).
     semi_truck_wheelbase : float
-        Half a truck's wheelbase, m (1.73 m wheelbase).
+        b, half a truck's wheelbase, m (1.73 m wheelbase).
     semi_spring_spacing : float
-        Half the lateral distance between the nests, m.
+        d, half the lateral distance between the nests (the side-frame spacing), m.
     nest_stiffness : float
         Per nest, N/m: a static deflection of 0.06 m under a quarter of the body.
     wedge_friction : float
@@ -132,7 +136,7 @@ class FreightCar(LinearModelBase):
 
     @property
     def roll_stiffness(self) -> float:
-        """4 k b² − m g h, N·m/rad."""
+        """4 k d² − m g h, N·m/rad (d the semi spring spacing, h the centre of gravity's height)."""
         b = self.semi_spring_spacing
         return 4 * self.nest_stiffness * b * b - self.body_mass * GRAVITY * self.cg_height
 
@@ -172,7 +176,7 @@ class FreightCar(LinearModelBase):
         return self.natural_frequencies().roll_hz * _checks.positive("rail_length", rail_length)
 
     def roll_input_factor(self, rail_length: float = _track.RAIL_LENGTH) -> float:
-        """|cos(2π s/L)|: the share of a cross-level wave of length L that the two trucks, 2s apart,
+        """|cos(2π l/L)|: the share of a cross-level wave of length L that the two trucks, 2l apart,
         pass on to the body's roll (their inputs cancel when 2s = L/2).
 
         Parameters

@@ -34,7 +34,8 @@ class Locomotive(LinearModelBase):
 
     Every mass, inertia, length and stiffness is finite and > 0, every damping finite and ≥ 0,
     and the axle spacing is less than the semi truck spacing (each truck's axles on its own
-    side of the body's centre).
+    side of the body's centre). The equations of motion are derived from the energies in
+    :func:`raildyn.derivations.vertical.vertical_locomotive` (notebook 06, section 6.5).
 
     Attributes
     ----------
@@ -45,9 +46,10 @@ class Locomotive(LinearModelBase):
     truck_mass, truck_pitch_inertia : float
         One truck frame, kg and kg·m².
     semi_truck_spacing : float
-        Half the distance between truck centres, m.
+        l, half the distance between truck centres, m.
     axle_spacing : float
-        Between neighbouring axles of a truck, m.
+        Between neighbouring axles of a truck, m: b, the truck's semi-wheelbase (the middle axle
+        stands under the truck's centre).
     primary_stiffness, primary_damping : float
         Per axle, N/m and N·s/m.
     secondary_stiffness, secondary_damping : float

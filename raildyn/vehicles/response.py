@@ -7,9 +7,10 @@ Every vehicle here is a linear model of the one protocol
 
 q the body coordinates, w the track inputs under its wheels (rail heights,
 alignment or cross-level, :data:`raildyn.linear_model.INPUT_KINDS`). Input j is
-the track met at distance d_j behind the leading axle: w_j(t) = u(t − τ_j) with
-τ_j = d_j/V. The speed V is given once, to each function here, and reaches both
-the delays and the creep damping of the lateral models.
+the track met at distance s_j behind the leading axle: w_j(t) = z(t − τ_j) with
+τ_j = s_j/V, z the track's irregularity under the leading axle. The speed V is
+given once, to each function here, and reaches both the delays and the creep
+damping of the lateral models.
 
 * :func:`track_frf` — H(ω) = Σ_j a_j H_j(ω) e^{−iωτ_j}: from the track met by the
   leading axle to the output;

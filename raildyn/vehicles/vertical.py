@@ -66,7 +66,7 @@ def body_on_two_trucks(
     """A body bouncing and pitching on two trucks, each on its axles: the vertical car and the locomotive.
 
     Coordinates (``labels``): body z, θ, then each truck's z, θ, front truck first. The
-    secondary joins each truck's centre to the body at x = ±s; the primary joins each
+    secondary joins each truck's centre to the body at x = ±l; the primary joins each
     axle, ``axle_offsets`` ahead of its truck's centre, to the rail height under it
     (rigid wheel–rail contact), leading axle first: input j is axle j.
 
@@ -79,11 +79,11 @@ def body_on_two_trucks(
     body_pitch_inertia, truck_pitch_inertia : float
         kg·m², > 0.
     semi_truck_spacing : float
-        s, m, > 0.
+        l, m, > 0.
     axle_offsets : sequence of float
         Axle positions ahead of the truck's centre, m, leading first: at least two,
         strictly decreasing (else the truck's pitch stands on nothing) and within
-        (−s, s) (each truck's axles on its own side of the body's centre).
+        (−l, l) (each truck's axles on its own side of the body's centre).
     primary_stiffness, primary_damping : float
         Per axle, N/m (> 0) and N·s/m (≥ 0).
     secondary_stiffness, secondary_damping : float
@@ -150,6 +150,8 @@ class VerticalCar(LinearModelBase):
 
     Every mass, inertia, length and stiffness is finite and > 0, every damping finite and ≥ 0,
     and the semi-wheelbase is less than the semi bogie spacing (the bogies' axles do not cross).
+    The equations of motion are derived from the energies in
+    :func:`raildyn.derivations.vertical.vertical_car` (notebook 06, section 6.1).
 
     Attributes
     ----------
