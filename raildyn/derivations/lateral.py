@@ -192,8 +192,8 @@ def _bogie_symbols(path: str) -> tuple:
         "b": ("b", "semi_wheelbase"),
         "ksy": ("k_sy", "secondary_lateral_stiffness"),
         "csy": ("c_sy", "secondary_lateral_damping"),
-        "kspsi": ("k_spsi", "secondary_yaw_stiffness"),
-        "cspsi": ("c_spsi", "secondary_yaw_damping"),
+        "kspsi": ("k_{s\\psi}", "secondary_yaw_stiffness"),
+        "cspsi": ("c_{s\\psi}", "secondary_yaw_damping"),
     }
     made, pairs = {}, []
     for key, (name, attribute) in fields.items():

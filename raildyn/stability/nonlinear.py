@@ -73,7 +73,7 @@ class NonlinearRun:
         ax : matplotlib Axes, optional
             Axes to draw on; new ones by default.
         flange_clearance : float, optional
-            m (> 0); marked at ±δ_f when given.
+            e, the flangeway clearance, m (> 0); marked at ±e when given.
 
         Returns
         -------

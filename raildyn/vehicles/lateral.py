@@ -135,21 +135,24 @@ class Bogie(_OnTheRails):
 
     The primary suspension of each wheelset is the one in its
     :class:`~raildyn.wheelset.Wheelset` (lateral and yaw stiffness and damping,
-    totals per wheelset).
+    totals per wheelset). The equations of motion, derived from the energies of the
+    springs and the creep forces by virtual work, are
+    :func:`raildyn.derivations.lateral.bogie` (notebook 07, section 7.1).
 
     Attributes
     ----------
     wheelset : Wheelset
     frame_mass : float
-        kg, > 0 (Iwnicki 1998: 2615 kg).
+        m_f, kg, > 0 (Iwnicki 1998: 2615 kg).
     frame_yaw_inertia : float
-        kg·m², > 0 (Iwnicki 1998: 3067 kg·m²).
+        I_f, kg·m², > 0 (Iwnicki 1998: 3067 kg·m²).
     semi_wheelbase : float
-        b, m, > 0 (Iwnicki 1998: 2.56 m wheelbase).
+        b, half the wheelbase, m, > 0 (Iwnicki 1998: 2.56 m wheelbase).
     secondary_lateral_stiffness, secondary_lateral_damping : float
-        Per bogie, N/m and N·s/m, ≥ 0 (Iwnicki 1998: 160 kN/m and 32 kN·s/m per side).
+        k_sy and c_sy, per bogie, N/m and N·s/m, ≥ 0 (Iwnicki 1998: 160 kN/m and 32 kN·s/m per
+        side).
     secondary_yaw_stiffness, secondary_yaw_damping : float
-        Per bogie, N·m/rad and N·m·s/rad, ≥ 0 (Iwnicki 1998: longitudinal secondary
+        k_sψ and c_sψ, per bogie, N·m/rad and N·m·s/rad, ≥ 0 (Iwnicki 1998: longitudinal secondary
         stiffness 160 kN/m per side at 1.0 m from the centre line; no yaw damper).
     """
 
@@ -249,28 +252,31 @@ class Bogie(_OnTheRails):
 class Car(_OnTheRails):
     """A passenger car: body (lateral, yaw, roll) on two bogies; the Manchester benchmark vehicle.
 
+    The equations of motion, derived from the energies of the springs, the body's weight and the
+    creep forces, are :func:`raildyn.derivations.lateral.lateral_car` (notebook 07, section 7.1).
+
     Attributes
     ----------
     bogie : Bogie
     body_mass : float
-        kg, > 0 (Iwnicki 1998: 32000 kg).
+        m, kg, > 0 (Iwnicki 1998: 32000 kg).
     body_yaw_inertia : float
-        kg·m², > 0 (Iwnicki 1998: 1.97 × 10⁶ kg·m²).
+        I_z, kg·m², > 0 (Iwnicki 1998: 1.97 × 10⁶ kg·m²).
     body_roll_inertia : float
-        kg·m², > 0 (Iwnicki 1998: 5.68 × 10⁴ kg·m²).
+        I_x, kg·m², > 0 (Iwnicki 1998: 5.68 × 10⁴ kg·m²).
     semi_bogie_spacing : float
-        Half the distance between bogie centres, m, greater than the bogie's semi-wheelbase
+        l, half the distance between bogie centres, m, greater than the bogie's semi-wheelbase
         (the bogies' wheelsets do not cross) (Iwnicki 1998: 19 m between centres).
     body_height : float
-        Height of the body's centre of gravity above the secondary lateral springs, m, ≥ 0
+        h, height of the body's centre of gravity above the secondary lateral springs, m, ≥ 0
         (1.8 m above rail, seat at 0.8275 m: 0.9725 m).
     roll_stiffness : float
-        Per bogie, N·m/rad: the vertical secondary springs, 430 kN/m per side at
+        k_ϕ, per bogie, N·m/rad: the vertical secondary springs, 430 kN/m per side at
         1.0 m (Iwnicki 1998), plus the anti-roll bar, 940 kN·m/rad. The two bogies'
         2 k_φ must exceed m g h, the roll moment of the body's weight h above the springs
         per radian; else the body topples.
     roll_damping : float
-        Per bogie, N·m·s/rad, ≥ 0: vertical secondary dampers, 20 kN·s/m per side at 1.0 m.
+        c_ϕ, per bogie, N·m·s/rad, ≥ 0: vertical secondary dampers, 20 kN·s/m per side at 1.0 m.
     """
 
     bogie: Bogie = field(default_factory=Bogie)

@@ -150,7 +150,7 @@ CRITICAL_CURVE = Recipe(
             "primary k_ψ (MN·m/rad)", _CAR.wheelset.yaw_stiffness / 1e6, 2.0, 120.0, 1.0, fmt=".0f"
         ),
         "secondary_yaw_stiffness": slider(
-            "secondary k_ψ2 (MN·m/rad)", _CAR.bogie.secondary_yaw_stiffness / 1e6, 0.0, 2.0, 0.02
+            "secondary k_sψ (MN·m/rad)", _CAR.bogie.secondary_yaw_stiffness / 1e6, 0.0, 2.0, 0.02
         ),
     },
     _critical_curve_setup,
@@ -164,7 +164,7 @@ def critical_curve():
     """Critical speed against conicity for the Manchester car and for its bogie alone.
 
     Controls: primary yaw stiffness k_ψ of each wheelset (MN·m/rad) and the
-    secondary yaw stiffness of each bogie (MN·m/rad). Speeds above 720 km/h
+    secondary yaw stiffness k_sψ of each bogie (MN·m/rad). Speeds above 720 km/h
     (no crossing below 200 m/s) are left blank. The curves are
     :meth:`raildyn.stability.linear.CriticalSpeedMap.plot_curves`, moved in place.
 
