@@ -71,15 +71,16 @@ def _contact(s: dict, y, psi, yd, psid, V, offset, path_yaw, turning, tilt):
     # Contact geometry of a cone on the rails: radii and angles follow the offset.
     r_L, r_R = r0 + lam * offset, r0 - lam * offset
     th_L, th_R = th0 + eps * offset / a, th0 - eps * offset / a
-    # The axle turns at Ω = V/r₀ (its small change with the motion is of second order in the slips).
+    # The axle turns at ω_y = V/r₀: the two longitudinal creep forces come out equal and opposite,
+    # so they put no torque about the axle and leave its speed unchanged to first order.
     Omega = V / r0
     yaw_rate = psid + turning
     # Slip velocity of the wheel's material at each contact, relative to the rail, in the wheelset's
-    # axes: forward V, less the yaw rate times the lever ±a, less the rolling Ω r.
+    # axes: forward V, less the yaw rate times the lever ±a, less the rolling ω_y r.
     v_xL = V - a * yaw_rate - Omega * r_L
     v_xR = V + a * yaw_rate - Omega * r_R
     v_y = yd - V * (psi - path_yaw)
-    # Spin: the angular velocity about each contact normal, ψ̇ cos ϑ ∓ Ω sin ϑ (small angles).
+    # Spin: the angular velocity about each contact normal, ψ̇ cos ϑ ∓ ω_y sin ϑ (small angles).
     w_L = yaw_rate - spin_share * Omega * (th_L - th0) - Omega * th0
     w_R = yaw_rate + spin_share * Omega * (th_R - th0) + Omega * th0
     g_xL, g_xR = sympy.expand(v_xL / V), sympy.expand(v_xR / V)
@@ -101,8 +102,8 @@ def _contact(s: dict, y, psi, yd, psid, V, offset, path_yaw, turning, tilt):
             Step("rolling radius of the right wheel", _eq("r_R", r_R)),
             Step("contact angle of the left wheel", _eq("vartheta_L", th_L)),
             Step("contact angle of the right wheel", _eq("vartheta_R", th_R)),
-            Step("longitudinal creepage, left wheel: (V − a ψ̇ − Ω r_L)/V", _eq("gamma_xL", g_xL)),
-            Step("longitudinal creepage, right wheel: (V + a ψ̇ − Ω r_R)/V", _eq("gamma_xR", g_xR)),
+            Step("longitudinal creepage, left wheel: (V − a ψ̇ − ω_y r_L)/V", _eq("gamma_xL", g_xL)),
+            Step("longitudinal creepage, right wheel: (V + a ψ̇ − ω_y r_R)/V", _eq("gamma_xR", g_xR)),
             Step("lateral creepage, both wheels", _eq("gamma_y", g_y)),
             Step(
                 "spin creepage, left wheel (s_spin = 1: with the contact-angle difference)",
@@ -228,7 +229,7 @@ def tangent_wheelset() -> Derivation:
             Step("generalized forces of the contact (y_t = z_c = 0), lateral and yaw", _eq("Q", linear_Q)),
             Step(
                 "left out, as raildyn.wheelset does: the spin of the contact-angle difference",
-                _eq("Delta Q", left_out),
+                _eq("Delta_Q", left_out),
             ),
             Step("kinetic energy", _eq("T", T)),
             Step("potential energy of the primary springs", _eq("U", U)),
