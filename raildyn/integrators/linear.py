@@ -165,7 +165,7 @@ def newmark_step(M, C, K, h, gamma, beta, alpha=0.0) -> Step:
 
 
 def wilson_step(M, C, K, h, theta) -> Step:
-    """Wilson-θ on (x, v, a): linear acceleration over τ = θΔt, equilibrium at t + τ {Bathe 1996, Tab 9.2}.
+    """Wilson-θ on (x, v, a): linear acceleration over τ = θ_W Δt, equilibrium at t + τ {Bathe 1996, Tab 9.2}.
 
     Parameters
     ----------
@@ -175,7 +175,7 @@ def wilson_step(M, C, K, h, theta) -> Step:
     h : float or ndarray, shape (k, 1, 1)
         Time step, s, > 0; an array runs k steps at once (for the analysis).
     theta : float
-        Wilson's θ (τ = θΔt), in [1, 3].
+        Wilson's θ_W (τ = θ_W Δt), in [1, 3].
 
     Returns
     -------
@@ -688,10 +688,10 @@ def hht_alpha(M, C, K, t, x0, v0, force=None, *, alpha=-0.05) -> IntegrationResu
 
 
 def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4) -> IntegrationResult:
-    """Wilson-θ {Wilson, Farhoomand & Bathe 1973}: unconditionally stable for θ ≥ 1.37 {Bathe 1996, §9.4}.
+    """Wilson-θ {Wilson, Farhoomand & Bathe 1973}: unconditionally stable for θ_W ≥ 1.37 {Bathe 1996, §9.4}.
 
-    The force at t + θΔt is extrapolated linearly from its samples at t and t + Δt;
-    θ = 1 is the linear acceleration method.
+    The force at t + θ_W Δt is extrapolated linearly from its samples at t and t + Δt;
+    θ_W = 1 is the linear acceleration method.
 
     Parameters
     ----------
@@ -706,7 +706,7 @@ def wilson(M, C, K, t, x0, v0, force=None, *, theta=1.4) -> IntegrationResult:
     force : None, array_like (n, m) or callable
         f(t) in N: sampled on ``t``, or ``force(t)`` returning n values.
     theta : float
-        θ in [1, 3].
+        θ_W, Wilson's stretch of the step, in [1, 3].
 
     Returns
     -------
