@@ -10,6 +10,7 @@ import json  # noqa: E402
 import os  # noqa: E402
 import subprocess  # noqa: E402
 import sys  # noqa: E402
+import tempfile  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import matplotlib.pyplot as plt  # noqa: E402
@@ -118,6 +119,30 @@ def write_references() -> None:
     REFERENCES.write_text(json.dumps({**kept, **_RECORDED}, indent=1, sort_keys=True))
 
 
+_BINDER: dict = {}
+
+
+def pytest_collection_finish(session):
+    """Start building the Binder environment in the background if its test is to run (it takes minutes)."""
+    if any(item.nodeid.startswith("tests/test_binder.py") for item in session.items):
+        work = Path(tempfile.mkdtemp(prefix="raildyn-binder-"))
+        log = (work / "log.txt").open("w")
+        script = Path(__file__).with_name("binder_env.py")
+        _BINDER.update(work=work, log=log, proc=subprocess.Popen(
+            [sys.executable, str(script), str(work)], stdout=log, stderr=subprocess.STDOUT
+        ))  # fmt: skip
+
+
+@pytest.fixture(scope="session")
+def binder_run():
+    """The background Binder run, waited for: (finished process, what it printed, its folder)."""
+    if not _BINDER:
+        pytest.skip("the Binder environment was not started (its test was not collected)")
+    _BINDER["proc"].wait(timeout=1800)
+    _BINDER["log"].close()
+    return _BINDER["proc"], (_BINDER["work"] / "log.txt").read_text(), _BINDER["work"]
+
+
 def pytest_collection_modifyitems(config, items):
     """Mark the reference checks (``pytest -m reference`` runs them alone) and build the book last."""
     for item in items:
@@ -129,3 +154,5 @@ def pytest_collection_modifyitems(config, items):
 
 def pytest_sessionfinish(session, exitstatus):
     write_references()
+    if _BINDER and _BINDER["proc"].poll() is None:  # a session stopped early leaves no install behind
+        _BINDER["proc"].kill()

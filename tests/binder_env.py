@@ -1,0 +1,53 @@
+"""Build an environment from the Binder configuration alone and run notebook 01 in it.
+
+A fresh virtual environment stands in for repo2docker's default one (Python with Jupyter's kernel and
+nbclient), ``binder/postBuild`` installs raildyn into it, and notebook 01 runs there from
+``notebooks/``, in a clone of the repository, so that nothing of this checkout's own environment leaks
+in. ``tests/conftest.py`` starts this script in the background as soon as the session has collected
+``tests/test_binder.py`` (the installation takes a minute or two, mostly waiting on the disk), and the
+test reads what it printed.
+
+Usage: ``python tests/binder_env.py WORKDIR`` → prints ``notebook ran`` and ``raildyn from <path>``.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+RUN = """
+import nbformat
+from nbclient import NotebookClient
+
+nb = nbformat.read("01_analysis_of_dynamic_systems.ipynb", as_version=4)
+NotebookClient(nb, timeout=300, kernel_name="python3", resources={"metadata": {"path": "."}}).execute()
+print("notebook ran:", sum(c.cell_type == "code" for c in nb.cells), "code cells")
+"""
+
+# What repo2docker's base environment brings: a Jupyter kernel and a way to run notebooks.
+BASE = ["ipykernel>=6.29,<8", "nbclient>=0.10,<0.11", "nbformat>=5.10,<6"]
+
+
+def main(work: Path) -> None:
+    repo, venv = work / "repo", work / "venv"
+    subprocess.run(["git", "clone", "-q", str(ROOT), str(repo)], check=True)
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    bin_ = venv / "bin"
+    env = {k: v for k, v in os.environ.items() if k not in ("VIRTUAL_ENV", "PYTHONPATH", "MPLCONFIGDIR")}
+    env["PATH"] = f"{bin_}{os.pathsep}{env['PATH']}"
+    env["RAILDYN_PROGRESS"] = "0"
+    subprocess.run([bin_ / "python", "-m", "pip", "install", "-q", *BASE], check=True, env=env)
+    subprocess.run(["bash", "binder/postBuild"], cwd=repo, check=True, env=env, stdout=subprocess.DEVNULL)
+    subprocess.run([bin_ / "python", "-c", RUN], cwd=repo / "notebooks", env=env, check=True)
+    subprocess.run(
+        [bin_ / "python", "-c", "import raildyn; print('raildyn from', raildyn.__file__)"],
+        cwd=work, env=env, check=True,
+    )  # fmt: skip
+
+
+if __name__ == "__main__":
+    main(Path(sys.argv[1]))
