@@ -1,21 +1,23 @@
 """Wheel climb (book chapter 8): Nadal's limit and Weinstock's axle-sum criterion.
 
-A flanging wheel pressed against the rail with a lateral force Y (L) under a vertical
-load Q (V) is held at its flange contact, inclined at the flange angle δ, by the normal
-force N and the friction T. Rolling with a positive angle of attack, the flange slides
-down the rail's gauge face, so the friction on the wheel acts up the flange face:
-Y = N sin δ − T cos δ and Q = N cos δ + T sin δ. With the friction saturated (T = μN)
-the largest quotient the contact can hold is Nadal's (1908); above it the wheel climbs:
+A flanging wheel pressed against the rail with a lateral force Y under a vertical load Q
+(the L and V of American practice) is held at its flange contact, inclined at the flange
+angle ϑ_f, by the normal force N and the friction μN. Rolling with a positive angle of
+attack, the flange slides down the rail's gauge face, so the friction on the wheel acts up
+the flange face: Y = N sin ϑ_f − μN cos ϑ_f and Q = N cos ϑ_f + μN sin ϑ_f, with the
+friction saturated. The largest quotient the contact can hold is Nadal's (1908); above it
+the wheel climbs:
 
-    L/V = (tan δ − μ) / (1 + μ tan δ),
+    Y/Q = (tan ϑ_f − μ) / (1 + μ tan ϑ_f),
 
-(Garg & Dukkipati 1984, ch. 8). Nadal's limit is conservative when the angle of attack is
-small and the friction at the flange is not saturated. Weinstock (1984) noticed that the
-other wheel of the axle carries a friction force that a wheel climb must overcome too,
-and proposed to compare the *sum* of the two wheels' |L/V| with Nadal's limit of the
-flanging wheel plus the friction coefficient of the other wheel:
+(Garg & Dukkipati 1984, ch. 8; derived in notebook 08). Nadal's limit is conservative when
+the angle of attack is small and the friction at the flange is not saturated. Weinstock
+(1984) noticed that the other wheel of the axle, sliding sideways on its tread, carries a
+saturated lateral creep force μ₂Q₂ that the flange must carry too, and proposed to compare
+the *sum* of the two wheels' |Y/Q| with Nadal's limit of the flanging wheel plus the friction
+coefficient of the other wheel:
 
-    |Y₁/Q₁| + |Y₂/Q₂| ≤ (tan δ − μ)/(1 + μ tan δ) + μ₂.
+    |Y₁/Q₁| + |Y₂/Q₂| ≤ (tan ϑ_f − μ)/(1 + μ tan ϑ_f) + μ₂.
 
 Angles in rad, forces in N; the quotients are ratios.
 """
@@ -64,15 +66,15 @@ def _result(value: np.ndarray, *inputs):
 
 
 def nadal_limit(flange_angle, friction):
-    """Nadal's limit of the flanging wheel's L/V (Y/Q) before it climbs the rail.
+    """Nadal's limit of the flanging wheel's Y/Q before it climbs the rail.
 
-    L/V = (tan δ − μ) / (1 + μ tan δ) (Nadal 1908; Garg & Dukkipati 1984, ch. 8): equal to
-    tan δ without friction, smaller as μ grows (negative once μ > tan δ).
+    Y/Q = (tan ϑ_f − μ) / (1 + μ tan ϑ_f) (Nadal 1908; Garg & Dukkipati 1984, ch. 8): equal to
+    tan ϑ_f without friction, smaller as μ grows (negative once μ > tan ϑ_f).
 
     Parameters
     ----------
     flange_angle : float or array_like
-        δ, the largest angle of the flange to the horizontal, rad, in (0, π/2)
+        ϑ_f, the largest angle of the flange to the horizontal, rad, in (0, π/2)
         (typically 60° to 75°).
     friction : float or array_like
         μ at the flange contact, in [0, :data:`MAXIMUM_FRICTION`]; broadcast against
@@ -81,7 +83,7 @@ def nadal_limit(flange_angle, friction):
     Returns
     -------
     float or ndarray
-        The limiting L/V (a float for single numbers).
+        The limiting Y/Q (a float for single numbers).
 
     Examples
     --------
@@ -98,15 +100,15 @@ def nadal_limit(flange_angle, friction):
 
 
 def weinstock_limit(flange_angle, friction, other_friction=None):
-    """Weinstock's limit of an axle's sum of |L/V|: Nadal's limit of the flanging wheel plus μ₂.
+    """Weinstock's limit of an axle's sum of |Y/Q|: Nadal's limit of the flanging wheel plus μ₂.
 
-    Σ|L/V| ≤ (tan δ − μ)/(1 + μ tan δ) + μ₂ (Weinstock 1984), with μ₂ the friction of the
+    Σ|Y/Q| ≤ (tan ϑ_f − μ)/(1 + μ tan ϑ_f) + μ₂ (Weinstock 1984), with μ₂ the friction of the
     axle's other (non-flanging) wheel on its rail head. Never below :func:`nadal_limit`.
 
     Parameters
     ----------
     flange_angle : float or array_like
-        δ, rad, in (0, π/2).
+        ϑ_f, rad, in (0, π/2).
     friction : float or array_like
         μ at the flange contact, in [0, :data:`MAXIMUM_FRICTION`].
     other_friction : float or array_like, optional
@@ -115,7 +117,7 @@ def weinstock_limit(flange_angle, friction, other_friction=None):
     Returns
     -------
     float or ndarray
-        The limiting axle sum Σ|L/V|.
+        The limiting axle sum Σ|Y/Q|.
 
     Examples
     --------
@@ -148,7 +150,7 @@ class WheelClimb:
     weinstock_limit : float
         :func:`weinstock_limit`: ``nadal_limit`` plus the other wheel's friction.
     flange_angle : float
-        δ, rad, in (0, π/2).
+        ϑ_f, rad, in (0, π/2).
     friction : float
         μ at the flange, in [0, :data:`MAXIMUM_FRICTION`].
     other_friction : float
@@ -179,7 +181,7 @@ class WheelClimb:
         return np.asarray(self.axle_sum) > self.weinstock_limit
 
     def plot(self, ax=None) -> dict:
-        """Draw the flanging wheel's |L/V| and the axle sum against their limits, sample by sample.
+        """Draw the flanging wheel's |Y/Q| and the axle sum against their limits, sample by sample.
 
         Parameters
         ----------
@@ -208,7 +210,7 @@ class WheelClimb:
                 self.weinstock_limit, ls="--", color=plots.COLORS[1], label="Weinstock's limit"
             )
             ax.set_xlabel("sample")
-            ax.set_ylabel("$L/V$")
+            ax.set_ylabel("$Y/Q$")
             ax.legend()
         return {"flange": f_line, "axle_sum": s_line, "nadal": nadal, "weinstock": weinstock}
 
@@ -229,7 +231,7 @@ def wheel_climb(lateral, vertical, flange_angle, friction, other_friction=None) 
         Q, the vertical load of each wheel, N (> 0: an unloaded wheel has no quotient),
         shaped like ``lateral``.
     flange_angle : float
-        δ, rad, in (0, π/2).
+        ϑ_f, rad, in (0, π/2).
     friction : float
         μ at the flange contact, in [0, :data:`MAXIMUM_FRICTION`].
     other_friction : float, optional
@@ -290,7 +292,7 @@ def plot_nadal_limit(ax=None, *, friction=(0.1, 0.3, 0.5), flange_angle=None) ->
     friction : sequence of float
         The friction coefficients μ, each in [0, :data:`MAXIMUM_FRICTION`] (1-D, not empty).
     flange_angle : array_like, optional
-        δ, rad, 1-D, strictly increasing, in (0, π/2); 50° to 80° by default (drawn in degrees).
+        ϑ_f, rad, 1-D, strictly increasing, in (0, π/2); 50° to 80° by default (drawn in degrees).
 
     Returns
     -------
@@ -320,7 +322,7 @@ def plot_nadal_limit(ax=None, *, friction=(0.1, 0.3, 0.5), flange_angle=None) ->
                 label=f"$\\mu$ = {m:g}",
             )
             lines[f"friction {m:g}"] = line
-        ax.set_xlabel("flange angle $\\delta$ (deg)")
-        ax.set_ylabel("Nadal's limit $L/V$")
+        ax.set_xlabel("flange angle $\\vartheta_f$ (deg)")
+        ax.set_ylabel("Nadal's limit $Y/Q$")
         ax.legend()
     return lines
