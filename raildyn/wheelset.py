@@ -288,11 +288,11 @@ class Wheelset(LinearModelBase):
         Kalker's longitudinal (N), lateral (N), lateral–spin (N·m) and spin
         (N·m²) creep coefficients of one wheel, each ≥ 0.
     contact_angle : float or None
-        δ₀, contact angle of the centred wheelset, rad, in [0, 0.5] (tread contact, not
-        the flange's; destabilising yaw gravitational stiffness −W a δ₀). None: λ, as for
+        ϑ₀, contact angle of the centred wheelset, rad, in [0, 0.5] (tread contact, not
+        the flange's; destabilising yaw gravitational stiffness −W a ϑ₀). None: λ, as for
         a cone on knife-edge rails.
     contact_angle_parameter : float or None
-        ε ≥ 0 with δ_L − δ_R = 2εy/a; lateral gravitational stiffness W ε / a.
+        ε ≥ 0 with ϑ_L − ϑ_R = 2εy/a; lateral gravitational stiffness W ε / a.
         None: λ, the value for a cone on knife-edge rails.
     lateral_stiffness, yaw_stiffness : float
         Primary suspension, N/m and N·m/rad (total for the wheelset), each ≥ 0.
@@ -434,10 +434,12 @@ def creep_terms(ws: Wheelset) -> CreepTerms:
     ch. 5; Wickens 2003, ch. 2):
 
     * lateral:  F_y = −2f₂₂(ẏ/V − ψ) − 2f₂₃ψ̇/V − (Wε/a) y
-    * yaw:      M_z = −2af₁₁(aψ̇/V + λy/r₀) + 2f₂₃(ẏ/V − ψ) − 2f₃₃ψ̇/V + W a δ₀ ψ
+    * yaw:      M_z = −2af₁₁(aψ̇/V + λy/r₀) + 2f₂₃(ẏ/V − ψ) − 2f₃₃ψ̇/V + W a ϑ₀ ψ
 
-    The small lateral spin force due to the contact-angle difference,
-    proportional to f₂₃ε/(a r₀), is left out.
+    The spin of the contact-angle difference is left out: a lateral force 2f₂₃εy/(a r₀) and a
+    yaw moment 2f₃₃εy/(a r₀), small beside the creep and suspension stiffnesses though not
+    beside W ε/a. :func:`raildyn.derivations.wheelset.tangent_wheelset` derives these terms
+    from the contact kinematics and shows what is left out.
 
     Parameters
     ----------
@@ -678,25 +680,25 @@ class WheelRailContact:
     friction : float
         Coefficient of friction μ (> 0); the creep force of a wheel saturates at μ W/2.
     flange_clearance : float
-        Flangeway clearance δ_f, m, in (0, 0.05]: the flange touches the rail beyond
-        |y| = δ_f (5 to 15 mm on standard-gauge track).
+        Flangeway clearance e, m, in (0, 0.05]: the flange touches the rail beyond
+        |y| = e (5 to 15 mm on standard-gauge track).
     flange_stiffness : float
         Lateral stiffness of the rail under flange contact k_f, N/m (≥ 0). Defaults
-        δ_f = 9.1 mm and k_f = 14.6 MN/m as in Cooperrider's truck model
+        e = 9.1 mm and k_f = 14.6 MN/m as in Cooperrider's truck model
         (Cooperrider 1972, as used by Jensen & True 1997).
     rolling_radius_difference : callable or None
         Δr(y) = r_L − r_R, m, vectorised over y: an array of y's shape, within ±0.1 m
         (twice a flange height is about 60 mm). None: the cone 2λy of the wheelset.
     contact_angle_difference : callable or None
-        δ_L(y) − δ_R(y), rad, vectorised over y, within ±π/2 (each contact angle lies in
+        ϑ_L(y) − ϑ_R(y), rad, vectorised over y, within ±π/2 (each contact angle lies in
         [0, π/2)). None: the linear 2εy/a of the wheelset.
     tread_angles : callable or None
-        [δ_L(y), δ_R(y)], the two tread contacts' angles, rad, vectorised: an array of shape
+        [ϑ_L(y), ϑ_R(y)], the two tread contacts' angles, rad, vectorised: an array of shape
         ``(2, *y.shape)``, each within ±π/2. They tilt each wheel's normal force in its lateral
         force Y (:func:`raildyn.curving.quasi_static.quasi_static_curving`); the dynamics need only their
-        difference, ``contact_angle_difference``. None: δ₀ ± εy/a of the wheelset (a cone).
+        difference, ``contact_angle_difference``. None: ϑ₀ ± εy/a of the wheelset (a cone).
 
-    Each callable is tried once, at y = −δ_f, 0 and δ_f, and what it returns checked.
+    Each callable is tried once, at y = −e, 0 and e, and what it returns checked.
     """
 
     friction: float = 0.3
@@ -738,8 +740,8 @@ def profile_contact(
     The rigid contact of chapter 4 (:func:`raildyn.contact.profiles.contact_geometry`, with
     the wheelset's roll) is followed outwards from the centre in steps of 0.25 mm until a
     contact angle passes 40°: there the contact jumps from the tread to the flange, and that
-    shift is the flangeway clearance δ_f. Inside it, the rolling-radius and contact-angle
-    differences Δr(y) and Δδ(y) and the two tread angles δ_L(y), δ_R(y) are tabulated and
+    shift is the flangeway clearance e. Inside it, the rolling-radius and contact-angle
+    differences Δr(y) and Δϑ(y) and the two tread angles ϑ_L(y), ϑ_R(y) are tabulated and
     interpolated linearly; beyond it the tread
     keeps its contact, its differences continued along their last slope, while the flange
     carries the rest as a spring of ``flange_stiffness``: a two-point contact, tread and
@@ -837,8 +839,8 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     """Lateral force (N) and yaw moment (N·m) of the rails on a wheelset, nonlinear; arrays broadcast.
 
     The creepages are those of :func:`raildyn.contact.creep.wheelset_creepages` with
-    r_L,R = r₀ ± Δr(y)/2 and no contact-angle spin: ξx = ∓(aψ̇/V + Δr/(2r₀)),
-    ξy = ẏ/V − ψ, spin ψ̇/V on the left/right wheel. Each wheel's longitudinal and
+    r_L,R = r₀ ± Δr(y)/2 and no contact-angle spin: γ_x = ∓(aψ̇/V + Δr/(2r₀)),
+    γ_y = ẏ/V − ψ, spin ψ̇/V on the left/right wheel. Each wheel's longitudinal and
     lateral linear force is reduced by :func:`raildyn.contact.creep.saturation_factor`
     at μ W/2;
     gravity acts through the contact-angle difference, and the flange as a
@@ -873,7 +875,7 @@ _MOTION = ("y", "psi", "ydot", "psidot")
 
 
 def _creep(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
-    """The left wheel's creepages ξx, ξy, the linear forces −f ξ and their saturation factor; Δδ(y).
+    """The left wheel's creepages γ_x, γ_y, the linear forces −f γ and their saturation factor; Δϑ(y).
 
     The right wheel's longitudinal creepage and force are opposite, its others the same.
     """
@@ -918,7 +920,7 @@ class WheelForces:
     flange : ndarray, shape (2, ...)
         Lateral force of the flange contact on each wheel, N (to the left; 0 off the flange).
     wear_number : ndarray, shape (2, ...)
-        Tγ = |T_x ξ_x| + |T_y ξ_y| of each wheel, N (J/m): the creep forces' work per metre
+        Tγ = |T_x γ_x| + |T_y γ_y| of each wheel, N (J/m): the creep forces' work per metre
         rolled, the wear index of Pearce & Sherratt (1991).
 
     All finite, of one shape (2, ...); the wear number ≥ 0.
@@ -944,8 +946,8 @@ def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, 
     """The rails' creep and flange forces on each wheel of a wheelset, nonlinear; arrays broadcast.
 
     The same forces as :func:`contact_forces`, wheel by wheel: each wheel's creep forces
-    −f ξ scaled by the saturation factor, and the flange spring on the wheel whose flange
-    touches (the left one for y > δ_f).
+    −f γ scaled by the saturation factor, and the flange spring on the wheel whose flange
+    touches (the left one for y > e).
 
     Parameters
     ----------
