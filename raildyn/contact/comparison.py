@@ -48,7 +48,7 @@ class LateralCreepCurves:
     Attributes
     ----------
     lateral : ndarray, shape (n,)
-        Lateral creepages η swept (dimensionless).
+        Lateral creepages γ_y swept (dimensionless).
     spin : float
         Spin creepage φ, 1/m (Carter and Johnson–Vermeulen take none).
     normal_load : float
@@ -60,7 +60,7 @@ class LateralCreepCurves:
     coefficients : CreepCoefficients
         Kalker's coefficients of the ellipse.
     kalker_linear, carter, johnson_vermeulen, shen_hedrick_elkins, polach, fastsim : ndarray, shape (n,)
-        F_y of each law, N (the force of the rail on the wheel: negative for η > 0).
+        F_y of each law, N (the force of the rail on the wheel: negative for γ_y > 0).
 
     Every number is finite, and the curves are 1-D, non-empty and of the shape of ``lateral``.
     """
@@ -110,7 +110,7 @@ class LateralCreepCurves:
         return -getattr(self, CREEP_LAWS[label]) / (self.friction * self.normal_load)
 
     def plot(self, ax=None, *, artists=None) -> dict:
-        """Draw −F_y/(μN) of every law against η in %; or move lines drawn before.
+        """Draw −F_y/(μN) of every law against γ_y in %; or move lines drawn before.
 
         Parameters
         ----------
@@ -147,7 +147,7 @@ class LateralCreepCurves:
                 )
             ax.axhline(1.0, color="0.5", lw=0.8)
             ax.set_ylim(0, 1.4)
-            ax.set_xlabel("lateral creepage η (%)")
+            ax.set_xlabel("lateral creepage γ_y (%)")
             ax.set_ylabel("lateral creep force −F_y/(μN)")
             ax.legend(loc="lower right", ncol=2)
         return lines
@@ -172,7 +172,7 @@ def lateral_creep_curves(
     Parameters
     ----------
     lateral : array_like, shape (n,)
-        η, dimensionless, >= 0, at least one.
+        γ_y, dimensionless, >= 0, at least one.
     normal_load : float
         N, N, > 0.
     friction : float

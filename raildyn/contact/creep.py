@@ -1,11 +1,11 @@
 """Creepages and the creep-force laws of chapter 4: Kalker linear, Carter, Johnson–Vermeulen, SHE, Polach.
 
-Sign convention (Kalker; Garg & Dukkipati ch. 4): the creepages ξ (longitudinal),
-η (lateral) and φ (spin, 1/m) are the rigid slip of the wheel over the rail
+Sign convention (Kalker; Garg & Dukkipati ch. 4): the creepages γ_x (longitudinal),
+γ_y (lateral) and φ (spin, 1/m) are the rigid slip of the wheel over the rail
 divided by the rolling speed; the forces are those of the rail on the wheel, so
 at small creepage
 
-    Fx = −f₁₁ ξ,   Fy = −f₂₂ η − f₂₃ φ,   Mz = f₂₃ η − f₃₃ φ.
+    Fx = −f₁₁ γ_x,   Fy = −f₂₂ γ_y − f₂₃ φ,   Mz = f₂₃ γ_y − f₃₃ φ.
 
 Every law here takes numbers or numpy arrays (broadcast together) and returns a
 :class:`CreepForces`.
@@ -266,12 +266,12 @@ def creep_coefficients(
 
 
 def kalker_linear(longitudinal, lateral, spin, coefficients: CreepCoefficients) -> CreepForces:
-    """Kalker's linear theory: Fx = −f₁₁ξ, Fy = −f₂₂η − f₂₃φ, Mz = f₂₃η − f₃₃φ.
+    """Kalker's linear theory: Fx = −f₁₁γ_x, Fy = −f₂₂γ_y − f₂₃φ, Mz = f₂₃γ_y − f₃₃φ.
 
     Parameters
     ----------
     longitudinal, lateral : float or array_like
-        Creepages ξ and η (dimensionless).
+        Creepages γ_x and γ_y (dimensionless).
     spin : float or array_like
         Spin creepage φ (1/m).
     coefficients : CreepCoefficients
@@ -314,7 +314,7 @@ def carter_coefficient(normal_load, wheel_radius, semi_axis):
     Returns
     -------
     float
-        dF/dξ at ξ = 0, N.
+        dF/dγ_x at γ_x = 0, N.
 
     Examples
     --------
@@ -330,21 +330,21 @@ def carter_coefficient(normal_load, wheel_radius, semi_axis):
 def carter(longitudinal, normal_load, friction, creep_coefficient):
     """Carter's two-dimensional theory: longitudinal creep force of a rolling cylinder.
 
-    With u = f ξ/(2μN) and f the initial slope (Carter's 2NR/a, or Kalker's
-    f₁₁ to compare shapes), F = −μN(2u − u|u|) while |u| < 1 and −μN sign(u)
-    beyond: the adhesion zone at the leading edge shrinks to nothing at |u| = 1
+    With χ = f γ_x/(2μN) and f the initial slope (Carter's 2NR/a_c, or Kalker's
+    f₁₁ to compare shapes), F = −μN(2χ − χ|χ|) while |χ| < 1 and −μN sign(χ)
+    beyond: the adhesion zone at the leading edge shrinks to nothing at |χ| = 1
     (Carter 1926; Garg & Dukkipati 1984, ch. 4; Johnson 1985, §8.2).
 
     Parameters
     ----------
     longitudinal : float or array_like
-        Creepage ξ.
+        Creepage γ_x.
     normal_load : float
         N (N), > 0.
     friction : float
         Coefficient of friction μ, > 0.
     creep_coefficient : float
-        Initial slope dF/dξ (N), > 0.
+        Initial slope dF/dγ_x (N), > 0.
 
     Returns
     -------
@@ -371,8 +371,8 @@ def carter(longitudinal, normal_load, friction, creep_coefficient):
 def johnson_vermeulen(longitudinal, lateral, normal_load, friction, coefficients: CreepCoefficients):
     """Johnson and Vermeulen's cubic law for an elliptical contact without spin.
 
-    With ψ = √((f₁₁ξ)² + (f₂₂η)²)/(3μN) the resultant is F = μN[1 − (1 − ψ)³]
-    for ψ < 1 and μN beyond, directed along the linear-theory force (Johnson &
+    With χ = √((f₁₁γ_x)² + (f₂₂γ_y)²)/(3μN) the resultant is F = μN[1 − (1 − χ)³]
+    for χ < 1 and μN beyond, directed along the linear-theory force (Johnson &
     Vermeulen 1964). The initial slopes are Kalker's f₁₁ and f₂₂ so the curve
     starts on the linear theory; Johnson and Vermeulen's own coefficients differ
     by up to about 20 % (Garg & Dukkipati 1984, ch. 4).
@@ -380,7 +380,7 @@ def johnson_vermeulen(longitudinal, lateral, normal_load, friction, coefficients
     Parameters
     ----------
     longitudinal, lateral : float or array_like
-        Creepages ξ, η (dimensionless).
+        Creepages γ_x, γ_y (dimensionless).
     normal_load : float
         N (N), > 0.
     friction : float
@@ -457,7 +457,7 @@ def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coef
     Parameters
     ----------
     longitudinal, lateral : float or array_like
-        Creepages ξ, η (dimensionless).
+        Creepages γ_x, γ_y (dimensionless).
     spin : float or array_like
         φ (1/m).
     normal_load : float
@@ -507,15 +507,16 @@ def polach(
 ) -> CreepForces:
     """Polach's fast creep-force method with spin (Polach 1999, 2000).
 
-    The creep force from ξ and η is
+    The creep force from γ_x and γ_y is
 
         F = (2Qμ/π) [k_A ε/(1 + (k_A ε)²) + arctan(k_S ε)],
-        ε = G π a b C_jj s_C /(4 Q μ),  C_jj = √((C₁₁ ξ/s)² + (C₂₂ η/s)²),
+        ε = G π a b C_jj s_C /(4 Q μ),  C_jj = √((C₁₁ γ_x/s)² + (C₂₂ γ_y/s)²),
 
-    shared as Fx = −F ξ/s_C, Fy = −F η/s_C, where s_C = √(ξ² + η_C²) and
-    η_C = η + φa when that is larger in magnitude than η (else η). Spin adds a
+    shared as Fx = −F γ_x/s_C, Fy = −F γ_y/s_C, where s_C = √(γ_x² + γ_yC²) and
+    γ_yC = γ_y + φa when that is larger in magnitude than γ_y (else γ_y); a, b are the semi-axes
+    a_c, b_c of the contact ellipse (Polach's notation). Spin adds a
     lateral force F_yS = (9/16) a Q μ K_M [1 + 6.3(1 − e^{−a/b})] φ/s_C with
-    K_M = |ε_M|(δ³/3 − δ²/2 + 1/6) − √((1 − δ²)³)/3, δ = (ε_M² − 1)/(ε_M² + 1),
+    K_M = |ε_M|(χ_M³/3 − χ_M²/2 + 1/6) − √((1 − χ_M²)³)/3, χ_M = (ε_M² − 1)/(ε_M² + 1),
     ε_M = (8/3) G b √(ab) C₂₃ s_C /(Q μ [1 + 6.3(1 − e^{−a/b})]).
     k_A = k_S = 1 is the original method; k_A, k_S < 1 reduce the initial slope
     as in Polach (2005).
@@ -523,7 +524,7 @@ def polach(
     Parameters
     ----------
     longitudinal, lateral : float or array_like
-        ξ, η.
+        γ_x, γ_y.
     spin : float or array_like
         φ (1/m).
     normal_load : float
@@ -556,7 +557,7 @@ def polach(
 
 
 def _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio):
-    """Checked (ξ, η, φ broadcast together, Q, a, b, G, Kalker's C) for Polach's method."""
+    """Checked (γ_x, γ_y, φ broadcast together, Q, a, b, G, Kalker's C) for Polach's method."""
     xi = _checks.array("longitudinal", longitudinal)
     eta = _checks.array("lateral", lateral)
     phi = _checks.array("spin", spin)
@@ -584,10 +585,10 @@ def _polach(xi, eta, phi, q, a, b, g_mod, c, mu, k_a, k_s) -> CreepForces:
     force = 2 * q * mu / np.pi * (k_a * eps / (1 + (k_a * eps) ** 2) + np.arctan(k_s * eps))
     safe_sc = np.where(s_c > 0, s_c, 1.0)
     k_m_factor = 1 + 6.3 * (1 - np.exp(-a / b))
-    # ε_M grows with the whole creepage s_C (not with |η_C| alone): then for small creepage
-    # the spin force is Kalker's −f₂₃φ whatever ξ is (tests/test_contact_creep.py).
+    # ε_M grows with the whole creepage s_C (not with |γ_yC| alone): then for small creepage
+    # the spin force is Kalker's −f₂₃φ whatever γ_x is (tests/test_contact_creep.py).
     eps_m = np.minimum(8.0 / 3.0 * g_mod * b * np.sqrt(a * b) * c.c23 * s_c / (q * mu * k_m_factor), _EPS_MAX)
-    # Polach's K_M = |ε_M|(δ³/3 − δ²/2 + 1/6) − √((1 − δ²)³)/3 with δ = (ε_M² − 1)/(ε_M² + 1) is, exactly,
+    # Polach's K_M = |ε_M|(χ³/3 − χ²/2 + 1/6) − √((1 − χ²)³)/3 with χ = (ε_M² − 1)/(ε_M² + 1) is, exactly,
     # −(2/3)|ε_M|/(1 + ε_M²)²: the same numbers without the cancellation that the first form suffers
     # at large ε_M (and its inf/inf once ε_M² overflows).
     k_m = -2.0 / 3.0 * eps_m / (1 + eps_m**2) / (1 + eps_m**2)
@@ -678,14 +679,14 @@ def polach_adhesion(
     """Polach's (2005) creep forces near the adhesion limit: friction falling with slip speed.
 
     As :func:`polach`, with ``μ = conditions.friction(w)`` at the slip speed
-    ``w = V √(ξ² + η²)`` and the reduction factors of ``conditions``. Beyond the
+    ``w = V √(γ_x² + γ_y²)`` and the reduction factors of ``conditions``. Beyond the
     adhesion peak the force falls as the creepage grows, the behaviour that wheel-slip
     control of a locomotive has to live with.
 
     Parameters
     ----------
     longitudinal, lateral, spin : float or array_like
-        ξ, η, φ (1/m).
+        γ_x, γ_y, φ (1/m).
     normal_load : float
         Q (N), > 0.
     speed : float
@@ -725,9 +726,9 @@ class WheelsetCreepages:
     Attributes
     ----------
     longitudinal : ndarray, shape (2, ...)
-        ξ at the left and right contacts.
+        γ_x at the left and right contacts.
     lateral : ndarray, shape (2, ...)
-        η (the same at both wheels in this kinematic form).
+        γ_y (the same at both wheels in this kinematic form).
     spin : ndarray, shape (2, ...)
         φ (1/m).
 
@@ -778,12 +779,12 @@ def wheelset_creepages(
 
     The wheelset runs at ``speed`` V with the angular speed V/r₀ of its nominal
     rolling radius; y is positive to the left, the yaw ψ positive anticlockwise
-    seen from above, the contact angles δ positive when the contact moves
-    towards the flange. Then, with l the half distance between the contacts,
+    seen from above, the contact angles ϑ positive when the contact moves
+    towards the flange. Then, with a the half distance between the contacts,
 
-        ξ_L = (r₀ − r_L)/r₀ − l ψ̇/V,        ξ_R = (r₀ − r_R)/r₀ + l ψ̇/V,
-        η   = ẏ/V − ψ,
-        φ_L = ψ̇/V − sin δ_L / r_L,          φ_R = ψ̇/V + sin δ_R / r_R.
+        γ_x,L = (r₀ − r_L)/r₀ − a ψ̇/V,      γ_x,R = (r₀ − r_R)/r₀ + a ψ̇/V,
+        γ_y   = ẏ/V − ψ,
+        φ_L = ψ̇/V − sin ϑ_L / r_L,          φ_R = ψ̇/V + sin ϑ_R / r_R.
 
     Parameters
     ----------
@@ -796,9 +797,9 @@ def wheelset_creepages(
     nominal_radius : float
         r₀ (m), > 0.
     half_gauge : float
-        l (m), half the lateral distance between the contact points, > 0.
+        a (m), half the lateral distance between the contact points, > 0.
     contact_angle_left, contact_angle_right : float or array_like
-        δ_L, δ_R (rad).
+        ϑ_L, ϑ_R (rad).
     check : bool
         Check the input and the result (default). A caller that has checked it already, such as
         the right-hand side of :class:`raildyn.wheelset.NonlinearLateral` evaluated
@@ -807,7 +808,7 @@ def wheelset_creepages(
     Returns
     -------
     WheelsetCreepages
-        ξ, η, φ at the left (index 0) and right (index 1) contacts.
+        γ_x, γ_y, φ at the left (index 0) and right (index 1) contacts.
 
     Examples
     --------
@@ -837,7 +838,7 @@ def wheelset_creepages(
 
 
 def _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r):
-    """ξ, η, φ of :func:`wheelset_creepages`, each of shape (2, ...), from checked arrays."""
+    """γ_x, γ_y, φ of :func:`wheelset_creepages`, each of shape (2, ...), from checked arrays."""
     yaw, spin = l_half * psi_dot / v, psi_dot / v
     parts = (
         (r0 - r_l) / r0 - yaw,

@@ -9,7 +9,7 @@ point slides (Kalker 1982). With one flexibility per creepage,
 
     L₁ = 8a/(3C₁₁G),   L₂ = 8a/(3C₂₂G),   L₃ = πa√(a/b)/(4C₂₃G),
 
-the total forces at small creepage equal Kalker's linear theory for ξ, η and φ.
+the total forces at small creepage equal Kalker's linear theory for γ_x, γ_y and φ.
 
 This implementation marches all strips of all contact states together: a
 Python loop over the cells of one strip (``n_x`` steps), numpy over everything
@@ -253,9 +253,9 @@ _SLIDING = 1e12  # creepage, in units of the one of full sliding, beyond which c
 
 
 def _within_sliding(xi, eta, phi, a, b, l1, l2, l3, bound):
-    """ξ, η, φ scaled down together (direction kept) to at most 1e12 times the size of full sliding.
+    """γ_x, γ_y, φ scaled down together (direction kept) to at most 1e12 times the size of full sliding.
 
-    The rigid-slip traction grows over the patch by |ξ|a/L₁, |η|a/L₂ and |φ|max(a, b)a/L₃; past
+    The rigid-slip traction grows over the patch by |γ_x|a_c/L₁, |γ_y|a_c/L₂ and |φ|max(a_c, b_c)a_c/L₃; past
     ``bound`` (μp₀) every cell slides along the rigid slip, so the forces depend on the creepages'
     ratios only and the scaling changes them by ~1/_SLIDING, while no traction rate can overflow.
     """
@@ -292,7 +292,7 @@ def fastsim(
     Parameters
     ----------
     longitudinal, lateral : float or array_like
-        Creepages ξ, η (dimensionless).
+        Creepages γ_x, γ_y (dimensionless).
     spin : float or array_like
         Spin creepage φ (1/m).
     normal_load : float or array_like
@@ -362,7 +362,7 @@ def fastsim(
         limit = mu * p0
     xi, eta, phi = _within_sliding(xi, eta, phi, a, b, l1, l2, l3, limit)
     bound_scale = limit[e]
-    # Traction rates of the adhesion solution: ∂p_x/∂x = ξ/L₁ − φy/L₃, ∂p_y/∂x = η/L₂ + φx/L₃.
+    # Traction rates of the adhesion solution: ∂p_x/∂x = γ_x/L₁ − φy/L₃, ∂p_y/∂x = γ_y/L₂ + φx/L₃.
     rate_x = (xi / l1)[e] - (phi / l3)[e] * y
     rate_y = (eta / l2)[e]
     spin_y = (phi / l3)[e]
@@ -436,7 +436,7 @@ def fastsim_reference(
     Parameters
     ----------
     longitudinal, lateral : float
-        ξ, η.
+        γ_x, γ_y.
     spin : float
         φ (1/m).
     normal_load : float

@@ -28,13 +28,13 @@ _BISECTION_STEPS = 60  # halves a bracket of width 15 in log(b/a) to ~1e-17: bel
 
 
 def _ratio_from_cos_theta(cos_theta: np.ndarray) -> np.ndarray:
-    """Axis ratio k = b/a ≤ 1 of the ellipse whose curvature angle has the given cos θ.
+    """Axis ratio k = b/a ≤ 1 of the ellipse whose curvature angle has the given cos θ_H.
 
-    Solves ``(B−A)/(B+A) = [(1+k²)E(e) − 2k²K(e)] / (e² E(e))`` with e² = 1 − k²
-    (Johnson 1985, eqs. 4.39) by bisection on log k, vectorized over θ.
+    Solves ``(B−A)/(B+A) = [(1+k²)E(e_c) − 2k²K(e_c)] / (e_c² E(e_c))`` with e_c² = 1 − k²
+    (Johnson 1985, eqs. 4.39) by bisection on log k, vectorized over θ_H.
     """
-    lo = np.full(cos_theta.shape, -15.0)  # log k = −15 (a/b ≈ 3e6): cos θ = 1 − 1e-12
-    hi = np.zeros(cos_theta.shape)  # log k = 0: circle, cos θ = 0
+    lo = np.full(cos_theta.shape, -15.0)  # log k = −15 (a/b ≈ 3e6): cos θ_H = 1 − 1e-12
+    hi = np.zeros(cos_theta.shape)  # log k = 0: circle, cos θ_H = 0
     for _ in range(_BISECTION_STEPS):
         mid = 0.5 * (lo + hi)
         k2 = np.exp(2 * mid)
@@ -55,7 +55,7 @@ def _ratio_from_cos_theta(cos_theta: np.ndarray) -> np.ndarray:
 def _shape_factors(k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Hertz's m and n for the axis ratio k = b/a (Johnson 1985, eq. 4.36 rearranged).
 
-    m³ = 2E(e)/(π k²), n = k m, with e² = 1 − k².
+    m³ = 2E(e_c)/(π k²), n = k m, with e_c² = 1 − k².
     """
     m3 = 2.0 * special.ellipe(1.0 - k**2) / (np.pi * k**2)
     m = np.cbrt(m3)
@@ -64,12 +64,12 @@ def _shape_factors(k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass(frozen=True)
 class HertzCoefficients:
-    """Hertz's coefficients m and n (dimensionless) for an angle θ.
+    """Hertz's coefficients m and n (dimensionless) for an angle θ_H.
 
     Attributes
     ----------
     theta : float or ndarray
-        θ, rad, cos θ = |B − A|/(A + B).
+        θ_H, rad, cos θ_H = |B − A|/(A + B).
     m : float or ndarray
         Coefficient of the semi-axis along the direction of smaller relative curvature.
     n : float or ndarray
@@ -85,19 +85,19 @@ class HertzCoefficients:
 
 
 def hertz_coefficients(theta) -> HertzCoefficients:
-    """Hertz's coefficients m and n for the angle θ with cos θ = |B − A|/(A + B).
+    """Hertz's coefficients m and n for the angle θ_H with cos θ_H = |B − A|/(A + B).
 
     Parameters
     ----------
     theta : float or array_like
-        Angle θ in radians, in (0, π/2]. θ = π/2 is a circular contact (m = n = 1).
+        Angle θ_H in radians, in (0, π/2]. θ_H = π/2 is a circular contact (m = n = 1).
 
     Returns
     -------
     HertzCoefficients
-        ``m`` and ``n`` (floats for a scalar θ): the semi-axes are ``m c`` (along
-        the direction of smaller relative curvature) and ``n c``, with
-        ``c = ∛(3 N (1−ν²) / (2 E (A+B)))`` for two bodies of the same material
+        ``m`` and ``n`` (floats for a scalar θ_H): the semi-axes are ``m c_H`` (along
+        the direction of smaller relative curvature) and ``n c_H``, with
+        ``c_H = ∛(3 N (1−ν²) / (2 E (A+B)))`` for two bodies of the same material
         (book ch. 4; Timoshenko & Goodier 1970 §140).
 
     Examples
@@ -123,19 +123,19 @@ class HertzContact:
     Attributes
     ----------
     a : float
-        Semi-axis in the rolling direction (m).
+        a_c, semi-axis in the rolling direction (m).
     b : float
-        Semi-axis across the rail (m).
+        b_c, semi-axis across the rail (m).
     peak_pressure : float
-        p₀ = 3N/(2πab) at the centre of the ellipse (Pa).
+        p₀ = 3N/(2πa_c b_c) at the centre of the ellipse (Pa).
     approach : float
-        Mutual approach δ of distant points of the two bodies (m).
+        Mutual approach u_N of distant points of the two bodies (m).
     stiffness : float
-        Linearized normal stiffness dN/dδ = 3N/(2δ) at this load (N/m).
+        Linearized normal stiffness dN/du_N = 3N/(2u_N) at this load (N/m).
     theta : float
-        Hertz's angle θ (rad), cos θ = |B − A|/(A + B).
+        Hertz's auxiliary angle θ_H (rad), cos θ_H_H = |B − A|/(A + B).
     m, n : float
-        Hertz's coefficients for θ.
+        Hertz's coefficients for θ_H.
     curvature_sum : float
         A + B (1/m).
     normal_load : float
@@ -240,10 +240,10 @@ def hertz_contact(
     Notes
     -----
     With A = ½(1/R₁ + 1/R₂), B = ½(1/R₁′ + 1/R₂′) (book ch. 4) and two bodies of
-    the same material, c = ∛(3N(1−ν²)/(2E(A+B))); the semi-axis along the
-    direction of smaller curvature is m c and the other n c. The peak pressure
-    is p₀ = 3N/(2πab) and the approach δ = 2 K(e) p₀ b (1−ν²)/E with b the
-    smaller semi-axis (Johnson 1985, eq. 4.38).
+    the same material, c_H = ∛(3N(1−ν²)/(2E(A+B))); the semi-axis along the
+    direction of smaller curvature is m c_H and the other n c_H. The peak pressure
+    is p₀ = 3N/(2πa_c b_c) and the approach u_N = 2 K(e_c) p₀ b_min (1−ν²)/E with b_min
+    the smaller semi-axis and e_c the eccentricity (Johnson 1985, eq. 4.38; Hertz 1882).
 
     Examples
     --------

@@ -332,7 +332,7 @@ class ContactGeometry:
     rolling_radius : ndarray, shape (2, n)
         r_L, r_R (m).
     contact_angle : ndarray, shape (2, n)
-        δ_L, δ_R (rad) in the track frame, positive when the contact normal leans towards the
+        ϑ_L, ϑ_R (rad) in the track frame, positive when the contact normal leans towards the
         track centre.
     roll : ndarray, shape (n,)
         Roll angle φ of the wheelset (rad), positive when the left wheel rises; zeros when the
@@ -370,7 +370,7 @@ class ContactGeometry:
 
     @property
     def contact_angle_difference(self) -> np.ndarray:
-        """δ_L − δ_R (rad)."""
+        """ϑ_L − ϑ_R (rad)."""
         return self.contact_angle[0] - self.contact_angle[1]
 
     def equivalent_conicity(self, amplitudes, *, samples: int = 256) -> np.ndarray:
@@ -434,7 +434,7 @@ class ContactGeometry:
         )  # fmt: skip
 
     def plot_contact_angle(self, ax=None, *, label=None, color=None, artists=None) -> dict:
-        """Draw the left wheel's contact angle δ_L in degrees against the shift y in mm.
+        """Draw the left wheel's contact angle ϑ_L in degrees against the shift y in mm.
 
         Parameters
         ----------
@@ -454,7 +454,7 @@ class ContactGeometry:
         """
         return self._line(
             ax, artists, "contact_angle", 1e3 * self.shift, np.degrees(self.contact_angle[0]),
-            label, color, "lateral shift y (mm)", "left contact angle δ_L (deg)",
+            label, color, "lateral shift y (mm)", "left contact angle ϑ_L (deg)",
         )  # fmt: skip
 
     def plot_equivalent_conicity(self, amplitudes, ax=None, *, label=None, color=None, artists=None) -> dict:
@@ -653,7 +653,7 @@ def rolling_radius_difference(wheel: WheelProfile, rail: RailProfile, shifts, **
 
 
 def contact_angles(wheel: WheelProfile, rail: RailProfile, shifts, **kwargs) -> np.ndarray:
-    """Contact angles δ_L, δ_R for each lateral shift y.
+    """Contact angles ϑ_L, ϑ_R for each lateral shift y.
 
     Parameters
     ----------
@@ -669,7 +669,7 @@ def contact_angles(wheel: WheelProfile, rail: RailProfile, shifts, **kwargs) -> 
     Returns
     -------
     ndarray, shape (2, n)
-        δ_L, δ_R, rad.
+        ϑ_L, ϑ_R, rad.
     """
     return contact_geometry(wheel, rail, shifts, **kwargs).contact_angle
 
