@@ -1,0 +1,229 @@
+"""Chapter 7's freight truck and locomotive derived (raildyn.derivations.trucks), held to the numeric models.
+
+Each derivation is held to its model's ``matrices(V)`` over random parameter sets (hypothesis: every
+parameter scaled by a factor in [0.3, 3]) at three speeds, to round-off (tests/derivation_helpers.py says
+why 1e-12 of each matrix's largest entry). One exception, found by these tests: the three-piece truck's
+friction dampers. The derivation gives them exactly, c = 4F/(π ω X) from the energy 4 F X per cycle; the
+model computes the energy with :func:`raildyn.vehicles.freight.wedge_energy_per_cycle`, the midpoint rule
+on n = 20 000 points of F |cos φ|, whose kinks at φ = π/2 and 3π/2 leave the error h²/24 = 4.1e-9 (h = 2π/n)
+of the energy, not round-off. The damping matrix of a truck with friction is therefore held to 1e-8 of its
+largest entry (QUADRATURE), and the same truck without friction to round-off.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import sympy
+from derivation_helpers import RELATIVE, assert_derived, system_matrices
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+
+from raildyn.constants import GRAVITY
+from raildyn.derivations.trucks import (
+    lateral_freight_car,
+    lateral_locomotive,
+    three_axle_truck,
+    three_piece_truck,
+)
+from raildyn.vehicles.locomotive_lateral import LATERAL_LOCOMOTIVE, ThreeAxleTruck
+from raildyn.vehicles.three_piece import EMPTY_FREIGHT_CAR, LOADED_FREIGHT_CAR, ThreePieceTruck
+
+QUADRATURE = 1e-8  # see the module docstring: 4.1e-9 of the energy per cycle, with a margin
+SPEEDS = (3.0, 25.0, 120.0)  # m/s: the creep damping C₁/V from large to small
+
+WHEELSET = (
+    "mass", "yaw_inertia", "rolling_radius", "half_gauge", "conicity", "axle_load", "f11", "f22", "f23",
+    "f33", "contact_angle", "contact_angle_parameter", "lateral_stiffness", "yaw_stiffness",
+    "lateral_damping", "yaw_damping",
+)  # fmt: skip
+THREE_PIECE = (
+    "side_frame_mass", "side_frame_yaw_inertia", "bolster_yaw_inertia", "semi_wheelbase",
+    "side_frame_spacing", "warp_stiffness", "nest_shear_stiffness", "lateral_friction", "warp_friction",
+    "centre_plate_friction", "reference_frequency", "reference_amplitude", "reference_angle",
+)  # fmt: skip
+THREE_AXLE = (
+    "frame_mass", "frame_yaw_inertia", "motor_mass", "axle_spacing", "middle_lateral_stiffness",
+    "middle_lateral_damping", "secondary_lateral_stiffness", "secondary_lateral_damping",
+    "secondary_yaw_stiffness", "secondary_yaw_damping",
+)  # fmt: skip
+BODY = (
+    "body_mass", "body_yaw_inertia", "body_roll_inertia", "semi_truck_spacing", "body_height",
+    "roll_stiffness", "roll_damping",
+)  # fmt: skip
+FRICTION = ("lateral_friction", "warp_friction", "centre_plate_friction")
+
+# The defaults leave some dampers at 0, which no factor would move: start them from a value.
+FREIGHT_TRUCK = ThreePieceTruck().replace(lateral_damping=5.0e3, yaw_damping=2.0e3)
+LOCO_TRUCK = ThreeAxleTruck().replace(secondary_yaw_damping=50.0e3)
+
+
+def _value(model, name):
+    """A field of the model, of its truck or of its wheelset."""
+    for holder in (model, getattr(model, "truck", None), getattr(model, "wheelset", None)):
+        if holder is not None and name in type(holder).__dataclass_fields__:
+            return getattr(holder, name)
+    raise AttributeError(name)
+
+
+def _scaled(model, changes: dict):
+    """The model with each named field (its own, its truck's or its wheelset's) times its factor; None if
+    the changes make it invalid (a body that topples, trucks whose wheelsets cross)."""
+    try:
+        return model.replace(**{n: _value(model, n) * f for n, f in changes.items()})
+    except ValueError:
+        return None
+
+
+def _factors(names):
+    return st.fixed_dictionaries({n: st.floats(0.3, 3.0) for n in names})
+
+
+def _assert_matches(derivation, model, damping_tolerance=RELATIVE):
+    """The derived matrices equal the model's at every speed (C to ``damping_tolerance`` of its largest)."""
+    for V in SPEEDS:
+        matrices = system_matrices(model, V)
+        if damping_tolerance == RELATIVE:
+            assert_derived(derivation, matrices, model, V)
+            continue
+        derived = derivation.numeric(model, V)
+        for name, mine, theirs in zip(("M", "C", "K", "GK", "GC"), derived, matrices, strict=True):
+            scale = max(np.abs(theirs).max(initial=0.0), 1e-300)
+            tol = damping_tolerance if name == "C" else RELATIVE
+            np.testing.assert_allclose(mine, theirs, rtol=0.0, atol=tol * scale, err_msg=f"{name} at V = {V}")
+
+
+def _entry(derivation, matrix, row, column):
+    """An entry of a derived matrix, by the names of the coordinates (and inputs) it couples."""
+    names = derivation.labels
+    inputs = tuple(str(u.func) for u in derivation.inputs)
+    j = names.index(column) if column in names else inputs.index(column)
+    return getattr(derivation, matrix)[names.index(row), j]
+
+
+def _symbols(derivation):
+    return {str(s): s for s, _ in derivation.parameters} | {"V": derivation.speed}
+
+
+# ---------------------------------------------------------------------------------------------- three-piece
+
+
+@settings(max_examples=25, deadline=None)
+@given(changes=_factors(WHEELSET + THREE_PIECE))
+def test_three_piece_truck_matches_the_model(changes):
+    truck = _scaled(FREIGHT_TRUCK, changes)
+    assume(truck is not None)
+    _assert_matches(three_piece_truck(), truck, QUADRATURE)
+
+
+@settings(max_examples=15, deadline=None)
+@given(changes=_factors(WHEELSET + tuple(n for n in THREE_PIECE if n not in FRICTION)))
+def test_three_piece_truck_without_friction_matches_to_round_off(changes):
+    truck = _scaled(FREIGHT_TRUCK.replace(**dict.fromkeys(FRICTION, 0.0)), changes)
+    assume(truck is not None)
+    _assert_matches(three_piece_truck(), truck)
+
+
+def test_three_piece_truck_by_hand():
+    d = three_piece_truck()
+    s = _symbols(d)
+    # The side frames slide ±d ψ_b as the bolster yaws: their mass at d adds to its inertia.
+    assert _entry(d, "M", "psi_b", "psi_b") == s["I_b"] + s["m_f"] * s["d"] ** 2
+    # Wheelset creep: lateral force −2f₂₂(ẏ/V − ψ), yaw moment −2af₁₁λy/r₀ and the gravitational W a ϑ₀ ψ.
+    assert _entry(d, "K", "y_1", "psi_1") == -2 * s["f_11".replace("11", "22")]
+    assert (
+        sympy.simplify(_entry(d, "K", "psi_1", "y_1") - 2 * s["a"] * s["f_11"] * s["lambda"] / s["r_0"]) == 0
+    )
+    assert (
+        sympy.simplify(
+            _entry(d, "K", "psi_1", "psi_1")
+            - (s[r"k_\psi"] + 2 * s["f_23"] - s["W"] * s["a"] * s[r"\vartheta_0"])
+        )
+        == 0
+    )
+    # The nests' lateral wedges as the damper 4F/(π ω X), beside the two wheelsets' pendulum dampers.
+    expected = 2 * s["c_y"] + 4 * s["F_l"] / (sympy.pi * s["omega"] * s["X"])
+    assert sympy.simplify(_entry(d, "C", "y_f", "y_f") - expected) == 0
+    # The equivalent damper, derived as a step from the energy per cycle.
+    step = next(st for st in d.steps if "equivalent damper" in st.caption)
+    F, omega, X = sympy.symbols(r"F \omega X", positive=True)
+    assert sympy.simplify(step.equation.rhs - 4 * F / (sympy.pi * omega * X)) == 0
+
+
+# ---------------------------------------------------------------------------------------------- freight car
+
+
+@pytest.mark.parametrize("base", [LOADED_FREIGHT_CAR, EMPTY_FREIGHT_CAR], ids=["loaded", "empty"])
+@settings(max_examples=12, deadline=None)
+@given(changes=_factors(BODY + WHEELSET + THREE_PIECE))
+def test_freight_car_matches_the_model(base, changes):
+    car = _scaled(base.replace(lateral_damping=5.0e3, yaw_damping=2.0e3), changes)
+    assume(car is not None)
+    _assert_matches(lateral_freight_car(), car, QUADRATURE)
+
+
+@settings(max_examples=8, deadline=None)
+@given(changes=_factors(BODY + WHEELSET))
+def test_freight_car_without_friction_matches_to_round_off(changes):
+    car = _scaled(LOADED_FREIGHT_CAR.replace(**dict.fromkeys(FRICTION, 0.0)), changes)
+    assume(car is not None)
+    _assert_matches(lateral_freight_car(), car)
+
+
+def test_freight_car_roll_by_hand():
+    d = lateral_freight_car()
+    s = _symbols(d)
+    # Roll: two trucks' nests in roll, less the weight h above them, plus the nests' shear at h (each truck).
+    expected = 2 * s[r"k_\phi"] - s["m"] * s["g"] * s["h"] + 2 * s["k_s"] * s["h"] ** 2
+    assert sympy.simplify(_entry(d, "K", "phi", "phi") - expected) == 0
+    # The nests tilt with the mean cross-level of their truck: k_φ/(4a) per metre at each of its wheelsets.
+    assert sympy.simplify(_entry(d, "GK", "phi", "c_1") - s[r"k_\phi"] / (4 * s["a"])) == 0
+    assert float(d.numeric(LOADED_FREIGHT_CAR, 20.0)[2][2, 2]) == pytest.approx(
+        2 * LOADED_FREIGHT_CAR.roll_stiffness
+        - LOADED_FREIGHT_CAR.body_mass * GRAVITY * LOADED_FREIGHT_CAR.body_height
+        + 2 * LOADED_FREIGHT_CAR.truck.nest_shear_stiffness * LOADED_FREIGHT_CAR.body_height**2,
+        rel=1e-12,
+    )
+
+
+# ---------------------------------------------------------------------------------------------- locomotive
+
+
+@settings(max_examples=25, deadline=None)
+@given(changes=_factors(WHEELSET + THREE_AXLE), share=st.floats(0.0, 1.0))
+def test_three_axle_truck_matches_the_model(changes, share):
+    truck = _scaled(LOCO_TRUCK.replace(motor_axle_share=share), changes)
+    assume(truck is not None)
+    _assert_matches(three_axle_truck(), truck)
+
+
+def test_three_axle_truck_by_hand():
+    d = three_axle_truck()
+    s = _symbols(d)
+    frame_share = (1 - s["kappa"]) * s["m_m"]
+    # Three motors' frame shares move with the frame, at x = ±b and 0.
+    assert sympy.simplify(_entry(d, "M", "y_t", "y_t") - (s["m_t"] + 3 * frame_share)) == 0
+    assert sympy.simplify(_entry(d, "M", "psi_t", "psi_t") - (s["I_t"] + 2 * frame_share * s["b"] ** 2)) == 0
+    assert _entry(d, "M", "y_t", "psi_t") == 0
+    # The middle axle on its centring springs only; the leading one on the primary at x = b.
+    assert _entry(d, "K", "y_2", "y_t") == -s["k_m"]
+    assert _entry(d, "K", "y_1", "psi_t") == -s["k_y"] * s["b"]
+
+
+@settings(max_examples=15, deadline=None)
+@given(changes=_factors(BODY + WHEELSET + THREE_AXLE), share=st.floats(0.0, 1.0))
+def test_locomotive_matches_the_model(changes, share):
+    loco = _scaled(LATERAL_LOCOMOTIVE.replace(motor_axle_share=share, secondary_yaw_damping=50.0e3), changes)
+    assume(loco is not None)
+    _assert_matches(lateral_locomotive(), loco)
+
+
+def test_locomotive_by_hand():
+    d = lateral_locomotive()
+    s = _symbols(d)
+    # The frames tilt with the mean cross-level of their three wheelsets: k_φ/(6a) per metre at each.
+    assert sympy.simplify(_entry(d, "GK", "phi", "c_1") - s[r"k_\phi"] / (6 * s["a"])) == 0
+    assert sympy.simplify(_entry(d, "GC", "phi", "c_6") - s[r"c_\phi"] / (6 * s["a"])) == 0
+    # Body yaw: the two trucks' secondary lateral springs at ±l and yaw springs.
+    expected = 2 * s["k_sy"] * s["l"] ** 2 + 2 * s[r"k_s\psi"]
+    assert sympy.simplify(_entry(d, "K", "psi", "psi") - expected) == 0
