@@ -1,7 +1,8 @@
 """Chapter 9's coupler chain (raildyn.derivations.train) held to the train model's right-hand side.
 
 The package's train is nonlinear, so the derived M, C, K are held to the Jacobian of
-``TrainModel.rhs`` by central differences, at states where the linearisation is exact:
+``TrainModel.rhs`` by central differences (``loaded_train_matrices``), at states where the
+linearisation is exact:
 
 * K: every coupler beyond its slack and its blend, inside its travel, and being loaded further
   (its rate 50 transition rates in the loading sense, where 1 − tanh² < 1e-42): the force is
@@ -23,12 +24,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from raildyn.derivations.train import coupler_chain
+from raildyn.derivations.train import coupler_chain, loaded_train_matrices
 from raildyn.train import VEHICLES, Consist, DraftGear, TrainModel, davis_resistance
 
 RELATIVE = 1e-9  # see the module docstring
-STEP_EXTENSION = 1e-4  # m: well inside the linear branch (its deflections are 2 mm and more)
-STEP_SPEED = 1e-2  # m/s: exact for a quadratic, and v stays far above the creep speed
 
 
 def _model(names, factors, gear, form):
@@ -37,39 +36,6 @@ def _model(names, factors, gear, form):
         for name, f in zip(names, factors, strict=True)
     )
     return TrainModel(Consist(vehicles), gear=gear, davis_form=form)
-
-
-def _acceleration_jacobian(model, y, rows):
-    """∂(v̇)/∂y[rows] by central differences, one column per perturbed state entry."""
-    n = model.size
-    steps = np.where(np.asarray(rows) < n, STEP_EXTENSION, STEP_SPEED)
-    plus = np.repeat(y[:, None], len(rows), axis=1)
-    minus = plus.copy()
-    plus[rows, np.arange(len(rows))] += steps
-    minus[rows, np.arange(len(rows))] -= steps
-    return (model.rhs(0.0, plus)[n:] - model.rhs(0.0, minus)[n:]) / (2 * steps)
-
-
-def package_matrices(model, speed, signs, deflections):
-    """M, C, K of the train model linearised as the module docstring says (from its rhs)."""
-    n, g = model.size, model.gear
-    mass = model.consist.mass
-    # K: couplers loaded beyond the slack, each in the sense of its sign (+ draft, − buff).
-    extension = signs * (g.slack / 2 + deflections)
-    rate = signs * 50 * g.transition_rate  # loading: the extension grows in its own sense
-    v = speed - np.r_[0.0, np.cumsum(rate)]
-    y = np.r_[model.initial_state(speed)[0], extension, v]
-    jz = _acceleration_jacobian(model, y, list(range(n)))  # over [x_0, Δx_0 … Δx_{n−2}]
-    # z = P x: x_0 = x_0, Δx_j = x_j − x_{j+1} − spacing
-    P = np.zeros((n, n))
-    P[0, 0] = 1.0
-    for j in range(n - 1):
-        P[j + 1, j], P[j + 1, j + 1] = 1.0, -1.0
-    K = -mass[:, None] * (jz @ P)
-    # C: every vehicle at V, the slack open.
-    y = model.initial_state(speed, 0.0)
-    C = -mass[:, None] * _acceleration_jacobian(model, y, list(range(n, 2 * n)))
-    return np.diag(mass), C, K
 
 
 def assert_close(derivation, matrices, model, speed):
@@ -102,7 +68,7 @@ def test_coupler_chain_is_the_jacobian_of_the_train(data):
         data.draw(st.lists(st.floats(0.003, 0.8 * travel), min_size=n - 1, max_size=n - 1))
     )
     speed = data.draw(st.floats(12.0, 40.0), label="V")
-    assert_close(coupler_chain(n), package_matrices(model, speed, signs, deflections), model, speed)
+    assert_close(coupler_chain(n), loaded_train_matrices(model, speed, deflections, signs), model, speed)
 
 
 def test_coupler_chain_closed_forms():
@@ -126,3 +92,13 @@ def test_coupler_chain_closed_forms():
 def test_coupler_chain_refuses_a_single_vehicle():
     with pytest.raises(ValueError, match="count"):
         coupler_chain(1)
+
+
+def test_loaded_train_matrices_refuse_a_state_off_the_loading_branch():
+    model = _model(["SD40-2", "loaded hopper"], [1.0, 1.0], DraftGear(), "original")
+    with pytest.raises(ValueError, match="deflection"):
+        loaded_train_matrices(model, 20.0, 0.5)  # beyond the travel: the solid branch
+    with pytest.raises(ValueError, match="signs"):
+        loaded_train_matrices(model, 20.0, 0.01, 0.5)
+    with pytest.raises(ValueError, match="speed"):
+        loaded_train_matrices(model, 1.0)  # within 40 creep speeds of a stop

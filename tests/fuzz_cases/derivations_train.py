@@ -4,6 +4,17 @@ from __future__ import annotations
 
 from fuzzing import call, fuzz
 
+from raildyn.train import TrainModel, make_consist
+
+MODEL = TrainModel(make_consist("1 SD40-2 + 2 loaded hopper"))
+
 ENTRIES = [
     fuzz("raildyn.derivations.train.coupler_chain", lambda: call(3), limit=20.0),
+    fuzz(
+        "raildyn.derivations.train.loaded_train_matrices",
+        lambda: call(MODEL, 20.0, deflection=0.01, signs=1.0),
+        limit=20.0,
+        # two couplers: a list of two is one value each; −1 is buff
+        accepts={"deflection": "list", "signs": "negative list"},
+    ),
 ]
