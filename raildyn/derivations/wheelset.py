@@ -307,7 +307,7 @@ def curved_wheelset() -> Derivation:
     T = m * ((V - Omega * y) ** 2 + (yd + Omega * x) ** 2) / 2 + I_z * (psid + Omega) ** 2 / 2
     U = k_y * y**2 / 2 + k_psi * psi**2 / 2 - m * g * h_t / (2 * a_r) * y
     Dr = c_y * yd**2 / 2 + c_psi * psid**2 / 2
-    M, C, K, GK, GC = lagrange(T, U, Dr, [y, psi], forces=Q, inputs=[kappa, h_t])
+    M, C, K, GK, GC = lagrange(sympy.expand(T), U, Dr, [y, psi], forces=Q, inputs=[kappa, h_t])
     # The steady state of the free, spin-free wheelset with no gravitational stiffness, at the
     # balance speed: K q = G_K w with the suspension, f₂₃, f₃₃, ε, ϑ₀ zero and h_t = 2a_r V²κ/g.
     ideal = {s[k][0]: 0 for k in ("k_y", "k_psi", "f_23", "f_33", "varepsilon", "vartheta_0")}
