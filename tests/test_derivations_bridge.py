@@ -118,7 +118,7 @@ def test_moving_mass_matches_the_assembled_march(data):
 
 
 def test_moving_mass_closed_form():
-    # By hand: C₁₂ = 2Mv φ₁(s) φ₂′(s), K₂₁ = Mv² φ₂(s) φ₁″(s), M₁₂ = M φ₁(s) φ₂(s) beside the beam's.
+    # By hand: C₁₂ = 2MV φ₁(s) φ₂′(s), K₂₁ = MV² φ₂(s) φ₁″(s), M₁₂ = M φ₁(s) φ₂(s) beside the beam's.
     beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, damping_ratio=0.0, modes=2)
     Mc, v, s, L = 5000.0, 30.0, 6.0, 20.0
     model = SimpleNamespace(beam=beam, load=moving_mass(Mc), position=s)

@@ -8,9 +8,9 @@ both supports' conditions (w = w″ = 0). Its kinetic and strain energies,
 
 integrated symbolically, give Lagrange's equations for the modal coordinates b_j; each mode is
 damped by the ratio ξ through Rayleigh's D = Σ_j ξ ω_j μ_j ḃ_j². A force P at x = s does the
-virtual work P δw(s, t), so mode j takes P φ_j(s); a mass M riding on the beam at x = vt adds
-its kinetic energy ½ M (d/dt w(vt, t))², whose Lagrange terms are the convective ones
-M φ_jφ_k, 2Mv φ_jφ_k′ and Mv² φ_jφ_k″ (Frýba 1972, ch. 1 and 8; Garg & Dukkipati 1984, ch. 10).
+virtual work P δw(s, t), so mode j takes P φ_j(s); a mass M riding on the beam at x = Vt adds
+its kinetic energy ½ M (d/dt w(Vt, t))², whose Lagrange terms are the convective ones
+M φ_jφ_k, 2MV φ_jφ_k′ and MV² φ_jφ_k″ (Frýba 1972, ch. 1 and 8; Garg & Dukkipati 1984, ch. 10).
 
 The tests hold :func:`beam_modes` to :class:`raildyn.bridge.SimplySupportedBeam` (its
 ``modal_masses`` and ``frequencies_hz``) and the moving loads to the matrices that the time march
@@ -37,7 +37,7 @@ _m = sympy.Symbol("m", positive=True)
 _EI = sympy.Symbol("EI", positive=True)
 _xi = sympy.Symbol("xi", nonnegative=True)
 _s = sympy.Symbol("s", real=True)  # the load's position on the span
-_v = sympy.Symbol("v", positive=True)  # its speed
+_v = sympy.Symbol("V", positive=True)  # its speed
 _BEAM = (
     (_m, "beam.mass_per_length"),
     (_EI, "beam.flexural_rigidity"),
@@ -162,7 +162,7 @@ def beam_under_moving_force(count: int = 3) -> Derivation:
 
     The force P δ_D(x − s) (downwards, as w) does the virtual work P δw(s, t) = Σ_j P φ_j(s) δb_j,
     so mode j is driven by the generalized force P φ_j(s) (book ch. 10; Frýba 1972, eq. 1.12):
-    with s = vt, μ_j(b̈_j + 2ξω_j ḃ_j + ω_j² b_j) = P sin(jπvt/L).
+    with s = Vt, μ_j(b̈_j + 2ξω_j ḃ_j + ω_j² b_j) = P sin(jπVt/L).
 
     Parameters
     ----------
@@ -207,12 +207,12 @@ def _beam_under_moving_force(n: int) -> Derivation:
 
 
 def beam_under_moving_mass(count: int = 3) -> Derivation:
-    """The beam's modal equations with a mass M riding on it at the speed v, where it stands at x = s.
+    """The beam's modal equations with a mass M riding on it at the speed V, where it stands at x = s.
 
-    The mass stays on the beam, so it moves with w(vt, t) = Σ_j φ_j(vt) b_j(t), at the rate
-    Σ_j (φ_j ḃ_j + v φ_j′ b_j): its kinetic energy ½ M (Σ_j φ_j ḃ_j + v φ_j′ b_j)² joins the
-    beam's. Lagrange's equations, written with the mass at s = vt, give the convective terms
-    M φ_jφ_k in the mass matrix, 2Mv φ_jφ_k′ in the damping and Mv² φ_jφ_k″ in the stiffness
+    The mass stays on the beam, so it moves with w(Vt, t) = Σ_j φ_j(Vt) b_j(t), at the rate
+    Σ_j (φ_j ḃ_j + V φ_j′ b_j): its kinetic energy ½ M (Σ_j φ_j ḃ_j + V φ_j′ b_j)² joins the
+    beam's. Lagrange's equations, written with the mass at s = Vt, give the convective terms
+    M φ_jφ_k in the mass matrix, 2MV φ_jφ_k′ in the damping and MV² φ_jφ_k″ in the stiffness
     (Frýba 1972, ch. 8; book ch. 10); its weight W does the virtual work of a moving force, so
     mode j takes W φ_j(s).
 
@@ -224,7 +224,7 @@ def beam_under_moving_mass(count: int = 3) -> Derivation:
     Returns
     -------
     Derivation
-        As :func:`beam_under_moving_force`, with the speed v (m/s), the input W (N, the weight)
+        As :func:`beam_under_moving_force`, with the speed V (m/s), the input W (N, the weight)
         and M (kg) read from the object's ``load`` (a :class:`raildyn.bridge.MovingLoad` of one
         axle, its ``unsprung_masses[0]``).
     """
@@ -236,8 +236,8 @@ def _beam_under_moving_mass(n: int) -> Derivation:
     b, phi, T, U, D, w, steps = _beam(n)
     (W,) = coordinates("W")
     Mc = sympy.Symbol("M", positive=True)
-    # The shapes where the mass stands, φ_j(vt), as functions of time g_j(t): by the chain rule
-    # ġ_j = v φ_j′(vt) and g̈_j = v² φ_j″(vt). (Functions rather than sin(jπvt/L) keep the algebra
+    # The shapes where the mass stands, φ_j(Vt), as functions of time g_j(t): by the chain rule
+    # ġ_j = V φ_j′(Vt) and g̈_j = V² φ_j″(Vt). (Functions rather than sin(jπVt/L) keep the algebra
     # of Lagrange's equations light; the shapes go in once the equations are formed.)
     g = coordinates(" ".join(f"phi_{j}" for j in range(1, n + 1)))
     height = sum(gj * bj for gj, bj in zip(g, b, strict=True))
@@ -261,7 +261,7 @@ def _beam_under_moving_mass(n: int) -> Derivation:
         speed=_v,
         steps=(
             *steps,
-            Step("height of the mass, φ_j standing for φ_j(vt)", sympy.Eq(w.subs(_x, _v * time), height)),
+            Step("height of the mass, φ_j standing for φ_j(Vt)", sympy.Eq(w.subs(_x, _v * time), height)),
             Step("kinetic energy of the mass", sympy.Eq(sympy.Symbol("T_M"), T_mass)),
             Step(
                 "the shapes' rates along the path (chain rule)",
