@@ -358,17 +358,26 @@ def truck_schematic(truck: ThreePieceTruck, *, ax=None) -> dict:
         art["nest"] = [d.spring(ax, (x, seat), (x, bolster_low), 0.08, coils=3) for x in (-0.12, 0.0, 0.12)]
         for line in art["nest"]:
             line.set_zorder(2.3)
-        art["bolster"] = d.block(ax, d.rectangle_xy((0.0, bolster_low + 0.12), 0.4, 0.24), z=2.4)
+        art["bolster"] = d.block(
+            ax, d.rectangle_xy((0.0, bolster_low + 0.12), 2 * (window - 0.09), 0.24), z=2.4
+        )
         wedges = []
         for s in (-1.0, 1.0):
             x0 = s * window
             tri = np.array([(x0, bolster_low), (x0, bolster_low + 0.22), (x0 - s * 0.09, bolster_low + 0.22)])
             wedges.append(d.block(ax, tri, fill="0.6", z=2.5))
         art["wedges"] = wedges
+        ax.plot(
+            [window - 0.03, window + 0.2],
+            [bolster_low + 0.18, top + 0.07],
+            color=d.DIMENSION,
+            lw=0.5,
+            zorder=4,
+        )
         texts += [
-            d.label(ax, (0.0, top + 0.12), "side frame", size=7, color=d.DIMENSION),
+            d.label(ax, (-b, top + 0.12), "side frame", size=7, color=d.DIMENSION),
             d.label(ax, (0.0, bolster_low + 0.12), "bolster", size=6),
-            d.label(ax, (window + 0.1, bolster_low + 0.1), "wedge", size=6, ha="left", color=d.DIMENSION),
+            d.label(ax, (window + 0.25, top + 0.12), "wedge", size=7, color=d.DIMENSION),
         ]
         _, t = d.dimension(ax, (0.0, -0.15), (b, -0.15), "$b$", side=-1.0)
         texts.append(t)
