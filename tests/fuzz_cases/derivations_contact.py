@@ -1,0 +1,32 @@
+"""Fuzz registry: chapter 4's creepages derived from the contact points' velocities."""
+
+from __future__ import annotations
+
+from fuzzing import call, fuzz, on
+
+from raildyn.derivations.contact import creepages
+
+DERIVED = creepages()
+ARGS = (40.0, 0.01, 1e-3, 0.02, 0.4603, 0.4597, 0.46, 0.75, 0.05, 0.05)
+
+ENTRIES = [
+    fuzz("raildyn.derivations.contact.creepages", lambda: call()),
+    fuzz(
+        "raildyn.derivations.contact.CreepageDerivation",
+        lambda: call(
+            DERIVED.longitudinal, DERIVED.lateral, DERIVED.spin, DERIVED.symbols, steps=DERIVED.steps
+        ),
+    ),
+    fuzz(
+        "raildyn.derivations.contact.CreepageDerivation.numeric",
+        lambda: on(DERIVED, *ARGS),
+        # Rates and angles of either sign, or zero, are states of a running wheelset.
+        accepts={
+            "lateral_velocity": "zero negative",
+            "yaw_angle": "zero negative",
+            "yaw_rate": "zero negative",
+            "contact_angle_left": "zero negative",
+            "contact_angle_right": "zero negative",
+        },
+    ),
+]
