@@ -28,6 +28,7 @@ from raildyn.derivations.trucks import (
 )
 from raildyn.vehicles.locomotive_lateral import LATERAL_LOCOMOTIVE, ThreeAxleTruck
 from raildyn.vehicles.three_piece import EMPTY_FREIGHT_CAR, LOADED_FREIGHT_CAR, ThreePieceTruck
+from raildyn.wheelset import creep_terms
 
 QUADRATURE = 1e-8  # see the module docstring: 4.1e-9 of the energy per cycle, with a margin
 SPEEDS = (3.0, 25.0, 120.0)  # m/s: the creep damping C₁/V from large to small
@@ -177,7 +178,7 @@ def test_freight_car_roll_by_hand():
     expected = 2 * s[r"k_\phi"] - s["m"] * s["g"] * s["h"] + 2 * s["k_s"] * s["h"] ** 2
     assert sympy.simplify(_entry(d, "K", "phi", "phi") - expected) == 0
     # The nests tilt with the mean cross-level of their truck: k_φ/(4a) per metre at each of its wheelsets.
-    assert sympy.simplify(_entry(d, "GK", "phi", "c_1") - s[r"k_\phi"] / (4 * s["a"])) == 0
+    assert sympy.simplify(_entry(d, "GK", "phi", "c_11") - s[r"k_\phi"] / (4 * s["a"])) == 0
     assert float(d.numeric(LOADED_FREIGHT_CAR, 20.0)[2][2, 2]) == pytest.approx(
         2 * LOADED_FREIGHT_CAR.roll_stiffness
         - LOADED_FREIGHT_CAR.body_mass * GRAVITY * LOADED_FREIGHT_CAR.body_height
@@ -222,8 +223,26 @@ def test_locomotive_by_hand():
     d = lateral_locomotive()
     s = _symbols(d)
     # The frames tilt with the mean cross-level of their three wheelsets: k_φ/(6a) per metre at each.
-    assert sympy.simplify(_entry(d, "GK", "phi", "c_1") - s[r"k_\phi"] / (6 * s["a"])) == 0
-    assert sympy.simplify(_entry(d, "GC", "phi", "c_6") - s[r"c_\phi"] / (6 * s["a"])) == 0
+    assert sympy.simplify(_entry(d, "GK", "phi", "c_11") - s[r"k_\phi"] / (6 * s["a"])) == 0
+    assert sympy.simplify(_entry(d, "GC", "phi", "c_23") - s[r"c_\phi"] / (6 * s["a"])) == 0
     # Body yaw: the two trucks' secondary lateral springs at ±l and yaw springs.
     expected = 2 * s["k_sy"] * s["l"] ** 2 + 2 * s[r"k_s\psi"]
     assert sympy.simplify(_entry(d, "K", "psi", "psi") - expected) == 0
+
+
+@pytest.mark.parametrize("V", SPEEDS)
+def test_wheel_rail_terms_equal_creep_terms(V):
+    # The wheel-rail forces built here from the creepages, against raildyn.wheelset.creep_terms: the
+    # leading wheelset's block of the locomotive truck, less its primary springs and dampers.
+    truck = LOCO_TRUCK
+    ws = truck.wheelset
+    terms = creep_terms(ws)
+    M, C, K, GK, GC = three_axle_truck().numeric(truck, V)
+    block = slice(2, 4)  # y_1, ψ_1
+    primary_K = np.diag([ws.lateral_stiffness, ws.yaw_stiffness])
+    primary_C = np.diag([ws.lateral_damping, ws.yaw_damping])
+    scale = np.abs(terms.K_creep).max()
+    np.testing.assert_allclose(
+        K[block, block] - primary_K, terms.K_creep + terms.K_gravity, rtol=0, atol=1e-12 * scale
+    )
+    np.testing.assert_allclose(C[block, block] - primary_C, terms.C1 / V, rtol=0, atol=1e-12 * scale / V)

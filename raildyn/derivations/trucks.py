@@ -15,12 +15,14 @@ dissipates the same energy per cycle of the reference motion X sin ωt: π c ω 
 step. The tests hold each derivation to its model in :mod:`raildyn.vehicles.three_piece` and
 :mod:`raildyn.vehicles.locomotive_lateral` over random parameter sets.
 
-Coordinates (names as in the derived equations; the models' labels in brackets): side frames y_f, ψ_f
-(``frame y``, ``frame ψ``), bolster ψ_b (``bolster ψ``), locomotive truck frame y_t, ψ_t (``frame y``,
-``frame ψ``), wheelset k y_k, ψ_k (``wheelsetk y``, ``wheelsetk ψ``); on a car the truck's number comes
-first (y_f1, y_12: truck 1, wheelset 2), and the body has y, ψ, φ (``body y``, ``body ψ``, ``body φ``:
-lateral, yaw, roll). Track inputs: the alignment y_a and the cross-level c at each wheelset, in the
-models' order (every alignment, then every cross-level).
+Sign convention: x forward, y to the left, z up; ψ (yaw) turns x towards y, the body's roll ϕ turns y
+towards z; small angles. Coordinates (names as in the derived equations; the models' labels in brackets):
+side frames y_f, ψ_f (``frame y``, ``frame ψ``), bolster ψ_b (``bolster ψ``), locomotive truck frame y_t,
+ψ_t (``frame y``, ``frame ψ``), wheelset k y_k, ψ_k (``wheelsetk y``, ``wheelsetk ψ``); on a vehicle the
+truck's number comes first (y_f1; y_12: truck 1, wheelset 2), and the body has y, ψ, ϕ (``body y``,
+``body ψ``, ``body φ``: lateral, yaw, roll). Track inputs: the alignment y_a (lateral position of the
+track centre line) and the cross-level c (left rail height minus right rail height) at each wheelset, m,
+numbered as the wheelsets (y_a12, c_12), in the models' order (every alignment, then every cross-level).
 """
 
 from __future__ import annotations
@@ -182,12 +184,19 @@ def _wheelset_steps(y, psi, ya, c, w, V) -> tuple:
     """Steps showing the left wheel's creepages and the wheelset's generalized forces."""
     Q, kin = _wheel_rail(y, psi, ya, c, w, V)
     variables = [y, psi, ya, c]
-    gx, gy, phi = sympy.symbols(r"\gamma_{xL} \gamma_{yL} \varphi_L")
+    gx, gy, phi = sympy.symbols(r"\gamma_{xL} \gamma_y \varphi")
     return (
         Step("longitudinal creepage of the left wheel", sympy.Eq(gx, _linear(kin["gx"], variables))),
         Step("lateral creepage (both wheels)", sympy.Eq(gy, _linear(kin["gy"], variables))),
         Step("spin creepage (both wheels)", sympy.Eq(phi, kin["spin"])),
         Step("contact angle of the left wheel", sympy.Eq(sympy.Symbol(r"\vartheta_L"), kin["angle"])),
+        Step(
+            "Kalker's linear law on the left wheel",
+            sympy.Eq(
+                sympy.Matrix(sympy.symbols("F_xL F_yL M_zL")),
+                sympy.Matrix([-w.f11 * gx, -w.f22 * gy - w.f23 * phi, w.f23 * gy - w.f33 * phi]),
+            ),
+        ),
         Step(
             "wheel–rail lateral force on the leading wheelset (virtual work, linearised)",
             sympy.Eq(sympy.Symbol("Q_{y1}"), Q[y]),
@@ -292,15 +301,15 @@ class _Truck:
     parts: tuple
 
 
-def _three_piece(s: _ThreePieceSymbols, tag: str, first: int, plate, plate_yaw, V) -> _Truck:
+def _three_piece(s: _ThreePieceSymbols, tag: str, plate, plate_yaw, V) -> _Truck:
     """Three-piece truck ``tag`` under a body whose centre plate moves laterally by ``plate`` and yaws by
-    ``plate_yaw``; ``first`` numbers its leading wheelset's inputs (1-based). Small angles throughout."""
+    ``plate_yaw``. Small angles throughout."""
     w = s.w
     yf, psif, psib, y1, psi1, y2, psi2 = coordinates(
         f"y_f{tag} psi_f{tag} psi_b{tag} y_{tag}1 psi_{tag}1 y_{tag}2 psi_{tag}2"
     )
-    ya = coordinates(f"y_a{first} y_a{first + 1}")
-    c = coordinates(f"c_{first} c_{first + 1}")
+    ya = coordinates(f"y_a{tag}1 y_a{tag}2")
+    c = coordinates(f"c_{tag}1 c_{tag}2")
     # Each side frame (half of m_f and I_f) sits at ±d: it moves laterally with y_f, yaws with ψ_f, and
     # slides longitudinally by ∓d ψ_b when the bolster, whose ends it holds, yaws.
     parts = [
@@ -445,7 +454,7 @@ def three_piece_truck() -> Derivation:
     p = _Parameters()
     s = _three_piece_symbols(p, "")
     V = _speed()
-    truck = _three_piece(s, "", 1, sympy.Integer(0), sympy.Integer(0), V)
+    truck = _three_piece(s, "", sympy.Integer(0), sympy.Integer(0), V)
     steps = (
         *_energy_steps(truck.parts),
         _equivalent_damper_step(),
@@ -520,14 +529,12 @@ def _seat(body_coords, x, B: _BodySymbols):
 
 
 def _vehicle(title, truck_symbols, build, B, p, V) -> Derivation:
-    """A body on two trucks built by ``build(symbols, tag, first, seat, body yaw, V)``, derived."""
+    """A body on two trucks built by ``build(symbols, tag, seat, body yaw, V)``, derived."""
     body = coordinates("y psi phi")
     trucks = []
-    first = 1
     for tag, x in (("1", B.l), ("2", -B.l)):
-        truck = build(truck_symbols, tag, first, _seat(body, x, B), body[1], V)
+        truck = build(truck_symbols, tag, _seat(body, x, B), body[1], V)
         trucks.append(truck)
-        first += len(truck.alignment)
     body, body_parts = _body(B, trucks, truck_symbols.w.a)
     coords = body + sum((t.coords for t in trucks), ())
     inputs = sum((t.alignment for t in trucks), ()) + sum((t.cross_level for t in trucks), ())
@@ -601,14 +608,14 @@ def _three_axle_symbols(p: _Parameters, prefix: str) -> _ThreeAxleSymbols:
     )
 
 
-def _three_axle(s: _ThreeAxleSymbols, tag: str, first: int, seat, seat_yaw, V) -> _Truck:
+def _three_axle(s: _ThreeAxleSymbols, tag: str, seat, seat_yaw, V) -> _Truck:
     """Three-axle truck ``tag`` under a body whose secondary seat moves laterally by ``seat`` and yaws by
-    ``seat_yaw``; ``first`` numbers its leading wheelset's inputs (1-based). Small angles throughout."""
+    ``seat_yaw``. Small angles throughout."""
     w = s.w
     yt, psit = coordinates(f"y_t{tag} psi_t{tag}")
     wheelsets = [coordinates(f"y_{tag}{k} psi_{tag}{k}") for k in (1, 2, 3)]
-    ya = coordinates(" ".join(f"y_a{first + k}" for k in range(3)))
-    c = coordinates(" ".join(f"c_{first + k}" for k in range(3)))
+    ya = coordinates(f"y_a{tag}1 y_a{tag}2 y_a{tag}3")
+    c = coordinates(f"c_{tag}1 c_{tag}2 c_{tag}3")
     parts = [_Part(T=s.mt * yt.diff(time) ** 2 / 2 + s.It * psit.diff(time) ** 2 / 2)]
     for k, ((y, psi), x, yak, ck) in enumerate(zip(wheelsets, (s.b, 0, -s.b), ya, c, strict=True), start=1):
         # The traction motor: a share κ moves laterally with the axle, the rest with the frame at x.
@@ -658,7 +665,7 @@ def three_axle_truck() -> Derivation:
     p = _Parameters()
     s = _three_axle_symbols(p, "")
     V = _speed()
-    truck = _three_axle(s, "", 1, sympy.Integer(0), sympy.Integer(0), V)
+    truck = _three_axle(s, "", sympy.Integer(0), sympy.Integer(0), V)
     steps = (
         *_energy_steps(truck.parts),
         *_wheelset_steps(*truck.coords[2:4], truck.alignment[0], truck.cross_level[0], s.w, V),
