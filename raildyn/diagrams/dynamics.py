@@ -21,11 +21,12 @@ __all__ = ["oscillator_model", "rigid_body_freedoms"]
 def oscillator_model(sdof: SDOF, *, ax=None) -> dict:
     """Draw the linear SDOF model: mass, spring, damper, force and coordinate (book Fig. 1.3).
 
-    The mass stands on a spring k and a damper c side by side, on the ground; F(t) pushes
-    it up and x measures its displacement from equilibrium, so that the picture is the
+    The mass stands on a spring k and a damper c side by side, on the ground; F(t) acts
+    on it along x, and x measures its displacement from equilibrium, so that the picture is the
     free-body diagram of m ẍ + c ẋ + k x = F(t) (book eq. 1.3). The labels carry the
-    model's values; the block's size grows as the cube root of the mass relative to
-    1000 kg (a heavier body looks heavier), and a damper of c = 0 is drawn dashed.
+    model's values; the block's size grows as the cube root of the mass relative to 1000 kg,
+    between half and twice its size (a heavier body looks heavier), and a damper of c = 0 is
+    drawn dashed.
 
     Parameters
     ----------
@@ -59,7 +60,7 @@ def oscillator_model(sdof: SDOF, *, ax=None) -> dict:
         if sdof.damping == 0:
             art["damper"].set_linestyle("--")
         top = legs + height
-        art["force"] = d.arrow(ax, (0.0, top + 0.5), (0.0, top), color=d.FORCE)
+        art["force"] = d.arrow(ax, (0.0, top), (0.0, top + 0.5), color=d.FORCE)
         xs = 0.7 * width
         art["x"] = d.arrow(ax, (xs, legs + height / 2), (xs, legs + height / 2 + 0.45))
         ax.plot([xs - 0.1, xs + 0.1], [legs + height / 2] * 2, color=d.COORDINATE, lw=0.8)

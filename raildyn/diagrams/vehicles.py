@@ -51,10 +51,10 @@ def bogie_plan(bogie: Bogie, *, ax=None) -> dict:
 
     The track's rails at ±a (``bogie.wheelset.half_gauge``) carry two wheelsets (wheels 2r₀ long)
     at x = ±b (``bogie.semi_wheelbase``); at each axle box a lateral spring k_y and a longitudinal
-    spring tie the wheelset to the frame. The longitudinal springs, d = a + 0.2 m either side of the
-    centre line, resist the wheelset's yaw relative to the frame as the couple
-    k_ψ = k_x d² · 2 (the :class:`~raildyn.wheelset.Wheelset`'s ``yaw_stiffness``); the body rests on
-    the centre pivot. The red arrow is the direction of travel.
+    spring tie the wheelset to the frame. The longitudinal springs, either side of the centre line,
+    resist the wheelset's yaw relative to the frame as a couple: the yaw stiffness k_ψ (the
+    :class:`~raildyn.wheelset.Wheelset`'s ``yaw_stiffness``). The body rests on the centre pivot;
+    the red arrow is the direction of travel.
 
     Parameters
     ----------
