@@ -129,12 +129,12 @@ def _lerelva_controls():
     case = _case()
     kmh = round(3.6 * case.fit.speed, 1)
     return {
-        "speed_kmh": slider("train speed v (km/h)", kmh, 50.0, 100.0, 0.5, fmt=".1f"),
+        "speed_kmh": slider("train speed V (km/h)", kmh, 50.0, 100.0, 0.5, fmt=".1f"),
         "scale": slider("strain scale (× fitted)", 1.0, 0.5, 1.5, 0.01),
         "frequency_hz": slider(
             "stringer f₁ (Hz)", round(_default_frequency_hz(), 1), 4.0, 60.0, 0.1, fmt=".1f"
         ),
-        "damping": slider("damping ζ (%)", 2.0, 0.0, 10.0, 0.5, fmt=".1f"),
+        "damping": slider("damping ratio ξ (%)", 2.0, 0.0, 10.0, 0.5, fmt=".1f"),
         "gauge": widgets.Dropdown(
             options=[(name, i) for i, name in enumerate(case.record.channels)],
             value=0,
@@ -178,8 +178,8 @@ def _lerelva_setup(live, status):
         ref_marks.set_ydata(reference[gauge])
         alpha = (kmh / 3.6) / (2 * f1 * LERELVA_PANEL)
         status.value = (
-            f"{case.record.channels[gauge]} · v = {kmh:.1f} km/h (identified {fitted_kmh:.1f}), "
-            f"α = v/(2f₁L) = {alpha:.3f} · {_agreement_text(agreement)}"
+            f"{case.record.channels[gauge]} · V = {kmh:.1f} km/h (identified {fitted_kmh:.1f}), "
+            f"α = V/(2f₁L) = {alpha:.3f} · {_agreement_text(agreement)}"
         )
 
     return redraw
@@ -206,8 +206,8 @@ def prediction_vs_measurement():
     unit's centre passes the panel's middle. Left: the two records at the chosen gauge. Right:
     the metrics of :func:`raildyn.validation.metrics.compare` (NRMSE over the range, 1 − r,
     Theil's U, the Sprague–Geers M, P and C), each 0 for a perfect match, beside the fitted
-    case's values. Controls: speed v (km/h), strain scale, the stringer's first frequency f₁
-    (Hz, through EI), its damping ratio ζ (%) and the gauge.
+    case's values. Controls: speed V (km/h), strain scale, the stringer's first frequency f₁
+    (Hz, through EI), its damping ratio ξ (%) and the gauge.
 
     Returns
     -------
