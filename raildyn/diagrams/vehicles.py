@@ -130,7 +130,8 @@ def car_side(car: VerticalCar, *, ax=None) -> dict:
     damper c_p, each bogie the body on the secondary k_s and c_s (the model's
     ``primary_stiffness``, ``primary_damping``, ``secondary_stiffness``, ``secondary_damping``). The
     body's coordinates are its bounce z_c and pitch θ_c, each bogie's z_b and θ_b (as in notebook
-    06); heights are drawn at fixed sizes.
+    06; θ > 0 raises the front, on the right, as in :mod:`raildyn.vehicles.vertical`); heights are
+    drawn at fixed sizes.
 
     Parameters
     ----------
@@ -189,7 +190,7 @@ def car_side(car: VerticalCar, *, ax=None) -> dict:
         centre = np.array([0.0, body_z + body_h / 2])
         d.arrow(ax, centre, centre + (0.0, 1.6))
         texts.append(d.label(ax, centre + (0.35, 1.45), "$z_c$", color=d.COORDINATE, ha="left"))
-        d.rotation(ax, centre, 0.8, np.radians(200), np.radians(-130))
+        d.rotation(ax, centre, 0.8, np.radians(110), np.radians(130))  # θ_c > 0 raises the front
         texts.append(d.label(ax, centre + (-1.1, 0.75), r"$\theta_c$", color=d.COORDINATE, ha="right"))
         ax.plot(*centre, "o", color=d.COORDINATE, ms=3, zorder=6)
         for xc, tag in ((l, "1"), (-l, "2")):
