@@ -13,4 +13,6 @@ sympy is imported only when this package is, never by the numerical models.
 from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
 from raildyn.derivations.vibration import chain, sdof
 
-__all__ = ["Derivation", "Step", "chain", "coordinates", "generalized_forces", "lagrange", "sdof", "time"]
+# ``time`` (the symbol t every coordinate is a function of) is importable from here but not listed:
+# it is sympy's own symbol, whose docstring is sympy's.
+__all__ = ["Derivation", "Step", "chain", "coordinates", "generalized_forces", "lagrange", "sdof"]

@@ -233,7 +233,7 @@ class Derivation:
         Parameters
         ----------
         model : object
-            Holds the parameters' values (see :attr:`parameters`).
+            Holds the parameters' values (see ``parameters``).
         speed : float, optional
             V, m/s (> 0); needed when the matrices hold the speed.
 
