@@ -559,23 +559,24 @@ def weigh_in_motion(
     """Train speed, axle spacings and axle loads from bridge strain records (bridge weigh-in-motion).
 
     Moses's algorithm {moses1979}: the strain at a sensor at x on a simply supported span is
-    the sum over the axles of load × the bending-moment influence line at x, times c/EI,
+    the sum over the axles of load × the bending-moment influence line at x, times z_g/EI
+    (z_g the sensor's distance from the neutral axis),
 
-    .. math:: \\varepsilon_s(t) = \\frac{c}{EI} \\sum_k P_k\\, M_x\\big(v (t - t_0) - D_k\\big)
-              + \\varepsilon_{0,s},
+    .. math:: \\varepsilon_g(t) = \\frac{z_g}{EI} \\sum_k P_k\\, \\Lambda\\big(x, V (t - t_0) - d_k\\big)
+              + \\varepsilon_{0,g},
 
-    with D_k the distance of axle k behind the leading one, M_x(a) the moment at x under a
-    unit force at a (statics of the simple beam, the static limit of chapter 10's
-    :func:`raildyn.bridge.beam.moving_force`) and ε₀ a zero offset per sensor. Given v, t₀ and the
-    spacings, the loads and offsets are linear: they come by linear least squares, as in
-    Moses's algorithm. The speed, arrival and (with ``fit_spacings``) the spacings are found
-    by nonlinear least squares over that projected problem (variable projection
-    {golub1973}), started from the best of a grid of speeds (or ``speed``), each scored at
-    every arrival at once by cross-correlating the records with the template of equal
-    loads; a last joint fit of every parameter gives the Jacobian for the intervals.
-    Dynamics (the bridge's and the vehicle's) are outside the model and end up in the residual;
-    so does any departure of the real influence line from the simple span's (continuity,
-    load spreading), which a measured influence line removes {obrien2006}.
+    with d_k the distance of axle k behind the leading one, Λ(x, s) the moment at x under a unit
+    force at s (statics of the simple beam, the static limit of chapter 10's
+    :func:`raildyn.bridge.beam.moving_force`; notebook 11 derives it) and ε₀ a zero offset per
+    sensor. Given V, t₀ and the spacings, the loads and offsets are linear: they come by linear
+    least squares, as in Moses's algorithm. The speed, arrival and (with ``fit_spacings``) the
+    spacings are found by nonlinear least squares over that projected problem (variable projection
+    {golub1973}), started from the best of a grid of speeds (or ``speed``), each scored at every
+    arrival at once by cross-correlating the records with the template of equal loads; a last
+    joint fit of every parameter gives the Jacobian for the intervals. Dynamics (the bridge's and
+    the vehicle's) are outside the model and end up in the residual; so does any departure of the
+    real influence line from the simple span's (continuity, load spreading), which a measured
+    influence line removes {obrien2006}.
 
     Parameters
     ----------

@@ -379,12 +379,13 @@ def sobol_indices(
 
     Two independent N × d samples A and B are drawn; for each parameter i the matrix
     A_B⁽ⁱ⁾ is A with its column i taken from B. The model runs on A, B and the d matrices
-    A_B⁽ⁱ⁾, N (d + 2) times in all, on dask.distributed. With f₀ and V the mean and the
+    A_B⁽ⁱ⁾, N (d + 2) times in all, on dask.distributed. With f₀ and σ_Y² the mean and the
     variance of f over A and B together, the first-order index uses Saltelli's estimator
-    and the total index Jansen's (Jansen 1999), both as Saltelli et al. (2010, Table 2) list them:
+    and the total index Jansen's (Jansen 1999), both as Saltelli et al. (2010, Table 2) list them
+    (derived in notebook 11 from the law of total variance):
 
-    S_i = (1/N) Σ_j (f(B)_j − f₀) (f(A_B⁽ⁱ⁾)_j − f(A)_j) / V,
-    S_Ti = (1/2N) Σ_j (f(A)_j − f(A_B⁽ⁱ⁾)_j)² / V.
+    S_i = (1/N) Σ_j (f(B)_j − f₀) (f(A_B⁽ⁱ⁾)_j − f(A)_j) / σ_Y²,
+    S_Ti = (1/2N) Σ_j (f(A)_j − f(A_B⁽ⁱ⁾)_j)² / σ_Y².
 
     Saltelli's estimator is written with f(B) itself; subtracting f₀ leaves its expectation
     unchanged and removes the noise an output's mean adds to it (SALib's analysis centres its
@@ -489,7 +490,7 @@ def sobol_indices(
 
 
 def _sobol_estimators(fA, fB, fAB):
-    """S_i by Saltelli's estimator and S_Ti by Jansen's (Saltelli et al. 2010, Table 2), centred, and V.
+    """S_i by Saltelli's estimator and S_Ti by Jansen's (Saltelli et al. 2010, Table 2), centred, and σ_Y².
 
     ``fA`` and ``fB`` have shape (..., N); ``fAB`` has shape (d, ..., N). Returns arrays of
     shape (d, ...) and the variance of shape (...).
