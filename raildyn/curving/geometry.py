@@ -1,6 +1,6 @@
 """Curve geometry (book chapter 8): cant, cant deficiency, balance speed, and curves with transitions.
 
-* The cant quantities of a curve of radius R and cant D on a track whose rail-centre
+* The cant quantities of a curve of radius R and cant h_t on a track whose rail-centre
   spacing is G: the equilibrium cant (:func:`equilibrium_cant`), the cant deficiency
   (:func:`cant_deficiency`), the unbalanced lateral acceleration in the track plane
   (:func:`unbalanced_acceleration`), the balance speed (:func:`balance_speed`) and the
@@ -11,13 +11,13 @@
   heading and plan coordinates as functions of the distance s along the centre line.
 
 **One convention, the railway engineer's.** The cant quantities are linear in the cant:
-the track's roll angle φ is taken small (sin φ ≈ tan φ ≈ φ = D/G), which is how the
+the track's roll angle θ_t is taken small (sin θ_t ≈ tan θ_t ≈ θ_t = h_t/(2a)), which is how the
 design standards state them (EN 13803 writes the equilibrium cant of standard-gauge
-track as 11.8 V²/R, mm with V in km/h and R in m: G = 1500 mm) and how Garg & Dukkipati
+track as 11.8 V²/R, mm with V in km/h and R in m: 2a = 1500 mm) and how Garg & Dukkipati
 (1984, ch. 8) use them. In this convention the balance speed has zero cant deficiency
 and zero unbalanced acceleration exactly. :func:`unbalanced_acceleration` gives the
-exact in-plane form V²/R cos φ − g sin φ on request (``exact=True``); the two differ by
-less than g φ³/2 + |a| φ²/2 (below 0.2 % of g at the largest cant allowed here).
+exact in-plane form V²/R cos θ_t − g sin θ_t on request (``exact=True``); the two differ by
+less than g θ_t³/2 + |a| θ_t²/2 (below 0.2 % of g at the largest cant allowed here).
 
 The curves are left-handed: the curvature, the heading and y are positive turning to the
 left (x forward, y to the left, as in :mod:`raildyn.wheelset`); a right-hand curve is the
@@ -52,7 +52,7 @@ __all__ = [
 ]
 
 STANDARD_RAIL_SPACING = 1.5
-"""G, m: the lateral distance between the two rails' centres (their running-band centres)
+"""2a, m: the lateral distance between the two rails' centres (their running-band centres)
 of standard-gauge (1435 mm) track, the base on which cant is measured and stated: the
 1500 mm of EN 13803 (whence its 11.8 V²/R) and of UIC practice."""
 
@@ -65,7 +65,7 @@ such curves need leave the small-angle curving theory of chapter 8 that these cu
 MAXIMUM_CANT = 0.2
 """The largest cant accepted, m: a hard bound a little above the 180 mm that EN 13803 allows
 as the design cant of ballasted standard-gauge track, so that every main-line design cant
-passes. At 0.2 m on G = 1.5 m the roll angle is 0.134 rad and 1 − cos φ < 0.9 %, so the
+passes. At 0.2 m on 2a = 1.5 m the roll angle is 0.134 rad and 1 − cos θ_t < 0.9 %, so the
 small-angle convention of this module stays within a per cent of the exact trigonometry."""
 
 MAXIMUM_SPEED = 200.0
@@ -127,7 +127,7 @@ def _result(value: np.ndarray, *inputs):
 def equilibrium_cant(speed, radius, rail_spacing=STANDARD_RAIL_SPACING):
     """The cant at which a vehicle at ``speed`` feels no lateral acceleration in the track plane, m.
 
-    D_eq = G V²/(g R) (Garg & Dukkipati 1984, ch. 8; EN 13803's 11.8 V²/R in mm with V in
+    h_eq = 2a V²/(g R) (Garg & Dukkipati 1984, ch. 8; EN 13803's 11.8 V²/R in mm with V in
     km/h), in the small-angle convention of this module.
 
     Parameters
@@ -137,12 +137,12 @@ def equilibrium_cant(speed, radius, rail_spacing=STANDARD_RAIL_SPACING):
     radius : float or array_like
         R, m (≥ :data:`MINIMUM_RADIUS`); broadcast against ``speed``.
     rail_spacing : float
-        G, m, in [0.5, 2.0]; :data:`STANDARD_RAIL_SPACING` (1.5 m) by default.
+        2a, m, in [0.5, 2.0]; :data:`STANDARD_RAIL_SPACING` (1.5 m) by default.
 
     Returns
     -------
     float or ndarray
-        D_eq, m (a float for single numbers).
+        h_eq, m (a float for single numbers).
 
     Examples
     --------
@@ -157,9 +157,9 @@ def equilibrium_cant(speed, radius, rail_spacing=STANDARD_RAIL_SPACING):
 
 
 def cant_deficiency(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
-    """The cant deficiency I = D_eq − D, m: positive short of equilibrium, negative a cant excess.
+    """The cant deficiency I = h_eq − h_t, m: positive short of equilibrium, negative a cant excess.
 
-    I = G V²/(g R) − D (Garg & Dukkipati 1984, ch. 8; EN 13803), in the small-angle convention.
+    I = 2a V²/(g R) − h_t (Garg & Dukkipati 1984, ch. 8; EN 13803), in the small-angle convention.
 
     Parameters
     ----------
@@ -168,9 +168,9 @@ def cant_deficiency(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
     radius : float or array_like
         R, m (≥ :data:`MINIMUM_RADIUS`).
     cant : float or array_like
-        D, the height of the outer rail over the inner, m, in [0, :data:`MAXIMUM_CANT`].
+        h_t, the height of the outer rail over the inner, m, in [0, :data:`MAXIMUM_CANT`].
     rail_spacing : float
-        G, m, in [0.5, 2.0].
+        2a, m, in [0.5, 2.0].
 
     Returns
     -------
@@ -179,7 +179,7 @@ def cant_deficiency(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
 
     Examples
     --------
-    >>> round(cant_deficiency(120 / 3.6, 600.0, 0.1) * 1000, 1)  # 120 km/h, R = 600 m, D = 100 mm
+    >>> round(cant_deficiency(120 / 3.6, 600.0, 0.1) * 1000, 1)  # 120 km/h, R = 600 m, h_t = 100 mm
     183.3
     """
     D = _cant(cant)
@@ -191,11 +191,11 @@ def cant_deficiency(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
 def unbalanced_acceleration(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING, *, exact=False):
     """The lateral acceleration left unbalanced in the plane of the track, m/s², positive outwards.
 
-    The module's small-angle form (the default): a_q = g I / G, with I the cant deficiency,
+    The module's small-angle form (the default): a_q = g I/(2a), with I the cant deficiency,
     zero at the balance speed. With ``exact=True`` the exact in-plane component,
-    a_q = V²/R cos φ − g sin φ with sin φ = D/G (Garg & Dukkipati 1984, ch. 8). In closed
-    form exact = (g I/G) cos φ − g sin φ (1 − cos φ), so the two differ by at most
-    (|a_q| + g sin φ)(1 − cos φ) ≈ (|a_q| + g φ) φ²/2.
+    a_q = V²/R cos θ_t − g sin θ_t with sin θ_t = h_t/(2a) (Garg & Dukkipati 1984, ch. 8). In closed
+    form exact = (g I/(2a)) cos θ_t − g sin θ_t (1 − cos θ_t), so the two differ by at most
+    (|a_q| + g sin θ_t)(1 − cos θ_t) ≈ (|a_q| + g θ_t) θ_t²/2.
 
     Parameters
     ----------
@@ -204,11 +204,11 @@ def unbalanced_acceleration(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPAC
     radius : float or array_like
         R, m (≥ :data:`MINIMUM_RADIUS`).
     cant : float or array_like
-        D, m, in [0, :data:`MAXIMUM_CANT`].
+        h_t, m, in [0, :data:`MAXIMUM_CANT`].
     rail_spacing : float
-        G, m, in [0.5, 2.0].
+        2a, m, in [0.5, 2.0].
     exact : bool
-        False (the module's convention) for g I/G, True for V²/R cos φ − g sin φ.
+        False (the module's convention) for g I/(2a), True for V²/R cos θ_t − g sin θ_t.
 
     Returns
     -------
@@ -237,7 +237,7 @@ def unbalanced_acceleration(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPAC
 def balance_speed(radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
     """The speed at which the cant balances the centripetal acceleration, m/s.
 
-    V_b = √(g R D / G) (Garg & Dukkipati 1984, ch. 8): the small-angle form of √(g R tan φ),
+    V_b = √(g R h_t/(2a)) (Garg & Dukkipati 1984, ch. 8): the small-angle form of √(g R tan θ_t),
     the speed at which :func:`cant_deficiency` and :func:`unbalanced_acceleration` are zero.
 
     Parameters
@@ -245,9 +245,9 @@ def balance_speed(radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
     radius : float or array_like
         R, m (≥ :data:`MINIMUM_RADIUS`).
     cant : float or array_like
-        D, m, in [0, :data:`MAXIMUM_CANT`] (no cant: a balance speed of 0).
+        h_t, m, in [0, :data:`MAXIMUM_CANT`] (no cant: a balance speed of 0).
     rail_spacing : float
-        G, m, in [0.5, 2.0].
+        2a, m, in [0.5, 2.0].
 
     Returns
     -------
@@ -269,7 +269,7 @@ def balance_speed(radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
 def speed_for_deficiency(radius, cant, deficiency, rail_spacing=STANDARD_RAIL_SPACING):
     """The speed that runs a curve at a given cant deficiency, m/s.
 
-    V = √(g R (D + I) / G), the inverse of :func:`cant_deficiency` (Garg & Dukkipati 1984,
+    V = √(g R (h_t + I)/(2a)), the inverse of :func:`cant_deficiency` (Garg & Dukkipati 1984,
     ch. 8): the highest speed a permitted deficiency allows, or with I = 0 the balance speed.
 
     Parameters
@@ -277,11 +277,11 @@ def speed_for_deficiency(radius, cant, deficiency, rail_spacing=STANDARD_RAIL_SP
     radius : float or array_like
         R, m (≥ :data:`MINIMUM_RADIUS`).
     cant : float or array_like
-        D, m, in [0, :data:`MAXIMUM_CANT`].
+        h_t, m, in [0, :data:`MAXIMUM_CANT`].
     deficiency : float or array_like
-        I, m, with D + I ≥ 0 (a cant excess −I at most the cant itself: I = −D is standing still).
+        I, m, with h_t + I ≥ 0 (a cant excess −I at most the cant itself: I = −h_t is standing still).
     rail_spacing : float
-        G, m, in [0.5, 2.0].
+        2a, m, in [0.5, 2.0].
 
     Returns
     -------
@@ -319,7 +319,7 @@ class Curve:
     Along the centre line, from s = 0: a straight of length ``straight``; the entry
     transition of length L, over which the curvature grows linearly from 0 to 1/R (a
     clothoid, the curve of Garg & Dukkipati 1984, ch. 8, and of EN 13803) and the cant
-    from 0 to D; the arc of length ``arc_length`` at curvature 1/R and cant D; the exit
+    from 0 to h_t; the arc of length ``arc_length`` at curvature 1/R and cant h_t; the exit
     transition, the entry's mirror image; and beyond it straight track on the new
     heading. Before s = 0 the straight continues backwards.
 
@@ -329,7 +329,7 @@ class Curve:
         R, m (≥ :data:`MINIMUM_RADIUS`). 600 m by default: a main-line curve of moderate
         radius, the one of issue 17's questions.
     cant : float
-        D, m, in [0, :data:`MAXIMUM_CANT`]. 0.1 m by default (balance speed 71 km/h on 600 m).
+        h_t, m, in [0, :data:`MAXIMUM_CANT`]. 0.1 m by default (balance speed 71 km/h on 600 m).
     transition_length : float
         L, m (≥ 0; 0 is an abrupt change of curvature and a step of cant). 60 m by default:
         a ramp of 1.67 mm/m, within :data:`CANT_GRADIENT_LIMIT`.
@@ -338,7 +338,7 @@ class Curve:
     straight : float
         The straight before the entry transition, m (≥ 0). 50 m by default.
     rail_spacing : float
-        G, m, in [0.5, 2.0]; the base of the cant (:data:`STANDARD_RAIL_SPACING`).
+        2a, m, in [0.5, 2.0]; the base of the cant (:data:`STANDARD_RAIL_SPACING`).
 
     Examples
     --------
@@ -436,9 +436,9 @@ class Curve:
         return self._out(k, s)
 
     def cant_at(self, s):
-        """The cant D(s) at distance s, m (``cant`` itself is the arc's cant, a field).
+        """The cant h_t(s) at distance s, m (``cant`` itself is the arc's cant, a field).
 
-        D(s) = 0 on the straights, D (s − s₀)/L on the entry ramp, D on the arc, and the
+        h_t(s) = 0 on the straights, h_t (s − s₀)/L on the entry ramp, h_t on the arc, and the
         mirror image on the exit: the linear ramp over the length of the clothoid.
 
         Parameters
@@ -449,7 +449,7 @@ class Curve:
         Returns
         -------
         float or ndarray
-            D(s), m, shaped like ``s``.
+            h_t(s), m, shaped like ``s``.
         """
         s, _, entry, arc, exit_, _ = self._pieces(s)
         s0, _, _, s3 = self._ends()
@@ -461,10 +461,10 @@ class Curve:
         return self._out(out, s)
 
     def unbalanced_acceleration(self, s, speed):
-        """The unbalanced lateral acceleration a_q(s) = V² κ(s) − g D(s)/G at distance s, m/s².
+        """The unbalanced lateral acceleration a_q(s) = V² κ(s) − g h_t(s)/(2a) at distance s, m/s².
 
         :func:`unbalanced_acceleration` along the curve, in the module's small-angle convention
-        (g I/G with I = G V² κ/g − D): zero on the straights, growing along the transitions.
+        (g I/(2a) with I = 2a V² κ/g − h_t): zero on the straights, growing along the transitions.
 
         Parameters
         ----------
@@ -492,7 +492,7 @@ class Curve:
     def cant_gradient(self, s):
         """The cant gradient dD/ds at distance s, m/m (× 1000 for mm/m).
 
-        D/L on the entry ramp, −D/L on the exit, 0 elsewhere. With no transition
+        h_t/L on the entry ramp, −h_t/L on the exit, 0 elsewhere. With no transition
         (L = 0) the cant steps and the gradient is 0 everywhere but at the step: use
         :meth:`twist` over a base, which stays finite. Compare with
         :data:`CANT_GRADIENT_LIMIT` (EN 13803).
@@ -520,7 +520,7 @@ class Curve:
         The change of cross-level between a vehicle's leading axle at s and its trailing
         axle a wheelbase behind, per metre of base: the twist of EN 13848-5 (on a 3 m base)
         that unloads a wheel of a stiff bogie (Garg & Dukkipati 1984, ch. 8). On a linear
-        ramp longer than the base it equals the cant gradient; with L = 0 it is D/base
+        ramp longer than the base it equals the cant gradient; with L = 0 it is h_t/base
         for a base length past the step.
 
         Parameters
@@ -662,7 +662,7 @@ class Curve:
             Where to draw; new axes on a new pyplot figure if None.
         view : str
             ``"plan"`` (y against x, equal scales: the centre line, and the ends of the
-            transitions marked), ``"curvature"`` (κ, 1/km, against s) or ``"cant"`` (D, mm,
+            transitions marked), ``"curvature"`` (κ, 1/km, against s) or ``"cant"`` (h_t, mm,
             against s).
 
         Returns
@@ -697,5 +697,5 @@ class Curve:
                 (line,) = ax.plot(s, 1e3 * self.cant_at(s), color=plots.COLORS[0], label="cant")
                 (marks,) = ax.plot(ends, 1e3 * self.cant_at(ends), "o", color=plots.COLORS[1])
                 ax.set_xlabel("distance $s$ (m)")
-                ax.set_ylabel("cant $D$ (mm)")
+                ax.set_ylabel("cant $h_t$ (mm)")
         return {"line": line, "ends": marks}

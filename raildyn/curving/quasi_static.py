@@ -93,7 +93,7 @@ class QuasiStaticCurving(SteadyCurving):
     Y and Q are found from the equilibrium, after it: the lateral model itself keeps equal
     wheel loads (in the creep saturation and the gravitational stiffness), so the sum of an
     axle's two Y differs from its guiding force by the tread's share of the load transfer,
-    (Q_o − Q_i) tan δ₀, and of the flange's relief, a few per cent of the flange force.
+    (Q_o − Q_i) tan ϑ₀, and of the flange's relief, a few per cent of the flange force.
     """
 
     guiding_force: np.ndarray
@@ -210,13 +210,13 @@ def _linear_basis(system) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _linear_starts(system, V: np.ndarray, R: np.ndarray, D: float) -> np.ndarray:
-    """The linear steady states (n, P) at each (V, R) of a cant D."""
+    """The linear steady states (n, P) at each (V, R) of a cant h_t."""
     u, w = _linear_basis(system)
     return np.outer(u, 1.0 / R) + np.outer(w, unbalanced_acceleration(V, R, D))
 
 
 def _solve(model: NonlinearLateral, V: np.ndarray, R: np.ndarray, D: float, start=None) -> np.ndarray:
-    """The equilibria (n, P) at the points (V, R) of a cant D.
+    """The equilibria (n, P) at the points (V, R) of a cant h_t.
 
     Newton on all the points from ``start`` (n, P) if given, else from their linear states; then, a
     few times over, on the points it left, each from the equilibrium of its nearest solved neighbour
@@ -291,8 +291,8 @@ def _wheels(
         out["wear"][j] = forces.wear_number.sum(axis=0)
         out["guiding"][j] = contact_forces(ws, model.contact, y[j], psi[j], 0.0, V / R, V)[0]
         # Q: each wheel's share of the axle load with the roll moment of m a_q at h; a flange bears
-        # F/tan δ_f of it, the tread the rest, tilted by its contact angle (the contact's tread_angles, or
-        # the cone's δ₀ ± εy/a) towards the track's centre line (inner wheel: to the right, outer: left).
+        # F/tan ϑ_f of it, the tread the rest, tilted by its contact angle (the contact's tread_angles, or
+        # the cone's ϑ₀ ± εy/a) towards the track's centre line (inner wheel: to the right, outer: left).
         a, W = ws.half_gauge, ws.axle_load
         transfer = 0.5 * W * h / a * a_q / GRAVITY
         Q[j] = 0.5 * W - transfer, 0.5 * W + transfer
@@ -312,7 +312,7 @@ def _wheels(
 
 
 def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_angle):
-    """The checked (V, R, D, h, tan δ_f) of either public function."""
+    """The checked (V, R, h_t, h, tan ϑ_f) of either public function."""
     V = np.atleast_1d(_checks.array(speed_name, speed, low=0.0, low_open=True, allow_empty=False))
     R = np.atleast_1d(_checks.array(radius_name, radius, low=MINIMUM_RADIUS, allow_empty=False))
     _checks.scalar(speed_name, V.max(), high=MAXIMUM_SPEED)
@@ -339,14 +339,14 @@ def quasi_static_curving(
     radius : float
         R, m (≥ :data:`~raildyn.curving.geometry.MINIMUM_RADIUS`, 50 m).
     cant : float
-        D, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`] (0.2 m).
+        h_t, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`] (0.2 m).
     cg_height : float
         h, height of the vehicle's centre of gravity above the rails, m, in (0, 4]: the
         unbalanced acceleration moves ΔQ = (W/2)(h/a)(a_q/g) of each axle's load W to the
         outer wheel. Default 1.8 m, the Manchester car's body (Iwnicki 1998).
     flange_angle : float
-        δ_f, the flange's contact angle, rad, in (0, π/2): the flange's normal force, whose
-        lateral part the flange spring gives, bears F/tan δ_f of the wheel's load (so that
+        ϑ_f, the flange's contact angle, rad, in (0, π/2): the flange's normal force, whose
+        lateral part the flange spring gives, bears F/tan ϑ_f of the wheel's load (so that
         the tread bears the rest). Default 70°, about the flange angle of the S1002 wheel.
     start : QuasiStaticCurving, optional
         A nearby equilibrium of the same model: Newton starts from it, moved by the linear
@@ -409,7 +409,7 @@ class CurvingMap:
     speeds : ndarray, (s,)
         V, m/s.
     cant : float
-        D, m.
+        h_t, m.
     unbalanced_acceleration : ndarray, (r, s)
         a_q, m/s².
     offset, angle_of_attack, flange_force, wear_number : ndarray, (r, s, k)
@@ -501,7 +501,7 @@ def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=_
     radii : array_like, (r,)
         R, m, each ≥ :data:`~raildyn.curving.geometry.MINIMUM_RADIUS`.
     cant : float
-        D, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`].
+        h_t, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`].
     cg_height, flange_angle : float
         As for :func:`quasi_static_curving`.
 

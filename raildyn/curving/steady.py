@@ -42,7 +42,7 @@ class SteadyCurving:
     speed : float
         V, m/s (> 0).
     cant : float
-        D, height of the outer rail above the inner, m (≥ 0).
+        h_t, height of the outer rail above the inner, m (≥ 0).
     unbalanced_acceleration : float
         a_q, m/s², in the plane of the track, outwards (negative: cant excess).
     labels : tuple of str
@@ -189,7 +189,7 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
     radius : float
         R, m (≥ :data:`~raildyn.curving.geometry.MINIMUM_RADIUS`, 50 m).
     cant : float
-        D, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`] (0.2 m).
+        h_t, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`] (0.2 m).
 
     Returns
     -------
@@ -213,7 +213,7 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
     V = _checks.scalar("speed", speed, low=0.0, low_open=True, high=MAXIMUM_SPEED)
     R = _checks.scalar("radius", radius, low=MINIMUM_RADIUS)
     D = _checks.scalar("cant", cant, low=0.0, high=MAXIMUM_CANT)
-    a_q = unbalanced_acceleration(V, R, D)  # the small-angle g I/G of the linear theory
+    a_q = unbalanced_acceleration(V, R, D)  # the small-angle g I/(2a) of the linear theory
     lateral = np.array([label.endswith(" y") for label in system.labels], dtype=float)
     try:
         x = system.wheelset_positions

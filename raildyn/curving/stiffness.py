@@ -228,7 +228,7 @@ class StabilityCurving:
     radius : float
         R, m (> 0).
     cant : float
-        D, m (≥ 0).
+        h_t, m (≥ 0).
     speed_range : tuple of float
         The speeds searched for the critical speed, m/s.
     """
@@ -461,7 +461,7 @@ def stability_and_curving(
     radius : float
         R, m (≥ 50 m).
     cant : float
-        D, m, in [0, 0.2].
+        h_t, m, in [0, 0.2].
     speed_range : (float, float)
         Speeds searched for the critical speed, m/s (0 < low < high).
     tol : float
