@@ -97,12 +97,12 @@ def _wheelset_symbols(p: _Parameters, prefix: str) -> _WheelsetSymbols:
         f22=p("f_22", prefix + "f22"),
         f23=p("f_23", prefix + "f23"),
         f33=p("f_33", prefix + "f33"),
-        theta0=p(r"\vartheta_0", prefix + "contact_angle"),
+        theta0=p("vartheta_0", prefix + "contact_angle"),
         eps=p("epsilon", prefix + "contact_angle_parameter"),
         ky=p("k_y", prefix + "lateral_stiffness"),
-        kpsi=p(r"k_\psi", prefix + "yaw_stiffness"),
+        kpsi=p("k_psi", prefix + "yaw_stiffness"),
         cy=p("c_y", prefix + "lateral_damping"),
-        cpsi=p(r"c_\psi", prefix + "yaw_damping"),
+        cpsi=p("c_psi", prefix + "yaw_damping"),
     )
 
 
@@ -490,12 +490,12 @@ class _BodySymbols:
 def _body_symbols(p: _Parameters) -> _BodySymbols:
     return _BodySymbols(
         m=p("m", "body_mass"),
-        Ipsi=p(r"I_\psi", "body_yaw_inertia"),
-        Iphi=p(r"I_\phi", "body_roll_inertia"),
+        Ipsi=p("I_z", "body_yaw_inertia"),
+        Iphi=p("I_x", "body_roll_inertia"),
         l=p("l", "semi_truck_spacing"),
         h=p("h", "body_height"),
-        kphi=p(r"k_\phi", "roll_stiffness"),
-        cphi=p(r"c_\phi", "roll_damping"),
+        kphi=p("k_phi", "roll_stiffness"),
+        cphi=p("c_phi", "roll_damping"),
         g=p("g", lambda model: GRAVITY),
     )
 
