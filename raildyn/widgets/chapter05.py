@@ -163,7 +163,7 @@ _CURVE_WHEELSET = wheelset.Wheelset()  # the Manchester wheelset of section 5.2 
 def _curved_wheelset_controls():
     return {
         "radius": slider("radius R (m)", 600.0, 300.0, 3000.0, 50.0, fmt=".0f"),
-        "deficiency_mm": slider("cant deficiency h_d (mm)", 50.0, 0.0, 150.0, 5.0, fmt=".0f"),
+        "deficiency_mm": slider("cant deficiency I (mm)", 50.0, 0.0, 150.0, 5.0, fmt=".0f"),
         "yaw_stiffness": slider(
             "primary k_ψ (MN·m/rad)", round(_CURVE_WHEELSET.yaw_stiffness / 1e6, 1), 0.0, 80.0, 0.1, fmt=".1f"
         ),
@@ -181,7 +181,7 @@ def _curve_system(yaw_stiffness: float, lateral_stiffness: float):
 
 
 def _curve_states(system, radii, deficiency: float):
-    """SteadyCurving of ``system`` on each radius (m), at the speed of the cant deficiency h_d (m)."""
+    """SteadyCurving of ``system`` on each radius (m), at the speed of the cant deficiency I (m)."""
     speeds = np.atleast_1d(geometry.speed_for_deficiency(radii, _CURVE_CANT, deficiency))
     return [steady_curving(system, V, R, cant=_CURVE_CANT) for V, R in zip(speeds, radii, strict=True)]
 
@@ -277,7 +277,7 @@ def curved_wheelset():
     middle: the angle of attack; right: the longitudinal creep force on the outer wheel
     (backwards) and the lateral creep force on the wheelset (outwards). A marker and the
     status line give the values at the chosen radius. Controls: radius R (m), cant
-    deficiency h_d (mm), primary yaw stiffness k_ψ (MN·m/rad) and lateral stiffness k_y (MN/m).
+    deficiency I (mm), primary yaw stiffness k_ψ (MN·m/rad) and lateral stiffness k_y (MN/m).
 
     Returns
     -------
