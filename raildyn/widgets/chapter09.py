@@ -77,7 +77,7 @@ def _braking_controls():
             style={"description_width": "initial"},
             layout=widgets.Layout(width="360px"),
         ),  # fmt: skip
-        "slack_mm": slider("slack per coupler (mm)", 25.0, 0.0, 75.0, 5.0, fmt=".0f", continuous=False),
+        "slack_mm": slider("slack e per coupler (mm)", 25.0, 0.0, 75.0, 5.0, fmt=".0f", continuous=False),
         "signal_speed": slider(
             "brake signal speed (m/s)", 250.0, 100.0, 300.0, 10.0, fmt=".0f", continuous=False
         ),

@@ -57,7 +57,7 @@ def _alpha_speed(beam) -> float:
 # ---------------------------------------------------------------------------
 # One force crossing the beam
 
-_DAMPING = {"ζ = 0": 0.0, "ζ = 1 %": 0.01, "ζ = 2 %": 0.02, "ζ = 5 %": 0.05}
+_DAMPING = {"ξ = 0": 0.0, "ξ = 1 %": 0.01, "ξ = 2 %": 0.02, "ξ = 5 %": 0.05}
 # α from 0.01 to 1.5: 250 points, 0.006 apart (none falls on the undamped resonance α = 1, where the
 # closed form is finite only as a limit); the closed form with 10 modes, as the docstring example.
 _ALPHAS = np.linspace(0.01, 1.5, 250)
@@ -85,7 +85,7 @@ def _one_crossing(speed: float, damping_ratio: float):
 
 def _explorer_controls():
     return {
-        "speed_kmh": slider("speed v (km/h)", 250.0, 20.0, 700.0, 5.0, fmt=".0f"),
+        "speed_kmh": slider("speed V (km/h)", 250.0, 20.0, 700.0, 5.0, fmt=".0f"),
         "position": slider("force at x/L", 0.5, 0.0, 1.5, 0.01),
         "damping": widgets.Dropdown(
             options=list(_DAMPING.items()),
@@ -117,9 +117,9 @@ def _explorer_setup(live, status):
     (curve,) = right.plot(_ALPHAS, _daf_curve(0.0), color=plots.COLORS[0], lw=2, label="chosen damping")
     (mark,) = right.plot([0.0], [1.0], "o", color=plots.COLORS[1], ms=8, label="chosen speed")
     right.axhline(1.0, color="0.6", lw=0.8)
-    right.set(xlim=(0.0, 1.5), ylim=(0.9, 1.85), xlabel="α = v/(2f₁L)", ylabel="dynamic amplification")
+    right.set(xlim=(0.0, 1.5), ylim=(0.9, 1.85), xlabel="α = V/(2f₁L)", ylabel="dynamic amplification")
     speed_axis = right.secondary_xaxis("top", functions=(lambda a: 3.6 * top * a, lambda k: k / (3.6 * top)))
-    speed_axis.set_xlabel("v (km/h)")
+    speed_axis.set_xlabel("V (km/h)")
     right.legend(loc="lower right", fontsize=8)
     live.animate(shape, force, curve, mark)
 
@@ -142,7 +142,7 @@ def _explorer_setup(live, status):
         at = speed * closed.time[0, peak]
         when = f"with the force at x = {at:.1f} m" if at <= _SPAN else f"{at - _SPAN:.1f} m after it left"
         status.value = (
-            f"v = {kmh:.0f} km/h, α = {alpha:.3f} · amplification {daf:.3f} (closed form, "
+            f"V = {kmh:.0f} km/h, α = {alpha:.3f} · amplification {daf:.3f} (closed form, "
             f"{_CURVE_MODES} modes): largest midspan deflection {1e3 * closed.deflection[0, peak]:.3f} mm "
             f"{when} · drawn: the force at x = {x:.1f} m{'' if on else ' (off the span)'}, "
             f"midspan {1e3 * float(np.interp(_SPAN / 2, _SHAPE_X, w)):.3f} mm"
@@ -168,10 +168,10 @@ def moving_load_explorer():
     the chosen fraction of the span (beyond 1 the force has left and the beam vibrates
     freely), from the modal march of :func:`raildyn.bridge.coupled.crossing` with three modes;
     the static midspan deflection PL³/48EI is dashed. Right: the dynamic amplification (largest
-    midspan deflection over the static one) against α = v/(2f₁L), by the closed form of
+    midspan deflection over the static one) against α = V/(2f₁L), by the closed form of
     :func:`raildyn.bridge.beam.moving_force` with ten modes, for four damping ratios (the chosen
-    one bold), with the chosen speed marked. Controls: speed v (km/h), the force's position x/L
-    and the damping ratio ζ.
+    one bold), with the chosen speed marked. Controls: speed V (km/h), the force's position x/L
+    and the damping ratio ξ.
 
     Returns
     -------
@@ -228,12 +228,12 @@ def _resonance_setup(live, status):
     (ax,) = live.axes[0]
     kmh = 3.6 * _TRAIN_SPEEDS
     marks = [
-        ax.axvline(kmh[0], color=plots.COLORS[1], lw=1.2, ls=(0, (4, 2 * i)), label=f"v = f₁d/{i}")
+        ax.axvline(kmh[0], color=plots.COLORS[1], lw=1.2, ls=(0, (4, 2 * i)), label=f"V = f₁d/{i}")
         for i in range(1, _ORDERS + 1)
     ]
     (line,) = ax.plot(kmh, _envelope(18.0, 20.0, 4.0), color=plots.COLORS[0], lw=2, label="amplification")
     ax.axhline(1.0, color="0.6", lw=0.8)
-    ax.set(xlim=_TRAIN_KMH, xlabel="v (km/h)", ylabel="largest midspan deflection / static")
+    ax.set(xlim=_TRAIN_KMH, xlabel="V (km/h)", ylabel="largest midspan deflection / static")
     ax.set_yscale("log")
     ax.set_ylim(0.8, 40.0)
     ax.set_yticks([1, 2, 5, 10, 20], ["1", "2", "5", "10", "20"])
@@ -256,7 +256,7 @@ def _resonance_setup(live, status):
         top = int(np.argmax(daf))
         cancel = codes.cancellation_spans(d, 1, 3)
         status.value = (
-            f"d = {d:.1f} m, L = {L:.1f} m, f₁ = {f1:.1f} Hz · resonances v = f₁d/i: "
+            f"d = {d:.1f} m, L = {L:.1f} m, f₁ = {f1:.1f} Hz · resonances V = f₁d/i: "
             + ", ".join(f"{3.6 * s:.0f}" for s in resonances)
             + f" km/h · largest amplification {daf[top]:.2f} at {3.6 * _TRAIN_SPEEDS[top]:.0f} km/h · "
             f"L/d = {L / d:.2f}: the first resonance cancels at L/d = "
@@ -284,7 +284,7 @@ def train_resonance():
     supported span L of 10 t/m whose EI gives the chosen f₁, with 1 % damping and three modes.
     The largest midspan deflection over the static one, for 80 speeds from 40 to 420 km/h, comes
     from the closed form of :func:`raildyn.bridge.beam.moving_force`; the resonance speeds
-    v = f₁d/i (:func:`raildyn.bridge.codes.resonance_speeds`) are marked, and the status line
+    V = f₁d/i (:func:`raildyn.bridge.codes.resonance_speeds`) are marked, and the status line
     gives the spans at which the first resonance cancels
     (:func:`raildyn.bridge.codes.cancellation_spans`). Controls: coach length d (m), span L (m)
     and first frequency f₁ (Hz).
@@ -346,7 +346,7 @@ def _body_acceleration(run) -> np.ndarray:
 
 
 def _models_controls():
-    return {"speed_kmh": slider("speed v (km/h)", 200.0, 40.0, 350.0, 5.0, fmt=".0f")}
+    return {"speed_kmh": slider("speed V (km/h)", 200.0, 40.0, 350.0, 5.0, fmt=".0f")}
 
 
 def _models_setup(live, status):
@@ -406,7 +406,7 @@ def _models_setup(live, status):
             line.set_data(speed * run.time, a)
             peaks.append(float(np.abs(a).max()))
         status.value = (
-            f"v = {kmh:.0f} km/h (α = {speed / (2 * f1 * _SPAN):.3f}; the bogies' resonance f₁·19 m at "
+            f"V = {kmh:.0f} km/h (α = {speed / (2 * f1 * _SPAN):.3f}; the bogies' resonance f₁·19 m at "
             f"{3.6 * f1 * 2 * _CAR.semi_bogie_spacing:.0f} km/h) · amplification: "
             + ", ".join(f"{name} {daf:.3f}" for name, daf in zip(_MODEL_NAMES, dafs, strict=True))
             + f" · Annex C {factor:.3f}, Φ₂ {phi2:.3f}, AREMA {arema:.3f} · largest body acceleration: "
@@ -438,7 +438,7 @@ def load_models():
     axle's position, beside the slow crossing. Middle: each model's amplification, beside
     AREMA's impact and EN 1991-2's Φ₂ for the span and Annex C's factor for a real train at the
     speed (:mod:`raildyn.bridge.codes`). Right: the body's vertical acceleration (the full car's;
-    the mean of the four sprung masses) beside EN 1990's comfort levels. Control: speed v (km/h).
+    the mean of the four sprung masses) beside EN 1990's comfort levels. Control: speed V (km/h).
 
     Returns
     -------
