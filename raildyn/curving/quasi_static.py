@@ -81,7 +81,8 @@ class QuasiStaticCurving(SteadyCurving):
     flange_contact : ndarray of bool, (k,)
         Whether each wheelset's flange touches a rail (|offset| beyond the flangeway clearance).
     wear_number : ndarray, (k,)
-        Tγ of each wheelset's two wheels together, N (≥ 0).
+        E_w (the literature's Tγ) of each wheelset's two wheels together: the creep forces' energy
+        dissipated per metre run, N (≥ 0).
     wheel_lateral : ndarray, (k, 2)
         Y, the rail's lateral force on each wheel [inner, outer] in the track's plane, towards
         the curve's centre, N: the creep force, the tread's normal force tilted by its contact
