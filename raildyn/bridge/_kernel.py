@@ -165,7 +165,7 @@ def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape
     and their second time derivative into accel (s, k).
 
     Mode j of unit modal load sin(Ω_j t) while a force is on the span (0 ≤ t − τ ≤ T = L/v) is
-    q = a sin Ω(t−τ) + b cos Ω(t−τ) + Re{C_f e^{λ(t−τ)}}, λ = −ζω + iω_d, from rest; after it
+    q = a sin Ω(t−τ) + b cos Ω(t−τ) + Re{C_f e^{λ(t−τ)}}, λ = −ξω + iω_d, from rest; after it
     leaves, Re{C_e e^{λ(t−τ−T)}} from its state at exit. The forces that have left are carried
     as one complex sum, advanced by e^{λΔt} from sample to sample, so a long train costs
     O(samples + axles) per mode and speed, not their product. ``shape`` holds 2φ_j(x)/(mL).

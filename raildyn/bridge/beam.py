@@ -3,7 +3,7 @@
 The beam of span L, flexural rigidity EI and mass per length m has the modes sin(jπx/L) at
 ω_j = (jπ/L)² √(EI/m). A force P crossing at the speed v loads mode j with
 p_j(t) = (2P/(mL)) sin(jπvt/L) while it is on the span (0 ≤ t ≤ L/v), so each modal
-coordinate obeys q̈ + 2ζω_j q̇ + ω_j² q = p_j(t): a damped oscillator under a harmonic force
+coordinate obeys q̈ + 2ξω_j q̇ + ω_j² q = p_j(t): a damped oscillator under a harmonic force
 from rest, solved here in closed form, mode by mode (Frýba 1972, ch. 1; Garg & Dukkipati
 1984, ch. 10). After the force leaves, each mode vibrates freely. A train of forces is the
 sum of one force's response delayed by each axle's distance over the speed; the compiled
@@ -39,7 +39,7 @@ class SimplySupportedBeam:
     mass_per_length : float
         m, kg/m (> 0).
     damping_ratio : float
-        ζ of every mode, in [0, 1).
+        ξ of every mode, in [0, 1).
     modes : int
         How many modes the solutions keep, in [1, 200].
 

@@ -98,7 +98,7 @@ class ContinuousBeam:
     mass_per_length : float
         m, kg/m (> 0).
     damping_ratio : float
-        ζ of every mode, in [0, 1).
+        ξ of every mode, in [0, 1).
     modes : int
         How many modes are kept, in [1, 200].
 

@@ -1,7 +1,7 @@
 """A vehicle or a train crossing a bridge, the two coupled through the wheel forces (chapter 10).
 
 The beam moves in its modes, w(x, t) = Σ φ_i(x) b_i(t) (downwards), each with its modal
-mass μ_i, frequency ω_i and damping ratio ζ. Axle j stands at x_j = vt − d_j; its wheel
+mass μ_i, frequency ω_i and damping ratio ξ. Axle j stands at x_j = vt − d_j; its wheel
 rides on the rail, whose height there is u_j = −w(x_j, t) + r(x_j) (r: the track's
 irregularity, upwards), so that its rate and acceleration carry the moving point:
 
@@ -13,7 +13,7 @@ wheel presses on the rail with
     F_j = W_j + m_j ü_j − (G_Kᵀ q + G_Cᵀ q̇ − K_W u − C_W u̇)_j
 
 (its static load, its unsprung mass's inertia, less the suspension's dynamic pull upwards).
-The beam's modes take the forces of the axles on it, μ_i(b̈_i + 2ζω_i ḃ_i + ω_i² b_i) =
+The beam's modes take the forces of the axles on it, μ_i(b̈_i + 2ξω_i ḃ_i + ω_i² b_i) =
 Σ_j φ_i(x_j) F_j. Put together, the coupled matrices change as the axles move, and each
 step of the average-acceleration Newmark scheme (chapter 2's, unconditionally stable) is
 assembled and solved afresh; the loop is compiled (``raildyn.bridge._kernel``).

@@ -2,16 +2,16 @@
 
 The rail on its bed, or a long viaduct on soft supports: a beam of flexural rigidity EI and mass
 m per length rests on springs of modulus k (N/m per m of beam) and dashpots c (N·s/m per m), and
-a force P moves along it at the speed v. In the coordinate x = X − vt that travels with the force
-(x > 0 ahead of it) the steady state obeys
+a force P moves along it at the speed v. In the coordinate x̄ = x − vt that travels with the force
+(x̄ > 0 ahead of it; the ``x`` that the methods take) the steady state obeys, with ′ = d/dx̄,
 
-    EI w'''' + m v² w'' − c v w' + k w = P δ(x)
+    EI w'''' + m v² w'' − c v w' + k w = P δ_D(x̄)
 
 (Frýba 1972, ch. 9; Kenney 1954). Scaled by the characteristic length 1/β, β = (k/(4EI))^{1/4},
 and with the speed ratio α = v/v_cr, v_cr = (4kEI/m²)^{1/4}, and the foundation's damping ratio
-ζ = c/(2√(km)), its characteristic polynomial in ρ = r/β (w ∝ e^{r x}) is
+ξ = c/(2√(km)), its characteristic polynomial in ρ = r/β (w ∝ e^{r x}) is
 
-    ρ⁴/4 + α² ρ² − 2ζα ρ + 1 = 0.
+    ρ⁴/4 + α² ρ² − 2ξα ρ + 1 = 0.
 
 Its roots give the steady deflection in closed form: for x > 0 the two with Re ρ < 0, for x < 0
 the two with Re ρ > 0, each weighted by its residue (the Fourier integral of the solution closed
@@ -91,7 +91,7 @@ class WinklerBeam:
 
     @property
     def damping_ratio(self) -> float:
-        """ζ = c/(2√(km)): the foundation's damping relative to its critical value."""
+        """ξ = c/(2√(km)): the foundation's damping relative to its critical value."""
         return self.damping / (2 * np.sqrt(self.foundation_modulus * self.mass_per_length))
 
     def static_deflection(self, x, force) -> np.ndarray:
@@ -120,7 +120,7 @@ class WinklerBeam:
     def steady_deflection(self, x, speed, force) -> np.ndarray:
         """The steady deflection about a force moving at constant speed, m, in the moving coordinate.
 
-        The closed form of the module docstring: with ρ_j the roots of ρ⁴/4 + α²ρ² − 2ζαρ + 1 and
+        The closed form of the module docstring: with ρ_j the roots of ρ⁴/4 + α²ρ² − 2ξαρ + 1 and
         p′ the derivative of the (dimensional) polynomial EI r⁴ + m v² r² − c v r + k,
         w(x) = P Σ_{Re r_j < 0} e^{r_j x}/p′(r_j) ahead of the force (x ≥ 0) and
         w(x) = −P Σ_{Re r_j > 0} e^{r_j x}/p′(r_j) behind it (Frýba 1972, ch. 9).

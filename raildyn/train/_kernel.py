@@ -78,7 +78,7 @@ def _segment(xs, position):
 
 @numba.njit(cache=True)
 def rhs(t, y, table, scalars, route):
-    """dy/dt of ``y = [x_0, δ_0 … δ_{n−2}, v_0 … v_{n−1}]`` (see TrainModel.initial_state)."""
+    """dy/dt of ``y = [x_0, Δx_0 … Δx_{n−2}, v_0 … v_{n−1}]`` (see TrainModel.initial_state)."""
     n = table.shape[1]
     out = np.empty(2 * n)
     force = np.zeros(n)

@@ -103,21 +103,21 @@ class DraftGear:
         Parameters
         ----------
         extension : float or array
-            Coupler extension δ, m (see ``force``), within ±1 m.
+            Coupler extension Δx, m (see ``force``), within ±1 m.
 
         Returns
         -------
         ndarray
             Deflection u >= 0, m, the shape of ``extension``: 0 inside the gap,
-            ``|δ| − slack/2`` beyond the blend, ``(|δ| − slack/2 + ε)²/(4ε)`` within it.
+            ``|Δx| − slack/2`` beyond the blend, ``(|Δx| − slack/2 + ε)²/(4ε)`` within it.
         """
         u, _ = self._deflection_and_slope(_extension("extension", extension))
         return u
 
     def _deflection_and_slope(self, extension):
-        """Deflection u >= 0 (m) and du/d|δ| for a coupler extension δ (m)."""
+        """Deflection u >= 0 (m) and du/d|Δx| for a coupler extension Δx (m)."""
         if self.slack == 0:
-            # No gap, no corner to smooth: the gear deflects from δ = 0.
+            # No gap, no corner to smooth: the gear deflects from Δx = 0.
             return np.abs(extension), np.ones(np.shape(extension))
         eps = self.smoothing
         a = np.abs(extension) - 0.5 * self.slack
@@ -131,11 +131,11 @@ class DraftGear:
         Parameters
         ----------
         extension : float or array
-            δ = (separation of the two vehicle centres) − (its value with the slack
+            Δx = (separation of the two vehicle centres) − (its value with the slack
             centred), m; > 0 pulls the vehicles apart; within ±1 m (beyond it the
             vehicles have parted or overrun each other).
         rate : float or array
-            dδ/dt, m/s; broadcasts against ``extension``.
+            dΔx/dt, m/s; broadcasts against ``extension``.
 
         Returns
         -------

@@ -207,7 +207,7 @@ class TrainModel:
     def initial_state(self, speed: float, extension: float = 0.0) -> np.ndarray:
         """State with every vehicle at ``speed`` and every coupler at ``extension``.
 
-        The state is ``[x_0, δ_0 … δ_{n−2}, v_0 … v_{n−1}]``: the route position of
+        The state is ``[x_0, Δx_0 … Δx_{n−2}, v_0 … v_{n−1}]``: the route position of
         the leading vehicle's centre, the coupler extensions and the speeds. Keeping
         the extensions (millimetres) as states, rather than the positions (kilometres),
         lets the relative tolerance of the integrator act on what the couplers feel.
@@ -218,7 +218,7 @@ class TrainModel:
             Speed of every vehicle, m/s (negative runs backwards), at most 200 in size
             (above the wheel–rail speed record).
         extension : float
-            Extension δ of every coupler, m (0 centres the slack), within ±1 m.
+            Extension Δx of every coupler, m (0 centres the slack), within ±1 m.
 
         Returns
         -------
@@ -252,7 +252,7 @@ class TrainModel:
         return np.concatenate([y[:1], y[:1] - behind])
 
     def coupler_extension(self, x, v):
-        """Coupler extensions δ and their rates from positions and speeds.
+        """Coupler extensions Δx and their rates from positions and speeds.
 
         Parameters
         ----------
@@ -264,9 +264,9 @@ class TrainModel:
         Returns
         -------
         extension : ndarray, shape (n−1,) or (n−1, k)
-            δ, m (+ stretched).
+            Δx, m (+ stretched).
         rate : ndarray, shape of ``extension``
-            dδ/dt, m/s.
+            dΔx/dt, m/s.
         """
         x = self._vehicle_array("x", x)
         v = self._vehicle_array("v", v)
@@ -364,7 +364,7 @@ class TrainModel:
         t : float
             Time, s.
         y : array, shape (2n,) or (2n, k)
-            State ``[x_0, δ, v]`` (see :meth:`initial_state`), or one per column.
+            State ``[x_0, Δx, v]`` (see :meth:`initial_state`), or one per column.
 
         Returns
         -------
@@ -408,7 +408,7 @@ class TrainModel:
         t : float
             Time, s.
         y : array, shape (2n,) or (2n, k)
-            State ``[x_0, δ, v]`` (see :meth:`initial_state`), or one per column.
+            State ``[x_0, Δx, v]`` (see :meth:`initial_state`), or one per column.
 
         Returns
         -------
@@ -595,7 +595,7 @@ def simulate(
         Speed of every vehicle at t = 0, m/s (negative runs backwards), at most 200 in size
         (above the wheel–rail speed record).
     initial_extension : float
-        Coupler extension δ at t = 0, m: 0 centres the slack, ``+slack/2`` starts stretched
+        Coupler extension Δx at t = 0, m: 0 centres the slack, ``+slack/2`` starts stretched
         and ``−slack/2`` bunched; within ±1 m.
     samples : int
         Number of output times, 2 to 1000000, uniform over [0, duration].

@@ -32,13 +32,13 @@ SHORT_TON = 2000 * LB
 #: m/s per mile per hour (exact).
 MPH = 1609.344 / 3600
 
-# Original Davis coefficients by vehicle kind {davis1926}: b in lb/ton per mph, C in lb/ton per
-# (ft²·mph²/(ton-per-axle·axles)). Freight cars b = 0.045, C = 0.0005; locomotives and passenger
-# cars b = 0.03 with C = 0.0024 for a locomotive at the head and 0.00034 for a trailing car.
+# Original Davis coefficients by vehicle kind {davis1926}: B in lb/ton per mph, c_a in lb/ton per
+# (ft²·mph²/(ton-per-axle·axles)). Freight cars B = 0.045, c_a = 0.0005; locomotives and passenger
+# cars B = 0.03 with c_a = 0.0024 for a locomotive at the head and 0.00034 for a trailing car.
 _DAVIS_ORIGINAL = {"freight": (0.045, 0.0005), "locomotive": (0.03, 0.0024), "passenger": (0.03, 0.00034)}
 # Modified (AREA Committee 16) form: R = 0.6 + 20/w + 0.01 V + K V²/(w n), with K = 0.07 for
 # conventional equipment, 0.0935 for containers and 0.16 for trailers on flat cars {hay1982}.
-#: Drag coefficient K of the modified Davis formula by kind of equipment {hay1982}.
+#: Drag coefficient c_a of the modified Davis formula by kind of equipment {hay1982}.
 MODIFIED_DAVIS_K = {"conventional": 0.07, "container": 0.0935, "trailer on flat car": 0.16}
 
 # AREA curve resistance: 0.8 lb per ton per degree of curve {hay1982}. A degree of curve (arc
@@ -85,14 +85,16 @@ def davis_resistance(
 
     Original form {davis1926}, per short ton of weight:
 
-    .. math:: R = 1.3 + 29/w + b V + C A V^2/(w n) \\quad \\text{lb/ton}
+    .. math:: R_t = 1.3 + 29/w + B V + c_a A_f V^2/(w n) \\quad \\text{lb/ton}
 
     modified (AREA) form {hay1982}:
 
-    .. math:: R = 0.6 + 20/w + 0.01 V + K V^2/(w n) \\quad \\text{lb/ton}
+    .. math:: R_t = 0.6 + 20/w + 0.01 V + c_a V^2/(w n) \\quad \\text{lb/ton}
 
     with ``w`` the weight per axle in short tons, ``n`` the axles, ``V`` in mph
-    and ``A`` in ft². The resistance of the vehicle is ``R`` times its weight in tons.
+    and the frontal area ``A_f`` in ft². The resistance of the vehicle is ``R_t`` times its weight in
+    tons: a quadratic A + BV + CV² in the speed, whose coefficients are the vehicle's Davis
+    coefficients (book ch. 9).
 
     Parameters
     ----------
