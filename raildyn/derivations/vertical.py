@@ -89,8 +89,7 @@ def _body_on_two_trucks(title: str, truck: str, axles: int, spacing: str, paths:
     )
     U = (k_s * sum(u**2 for u in secondary) + k_p * sum(u**2 for u in primary)) / 2
     D = (c_s * sum(rate(u) ** 2 for u in secondary) + c_p * sum(rate(u) ** 2 for u in primary)) / 2
-    # expanded first: the derivatives of a sum of monomials are quicker (0.8 s against 1.3 s)
-    M, C, K, GK, GC = lagrange(sympy.expand(T), sympy.expand(U), sympy.expand(D), q, inputs=w)
+    M, C, K, GK, GC = lagrange(T, U, D, q, inputs=w)
     s = [sympy.expand(ahead[0] - x) for x in ahead]
     symbols = {"m_c": m_c, "I_c": I_c, "m_t": m_t, "I_t": I_t, "l": l, "b": b}
     symbols |= {"k_p": k_p, "c_p": c_p, "k_s": k_s, "c_s": c_s}
@@ -269,9 +268,7 @@ def freight_rock_and_roll() -> Derivation:
     U_springs = k * sum(u**2 for u in nests) / 2
     U_weight = m * g * z_g
     D = c * sum(u.diff(time) ** 2 for u in nests) / 2
-    M, C, K, GK, GC = lagrange(
-        sympy.expand(T), sympy.expand(U_springs + U_weight), sympy.expand(D), q, inputs=w
-    )
+    M, C, K, GK, GC = lagrange(T, U_springs + U_weight, D, q, inputs=w)
     return Derivation(
         title="freight car: body bounce, pitch and roll on four spring nests",
         coordinates=q,
