@@ -341,7 +341,7 @@ def lagrange(kinetic, potential, dissipation, coords: Sequence, forces=None, inp
         for i, (qi, qd) in enumerate(zip(qs, qds, strict=True))
     ]
     rest = dict.fromkeys(qs + qds + qdds + ws + wds + wdds, 0)
-    if p and any(sympy.diff(e, x).subs(rest) != 0 for e in E for x in wdds):
+    if p and any(sympy.diff(e, x).xreplace(rest) != 0 for e in E for x in wdds):
         raise ValueError(
             "kinetic must not couple the coordinates' rates to the inputs' rates (an input acceleration)"
         )
@@ -350,7 +350,7 @@ def lagrange(kinetic, potential, dissipation, coords: Sequence, forces=None, inp
         if not variables:
             return sympy.zeros(n, 0)
         return sympy.Matrix(
-            n, len(variables), lambda i, j: sympy.expand(sympy.diff(E[i], variables[j]).subs(rest))
+            n, len(variables), lambda i, j: sympy.expand(sympy.diff(E[i], variables[j]).xreplace(rest))
         )
 
     return coefficients(qdds), coefficients(qds), coefficients(qs), -coefficients(ws), -coefficients(wds)

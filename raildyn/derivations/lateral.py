@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import sympy
 
 from raildyn.constants import GRAVITY
-from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, time
+from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
 
 __all__ = ["bogie", "lateral_car"]
 
@@ -234,72 +234,6 @@ def _bogie_pieces(tag, frame, wheelsets, inputs, seat_y, seat_psi, w: _WheelsetS
     return T, U, D, forces, creepages
 
 
-def _quadratic_matrices(T, U, D, Q, q, w):
-    """M, C, K, G_K, G_C of Lagrange's equations when T, U, D are quadratic and Q linear.
-
-    The same equations as :func:`raildyn.derivations.lagrange` (d/dt ∂T/∂q̇ − ∂T/∂q + ∂U/∂q + ∂D/∂q̇
-    = Q, linearised at rest), taken term by term: for quadratic T, U, D the matrices are their
-    second derivatives, M = ∂²T/∂q̇², K = ∂²U/∂q² − ∂Q/∂q, and so on. The coordinates and rates are
-    first replaced by plain symbols and every expression expanded, so that no large expression is
-    simplified (sympy differentiates functions of t slowly). A cosine in U (the body's weight) is
-    replaced by its Taylor polynomial 1 − x²/2, which is all a linearisation keeps of it.
-    """
-    q_plain = sympy.symbols(f"q0:{len(q)}")
-    qd_plain = sympy.symbols(f"qd0:{len(q)}")
-    w_plain = sympy.symbols(f"w0:{len(w)}")
-    wd_plain = sympy.symbols(f"wd0:{len(w)}")
-    plain = {c.diff(time): s for c, s in zip([*q, *w], [*qd_plain, *wd_plain], strict=True)}
-    plain |= dict(zip([*q, *w], [*q_plain, *w_plain], strict=True))
-
-    def polynomial(expr):
-        expr = sympy.sympify(expr).xreplace(plain)  # top down: a derivative is replaced whole
-        return sympy.expand(expr.replace(sympy.cos, lambda x: 1 - x**2 / 2))
-
-    gens = [*q_plain, *qd_plain, *w_plain, *wd_plain]
-    T, U, D = (_monomials(polynomial(e), gens) for e in (T, U, D))
-    Q = [_monomials(polynomial(f), gens) for f in Q]
-
-    def second(form, rows, cols):
-        # ∂²/∂a∂b of c·a·b is c, of c·a² is 2c.
-        def entry(i, j):
-            a, b = rows[i], cols[j]
-            key = tuple(sorted((a, b), key=gens.index))
-            return form.get(key, sympy.Integer(0)) * (2 if a == b else 1)
-
-        return sympy.Matrix(len(rows), len(cols), entry)
-
-    def first(vector, cols):
-        return sympy.Matrix(len(vector), len(cols), lambda i, j: vector[i].get((cols[j],), sympy.Integer(0)))
-
-    M = second(T, qd_plain, qd_plain)
-    C = second(D, qd_plain, qd_plain) - first(Q, qd_plain)
-    K = second(U, q_plain, q_plain) - first(Q, q_plain)
-    GK = -second(U, q_plain, w_plain) + first(Q, w_plain)
-    GC = -second(D, qd_plain, wd_plain) + first(Q, wd_plain)
-    return M, C, K, GK, GC
-
-
-def _monomials(expr, gens) -> dict:
-    """An expanded polynomial in ``gens`` as {monomial: coefficient}, a monomial a tuple of gens in order.
-
-    The coefficients are expressions in the other symbols (the parameters), each collected by
-    ``sympy.Add`` once; splitting the terms this way is much quicker than differentiating.
-    """
-    order = {g: i for i, g in enumerate(gens)}
-    parts: dict = {}
-    for term in sympy.Add.make_args(expr):
-        coefficient, monomial = [], []
-        for factor in sympy.Mul.make_args(term):
-            base, power = factor.as_base_exp()
-            if base in order:
-                monomial += [base] * int(power)
-            else:
-                coefficient.append(factor)
-        key = tuple(sorted(monomial, key=order.__getitem__))
-        parts.setdefault(key, []).append(sympy.Mul(*coefficient))
-    return {key: sympy.Add(*terms) for key, terms in parts.items()}
-
-
 def _equation_steps(M, C, K, GK, GC, q, w, rows, names) -> tuple:
     """Steps that write out the equations of motion of some coordinates, row by row of the matrices.
 
@@ -363,7 +297,7 @@ def bogie() -> Derivation:
         "", (q[0], q[1]), wheelsets, track, sympy.Integer(0), sympy.Integer(0), w, s, V
     )
     Q = sympy.Matrix([forces.get(c, 0) for c in q])
-    M, C, K, GK, GC = _quadratic_matrices(T, U, D, Q, q, inputs)
+    M, C, K, GK, GC = lagrange(T, U, D, q, forces=Q, inputs=inputs)
     return Derivation(
         title="two-axle bogie under a body that runs straight",
         coordinates=q,
@@ -465,7 +399,7 @@ def lateral_car() -> Derivation:
         if k == 0:
             pieces = {"U": Ub, "D": Db}
     Q = sympy.Matrix([forces.get(c, 0) for c in q])
-    M, C, K, GK, GC = _quadratic_matrices(T, U, D, Q, q, inputs)
+    M, C, K, GK, GC = lagrange(T, U, D, q, forces=Q, inputs=inputs)
     return Derivation(
         title="passenger car on two bogies (15 coordinates)",
         coordinates=q,
