@@ -14,7 +14,6 @@ from derivation_helpers import assert_derived, system_matrices
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from raildyn import derivations
 from raildyn.constants import GRAVITY
 from raildyn.derivations.lateral import bogie, lateral_car
 from raildyn.vehicles.lateral import COOPERRIDER_CAR, Bogie, Car
@@ -122,20 +121,6 @@ def test_lateral_car_roll_closed_form():
         assert K[2, 2] == pytest.approx(expected, rel=1e-13)
     for GK in (mats.GK, derived[3]):
         assert GK[2, 4] == pytest.approx(kphi / (4 * a), rel=1e-13)
-
-
-def test_bogie_extraction_agrees_with_lagrange():
-    # The quick extraction of the matrices from T, U, D and Q must give what the package's general
-    # Lagrange's equations (derivations.lagrange, which differentiates and simplifies) give.
-    d = bogie()
-    step = {s.caption: s.equation.rhs for s in d.steps}
-    T = step["kinetic energy"]
-    U = step["potential energy of the primary and secondary springs"]
-    D = step["Rayleigh's dissipation function of the dampers"]
-    Q = sympy.Matrix(step["generalized forces of the wheel–rail contact (virtual work)"])
-    general = derivations.lagrange(T, U, D, d.coordinates, forces=Q, inputs=d.inputs)
-    for mine, theirs in zip((d.M, d.C, d.K, d.GK, d.GC), general, strict=True):
-        assert (mine - theirs).applyfunc(sympy.expand) == sympy.zeros(*mine.shape)
 
 
 def test_derivations_are_cached_and_name_their_coordinates():
