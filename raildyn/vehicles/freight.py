@@ -440,7 +440,9 @@ def wedge_energy_per_cycle(
 ) -> float:
     """Energy a wedge dissipates over one cycle of imposed motion X sin ωt: ∮ F(v) v dt.
 
-    With the ideal law (no ``velocity_scale``) the result is 4 F X.
+    With the ideal law (no ``velocity_scale``) the result is 4 F X, returned in that closed form: the
+    kinks of F sgn(cos ωt) at the turning points would hold a quadrature to an error of about h²/24
+    (4e-9 of 4FX at n = 20 000), which a model compared with its derivation would show.
 
     Parameters
     ----------
@@ -453,9 +455,9 @@ def wedge_energy_per_cycle(
     velocity_scale : float, optional
         v_ε of the smooth law F tanh(v/v_ε), m/s (> 0); None for the ideal law.
     n : int
-        Midpoint samples over the cycle, in [16, 10⁶]: the midpoint rule on this periodic
-        integrand has converged to rounding long before the upper bound, which keeps the
-        work and memory small.
+        Midpoint samples over the cycle for the smooth law, in [16, 10⁶]: the midpoint rule on this
+        smooth periodic integrand has converged to rounding long before the upper bound, which keeps
+        the work and memory small.
 
     Returns
     -------
@@ -473,6 +475,13 @@ def wedge_energy_per_cycle(
     if velocity_scale is not None:
         velocity_scale = _checks.positive("velocity_scale", velocity_scale)
     n = _checks.integer("n", n, low=16, high=10**6)
+    if velocity_scale is None:
+        energy = 4.0 * F * X
+        if not np.isfinite(energy):
+            raise ValueError(
+                f"friction_force {F!r} N times amplitude {X!r} m overflows: the energy is not a finite float"
+            )
+        return energy
     phase = (np.arange(n) + 0.5) * (2 * np.pi / n)  # ωt at the midpoints: the integrand is periodic
     force = coulomb_friction(X * w * np.cos(phase), F, velocity_scale=velocity_scale)
     # ∮ F(v) v dt with v = Xω cos ωt and dt = dφ/ω: X ∮ F(v) cos φ dφ, no product of large numbers.
