@@ -1,8 +1,8 @@
 """A simply supported Euler–Bernoulli beam under a moving constant force (book chapter 10), modal.
 
 The beam of span L, flexural rigidity EI and mass per length m has the modes sin(jπx/L) at
-ω_j = (jπ/L)² √(EI/m). A force P crossing at the speed v loads mode j with
-p_j(t) = (2P/(mL)) sin(jπvt/L) while it is on the span (0 ≤ t ≤ L/v), so each modal
+ω_j = (jπ/L)² √(EI/m). A force P crossing at the speed V loads mode j with
+p_j(t) = (2P/(mL)) sin(jπVt/L) while it is on the span (0 ≤ t ≤ L/V), so each modal
 coordinate obeys q̈ + 2ξω_j q̇ + ω_j² q = p_j(t): a damped oscillator under a harmonic force
 from rest, solved here in closed form, mode by mode (Frýba 1972, ch. 1; Garg & Dukkipati
 1984, ch. 10). After the force leaves, each mode vibrates freely. A train of forces is the

@@ -1,11 +1,11 @@
 """A vehicle or a train crossing a bridge, the two coupled through the wheel forces (chapter 10).
 
 The beam moves in its modes, w(x, t) = Σ φ_i(x) b_i(t) (downwards), each with its modal
-mass μ_i, frequency ω_i and damping ratio ξ. Axle j stands at x_j = vt − d_j; its wheel
+mass μ_i, frequency ω_i and damping ratio ξ. Axle j stands at x_j = Vt − d_j; its wheel
 rides on the rail, whose height there is u_j = −w(x_j, t) + r(x_j) (r: the track's
 irregularity, upwards), so that its rate and acceleration carry the moving point:
 
-    u̇_j = −(φ_j·ḃ + v φ′_j·b) + v r′,     ü_j = −(φ_j·b̈ + 2v φ′_j·ḃ + v² φ″_j·b) + v² r″.
+    u̇_j = −(φ_j·ḃ + V φ′_j·b) + V r′,     ü_j = −(φ_j·b̈ + 2V φ′_j·ḃ + V² φ″_j·b) + V² r″.
 
 The sprung vehicle answers the rail heights, M q̈ + C q̇ + K q = G_K u + G_C u̇, and the
 wheel presses on the rail with

@@ -2,13 +2,13 @@
 
 The rail on its bed, or a long viaduct on soft supports: a beam of flexural rigidity EI and mass
 m per length rests on springs of modulus k (N/m per m of beam) and dashpots c (N·s/m per m), and
-a force P moves along it at the speed v. In the coordinate x̄ = x − vt that travels with the force
+a force P moves along it at the speed V. In the coordinate x̄ = x − Vt that travels with the force
 (x̄ > 0 ahead of it; the ``x`` that the methods take) the steady state obeys, with ′ = d/dx̄,
 
-    EI w'''' + m v² w'' − c v w' + k w = P δ_D(x̄)
+    EI w'''' + m V² w'' − c V w' + k w = P δ_D(x̄)
 
 (Frýba 1972, ch. 9; Kenney 1954). Scaled by the characteristic length 1/β, β = (k/(4EI))^{1/4},
-and with the speed ratio α = v/v_cr, v_cr = (4kEI/m²)^{1/4}, and the foundation's damping ratio
+and with the speed ratio α = V/V_cr, V_cr = (4kEI/m²)^{1/4}, and the foundation's damping ratio
 ξ = c/(2√(km)), its characteristic polynomial in ρ = r/β (w ∝ e^{r x}) is
 
     ρ⁴/4 + α² ρ² − 2ξα ρ + 1 = 0.
