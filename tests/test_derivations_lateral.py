@@ -2,8 +2,7 @@
 
 Each derived model is compared with the numeric model over random parameter sets (hypothesis) at
 several speeds, to round-off (tests/derivation_helpers.py says why 1e-12 of each matrix's largest
-entry); one entry of each is also checked against a closed form written out by hand, and the
-bogie's quick extraction of the matrices against the package's general Lagrange equations.
+entry); one entry of each is also checked against a closed form written out by hand.
 """
 
 from __future__ import annotations
