@@ -96,7 +96,7 @@ def test_nadal_chart_draws_the_limit_and_the_cars_quotient():
     np.testing.assert_allclose(level.get_ydata(), [quotient, quotient], rtol=1e-6)
     axle = climb.wheel_climb(state.wheel_lateral[0], state.wheel_vertical[0], np.radians(65.0), 0.2)
     status = status_line(container)
-    assert f"Y/Q = {quotient:.3f}, Nadal's limit at δ = 65.0°, μ = 0.20: {nadal:.3f}" in status
+    assert f"Y/Q = {quotient:.3f}, Nadal's limit at ϑ_f = 65.0°, μ = 0.20: {nadal:.3f}" in status
     assert "below Nadal's limit: no climb" in status
     assert f"Σ|Y/Q| = {axle.axle_sum:.3f} against Weinstock's {axle.weinstock_limit:.3f}" in status
     assert ax.texts[-1].get_text() == f"Y/Q {quotient:.2f} < {nadal:.2f}: no climb"

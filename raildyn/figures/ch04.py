@@ -41,7 +41,7 @@ def hertz_coefficients_figure() -> Figure:
 
 @register(
     "fig4.creep",
-    "Lateral creep force against lateral creepage for a = 6 mm, b = 4 mm, N = 100 kN, μ = 0.3, no spin: "
+    "Lateral creep force against lateral creepage for a_c = 6 mm, b_c = 4 mm, N = 100 kN, μ = 0.3, no spin: "
     "Kalker's linear theory, Carter's 2-D law and Johnson–Vermeulen with the same initial slope, the "
     "saturation of Shen, Hedrick and Elkins, Polach's method and FASTSIM.",
     chapter=4,
@@ -57,7 +57,7 @@ def creep_laws_figure() -> Figure:
     "fig4.adhesion",
     "Adhesion coefficient −F_x/N against longitudinal creepage by Polach's (2005) method with the "
     "parameters fitted to dry and to wet rail (friction falling with slip speed), at 10 and 30 m/s; "
-    "a = 6 mm, b = 4 mm, N = 100 kN.",
+    "a_c = 6 mm, b_c = 4 mm, N = 100 kN.",
     chapter=4,
 )
 def adhesion_figure() -> Figure:
@@ -76,7 +76,7 @@ def adhesion_figure() -> Figure:
                 label=f"{name}, {speed:.0f} m/s",
             )
     ax.set_xscale("log")
-    ax.set_xlabel("longitudinal creepage ξ (%)")
+    ax.set_xlabel("longitudinal creepage γ_x (%)")
     ax.set_ylabel("adhesion coefficient −F_x/N")
     ax.legend()
     return fig
@@ -84,8 +84,8 @@ def adhesion_figure() -> Figure:
 
 @register(
     "fig4.fastsim",
-    "FASTSIM traction over the contact ellipse (a = 6 mm, b = 4 mm, N = 100 kN, μ = 0.3) for ξ = 1 ‰, "
-    "η = 0.5 ‰: adhesion at the leading edge (right), slip at the trailing edge.",
+    "FASTSIM traction over the contact ellipse (a_c = 6 mm, b_c = 4 mm, N = 100 kN, μ = 0.3) for γ_x = 1 ‰, "
+    "γ_y = 0.5 ‰: adhesion at the leading edge (right), slip at the trailing edge.",
     chapter=4,
 )
 def fastsim_figure() -> Figure:

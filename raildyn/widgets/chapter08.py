@@ -223,7 +223,7 @@ def _nadal_setup(live, status):
             word, short = "below Nadal's limit: no climb", "no climb"
         verdict.set_text(f"Y/Q {quotient:.2f} {'>' if quotient > nadal else '<'} {nadal:.2f}: {short}")
         status.value = (
-            f"{head} · leading outer wheel Y/Q = {quotient:.3f}, Nadal's limit at δ = {delta:.1f}°, "
+            f"{head} · leading outer wheel Y/Q = {quotient:.3f}, Nadal's limit at ϑ_f = {delta:.1f}°, "
             f"μ = {mu:.2f}: {nadal:.3f} — {word} · axle sum Σ|Y/Q| = {axle.axle_sum:.3f} against "
             f"Weinstock's {axle.weinstock_limit:.3f}"
         )
@@ -494,7 +494,7 @@ BENCH_MOVES = [
     ("ch08 curving_plan V", CURVING_PLAN, "speed_kmh", [40.0, 60.0, 80.0, 100.0, 120.0, 71.0]),
     ("ch08 nadal_chart μ", NADAL_CHART, "friction", [0.1, 0.2, 0.3, 0.5, 0.6, 0.36]),
     ("ch08 nadal_chart R", NADAL_CHART, "radius", [200.0, 400.0, 600.0, 1000.0, 2000.0, 300.0]),
-    ("ch08 nadal_chart δ", NADAL_CHART, "flange_angle", [60.0, 62.5, 65.0, 67.5, 72.5, 75.0]),
+    ("ch08 nadal_chart ϑ_f", NADAL_CHART, "flange_angle", [60.0, 62.5, 65.0, 67.5, 72.5, 75.0]),
     ("ch08 curve_entry_speed V", CURVE_ENTRY_SPEED, "speed_kmh", [*ENTRY_SPEEDS, 80.0]),
     ("ch08 stiffness_tradeoff λ", STIFFNESS_TRADEOFF, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
     ("ch08 stiffness_tradeoff R", STIFFNESS_TRADEOFF, "radius", [300.0, 450.0, 800.0, 1500.0, 2000.0, 600.0]),
