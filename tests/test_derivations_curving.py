@@ -136,20 +136,3 @@ def test_wheelset_curving_closed_forms():
     assert sympy.simplify(d.K[1, 0] - 2 * a * lam * f11 / r0) == 0
     assert sympy.simplify(d.GK[1, 0] - (-2 * a**2 * f11 - 2 * f33)) == 0
     assert d.M == sympy.zeros(2, 2) and d.C == sympy.zeros(2, 2)
-
-
-def test_statics_is_lagrange_with_nothing_moving():
-    # The steady equations are taken from U and Q directly; Lagrange's equations with T = D = 0 give
-    # the same matrices (a spring pair and a force that depends on a coordinate and an input).
-    from raildyn.derivations import coordinates, generalized_forces, lagrange
-    from raildyn.derivations.curving import _statics
-
-    k1, k2, c = sympy.symbols("k1 k2 c", positive=True)
-    x1, x2 = coordinates("x1 x2")
-    (w,) = coordinates("w")
-    U = k1 * x1**2 / 2 + k2 * (x2 - x1) ** 2 / 2
-    Q = generalized_forces([(c * (w - x2), x2)], [x1, x2])
-    ours = _statics(U, Q, (x1, x2), (w,))
-    theirs = lagrange(0, U, 0, [x1, x2], forces=Q, inputs=[w])
-    for a, b in zip(ours, theirs, strict=True):
-        assert (a - b).applyfunc(sympy.simplify) == sympy.zeros(*a.shape)

@@ -10,8 +10,8 @@ equations of motion lose their time derivatives and become K q = G_K w, with the
 Each derivation builds the primary and secondary springs' strain energy U from where each spring's ends
 are, the creep forces from the creepages written out wheel by wheel (Kalker's linear law), the
 gravitational forces of the contact geometry and the outward force −m a_q on every mass, and calls
-:func:`_statics`: Lagrange's equations (:func:`raildyn.derivations.lagrange`) with T = D = 0, that is
-∂U/∂q = Q, taken from the quadratic form directly (M and C are zero matrices). The tests hold
+Lagrange's equations (:func:`raildyn.derivations.lagrange`) with T = D = 0, that is ∂U/∂q = Q
+(M and C are zero matrices). The tests hold
 K and G_K to the package's :func:`raildyn.curving.steady.steady_curving` (its stiffness matrix and
 its loads, :func:`raildyn.wheelset.curve_loads` and −M r a_q) and to
 :func:`raildyn.curving.stiffness.bending_shear_stiffness`.
@@ -25,7 +25,7 @@ import functools
 
 import sympy
 
-from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces
+from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange
 
 __all__ = ["bending_shear", "bogie_curving", "wheelset_curving"]
 
@@ -94,25 +94,6 @@ def _matrix_step(name: str, matrix) -> sympy.Eq:
     return sympy.Eq(sympy.MatrixSymbol(name, *matrix.shape), matrix)
 
 
-def _statics(U, Q, q, w) -> tuple:
-    """Lagrange's equations with nothing moving, ∂U/∂q − Q = 0, as M, C, K, G_K, G_C.
-
-    With T = D = 0 (:func:`raildyn.derivations.lagrange` would give the same matrices, by a longer road
-    through the time derivatives and a ``simplify`` of each): K = ∂²U/∂q² − ∂Q/∂q and G_K = ∂Q/∂w, U
-    quadratic and Q linear in q and w. The coordinates are replaced by plain symbols to differentiate.
-    """
-    plain = sympy.symbols(f"_q0:{len(q)}")
-    inputs = sympy.symbols(f"_w0:{len(w)}")
-    to_plain = dict(zip((*q, *w), (*plain, *inputs), strict=True))
-    U, Q = sympy.expand(U.subs(to_plain)), Q.subs(to_plain).applyfunc(sympy.expand)
-    n = len(q)
-    grad = sympy.Matrix([sympy.diff(U, v) for v in plain])
-    K = (grad.jacobian(plain) - Q.jacobian(plain)).applyfunc(sympy.factor_terms)
-    GK = Q.jacobian(inputs).applyfunc(sympy.factor_terms)
-    zero = sympy.zeros(n, n)
-    return zero, zero, K, GK, sympy.zeros(n, len(w))
-
-
 def _inputs():
     kappa, a_q = coordinates("kappa a_q")
     return kappa, a_q
@@ -146,7 +127,7 @@ def wheelset_curving() -> Derivation:
     U = _k_y * y**2 / 2 + _k_psi * psi**2 / 2
     pairs, steps = _wheelset_in_curve(y, psi, 0, kappa)
     Q = generalized_forces(pairs + [(-m * a_q, y)], [y, psi])
-    M, C, K, GK, GC = _statics(U, Q, (y, psi), (kappa, a_q))
+    M, C, K, GK, GC = lagrange(0, U, 0, (y, psi), forces=Q, inputs=(kappa, a_q))
     return Derivation(
         title="suspended wheelset, steady in a curve",
         coordinates=(y, psi),
@@ -200,7 +181,7 @@ def bogie_curving() -> Derivation:
     trail, _ = _wheelset_in_curve(y2, psi2, -_b, kappa)
     outward = [(-m_f * a_q, y_f), (-m_w * a_q, y1), (-m_w * a_q, y2)]
     Q = generalized_forces(lead + trail + outward, list(q))
-    M, C, K, GK, GC = _statics(U, Q, q, (kappa, a_q))
+    M, C, K, GK, GC = lagrange(0, U, 0, q, forces=Q, inputs=(kappa, a_q))
     return Derivation(
         title="two-axle bogie, steady in a curve",
         coordinates=q,
@@ -272,7 +253,7 @@ def bending_shear() -> Derivation:
     trail, _ = _wheelset_in_curve(y2, psi2, -_b, kappa)
     Q = generalized_forces(lead + trail, list(q))
     # The equations with k_b and k_s as symbols (for the step below), then k_b and k_s replaced.
-    M, C, K_bs, GK, GC = _statics(reduced, Q, q, (kappa,))
+    M, C, K_bs, GK, GC = lagrange(0, reduced, 0, q, forces=Q, inputs=(kappa,))
     K = K_bs.subs(derived)
     return Derivation(
         title="two wheelsets joined by a bending and a shear stiffness, steady in a curve",

@@ -157,7 +157,7 @@ def wheelset_roots():
 _RADII = np.geomspace(300.0, 5000.0, 20)  # m: from about the free wheelset's flange contact to gentle curves
 _RADIUS_TICKS = (300.0, 500.0, 1000.0, 2000.0, 5000.0)
 _CURVE_CANT = 0.1  # m: the cant of every curve; the speed follows from the chosen cant deficiency
-_CURVE_WHEELSET = wheelset.Wheelset()  # the Manchester wheelset of section 5.2 on its cone
+_CURVE_WHEELSET = wheelset.Wheelset()  # the Manchester wheelset of chapter 5 on its cone
 
 
 def _curved_wheelset_controls():
@@ -270,7 +270,7 @@ CURVED_WHEELSET = Recipe(
 def curved_wheelset():
     """The steady state of a suspended wheelset on a curve, against the radius from 300 m to 5 km.
 
-    The wheelset of section 5.2 (the Manchester benchmark's, on a cone of 0.15) on its
+    The wheelset of chapter 5 (the Manchester benchmark's, on a cone of 0.15) on its
     primary suspension to a frame that follows the curve; every curve has 100 mm of cant
     and the speed is the one that gives the chosen cant deficiency. Left: the offset
     towards the outer rail beside the free wheelset's pure-rolling offset r₀a/(λR);
