@@ -290,7 +290,7 @@ def bogie() -> Derivation:
     w, wheelset_pairs = _wheelset_symbols("wheelset")
     s, bogie_pairs = _bogie_symbols("")
     q = coordinates("y_f psi_f y_1 psi_1 y_2 psi_2")
-    inputs = coordinates("y_a1 y_a2 c_1 c_2")
+    inputs = coordinates(r"y_a1 y_a2 \Delta{}z_1 \Delta{}z_2")  # alignment, cross-level Δz
     wheelsets = ((q[2], q[3]), (q[4], q[5]))
     track = ((inputs[0], inputs[2]), (inputs[1], inputs[3]))
     T, U, D, forces, creepages = _bogie_pieces(
@@ -371,7 +371,7 @@ def lateral_car() -> Derivation:
         (g, lambda model: GRAVITY),
     )
     q = coordinates("y psi phi y_f1 psi_f1 y_11 psi_11 y_12 psi_12 y_f2 psi_f2 y_21 psi_21 y_22 psi_22")
-    inputs = coordinates("y_a11 y_a12 y_a21 y_a22 c_11 c_12 c_21 c_22")
+    inputs = coordinates(r"y_a11 y_a12 y_a21 y_a22 \Delta{}z_11 \Delta{}z_12 \Delta{}z_21 \Delta{}z_22")
     yc, psic, phic = q[:3]
     T = mc * _rate(yc) ** 2 / 2 + Icz * _rate(psic) ** 2 / 2 + Icx * _rate(phic) ** 2 / 2
     # The body rests on the secondary springs at the seat, h below its centre of gravity: rolling by

@@ -17,8 +17,8 @@ step. The tests hold each derivation to its model in :mod:`raildyn.vehicles.thre
 
 Sign convention: x forward, y to the left, z up; ψ (yaw) turns x towards y, the body's roll ϕ turns y
 towards z; small angles. Coordinates (names as in the derived equations; the models' labels in brackets):
-side frames y_f, ψ_f (``frame y``, ``frame ψ``), bolster ψ_b (``bolster ψ``), locomotive truck frame y_t,
-ψ_t (``frame y``, ``frame ψ``), wheelset k y_k, ψ_k (``wheelsetk y``, ``wheelsetk ψ``); on a vehicle the
+side frames y_f, ψ_f (``frame y``, ``frame ψ``), bolster ψ_b (``bolster ψ``), locomotive truck frame y_T,
+ψ_T (``frame y``, ``frame ψ``), wheelset k y_k, ψ_k (``wheelsetk y``, ``wheelsetk ψ``); on a vehicle the
 truck's number comes first (y_f1; y_12: truck 1, wheelset 2), and the body has y, ψ, ϕ (``body y``,
 ``body ψ``, ``body φ``: lateral, yaw, roll). Track inputs: the alignment y_a (lateral position of the
 track centre line) and the cross-level c (left rail height minus right rail height) at each wheelset, m,
@@ -111,7 +111,7 @@ def _wheel_rail(y, psi, ya, c, w: _WheelsetSymbols, V) -> tuple:
 
     Derived once in generic coordinates and renamed for each wheelset.
     """
-    generic = coordinates("y psi y_a c")
+    generic = coordinates(r"y psi y_a \Delta{}z")
     rename = dict(zip(generic, (y, psi, ya, c), strict=True))
     Q, kinematics = _wheel_rail_of(w, V)
     return (
@@ -142,7 +142,7 @@ def _wheel_rail_of(w: _WheelsetSymbols, V) -> tuple:
     x = −s a sin ψ and y + s a (cos ψ − 1); the spin moment through ψ. The generalized forces are
     linearised about rest before they join the equations (first-order Taylor polynomials).
     """
-    y, psi, ya, c = coordinates("y psi y_a c")
+    y, psi, ya, c = coordinates(r"y psi y_a \Delta{}z")  # c: the cross-level Δz
     yd, psid = y.diff(time), psi.diff(time)
     pairs = []
     kinematics = {}
@@ -260,7 +260,7 @@ def _three_piece_symbols(p: _Parameters, prefix: str) -> _ThreePieceSymbols:
         b=p("b", prefix + "semi_wheelbase"),
         d=p("d", prefix + "side_frame_spacing"),
         kw=p("k_w", prefix + "warp_stiffness"),
-        ks=p("k_s", prefix + "nest_shear_stiffness"),
+        ks=p("k_n", prefix + "nest_shear_stiffness"),
         Fl=p("F_l", prefix + "lateral_friction"),
         Mw=p("M_w", prefix + "warp_friction"),
         Mc=p("M_c", prefix + "centre_plate_friction"),
@@ -309,7 +309,7 @@ def _three_piece(s: _ThreePieceSymbols, tag: str, plate, plate_yaw, V) -> _Truck
         f"y_f{tag} psi_f{tag} psi_b{tag} y_{tag}1 psi_{tag}1 y_{tag}2 psi_{tag}2"
     )
     ya = coordinates(f"y_a{tag}1 y_a{tag}2")
-    c = coordinates(f"c_{tag}1 c_{tag}2")
+    c = coordinates(" ".join(rf"\Delta{{}}z_{tag}{k}" for k in (1, 2)))  # cross-levels Δz
     # Each side frame (half of m_f and I_f) sits at ±d: it moves laterally with y_f, yaws with ψ_f, and
     # slides longitudinally by ∓d ψ_b when the bolster, whose ends it holds, yaws.
     parts = [
@@ -431,7 +431,7 @@ def three_piece_truck() -> Derivation:
     * T: the wheelsets; each side frame (m_f/2, I_f/2) moves with y_f and ψ_f and slides ∓d ψ_b
       longitudinally as the bolster yaws (so m_f d² adds to the bolster's I_b); the bolster;
     * U: the side frames' pendulum k_y (y_k − y_f − x_k ψ_f)²/2 and the adapters k_ψ (ψ_k − ψ_b)²/2 per
-      wheelset, the nests' shear k_s y_f²/2 and the warp k_w (ψ_b − ψ_f)²/2;
+      wheelset, the nests' shear k_n y_f²/2 and the warp k_w (ψ_b − ψ_f)²/2;
     * D: the wheelset's c_y, c_ψ on the same deflections, and the wedges' and centre plate's friction
       F_l, M_w, M_c as equivalent dampers 4F/(π ω X) (4M/(π ω Θ) for the angles);
     * Q: the wheel–rail forces (creep by Kalker's linear law, gravitational stiffness) by virtual work.
@@ -597,7 +597,7 @@ def _three_axle_symbols(p: _Parameters, prefix: str) -> _ThreeAxleSymbols:
         mt=p("m_t", prefix + "frame_mass"),
         It=p("I_t", prefix + "frame_yaw_inertia"),
         mm=p("m_m", prefix + "motor_mass"),
-        kappa=p("kappa", prefix + "motor_axle_share"),
+        kappa=p("rho_m", prefix + "motor_axle_share"),
         b=p("b", prefix + "axle_spacing"),
         km=p("k_m", prefix + "middle_lateral_stiffness"),
         cm=p("c_m", prefix + "middle_lateral_damping"),
@@ -612,10 +612,10 @@ def _three_axle(s: _ThreeAxleSymbols, tag: str, seat, seat_yaw, V) -> _Truck:
     """Three-axle truck ``tag`` under a body whose secondary seat moves laterally by ``seat`` and yaws by
     ``seat_yaw``. Small angles throughout."""
     w = s.w
-    yt, psit = coordinates(f"y_t{tag} psi_t{tag}")
+    yt, psit = coordinates(f"y_T{tag} psi_T{tag}")
     wheelsets = [coordinates(f"y_{tag}{k} psi_{tag}{k}") for k in (1, 2, 3)]
     ya = coordinates(f"y_a{tag}1 y_a{tag}2 y_a{tag}3")
-    c = coordinates(f"c_{tag}1 c_{tag}2 c_{tag}3")
+    c = coordinates(" ".join(rf"\Delta{{}}z_{tag}{k}" for k in (1, 2, 3)))  # cross-levels Δz
     parts = [_Part(T=s.mt * yt.diff(time) ** 2 / 2 + s.It * psit.diff(time) ** 2 / 2)]
     for k, ((y, psi), x, yak, ck) in enumerate(zip(wheelsets, (s.b, 0, -s.b), ya, c, strict=True), start=1):
         # The traction motor: a share κ moves laterally with the axle, the rest with the frame at x.
@@ -637,21 +637,21 @@ def _three_axle(s: _ThreeAxleSymbols, tag: str, seat, seat_yaw, V) -> _Truck:
 def three_axle_truck() -> Derivation:
     """The three-axle locomotive truck under a body that runs straight: 8 coordinates, 6 track inputs.
 
-    As :class:`raildyn.vehicles.locomotive_lateral.ThreeAxleTruck`: a frame (y_t, ψ_t) on three wheelsets at
+    As :class:`raildyn.vehicles.locomotive_lateral.ThreeAxleTruck`: a frame (y_T, ψ_T) on three wheelsets at
     x = +b, 0, −b (b the model's ``axle_spacing``, half the truck's wheelbase):
 
     * T: the frame (m_t, I_t); the wheelsets (m_w, I_w); each traction motor m_m, a share κ moving laterally
       with its axle and 1 − κ with the frame at x_k, ½(1 − κ) m_m (ẏ_t + x_k ψ̇_t)² (the cross terms cancel
       as Σ x_k = 0, and (1 − κ) m_m Σ x_k² adds to I_t);
     * U, D: the primary lateral k_y, c_y of the end axles and k_m, c_m of the middle one on
-      y_k − y_t − x_k ψ_t, the primary yaw k_ψ, c_ψ on ψ_k − ψ_t, the secondary k_sy, c_sy on y_t and
-      k_sψ, c_sψ on ψ_t;
+      y_k − y_T − x_k ψ_T, the primary yaw k_ψ, c_ψ on ψ_k − ψ_T, the secondary k_sy, c_sy on y_T and
+      k_sψ, c_sψ on ψ_T;
     * Q: the wheel–rail forces (creep by Kalker's linear law, gravitational stiffness) by virtual work.
 
     Returns
     -------
     Derivation
-        Coordinates (y_t, ψ_t, y₁, ψ₁, y₂, ψ₂, y₃, ψ₃); inputs (y_a1, y_a2, y_a3, c₁, c₂, c₃); the parameters
+        Coordinates (y_T, ψ_T, y₁, ψ₁, y₂, ψ₂, y₃, ψ₃); inputs (y_a1, y_a2, y_a3, c₁, c₂, c₃); the parameters
         read from a ``ThreeAxleTruck``.
 
     Examples
@@ -687,14 +687,14 @@ def lateral_locomotive() -> Derivation:
 
     As :class:`raildyn.vehicles.locomotive_lateral.LateralLocomotive`: each truck as in
     :func:`three_axle_truck`, its secondary seat at x = ±l moving with the body's point h below its centre
-    of gravity, y ± l ψ + h φ, and its yaw spring on ψ_t − ψ; the body's weight h above the seats,
+    of gravity, y ± l ψ + h φ, and its yaw spring on ψ_T − ψ; the body's weight h above the seats,
     U = m g h cos φ; the secondary roll stiffness k_φ and damping c_φ per truck on φ − c̄/(2a), c̄ the mean
     cross-level under the truck's three wheelsets.
 
     Returns
     -------
     Derivation
-        Coordinates (y, ψ, φ, then per truck y_t, ψ_t, y_k1, ψ_k1, y_k2, ψ_k2, y_k3, ψ_k3); inputs
+        Coordinates (y, ψ, φ, then per truck y_T, ψ_T, y_k1, ψ_k1, y_k2, ψ_k2, y_k3, ψ_k3); inputs
         (y_a1 … y_a6, c₁ … c₆); the parameters read from a ``LateralLocomotive``.
     """
     p = _Parameters()

@@ -167,14 +167,14 @@ def _parameters(s: dict, source) -> tuple:
 def tangent_wheelset() -> Derivation:
     """The wheelset on its primary suspension to a frame running straight at V (book ch. 5).
 
-    Coordinates q = [y, ψ] (m, rad), inputs w = [y_t, z_c]: the alignment (lateral position of the
+    Coordinates q = [y, ψ] (m, rad), inputs w = [y_t, Δz]: the alignment (lateral position of the
     track's centre line, m) and the cross-level (left rail height less the right, m) at the
     wheelset, as :meth:`raildyn.wheelset.Wheelset.linear_system` takes them. The rolling radii
     r₀ ± λ(y − y_t) and contact angles ϑ₀ ± ε(y − y_t)/a give the slip velocity of each contact
     point, hence the creepages γ_x = ∓(aψ̇/V + λ(y − y_t)/r₀), γ_y = ẏ/V − ψ, φ = ψ̇/V ∓ ϑ/r₀;
     Kalker's linear law gives each wheel F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ, M_z = f₂₃γ_y − f₃₃φ
-    (Kalker 1967); the normal forces W/2, tilted by ϑ and by the cross-level's roll z_c/(2a), give
-    the lateral gravitational stiffness Wε/a, the yaw one −Waϑ₀ and the load −W z_c/(2a)
+    (Kalker 1967); the normal forces W/2, tilted by ϑ and by the cross-level's roll Δz/(2a), give
+    the lateral gravitational stiffness Wε/a, the yaw one −Waϑ₀ and the load −W Δz/(2a)
     (Wickens 1965; Garg & Dukkipati 1984, ch. 5). Lagrange's equations with
     T = ½mẏ² + ½I_zψ̇², the suspension's U and D, and the contact forces by virtual work give
     M q̈ + (C₀ + C₁/V) q̇ + K q = G_K w.
@@ -201,7 +201,7 @@ def tangent_wheelset() -> Derivation:
     k_y, k_psi, c_y, c_psi = (s[k][0] for k in ("k_y", "k_psi", "c_y", "c_psi"))
     V = sympy.Symbol("V", positive=True)
     y, psi = coordinates("y psi")
-    y_t, z_c = coordinates("y_t z_c")
+    y_t, z_c = coordinates(r"y_t \Delta{}z")  # the cross-level Δz
     yd, psid = y.diff(time), psi.diff(time)
     contact = _contact(s, y, psi, yd, psid, V, y - y_t, 0, 0, z_c / (2 * a))
     Q, left_out = _forces(contact, y, psi, a, 0)
@@ -226,7 +226,7 @@ def tangent_wheelset() -> Derivation:
         speed=V,
         steps=(
             *contact["steps"],
-            Step("generalized forces of the contact (y_t = z_c = 0), lateral and yaw", _eq("Q", linear_Q)),
+            Step("generalized forces of the contact (y_t = Δz = 0), lateral and yaw", _eq("Q", linear_Q)),
             Step(
                 "left out, as raildyn.wheelset does: the spin of the contact-angle difference",
                 _eq("Delta_Q", left_out),
