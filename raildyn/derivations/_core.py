@@ -43,7 +43,7 @@ def coordinates(names: str) -> tuple:
 
     Returns
     -------
-    tuple of sympy functions of :data:`time`
+    tuple of sympy functions of ``time``
     """
     _checks.instance("names", names, str)
     if not names.split():
@@ -76,7 +76,7 @@ class Step:
 
 
 def _functions_of_time(name: str, value, allow_empty: bool = True) -> tuple:
-    """A tuple of distinct functions of :data:`time` (coordinates or inputs)."""
+    """A tuple of distinct functions of ``time`` (coordinates or inputs)."""
     if not isinstance(value, tuple) or not all(
         isinstance(f, sympy.Function) and f.args == (time,) for f in value
     ):

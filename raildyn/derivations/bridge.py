@@ -14,7 +14,7 @@ M φ_jφ_k, 2MV φ_jφ_k′ and MV² φ_jφ_k″ (Frýba 1972, ch. 1 and 8; Garg
 
 The tests hold :func:`beam_modes` to :class:`raildyn.bridge.SimplySupportedBeam` (its
 ``modal_masses`` and ``frequencies_hz``) and the moving loads to the matrices that the time march
-of :func:`raildyn.bridge.crossing` assembles with the load at a given place.
+of :func:`raildyn.bridge.coupled.crossing` assembles with the load at a given place.
 """
 
 from __future__ import annotations

@@ -150,7 +150,7 @@ def wheelset_curving() -> Derivation:
 def bogie_curving() -> Derivation:
     """A two-axle bogie under a body that runs round the curve without moving, steady in the curve.
 
-    Coordinates in the order of :meth:`raildyn.vehicles.Bogie.linear_system`: the frame's y_f, ψ_f,
+    Coordinates in the order of :meth:`raildyn.vehicles.lateral.Bogie.linear_system`: the frame's y_f, ψ_f,
     then y₁, ψ₁ of the leading wheelset (x = +b) and y₂, ψ₂ of the trailing one (x = −b), all in the
     curve's axes with their origin at the bogie's centre. The primary springs stretch by the
     wheelset's displacement less the frame's at the axle, y_i − y_f − x_i ψ_f, and by ψ_i − ψ_f; the

@@ -5,7 +5,7 @@ velocities, hence the creepages), Kalker's linear creep law per wheel, the later
 of the two normal forces, and the wheelset's energies, through Lagrange's equations
 (:func:`raildyn.derivations.lagrange`) with the contact forces as generalized forces by
 virtual work (:func:`raildyn.derivations.generalized_forces`). The tests hold
-:func:`tangent_wheelset` to :meth:`raildyn.wheelset.Wheelset.matrices` and
+:func:`tangent_wheelset` to ``Wheelset.matrices`` and
 :func:`curved_wheelset` to :func:`raildyn.wheelset.curve_loads`.
 
 Axes: x forward, y to the left, z up; ψ the yaw, positive turning to the left. The left wheel's

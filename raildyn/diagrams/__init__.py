@@ -15,9 +15,9 @@ dashpots, coordinates in blue, forces and the direction of travel in red, equal 
 * :mod:`~raildyn.diagrams.structures` — the coupler chain of a consist, the simply supported beam
   under its moving load (moving).
 
-Two schematics move: :func:`wheelset_plan` returns a :class:`WheelsetPlan` and :func:`beam_load` a
-:class:`BeamLoad`, whose ``update`` moves the drawn artists in place (no new artist, no new figure),
-for a widget.
+Two schematics move: :func:`~raildyn.diagrams.rolling.wheelset_plan` returns a ``WheelsetPlan`` and
+:func:`~raildyn.diagrams.structures.beam_load` a ``BeamLoad``, whose ``update`` moves the drawn
+artists in place (no new artist, no new figure), for a widget.
 """
 
 from raildyn.diagrams.dynamics import oscillator_model, rigid_body_freedoms

@@ -289,7 +289,7 @@ class WheelsetPlan:
         Returns
         -------
         dict
-            The artists (:attr:`artists`), moved.
+            The artists (``artists``), moved.
         """
         self._place(*self._drawn(y, psi))
         return self.artists

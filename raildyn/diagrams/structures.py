@@ -267,7 +267,7 @@ class BeamLoad:
         Returns
         -------
         dict
-            The artists (:attr:`artists`), moved.
+            The artists (``artists``), moved.
         """
         self._place(self._position(position))
         return self.artists

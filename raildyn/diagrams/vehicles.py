@@ -126,7 +126,7 @@ def car_side(car: VerticalCar, *, ax=None) -> dict:
 
     To scale along the car: the bogie centres at x = ±l (``car.semi_bogie_spacing``), each bogie's
     wheels at ±b about its centre (``car.semi_wheelbase``), on wheels of radius 0.46 m
-    (:data:`WHEEL_RADIUS`). Each wheelset carries its bogie frame on the primary spring k_p and
+    (``WHEEL_RADIUS``). Each wheelset carries its bogie frame on the primary spring k_p and
     damper c_p, each bogie the body on the secondary k_s and c_s (the model's
     ``primary_stiffness``, ``primary_damping``, ``secondary_stiffness``, ``secondary_damping``). The
     body's coordinates are its bounce z_c and pitch θ_c, each bogie's z_b and θ_b (as in notebook
