@@ -99,9 +99,9 @@ def test_bending_shear_is_the_bogie_with_its_frame_condensed(ws_changes, changes
 
 
 def test_bending_shear_holds_the_package_stiffnesses():
-    # Closed form: the shear spring couples the lateral displacements by −k_s, and the yaws by
-    # −k_b + b²k_s (the bending spring, and the shear spring's lever b at each wheelset);
-    # k_b, k_s are bending_shear_stiffness's.
+    # Closed form: the shear spring couples the lateral displacements by −k_sh, and the yaws by
+    # −k_b + b²k_sh (the bending spring, and the shear spring's lever b at each wheelset);
+    # k_b, k_sh are bending_shear_stiffness's.
     bogie = Bogie()
     _, _, K, _, _ = bending_shear().numeric(bogie)
     k = bending_shear_stiffness(bogie)
@@ -113,7 +113,7 @@ def test_bending_shear_holds_the_package_stiffnesses():
 
 def test_bending_shear_gives_the_self_steering_closed_form():
     # Without spin or gravitational stiffness the derived equations solve to self_steering_curving's
-    # α₁ = (b/R) k_b k_s/(k_b k_s + aλf₁₁f₂₂/r₀) (hand-derived in notebook 08): 1e-9 for two solves.
+    # α₁ = (b/R) k_b k_sh/(k_b k_sh + aλf₁₁f₂₂/r₀) (hand-derived in notebook 08): 1e-9 for two solves.
     plain = Wheelset(f23=0.0, f33=0.0, contact_angle=0.0, contact_angle_parameter=0.0)
     bogie = Bogie(wheelset=plain, secondary_lateral_stiffness=0.0, secondary_yaw_stiffness=0.0)
     _, _, K, GK, _ = bending_shear().numeric(bogie)

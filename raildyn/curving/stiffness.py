@@ -6,7 +6,7 @@ joined by two springs only (Wickens 2003, ch. 7; Boocock 1969; Elkins & Gostling
 settled where the springs' strain energy is least:
 
 * a **bending** stiffness k_b against their relative yaw ψ₁ − ψ₂;
-* a **shear** stiffness k_s against their relative lateral displacement corrected for
+* a **shear** stiffness k_sh against their relative lateral displacement corrected for
   the bogie's mean yaw, y₁ − y₂ − b(ψ₁ + ψ₂), which a rigid yaw of the pair leaves at zero.
 
 Derivation (written here). Wheelset 1 at x = +b and wheelset 2 at x = −b hang from a
@@ -26,7 +26,7 @@ k_y b² pulling it towards Δy/(2b) and k_ψ towards ψ̄, and ∂U/∂ψ_f = 0 
 
 so that
 
-    k_b = k_ψ / 2,        k_s = k_y k_ψ / (2(k_ψ + b² k_y)).
+    k_b = k_ψ / 2,        k_sh = k_y k_ψ / (2(k_ψ + b² k_y)).
 
 The two wheelsets' yaw springs are in series for bending; for shear, each wheelset's
 lateral spring (k_y, moved to the frame's yaw by b²) is in series with its yaw spring.
@@ -63,7 +63,7 @@ class BendingShear:
     bending : float
         k_b, against the wheelsets' relative yaw ψ₁ − ψ₂, N·m/rad (≥ 0).
     shear : float
-        k_s, against y₁ − y₂ − b(ψ₁ + ψ₂), N/m (≥ 0).
+        k_sh, against y₁ − y₂ − b(ψ₁ + ψ₂), N/m (≥ 0).
     """
 
     bending: float
@@ -81,7 +81,7 @@ def _bogie(value) -> Bogie:
 def bending_shear_stiffness(bogie: Bogie) -> BendingShear:
     """The bending and shear stiffness that a bogie's primary suspension gives its two wheelsets.
 
-    k_b = k_ψ/2 and k_s = k_y k_ψ / (2(k_ψ + b²k_y)), with k_ψ and k_y the primary yaw
+    k_b = k_ψ/2 and k_sh = k_y k_ψ / (2(k_ψ + b²k_y)), with k_ψ and k_y the primary yaw
     and lateral stiffness of each wheelset and b the semi-wheelbase: the strain energy
     of the primary springs with the frame where it is least, derived in
     :mod:`raildyn.curving.stiffness` (Wickens 2003, ch. 7; Boocock 1969). The secondary
@@ -96,7 +96,7 @@ def bending_shear_stiffness(bogie: Bogie) -> BendingShear:
     Returns
     -------
     BendingShear
-        k_b (N·m/rad) and k_s (N/m); k_s is 0 when either primary stiffness is.
+        k_b (N·m/rad) and k_sh (N/m); k_sh is 0 when either primary stiffness is.
 
     Examples
     --------
@@ -110,21 +110,21 @@ def bending_shear_stiffness(bogie: Bogie) -> BendingShear:
     _bogie(bogie)
     k_psi, k_y = bogie.wheelset.yaw_stiffness, bogie.wheelset.lateral_stiffness
     b = bogie.semi_wheelbase
-    # k_s = k_y k_ψ / (2(k_ψ + b² k_y)), written so that k_ψ = k_y = 0 gives 0, not 0/0
+    # k_sh = k_y k_ψ / (2(k_ψ + b² k_y)), written so that k_ψ = k_y = 0 gives 0, not 0/0
     series = 0.0 if k_psi == 0.0 or k_y == 0.0 else 1.0 / (1.0 / k_y + b * b / k_psi)
     return BendingShear(0.5 * k_psi, 0.5 * series)
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity
 class SelfSteeringCurving:
-    """The closed-form steady state of two wheelsets joined by k_b and k_s in a curve at balance speed.
+    """The closed-form steady state of two wheelsets joined by k_b and k_sh in a curve at balance speed.
 
     Attributes
     ----------
     radius : float
         R, m (> 0).
     stiffness : BendingShear
-        The k_b and k_s used.
+        The k_b and k_sh used.
     offset : ndarray, (2,)
         Leading and trailing wheelset's offset towards the outer rail, m.
     angle_of_attack : ndarray, (2,)
@@ -151,15 +151,15 @@ def self_steering_curving(bogie: Bogie, radius) -> SelfSteeringCurving:
     secondary suspension and no unbalanced lateral force (the balance speed): the
     four equilibrium equations of the two wheelsets (lateral force and yaw moment
     each), with the creep forces 2f₂₂ψᵢ and −2af₁₁(a/R + λyᵢ/r₀) and the spring
-    forces of k_b and k_s, solved by hand (derived in chapter 8 of the companion;
+    forces of k_b and k_sh, solved by hand (derived in chapter 8 of the companion;
     the method is Wickens' 2003, ch. 7, after Boocock 1969). With
     κ = a λ f₁₁ f₂₂ / r₀ (per wheel f₁₁, f₂₂):
 
-        α₁ = −α₂ = (b/R) k_b k_s / (k_b k_s + κ)
-        ȳ = r₀a/(λR) + r₀ b f₂₂ α₁ / (λ a f₁₁),       y₁ − y₂ = 2 f₂₂ α₁ / k_s,
+        α₁ = −α₂ = (b/R) k_b k_sh / (k_b k_sh + κ)
+        ȳ = r₀a/(λR) + r₀ b f₂₂ α₁ / (λ a f₁₁),       y₁ − y₂ = 2 f₂₂ α₁ / k_sh,
 
     offsets towards the outer rail. A soft bending stiffness lets the wheelsets take up
-    radial positions (α → 0 as k_b → 0); a rigid bogie (k_b, k_s → ∞) has α = b/R and
+    radial positions (α → 0 as k_b → 0); a rigid bogie (k_b, k_sh → ∞) has α = b/R and
     the offset r₀a(1 + b²f₂₂/(a²f₁₁))/(λR).
 
     Parameters

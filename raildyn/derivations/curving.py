@@ -214,8 +214,8 @@ def bending_shear() -> Derivation:
 
     The frame, with no secondary springs and no load of its own, settles where the primary springs'
     strain energy U is least: ∂U/∂y_f = ∂U/∂ψ_f = 0, solved here. What is left is
-    U_min = ½k_b(ψ₁ − ψ₂)² + ½k_s(y₁ − y₂ − b(ψ₁ + ψ₂))² with k_b = k_ψ/2 and
-    k_s = k_y k_ψ/(2(k_ψ + b²k_y)) (Wickens 2003, ch. 7; Boocock 1969), shown as steps. With the
+    U_min = ½k_b(ψ₁ − ψ₂)² + ½k_sh(y₁ − y₂ − b(ψ₁ + ψ₂))² with k_b = k_ψ/2 and
+    k_sh = k_y k_ψ/(2(k_ψ + b²k_y)) (Wickens 2003, ch. 7; Boocock 1969), shown as steps. With the
     creep and gravitational forces of each wheelset, K q = G_K κ for q = (y₁, ψ₁, y₂, ψ₂) at the
     balance speed (a_q = 0).
 
@@ -229,7 +229,7 @@ def bending_shear() -> Derivation:
     Examples
     --------
     >>> d = bending_shear()
-    >>> d.K[0, 2]  # the shear spring between the lateral displacements: −k_s
+    >>> d.K[0, 2]  # the shear spring between the lateral displacements: −k_sh
     -k_psi*k_y/(2*b**2*k_y + 2*k_psi)
     """
     y1, psi1, y2, psi2 = q = coordinates("y_1 psi_1 y_2 psi_2")
@@ -243,7 +243,7 @@ def bending_shear() -> Derivation:
     A, rhs = sympy.linear_eq_to_matrix([sympy.diff(U, y_f), sympy.diff(U, psi_f)], [y_f, psi_f])
     frame = dict(zip((y_f, psi_f), (sympy.factor(v) for v in A.LUsolve(rhs)), strict=True))
     U_min = U.subs(frame)
-    k_b, k_s = sympy.symbols("k_b k_s", nonnegative=True)
+    k_b, k_s = sympy.symbols("k_b k_sh", nonnegative=True)
     derived = {k_b: _k_psi / 2, k_s: _k_y * _k_psi / (2 * (_k_psi + _b**2 * _k_y))}
     reduced = k_b * (psi1 - psi2) ** 2 / 2 + k_s * (y1 - y2 - _b * (psi1 + psi2)) ** 2 / 2
     # The minimum is the bending–shear form: checked here, symbolically, every time it is built.
@@ -252,7 +252,7 @@ def bending_shear() -> Derivation:
     lead, _ = _wheelset_in_curve(y1, psi1, _b, kappa)
     trail, _ = _wheelset_in_curve(y2, psi2, -_b, kappa)
     Q = generalized_forces(lead + trail, list(q))
-    # The equations with k_b and k_s as symbols (for the step below), then k_b and k_s replaced.
+    # The equations with k_b and k_sh as symbols (for the step below), then k_b and k_sh replaced.
     M, C, K_bs, GK, GC = lagrange(0, reduced, 0, q, forces=Q, inputs=(kappa,))
     K = K_bs.subs(derived)
     return Derivation(
@@ -273,6 +273,6 @@ def bending_shear() -> Derivation:
             Step("what is left: a bending and a shear spring", sympy.Eq(sympy.Symbol("U_min"), reduced)),
             Step("bending stiffness", sympy.Eq(k_b, derived[k_b])),
             Step("shear stiffness", sympy.Eq(k_s, derived[k_s])),
-            Step("stiffness matrix in k_b and k_s", _matrix_step("K", K_bs)),
+            Step("stiffness matrix in k_b and k_sh", _matrix_step("K", K_bs)),
         ),
     )  # fmt: skip
