@@ -63,8 +63,18 @@ def test_save_all_writes_the_chosen_ids_format_by_format_into_a_new_directory(tm
 
 def test_register_refuses_an_id_registered_twice():
     with pytest.raises(ValueError, match="'fig1.4' is registered already"):
-        figures.register("fig1.4", "again", chapter=1)
+        figures.register("fig1.4", "again", chapter=1, book_figure="1.4")
     assert figures.REGISTRY["fig1.4"].caption != "again"
+
+
+def test_only_a_mirror_of_a_book_figure_has_an_id_like_its_number():
+    # An id of the form figN.M claims to be book Fig. N.M: it must say so, and nothing else may claim it.
+    for id_, book_figure in (("fig3.9", None), ("fig3.9", "3.8"), ("fig3.track", "3.9")):
+        with pytest.raises(ValueError, match="disagree"):
+            figures.register(id_, "a figure", chapter=3, book_figure=book_figure)
+    honest = {k for k, spec in figures.REGISTRY.items() if spec.book_figure is not None}
+    assert honest == {"fig1.4", "fig1.5"}
+    assert all(k == f"fig{figures.REGISTRY[k].book_figure}" for k in honest)
 
 
 def test_a_figure_spec_is_checked_when_it_is_made():

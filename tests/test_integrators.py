@@ -467,14 +467,14 @@ def test_trapezoidal_fast_path_matches_the_newton_stepper():
 def test_chapter_two_figures_show_the_central_difference_limit():
     from raildyn import figures
 
-    fig = figures.make("fig2.1")
+    fig = figures.make("fig2.spectral_radius")
     line = next(ln for ln in fig.axes[0].lines if ln.get_label() == "central difference")
     ratios, rho = line.get_data()
     # The curve sits on ρ = 1 up to Δt/T = 1/π and rises just above it (grid steps of 2.3 %).
     rising = ratios[~(rho <= 1 + 1e-9)].min()
     assert rising == pytest.approx(1 / np.pi, rel=0.03) and rising > 1 / np.pi
     assert np.allclose(rho[ratios < 0.3], 1.0, atol=1e-12)
-    assert "fig2.2" in figures.REGISTRY
+    assert "fig2.period_elongation" in figures.REGISTRY
 
 
 # ---------------------------------------------------------------- the modal path for classical damping

@@ -195,12 +195,12 @@ def test_accuracy_plots_return_their_artists_and_update_them_in_place():
 def test_figure_draws_the_curves_of_scheme_accuracy():
     from raildyn import figures
 
-    fig = figures.make("fig2.1")
+    fig = figures.make("fig2.spectral_radius")
     line = next(ln for ln in fig.axes[0].lines if ln.get_label() == "Houbolt")
     ratios, drawn = line.get_data()
     expected = ri.scheme_accuracy("houbolt", ratios).spectral_radius
     assert np.array_equal(drawn, expected)
-    fig = figures.make("fig2.2")
+    fig = figures.make("fig2.period_elongation")
     line = next(ln for ln in fig.axes[1].lines if ln.get_label() == "Wilson θ = 1.4")
     ratios, drawn = line.get_data()
     assert np.allclose(drawn, 100 * ri.amplitude_decay("wilson", ratios), rtol=1e-14, atol=0)

@@ -110,7 +110,7 @@ def test_car_roots_draws_the_chart_of_figure_7_1():
     # One method draws both: the same windows, labels and artists in the widget and the figure.
     container, _ = chapter07.car_roots()
     widget = container.live.figure.axes
-    figure = figures.make("fig7.1").axes
+    figure = figures.make("fig7.root_locus").axes
     for mine, theirs in zip(widget[:2], figure[:2], strict=True):
         assert mine.get_xlabel() == theirs.get_xlabel() and mine.get_ylabel() == theirs.get_ylabel()
         assert mine.get_ylim() == theirs.get_ylim()
@@ -190,7 +190,7 @@ def test_klingel_widget_and_figure_draw_the_same_kinematic_oscillation():
     container, update = chapter05.klingel()
     update(conicity=0.15, rolling_radius_mm=460.0, semi_wheelbase=1.28)
     k = wheelset.kinematic_oscillation(0.46, 0.75, 0.15, 1.28)
-    fig = figures.make("fig5.1")
+    fig = figures.make("fig5.kinematic_oscillation")
     figure_free = fig.axes[0].get_lines()[0]
     x = figure_free.get_xdata()
     np.testing.assert_allclose(

@@ -57,6 +57,14 @@ def _check_spec(id, caption, book_figure, chapter) -> None:
                 f"book_figure must be a figure number such as '1.4' (or None), got {book_figure!r}"
             )
     _checks.integer("chapter", chapter, low=_CHAPTERS[0], high=_CHAPTERS[1])
+    # An id that looks like a book figure number is one: "fig1.4" exactly when book_figure is "1.4".
+    looks = re.fullmatch(r"fig([0-9]+\.[0-9]+[a-z]?)", id)
+    if (looks.group(1) if looks else None) != book_figure:
+        raise ValueError(
+            f"id {id!r} and book_figure {book_figure!r} disagree: a figure that mirrors book Fig. N.M has "
+            "the id 'figN.M', and only such a figure may have an id of that form (raildyn's own: "
+            "'fig7.bifurcation')"
+        )
 
 
 @dataclass(frozen=True)
@@ -103,8 +111,10 @@ def register(id: str, caption: str, *, chapter: int, book_figure: str | None = N
     Parameters
     ----------
     id : str
-        Stable identifier of the figure, also its file name (``fig1.4``); unique, of
-        letters, digits, ".", "_" and "-". An id registered already raises ``ValueError``.
+        Stable identifier of the figure, also its file name; unique, of letters, digits, ".",
+        "_" and "-". A figure that mirrors book Fig. N.M is ``figN.M`` (``fig1.4``), and only
+        such a figure may have an id of that form; raildyn's own figures are named by chapter
+        and subject (``fig7.bifurcation``). An id registered already raises ``ValueError``.
     caption : str
         What the figure shows, in the companion's words.
     chapter : int

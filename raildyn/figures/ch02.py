@@ -27,7 +27,7 @@ _STYLES = dict(zip(_SCHEMES, [*plots.COLORS, "0.3"], strict=True))
 
 
 @register(
-    "fig2.1",
+    "fig2.spectral_radius",
     "Spectral radius ρ(A) of the amplification matrix of each scheme against Δt/T for the undamped "
     "oscillator: the central difference and Runge–Kutta 4 leave ρ = 1 at Δt/T = 1/π and √2/π and become "
     "unstable; Houbolt, Wilson θ = 1.4 and HHT-α stay below 1 at every step, the average acceleration "
@@ -49,7 +49,7 @@ def spectral_radius_figure() -> Figure:
 
 
 @register(
-    "fig2.2",
+    "fig2.period_elongation",
     "Period elongation (T̄ − T)/T and amplitude decay per period of each scheme against Δt/T for the "
     "undamped oscillator (after Bathe 1996, Fig. 9.3). The central difference shortens the period; the "
     "implicit schemes lengthen it; only Houbolt, Wilson-θ and HHT-α damp the motion numerically.",

@@ -13,7 +13,7 @@ _SOFT = wheelset.Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
 
 
 @register(
-    "fig5.1",
+    "fig5.kinematic_oscillation",
     "Kinematic oscillation of a coned wheelset (Klingel) and of two wheelsets held parallel in a rigid "
     "bogie: r₀ = 0.46 m, a = 0.75 m, λ = 0.15, half wheelbase 1.28 m. The rigid frame lengthens the "
     "wave by √(1 + b²/a²).",
@@ -31,7 +31,7 @@ def klingel_path() -> Figure:
 
 
 @register(
-    "fig5.2",
+    "fig5.damping_against_speed",
     "Damping factor of the two modes of a wheelset against speed (modes followed by MAC): without "
     "suspension the kinematic mode is unstable at every speed; on primary springs "
     "(k_ψ = 2 MN·m/rad, k_y = 1 MN/m) it loses stability at the critical speed, marked.",
@@ -62,7 +62,7 @@ def wheelset_damping() -> Figure:
 
 
 @register(
-    "fig5.3",
+    "fig5.limit_cycle",
     "The nonlinear wheelset (cone λ = 0.15, saturating creep, flange beyond 9.1 mm) above its linear "
     "critical speed: from a 1 mm start the lateral motion grows into a limit cycle.",
     chapter=5,

@@ -16,7 +16,7 @@ from raildyn.vehicles import Car
 
 
 @register(
-    "fig7.1",
+    "fig7.root_locus",
     "Manchester benchmark car on a cone (λ = 0.15): the roots of its 15 coordinates from 18 to 540 km/h "
     "(left, coloured by speed) and the damping factor of every mode against speed (right); the hunting "
     "mode crosses zero at the linear critical speed.",
@@ -33,7 +33,7 @@ def car_roots() -> Figure:
 
 
 @register(
-    "fig7.2",
+    "fig7.critical_speed_map",
     "Linear critical speed of the Manchester car against conicity and the primary yaw stiffness of each "
     "wheelset; the published stiffness (62.8 MN·m/rad) is dashed.",
     chapter=7,
@@ -61,7 +61,7 @@ def critical_speed_map() -> Figure:
 
 
 @register(
-    "fig7.3",
+    "fig7.bifurcation",
     "Bifurcation diagram of the Manchester car on a cone (λ = 0.15, saturating creep, flange beyond "
     "9.1 mm): amplitude of the leading wheelset's lateral motion along a speed ramp-down (filled: "
     "sustained hunting; open: decaying), with the linear and nonlinear critical speeds. The car hunts "

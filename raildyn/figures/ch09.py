@@ -10,7 +10,7 @@ from raildyn.figures import new_figure, register
 
 
 @register(
-    "fig9.1",
+    "fig9.tractive_effort",
     "Tractive effort of one SD40-2 by notch (adhesion-limited at low speed, constant power above) against "
     "the Davis resistance of 2 SD40-2 + 100 loaded hoppers on level track, original and modified (AREA) "
     "forms; where the curves cross is the balancing speed.",
@@ -45,7 +45,7 @@ def traction_and_resistance() -> Figure:
 
 
 @register(
-    "fig9.2",
+    "fig9.coupler_forces",
     "Quasi-static coupler forces along 2 SD40-2 + 100 loaded hoppers (1.66 km) at 30 km/h and notch 8 with "
     "the front 800 m past a change of grade: on level track, over a crest (+0.5 % then −0.5 %) and through a "
     "sag (−0.5 % then +0.5 %). A uniform grade only changes the common acceleration; a change of grade "
@@ -72,7 +72,7 @@ def quasi_static_forces() -> Figure:
 
 
 @register(
-    "fig9.3",
+    "fig9.draft_gear_loop",
     "Force–deflection loop of a friction draft gear beyond its slack: the loading branch, the drop to the "
     "unloading branch at the largest deflection, and the energy absorbed (the shaded area, (k_l − k_u)U²/2).",
     chapter=9,

@@ -13,7 +13,7 @@ from raildyn.widgets import LiveFigure, Recipe, chapter06
 from raildyn.widgets._core import slider
 
 OUT = Path(tempfile.gettempdir()) / "raildyn-fuzz-figures"  # save_all writes here, never into the tree
-CHEAP = ("fig1.4", "fig9.1")  # two figures drawn in a few hundredths of a second each
+CHEAP = ("fig1.4", "fig9.tractive_effort")  # two figures drawn in a few hundredths of a second each
 
 # The figure functions and recipes below are stored by what the fuzz test builds, not run at once.
 _STORED = "returns-nan returns-negative returns-shape"
@@ -68,14 +68,14 @@ ENTRIES = [
     # ----------------------------------------------------------------- the figure registry
     fuzz(
         "raildyn.figures.FigureSpec",
-        lambda: call("fuzz.spec", "A figure for the fuzz test.", "1.4", 1, _draw),
+        lambda: call("fig1.4", "A figure for the fuzz test.", "1.4", 1, _draw),
         # a new id is what a spec is for; book_figure may be None; draw is stored and only called
         # by figures.make, which checks what it returns
         accepts={"id": "unknown", "book_figure": "none", "draw": _STORED},
     ),
     fuzz("raildyn.figures.FigureView", lambda: call(figures.REGISTRY["fig1.4"], figures.new_figure())),
     fuzz("raildyn.figures.make", lambda: call("fig1.4")),
-    fuzz("raildyn.figures.show", lambda: call("fig9.1")),
+    fuzz("raildyn.figures.show", lambda: call("fig9.tractive_effort")),
     fuzz("raildyn.figures.new_figure", lambda: call(figsize=(2.0, 1.5))),
     fuzz(
         "raildyn.figures.register",
