@@ -3,6 +3,7 @@
 The book build executes them (once, strict: see ``tests/conftest.py``); these tests read what it ran.
 """
 
+import html as html_module
 import re
 import sys
 from pathlib import Path
@@ -70,3 +71,74 @@ def test_citations_read_as_text_outside_the_book(path):
         l for nb in NOTEBOOKS for c in nbformat.read(nb, as_version=4).cells for l in _LABEL.findall(c.source)
     }
     assert not set(_EQ.findall(text)) - labels, f"{path.name}: links to equations no notebook labels"
+
+
+def _answer_cells(nb) -> list[int]:
+    """Indices of the code cells that answer a question: every code cell after the "Exercises"
+    heading, and every code cell that follows a question (**1.**, **a.**) elsewhere."""
+    out, in_exercises = [], False
+    for i, cell in enumerate(nb.cells):
+        if cell.cell_type == "markdown" and re.match(r"#+ Exercises", cell.source):
+            in_exercises = True
+        elif cell.cell_type == "markdown" and re.match(r"#+ ", cell.source):
+            in_exercises = in_exercises and not re.match(r"#+ Summary", cell.source)
+        previous = nb.cells[i - 1].source if i else ""
+        question = re.search(r"^\*\*(\d+|[a-z])\.\*\*", previous, flags=re.M)
+        if cell.cell_type == "code" and (in_exercises or question):
+            out.append(i)
+    return out
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_answers_are_hidden_in_jupyterlab_and_in_the_book(path):
+    # JupyterLab honours the cell's "jupyter" metadata, the book its hide-cell tag: the answer's code and
+    # its output stay folded under the question until the reader opens them.
+    nb = nbformat.read(path, as_version=4)
+    answers = _answer_cells(nb)
+    assert len(answers) >= 5, f"{path.name}: {len(answers)} answered exercises, at least five wanted"
+    for i in answers:
+        meta = nb.cells[i].metadata
+        assert "hide-cell" in meta.get("tags", []), f"{path.name}: answer cell {i} not tagged hide-cell"
+        assert meta.get("jupyter") == {"source_hidden": True, "outputs_hidden": True}, (
+            f"{path.name}: answer cell {i} shows in JupyterLab"
+        )
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_no_answer_prints_unhidden_in_the_built_book(path, built_book):
+    proc, html = built_book
+    assert proc.returncode == 0, (proc.stdout + proc.stderr)[-4000:]
+    page = (html / "notebooks" / f"{path.stem}.html").read_text(encoding="utf-8")
+    # Each answer's cell is a folded <details> block: its output appears only inside one.
+    executed = nbformat.read(ROOT / "book" / "_build" / "jupyter_execute" / "notebooks" / path.name, 4)
+    folded = re.findall(r"<details class=\"hide[^\"]*\">(.*?)</details>", page, flags=re.S)
+    for i in _answer_cells(executed):
+        for output in executed.cells[i].outputs:
+            text = (output.get("text") or output.get("data", {}).get("text/plain", "")).strip()
+            if text:
+                line = html_module.escape(text.splitlines()[0].strip())
+                outside = page.replace("".join(folded), "")
+                assert line in "".join(folded) and line not in outside, (
+                    f"{path.name}: the answer of cell {i} ({line[:60]!r}) prints outside its fold"
+                )
+
+
+COLAB = re.compile(r'"google\.colab" in sys\.modules and importlib\.util\.find_spec\("raildyn"\) is None')
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_colab_installs_raildyn_first_and_nothing_else_does(path, monkeypatch):
+    import subprocess
+
+    import yaml
+
+    nb = nbformat.read(path, as_version=4)
+    cell = next(c for c in nb.cells if c.cell_type == "code")
+    assert COLAB.search(cell.source), f"{path.name}: the first code cell is not the Colab installer"
+    assert "remove-cell" in cell.metadata.get("tags", []), f"{path.name}: the installer shows in the book"
+    url = yaml.safe_load((ROOT / "book" / "_config.yml").read_text())["repository"]["url"]
+    assert f"git+{url}" in cell.source, f"{path.name}: the installer does not install from {url}"
+    # Outside Colab (here, in the book, under Voilà) the cell runs and installs nothing.
+    monkeypatch.setattr(subprocess, "check_call", lambda *a, **k: pytest.fail("installed outside Colab"))
+    exec(compile(cell.source, path.name, "exec"), {})
