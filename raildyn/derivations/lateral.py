@@ -22,7 +22,8 @@ from dataclasses import dataclass
 import sympy
 
 from raildyn.constants import GRAVITY
-from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
+from raildyn.derivations._core import Derivation, Step, coordinates, lagrange, time
+from raildyn.derivations._wheel_rail import WheelsetSymbols, linear, wheel_rail, wheelset_symbols
 
 __all__ = ["bogie", "lateral_car"]
 
@@ -45,114 +46,28 @@ _CAR_ROWS = (
 )
 
 
-@dataclass(frozen=True)
-class _WheelsetSymbols:
-    """The symbols of one wheelset's parameters (shared by every wheelset of a vehicle)."""
-
-    m: sympy.Symbol
-    I: sympy.Symbol  # noqa: E741 - the book's yaw inertia I_w
-    r0: sympy.Symbol
-    a: sympy.Symbol
-    lam: sympy.Symbol
-    W: sympy.Symbol
-    f11: sympy.Symbol
-    f22: sympy.Symbol
-    f23: sympy.Symbol
-    f33: sympy.Symbol
-    theta0: sympy.Symbol
-    eps: sympy.Symbol
-    ky: sympy.Symbol
-    kpsi: sympy.Symbol
-    cy: sympy.Symbol
-    cpsi: sympy.Symbol
-
-
-_WHEELSET_FIELDS = {
-    "m": ("m_w", "mass"),
-    "I": ("I_w", "yaw_inertia"),
-    "r0": ("r_0", "rolling_radius"),
-    "a": ("a", "half_gauge"),
-    "lam": ("lambda", "conicity"),
-    "W": ("W", "axle_load"),
-    "f11": ("f_11", "f11"),
-    "f22": ("f_22", "f22"),
-    "f23": ("f_23", "f23"),
-    "f33": ("f_33", "f33"),
-    "theta0": ("vartheta_0", "contact_angle"),
-    "eps": ("epsilon", "contact_angle_parameter"),
-    "ky": ("k_y", "lateral_stiffness"),
-    "kpsi": ("k_psi", "yaw_stiffness"),
-    "cy": ("c_y", "lateral_damping"),
-    "cpsi": ("c_psi", "yaw_damping"),
-}
-
-
-def _wheelset_symbols(path: str) -> tuple:
-    """The wheelset's symbols and their (symbol, attribute path) pairs, the wheelset at ``path``."""
-    made = {}
-    pairs = []
-    for key, (name, attribute) in _WHEELSET_FIELDS.items():
-        # No assumptions (positive, ...) on any symbol: nothing here simplifies, and sympy's
-        # assumption queries would take most of the time of building the car's matrices.
-        symbol = sympy.Symbol(name)
-        made[key] = symbol
-        pairs.append((symbol, f"{path}.{attribute}"))
-    return _WheelsetSymbols(**made), tuple(pairs)
-
-
 def _rate(expr):
     return sympy.diff(expr, time)
 
 
-def _wheelset_terms(y, psi, ya, c, p: _WheelsetSymbols, V) -> tuple:
-    """One wheelset's kinetic energy and the generalized forces of its wheel–rail forces (virtual work).
+def _wheelset_terms(y, psi, ya, c, p: WheelsetSymbols, V) -> tuple:
+    """One wheelset's kinetic energy, the generalized forces of its wheel–rail forces and its creepages.
 
-    Parameters
-    ----------
-    y, psi : sympy functions of t
-        The wheelset's lateral displacement (m) and yaw (rad).
-    ya, c : sympy functions of t
-        The alignment and the cross-level under it (m).
-    p : _WheelsetSymbols
-    V : sympy.Symbol
-        The forward speed, m/s.
+    The wheel–rail forces are the one derivation every lateral vehicle shares
+    (``_wheel_rail.wheel_rail``: creepages, Kalker's linear law and the tilted normal loads by
+    virtual work, linearised).
 
     Returns
     -------
     (T, forces, creepages)
-        T the kinetic energy; forces a dict {y: Q_y, ψ: Q_ψ} of the generalized forces, from each
-        wheel–rail force and the displacement it works through (:func:`generalized_forces`);
-        creepages a dict of the creepages for the steps.
+        T the kinetic energy; forces {y: Q_y, ψ: Q_ψ}; creepages the left wheel's γ_x and the
+        wheelset's γ_y and φ, linearised, for the steps.
     """
-    yd, psid = _rate(y), _rate(psi)
-    T = p.m * yd**2 / 2 + p.I * psid**2 / 2
-    # Rolling radii r_L,R = r₀ ± λ(y − y_a): the wheel on the side the wheelset moves to rolls on a
-    # larger radius. Each contact point at ±a from the centre line moves forward at V ∓ aψ̇ while
-    # the wheel's rim there turns at (V/r₀)·r_L,R: the longitudinal creepages (Kalker's ξ, γ_x here).
-    gx_left = -p.a * psid / V - p.lam * (y - ya) / p.r0
-    gx_right = -gx_left
-    # Lateral creepage (same for both wheels): the contact point slides sideways at ẏ − Vψ.
-    gy = yd / V - psi
-    # Spin creepage ψ̇/V; the contact-angle part ±ϑ/r₀ cancels between the two wheels to first
-    # order, and its ε y part (f₂₃ε/(a r₀)) is left out, as raildyn.wheelset.creep_terms does.
-    spin = psid / V
-    pairs = []
-    for gx, arm in ((gx_left, p.a), (gx_right, -p.a)):
-        # Kalker's linear law on one wheel: F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ, M_z = f₂₃γ_y − f₃₃φ.
-        Fx = -p.f11 * gx
-        Fy = -p.f22 * gy - p.f23 * spin
-        Mz = p.f23 * gy - p.f33 * spin
-        # A point at y = arm on the axle moves forward by −arm·ψ when the wheelset yaws by ψ.
-        pairs += [(Fx, -arm * psi), (Fy, y), (Mz, psi)]
-    # The normal loads W/2 at the contact angles ϑ_L,R = ϑ₀ ± ε(y − y_a)/a: their lateral components
-    # leave −(W/2)(ϑ_L − ϑ_R) = −(Wε/a)(y − y_a); on rails tilted by c/(2a) the weight has the
-    # component −W c/(2a) along the track plane; yawed by ψ, the normal loads give the yaw moment
-    # W a ϑ₀ ψ (Wickens 2003, ch. 2: the gravitational stiffness).
-    pairs += [(-p.W * p.eps * (y - ya) / p.a - p.W * c / (2 * p.a), y), (p.W * p.a * p.theta0 * psi, psi)]
-    # Virtual work on this wheelset's own coordinates only: the other coordinates do not move its
-    # contact points, so their generalized forces from this wheelset are zero.
-    Qy, Qpsi = generalized_forces(pairs, (y, psi))
-    return T, {y: Qy, psi: Qpsi}, {"gx": gx_left, "gy": gy, "spin": spin}
+    T = p.m * _rate(y) ** 2 / 2 + p.I * _rate(psi) ** 2 / 2
+    forces, kinematics = wheel_rail(y, psi, ya, c, p, V)
+    variables = [y, psi, ya, c]
+    creepages = {key: linear(kinematics[key], variables) for key in ("gx", "gy", "spin")}
+    return T, forces, creepages
 
 
 def _creepage_steps(subscript: str, creepages: dict) -> tuple:
@@ -203,7 +118,7 @@ def _bogie_symbols(path: str) -> tuple:
     return _BogieSymbols(**made), tuple(pairs)
 
 
-def _bogie_pieces(tag, frame, wheelsets, inputs, seat_y, seat_psi, w: _WheelsetSymbols, s: _BogieSymbols, V):
+def _bogie_pieces(tag, frame, wheelsets, inputs, seat_y, seat_psi, w: WheelsetSymbols, s: _BogieSymbols, V):
     """T, U, D and the wheel–rail generalized forces of one bogie: frame, two wheelsets, suspension.
 
     ``seat_y`` and ``seat_psi`` are the lateral displacement and yaw of the body at the secondary
@@ -287,7 +202,7 @@ def bogie() -> Derivation:
     True
     """
     V = sympy.Symbol("V")
-    w, wheelset_pairs = _wheelset_symbols("wheelset")
+    w, wheelset_pairs = wheelset_symbols("wheelset")
     s, bogie_pairs = _bogie_symbols("")
     q = coordinates("y_f psi_f y_1 psi_1 y_2 psi_2")
     inputs = coordinates(r"y_a1 y_a2 \Delta{}z_1 \Delta{}z_2")  # alignment, cross-level Δz
@@ -357,7 +272,7 @@ def lateral_car() -> Derivation:
     True
     """
     V = sympy.Symbol("V")
-    w, wheelset_pairs = _wheelset_symbols("bogie.wheelset")
+    w, wheelset_pairs = wheelset_symbols("bogie.wheelset")
     s, bogie_pairs = _bogie_symbols("bogie.")
     mc, Icz, Icx, l, h, kphi, cphi, g = sympy.symbols("m I_z I_x l h k_phi c_phi g")
     body_pairs = (

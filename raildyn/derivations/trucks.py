@@ -35,7 +35,8 @@ import sympy
 from sympy.core.function import AppliedUndef
 
 from raildyn.constants import GRAVITY
-from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
+from raildyn.derivations._core import Derivation, Step, coordinates, lagrange, time
+from raildyn.derivations._wheel_rail import WheelsetSymbols, linear, wheel_rail, wheelset_symbols
 
 __all__ = ["lateral_freight_car", "lateral_locomotive", "three_axle_truck", "three_piece_truck"]
 
@@ -64,130 +65,21 @@ def _attribute(path: str, scale: float = 1.0):
 # One wheelset on the rails: its inertia, and the wheel-rail forces by virtual work.
 
 
-@dataclass(frozen=True)
-class _WheelsetSymbols:
-    m: sympy.Symbol  # mass, kg (on a locomotive the motor's axle share is added)
-    I: sympy.Symbol  # yaw inertia, kg·m²
-    r0: sympy.Symbol
-    a: sympy.Symbol
-    lam: sympy.Symbol
-    W: sympy.Symbol
-    f11: sympy.Symbol
-    f22: sympy.Symbol
-    f23: sympy.Symbol
-    f33: sympy.Symbol
-    theta0: sympy.Symbol
-    eps: sympy.Symbol
-    ky: sympy.Symbol
-    kpsi: sympy.Symbol
-    cy: sympy.Symbol
-    cpsi: sympy.Symbol
-
-
-def _wheelset_symbols(p: _Parameters, prefix: str) -> _WheelsetSymbols:
-    """The :class:`~raildyn.wheelset.Wheelset`'s symbols, read from ``prefix + field``."""
-    return _WheelsetSymbols(
-        m=p("m_w", prefix + "mass"),
-        I=p("I_w", prefix + "yaw_inertia"),
-        r0=p("r_0", prefix + "rolling_radius"),
-        a=p("a", prefix + "half_gauge"),
-        lam=p("lambda", prefix + "conicity"),
-        W=p("W", prefix + "axle_load"),
-        f11=p("f_11", prefix + "f11"),
-        f22=p("f_22", prefix + "f22"),
-        f23=p("f_23", prefix + "f23"),
-        f33=p("f_33", prefix + "f33"),
-        theta0=p("vartheta_0", prefix + "contact_angle"),
-        eps=p("epsilon", prefix + "contact_angle_parameter"),
-        ky=p("k_y", prefix + "lateral_stiffness"),
-        kpsi=p("k_psi", prefix + "yaw_stiffness"),
-        cy=p("c_y", prefix + "lateral_damping"),
-        cpsi=p("c_psi", prefix + "yaw_damping"),
-    )
-
-
-def _wheel_rail(y, psi, ya, c, w: _WheelsetSymbols, V) -> tuple:
-    """The wheel–rail forces on wheelset (y, ψ) over the track inputs (y_a, c): see :func:`_wheel_rail_of`.
-
-    Derived once in generic coordinates and renamed for each wheelset.
-    """
-    generic = coordinates(r"y psi y_a \Delta{}z")
-    rename = dict(zip(generic, (y, psi, ya, c), strict=True))
-    Q, kinematics = _wheel_rail_of(w, V)
-    return (
-        {rename[q]: f.xreplace(rename) for q, f in Q.items()},
-        {name: f.xreplace(rename) for name, f in kinematics.items()},
-    )
-
-
-@functools.cache
-def _wheel_rail_of(w: _WheelsetSymbols, V) -> tuple:
-    """The wheel–rail forces on one wheelset by virtual work, linearised: ({y: Q_y, ψ: Q_ψ}, kinematics).
-
-    Left wheel s = +1 at y = +a, right wheel s = −1 (y to the left, ψ turning left):
-
-    * rolling radius r = r₀ + s λ (y − y_a) (the alignment y_a moves the rails under the wheelset);
-    * longitudinal creepage γ_x = (V − s a ψ̇ − Ω r)/V with Ω = V/r₀: the contact point of the wheel moves
-      forward at V − s a ψ̇ and its rim backward at Ω r;
-    * lateral creepage γ_y = (ẏ − V sin ψ)/V: the wheel rolls along its own plane, yawed by ψ;
-    * spin φ = ψ̇/V: the contact angle's part ∓ϑ/r₀ is left out, as raildyn does (its constant parts cancel
-      between the wheels, its difference 2εy/(a r₀) is small);
-    * Kalker's linear law per wheel: F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ, M_z = f₂₃γ_y − f₃₃φ;
-    * the rail's normal force, W/2 on each wheel, tilted by the contact angle ϑ = ϑ₀ + s ε (y − y_a)/a,
-      pushes the wheel laterally by −s (W/2) ϑ;
-    * on a cross-level c the track rolls by c/(2a), and the weight's component in its plane pushes the
-      wheelset toward the low rail by −W c/(2a).
-
-    The forces work through the displacements of the contact point, the point (0, s a) of the wheelset:
-    x = −s a sin ψ and y + s a (cos ψ − 1); the spin moment through ψ. The generalized forces are
-    linearised about rest before they join the equations (first-order Taylor polynomials).
-    """
-    y, psi, ya, c = coordinates(r"y psi y_a \Delta{}z")  # c: the cross-level Δz
-    yd, psid = y.diff(time), psi.diff(time)
-    pairs = []
-    kinematics = {}
-    for s in (1, -1):
-        radius = w.r0 + s * w.lam * (y - ya)
-        gx = (V - s * w.a * psid - V / w.r0 * radius) / V
-        gy = (yd - V * sympy.sin(psi)) / V
-        spin = psid / V
-        Fx = -w.f11 * gx
-        Fy = -w.f22 * gy - w.f23 * spin
-        Mz = w.f23 * gy - w.f33 * spin
-        angle = w.theta0 + s * w.eps * (y - ya) / w.a
-        normal = -s * w.W / 2 * angle
-        pairs += [
-            (Fx, -s * w.a * sympy.sin(psi)),
-            (Fy + normal, y + s * w.a * (sympy.cos(psi) - 1)),
-            (Mz, psi),
-        ]
-        if s == 1:
-            kinematics = {"gx": gx, "gy": gy, "spin": spin, "angle": angle}
-    pairs.append((-w.W * c / (2 * w.a), y))
-    Q = generalized_forces(pairs, [y, psi])
-    variables = [y, psi, ya, c]
-    return {y: _linear(Q[0], variables), psi: _linear(Q[1], variables)}, kinematics
-
-
-def _linear(expr, variables):
-    """The first-order Taylor polynomial of ``expr`` about rest (every variable and its rate 0)."""
-    rates = [v.diff(time) for v in variables]
-    everything = rates + list(variables)  # rates first: substituting a function must not touch its rate
-    rest = [(v, 0) for v in everything]
-    out = expr.subs(rest)
-    for v in everything:
-        out += expr.diff(v).subs(rest) * v
-    return sympy.expand(out)
+def _wheelset_symbols(p: _Parameters, prefix: str) -> WheelsetSymbols:
+    """The wheelset's symbols, read from ``prefix + field`` and registered with ``p``."""
+    w, pairs = wheelset_symbols(prefix.rstrip("."))
+    p.pairs.extend(pairs)
+    return w
 
 
 def _wheelset_steps(y, psi, ya, c, w, V) -> tuple:
     """Steps showing the left wheel's creepages and the wheelset's generalized forces."""
-    Q, kin = _wheel_rail(y, psi, ya, c, w, V)
+    Q, kin = wheel_rail(y, psi, ya, c, w, V)
     variables = [y, psi, ya, c]
     gx, gy, phi = sympy.symbols(r"\gamma_{xL} \gamma_y \varphi")
     return (
-        Step("longitudinal creepage of the left wheel", sympy.Eq(gx, _linear(kin["gx"], variables))),
-        Step("lateral creepage (both wheels)", sympy.Eq(gy, _linear(kin["gy"], variables))),
+        Step("longitudinal creepage of the left wheel", sympy.Eq(gx, linear(kin["gx"], variables))),
+        Step("lateral creepage (both wheels)", sympy.Eq(gy, linear(kin["gy"], variables))),
         Step("spin creepage (both wheels)", sympy.Eq(phi, kin["spin"])),
         Step("contact angle of the left wheel", sympy.Eq(sympy.Symbol(r"\vartheta_L"), kin["angle"])),
         Step(
@@ -234,7 +126,7 @@ def _equivalent_damper_step() -> Step:
 
 @dataclass(frozen=True)
 class _ThreePieceSymbols:
-    w: _WheelsetSymbols
+    w: WheelsetSymbols
     mf: sympy.Symbol
     If: sympy.Symbol
     Ib: sympy.Symbol
@@ -285,9 +177,9 @@ def _element(k, c, deflection) -> _Part:
     return _Part(U=k * deflection**2 / 2, D=c * deflection.diff(time) ** 2 / 2)
 
 
-def _wheelset(y, psi, ya, c, w: _WheelsetSymbols, V) -> _Part:
-    """A wheelset on the rails: its inertia and the wheel–rail forces (:func:`_wheel_rail`)."""
-    Q, _ = _wheel_rail(y, psi, ya, c, w, V)
+def _wheelset(y, psi, ya, c, w: WheelsetSymbols, V) -> _Part:
+    """A wheelset on the rails: its inertia and the wheel–rail forces (``_wheel_rail.wheel_rail``)."""
+    Q, _ = wheel_rail(y, psi, ya, c, w, V)
     return _Part(T=w.m * y.diff(time) ** 2 / 2 + w.I * psi.diff(time) ** 2 / 2, forces=tuple(Q.items()))
 
 
@@ -416,7 +308,7 @@ def _speed() -> sympy.Symbol:
     return sympy.Symbol("V")
 
 
-def _leading_wheelset_steps(truck: _Truck, w: _WheelsetSymbols, V) -> tuple:
+def _leading_wheelset_steps(truck: _Truck, w: WheelsetSymbols, V) -> tuple:
     y, psi = truck.coords[-4:-2] if len(truck.coords) == 7 else truck.coords[2:4]
     return _wheelset_steps(y, psi, truck.alignment[0], truck.cross_level[0], w, V)
 
@@ -577,7 +469,7 @@ def lateral_freight_car() -> Derivation:
 
 @dataclass(frozen=True)
 class _ThreeAxleSymbols:
-    w: _WheelsetSymbols
+    w: WheelsetSymbols
     mt: sympy.Symbol
     It: sympy.Symbol
     mm: sympy.Symbol
