@@ -73,5 +73,7 @@ def test_notebooks_keep_the_retired_symbols_out(path):
     assert not found, f"{path.name}: {found[:8]}"
     if path.stem[:2] not in ("01", "11"):  # δ is the logarithmic decrement, chapters 1 and 11
         # δ before a coordinate is the variation of virtual work (δx, δw, δψ): an operator, allowed
-        bare = re.findall(r"\\delta(?![_a-zA-Z])(?!\s*(?:\\,)?\s*(?:[a-zA-Z]|\\(?:psi|theta|phi|mathbf)))", text)
+        bare = re.findall(
+            r"\\delta(?![_a-zA-Z])(?!\s*(?:\\,)?\s*(?:[a-zA-Z]|\\(?:psi|theta|phi|mathbf)))", text
+        )
         assert not bare, f"{path.name}: δ used for something other than the logarithmic decrement"
