@@ -65,10 +65,10 @@ CASES = {
         lambda ax: truck_schematic(ThreePieceTruck(), ax=ax),
         ["$b$", "$d$", "$a$", "$r_0$", "$k_w$", r"$\psi_b$"],
     ),
-    "coupler chain": (lambda ax: coupler_chain(CONSIST, ax=ax), ["$e$", "$x_1$", r"$\Delta x_1$", "$V$"]),
+    "coupler chain": (lambda ax: coupler_chain(CONSIST, ax=ax), ["$e$", "$x_0$", r"$\Delta x_0$", "$V$"]),
     "beam, force": (
         lambda ax: beam_load(SimplySupportedBeam(), 6.0, ax=ax),
-        ["$L$", "$x = Vt$", "$F$", "$V$"],
+        ["$L$", "$x = Vt$", "$P$", "$V$"],
     ),
     "beam, sprung mass": (
         lambda ax: beam_load(SimplySupportedBeam(), 6.0, sprung=True, ax=ax),

@@ -97,7 +97,7 @@ def coupler_chain(consist: Consist, gear: DraftGear | None = None, *, vehicles: 
                 d.label(
                     ax,
                     (centre - 0.3, floor + height + 0.3),
-                    f"$x_{_subscript(i + 1)}$",
+                    f"$x_{_subscript(i)}$",
                     color=d.COORDINATE,
                     ha="right",
                 )
@@ -118,7 +118,7 @@ def coupler_chain(consist: Consist, gear: DraftGear | None = None, *, vehicles: 
                 art["slack"].append((arrow, t))
                 texts.append(t)
                 texts.append(
-                    d.label(ax, (rear - gap / 2, -0.35), f"$\\Delta x_{_subscript(i + 1)}$", size=8, va="top")
+                    d.label(ax, (rear - gap / 2, -0.35), f"$\\Delta x_{_subscript(i)}$", size=8, va="top")
                 )
             front = rear - gap
         ax.plot([front + gap - 2.0, 2.0], [0.0, 0.0], color="black", lw=1.0)
@@ -128,7 +128,7 @@ def coupler_chain(consist: Consist, gear: DraftGear | None = None, *, vehicles: 
             texts.append(
                 d.label(
                     ax,
-                    (front / 2, -0.9),
+                    (front / 2, -1.6),
                     f"slack $e$ = {1e3 * gear.slack:.3g} mm, drawn × {_SLACK_SCALE:g}",
                     size=7,
                     color=d.DIMENSION,
@@ -164,7 +164,7 @@ class BeamLoad:
     position : float
         Where the load stands, x = Vt, m, in [0, L].
     sprung : bool
-        False: a force F; True: a sprung mass (a body M_v on a spring k_v and damper c_v over a
+        False: a force P; True: a sprung mass (a body M_v on a spring k_v and damper c_v over a
         wheel m_w), as in chapter 10's vehicle–bridge model.
     ax : matplotlib.axes.Axes, optional
         Where to draw; new axes if None.
@@ -214,7 +214,7 @@ class BeamLoad:
                 texts["wheel"] = d.label(ax, (0.0, 0.0), "$m_w$", size=8, ha="left")
             else:
                 art["load"] = d.arrow(ax, (0.0, 0.0), (0.0, 1.0), color=d.FORCE, lw=1.4)
-                texts["load"] = d.label(ax, (0.0, 0.0), "$F$", color=d.FORCE, ha="left")
+                texts["load"] = d.label(ax, (0.0, 0.0), "$P$", color=d.FORCE, ha="left")
             art["x"] = d.arrow(ax, (0.0, 0.0), (0.0, 0.0))
             texts["x"] = d.label(ax, (0.0, 0.0), "$x = Vt$", color=d.COORDINATE, size=8)
             _, texts["L"] = d.dimension(ax, (0.0, -2.2 * u), (span, -2.2 * u), "$L$", side=-1.0)
@@ -280,7 +280,7 @@ def beam_load(beam: SimplySupportedBeam, position: float = 0.0, *, sprung: bool 
     stands at ``position`` = Vt and travels to the right at the speed V. The beam is drawn bent
     in its static shape under the load (the point-load deflection of a simply supported beam,
     scaled so that a load at midspan sags L/14 in the picture), so that the bend follows the load
-    as it crosses. The load is a force F, or with ``sprung`` a sprung mass (body M_v on k_v and c_v
+    as it crosses. The load is a force P, or with ``sprung`` a sprung mass (body M_v on k_v and c_v
     over a wheel m_w), the moving oscillator of chapter 10.
 
     Parameters
@@ -290,7 +290,7 @@ def beam_load(beam: SimplySupportedBeam, position: float = 0.0, *, sprung: bool 
     position : float
         Where the load stands, x = Vt, m, in [0, L].
     sprung : bool
-        False: a force F; True: a sprung mass.
+        False: a force P; True: a sprung mass.
     ax : matplotlib.axes.Axes, optional
         Where to draw; new axes if None.
 
