@@ -58,6 +58,7 @@ MOVES = {
     chapter04.profiles: dict(rail="60E1 at 1:20", gauge_mm=1440.0, wheel="cone 1:20"),
     chapter05.klingel: dict(conicity=0.3, rolling_radius_mm=400.0, semi_wheelbase=1.0),
     chapter05.wheelset_roots: dict(conicity=0.3, yaw_stiffness=8.0, lateral_stiffness=3.0),
+    chapter05.hunting_wheelset: dict(speed_kmh=250.0, phase_deg=90.0),
     chapter05.curved_wheelset: dict(
         radius=900.0, deficiency_mm=120.0, yaw_stiffness=10.0, lateral_stiffness=3.0
     ),

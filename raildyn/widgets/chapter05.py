@@ -1,5 +1,5 @@
 """Chapter 5 widgets: Klingel's kinematic oscillation, the suspended wheelset's roots against speed,
-and the suspended wheelset's steady state on a curve.
+its hunting mode drawn in plan, and the suspended wheelset's steady state on a curve.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
 models are :mod:`raildyn.wheelset`, :mod:`raildyn.stability` and
@@ -13,11 +13,11 @@ from functools import lru_cache
 
 import numpy as np
 
-from raildyn import plots, stability, wheelset
+from raildyn import diagrams, plots, stability, wheelset
 from raildyn.curving import geometry, steady_curving
 from raildyn.widgets._core import Recipe, slider
 
-__all__ = ["curved_wheelset", "klingel", "wheelset_roots"]
+__all__ = ["curved_wheelset", "hunting_wheelset", "klingel", "wheelset_roots"]
 
 _DISTANCE = np.linspace(0.0, 120.0, 1200)  # m of track: a fixed axis keeps the cached picture valid
 
@@ -149,6 +149,130 @@ def wheelset_roots():
         ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return WHEELSET_ROOTS.build()
+
+
+# ---------------------------------------------------------------------------
+# The hunting wheelset, drawn in plan
+
+_HUNTING_WHEELSET = wheelset.Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # notebook 05's soft one
+_HUNTING_EXAGGERATE = 20.0  # hunting is millimetres and milliradians: drawn 20 times larger
+_HUNTING_Y = 4.0e-3  # m: the largest lateral displacement drawn over the cycle
+_HUNTING_PSI = 0.9 * (np.pi / 6) / _HUNTING_EXAGGERATE  # rad: within what wheelset_plan draws
+_PHASES = np.linspace(0.0, 360.0, 121)  # degrees over one cycle of the mode
+
+
+def _hunting_controls():
+    return {
+        "speed_kmh": slider("speed V (km/h)", 150.0, 20.0, 300.0, 5.0, fmt=".0f"),
+        "phase_deg": slider("phase ωt (°)", 0.0, 0.0, 360.0, 15.0, fmt=".0f"),
+    }
+
+
+@lru_cache(maxsize=4)
+def _hunting_motion(speed: float) -> tuple[np.ndarray, np.ndarray, complex]:
+    """The least-damped mode of the chapter's soft wheelset at ``speed`` (m/s), over one cycle.
+
+    Returns y (m) and ψ (rad) at the phases ωt of ``_PHASES`` (degrees): the mode's eigenvector
+    times e^{λt}, growing or decaying as e^{σt} over the cycle, scaled so that the largest
+    |y| is 4 mm (or |ψ| stays within what the plan draws); and the eigenvalue λ = σ + iω (1/s).
+    """
+    sweep = stability.mode_sweep(_HUNTING_WHEELSET, [speed])
+    j = sweep.hunting_mode
+    lam = complex(sweep.eigenvalues[0, j])
+    shape = sweep.shapes[0, :, j]
+    phase = np.radians(_PHASES)
+    # x(t) = Re(v e^{λt}) at t = φ/ω: one turn of the phase, with the growth e^{σt} of the cycle.
+    path = np.exp((lam.real / abs(lam.imag) + 1j) * phase)
+    y, psi = np.real(shape[0] * path), np.real(shape[1] * path)
+    scale = min(_HUNTING_Y / np.abs(y).max(), _HUNTING_PSI / np.abs(psi).max())
+    return scale * y, scale * psi, lam
+
+
+def _hunting_setup(live, status):
+    ax_plan, ax_time = live.axes[0]
+    plan = diagrams.wheelset_plan(_HUNTING_WHEELSET, exaggerate=_HUNTING_EXAGGERATE, ax=ax_plan)
+    art = plan.artists
+    (y_line,) = ax_time.plot(_PHASES, np.zeros_like(_PHASES), color=plots.COLORS[0], label="$y$ (mm)")
+    (psi_line,) = ax_time.plot(_PHASES, np.zeros_like(_PHASES), color=plots.COLORS[1], label=r"$\psi$ (mrad)")
+    cursor = ax_time.axvline(0.0, color="0.5", lw=0.8, ls=":")
+    (dots,) = ax_time.plot([0.0, 0.0], [0.0, 0.0], "o", color="0.2", ms=4)
+    note = ax_time.text(0.02, 0.97, "", transform=ax_time.transAxes, va="top", size=8)
+    ax_time.set_xlim(0.0, 360.0)
+    ax_time.set_xticks(np.arange(0.0, 361.0, 90.0))
+    ax_time.set_ylim(-5.0, 5.0)
+    ax_time.set_xlabel("phase ωt over one cycle (°)")
+    ax_time.set_ylabel("y (mm), ψ (mrad)")
+    ax_time.legend(loc="lower right")
+    live.animate(
+        *art["wheels"],
+        art["axle"],
+        art["heading"],
+        art["reference"],
+        art["y"],
+        art["psi"],
+        art["psi_head"],
+        art["texts"]["y"],
+        art["texts"]["psi"],
+        y_line,
+        psi_line,
+        cursor,
+        dots,
+        note,
+    )
+
+    def redraw(v):
+        speed = float(v["speed_kmh"]) / 3.6
+        y, psi, lam = _hunting_motion(speed)
+        k = int(np.argmin(np.abs(_PHASES - float(v["phase_deg"]))))
+        plan.update(y[k], psi[k])
+        y_line.set_ydata(1e3 * y)
+        psi_line.set_ydata(1e3 * psi)
+        cursor.set_xdata([_PHASES[k]])
+        dots.set_data([_PHASES[k]] * 2, [1e3 * y[k], 1e3 * psi[k]])
+        frequency = abs(lam.imag) / (2 * np.pi)
+        xi = -lam.real / abs(lam)
+        per_cycle = np.exp(2 * np.pi * lam.real / abs(lam.imag))
+        note.set_text(f"{v['speed_kmh']:.0f} km/h: f = {frequency:.2f} Hz, ξ = {xi:.3f}")
+        ws = _HUNTING_WHEELSET
+        L = wheelset.kinematic_wavelength(ws.rolling_radius, ws.half_gauge, ws.conicity)
+        status.value = (
+            f"least-damped mode at {speed:.1f} m/s: f = {frequency:.2f} Hz "
+            f"(Klingel V/L = {speed / L:.2f} Hz), "
+            f"ξ = {xi:.3f}, amplitude × {per_cycle:.2f} per cycle ("
+            + ("grows: above V_c" if lam.real > 0 else "decays: below V_c")
+            + ")"
+        )
+
+    return redraw
+
+
+HUNTING_WHEELSET = Recipe(
+    _hunting_controls,
+    _hunting_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (10.0, 3.6)},
+    static={"speed_kmh": [150.0, 250.0], "phase_deg": [float(p) for p in range(0, 360, 30)]},
+    title="The hunting mode of the suspended wheelset, drawn in plan over one cycle",
+)
+
+
+def hunting_wheelset():
+    """The suspended wheelset's least-damped (hunting) mode, drawn in plan and moved over one cycle.
+
+    The chapter's soft wheelset (k_ψ = 2 MN·m/rad, k_y = 1 MN/m, V_c ≈ 197 km/h). At the chosen
+    speed the linear model's least-damped mode, λ = σ + iω with eigenvector (y, ψ), gives the motion
+    Re(v e^{λt}); the phase slider moves ωt over one cycle. Left: the wheelset in plan
+    (:func:`raildyn.diagrams.rolling.wheelset_plan`, y and ψ drawn 20 times larger), moved in place; right:
+    y (mm) and ψ (mrad) over the cycle, scaled so that the largest |y| is 4 mm, growing above the
+    critical speed and decaying below it. Controls: speed V (km/h), phase ωt (degrees).
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
+    """
+    return HUNTING_WHEELSET.build()
 
 
 # ---------------------------------------------------------------------------
@@ -293,6 +417,8 @@ BENCH_MOVES = [
     ("ch05 klingel λ", KLINGEL, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
     ("ch05 wheelset_roots k_ψ", WHEELSET_ROOTS, "yaw_stiffness", [1.0, 2.0, 4.0, 8.0, 12.0, 3.0]),
     ("ch05 wheelset_roots λ", WHEELSET_ROOTS, "conicity", [0.05, 0.1, 0.2, 0.3, 0.4, 0.15]),
+    ("ch05 hunting_wheelset V", HUNTING_WHEELSET, "speed_kmh", [100.0, 150.0, 200.0, 250.0, 300.0, 150.0]),
+    ("ch05 hunting_wheelset phase", HUNTING_WHEELSET, "phase_deg", [30.0, 90.0, 180.0, 270.0, 330.0, 0.0]),
     ("ch05 curved_wheelset k_ψ", CURVED_WHEELSET, "yaw_stiffness", [5.0, 10.0, 20.0, 40.0, 80.0, 62.8]),
     ("ch05 curved_wheelset R", CURVED_WHEELSET, "radius", [400.0, 800.0, 1500.0, 3000.0, 600.0]),
 ]

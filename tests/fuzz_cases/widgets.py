@@ -125,6 +125,7 @@ ENTRIES = [
             "chapter04.hertz",
             "chapter04.profiles",
             "chapter05.curved_wheelset",
+            "chapter05.hunting_wheelset",
             "chapter05.klingel",
             "chapter05.wheelset_roots",
             "chapter06.ride_quality",
