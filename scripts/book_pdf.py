@@ -60,7 +60,7 @@ def print_book(html: Path, out: Path) -> int:
             page = browser.new_page()
             page.emulate_media(media="print")
             for i, path in enumerate(pages, 1):
-                page.goto(base + path, wait_until="networkidle", timeout=120_000)
+                page.goto(base + path, wait_until="load", timeout=120_000)
                 page.evaluate(_TYPESET)
                 title = page.title().split("—")[0].split("#")[0].strip() or path
                 pdf = page.pdf(format="A4", print_background=True, margin={"top": "15mm", "bottom": "15mm"})

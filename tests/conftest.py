@@ -149,7 +149,14 @@ def pytest_collection_modifyitems(config, items):
         if "reference" in getattr(item, "fixturenames", ()):
             item.add_marker(pytest.mark.reference)
     # stable: the book's tests move to the end, so its validation page sees every check of the session
-    items.sort(key=lambda item: "built_book" in getattr(item, "fixturenames", ()))
+    # and the Binder test just before them, so that its environment, built in the background from the
+    # start of the session, is ready when the test asks for it
+    items.sort(
+        key=lambda item: (
+            "built_book" in getattr(item, "fixturenames", ()),
+            "binder_run" in getattr(item, "fixturenames", ()),
+        )
+    )
 
 
 def pytest_sessionfinish(session, exitstatus):

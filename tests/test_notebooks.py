@@ -118,6 +118,27 @@ def test_no_answer_prints_unhidden_in_the_built_book(path, built_book):
     assert not unfolded, f"{path.name}: answer cells whose content is not folded: {unfolded[:3]}"
 
 
+def test_no_line_of_inline_mathematics_starts_like_a_list_item():
+    # Markdown reads a line that starts with "+ " or "- " as a list item even inside $...$, and the
+    # mathematics is then left as raw TeX (the printed book showed it; the browser test did not).
+    found = []
+    for path in NOTEBOOKS:
+        for i, cell in enumerate(nbformat.read(path, as_version=4).cells):
+            if cell.cell_type != "markdown":
+                continue
+            paragraph = []
+            for line in cell.source.split("\n"):
+                if not line.strip():
+                    paragraph = []
+                    continue
+                text = re.sub(r"\$\$.*?\$\$", "", "\n".join(paragraph), flags=re.S)
+                inline_open = text.count("$$") % 2 == 0 and text.replace("$$", "").count("$") % 2 == 1
+                if inline_open and re.match(r"\s{0,3}[+*-]\s", line):
+                    found.append(f"{path.name} cell {i}: {line[:60]!r}")
+                paragraph.append(line)
+    assert not found, "\n".join(found)
+
+
 COLAB = re.compile(r'"google\.colab" in sys\.modules and importlib\.util\.find_spec\("raildyn"\) is None')
 
 
