@@ -40,6 +40,7 @@ def main(work: Path) -> None:
     env = {k: v for k, v in os.environ.items() if k not in ("VIRTUAL_ENV", "PYTHONPATH", "MPLCONFIGDIR")}
     env["PATH"] = f"{bin_}{os.pathsep}{env['PATH']}"
     env["RAILDYN_PROGRESS"] = "0"
+    env["PIP_NO_COMPILE"] = "1"  # no byte-compiling at install: less CPU taken from the tests running beside
     subprocess.run([bin_ / "python", "-m", "pip", "install", "-q", *BASE], check=True, env=env)
     subprocess.run(["bash", "binder/postBuild"], cwd=repo, check=True, env=env, stdout=subprocess.DEVNULL)
     subprocess.run([bin_ / "python", "-c", RUN], cwd=repo / "notebooks", env=env, check=True)

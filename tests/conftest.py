@@ -71,7 +71,30 @@ def built_book(tmp_path_factory):
     (startup / "00-strict.py").write_text(STRICT)
     env = {**os.environ, "RAILDYN_PROGRESS": "0", "IPYTHONDIR": str(ipython)}
     proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900, env=env)
-    return proc, ROOT / "book" / "_build" / "html"
+    html = ROOT / "book" / "_build" / "html"
+    if proc.returncode == 0 and Path("/usr/bin/chromium").exists():
+        # `make pdf`'s printing (a minute or two of chromium) starts now, in the background, so that it
+        # overlaps the other tests of the built book; tests/test_pdf.py waits for it (``printed_book``).
+        out = tmp_path_factory.mktemp("pdf") / "raildyn.pdf"
+        log = (out.parent / "log.txt").open("w")
+        script = ROOT / "scripts" / "book_pdf.py"
+        _PDF.update(out=out, log=log, proc=subprocess.Popen(
+            [sys.executable, str(script), str(html), str(out)], stdout=log, stderr=subprocess.STDOUT
+        ))  # fmt: skip
+    return proc, html
+
+
+_PDF: dict = {}
+
+
+@pytest.fixture(scope="session")
+def printed_book(built_book):
+    """The book printed by ``scripts/book_pdf.py`` in the background: (finished process, its log, the PDF)."""
+    if not _PDF:
+        pytest.skip("the book was not printed (its build failed, or chromium is missing)")
+    _PDF["proc"].wait(timeout=1800)
+    _PDF["log"].close()
+    return _PDF["proc"], (_PDF["out"].parent / "log.txt").read_text(), _PDF["out"]
 
 
 # -- the validation page's record ------------------------------------------------------------------------
@@ -155,11 +178,13 @@ def pytest_collection_modifyitems(config, items):
         key=lambda item: (
             "built_book" in getattr(item, "fixturenames", ()),
             "binder_run" in getattr(item, "fixturenames", ()),
+            "printed_book" in getattr(item, "fixturenames", ()),  # last: the printing runs meanwhile
         )
     )
 
 
 def pytest_sessionfinish(session, exitstatus):
     write_references()
-    if _BINDER and _BINDER["proc"].poll() is None:  # a session stopped early leaves no install behind
-        _BINDER["proc"].kill()
+    for job in (_BINDER, _PDF):  # a session stopped early leaves nothing running behind
+        if job and job["proc"].poll() is None:
+            job["proc"].kill()
