@@ -1,3 +1,5 @@
+import dataclasses
+
 """The figure registry and the ``python -m raildyn figures`` command."""
 
 import numpy as np
@@ -35,11 +37,20 @@ def test_unknown_figure_id():
         figures.show(1.4)
 
 
-def test_command_line_writes_every_figure(tmp_path, capsys):
+def test_command_line_writes_every_figure(tmp_path, capsys, monkeypatch):
+    # The command's part is one file per registered figure, named by its id: each figure's own drawing
+    # is test_each_figure_builds's, so here every figure draws a quick stand-in (the real ones take 40 s).
+    def quick():
+        fig = figures.new_figure(figsize=(3, 2))
+        fig.subplots().plot([0, 1], [0, 1])
+        return fig
+
+    for fid, spec in list(figures.REGISTRY.items()):
+        monkeypatch.setitem(figures.REGISTRY, fid, dataclasses.replace(spec, draw=quick))
     assert main(["figures", "--out", str(tmp_path)]) == 0
     written = sorted(p.stem for p in tmp_path.glob("*.png"))
     assert written == sorted(figures.REGISTRY)
-    assert all((tmp_path / f"{fid}.png").stat().st_size > 10_000 for fid in written)
+    assert all((tmp_path / f"{fid}.png").stat().st_size > 1_000 for fid in written)
 
 
 def test_command_line_lists(capsys):
