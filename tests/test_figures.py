@@ -1,6 +1,6 @@
-import dataclasses
-
 """The figure registry and the ``python -m raildyn figures`` command."""
+
+import dataclasses
 
 import numpy as np
 import pytest
