@@ -61,14 +61,20 @@ _FIELDS = {
 assert set(_FIELDS) == {f.name for f in fields(WheelsetSymbols)}
 
 
-def wheelset_symbols(path: str) -> tuple:
-    """The wheelset's symbols and their (symbol, dotted attribute path) pairs, the wheelset at ``path``.
+def symbol_table(fields: dict, path: str) -> tuple:
+    """Symbols for a table ``{key: (symbol name, attribute)}`` and their (symbol, ``path + attribute``) pairs.
 
     No assumptions (positive, ...) on any symbol: nothing here simplifies, and sympy's assumption
     queries would take most of the time of building a car's matrices.
     """
-    made = {key: sympy.Symbol(name) for key, (name, _) in _FIELDS.items()}
-    pairs = tuple((made[key], f"{path}.{attribute}") for key, (_, attribute) in _FIELDS.items())
+    made = {key: sympy.Symbol(name) for key, (name, _) in fields.items()}
+    pairs = tuple((made[key], f"{path}{attribute}") for key, (_, attribute) in fields.items())
+    return made, pairs
+
+
+def wheelset_symbols(path: str) -> tuple:
+    """The wheelset's symbols and their (symbol, dotted attribute path) pairs, the wheelset at ``path``."""
+    made, pairs = symbol_table(_FIELDS, f"{path}.")
     return WheelsetSymbols(**made), pairs
 
 

@@ -23,7 +23,13 @@ import sympy
 
 from raildyn.constants import GRAVITY
 from raildyn.derivations._core import Derivation, Step, coordinates, lagrange, time
-from raildyn.derivations._wheel_rail import WheelsetSymbols, linear, wheel_rail, wheelset_symbols
+from raildyn.derivations._wheel_rail import (
+    WheelsetSymbols,
+    linear,
+    symbol_table,
+    wheel_rail,
+    wheelset_symbols,
+)
 
 __all__ = ["bogie", "lateral_car"]
 
@@ -110,12 +116,8 @@ def _bogie_symbols(path: str) -> tuple:
         "kspsi": ("k_{s\\psi}", "secondary_yaw_stiffness"),
         "cspsi": ("c_{s\\psi}", "secondary_yaw_damping"),
     }
-    made, pairs = {}, []
-    for key, (name, attribute) in fields.items():
-        symbol = sympy.Symbol(name)
-        made[key] = symbol
-        pairs.append((symbol, f"{path}{attribute}"))
-    return _BogieSymbols(**made), tuple(pairs)
+    made, pairs = symbol_table(fields, path)
+    return _BogieSymbols(**made), pairs
 
 
 def _bogie_pieces(tag, frame, wheelsets, inputs, seat_y, seat_psi, w: WheelsetSymbols, s: _BogieSymbols, V):
