@@ -10,15 +10,16 @@ button. The redraw function updates the existing artists (``set_data``,
 from __future__ import annotations
 
 import base64
-import io
+import struct
+import zlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 import ipywidgets as widgets
 import matplotlib
+import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
-from PIL import Image
 
 from raildyn import _checks
 from raildyn.plots import STYLE
@@ -99,17 +100,44 @@ class LiveFigure:
                 self.canvas.restore_region(self._background)
             for artist in self._moving:
                 self.figure.draw_artist(artist)
-        width, height = self.canvas.get_width_height()
-        picture = Image.frombuffer("RGBA", (width, height), self.canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
-        buffer = io.BytesIO()
-        picture.save(buffer, format="PNG", compress_level=1)  # fast; the static frames are recompressed
-        return buffer.getvalue()
+        return _png(np.asarray(self.canvas.buffer_rgba()))
 
     def refresh(self) -> bytes:
         """Render and show the new frame in the image widget; return its PNG bytes."""
         frame = self.render()
         self.image.value = frame
         return frame
+
+
+_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def _png_chunk(kind: bytes, data: bytes) -> bytes:
+    """One PNG chunk: length, type, data and the CRC-32 of type and data (PNG specification, sec. 5.3)."""
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+
+def _png(rgba: np.ndarray) -> bytes:
+    """A frame's pixels (height, width, 4 bytes of RGBA) as a PNG file, without row filters, zlib level 1.
+
+    Pillow chooses a filter for every row by trying each one, which took as long as the compression
+    itself (about 4 ms of a 800 × 300 frame's 8); a line plot compresses nearly as well unfiltered
+    (the frame comes out about 5 % larger, in half the time). The static frames are recompressed
+    (``_static.compact_png``). Format: PNG specification (ISO/IEC 15948), 8-bit RGBA, filter type 0.
+    """
+    height, width, _ = rgba.shape
+    rows = np.empty((height, 4 * width + 1), np.uint8)
+    rows[:, 0] = 0  # filter type 0 (none) at the start of every row
+    rows[:, 1:] = rgba.reshape(height, 4 * width)
+    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)  # 8-bit RGBA, no interlace
+    return b"".join(
+        (
+            _PNG_SIGNATURE,
+            _png_chunk(b"IHDR", header),
+            _png_chunk(b"IDAT", zlib.compress(rows, 1)),
+            _png_chunk(b"IEND", b""),
+        )
+    )
 
 
 class LiveBox(widgets.VBox):
