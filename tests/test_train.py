@@ -209,6 +209,88 @@ def test_run_in_peak_grows_with_slack():
     assert np.all(np.diff(peaks) > 0.05 * peaks[0]), peaks
 
 
+def _solve_ivp_reference(model, duration, extension, samples):
+    """The run of simulate's defaults (RK45, rtol 1e-7) through scipy's solve_ivp: the reference."""
+    from raildyn.train import longitudinal
+
+    n = model.size
+    atol = np.r_[1e-3, np.full(n - 1, 1e-6), np.full(n, 1e-5)]
+    y0 = model.initial_state(20.0, extension)
+    t_eval = np.linspace(0.0, duration, samples)
+    return longitudinal._integrate_solve_ivp(model, y0, t_eval, 1e-7, atol, "RK45", np.inf, None)
+
+
+# The compiled Dormand-Prince pair has RK45's step control and dense output, so it takes solve_ivp's
+# steps; but the two round differently (solve_ivp's error norm goes through BLAS), and a braking train
+# magnifies round-off: once the slack runs in again and near the stop, an error norm within round-off
+# of 1 flips a step between accepted and rejected. solve_ivp's own run with the initial speeds changed
+# by one part in 2^52 strays as far (measured over 60 s, 10 and 20 cars: 40 and 6 evaluations more or
+# fewer, speeds up to 1e-5 to 4e-4 of the initial speed apart near the stop, as the compiled run).
+# So the steps and samples are compared over the run-in, where both stay within round-off, and the
+# whole stop by what the book reads from it: the peak and the stop time.
+@pytest.mark.parametrize("cars, span", [(20, 20.0), (150, 30.0)])
+def test_compiled_rk45_takes_the_steps_of_solve_ivp(cars, span):
+    model = train.braking_model(cars, 2)
+    extension = model.gear.slack / 2
+    samples = round(10 * span) + 1
+    run = train.simulate(model, span, 20.0, initial_extension=extension, samples=samples)
+    ref = _solve_ivp_reference(model, span, extension, samples)
+    assert run.evaluations == ref.evaluations
+    for name in ("position", "speed"):
+        a, b = getattr(run, name), getattr(ref, name)
+        assert np.abs(a - b).max() <= 1e-9 * np.abs(b).max(), name
+    # The force is the draft gear's stiffness times a difference of extensions (mm): it magnifies
+    # their round-off (measured 2.5e-8 of the peak for 20 cars).
+    assert np.abs(run.coupler_force - ref.coupler_force).max() <= 1e-7 * np.abs(ref.coupler_force).max()
+    assert (run.peak.coupler, run.peak.time, run.peak.kind) == (
+        ref.peak.coupler,
+        ref.peak.time,
+        ref.peak.kind,
+    )
+    assert run.peak.force == pytest.approx(ref.peak.force, rel=1e-9)
+
+
+def test_compiled_rk45_stops_the_train_as_solve_ivp_does():
+    model = train.braking_model(20, 2)
+    extension = model.gear.slack / 2
+    run = train.simulate(model, 60.0, 20.0, initial_extension=extension, samples=601)
+    ref = _solve_ivp_reference(model, 60.0, extension, 601)
+    assert run.evaluations == pytest.approx(ref.evaluations, rel=0.01)  # 4058 against 4082
+    assert (run.peak.coupler, run.peak.time, run.peak.kind) == (
+        ref.peak.coupler,
+        ref.peak.time,
+        ref.peak.kind,
+    )
+    assert run.peak.force == pytest.approx(ref.peak.force, rel=1e-9)
+    assert run.stop_time() == ref.stop_time() is not None
+
+
+def test_a_run_in_chunks_takes_the_steps_of_one_run(monkeypatch):
+    # The progress bar moves between chunks of steps; a chunk resumes exactly where the last stopped.
+    from raildyn.train import longitudinal
+
+    model = train.braking_model(10, 1)
+    whole = train.simulate(model, 20.0, 20.0, samples=201)
+    monkeypatch.setattr(longitudinal, "_CHUNK", 7)
+    pieces = train.simulate(model, 20.0, 20.0, samples=201, progress=True)
+    assert pieces.evaluations == whole.evaluations
+    np.testing.assert_array_equal(pieces.speed, whole.speed)
+    np.testing.assert_array_equal(pieces.coupler_force, whole.coupler_force)
+
+
+def test_other_methods_run_through_solve_ivp():
+    from scipy.integrate import solve_ivp
+
+    model = train.braking_model(10, 1)
+    run = train.simulate(model, 20.0, 20.0, samples=201, method="DOP853")
+    n = model.size
+    atol = np.r_[1e-3, np.full(n - 1, 1e-6), np.full(n, 1e-5)]
+    t_eval = np.linspace(0.0, 20.0, 201)
+    ref = solve_ivp(model.rhs, (0.0, 20.0), model.initial_state(20.0), "DOP853", t_eval, rtol=1e-7, atol=atol)
+    assert run.evaluations == ref.nfev
+    np.testing.assert_array_equal(run.speed, ref.y[n:])
+
+
 def test_simulation_converges_with_tolerance():
     # The default rtol against one 100× tighter: peak coupler force within 0.5 %.
     model = train.braking_model(20, 1)

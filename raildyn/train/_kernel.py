@@ -26,7 +26,9 @@ import math
 import numba
 import numpy as np
 
-__all__ = ["ROWS", "SCALARS", "all_finite", "coupler_force", "rhs"]
+from raildyn.integrators import _dopri
+
+__all__ = ["ROWS", "SCALARS", "all_finite", "coupler_force", "pack", "rhs", "rhs_dopri"]
 
 # Rows of ``table`` (one column per vehicle).
 (ROW_INV_MASS, ROW_A0, ROW_A1, ROW_A2, ROW_CURVE, ROW_WEIGHT, ROW_BRAKE, ROW_ARRIVAL,
@@ -79,13 +81,20 @@ def _segment(xs, position):
 @numba.njit(cache=True)
 def rhs(t, y, table, scalars, route):
     """dy/dt of ``y = [x_0, Δx_0 … Δx_{n−2}, v_0 … v_{n−1}]`` (see TrainModel.initial_state)."""
+    out = np.empty(2 * table.shape[1])
+    _rhs_into(t, y, table, scalars, route, out)
+    return out
+
+
+@numba.njit(cache=True)
+def _rhs_into(t, y, table, scalars, route, out):
+    """:func:`rhs` written into ``out`` (2n), allocating nothing: the integrator calls it each stage."""
     n = table.shape[1]
-    out = np.empty(2 * n)
-    force = np.zeros(n)
     s = scalars
     creep = s[S_CREEP]
     brake_on = s[S_BRAKE] > 0.0 and t > s[S_BRAKE_START]
     x = y[0]  # route position of vehicle i, walked back along the train
+    behind = 0.0  # the force of the coupler ahead of vehicle i (+ tension), pulling it forward
     for i in range(n):
         v = y[n + i]
         speed = abs(v)
@@ -112,14 +121,44 @@ def rhs(t, y, table, scalars, route):
             shape = min(speed / s[S_DYNAMIC_PEAK], min(1.0, s[S_DYNAMIC_FADE] / max(speed, 1e-12)))
             dynamic = s[S_DYNAMIC] * table[ROW_DYNAMIC, i] * shape
             total += traction - math.tanh(v / creep) * dynamic
-        force[i] += total
+        force = behind + total
         if i < n - 1:
             rate = v - y[n + i + 1]
-            f = coupler_force(y[1 + i], rate, s)
-            force[i] -= f
-            force[i + 1] += f
+            behind = coupler_force(y[1 + i], rate, s)
+            force -= behind
             out[1 + i] = rate
+        out[n + i] = force * table[ROW_INV_MASS, i]
     out[0] = y[n]
-    for i in range(n):
-        out[n + i] = force[i] * table[ROW_INV_MASS, i]
-    return out
+
+
+# The layout of a model packed into one row of floats for the compiled integrator
+# (raildyn.integrators._dopri): a header, then ``table`` (ROWS x n), ``scalars`` and ``route`` (3 x m),
+# each flattened in C order. The header holds n and m, and two entries that the right-hand side
+# itself writes: how many of its evaluations gave a non-finite derivative, and the time of the last.
+H_VEHICLES, H_SEGMENTS, H_NON_FINITE, H_LAST_NON_FINITE, HEADER = range(5)
+
+
+def pack(table, scalars, route):
+    """The model's three arrays as one row of ``data`` (shape (1, L)) for :func:`rhs_dopri`."""
+    n, m = table.shape[1], route.shape[1]
+    return np.concatenate([[n, m, 0.0, 0.0], table.ravel(), scalars, route.ravel()])[None, :].copy()
+
+
+@numba.njit(_dopri.RHS_SIGNATURE, cache=True)
+def rhs_dopri(t, y, member, data, out):
+    """:func:`rhs` for the compiled integrator, the model unpacked from row ``member`` of ``data``.
+
+    A non-finite derivative is left in ``out``: its error norm is NaN or infinite, so the
+    integrator rejects the step and retries a smaller one, as solve_ivp does. Each such
+    evaluation is counted in the row's header, for the message of a run that stops there.
+    """
+    row = data[member]
+    n, m = int(row[H_VEHICLES]), int(row[H_SEGMENTS])
+    start = HEADER + ROWS * n
+    table = row[HEADER:start].reshape((ROWS, n))
+    scalars = row[start : start + SCALARS]
+    route = row[start + SCALARS : start + SCALARS + 3 * m].reshape((3, m))
+    _rhs_into(t, y, table, scalars, route, out)
+    if not all_finite(out):
+        row[H_NON_FINITE] += 1.0
+        row[H_LAST_NON_FINITE] = t
