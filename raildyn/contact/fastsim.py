@@ -1,4 +1,4 @@
-"""Kalker's simplified theory of rolling contact and its algorithm FASTSIM, vectorized.
+"""Kalker's simplified theory of rolling contact and its algorithm FASTSIM, compiled.
 
 The simplified theory replaces the elastic half-space by a bed of independent
 springs: the tangential displacement at a point is the local traction times a
@@ -11,26 +11,32 @@ point slides (Kalker 1982). With one flexibility per creepage,
 
 the total forces at small creepage equal Kalker's linear theory for γ_x, γ_y and φ.
 
-This implementation marches all strips of all contact states together: a
-Python loop over the cells of one strip (``n_x`` steps), numpy over everything
-else. Each step uses the exact increment of the adhesion solution over the
-cell, and the cells are evaluated at their midpoints, so that in full adhesion
-the forces are exact along x and accurate to O((1/n_y)²) across.
+:func:`fastsim` checks its input and prepares each state with numpy (flexibilities,
+pressure, scaling of huge creepages), then marches the cells of every state in a
+numba-compiled loop (:mod:`raildyn.contact._fastsim_kernel`), about 1 µs per contact on
+20 × 20 cells. Each step uses the exact increment of the adhesion solution over the
+cell, and the cells are evaluated at their midpoints, so that in full adhesion the
+forces are exact along x and accurate to O((1/n_y)²) across.
 
-:func:`fastsim_reference` is the same algorithm cell by cell in plain Python:
-the independent implementation the tests hold :func:`fastsim` to, and the
-baseline of the chapter 4 benchmark.
+``_fastsim_numpy`` is the same march in numpy (a Python loop over the cells of a strip,
+numpy over all strips of all states), the version before the kernel: the tests hold the
+kernel to it and the chapter 4 benchmark times the kernel against it.
+:func:`fastsim_reference` is the same algorithm cell by cell in plain Python: the
+independent implementation the tests hold both to.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
+import numba
 import numpy as np
 
 from raildyn import _checks
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
+from raildyn.contact import _fastsim_kernel
 from raildyn.contact.creep import _ratio, kalker_coefficients
 
 __all__ = ["FastsimResult", "Flexibilities", "fastsim", "fastsim_reference", "flexibilities"]
@@ -318,6 +324,10 @@ def fastsim(
     patch slide are scaled down together to that size, which changes the forces by less
     than 1e-9 of μN and keeps every traction rate finite, however large the creepage.
 
+    The cells are marched in compiled code, the states of a batch shared among numba's
+    threads (``numba.set_num_threads`` sets how many); each state is marched by one thread
+    in a fixed order, so the result does not depend on their number.
+
     Returns
     -------
     FastsimResult
@@ -330,6 +340,86 @@ def fastsim(
     >>> r.fx < 0 and bool(r.adhesion.any())
     True
     """
+    state = _prepare(
+        longitudinal,
+        lateral,
+        spin,
+        normal_load,
+        friction,
+        a,
+        b,
+        shear_modulus,
+        poisson_ratio,
+        n_x,
+        n_y,
+        fields,
+    )
+    shape = state.xi.shape
+    per_state = (state.xi, state.eta, state.phi, state.a, state.b, state.l1, state.l2, state.l3, state.limit)
+    flat = [np.ascontiguousarray(v).reshape(-1) for v in per_state]
+    n_states = flat[0].size
+    forces = np.empty((3, n_states))
+    if state.fields:
+        out = np.empty((5, n_states, state.n_y, state.n_x))
+        stick = np.empty((n_states, state.n_y, state.n_x), dtype=bool)
+    else:
+        out = stick = None
+    _fastsim_kernel.march(
+        *flat, state.eta_y, state.root, state.shape_by_cell, forces, out, stick, numba.get_num_threads()
+    )
+    fx, fy, mz = (v.reshape(shape) for v in forces)
+    if not state.fields:
+        return _result(state, fx, fy, mz)
+    grid = shape + (state.n_y, state.n_x)
+    x, px, py, slip_x, slip_y = (v.reshape(grid) for v in out)
+    return _result(state, fx, fy, mz, x=x, px=px, py=py, slip_x=slip_x, slip_y=slip_y,
+                   adhesion=stick.reshape(grid))  # fmt: skip
+
+
+@dataclass(frozen=True)
+class _State:
+    """The checked, broadcast input of :func:`fastsim` with what every march needs (shape S each)."""
+
+    xi: np.ndarray  # creepages, huge ones scaled down by _within_sliding
+    eta: np.ndarray
+    phi: np.ndarray
+    load: np.ndarray
+    mu: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    l1: np.ndarray
+    l2: np.ndarray
+    l3: np.ndarray
+    p0: np.ndarray  # peak pressure (Pa)
+    limit: np.ndarray  # μp₀ (Pa), inf for an absurd μ
+    eta_y: np.ndarray  # (n_y,): y/b of each strip
+    root: np.ndarray  # (n_y,): √(1 − (y/b)²)
+    shape: np.ndarray  # (n_y, n_x): pressure shape p_z/p₀ of each cell
+    shape_by_cell: np.ndarray  # its transpose (n_x, n_y), contiguous: the kernel's order
+    n_x: int
+    n_y: int
+    fields: bool
+
+
+@functools.lru_cache(maxsize=16)
+def _grid(n_x: int, n_y: int):
+    """Strips, the pressure shape of each cell and its grid integral (→ π/2), read-only."""
+    # Strips: midpoints of n_y equal bands across the ellipse.
+    eta_y = (np.arange(n_y) + 0.5) / n_y * 2.0 - 1.0  # y/b
+    root = np.sqrt(1.0 - eta_y**2)  # a(y)/a, half-length of each strip
+    x_rel = root[:, None] * (1.0 - (np.arange(n_x) + 0.5) * 2.0 / n_x)
+    shape = np.clip(1.0 - x_rel**2 - eta_y[:, None] ** 2, 0.0, None)
+    area = (shape * (2.0 * root / n_x)[:, None]).sum() * 2.0 / n_y
+    by_cell = np.ascontiguousarray(shape.T)
+    for v in (eta_y, root, shape, by_cell):
+        v.flags.writeable = False
+    return eta_y, root, shape, by_cell, area
+
+
+def _prepare(
+    longitudinal, lateral, spin, normal_load, friction, a, b, shear_modulus, poisson_ratio, n_x, n_y, fields
+) -> _State:
+    """Check fastsim's input and compute the flexibilities, the pressure and the scaled creepages."""
     xi = _checks.array("longitudinal", longitudinal)
     eta = _checks.array("lateral", lateral)
     phi = _checks.array("spin", spin)
@@ -345,23 +435,85 @@ def fastsim(
     xi, eta, phi, load, mu, a, b, l1, l2, l3 = np.broadcast_arrays(
         xi, eta, phi, load, mu, a, b, flex.l1, flex.l2, flex.l3
     )
-    e = (..., None)  # add the strip axis
-    # Strips: midpoints of n_y equal bands across the ellipse.
-    eta_y = (np.arange(n_y) + 0.5) / n_y * 2.0 - 1.0  # y/b
-    y = b[e] * eta_y  # S + (n_y,)
-    half = a[e] * np.sqrt(1.0 - eta_y**2)  # a(y), half-length of each strip
-    dx = 2.0 * half / n_x
-    dy = 2.0 * b[e] / n_y
+    eta_y, root, shape, by_cell, grid_area = _grid(n_x, n_y)
     # Peak of the parabolic pressure of the simplified theory, 2N/(πab) in the continuum; here scaled
     # so that the pressure summed over the grid is exactly N, which makes full sliding give exactly μN.
-    x_rel = np.sqrt(1.0 - eta_y**2)[:, None] * (1.0 - (np.arange(n_x) + 0.5) * 2.0 / n_x)
-    pz_grid = np.clip(1.0 - x_rel**2 - eta_y[:, None] ** 2, 0.0, None)
-    grid_area = (pz_grid * (2.0 * np.sqrt(1.0 - eta_y**2) / n_x)[:, None]).sum() * 2.0 / n_y  # → π/2
     p0 = load / (a * b * grid_area)
     with np.errstate(over="ignore"):  # μp₀ = inf for an absurd μ: nothing slides, which is what it means
         limit = mu * p0
     xi, eta, phi = _within_sliding(xi, eta, phi, a, b, l1, l2, l3, limit)
-    bound_scale = limit[e]
+    return _State(
+        xi, eta, phi, load, mu, a, b, l1, l2, l3, p0, limit, eta_y, root, shape, by_cell, n_x, n_y, fields
+    )
+
+
+def _result(state: _State, fx, fy, mz, **fields) -> FastsimResult:
+    """The FastsimResult of a march: forces of shape S, and the fields if given (with y and p_z added)."""
+
+    def scalar_or(v):
+        return float(v) if np.ndim(v) == 0 else v
+
+    kept = {k: scalar_or(getattr(state, k)) for k in ("load", "mu", "a", "b")}
+    result = {"normal_load": kept["load"], "friction": kept["mu"], "a": kept["a"], "b": kept["b"]}
+    if fields:
+        e = (..., None)
+        grid = fields["x"].shape
+        fields["y"] = np.broadcast_to((state.b[e] * state.eta_y)[..., None], grid).copy()
+        fields["pz"] = state.p0[e][e] * state.shape
+    return FastsimResult(scalar_or(fx), scalar_or(fy), scalar_or(mz), **result, **fields)
+
+
+def _fastsim_numpy(
+    longitudinal,
+    lateral,
+    spin,
+    normal_load,
+    friction,
+    a,
+    b,
+    shear_modulus=STEEL_SHEAR_MODULUS,
+    poisson_ratio=STEEL_POISSON_RATIO,
+    *,
+    n_x: int = 20,
+    n_y: int = 20,
+    fields: bool = True,
+) -> FastsimResult:
+    """:func:`fastsim` with the march in numpy: the version before the compiled kernel, kept as reference.
+
+    All strips of all states step together, a Python loop over the n_x cells of a strip.
+    The tests hold the kernel to it and the chapter 4 benchmark times the kernel against it.
+    """
+    state = _prepare(
+        longitudinal,
+        lateral,
+        spin,
+        normal_load,
+        friction,
+        a,
+        b,
+        shear_modulus,
+        poisson_ratio,
+        n_x,
+        n_y,
+        fields,
+    )
+    xi, eta, phi, a, b, l1, l2, l3 = (
+        state.xi,
+        state.eta,
+        state.phi,
+        state.a,
+        state.b,
+        state.l1,
+        state.l2,
+        state.l3,
+    )
+    eta_y, pz_grid, n_x, n_y, fields = state.eta_y, state.shape, state.n_x, state.n_y, state.fields
+    e = (..., None)  # add the strip axis
+    y = b[e] * eta_y  # S + (n_y,)
+    half = a[e] * state.root  # a(y), half-length of each strip
+    dx = 2.0 * half / n_x
+    dy = 2.0 * b[e] / n_y
+    bound_scale = state.limit[e]
     # Traction rates of the adhesion solution: ∂p_x/∂x = γ_x/L₁ − φy/L₃, ∂p_y/∂x = γ_y/L₂ + φx/L₃.
     rate_x = (xi / l1)[e] - (phi / l3)[e] * y
     rate_y = (eta / l2)[e]
@@ -373,7 +525,7 @@ def fastsim(
     mz = np.zeros_like(half)
     if fields:
         shape = half.shape + (n_x,)
-        out = {k: np.empty(shape) for k in ("x", "px", "py", "pz", "sx", "sy")}
+        out = {k: np.empty(shape) for k in ("x", "px", "py", "sx", "sy")}
         stick = np.empty(shape, dtype=bool)
     cell = dx * dy
     for k in range(n_x):
@@ -394,33 +546,15 @@ def fastsim(
             out["x"][..., k] = x
             out["px"][..., k] = px
             out["py"][..., k] = py
-            out["pz"][..., k] = p0[e] * pz_grid[:, k]
             # Slip: the part of the rigid-slip rate the springs could not take up, in creepage units.
             out["sx"][..., k] = l1[e] * (tx - px) / step
             out["sy"][..., k] = l2[e] * (ty - py) / step
             stick[..., k] = factor >= 1.0
     fx_t, fy_t, mz_t = fx.sum(-1), fy.sum(-1), mz.sum(-1)
-
-    def scalar_or(v):
-        return float(v) if np.ndim(v) == 0 else v
-
-    state = {"normal_load": scalar_or(load), "friction": scalar_or(mu), "a": scalar_or(a), "b": scalar_or(b)}
     if not fields:
-        return FastsimResult(scalar_or(fx_t), scalar_or(fy_t), scalar_or(mz_t), **state)
-    return FastsimResult(
-        fx=scalar_or(fx_t),
-        fy=scalar_or(fy_t),
-        mz=scalar_or(mz_t),
-        **state,
-        x=out["x"],
-        y=np.broadcast_to(y[..., None], out["x"].shape).copy(),
-        px=out["px"],
-        py=out["py"],
-        pz=out["pz"],
-        slip_x=out["sx"],
-        slip_y=out["sy"],
-        adhesion=stick,
-    )
+        return _result(state, fx_t, fy_t, mz_t)
+    return _result(state, fx_t, fy_t, mz_t, x=out["x"], px=out["px"], py=out["py"], slip_x=out["sx"],
+                   slip_y=out["sy"], adhesion=stick)  # fmt: skip
 
 
 def fastsim_reference(
