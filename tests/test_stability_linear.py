@@ -1,0 +1,55 @@
+"""raildyn.stability.critical_speed against the plain procedure it shortens: a full scan, then Brent.
+
+critical_speed solves M once for all its state matrices and stops its scan at the first upward
+crossing; neither may change the answer. The reference here scans every speed with the public
+:func:`raildyn.stability.largest_real_part` (A(V) from ``LinearSystem.state_matrices``) and refines
+the first bracket with the same Brent tolerance.
+"""
+
+import numpy as np
+import pytest
+import scipy.optimize
+
+from raildyn import stability
+from raildyn.vehicles import Car
+from raildyn.wheelset import Wheelset
+
+
+def _full_scan(model, speed_range, tol, scan):
+    system = model.linear_system()
+    V = np.linspace(*speed_range, scan)
+    g = stability.largest_real_part(system, V)
+    if g[0] >= 0.0:
+        return "unstable at the lowest speed", V[0]
+    up = np.flatnonzero((g[:-1] < 0.0) & (g[1:] >= 0.0))
+    if up.size == 0:
+        return "stable over the range", np.inf
+    i = int(up[0])
+    f = lambda v: stability.largest_real_part(system, [v])[0]  # noqa: E731
+    return "crossing", scipy.optimize.brentq(f, V[i], V[i + 1], xtol=tol)
+
+
+MODELS = [
+    (Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), (1.0, 200.0)),  # crossing near 55 m/s
+    (Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), (60.0, 200.0)),  # unstable at the start
+    (Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), (1.0, 40.0)),  # stable over the range
+    (Car(), (1.0, 200.0)),
+    (Car().replace(conicity=0.03), (1.0, 200.0)),  # a crossing high in the range
+    (Car().replace(conicity=0.5, yaw_stiffness=5.0e6), (1.0, 200.0)),
+    (Car().bogie, (1.0, 200.0)),
+]
+
+
+@pytest.mark.parametrize("scan", [8, 16, 64, 101])
+@pytest.mark.parametrize(("model", "speed_range"), MODELS)
+def test_critical_speed_equals_a_full_scan_and_brent(model, speed_range, scan):
+    cs = stability.critical_speed(model, speed_range, tol=0.01, scan=scan)
+    status, speed = _full_scan(model, speed_range, 0.01, scan)
+    assert cs.status == status
+    # The same bracket and the same Brent steps; A(V) differs by round-off, so do the roots.
+    assert cs.speed == pytest.approx(speed, rel=1e-9, abs=0.0) if np.isfinite(speed) else cs.speed == speed
+
+
+def test_the_statuses_of_the_cases_above_are_all_met():
+    statuses = {stability.critical_speed(m, r, scan=16).status for m, r in MODELS}
+    assert statuses == {"crossing", "unstable at the lowest speed", "stable over the range"}
