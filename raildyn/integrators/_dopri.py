@@ -74,7 +74,7 @@ _SAFETY, _MIN_FACTOR, _MAX_FACTOR = 0.9, 0.2, 10.0
 _EXPONENT = -1.0 / 5.0  # of the error norm: the error of the 4th-order estimate goes as h⁵
 
 
-@numba.njit(_F(_VEC, _VEC), cache=True)
+@numba.njit(_F(_VEC, _VEC), cache=True, error_model="numpy")
 def _rms(x, scale):
     total = 0.0
     for i in range(x.size):
@@ -83,7 +83,7 @@ def _rms(x, scale):
     return np.sqrt(total / x.size)
 
 
-@numba.njit(_F(_RHS, _MAT, _I, _F, _VEC, _VEC, _F, _F, _F, _VEC), cache=True)
+@numba.njit(_F(_RHS, _MAT, _I, _F, _VEC, _VEC, _F, _F, _F, _VEC), cache=True, error_model="numpy")
 def first_step(rhs, data, member, t0, y0, f0, t1, max_step, rtol, atol):
     """scipy's ``select_initial_step`` for a method of order 4 (one evaluation of ``rhs``)."""
     n = y0.size
@@ -106,6 +106,7 @@ def first_step(rhs, data, member, t0, y0, f0, t1, max_step, rtol, atol):
         _RHS, _MAT, _I, _F, _VEC, _VEC, _F, _F, _F, _VEC, _F, _VEC, _IVEC, _MAT, _IVEC, _I
     ),
     cache=True,
+    error_model="numpy",
 )
 def advance(
     rhs, data, member, t, y, f, h_abs, t1, rtol, atol, max_step, t_out, rows, y_out, counts, max_steps
@@ -200,7 +201,7 @@ def advance(
     return DONE, t, h_abs
 
 
-@numba.njit(_F(_RHS, _MAT, _I, _F, _VEC, _F, _F, _VEC, _F, _VEC), cache=True)
+@numba.njit(_F(_RHS, _MAT, _I, _F, _VEC, _F, _F, _VEC, _F, _VEC), cache=True, error_model="numpy")
 def start(rhs, data, member, t0, y, t1, rtol, atol, max_step, f):
     """The derivative at the start (into ``f``) and the first step; two evaluations of ``rhs``."""
     rhs(t0, y, member, data, f)
@@ -224,6 +225,7 @@ def start(rhs, data, member, t0, y, t1, rtol, atol, max_step, f):
         _VEC,
     ),
     cache=True,
+    error_model="numpy",
     parallel=True,
 )
 def advance_batch(rhs, data, t1, states, rtol, atol, max_step, t_out, rows, y_out, counts, status, reached):

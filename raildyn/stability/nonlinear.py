@@ -23,6 +23,7 @@ __all__ = [
     "NonlinearRun",
     "PeriodicOrbit",
     "bifurcation_diagram",
+    "bifurcation_diagrams",
     "limit_cycle_amplitude",
     "periodic_orbit",
     "simulate",
@@ -111,8 +112,12 @@ def simulate(
     max_step: float = 2.0e-3,
     rtol: float = 1.0e-6,
     method: str = "RK45",
+    engine: str = "auto",
 ):
     """Integrate a nonlinear lateral model at speed V from a state, by RK45 or another scipy method.
+
+    The state is sampled every ``min(max_step, 1 ms)/2`` (from the solver's own interpolant), so
+    that every run is read on one uniform grid whichever engine took its steps.
 
     Parameters
     ----------
@@ -135,6 +140,12 @@ def simulate(
         steps are then held to about 1 ms by stability, while ``"BDF"``, whose steps follow the
         accuracy asked for, needs about a tenth of the evaluations (give it a ``max_step`` of a
         fraction of the period, not the explicit methods' 2 ms).
+    engine : str
+        Who runs RK45: ``"compiled"``, the numba engine (:mod:`raildyn.stability._engine`, the
+        same steps as scipy's RK45 at some hundred times the speed); ``"scipy"``,
+        ``scipy.integrate.solve_ivp`` on the model's ``rhs`` (the reference the engine is tested
+        against); ``"auto"`` (default), the engine wherever it holds the model (not nonlinear
+        suspension elements, whose laws are Python functions) and the method is RK45, else scipy.
 
     Returns
     -------
@@ -159,10 +170,12 @@ def simulate(
     T = _duration("duration", duration)
     h = positive("max_step", max_step)
     r = _checks.tolerance("rtol", rtol)
+    method, engine = _method(method), _engine_choice(engine)
     m = _at_speed(model, V)
     y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    sol = _integrate(m.rhs, T, y0, _method(method), r, 1e-9, V, max_step=h)
-    return NonlinearRun(V, sol.t, sol.y, m.lateral_index)
+    t = _samples(T, h)
+    (states,), _ = _runs([m], [V], [y0], T, h, r, method, engine, rows=None)
+    return NonlinearRun(V, t, states, m.lateral_index)
 
 
 _METHODS = ("RK45", "DOP853", "BDF", "Radau", "LSODA")  # of scipy.integrate.solve_ivp
@@ -171,6 +184,76 @@ _METHODS = ("RK45", "DOP853", "BDF", "Radau", "LSODA")  # of scipy.integrate.sol
 def _method(value) -> str:
     """The name of a ``solve_ivp`` method, one of :data:`_METHODS`."""
     return _checks.choice("method", value, _METHODS)
+
+
+_ENGINES = ("auto", "compiled", "scipy")
+
+
+def _engine_choice(value) -> str:
+    """Who integrates: one of :data:`_ENGINES`."""
+    return _checks.choice("engine", value, _ENGINES)
+
+
+def _samples(duration: float, max_step: float) -> np.ndarray:
+    """The uniform times at which a run is read, s: every min(max_step, 1 ms)/2.
+
+    Half a millisecond reads the peak of a 15 Hz oscillation (the top of the hunting band) to
+    3e-4 of its amplitude: 1 − cos(π f Δt).
+    """
+    spacing = 0.5 * min(max_step, 1.0e-3)
+    return np.linspace(0.0, duration, int(math.ceil(duration / spacing)) + 1)
+
+
+def _runs(
+    models, speeds, starts, duration: float, max_step: float, rtol: float, method: str, engine: str, rows
+):
+    """Integrate each model (at its speed, ``speeds``) from its start over (0, duration), on the same samples.
+
+    ``rows`` picks the state rows to keep (None: all). The compiled engine runs the models as
+    one batch where it can (see :func:`simulate`'s ``engine``); scipy runs them one by one.
+    Returns one array (rows, samples) per model and the states at ``duration``.
+    """
+    from raildyn.integrators import _dopri  # here: numba loads only when a run needs it
+    from raildyn.stability import _engine
+
+    t = _samples(duration, max_step)
+    packed = None
+    if engine != "scipy" and method == "RK45":
+        try:
+            packed = [_engine.pack(m) for m in models]
+        except _engine.NotCompiled as why:
+            if engine == "compiled":
+                raise ValueError(
+                    f"engine 'compiled' cannot run this model: {why}; use engine='scipy'"
+                ) from None
+    elif engine == "compiled":
+        raise ValueError(f"engine 'compiled' runs method 'RK45' only, got method {method!r}")
+    if packed is None:
+        out, ends = [], []
+        for m, v, y0 in zip(models, speeds, starts, strict=True):
+            sol = _integrate(m.rhs, duration, y0, method, rtol, 1e-9, v, max_step=max_step, t_eval=t)
+            out.append(sol.y if rows is None else sol.y[rows])
+            ends.append(sol.y[:, -1].copy())
+        return out, ends
+    keep = np.arange(models[0].state_size) if rows is None else np.asarray(rows)
+    ends, sampled, status, reached, _ = _engine.run_batch(
+        packed, np.array(starts), duration, max_step=max_step, rtol=rtol, atol=1e-9, samples=t,
+        output_rows=keep, budget=_MAX_EVALUATIONS,
+    )  # fmt: skip
+    for v, code, when in zip(speeds, status, reached, strict=True):
+        if code == _dopri.OVER_BUDGET:
+            raise SolverError(
+                f"the integration at V = {v:.6g} m/s took more than {_MAX_EVALUATIONS} evaluations "
+                "of the right-hand side (a stiff motion or a tiny max_step)",
+                time=float(when),
+            )
+        if code != _dopri.DONE:
+            raise SolverError(
+                f"integration failed at V = {v:.6g} m/s: {_dopri.STATUS_TEXT[code]} (the state "
+                "running away to non-finite values)",
+                time=float(when),
+            )
+    return list(sampled), list(ends)
 
 
 _MAX_DURATION = 120.0  # s, the longest run (and period) asked for: hunting settles within seconds
@@ -374,6 +457,7 @@ def limit_cycle_amplitude(
     max_step: float = 2.0e-3,
     rtol: float = 1e-6,
     method: str = "RK45",
+    engine: str = "auto",
 ) -> LimitCycle:
     """Amplitude of the steady hunting of a nonlinear model at one speed, by direct integration.
 
@@ -407,6 +491,8 @@ def limit_cycle_amplitude(
     method : str
         The integration method, as for :func:`~raildyn.stability.nonlinear.simulate`
         (``"BDF"`` for a model made stiff by friction).
+    engine : str
+        ``"auto"``, ``"compiled"`` or ``"scipy"``, as for :func:`~raildyn.stability.nonlinear.simulate`.
 
     Returns
     -------
@@ -432,18 +518,38 @@ def limit_cycle_amplitude(
     """
     V = scalar("speed", speed, low=0.0, low_open=True)
     T = _duration("duration", duration)
-    positive("max_step", max_step)
-    _checks.tolerance("rtol", rtol)
-    _method(method)
+    h = positive("max_step", max_step)
+    r = _checks.tolerance("rtol", rtol)
+    method, engine = _method(method), _engine_choice(engine)
     y_start = _displacement(initial_displacement)
     m = _at_speed(model, V)
     if initial_state is None:
-        y0 = np.zeros(m.state_size)
-        y0[m.lateral_index] = y_start
+        y0 = _displaced(m, y_start)
     else:
         y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    run = simulate(m, V, y0, T, max_step=max_step, rtol=rtol, method=method)
-    return LimitCycle(speed=V, state=run.states[:, -1].copy(), duration=T, **_measure(run.t, run.lateral, T))
+    (cycle,) = _cycles([m], [V], [y0], T, h, r, method, engine)
+    return cycle
+
+
+def _displaced(model, displacement: float) -> np.ndarray:
+    """The model's state at rest with its first wheelset displaced laterally."""
+    y0 = np.zeros(model.state_size)
+    y0[model.lateral_index] = displacement
+    return y0
+
+
+def _cycles(models, speeds, starts, duration, max_step, rtol, method, engine) -> list[LimitCycle]:
+    """The :class:`LimitCycle` of each model (at its speed, ``speeds``) from its start, run as one batch.
+
+    The models share one ``lateral_index``, the row that is sampled.
+    """
+    t = _samples(duration, max_step)
+    rows = [models[0].lateral_index]
+    runs, ends = _runs(models, speeds, starts, duration, max_step, rtol, method, engine, rows)
+    return [
+        LimitCycle(speed=float(v), state=end, duration=duration, **_measure(t, run[0], duration))
+        for v, run, end in zip(speeds, runs, ends, strict=True)
+    ]
 
 
 _MAX_DISPLACEMENT = 0.05  # m: no wheelset on the rails is further from the centre
@@ -558,6 +664,7 @@ def bifurcation_diagram(
     progress: bool = True,
     rtol: float = 1e-6,
     method: str = "RK45",
+    engine: str = "auto",
 ) -> BifurcationDiagram:
     """Limit-cycle amplitude along a speed ramp-down, and the nonlinear critical speed.
 
@@ -600,6 +707,8 @@ def bifurcation_diagram(
     method : str
         The integration method, as for :func:`~raildyn.stability.nonlinear.simulate`
         (``"BDF"`` for a model made stiff by friction).
+    engine : str
+        ``"auto"``, ``"compiled"`` or ``"scipy"``, as for :func:`~raildyn.stability.nonlinear.simulate`.
 
     Returns
     -------
@@ -621,58 +730,114 @@ def bifurcation_diagram(
     step apart that each run judges with a margin (``refine=0``), the fold then lying within
     one step below the nonlinear critical speed found.
     """
+    return bifurcation_diagrams(
+        [model], speeds, initial_displacement=initial_displacement, duration=duration, max_step=max_step,
+        threshold=threshold, refine=refine, progress=progress, rtol=rtol, method=method, engine=engine,
+    )[0]  # fmt: skip
+
+
+def bifurcation_diagrams(
+    models,
+    speeds,
+    *,
+    initial_displacement: float = 12.0e-3,
+    duration: float = 8.0,
+    max_step: float = 2.0e-3,
+    threshold: float = 2.0e-4,
+    refine: int = 4,
+    progress: bool = True,
+    rtol: float = 1e-6,
+    method: str = "RK45",
+    engine: str = "auto",
+) -> list[BifurcationDiagram]:
+    """The bifurcation diagrams of several models at once, their ramps run side by side.
+
+    Each model's diagram is that of :func:`~raildyn.stability.nonlinear.bifurcation_diagram`; the
+    compiled engine advances all models at each speed of the ramp, and at each bisection step, as
+    one batch (in parallel threads). For a family of vehicles, such as one car with a range of
+    conicities or of yaw stiffnesses.
+
+    Parameters
+    ----------
+    models : sequence of NonlinearWheelset, NonlinearLateral or models with ``at_speed(V)``
+        At least one; all with the same ``state_size`` and ``lateral_index``.
+    speeds, initial_displacement, duration, max_step, threshold, refine, progress, rtol, method, engine
+        As for :func:`~raildyn.stability.nonlinear.bifurcation_diagram`, the same for every model.
+
+    Returns
+    -------
+    list of BifurcationDiagram
+        One per model, in their order.
+
+    Raises
+    ------
+    SolverError
+        If an integration fails.
+    """
     V = np.sort(_checks.speeds("speeds", speeds))[::-1]
-    _displacement(initial_displacement)
-    _duration("duration", duration)
-    positive("max_step", max_step)
+    y_start = _displacement(initial_displacement)
+    T = _duration("duration", duration)
+    h = positive("max_step", max_step)
     scalar("threshold", threshold, low=0.0, low_open=True, high=_MAX_DISPLACEMENT)
-    integer("refine", refine, low=0, high=30)
-    _checks.tolerance("rtol", rtol)
-    _method(method)
-    _at_speed(model, float(V[0]))
+    refine = integer("refine", refine, low=0, high=30)
+    r = _checks.tolerance("rtol", rtol)
+    method, engine = _method(method), _engine_choice(engine)
+    if isinstance(models, (str, bytes)) or not isinstance(models, (list, tuple)) or not models:
+        raise TypeError(f"models must be a non-empty list of nonlinear models, got {models!r:.80}")
+    first = [_at_speed(m, float(V[0])) for m in models]
+    for i, m in enumerate(first[1:], start=1):
+        if (m.state_size, m.lateral_index) != (first[0].state_size, first[0].lateral_index):
+            raise ValueError(
+                f"models[{i}] must have the state_size and lateral_index of models[0] "
+                f"({first[0].state_size}, {first[0].lateral_index}), got ({m.state_size}, {m.lateral_index})"
+            )
     items = V
     if _checks.flag("progress", progress):
         items = progress_bar(V, desc="bifurcation diagram (ramp-down)")
-    cycles, state = [], None
+    k = len(models)
+    cycles = [[] for _ in range(k)]
+    states = [_displaced(first[0], y_start) for _ in range(k)]
     for v in items:
-        cycle = limit_cycle_amplitude(
-            model,
-            v,
-            initial_displacement=initial_displacement,
-            initial_state=state,
-            duration=duration,
-            max_step=max_step,
-            rtol=rtol,
-            method=method,
+        at_v = [m.at_speed(v) for m in models]
+        for i, cycle in enumerate(_cycles(at_v, [v] * k, states, T, h, r, method, engine)):
+            cycles[i].append(cycle)
+            # Continue the branch from the cycle; after a decay, start again displaced.
+            states[i] = cycle.state if cycle.hunting(threshold) else _displaced(first[0], y_start)
+    hunting = [np.array([c.hunting(threshold) for c in row]) for row in cycles]
+    # The nonlinear critical speed: bisect between each model's last hunting and first decaying speed.
+    vnl = np.full(k, np.inf)
+    brackets = {}
+    for i in range(k):
+        if hunting[i].any():
+            j = int(np.flatnonzero(hunting[i]).max())
+            vnl[i] = V[j]
+            if j + 1 < V.size and not hunting[i][j + 1]:
+                brackets[i] = [V[j], V[j + 1], cycles[i][j].state]
+    for _ in range(refine if brackets else 0):
+        order = sorted(brackets)
+        mids = [0.5 * (brackets[i][0] + brackets[i][1]) for i in order]
+        trials = _cycles(
+            [models[i].at_speed(mid) for i, mid in zip(order, mids, strict=True)],
+            mids, [brackets[i][2] for i in order], T, h, r, method, engine,
+        )  # fmt: skip
+        for i, mid, trial in zip(order, mids, trials, strict=True):
+            if trial.hunting(threshold):
+                brackets[i][0], brackets[i][2] = mid, trial.state
+            else:
+                brackets[i][1] = mid
+    for i, (high, _, _) in brackets.items():
+        vnl[i] = float(high)
+    return [
+        BifurcationDiagram(
+            V,
+            np.array([c.amplitude for c in cycles[i]]),
+            np.array([c.frequency_hz for c in cycles[i]]),
+            hunting[i],
+            float(vnl[i]),
+            threshold,
         )
-        cycles.append(cycle)
-        state = cycle.state if cycle.hunting(threshold) else None
-    hunting = np.array([c.hunting(threshold) for c in cycles])
-    vnl = np.inf
-    if hunting.any():
-        k = int(np.flatnonzero(hunting).max())
-        vnl = float(V[k])
-        if k + 1 < V.size and not hunting[k + 1]:
-            high, low, start = V[k], V[k + 1], cycles[k].state
-            for _ in range(refine):
-                mid = 0.5 * (high + low)
-                trial = limit_cycle_amplitude(
-                    model,
-                    mid,
-                    initial_state=start,
-                    duration=duration,
-                    max_step=max_step,
-                    rtol=rtol,
-                    method=method,
-                )
-                if trial.hunting(threshold):
-                    high, start = mid, trial.state
-                else:
-                    low = mid
-            vnl = float(high)
-    amp = np.array([c.amplitude for c in cycles])
-    freq = np.array([c.frequency_hz for c in cycles])
-    return BifurcationDiagram(V, amp, freq, hunting, vnl, threshold)
+        for i in range(k)
+    ]
 
 
 @dataclass(frozen=True)

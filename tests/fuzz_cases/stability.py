@@ -428,6 +428,13 @@ ENTRIES = [
         accepts={"initial_displacement": "negative", "refine": "zero"},
     ),
     fuzz(
+        "raildyn.stability.bifurcation_diagrams",
+        lambda: call(
+            [NW, NW], [70.0, 40.0], duration=0.8, max_step=1e-2, refine=1, progress=False, rtol=1e-6
+        ),  # fmt: skip
+        accepts={"initial_displacement": "negative", "refine": "zero"},
+    ),
+    fuzz(
         "raildyn.stability.BifurcationDiagram",
         lambda: call(
             np.array([70.0, 40.0]),

@@ -1,0 +1,288 @@
+"""The compiled engine of the nonlinear lateral models: their right-hand side in numba, run in batches.
+
+:class:`raildyn.wheelset.NonlinearWheelset` and :class:`raildyn.wheelset.NonlinearLateral` (the
+bogie, the car and the vehicles of chapter 8 on tangent track or on a
+:class:`raildyn.curving.geometry.Curve`) evaluate their right-hand side with numpy, some 30–60 µs a
+call, most of it numpy's per-call cost on arrays of four wheelsets. Here the same equations are
+compiled: :func:`pack` writes a model at one speed into one row of floats, and :func:`lateral_rhs`
+evaluates M q̈ = −C_s q̇ − K_s q + Σ F_contact (− m a_q on a curve) from that row in about a
+microsecond. It is the right-hand side of the one compiled integrator,
+:mod:`raildyn.integrators._dopri`, which advances many rows (speeds, parameter sets) at once.
+
+The wheel–rail forces are those of :func:`raildyn.wheelset.contact_forces`, term for term: the
+creepages of :func:`raildyn.contact.creep.wheelset_creepages` with r = r₀ ± Δr(y)/2, Kalker's linear
+forces scaled by :func:`raildyn.contact.creep.saturation_factor`, gravity through Δϑ(y), and the
+flange spring beyond the clearance; Δr and Δϑ from the cone or from the tables of
+:func:`raildyn.wheelset.profile_contact`. A model this engine cannot hold (nonlinear suspension
+elements, whose force laws are Python functions, or contact functions other than a cone or a
+table) is reported by :func:`pack` raising :class:`NotCompiled`, and its callers take scipy's path.
+The tests hold this engine to the numpy right-hand side and to scipy's integration of it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from raildyn.constants import GRAVITY
+from raildyn.integrators import _dopri
+
+# The row of one model at one speed: a header of fixed places, then the arrays at the offsets it gives.
+_N, _NW, _SPEED, _CURVED, _START = 0, 1, 2, 3, 4
+_CURVE = 5  # s₀, s₁, s₂, s₃ (the ends of the pieces), R, L, h_t, rail spacing: places 5–12
+_FRICTION, _CLEARANCE, _FLANGE = 13, 14, 15
+_DR, _DR_SIZE, _DD, _DD_SIZE = 16, 17, 18, 19  # table offsets and sizes; offset −1: the cone
+_MK, _MC, _MINV, _WHEELSETS, _LATERAL = 20, 21, 22, 23, 24  # offsets of M⁻¹K_s, M⁻¹C_s, M⁻¹, …
+_HEADER = 25
+# One wheelset's fields, in this order, from its offset.
+_FIELDS = ("iy", "ipsi", "x", "a", "r0", "f11", "f22", "f23", "f33", "W", "eps", "theta0", "lam")
+_WS = len(_FIELDS)
+
+
+class NotCompiled(Exception):
+    """The model holds something the engine cannot compile: it is run on scipy's path instead."""
+
+
+def _table(contact, name):
+    """(x, f) of a contact table, or None for the cone; NotCompiled for any other function."""
+    from raildyn.wheelset import _Table
+
+    fn = getattr(contact, name)
+    if fn is None:
+        return None
+    if type(fn) is not _Table:
+        raise NotCompiled(f"contact {name} is a Python function, not a profile table")
+    return fn.x, fn.f
+
+
+def _parts(model):
+    """M, K_s, C_s, the wheelsets [(iy, iψ, x, Wheelset)], the lateral mass vector, contact, curve, start."""
+    from raildyn.wheelset import NonlinearLateral, NonlinearWheelset
+
+    if type(model) is NonlinearWheelset:
+        ws = model.wheelset
+        return (
+            np.diag([ws.mass, ws.yaw_inertia]),
+            np.diag([ws.lateral_stiffness, ws.yaw_stiffness]),
+            np.diag([ws.lateral_damping, ws.yaw_damping]),
+            [(0, 1, 0.0, ws)],
+            np.array([ws.mass, 0.0]),
+            model.contact,
+            None,
+            0.0,
+        )
+    if type(model) is not NonlinearLateral:
+        raise NotCompiled(f"{type(model).__name__} is not a model the engine knows")
+    if model.elements:
+        raise NotCompiled("nonlinear suspension elements have force laws in Python")
+    positions = model._positions if model._positions is not None else np.zeros(len(model.system.wheelsets))
+    wheelsets = [
+        (iy, ipsi, float(x), ws) for (iy, ipsi, ws), x in zip(model.system.wheelsets, positions, strict=True)
+    ]
+    return (
+        model.system.M,
+        model._K_suspension,
+        model._C_suspension,
+        wheelsets,
+        model._lateral_mass,
+        model.contact,
+        model.curve,
+        model.start,
+    )
+
+
+def pack(model) -> np.ndarray:
+    """The row of floats that :func:`lateral_rhs` reads: ``model`` (already checked) at its speed.
+
+    Raises
+    ------
+    NotCompiled
+        If the model holds nonlinear suspension elements or contact functions other than tables.
+    """
+    M, K, C, wheelsets, lateral_mass, contact, curve, start = _parts(model)
+    dr, dd = _table(contact, "rolling_radius_difference"), _table(contact, "contact_angle_difference")
+    n = M.shape[0]
+    M_inv = np.linalg.inv(M)
+    pieces = [(M_inv @ K).ravel(), (M_inv @ C).ravel(), M_inv.ravel()]
+    rows = []
+    for iy, ipsi, x, ws in wheelsets:
+        rows.append(
+            [iy, ipsi, x, ws.half_gauge, ws.rolling_radius, ws.f11, ws.f22, ws.f23, ws.f33, ws.axle_load]
+            + [ws.contact_angle_parameter, ws.contact_angle, ws.conicity]
+        )
+    pieces += [np.array(rows, dtype=float).ravel(), M_inv @ lateral_mass]
+    header = np.zeros(_HEADER)
+    header[[_N, _NW, _SPEED, _START]] = n, len(wheelsets), model.speed, start
+    header[[_FRICTION, _CLEARANCE, _FLANGE]] = (
+        contact.friction,
+        contact.flange_clearance,
+        contact.flange_stiffness,
+    )
+    if curve is not None:
+        header[_CURVED] = 1.0
+        header[_CURVE : _CURVE + 8] = (*curve._ends(), curve.radius, curve.transition_length, curve.cant,
+                                       curve.rail_spacing)  # fmt: skip
+    offset = _HEADER
+    for place, piece in zip((_MK, _MC, _MINV, _WHEELSETS, _LATERAL), pieces, strict=True):
+        header[place] = offset
+        offset += piece.size
+    for place, table in ((_DR, dr), (_DD, dd)):
+        header[place] = -1.0
+        if table is not None:
+            header[place], header[place + 1] = offset, table[0].size
+            pieces.append(np.concatenate(table))
+            offset += 2 * table[0].size
+    return np.concatenate([header, *pieces])
+
+
+def batch(rows) -> np.ndarray:
+    """Rows of different lengths as one C array, each padded with zeros to the longest."""
+    out = np.zeros((len(rows), max(r.size for r in rows)))
+    for i, r in enumerate(rows):
+        out[i, : r.size] = r
+    return out
+
+
+# ---------------------------------------------------------------------------
+# The compiled equations
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _interp(row, offset, size, y):
+    """A contact table at y: linear between its points, along its end slopes beyond (as ``_Table``)."""
+    o = int(offset)
+    m = int(size)
+    x0, x1 = row[o], row[o + m - 1]
+    f = o + m
+    if y <= x0:
+        return row[f] + (row[f + 1] - row[f]) / (row[o + 1] - x0) * (y - x0)
+    if y >= x1:
+        return row[f + m - 1] + (row[f + m - 1] - row[f + m - 2]) / (x1 - row[o + m - 2]) * (y - x1)
+    lo, hi = 0, m - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if row[o + mid] <= y:
+            lo = mid
+        else:
+            hi = mid
+    xa, xb = row[o + lo], row[o + lo + 1]
+    return row[f + lo] + (row[f + lo + 1] - row[f + lo]) * (y - xa) / (xb - xa)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def wheel_rail(row, w, y, psi, ydot, psidot, speed):
+    """Lateral force (N) and yaw moment (N·m) of the rails on wheelset ``w`` of a packed row."""
+    k = int(row[_WHEELSETS]) + _WS * w
+    a, r0, f11, f22, f23, f33 = row[k + 3], row[k + 4], row[k + 5], row[k + 6], row[k + 7], row[k + 8]
+    W, eps, theta0, lam = row[k + 9], row[k + 10], row[k + 11], row[k + 12]
+    dr = 2.0 * lam * y if row[_DR] < 0.0 else _interp(row, row[_DR], row[_DR_SIZE], y)
+    dd = 2.0 * eps * y / a if row[_DD] < 0.0 else _interp(row, row[_DD], row[_DD_SIZE], y)
+    # The left wheel's creepages (wheelset_creepages with r_L = r₀ + Δr/2 and no contact-angle spin).
+    r_left = r0 + 0.5 * dr
+    xi_x = (r0 - r_left) / r0 - a * psidot / speed
+    xi_y = ydot / speed - psi
+    spin = psidot / speed
+    fx = -f11 * xi_x
+    fy = -f22 * xi_y - f23 * spin
+    # Shen–Hedrick–Elkins, as saturation_factor: the two wheels' forces have one magnitude.
+    u = math.hypot(fx, fy) / (row[_FRICTION] * W / 2.0)
+    scale = 1.0
+    if u > 0.0:
+        v = min(u, 3.0)
+        scale = (v - v * v / 3.0 + v * v * v / 27.0) / u
+    flange = 0.0
+    excess = abs(y) - row[_CLEARANCE]
+    if excess > 0.0:
+        flange = -row[_FLANGE] * excess * (1.0 if y > 0.0 else -1.0)
+    lateral = 2.0 * scale * fy - W / 2.0 * dd + flange
+    yaw = -2.0 * a * scale * fx + 2.0 * (f23 * xi_y - f33 * spin) + W * a * theta0 * psi
+    return lateral, yaw
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _curvature(row, s):
+    """κ(s) of the packed curve, 1/m (as :meth:`raildyn.curving.geometry.Curve.curvature`)."""
+    s0, s1, s2, s3, R, L = row[_CURVE], row[_CURVE + 1], row[_CURVE + 2], row[_CURVE + 3], row[9], row[10]
+    if s <= s0 or s > s3:
+        return 0.0
+    if s <= s1:
+        return (s - s0) / (R * L)
+    if s <= s2:
+        return 1.0 / R
+    return (s3 - s) / (R * L)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _cant(row, s):
+    """h_t(s) of the packed curve, m (as :meth:`raildyn.curving.geometry.Curve.cant_at`)."""
+    s0, s1, s2, s3, L, D = row[_CURVE], row[_CURVE + 1], row[_CURVE + 2], row[_CURVE + 3], row[10], row[11]
+    if s <= s0 or s > s3:
+        return 0.0
+    if s <= s1:
+        return D * (s - s0) / L
+    if s <= s2:
+        return D
+    return D * (s3 - s) / L
+
+
+@numba.njit(_dopri.RHS_SIGNATURE, cache=True, error_model="numpy")
+def lateral_rhs(t, state, member, data, out):
+    """d/dt [q; q̇] of the packed model in row ``member`` of ``data`` (the equations of ``rhs``)."""
+    row = data[member]
+    n, nw, V = int(row[_N]), int(row[_NW]), row[_SPEED]
+    mk, mc, minv = int(row[_MK]), int(row[_MC]), int(row[_MINV])
+    for i in range(n):
+        out[i] = state[n + i]
+        acc = 0.0
+        for j in range(n):
+            acc -= row[mk + i * n + j] * state[j] + row[mc + i * n + j] * state[n + j]
+        out[n + i] = acc
+    curved = row[_CURVED] > 0.0
+    kappa = 0.0
+    s_c = 0.0
+    if curved:
+        s_c = row[_START] + V * t
+        kappa = _curvature(row, s_c)
+        a_q = V * V * kappa - GRAVITY * _cant(row, s_c) / row[_CURVE + 7]
+        lat = int(row[_LATERAL])
+        for i in range(n):
+            out[n + i] -= row[lat + i] * a_q
+    base = int(row[_WHEELSETS])
+    for w in range(nw):
+        k = base + _WS * w
+        iy, ipsi = int(row[k]), int(row[k + 1])
+        y, psi, psidot = state[iy], state[ipsi], state[n + ipsi]
+        if curved:
+            x = row[k + 2]
+            y -= 0.5 * x * x * _curvature(row, s_c + x / 3.0)
+            psi -= x * kappa
+            psidot += V * kappa
+        fy, mz = wheel_rail(row, w, y, psi, state[n + iy], psidot, V)
+        for i in range(n):
+            out[n + i] += row[minv + i * n + iy] * fy + row[minv + i * n + ipsi] * mz
+
+
+# ---------------------------------------------------------------------------
+# Runs
+
+
+def run_batch(rows, states, duration, *, max_step, rtol, atol, samples, output_rows, budget):
+    """Integrate every row of ``rows`` from its state in ``states`` (k, 2n) for ``duration`` seconds.
+
+    Returns the states at the end (k, 2n), the sampled rows (k, len(output_rows), samples.size),
+    the statuses and times reached (k,) and the evaluation counts (k,).
+    """
+    data = batch(rows)
+    states = np.ascontiguousarray(states, dtype=float).copy()
+    k = states.shape[0]
+    out = np.zeros((k, len(output_rows), samples.size))
+    counts = np.zeros((k, 5), np.int64)
+    counts[:, 1] = budget
+    status, reached = np.zeros(k, np.int64), np.zeros(k)
+    _dopri.advance_batch(
+        lateral_rhs, data, float(duration), states, float(rtol), np.full(states.shape[1], float(atol)),
+        float(max_step), samples, np.asarray(output_rows, np.int64), out, counts, status, reached,
+    )  # fmt: skip
+    return states, out, status, reached, counts[:, 0]

@@ -1,0 +1,151 @@
+"""The compiled engine of the nonlinear lateral models (raildyn.stability._engine) against the numpy models
+and scipy's integration of them.
+
+Its right-hand side is the models' own equations evaluated in another order, so it is held to theirs at
+round-off: 1e-13 of the largest entry. Integrated, the engine takes scipy RK45's steps until a rounding
+difference tips one accept-or-reject decision (the flange and the saturation put kinks in the forces);
+from there the two runs differ by the integration error, which rtol 1e-6 holds to about 1e-5 of the
+motion over a run (measured 7e-6 on the wheelset's cycle, 1e-5 on the car's). Limit cycles are
+therefore held to 1e-4 of their amplitude and frequency (1.5 µm of a 15 mm cycle), a tenth of what a
+diagram shows, and the nonlinear critical speed to the same bisection step.
+"""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from raildyn import stability
+from raildyn.contact.profiles import s1002_wheel, uic60_rail
+from raildyn.curving.geometry import Curve
+from raildyn.errors import SolverError
+from raildyn.stability import _engine
+from raildyn.vehicles import Bogie, Car
+from raildyn.wheelset import NonlinearLateral, NonlinearWheelset, SuspensionElement, Wheelset, profile_contact
+
+AGREEMENT = 1e-4  # relative, of a limit cycle's amplitude and frequency (module docstring)
+
+
+def _wheelset():
+    return NonlinearWheelset(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), speed=60.0)
+
+
+def _models():
+    car = Car().nonlinear()
+    curve = Curve(radius=600.0, cant=0.1, transition_length=60.0, arc_length=100.0, straight=20.0)
+    return {
+        "wheelset": _wheelset(),
+        "bogie": Bogie().nonlinear(40.0),
+        "car": car.at_speed(70.0),
+        "car on S1002": NonlinearLateral(
+            car.system, profile_contact(s1002_wheel(), uic60_rail(1 / 40)), 55.0
+        ),
+        "car in a curve": NonlinearLateral(car.system, car.contact, 40.0, curve=curve, start=10.0),
+    }
+
+
+@pytest.mark.parametrize("name", list(_models()))
+def test_the_compiled_right_hand_side_is_the_models(name):
+    model = _models()[name]
+    data = _engine.pack(model)[None, :].copy()
+    rng = np.random.default_rng(7)
+    half = model.state_size // 2
+    for _ in range(20):
+        # Displacements to 15 mm (past the flange), rates to 0.15 m/s: every branch of the forces.
+        state = rng.normal(size=model.state_size) * np.r_[np.full(half, 5e-3), np.full(half, 5e-2)]
+        t = rng.uniform(0.0, 4.0)  # along the curve: straight, clothoid and arc
+        expected = model.rhs(t, state)
+        out = np.empty_like(state)
+        _engine.lateral_rhs(t, state, 0, data, out)
+        np.testing.assert_allclose(out, expected, rtol=0, atol=1e-13 * np.abs(expected).max())
+
+
+def test_the_wheelsets_limit_cycle_is_scipys():
+    compiled = stability.limit_cycle_amplitude(_wheelset(), 60.0, duration=4.0, engine="compiled")
+    reference = stability.limit_cycle_amplitude(_wheelset(), 60.0, duration=4.0, engine="scipy")
+    assert compiled.hunting() and reference.hunting()
+    assert compiled.amplitude == pytest.approx(reference.amplitude, rel=AGREEMENT)
+    assert compiled.frequency_hz == pytest.approx(reference.frequency_hz, rel=AGREEMENT)
+    assert compiled.amplitude == pytest.approx(10.3e-3, abs=0.05e-3)  # the docstring's cycle
+
+
+def test_the_wheelsets_bifurcation_diagram_is_scipys():
+    speeds = np.linspace(45.0, 65.0, 6)
+    compiled = stability.bifurcation_diagram(_wheelset(), speeds, duration=4.0, progress=False)
+    reference = stability.bifurcation_diagram(
+        _wheelset(), speeds, duration=4.0, progress=False, engine="scipy"
+    )
+    np.testing.assert_array_equal(compiled.hunting, reference.hunting)
+    np.testing.assert_allclose(compiled.amplitudes, reference.amplitudes, rtol=AGREEMENT, atol=1e-9)
+    np.testing.assert_allclose(compiled.frequencies_hz, reference.frequencies_hz, rtol=AGREEMENT)
+    assert compiled.nonlinear_critical_speed == reference.nonlinear_critical_speed
+
+
+def test_the_cars_bifurcation_diagram_is_scipys():
+    # Three speeds about the car's fold, 2 s runs: scipy takes some seconds, the engine a tenth of one.
+    car = Car().nonlinear()
+    kwargs = dict(duration=2.0, refine=1, progress=False)
+    compiled = stability.bifurcation_diagram(car, [50.0, 70.0, 90.0], **kwargs)
+    reference = stability.bifurcation_diagram(car, [50.0, 70.0, 90.0], engine="scipy", **kwargs)
+    np.testing.assert_array_equal(compiled.hunting, reference.hunting)
+    assert compiled.hunting.any() and not compiled.hunting.all()
+    # A decaying run's amplitude is what is left of the 12 mm start: its error is that of the run's scale.
+    scale = reference.amplitudes.max()
+    np.testing.assert_allclose(compiled.amplitudes, reference.amplitudes, rtol=0, atol=AGREEMENT * scale)
+    np.testing.assert_allclose(compiled.frequencies_hz, reference.frequencies_hz, rtol=AGREEMENT)
+    assert compiled.nonlinear_critical_speed == reference.nonlinear_critical_speed
+
+
+def test_a_batch_of_models_gives_each_models_own_diagram():
+    family = [_wheelset().wheelset.replace(conicity=lam) for lam in (0.1, 0.15, 0.2)]
+    models = [NonlinearWheelset(ws, speed=60.0) for ws in family]
+    speeds = np.linspace(40.0, 80.0, 5)
+    together = stability.bifurcation_diagrams(models, speeds, duration=3.0, refine=2, progress=False)
+    for model, diagram in zip(models, together, strict=True):
+        alone = stability.bifurcation_diagram(model, speeds, duration=3.0, refine=2, progress=False)
+        np.testing.assert_array_equal(diagram.amplitudes, alone.amplitudes)
+        assert diagram.nonlinear_critical_speed == alone.nonlinear_critical_speed
+    # A steeper cone hunts from a lower speed.
+    onsets = [d.nonlinear_critical_speed for d in together]
+    assert onsets[0] > onsets[1] > onsets[2]
+
+
+def test_the_curve_entry_is_scipys():
+    model = _models()["car in a curve"]
+    compiled = stability.simulate(model, 40.0, np.zeros(model.state_size), 2.0, max_step=0.01)
+    reference = stability.simulate(
+        model, 40.0, np.zeros(model.state_size), 2.0, max_step=0.01, engine="scipy"
+    )
+    np.testing.assert_array_equal(compiled.t, reference.t)
+    # The coordinates, which the curve's offsets, angles of attack and flange forces are read from, to
+    # 1e-4 of each one's range (measured 2e-6). The rates jump where a flange strikes its rail (a 14.6 MN/m
+    # spring), so a step placed differently moves them by more: 1e-3 (measured 3e-4).
+    half = model.state_size // 2
+    error = np.abs(compiled.states - reference.states).max(axis=1)
+    scale = np.abs(reference.states).max(axis=1)
+    assert np.all(error[:half] <= AGREEMENT * scale[:half])
+    assert np.all(error[half:] <= 10 * AGREEMENT * scale[half:])
+
+
+def test_what_the_engine_cannot_hold_runs_on_scipy_or_is_refused():
+    model = Bogie().nonlinear(40.0)
+    label = model.system.labels[model.lateral_index]
+    element = SuspensionElement({label: 1.0}, lambda d, v: 1e3 * d)
+    with_law = dataclasses.replace(model, elements=(element,))
+    with pytest.raises(_engine.NotCompiled):
+        _engine.pack(with_law)
+    start = np.zeros(model.state_size)
+    start[model.lateral_index] = 1e-3
+    run = stability.simulate(with_law, 40.0, start, 0.05)  # auto: scipy
+    assert run.states.shape == (model.state_size, run.t.size)
+    with pytest.raises(ValueError, match="engine 'compiled' cannot run this model"):
+        stability.simulate(with_law, 40.0, start, 0.05, engine="compiled")
+    with pytest.raises(ValueError, match="runs method 'RK45' only"):
+        stability.simulate(model, 40.0, start, 0.05, engine="compiled", method="BDF")
+    with pytest.raises(ValueError, match="engine must be one of"):
+        stability.simulate(model, 40.0, start, 0.05, engine="numba")
+
+
+def test_a_run_over_its_budget_fails_loudly():
+    with pytest.raises(SolverError, match="more than 1000000 evaluations"):
+        stability.simulate(_wheelset(), 60.0, [1e-3, 0, 0, 0], 1.0, max_step=1e-7)
