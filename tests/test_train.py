@@ -152,6 +152,35 @@ def test_compiled_rhs_equals_numpy_reference(model, t):
         np.testing.assert_allclose(fast, ref, rtol=1e-12, atol=1e-12 * np.abs(ref).max())
 
 
+@pytest.mark.parametrize(("model", "t"), _kernel_cases())
+def test_integrators_rhs_unpacks_the_model_as_packed(model, t):
+    # The integrator's right-hand side reads the model from one row of floats: the same numbers.
+    from raildyn.train import _kernel
+
+    rng = np.random.default_rng(12)
+    n = model.size
+    data, out = _kernel.pack(*model._packed), np.empty(2 * n)
+    for _ in range(5):
+        y = model.initial_state(rng.uniform(-1.0, 25.0), 0.0)
+        y[1:n] = rng.uniform(-0.12, 0.12, n - 1)
+        _kernel.rhs_dopri(t, y, 0, data, out)
+        np.testing.assert_array_equal(out, model.rhs(t, y))
+    assert data[0, _kernel.H_NON_FINITE] == 0
+
+
+def test_integrators_rhs_leaves_a_non_finite_force_for_the_integrator_to_reject():
+    # The integrator rejects a step whose error norm is not finite; the right-hand side must not hide
+    # an overflow, and counts it for the message of a run that stops there.
+    from raildyn.train import _kernel
+
+    model = _overflowing(train.braking_model(2, 1), row="ROW_A2")  # a2 v² overflows
+    data, out = _kernel.pack(*model._packed), np.empty(2 * model.size)
+    for t in (0.5, 1.5):
+        _kernel.rhs_dopri(t, model.initial_state(20.0), 0, data, out)
+    assert not np.isfinite(out).all()
+    assert data[0, _kernel.H_NON_FINITE] == 2 and data[0, _kernel.H_LAST_NON_FINITE] == 1.5
+
+
 def _free_model(slack, cars=6):
     consist = train.make_consist(f"{cars} loaded hopper")
     return train.TrainModel(consist, gear=train.DraftGear(slack=slack), resistance=False)

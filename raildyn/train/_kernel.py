@@ -11,6 +11,9 @@ Everything the loop needs is packed into three float arrays (so a call unboxes
 few arguments): ``table`` has one column per vehicle and the rows named by the
 ``ROW_*`` constants; ``scalars`` holds the coupler law, the brake, the driver's
 settings and flags (``S_*``); ``route`` is ``[positions, grade, curvature]``.
+For the compiled integrator (``raildyn.integrators._dopri``), :func:`pack` puts the three into
+one row of floats and :func:`rhs_dopri` unpacks them (views, no copies) and writes the
+derivative in place, compiled to the integrator's one signature.
 The dynamic brake's corner speeds come in ``scalars`` too, from
 :data:`raildyn.train.forces.DYNAMIC_BRAKE_PEAK_SPEED` and ``..._FADE_SPEED`` (their one
 definition), and the throttle as the fraction ``notch / NOTCHES``.
