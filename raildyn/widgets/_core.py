@@ -19,6 +19,7 @@ import ipywidgets as widgets
 import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.collections import PathCollection
 from matplotlib.figure import Figure
 
 from raildyn import _checks
@@ -99,7 +100,10 @@ class LiveFigure:
             else:
                 self.canvas.restore_region(self._background)
             for artist in self._moving:
-                self.figure.draw_artist(artist)
+                if isinstance(artist, PathCollection):
+                    _draw_points_in_view(self.figure, artist)
+                else:
+                    self.figure.draw_artist(artist)
         return _png(np.asarray(self.canvas.buffer_rgba()))
 
     def refresh(self) -> bytes:
@@ -107,6 +111,64 @@ class LiveFigure:
         frame = self.render()
         self.image.value = frame
         return frame
+
+
+def _draw_points_in_view(figure: Figure, points: PathCollection) -> None:
+    """Draw a scatter without the markers that its clip box would hide whole: the same pixels, less work.
+
+    Agg transforms and clips every marker one by one, the hidden ones too: the roots chart of the
+    car (``ModeSweep.plot``) has 900 roots, about 260 of them in its window, and drew in 10 ms
+    instead of 3. The points are left out only for the drawing (the artist keeps all its data),
+    and only when nothing else varies point by point: one size, one line width, the colours one
+    or mapped from values by a norm whose limits are already set (a subset would otherwise move
+    them). Anything else is drawn as it is.
+    """
+    offsets = np.asarray(points.get_offsets())
+    values = points.get_array()
+    box = points.get_clip_box()
+    simple = (
+        points.get_clip_on()
+        and box is not None
+        and len(points.get_sizes()) <= 1
+        and len(points.get_linewidths()) <= 1
+        and offsets.ndim == 2
+        and len(offsets) > 1
+        and (
+            (values is None and len(points.get_facecolors()) <= 1 and len(points.get_edgecolors()) <= 1)
+            or (
+                values is not None
+                and np.ndim(values) == 1
+                and len(values) == len(offsets)
+                and points.norm.scaled()
+            )
+        )
+    )
+    if not simple:
+        figure.draw_artist(points)
+        return
+    xy = points.get_offset_transform().transform(offsets)
+    # A marker's reach, px: its whole width (sqrt of the area in pt²) and line width, and a pixel of
+    # antialiasing on each side; generous, since a kept marker costs little.
+    size = np.sqrt(points.get_sizes().max(initial=1.0)) + points.get_linewidths().max(initial=0.0)
+    reach = size * figure.dpi / 72.0 + 2.0
+    keep = (
+        (xy[:, 0] >= box.x0 - reach)
+        & (xy[:, 0] <= box.x1 + reach)
+        & (xy[:, 1] >= box.y0 - reach)
+        & (xy[:, 1] <= box.y1 + reach)
+    )
+    if keep.all():
+        figure.draw_artist(points)
+        return
+    points.set_offsets(offsets[keep])
+    if values is not None:
+        points.set_array(values[keep])
+    try:
+        figure.draw_artist(points)
+    finally:
+        points.set_offsets(offsets)
+        if values is not None:
+            points.set_array(values)
 
 
 _PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
