@@ -854,8 +854,8 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     y, psi, ydot, psidot : float or ndarray
         Lateral displacement (m), yaw (rad) and their rates (m/s, rad/s): finite, of
         either sign, shapes that broadcast together.
-    speed : float
-        V, m/s (> 0: the creepages divide by it).
+    speed : float or ndarray
+        V, m/s (each > 0: the creepages divide by it), of a shape that broadcasts with the motion.
 
     Returns
     -------
@@ -864,11 +864,18 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
     yaw : ndarray
         N·m.
     """
+    return _contact_forces(ws, contact, *_motion(ws, contact, y, psi, ydot, psidot, speed))
+
+
+def _motion(ws, contact, y, psi, ydot, psidot, speed) -> list:
+    """The checked [y, ψ, ẏ, ψ̇, V] of :func:`contact_forces` and :func:`wheel_forces`, broadcast."""
     _checks.instance("ws", ws, Wheelset)
     _checks.instance("contact", contact, WheelRailContact)
+    names = (*_MOTION, "speed")
     motion = [_checks.array(name, v) for name, v in zip(_MOTION, (y, psi, ydot, psidot), strict=True)]
-    _checks.broadcast(**dict(zip(_MOTION, motion, strict=True)))
-    return _contact_forces(ws, contact, *motion, _speed(speed))
+    motion.append(_checks.array("speed", speed, low=0.0, low_open=True))
+    _checks.broadcast(**dict(zip(names, motion, strict=True)))
+    return list(np.broadcast_arrays(*motion))
 
 
 _MOTION = ("y", "psi", "ydot", "psidot")
@@ -953,10 +960,8 @@ def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, 
     ----------
     ws : Wheelset
     contact : WheelRailContact
-    y, psi, ydot, psidot : float or ndarray
+    y, psi, ydot, psidot, speed : float or ndarray
         As for :func:`contact_forces`.
-    speed : float
-        V, m/s (> 0).
 
     Returns
     -------
@@ -970,12 +975,8 @@ def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, 
     >>> round(float(f.flange[0]) / 1e3, 1), float(f.flange[1])
     (-42.3, 0.0)
     """
-    _checks.instance("ws", ws, Wheelset)
-    _checks.instance("contact", contact, WheelRailContact)
-    motion = [_checks.array(name, v) for name, v in zip(_MOTION, (y, psi, ydot, psidot), strict=True)]
-    _checks.broadcast(**dict(zip(_MOTION, motion, strict=True)))
-    y, psi, ydot, psidot = np.broadcast_arrays(*motion)
-    xi_x, xi_y, _, fx, fy, scale, _ = _creep(ws, contact, y, psi, ydot, psidot, _speed(speed))
+    y, psi, ydot, psidot, speed = _motion(ws, contact, y, psi, ydot, psidot, speed)
+    xi_x, xi_y, _, fx, fy, scale, _ = _creep(ws, contact, y, psi, ydot, psidot, speed)
     tx, ty = scale * fx, scale * fy
     flange = _flange(contact, y)
     wear = np.abs(tx * xi_x) + np.abs(ty * xi_y)

@@ -130,10 +130,25 @@ def _weight(model: NonlinearLateral) -> float:
 
 
 def _newton(model, q, V, kappa, a_q) -> tuple[np.ndarray, np.ndarray]:
-    """Newton's method on the columns of q (n, P) together; the converged columns' flags (P,)."""
+    """Newton's method on the columns of q (n, P) together; the converged columns' flags (P,).
+
+    Compiled (:func:`raildyn.stability._engine.arc_newton`, the same steps column by column) for a
+    model the engine holds; in numpy, every column at once, for one with nonlinear elements.
+    """
+    from raildyn.stability import _engine
+
     tolerance = _TOLERANCE * _weight(model)
     n, P = q.shape
-    q = q.copy()
+    q = np.array(q, dtype=float, order="C", copy=True)
+    try:
+        row = _engine.pack(model)
+    except _engine.NotCompiled:
+        pass
+    else:
+        done = np.zeros(P, dtype=bool)
+        V, kappa, a_q = (np.ascontiguousarray(np.broadcast_to(v, (P,)), dtype=float) for v in (V, kappa, a_q))
+        _engine.arc_newton(row, q, V, kappa, a_q, tolerance, _NEWTON_STEPS, done)
+        return q, done
     r = model.arc_forces(q, V, kappa, a_q)
     for _ in range(_NEWTON_STEPS):
         error = np.abs(r).max(axis=0)
@@ -264,9 +279,15 @@ def _homotopy(model: NonlinearLateral, V: float, kappa: float, a_q: float) -> np
 
 
 def _wheels(
-    model: NonlinearLateral, q: np.ndarray, V: float, R: np.ndarray, D: float, h: float, tan_flange: float
+    model: NonlinearLateral,
+    q: np.ndarray,
+    V: np.ndarray,
+    R: np.ndarray,
+    D: float,
+    h: float,
+    tan_flange: float,
 ):
-    """Per-wheelset results at one speed for the equilibria q (n, P) in the radii R (P,): a dict of arrays
+    """Per-wheelset results for the equilibria q (n, P) at the speeds V and radii R (P,): a dict of arrays
     whose first axis is the wheelset (k) and then P (and 2 wheels [inner, outer] for Y and Q)."""
     system = model.system
     x = system.wheelset_positions
@@ -389,7 +410,7 @@ def quasi_static_curving(
         there = _linear_starts(model.system, np.array([start.speed]), np.array([start.radius]), start.cant)
         start = start.displacement[:, None] + here - there
     q = _solve(model, V, R, D, start)
-    out = _wheels(model, q, float(V[0]), R, D, h, tan_flange)
+    out = _wheels(model, q, V, R, D, h, tan_flange)
     system = model.system
     return QuasiStaticCurving(
         float(R[0]), float(V[0]), D, unbalanced_acceleration(float(V[0]), float(R[0]), D), system.labels,
@@ -527,17 +548,15 @@ def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=_
     s = _checks.array("speeds", speeds, ndim=1, allow_empty=False).size
     r = _checks.array("radii", radii, ndim=1, allow_empty=False).size
     V, R, D, h, tan_flange = _options("speeds", "radii", speeds, radii, cant, cg_height, flange_angle)
-    q = _solve(model, np.tile(V, r), np.repeat(R, s), D).reshape(-1, r, s)
+    # The points run over the speeds within each radius: point p is radius p // s, speed p % s.
+    speeds, radii = np.tile(V, r), np.repeat(R, s)
+    out = _wheels(model, _solve(model, speeds, radii, D), speeds, radii, D, h, tan_flange)
     k = len(model.system.wheelsets)
     fields = {
-        name: np.empty((r, s, k)) for name in ("offset", "angle_of_attack", "flange_force", "wear_number")
-    }
-    quotient = np.empty((r, s, k, 2))
-    for i, v in enumerate(V):
-        out = _wheels(model, q[:, :, i], float(v), R, D, h, tan_flange)
+        name: out[key].T.reshape(r, s, k)
         for name, key in (("offset", "offset"), ("angle_of_attack", "angle_of_attack"),
-                          ("flange_force", "flange"), ("wear_number", "wear")):  # fmt: skip
-            fields[name][:, i] = out[key].T
-        quotient[:, i] = np.moveaxis(np.abs(out["Y"]) / out["Q"], 2, 0)
+                          ("flange_force", "flange"), ("wear_number", "wear"))
+    }  # fmt: skip
+    quotient = np.moveaxis(np.abs(out["Y"]) / out["Q"], 2, 0).reshape(r, s, k, 2)
     a_q = unbalanced_acceleration(V[None, :], R[:, None], D)
     return CurvingMap(R, V, D, a_q, **fields, derailment_quotient=quotient)

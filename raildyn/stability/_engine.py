@@ -35,7 +35,8 @@ _CURVE = 5  # s₀, s₁, s₂, s₃ (the ends of the pieces), R, L, h_t, rail s
 _FRICTION, _CLEARANCE, _FLANGE = 13, 14, 15
 _DR, _DR_SIZE, _DD, _DD_SIZE = 16, 17, 18, 19  # table offsets and sizes; offset −1: the cone
 _MK, _MC, _MINV, _WHEELSETS, _LATERAL = 20, 21, 22, 23, 24  # offsets of M⁻¹K_s, M⁻¹C_s, M⁻¹, …
-_HEADER = 25
+_K, _MASS = 25, 26  # offsets of K_s and of the lateral mass vector (the forces at rest on an arc)
+_HEADER = 27
 # One wheelset's fields, in this order, from its offset.
 _FIELDS = ("iy", "ipsi", "x", "a", "r0", "f11", "f22", "f23", "f33", "W", "eps", "theta0", "lam")
 _WS = len(_FIELDS)
@@ -112,7 +113,7 @@ def pack(model) -> np.ndarray:
             [iy, ipsi, x, ws.half_gauge, ws.rolling_radius, ws.f11, ws.f22, ws.f23, ws.f33, ws.axle_load]
             + [ws.contact_angle_parameter, ws.contact_angle, ws.conicity]
         )
-    pieces += [np.array(rows, dtype=float).ravel(), M_inv @ lateral_mass]
+    pieces += [np.array(rows, dtype=float).ravel(), M_inv @ lateral_mass, np.ravel(K), lateral_mass]
     header = np.zeros(_HEADER)
     header[[_N, _NW, _SPEED, _START]] = n, len(wheelsets), model.speed, start
     header[[_FRICTION, _CLEARANCE, _FLANGE]] = (
@@ -125,7 +126,7 @@ def pack(model) -> np.ndarray:
         header[_CURVE : _CURVE + 8] = (*curve._ends(), curve.radius, curve.transition_length, curve.cant,
                                        curve.rail_spacing)  # fmt: skip
     offset = _HEADER
-    for place, piece in zip((_MK, _MC, _MINV, _WHEELSETS, _LATERAL), pieces, strict=True):
+    for place, piece in zip((_MK, _MC, _MINV, _WHEELSETS, _LATERAL, _K, _MASS), pieces, strict=True):
         header[place] = offset
         offset += piece.size
     for place, table in ((_DR, dr), (_DD, dd)):
@@ -262,6 +263,148 @@ def lateral_rhs(t, state, member, data, out):
         fy, mz = wheel_rail(row, w, y, psi, state[n + iy], psidot, V)
         for i in range(n):
             out[n + i] += row[minv + i * n + iy] * fy + row[minv + i * n + ipsi] * mz
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _arc_forces(row, q, V, kappa, a_q, out):
+    """The generalized forces at rest on an arc into ``out`` (as ``NonlinearLateral.arc_forces``)."""
+    n, k_s, mass = int(row[_N]), int(row[_K]), int(row[_MASS])
+    for i in range(n):
+        acc = -row[mass + i] * a_q
+        for j in range(n):
+            acc -= row[k_s + i * n + j] * q[j]
+        out[i] = acc
+    base = int(row[_WHEELSETS])
+    for w in range(int(row[_NW])):
+        k = base + _WS * w
+        iy, ipsi, x = int(row[k]), int(row[k + 1]), row[k + 2]
+        fy, mz = wheel_rail(row, w, q[iy] - 0.5 * x * x * kappa, q[ipsi] - x * kappa, 0.0, V * kappa, V)
+        out[iy] += fy
+        out[ipsi] += mz
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _arc_jacobian(row, q, V, kappa, a_q, J):
+    """∂F/∂q of :func:`_arc_forces` into ``J``: −K_s, and each wheelset's 2 × 2 contact block by forward
+    differences of 1e-7 m (rad), as ``NonlinearLateral.arc_jacobian``."""
+    n, k_s = int(row[_N]), int(row[_K])
+    h = 1.0e-7
+    for i in range(n):
+        for j in range(n):
+            J[i, j] = -row[k_s + i * n + j]
+    base = int(row[_WHEELSETS])
+    for w in range(int(row[_NW])):
+        k = base + _WS * w
+        iy, ipsi, x = int(row[k]), int(row[k + 1]), row[k + 2]
+        y, psi, rate = q[iy] - 0.5 * x * x * kappa, q[ipsi] - x * kappa, V * kappa
+        fy, mz = wheel_rail(row, w, y, psi, 0.0, rate, V)
+        fy_y, mz_y = wheel_rail(row, w, y + h, psi, 0.0, rate, V)
+        fy_p, mz_p = wheel_rail(row, w, y, psi + h, 0.0, rate, V)
+        J[iy, iy] += (fy_y - fy) / h
+        J[ipsi, iy] += (mz_y - mz) / h
+        J[iy, ipsi] += (fy_p - fy) / h
+        J[ipsi, ipsi] += (mz_p - mz) / h
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _merit(r):
+    total = 0.0
+    for i in range(r.size):
+        total += r[i] * r[i]
+    return total
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _max_abs(r):
+    """max |r|, inf where an entry is not a number (a residual that is nowhere near converged)."""
+    out = 0.0
+    for i in range(r.size):
+        if math.isnan(r[i]):
+            return np.inf
+        out = max(out, abs(r[i]))
+    return out
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _solve_small(J, r, step):
+    """step = −J⁻¹ r by Gaussian elimination with partial pivoting, J overwritten; False if singular.
+
+    A few dozen unknowns at most: elimination in place costs less than a call to LAPACK and its
+    copies, at every Newton step of every point of a map.
+    """
+    n = r.size
+    for i in range(n):
+        step[i] = -r[i]
+    for c in range(n):
+        pivot, big = c, abs(J[c, c])
+        for i in range(c + 1, n):
+            if abs(J[i, c]) > big:
+                pivot, big = i, abs(J[i, c])
+        if not big > 1e-300:  # zero or not a number
+            return False
+        if pivot != c:
+            for j in range(n):
+                J[c, j], J[pivot, j] = J[pivot, j], J[c, j]
+            step[c], step[pivot] = step[pivot], step[c]
+        for i in range(c + 1, n):
+            f = J[i, c] / J[c, c]
+            if f != 0.0:
+                for j in range(c, n):
+                    J[i, j] -= f * J[c, j]
+                step[i] -= f * step[c]
+    for i in range(n - 1, -1, -1):
+        acc = step[i]
+        for j in range(i + 1, n):
+            acc -= J[i, j] * step[j]
+        step[i] = acc / J[i, i]
+    for i in range(n):
+        if not math.isfinite(step[i]):
+            return False
+    return True
+
+
+@numba.njit(cache=True, error_model="numpy")
+def arc_newton(row, q, V, kappa, a_q, tolerance, steps, done):
+    """Newton's method on each column of ``q`` (n, P), in place, towards the rest states on arcs.
+
+    Column p solves ``_arc_forces`` = 0 at V[p], κ[p], a_q[p]: at most ``steps`` Newton steps,
+    each halved up to eleven times until the sum of squared residuals falls (the line search of
+    :func:`raildyn.curving.quasi_static._newton`, column by column); a column stops where no step
+    improves it or its Jacobian is singular. ``done[p]`` is set where every residual is within
+    ``tolerance`` (N).
+    """
+    n, P = q.shape
+    x, trial, r, r_trial, step = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
+    J = np.empty((n, n))
+    for p in range(P):
+        for i in range(n):
+            x[i] = q[i, p]
+        _arc_forces(row, x, V[p], kappa[p], a_q[p], r)
+        for _ in range(steps):
+            if not _max_abs(r) > tolerance:
+                break
+            _arc_jacobian(row, x, V[p], kappa[p], a_q[p], J)
+            if not _solve_small(J, r, step):  # singular: the other searches take this point over
+                break
+            merit = _merit(r)
+            alpha = 1.0
+            better = False
+            for _ in range(12):
+                for i in range(n):
+                    trial[i] = x[i] + alpha * step[i]
+                _arc_forces(row, trial, V[p], kappa[p], a_q[p], r_trial)
+                if _merit(r_trial) < merit:
+                    better = True
+                    break
+                alpha *= 0.5
+            if not better:
+                break
+            for i in range(n):
+                x[i] = trial[i]
+                r[i] = r_trial[i]
+        for i in range(n):
+            q[i, p] = x[i]
+        done[p] = _max_abs(r) <= tolerance
 
 
 # ---------------------------------------------------------------------------

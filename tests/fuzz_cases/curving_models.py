@@ -167,8 +167,8 @@ ENTRIES = [
     fuzz(
         "raildyn.wheelset.wheel_forces",
         lambda: call(Wheelset(), WheelRailContact(), 0.012, 1e-3, 0.01, 0.02, 30.0),
-        # displacements and rates of either sign; arrays broadcast
-        accepts={name: "zero negative list" for name in ("y", "psi", "ydot", "psidot")},
+        # displacements and rates of either sign; arrays broadcast (the speeds too, each > 0)
+        accepts={**{name: "zero negative list" for name in ("y", "psi", "ydot", "psidot")}, "speed": "list"},
     ),
     fuzz(
         "raildyn.wheelset.WheelForces",

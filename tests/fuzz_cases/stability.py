@@ -260,8 +260,8 @@ ENTRIES = [
     fuzz(
         "raildyn.wheelset.contact_forces",
         lambda: call(SOFT, wh.WheelRailContact(), 1e-3, 1e-3, 0.01, 0.01, 30.0),
-        # displacements and rates of either sign; arrays broadcast
-        accepts={p: "zero negative list" for p in ("y", "psi", "ydot", "psidot")},
+        # displacements and rates of either sign; arrays broadcast (the speeds too, each > 0)
+        accepts={**{p: "zero negative list" for p in ("y", "psi", "ydot", "psidot")}, "speed": "list"},
     ),
     fuzz("raildyn.wheelset.NonlinearWheelset", lambda: call(SOFT, wh.WheelRailContact(), 60.0)),
     fuzz("raildyn.wheelset.NonlinearWheelset.at_speed", lambda: on(NW, 50.0)),
