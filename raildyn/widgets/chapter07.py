@@ -16,6 +16,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from raildyn import plots, stability
+from raildyn.linear_model import LinearSystem
 from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Car
 from raildyn.widgets._core import Recipe, slider
 
@@ -95,15 +96,55 @@ def car_roots():
 _CONICITIES = np.linspace(0.03, 0.5, 10)
 
 
+def _systems_over_conicity(make, conicities) -> dict:
+    """``make(λ).linear_system()`` at each conicity (sorted, three or more), assembled three times only.
+
+    The wheel–rail terms are affine in λ (the creep stiffness 2af₁₁λ/r₀, and the gravitational
+    stiffnesses Wε/a and −Waϑ₀ whose ε and ϑ₀ follow λ: :func:`raildyn.wheelset.creep_terms`), so
+    M, C₀, C₁ and K in between are the straight line between the two ends. Assembling the car
+    took longer than its critical speed; here the ends and a middle conicity are assembled, and
+    the middle one checks the line to round-off (1e-12 of each matrix), else every conicity is
+    assembled as before. Only what :func:`raildyn.stability.critical_speed` reads is kept.
+    """
+    first, last = conicities[0], conicities[-1]
+    ends = [make(first).linear_system(), make(last).linear_system()]
+
+    def between(lam):
+        t = (lam - first) / (last - first)
+        mats = {
+            name: (1.0 - t) * getattr(ends[0], name) + t * getattr(ends[1], name)
+            for name in ("M", "C0", "C1", "K")
+        }
+        return LinearSystem(**mats, labels=ends[0].labels)
+
+    middle = conicities[len(conicities) // 2]
+    assembled = make(middle).linear_system()
+    guess = between(middle)
+    affine = all(
+        np.abs(getattr(guess, name) - getattr(assembled, name)).max()
+        <= 1e-12 * np.abs(getattr(assembled, name)).max()
+        for name in ("M", "C0", "C1", "K")
+    )
+    if not affine:
+        return {lam: make(lam).linear_system() for lam in conicities}
+    known = {first: ends[0], last: ends[1], middle: assembled}
+    return {lam: known[lam] if lam in known else between(lam) for lam in conicities}
+
+
 def _critical_curves(yaw_stiffness: float, secondary_yaw_stiffness: float):
     """Critical-speed maps of the car and of its bogie against conicity (stiffnesses in MN·m/rad)."""
-    base = _CAR.replace(secondary_yaw_stiffness=1e6 * secondary_yaw_stiffness)
+    base = _CAR.replace(
+        secondary_yaw_stiffness=1e6 * secondary_yaw_stiffness, yaw_stiffness=1e6 * yaw_stiffness
+    )
+    conicities = [float(lam) for lam in _CONICITIES]
+    cars = _systems_over_conicity(lambda lam: base.replace(conicity=lam), conicities)
+    bogies = _systems_over_conicity(lambda lam: base.replace(conicity=lam).bogie, conicities)
 
-    def car(lam, k):
-        return base.replace(conicity=lam, yaw_stiffness=1e6 * k)
+    def car(lam, _k):
+        return cars[lam]
 
-    def bogie(lam, k):
-        return car(lam, k).bogie
+    def bogie(lam, _k):
+        return bogies[lam]
 
     def curve(factory):
         return stability.critical_speed_map(
