@@ -205,9 +205,19 @@ def test_bifurcation_diagram_plot_splits_hunting_from_decaying_runs():
     never = stability.BifurcationDiagram(
         diagram.speeds, diagram.amplitudes, diagram.frequencies_hz, np.zeros(3, bool), np.inf, 2e-4
     )
-    assert set(never.plot(Figure().subplots())) == {"cycles", "decaying"}
+    assert drawn["linear_text"].get_text() == "270 km/h" and drawn["nonlinear_text"].get_text() == "234 km/h"
+    # No cycle, no linear speed given: both critical-speed marks are hidden, here and in place.
+    hidden = never.plot(Figure().subplots())
+    assert not hidden["nonlinear"].get_visible() and not hidden["linear_text"].get_visible()
+    moved = never.plot(artists=drawn)
+    assert moved is drawn and not drawn["nonlinear"].get_visible() and not drawn["linear"].get_visible()
+    assert drawn["cycles"].get_xydata().size == 0 and drawn["decaying"].get_xydata().shape == (3, 2)
+    diagram.plot(artists=drawn, linear_critical_speed=75.0)
+    assert drawn["nonlinear"].get_visible() and drawn["nonlinear"].get_xdata()[0] == pytest.approx(234.0)
     with pytest.raises(ValueError, match="linear_critical_speed"):
         diagram.plot(Figure().subplots(), linear_critical_speed=np.inf)
+    with pytest.raises(TypeError, match="artists"):
+        diagram.plot(artists=[1])
 
 
 def test_simulate_is_the_run_limit_cycle_amplitude_measures():

@@ -604,52 +604,78 @@ class BifurcationDiagram:
             positive("nonlinear_critical_speed", self.nonlinear_critical_speed)
         positive("threshold", self.threshold)
 
-    def plot(self, ax=None, *, linear_critical_speed: float | None = None) -> dict:
+    def plot(
+        self, ax=None, *, linear_critical_speed: float | None = None, artists: dict | None = None
+    ) -> dict:
         """Draw the amplitude (mm) against speed (km/h), with the nonlinear and linear critical speeds.
 
         Filled markers joined by a line: sustained hunting; open markers: motion that dies away.
+        Each critical speed is a vertical line labelled with its value at the top of the axes.
 
         Parameters
         ----------
         ax : matplotlib Axes, optional
-            Axes to draw on; new ones by default.
+            Axes to draw on; new ones by default. Ignored when ``artists`` is given.
         linear_critical_speed : float, optional
             The linear critical speed of the same vehicle, m/s (finite, > 0; from
             :func:`~raildyn.stability.linear.critical_speed`), drawn as a dashed line; left out if None.
+        artists : dict, optional
+            The artists an earlier call returned: they are moved to this diagram in place (a
+            widget's redraw), and a critical speed that is absent is hidden.
 
         Returns
         -------
         dict
             The artists: ``cycles`` and ``decaying`` (``Line2D``), and the vertical lines
-            ``nonlinear`` (when the nonlinear critical speed is finite) and ``linear`` (when
-            ``linear_critical_speed`` is given).
+            ``nonlinear`` and ``linear`` with their labels ``nonlinear_text`` and ``linear_text``
+            (hidden where the nonlinear critical speed is infinite or no linear one is given).
         """
         import matplotlib
 
         from raildyn import plots
 
         V, amp, hunt = 3.6 * self.speeds, 1e3 * self.amplitudes, self.hunting
-        ax = plots.axes_or_new(ax)
-        out = {}
-        with matplotlib.rc_context(plots.STYLE):
-            (out["cycles"],) = ax.plot(V[hunt], amp[hunt], "o-", color=plots.COLORS[0], label="limit cycle")
-            (out["decaying"],) = ax.plot(
-                V[~hunt], amp[~hunt], "o", mfc="none", color=plots.COLORS[0], label="motion dies away"
+        marks = {"nonlinear": 3.6 * self.nonlinear_critical_speed, "linear": np.nan}
+        if linear_critical_speed is not None:
+            marks["linear"] = 3.6 * scalar(
+                "linear_critical_speed", linear_critical_speed, low=0.0, low_open=True
             )
-            if linear_critical_speed is not None:
-                vc = 3.6 * scalar("linear_critical_speed", linear_critical_speed, low=0.0, low_open=True)
-                out["linear"] = ax.axvline(
-                    vc, color=plots.COLORS[1], ls="--", label=f"linear V_c {vc:.0f} km/h"
-                )
-            vnl = 3.6 * self.nonlinear_critical_speed
-            if np.isfinite(vnl):
-                out["nonlinear"] = ax.axvline(
-                    vnl, color=plots.COLORS[2], ls=":", label=f"nonlinear V_c {vnl:.0f} km/h"
-                )
-            ax.set_xlabel("speed (km/h)")
-            ax.set_ylabel("amplitude of $y$ (mm)")
-            ax.legend(loc="center right")
-        return out
+        if artists is None:
+            ax = plots.axes_or_new(ax)
+            with matplotlib.rc_context(plots.STYLE):
+                artists = {
+                    "cycles": ax.plot([], [], "o-", color=plots.COLORS[0], label="limit cycle")[0],
+                    "decaying": ax.plot(
+                        [], [], "o", mfc="none", color=plots.COLORS[0], label="motion dies away"
+                    )[0],
+                }
+                for key, colour, style, name in (
+                    ("linear", 1, "--", "linear"),
+                    ("nonlinear", 2, ":", "nonlinear"),
+                ):
+                    artists[key] = ax.axvline(0.0, color=plots.COLORS[colour], ls=style, label=f"{name} V_c")
+                    artists[f"{key}_text"] = ax.text(
+                        0.0, 1.0, "", transform=ax.get_xaxis_transform(), color=plots.COLORS[colour],
+                        ha="center", va="bottom", fontsize="small",
+                    )  # fmt: skip
+                ax.set_xlabel("speed (km/h)")
+                ax.set_ylabel("amplitude of $y$ (mm)")
+                ax.set_xlim(V.min() - 0.05 * np.ptp(V) - 1.0, V.max() + 0.05 * np.ptp(V) + 1.0)
+                ax.set_ylim(0.0, 1.1 * max(float(amp.max()), 1.0))
+                ax.legend(loc="center right")
+        else:
+            _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
+        artists["cycles"].set_data(V[hunt], amp[hunt])
+        artists["decaying"].set_data(V[~hunt], amp[~hunt])
+        for key, value in marks.items():
+            shown = bool(np.isfinite(value))
+            artists[key].set_visible(shown)
+            artists[f"{key}_text"].set_visible(shown)
+            if shown:
+                artists[key].set_xdata([value, value])
+                artists[f"{key}_text"].set_x(value)
+                artists[f"{key}_text"].set_text(f"{value:.0f} km/h")
+        return artists
 
 
 def bifurcation_diagram(
