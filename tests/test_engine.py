@@ -149,3 +149,22 @@ def test_what_the_engine_cannot_hold_runs_on_scipy_or_is_refused():
 def test_a_run_over_its_budget_fails_loudly():
     with pytest.raises(SolverError, match="more than 1000000 evaluations"):
         stability.simulate(_wheelset(), 60.0, [1e-3, 0, 0, 0], 1.0, max_step=1e-7)
+
+
+def test_the_compiled_curving_map_is_the_numpy_newtons(monkeypatch):
+    from raildyn.curving import curving_map
+
+    model = Bogie().nonlinear()
+    speeds, radii = np.linspace(10.0, 25.0, 4), np.geomspace(150.0, 3000.0, 5)
+    compiled = curving_map(model, speeds, radii, 0.1)
+
+    def refuse(model):
+        raise _engine.NotCompiled("the numpy path, for the comparison")
+
+    monkeypatch.setattr(_engine, "pack", refuse)
+    reference = curving_map(model, speeds, radii, 0.1)
+    # Both converge to the same equilibria, within Newton's tolerance (1e-9 of the weight in N): far below
+    # 1e-9 m and rad.
+    np.testing.assert_allclose(compiled.offset, reference.offset, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(compiled.angle_of_attack, reference.angle_of_attack, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(compiled.flange_force, reference.flange_force, rtol=1e-6, atol=1e-2)
