@@ -21,6 +21,9 @@ from raildyn.contact import fastsim
 
 module = importlib.import_module("raildyn.contact.fastsim")  # the function shadows the module
 TOL = 1e-12
+# Plus this much absolute: results in the subnormal range (from creepages like 5e-324, which
+# hypothesis finds) have lost their relative precision; no physical force or field is this small.
+FLOOR = 1e-300
 N, MU, A, B = 1e5, 0.3, 6e-3, 4e-3
 FIELDS = ("x", "y", "px", "py", "pz", "slip_x", "slip_y")
 
@@ -35,9 +38,9 @@ def _assert_same(args, **kw):
     scale = np.maximum(np.maximum(np.abs(fx), np.abs(fy)), np.where((fx == 0) & (fy == 0), mu_n, 0.0))
     length = np.maximum(ref.a, ref.b)
     assert np.shape(new.fx) == fx.shape
-    assert np.all(np.abs(new.fx - fx) <= TOL * scale)
-    assert np.all(np.abs(new.fy - fy) <= TOL * scale)
-    assert np.all(np.abs(new.mz - mz) <= TOL * scale * length)
+    assert np.all(np.abs(new.fx - fx) <= TOL * scale + FLOOR)
+    assert np.all(np.abs(new.fy - fy) <= TOL * scale + FLOOR)
+    assert np.all(np.abs(new.mz - mz) <= TOL * scale * length + FLOOR)
     for k in ("normal_load", "friction", "a", "b"):
         np.testing.assert_array_equal(getattr(new, k), getattr(ref, k))
     if kw.get("fields", True):
@@ -47,7 +50,7 @@ def _assert_same(args, **kw):
             assert got.shape == want.shape
             # Per state: relative to the field's largest entry over that state's patch.
             size = np.max(np.abs(want), axis=(-2, -1), keepdims=True)
-            assert np.all(np.abs(got - want) <= TOL * size), k
+            assert np.all(np.abs(got - want) <= TOL * size + FLOOR), k
     return new, ref
 
 
@@ -119,6 +122,7 @@ def test_one_thread_and_several_give_the_same_bits():
     # Each state is marched by one thread in the same order: no result depends on the split.
     np.testing.assert_array_equal(one.fx, many.fx)
     np.testing.assert_array_equal(one.mz, many.mz)
+    _assert_same(args)  # the parallel march, fields too, equals numpy's as the serial one does
 
 
 def test_forces_do_not_depend_on_asking_for_the_fields():

@@ -2,42 +2,45 @@
 
 :func:`raildyn.contact.fastsim.fastsim` checks its input, computes the flexibilities,
 the pressure normalisation and the scaling of huge creepages with numpy (a few
-operations per state), then calls :func:`march` here for the cells, the part that
-grows as S × n_y × n_x. ``_fastsim_numpy`` in that module is the numpy march this
-replaces; ``tests/test_fastsim_kernel.py`` holds the two equal to 1e-12 of the largest force.
+operations per state), then calls :func:`march` (or :func:`march_parallel` for a large
+batch) for the cells, the part that grows as S × n_y × n_x. ``_fastsim_numpy`` in that
+module is the numpy march this replaces; ``tests/test_fastsim_kernel.py`` holds the two
+equal to 1e-12 of the largest force.
 
 The loops run over states, then cells along x, then strips across: the strips of one
-state are independent, so the innermost loop has no carried dependency and the
-compiler issues the strips' square roots and divisions side by side (vectorized four
-wide with AVX2). Marching one strip to its end instead chains each cell on the previous
-one, and a sliding cell's chain (multiply, square root, divide, multiply: some 45
-cycles) would then set the pace. Every division and every per-strip constant is taken
-out of the cell loop; the forces are summed per strip and multiplied by the cell area
-once per strip. ``fastmath`` is off: it would let the compiler reorder the sums and
-replace the division and square root by approximations, and the tests ask for 1e-12.
+state are independent, so the innermost loop carries no dependency and the compiler
+puts four strips through each vector instruction (AVX2), square root and division
+included. Marching one strip to its end instead chains each cell on the one before, and
+a sliding cell's chain (square, square root, division, product) would set the pace: such
+a chain measured 15 ns per cell, eight times the kernel. Every division but the cap's
+and the strip geometry are taken out of the cell loop, and the forces are summed per
+strip and multiplied by the cell area once per strip. The step and its products with the
+three traction rates and with ½ stay in the cell loop (five multiplications): moved into
+per-strip arrays they made LLVM give up vectorizing the loop (more arrays than its
+run-time overlap checks allow), three times slower. ``error_model="numpy"`` makes a
+division plain IEEE arithmetic, without numba's zero test, which also stops vectorizing;
+``fastmath`` stays off, as it would reorder the sums and approximate the division and
+square root, and the tests ask for 1e-12.
 
-The slide test compares squares, t_x² + t_y² > (μp)², and takes a square root and a
-division only where the cell slides. That is the numpy test |t| > μp but for the last
-bit of |t|, where the cap is 1 to rounding either way. It needs the squares to stay
-within floating-point range, which the scaling of huge creepages (``_within_sliding``)
-ensures for any bound μp₀ between 1e-100 and 1e100 Pa; a state outside that range (an
-absurd μ or load) is marched with ``math.hypot`` as in numpy.
+The slide test takes min(1, μp/√(t_x² + t_y²)) for every cell, without a branch: the
+numpy test |t| > μp but for the last bit of |t|, where the cap is 1 to rounding either way.
+It needs the squares to stay within floating-point range, which the scaling of huge
+creepages (``_within_sliding``) ensures for any bound μp₀ between 1e-100 and 1e100 Pa; a
+state outside that range (an absurd μ or load) is marched with ``math.hypot`` as in numpy.
 
-Operations per cell, counted in the inner loop of :func:`_march_state` (forces only):
-x = h − (k + ½)Δx (1 multiply-add), the two traction increments (t_x: 1 multiply, 1
-subtract; t_y: 4 multiplies or adds, 2 subtracts), the bound μp (1 multiply), the slide
-test (3 multiplies, 1 add, 1 compare), the cap where it slides (1 square root, 1
-division, 2 multiplies), and the sums of p_x, p_y and x p_y (3 adds, 1 multiply): about
-20 floating-point operations in adhesion, 24 in slip, with one square root and one
-division. Measured on this machine (AMD EPYC, Zen 3, 2 cores at 2.45 GHz, 10⁴ random
-states on 20 × 20 cells, mostly sliding cells): about 0.5 µs per contact on one thread
-(8 × 10⁸ cells/s, about 3 cycles per cell; the numpy march took 10 to 13 µs). Dependent scalar code
-issues about one floating-point operation per cycle, which would allow ~1.2 × 10⁸
-cells/s at 20 operations per cell; independent strips let the core's two or four
-floating-point pipes and its four-wide vectors work at once, so the kernel runs
-several times faster than that scalar bound. Its real ceiling is the vector square
-root and division of sliding cells (one four-wide square root per ~9 cycles and one
-division per ~5 on Zen 3, i.e. ~3.5 cycles per sliding cell), which it is close to.
+Operations per cell (the inner loop of :func:`_march_state`, forces only): 13
+multiplications, 9 additions or subtractions, 1 square root, 1 division and 1 comparison,
+25 in all. Measured on this machine (AMD EPYC, Zen 3, 2 cores shared with other sessions;
+the clock, from a chain of dependent additions of 3 cycles each, ~3.2 GHz), best of
+repeated runs on one thread, 10⁴ random states on 20 × 20 cells (57 % of them sliding):
+1.86 ns per cell, 0.75 µs per contact, 5.4 × 10⁸ cells/s, 6 cycles per cell or 4.2
+operations per cycle. One operation per cycle, the pace of dependent scalar code, would
+allow 1.3 × 10⁸ cells/s: the kernel runs 4.2 times faster by its four-wide vectors. The
+same 25 operations on independent cells in a compiled loop (no carried traction, data in
+the L1 cache) take 1.44 ns per cell, 7 × 10⁸ cells/s: the kernel reaches 0.77 of that
+limit, of which the vector square root and division alone take 1.03 ns per cell (0.95 ns
+for the other 23 operations). The rest of :func:`fastsim`, the numpy preparation of the
+states (mostly the interpolation of Kalker's coefficients), adds about 0.8 µs per contact.
 """
 
 from __future__ import annotations
@@ -133,21 +136,31 @@ def _march_state(s, xi, eta, phi, a, b, l1, l2, l3, limit, eta_y, root, shape, w
     forces[2, s] = mz
 
 
-@numba.njit(cache=True, parallel=True)
-def march(xi, eta, phi, a, b, l1, l2, l3, limit, eta_y, root, shape, forces, out, stick, threads):
-    """FASTSIM's march for S states (1-D arrays of length S), in parallel over blocks of states.
+@numba.njit(cache=True)
+def march(xi, eta, phi, a, b, l1, l2, l3, limit, eta_y, root, shape, forces, out, stick):
+    """FASTSIM's march for S states (1-D arrays of length S), one after the other.
 
     ``shape`` is (n_x, n_y), cell-major; ``forces`` (3, S) receives F_x, F_y (N) and M_z (N m);
-    ``out`` and ``stick`` the fields, or None (see :func:`_march_state`). ``threads`` is
-    ``numba.get_num_threads()`` of the caller (called here, it would keep numba from caching).
-    Each thread's block allocates its scratch once, so the cost per state is the cells' arithmetic.
+    ``out`` and ``stick`` the fields, or None (see :func:`_march_state`).
+    """
+    work = np.empty((11, shape.shape[1]))
+    for s in range(xi.size):
+        _march_state(s, xi, eta, phi, a, b, l1, l2, l3, limit, eta_y, root, shape, work, forces, out, stick)
+
+
+@numba.njit(cache=True, parallel=True)
+def march_parallel(xi, eta, phi, a, b, l1, l2, l3, limit, eta_y, root, shape, forces, out, stick, threads):
+    """:func:`march` with the states shared among ``threads`` blocks run in parallel.
+
+    ``threads`` is ``numba.get_num_threads()`` of the caller (called here, it would keep numba
+    from caching). Each block allocates its scratch once, so the cost per state is the cells'
+    arithmetic; each state is marched by one thread, so the result does not depend on ``threads``.
     """
     n_states = xi.size
     n_y = shape.shape[1]
-    blocks = min(threads, max(n_states, 1))
-    for block in numba.prange(blocks):
+    for block in numba.prange(threads):
         work = np.empty((11, n_y))
-        for s in range(block * n_states // blocks, (block + 1) * n_states // blocks):
+        for s in range(block * n_states // threads, (block + 1) * n_states // threads):
             _march_state(
                 s, xi, eta, phi, a, b, l1, l2, l3, limit, eta_y, root, shape, work, forces, out, stick
             )

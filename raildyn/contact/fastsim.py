@@ -255,6 +255,10 @@ def flexibilities(
 
 
 _CELLS_MAX = 1000  # cells per strip and strips: the error, O(1/n²), is then far below the theory's own
+# States per thread below which a batch is marched on the calling thread alone: starting numba's
+# threads costs a few µs, the march of a few states, and far more (a time slice of the system,
+# milliseconds) when other processes hold the cores, a risk worth taking only for a large batch.
+_STATES_PER_THREAD = 64
 _SLIDING = 1e12  # creepage, in units of the one of full sliding, beyond which creepages are scaled down
 
 
@@ -364,9 +368,14 @@ def fastsim(
         stick = np.empty((n_states, state.n_y, state.n_x), dtype=bool)
     else:
         out = stick = None
-    _fastsim_kernel.march(
-        *flat, state.eta_y, state.root, state.shape_by_cell, forces, out, stick, numba.get_num_threads()
-    )
+    # All of numba's threads or none: a parallel loop starts them all, and an idle one can keep the
+    # others waiting for it when the machine is busy.
+    threads = numba.get_num_threads()
+    common = (*flat, state.eta_y, state.root, state.shape_by_cell, forces, out, stick)
+    if threads > 1 and n_states >= threads * _STATES_PER_THREAD:
+        _fastsim_kernel.march_parallel(*common, threads)
+    else:
+        _fastsim_kernel.march(*common)
     fx, fy, mz = (v.reshape(shape) for v in forces)
     if not state.fields:
         return _result(state, fx, fy, mz)
