@@ -74,7 +74,7 @@ def test_large_creepage_saturates_at_mu_n(direction):
     st.floats(0.3, 3.0),
 )
 @PROPERTY
-def test_vectorized_equals_the_cell_by_cell_reference(xi, eta, phi, mu, ratio):
+def test_compiled_equals_the_cell_by_cell_reference(xi, eta, phi, mu, ratio):
     a, b = A, A / ratio
     r = fastsim(xi, eta, phi, N, mu, a, b, G, NU, fields=False)
     flex = flexibilities(a, b, G, NU)
