@@ -15,7 +15,10 @@ eigenvalues come from one batched ``numpy.linalg`` call.
 * :func:`~raildyn.stability.linear.critical_speed_map` — the critical speed over a grid of two parameters;
 * :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`,
   :func:`~raildyn.stability.nonlinear.bifurcation_diagram` — nonlinear hunting: the
-  amplitude of the limit cycle against speed and the nonlinear critical speed.
+  amplitude of the limit cycle against speed and the nonlinear critical speed;
+  :func:`~raildyn.stability.nonlinear.bifurcation_diagrams` runs a family of vehicles side by side.
+  The nonlinear models are integrated by a compiled engine (numba) that takes scipy RK45's
+  steps a few hundred times faster; ``engine="scipy"`` runs the reference it is tested against.
 """
 
 from raildyn.stability.linear import (

@@ -2,7 +2,11 @@
 
 The nonlinear models (:class:`raildyn.wheelset.NonlinearWheelset`,
 :class:`raildyn.wheelset.NonlinearLateral`) expose ``rhs(t, state)``; these
-functions integrate them with scipy and measure the steady hunting.
+functions integrate them and measure the steady hunting. RK45 runs on a compiled
+engine (``raildyn.stability._engine``: the same equations in numba, many speeds or
+vehicles at once, on the Dormand–Prince integrator of ``raildyn.integrators._dopri``)
+wherever it holds the model, and on ``scipy.integrate.solve_ivp`` otherwise or when
+asked (``engine="scipy"``, the reference the tests hold the engine to).
 """
 
 from __future__ import annotations
@@ -653,7 +657,7 @@ class BifurcationDiagram:
                     ("linear", 1, "--", "linear"),
                     ("nonlinear", 2, ":", "nonlinear"),
                 ):
-                    artists[key] = ax.axvline(0.0, color=plots.COLORS[colour], ls=style, label=f"{name} V_c")
+                    artists[key] = ax.axvline(0.0, color=plots.COLORS[colour], ls=style, label=f"{name} $V_c$")
                     artists[f"{key}_text"] = ax.text(
                         0.0, 1.0, "", transform=ax.get_xaxis_transform(), color=plots.COLORS[colour],
                         ha="center", va="bottom", fontsize="small",
