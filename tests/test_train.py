@@ -169,15 +169,15 @@ def test_integrators_rhs_unpacks_the_model_as_packed(model, t):
 
 
 def test_integrators_rhs_leaves_a_non_finite_force_for_the_integrator_to_reject():
-    # The integrator rejects a step whose error norm is not finite; the right-hand side must not hide
-    # an overflow, and counts it for the message of a run that stops there.
+    # The integrator rejects a step whose error norm is NaN; the right-hand side must not hide an
+    # overflow, and counts it for the message of a run that stops there.
     from raildyn.train import _kernel
 
     model = _overflowing(train.braking_model(2, 1), row="ROW_A2")  # a2 v² overflows
     data, out = _kernel.pack(*model._packed), np.empty(2 * model.size)
     for t in (0.5, 1.5):
         _kernel.rhs_dopri(t, model.initial_state(20.0), 0, data, out)
-    assert not np.isfinite(out).all()
+    assert np.isnan(out).all()  # as solve_ivp is given it (an infinite force would make the first step 0)
     assert data[0, _kernel.H_NON_FINITE] == 2 and data[0, _kernel.H_LAST_NON_FINITE] == 1.5
 
 
@@ -548,6 +548,35 @@ def test_simulation_running_into_an_overflow_raises_solver_error_at_that_time():
     assert arrival == pytest.approx(200.0, abs=0.02)
     assert err.partial.t[-1] <= err.time < err.partial.t[-1] + 0.1  # the last output before the stop
     np.testing.assert_allclose(err.partial.speed, level.speed[:, : err.partial.t.size * 100 : 100], rtol=1e-5)
+
+
+def test_a_run_starting_at_an_overflow_fails_as_solve_ivp_does(monkeypatch):
+    # The front starts 1 mm before a curvature whose resistance overflows: the first step's trial
+    # evaluation already meets it. An infinite force there would make the compiled first step zero;
+    # as NaN (what solve_ivp is given) it is solve_ivp's, and both approach the overflow in the same
+    # shrinking steps until the evaluation budget (made small here) runs out at the same time.
+    import dataclasses
+
+    from raildyn.errors import SolverError
+    from raildyn.train import longitudinal
+
+    monkeypatch.setattr(longitudinal, "_MAX_EVALUATIONS", 3000)
+    route = train.Route((0.0, 200.0), (0.0, 0.0), curvature=(0.0, 0.01))
+    model = train.braking_model(5, 1, route=route)
+    ahead = 200.0 - 1e-3 - model.initial_state(20.0)[0]
+    model = _overflowing(
+        dataclasses.replace(model, front_start=model.front_start + ahead), segment_curvature=1e308
+    )
+    with pytest.raises(SolverError, match="more than 3000 right-hand-side calls.*not finite") as compiled:
+        train.simulate(model, 2.0, 20.0)
+    n = model.size
+    atol = np.r_[1e-3, np.full(n - 1, 1e-6), np.full(n, 1e-5)]
+    with pytest.raises(SolverError, match="more than 3000") as ref:
+        longitudinal._integrate_solve_ivp(
+            model, model.initial_state(20.0), np.linspace(0.0, 2.0, 601), 1e-7, atol, "RK45", np.inf, None
+        )
+    assert compiled.value.time == pytest.approx(ref.value.time, rel=1e-9)
+    assert compiled.value.time == pytest.approx(5e-5, rel=1e-4)  # 1 mm at 20 m/s, where the overflow is
 
 
 def test_simulation_solver_stop_raises_solver_error():

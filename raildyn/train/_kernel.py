@@ -151,9 +151,11 @@ def pack(table, scalars, route):
 def rhs_dopri(t, y, member, data, out):
     """:func:`rhs` for the compiled integrator, the model unpacked from row ``member`` of ``data``.
 
-    A non-finite derivative is left in ``out``: its error norm is NaN or infinite, so the
-    integrator rejects the step and retries a smaller one, as solve_ivp does. Each such
-    evaluation is counted in the row's header, for the message of a run that stops there.
+    A non-finite derivative is made all NaN, as :func:`raildyn.train.simulate` does for
+    solve_ivp: its error norm is NaN, so the integrator rejects the step and retries a smaller
+    one, and the first step is chosen as solve_ivp chooses it (from a NaN difference, where an
+    infinite one would give a step of zero). Each such evaluation is counted in the row's
+    header, for the message of a run that stops there.
     """
     row = data[member]
     n, m = int(row[H_VEHICLES]), int(row[H_SEGMENTS])
@@ -163,5 +165,6 @@ def rhs_dopri(t, y, member, data, out):
     route = row[start + SCALARS : start + SCALARS + 3 * m].reshape((3, m))
     _rhs_into(t, y, table, scalars, route, out)
     if not all_finite(out):
+        out[:] = np.nan
         row[H_NON_FINITE] += 1.0
         row[H_LAST_NON_FINITE] = t
