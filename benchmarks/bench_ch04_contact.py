@@ -69,10 +69,11 @@ def fastsim_cases(repeats: int) -> list[Case]:
                 l1[j], l2[j], l3[j],
             )  # fmt: skip
 
-    compiled(0)  # compile, or load numba's cache, outside the timings
     threads = numba.get_num_threads()
+    compiled(0)  # compile, or load numba's cache, outside the timings: the parallel march...
     try:
         numba.set_num_threads(1)
+        compiled(0)  # ... and the one on the calling thread
         one = timed(compiled, repeats)
     finally:
         numba.set_num_threads(threads)
