@@ -13,6 +13,9 @@ against the motion are multiplied by ``tanh(v/v_c)`` with a creep speed
 (``_kernel``) and of a batch of states (one per column) with numpy, which is
 also the readable reference the compiled loop is tested against. Every public
 entry checks the shape and finiteness of the state before any compiled code runs.
+:func:`simulate` integrates with RK45 in compiled code (``raildyn.integrators._dopri``,
+the steps of ``solve_ivp``'s RK45 without its Python per step), the other methods
+through ``solve_ivp``.
 
 Failure policy: :func:`simulate` raises :class:`raildyn.errors.SolverError`
 (with the time reached and the reason) when the integration stops early or a
@@ -383,9 +386,9 @@ class TrainModel:
         Notes
         -----
         The checks cost more than the compiled loop itself (about 10 µs against
-        4–6 µs for 152 vehicles). :func:`simulate` calls the loop without them, as
-        its states come from the integrator with the shape of a checked initial
-        state, and checks each derivative for finiteness instead (0.4 µs).
+        4–6 µs for 152 vehicles). :func:`simulate` calls the loop without them, from
+        its compiled integrator, as its states have the shape of a checked initial
+        state, and checks each derivative for finiteness instead.
 
         Examples
         --------
