@@ -616,17 +616,16 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     V = np.linspace(low, high, scan)
     state = _StateMatrices(system)
     # The scan stops at its first upward crossing: the speeds beyond it cannot change the bracket.
-    # It goes in batches of 4, 8, 16... speeds, so a crossing low in the range costs a few
-    # eigenvalue problems, and a model stable over the range a few batched calls.
+    # It goes in batches of 4 speeds, then of half the speeds done so far: a crossing low in the
+    # range costs a few eigenvalue problems, a model stable over the range a few batched calls.
     g = np.empty(0)
     up = np.empty(0, dtype=int)
-    batch = 4
     while g.size < scan:
-        g = np.concatenate([g, np.linalg.eigvals(state(V[g.size : g.size + batch])).real.max(axis=1)])
+        batch = V[g.size : g.size + max(4, g.size // 2)]
+        g = np.concatenate([g, np.linalg.eigvals(state(batch)).real.max(axis=1)])
         up = np.flatnonzero((g[:-1] < 0.0) & (g[1:] >= 0.0))
         if g[0] >= 0.0 or up.size:
             break
-        batch *= 2
 
     n = system.size
 
@@ -654,7 +653,11 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
             system.labels,
         )
     i = int(up[0])
-    speed = scipy.optimize.brentq(lambda v: at(v).real, V[i], V[i + 1], xtol=tol)
+    # Brent's method starts from g at the two ends of the bracket, which the scan has found already.
+    known = {float(V[i]): float(g[i]), float(V[i + 1]): float(g[i + 1])}
+    speed = scipy.optimize.brentq(
+        lambda v: known[v] if v in known else at(v).real, float(V[i]), float(V[i + 1]), xtol=tol
+    )
     return result(speed, "crossing")
 
 
