@@ -203,29 +203,21 @@ def wheel_rail(row, w, y, psi, ydot, psidot, speed):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _curvature(row, s):
-    """κ(s) of the packed curve, 1/m (as :meth:`raildyn.curving.geometry.Curve.curvature`)."""
-    s0, s1, s2, s3, R, L = row[_CURVE], row[_CURVE + 1], row[_CURVE + 2], row[_CURVE + 3], row[9], row[10]
+def _ramp(row, s):
+    """The share of the arc's curvature and cant at s along the packed curve, in [0, 1].
+
+    0 on the straights, rising linearly along the entry transition, 1 on the arc and falling along
+    the exit: κ = share/R (:meth:`raildyn.curving.geometry.Curve.curvature`) and h_t = share·h_t of
+    the arc (:meth:`raildyn.curving.geometry.Curve.cant_at`).
+    """
+    s0, s1, s2, s3, L = row[_CURVE], row[_CURVE + 1], row[_CURVE + 2], row[_CURVE + 3], row[_CURVE + 5]
     if s <= s0 or s > s3:
         return 0.0
     if s <= s1:
-        return (s - s0) / (R * L)
+        return (s - s0) / L
     if s <= s2:
-        return 1.0 / R
-    return (s3 - s) / (R * L)
-
-
-@numba.njit(cache=True, error_model="numpy")
-def _cant(row, s):
-    """h_t(s) of the packed curve, m (as :meth:`raildyn.curving.geometry.Curve.cant_at`)."""
-    s0, s1, s2, s3, L, D = row[_CURVE], row[_CURVE + 1], row[_CURVE + 2], row[_CURVE + 3], row[10], row[11]
-    if s <= s0 or s > s3:
-        return 0.0
-    if s <= s1:
-        return D * (s - s0) / L
-    if s <= s2:
-        return D
-    return D * (s3 - s) / L
+        return 1.0
+    return (s3 - s) / L
 
 
 @numba.njit(_dopri.RHS_SIGNATURE, cache=True, error_model="numpy")
@@ -245,8 +237,9 @@ def lateral_rhs(t, state, member, data, out):
     s_c = 0.0
     if curved:
         s_c = row[_START] + V * t
-        kappa = _curvature(row, s_c)
-        a_q = V * V * kappa - GRAVITY * _cant(row, s_c) / row[_CURVE + 7]
+        share = _ramp(row, s_c)
+        kappa = share / row[_CURVE + 4]
+        a_q = V * V * kappa - GRAVITY * share * row[_CURVE + 6] / row[_CURVE + 7]
         lat = int(row[_LATERAL])
         for i in range(n):
             out[n + i] -= row[lat + i] * a_q
@@ -257,7 +250,7 @@ def lateral_rhs(t, state, member, data, out):
         y, psi, psidot = state[iy], state[ipsi], state[n + ipsi]
         if curved:
             x = row[k + 2]
-            y -= 0.5 * x * x * _curvature(row, s_c + x / 3.0)
+            y -= 0.5 * x * x * _ramp(row, s_c + x / 3.0) / row[_CURVE + 4]
             psi -= x * kappa
             psidot += V * kappa
         fy, mz = wheel_rail(row, w, y, psi, state[n + iy], psidot, V)
