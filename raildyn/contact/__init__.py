@@ -3,7 +3,7 @@
 * :mod:`~raildyn.contact.hertz` — Hertz's normal contact: ellipse, m and n, pressure, approach, stiffness.
 * :mod:`~raildyn.contact.creep` — creepages of a wheelset, Kalker's coefficients and linear theory,
   Carter, Johnson–Vermeulen, Shen–Hedrick–Elkins and Polach.
-* :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), vectorized over states.
+* :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states.
 * :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles; contact points, Δr(y),
   contact angles and equivalent conicity.
 * :mod:`~raildyn.contact.comparison` — every creep law on one sweep of lateral creepage, side by side.
