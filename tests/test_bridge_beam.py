@@ -109,3 +109,55 @@ def test_an_undamped_resonance_has_its_finite_limit():
         0.5 * (below.amplification[0] + above.amplification[0]), rel=1e-6
     )
     np.testing.assert_allclose(at.deflection, below.deflection, atol=1e-6 * np.abs(at.deflection).max())
+
+
+def _force_by_force(beam, speed, axles, time, x):
+    """The closed form of raildyn.bridge._kernel.superpose evaluated axle by axle, mode by mode, in numpy.
+
+    Mode j under a unit modal load sin Ωs while on the span (0 ≤ s = t − τ ≤ T):
+    q = a sin Ωs + b cos Ωs + Re{(c − id) e^{λs}}, then Re{C_e e^{λ(s − T)}} from its state at exit.
+    """
+    L, v, zeta = beam.span, speed, beam.damping_ratio
+    T = L / v
+    total = np.zeros_like(time)
+    second = np.zeros_like(time)
+    for j, w in enumerate(2 * np.pi * beam.frequencies_hz, start=1):
+        wd, Om = w * np.sqrt(1 - zeta**2), j * np.pi * v / L
+        den = (w * w - Om * Om) ** 2 + (2 * zeta * w * Om) ** 2
+        a, b = (w * w - Om * Om) / den, -2 * zeta * w * Om / den
+        c, lam = -b, complex(-zeta * w, wd)
+        d = (zeta * w * c - a * Om) / wd
+        cf = complex(c, -d)
+        q_end = a * np.sin(Om * T) + b * np.cos(Om * T) + (cf * np.exp(lam * T)).real
+        qd_end = a * Om * np.cos(Om * T) - b * Om * np.sin(Om * T) + (lam * cf * np.exp(lam * T)).real
+        ce = complex(q_end, -(qd_end + zeta * w * q_end) / wd)
+        shape = 2 / (beam.mass_per_length * L) * np.sin(j * np.pi * x / L)
+        for tau, P in zip(axles.positions / v, axles.loads, strict=True):
+            s = time - tau
+            on, off = (s >= 0) & (s < T), s >= T
+            harmonic = a * np.sin(Om * s) + b * np.cos(Om * s)
+            q = np.where(on, harmonic + (cf * np.exp(lam * s)).real, 0.0)
+            q += np.where(off, (ce * np.exp(lam * (s - T))).real, 0.0)
+            qdd = np.where(on, -Om * Om * harmonic + (lam**2 * cf * np.exp(lam * s)).real, 0.0)
+            qdd += np.where(off, (lam**2 * ce * np.exp(lam * (s - T))).real, 0.0)
+            total += P * shape * q
+            second += P * shape * qdd
+    return total, second
+
+
+@pytest.mark.parametrize(
+    ("speed", "samples", "damping", "coaches"),
+    # the last: 10 samples over 11 crossing times, so axles come on and go off within one step
+    [(30.0, 3001, 0.01, 6), (80.0, 400, 0.0, 6), (15.0, 10, 0.05, 10)],
+)
+def test_a_train_is_the_sum_of_its_axles_closed_forms(speed, samples, damping, coaches):
+    # superpose carries the axles on the span and those gone as running phasors; summed axle by axle
+    # here, the same numbers to round-off (1e-11 of the largest).
+    from raildyn.bridge.trains import regular_train
+
+    beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=3, damping_ratio=damping)
+    axles = regular_train(coaches, 18.0, 2.5, 1.7e5)
+    r = moving_force(beam, speed, axles, samples=samples)
+    deflection, acceleration = _force_by_force(beam, speed, axles, r.time[0], 10.0)
+    for mine, theirs in ((r.deflection[0], deflection), (r.acceleration[0], acceleration)):
+        np.testing.assert_allclose(mine, theirs, rtol=0, atol=1e-11 * np.abs(theirs).max())

@@ -167,8 +167,9 @@ def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape
     Mode j of unit modal load sin(Ω_j t) while a force is on the span (0 ≤ t − τ ≤ T = L/v) is
     q = a sin Ω(t−τ) + b cos Ω(t−τ) + Re{C_f e^{λ(t−τ)}}, λ = −ξω + iω_d, from rest; after it
     leaves, Re{C_e e^{λ(t−τ−T)}} from its state at exit. The forces that have left are carried
-    as one complex sum, advanced by e^{λΔt} from sample to sample, so a long train costs
-    O(samples + axles) per mode and speed, not their product. ``shape`` holds 2φ_j(x)/(mL).
+    as one complex sum, advanced by e^{λΔt} from sample to sample, and those on the span as two
+    (of e^{iΩ(t−τ)} and e^{λ(t−τ)}), so a long train costs O(samples + axles) per mode and speed,
+    not their product. ``shape`` holds 2φ_j(x)/(mL).
     The acceleration is the same sums differentiated twice: −Ω² on the harmonic part, λ² on the
     exponentials.
     """
@@ -209,30 +210,49 @@ def superpose(omega, zeta, span, speeds, duration, samples, delays, loads, shape
                 qd_end = T * np.sin(w * T) / 2.0
             ce = complex(q_end, -(qd_end + zeta * w * q_end) / wd)
             step = np.exp(lam * dt)
+            turn = np.exp(1j * Om * dt)
             gone = 0j  # Σ over the forces that have left of P C_e e^{λ(t − τ − T)}
+            # Σ over the forces on the span of P e^{iΩ(t − τ)} and of P e^{λ(t − τ)}, advanced like
+            # ``gone``: a force's term is added as it enters and taken off as it leaves, so the
+            # harmonic and transient parts cost O(1) a sample, not O(forces on the span).
+            harmonics = 0j
+            transients = 0j
             first_on = 0  # forces [first_on, entered) are on the span
             entered = 0
             for i in range(samples):
                 t = i * dt
                 if i:
                     gone *= step
+                    harmonics *= turn
+                    transients *= step
                 while first_on < a_count and delays[first_on] / v + T <= t:
-                    gone += loads[first_on] * ce * np.exp(lam * (t - delays[first_on] / v - T))
+                    s = t - delays[first_on] / v
+                    if first_on < entered:  # counted on the span: its terms come off
+                        harmonics -= loads[first_on] * np.exp(1j * Om * s)
+                        transients -= loads[first_on] * np.exp(lam * s)
+                    gone += loads[first_on] * ce * np.exp(lam * (s - T))
                     first_on += 1
                 while entered < a_count and delays[entered] / v <= t:
+                    if entered >= first_on:  # not already gone within this one step
+                        s = t - delays[entered] / v
+                        harmonics += loads[entered] * np.exp(1j * Om * s)
+                        transients += loads[entered] * np.exp(lam * s)
                     entered += 1
                 total = gone.real
                 second = (lam * lam * gone).real
-                for k in range(first_on, entered):
-                    s = t - delays[k] / v
-                    if resonant:
+                if resonant:
+                    for k in range(first_on, entered):
+                        s = t - delays[k] / v
                         q = (np.sin(w * s) - w * s * np.cos(w * s)) / (2.0 * w * w)
                         total += loads[k] * q
                         second += loads[k] * (np.sin(w * s) - w * w * q)  # q̈ = sin ωs − ω²q
-                        continue
-                    harmonic = a * np.sin(Om * s) + b * np.cos(Om * s)
-                    transient = cf * np.exp(lam * s)
-                    total += loads[k] * (harmonic + transient.real)
-                    second += loads[k] * (-Om * Om * harmonic + (lam * lam * transient).real)
+                else:
+                    if first_on >= entered:  # nothing on the span: the sums hold round-off only
+                        harmonics = 0j
+                        transients = 0j
+                    harmonic = a * harmonics.imag + b * harmonics.real  # Σ P (a sin Ωs + b cos Ωs)
+                    transient = cf * transients
+                    total += harmonic + transient.real
+                    second += -Om * Om * harmonic + (lam * lam * transient).real
                 out[si, i] += shape[j] * total
                 accel[si, i] += shape[j] * second
