@@ -1,11 +1,13 @@
-"""Chapter 7 widgets: the car's roots against speed, its critical speed against conicity, and three vehicles.
+"""Chapter 7 widgets: the car's roots against speed, its critical speed against conicity, three vehicles,
+and the car's bifurcation diagram.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
 models are :mod:`raildyn.vehicles` and :mod:`raildyn.stability`; this
 module only turns control values into model calls. The charts are drawn, and
 moved in place, by the methods of the results that the chapter's figures call
-too: :meth:`raildyn.stability.linear.ModeSweep.plot` and
-:meth:`raildyn.stability.linear.CriticalSpeedMap.plot_curves`.
+too: :meth:`raildyn.stability.linear.ModeSweep.plot`,
+:meth:`raildyn.stability.linear.CriticalSpeedMap.plot_curves` and
+:meth:`raildyn.stability.nonlinear.BifurcationDiagram.plot`.
 """
 
 from __future__ import annotations
@@ -20,10 +22,11 @@ from raildyn.linear_model import LinearSystem
 from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Car
 from raildyn.widgets._core import Recipe, slider
 
-__all__ = ["car_roots", "critical_curve", "vehicle_comparison"]
+__all__ = ["bifurcation", "car_roots", "critical_curve", "vehicle_comparison"]
 
 _SPEEDS = np.linspace(5.0, 150.0, 60)  # m/s; enough points for smooth curves, few enough for 100 ms
 _CAR = Car()
+_K_PSI = _CAR.wheelset.yaw_stiffness / 1e6  # MN·m/rad, the car's primary yaw stiffness per wheelset
 
 
 @lru_cache(maxsize=64)
@@ -354,6 +357,106 @@ def vehicle_comparison():
         returns the PNG frame.
     """
     return VEHICLE_COMPARISON.build()
+
+
+# ---------------------------------------------------------------------------
+# The bifurcation diagram, live
+
+_BIFURCATION_SPEEDS = np.linspace(20.0, 140.0, 13)  # m/s (72 to 504 km/h): every fold on the grid below
+_BIFURCATION_RUN = {"duration": 4.0, "refine": 3, "progress": False}  # 4 s: eight cycles of 2 Hz hunting
+_BIFURCATION_GRID = {
+    "conicity": [0.05, 0.1, 0.15, 0.2, 0.3],
+    "yaw_stiffness": [0.5 * _K_PSI, _K_PSI, 2.0 * _K_PSI],  # MN·m/rad: half, the car's, twice
+}
+
+
+def _bifurcation_car(conicity: float, yaw_stiffness: float) -> Car:
+    return _CAR.replace(conicity=conicity, yaw_stiffness=1e6 * yaw_stiffness)
+
+
+@lru_cache(maxsize=1)
+def _bifurcation_family() -> dict:
+    """The diagrams of the kernel-free grid, run as one batch of the compiled engine (a few seconds)."""
+    keys = [(lam, k) for lam in _BIFURCATION_GRID["conicity"] for k in _BIFURCATION_GRID["yaw_stiffness"]]
+    models = [_bifurcation_car(*key).nonlinear() for key in keys]
+    diagrams = stability.bifurcation_diagrams(models, _BIFURCATION_SPEEDS, **_BIFURCATION_RUN)
+    return dict(zip(keys, diagrams, strict=True))
+
+
+@lru_cache(maxsize=64)
+def _bifurcation(conicity: float, yaw_stiffness: float):
+    """The car's diagram and linear critical speed; from the grid's batch where the values are on it."""
+    car = _bifurcation_car(conicity, yaw_stiffness)
+    diagram = _bifurcation_family().get((conicity, yaw_stiffness))
+    if diagram is None:  # off the grid: one diagram, a third of a second
+        diagram = stability.bifurcation_diagram(car.nonlinear(), _BIFURCATION_SPEEDS, **_BIFURCATION_RUN)
+    return diagram, stability.critical_speed(car, (5.0, 250.0), tol=0.05)
+
+
+def _bifurcation_controls():
+    return {
+        "conicity": slider("conicity λ", _CAR.wheelset.conicity, 0.05, 0.3, 0.01),
+        "yaw_stiffness": slider("primary k_ψ (MN·m/rad)", _K_PSI, 0.5 * _K_PSI, 2.0 * _K_PSI, 1.0, fmt=".0f"),
+    }
+
+
+def _bifurcation_setup(live, status):
+    diagram, linear = _bifurcation(_CAR.wheelset.conicity, _K_PSI)
+    ax = live.axes[0, 0]
+    chart = diagram.plot(ax, linear_critical_speed=linear.speed)
+    ax.set_ylim(0.0, 25.0)  # mm: the largest cycle of the grid is 21 mm
+    live.animate(
+        *(
+            chart[key]
+            for key in ("cycles", "decaying", "linear", "linear_text", "nonlinear", "nonlinear_text")
+        )
+    )
+
+    def redraw(v):
+        diagram, linear = _bifurcation(float(v["conicity"]), float(v["yaw_stiffness"]))
+        diagram.plot(linear_critical_speed=linear.speed if linear.found else None, artists=chart)
+        vnl = diagram.nonlinear_critical_speed
+        if not np.isfinite(vnl):
+            text = f"no limit cycle up to {3.6 * _BIFURCATION_SPEEDS[-1]:.0f} km/h"
+        else:
+            text = f"limit cycles from {3.6 * vnl:.0f} km/h"
+            if linear.found and vnl < linear.speed:
+                text += (
+                    f", below the linear critical speed {3.6 * linear.speed:.0f} km/h: between the two a "
+                    "large disturbance starts hunting that persists (subcritical)"
+                )
+        status.value = text
+
+    return redraw
+
+
+BIFURCATION = Recipe(
+    _bifurcation_controls,
+    _bifurcation_setup,
+    {"figsize": (8.0, 3.6)},
+    static=_BIFURCATION_GRID,
+    title="Bifurcation diagram of the Manchester car: limit-cycle amplitude against speed",
+)
+
+
+def bifurcation():
+    """The Manchester car's bifurcation diagram, redrawn as the conicity or the primary yaw stiffness moves.
+
+    The amplitude of the leading wheelset's limit cycle along a ramp-down of speed from 504 to 72
+    km/h (:func:`raildyn.stability.nonlinear.bifurcation_diagram` on the compiled engine: 13
+    speeds of 4 s and three bisections, a third of a second), with the nonlinear and the linear
+    critical speeds marked. Controls: conicity λ and the primary yaw stiffness of each wheelset
+    k_ψ (MN·m/rad). The kernel-free copy shows the 15 diagrams of a grid of both, run as one batch.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``conicity``, ``yaw_stiffness``), redraws and
+        returns the PNG frame.
+    """
+    return BIFURCATION.build()
 
 
 BENCH_MOVES = [
