@@ -623,6 +623,25 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     low, high = _range(speed_range)
     positive("tol", tol)
     integer("scan", scan, low=8, high=_MAX_SCAN)
+    status, speed, state = _crossing(system, low, high, tol, scan)
+    n = system.size
+    if status == "stable over the range":
+        return CriticalSpeed(
+            np.inf, np.nan, complex(np.nan, np.nan), status, np.full(n, np.nan + 0j), system.labels
+        )
+    lam, vec = np.linalg.eig(state(np.array([speed]))[0])
+    j = int(np.argmax(lam.real))
+    shape = vec[:n, j] / vec[:n, j][np.argmax(np.abs(vec[:n, j]))]
+    frequency = float(abs(lam[j].imag) / (2 * np.pi))
+    return CriticalSpeed(float(speed), frequency, complex(lam[j]), status, shape, system.labels)
+
+
+def _crossing(system: LinearSystem, low: float, high: float, tol: float, scan: int):
+    """The status and speed of :func:`critical_speed` (checked arguments), and the system's A(V).
+
+    :func:`critical_speed_map` needs the speed only, not the mode at it (one more eigenvalue
+    problem, with vectors).
+    """
     V = np.linspace(low, high, scan)
     state = _StateMatrices(system)
     # The scan stops at its first upward crossing: the speeds beyond it cannot change the bracket.
@@ -636,39 +655,21 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
         up = np.flatnonzero((g[:-1] < 0.0) & (g[1:] >= 0.0))
         if g[0] >= 0.0 or up.size:
             break
-
-    n = system.size
-
-    def at(speed):
-        lam = np.linalg.eigvals(state(np.array([speed]))[0])
-        j = int(np.argmax(lam.real))
-        return lam[j]
-
-    def result(speed, status):
-        lam, vec = np.linalg.eig(state(np.array([speed]))[0])
-        j = int(np.argmax(lam.real))
-        shape = vec[:n, j] / vec[:n, j][np.argmax(np.abs(vec[:n, j]))]
-        frequency = float(abs(lam[j].imag) / (2 * np.pi))
-        return CriticalSpeed(float(speed), frequency, complex(lam[j]), status, shape, system.labels)
-
     if g[0] >= 0.0:
-        return result(low, "unstable at the lowest speed")
+        return "unstable at the lowest speed", low, state
     if up.size == 0:
-        return CriticalSpeed(
-            np.inf,
-            np.nan,
-            complex(np.nan, np.nan),
-            "stable over the range",
-            np.full(n, np.nan + 0j),
-            system.labels,
-        )
+        return "stable over the range", np.inf, state
+
+    def largest(speed):
+        return np.linalg.eigvals(state(np.array([speed]))[0]).real.max()
+
     i = int(up[0])
     # Brent's method starts from g at the two ends of the bracket, which the scan has found already.
     known = {float(V[i]): float(g[i]), float(V[i + 1]): float(g[i + 1])}
     speed = scipy.optimize.brentq(
-        lambda v: known[v] if v in known else at(v).real, float(V[i]), float(V[i + 1]), xtol=tol
+        lambda v: known[v] if v in known else largest(v), float(V[i]), float(V[i + 1]), xtol=tol
     )
-    return result(speed, "crossing")
+    return "crossing", speed, state
 
 
 @dataclass(frozen=True)
@@ -868,7 +869,7 @@ def critical_speed_map(
     _checks.function("factory", factory)
     xs = array("x", np.atleast_1d(x), ndim=1, allow_empty=False)
     ys = array("y", np.atleast_1d(y), ndim=1, allow_empty=False)
-    _range(speed_range)
+    low, high = _range(speed_range)
     for name, value in (("x_name", x_name), ("y_name", y_name)):
         _checks.instance(name, value, str, "string")
     positive("tol", tol)
@@ -887,5 +888,5 @@ def critical_speed_map(
             raise kind(f"factory failed at {where}: {err}") from err
         if not isinstance(model, LinearSystem) and not callable(getattr(model, "linear_system", None)):
             raise TypeError(f"factory must return a linear model, returned {model!r:.80} at {where}")
-        out[j, i] = critical_speed(model, speed_range, tol=tol, scan=scan).speed
+        out[j, i] = _crossing(as_linear_system(model), low, high, tol, scan)[1]
     return CriticalSpeedMap(xs, ys, out, x_name, y_name)
