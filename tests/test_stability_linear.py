@@ -53,3 +53,35 @@ def test_critical_speed_equals_a_full_scan_and_brent(model, speed_range, scan):
 def test_the_statuses_of_the_cases_above_are_all_met():
     statuses = {stability.critical_speed(m, r, scan=16).status for m, r in MODELS}
     assert statuses == {"crossing", "unstable at the lowest speed", "stable over the range"}
+
+
+def _track_step_by_step(lam, vec):
+    """track_modes' rule in its plain form: at each speed the MAC with the previous speed's tracked
+    vectors, the distance as a tie-breaker, and the Hungarian algorithm."""
+    lam, vec = lam.copy(), vec.copy()
+    for i in range(1, lam.shape[0]):
+        similarity = stability.mac(vec[i - 1], vec[i])
+        scale = np.maximum(np.abs(lam[i - 1])[:, None], 1.0)
+        distance = np.abs(lam[i - 1][:, None] - lam[i][None, :]) / scale
+        _, order = scipy.optimize.linear_sum_assignment((1.0 - similarity) + 0.5 * distance)
+        lam[i], vec[i] = lam[i, order], vec[i][:, order]
+    return lam, vec
+
+
+@pytest.mark.parametrize(
+    ("model", "speeds"),
+    [
+        (Car(), np.linspace(5.0, 150.0, 60)),
+        (Car().replace(conicity=0.4, yaw_stiffness=5.0e6), np.linspace(5.0, 150.0, 60)),
+        (Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), np.linspace(1.0, 120.0, 240)),
+        (Wheelset(yaw_stiffness=0.0, lateral_stiffness=0.0), np.linspace(1.0, 100.0, 100)),
+    ],
+)
+def test_track_modes_pairs_as_the_hungarian_algorithm_at_every_step(model, speeds):
+    # track_modes builds all costs at once and skips the Hungarian algorithm where each mode's cheapest
+    # partner is distinct and strict; the pairing must be the step-by-step one exactly.
+    lam, vec = np.linalg.eig(model.linear_system().state_matrices(speeds))
+    tracked = stability.track_modes(lam, vec)
+    expected_lam, expected_vec = _track_step_by_step(lam, vec)
+    np.testing.assert_array_equal(tracked.eigenvalues, expected_lam)
+    np.testing.assert_array_equal(tracked.vectors, expected_vec)

@@ -189,9 +189,23 @@ def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> TrackedModes:
     scale = np.maximum(np.abs(lam[:-1])[:, :, None], 1.0)
     distance = np.abs(lam[:-1, :, None] - lam[1:, None, :]) / scale
     cost = (1.0 - similarity) + 0.5 * distance
-    previous = np.arange(lam.shape[1])  # the previous speed's columns, in their tracked order
+    # Where each mode's cheapest partner is a different mode of the next speed, and strictly the
+    # cheapest, pairing each with it is the one optimal assignment (no other reaches the sum of the
+    # row minima), which the Hungarian algorithm would return too: it runs only where that fails.
+    m = lam.shape[1]
+    best = cost.argmin(axis=2)
+    if m > 1:
+        lowest = np.partition(cost, 1, axis=2)
+        strict = (lowest[:, :, 1] > lowest[:, :, 0]).all(axis=1)
+    else:
+        strict = np.ones(cost.shape[0], dtype=bool)
+    clear = strict & (np.sort(best, axis=1) == np.arange(m)).all(axis=1)
+    previous = np.arange(m)  # the previous speed's columns, in their tracked order
     for i in range(1, lam.shape[0]):
-        _, order = scipy.optimize.linear_sum_assignment(cost[i - 1][previous])
+        if clear[i - 1]:
+            order = best[i - 1][previous]
+        else:
+            _, order = scipy.optimize.linear_sum_assignment(cost[i - 1][previous])
         lam[i] = lam[i, order]
         vec[i] = vec[i][:, order]
         previous = order
