@@ -1,9 +1,10 @@
-"""raildyn.stability.critical_speed against the plain procedure it shortens: a full scan, then Brent.
+"""raildyn.stability's critical speed and mode tracking against the plain procedures they shorten.
 
 critical_speed solves M once for all its state matrices and stops its scan at the first upward
 crossing; neither may change the answer. The reference here scans every speed with the public
 :func:`raildyn.stability.largest_real_part` (A(V) from ``LinearSystem.state_matrices``) and refines
-the first bracket with the same Brent tolerance.
+the first bracket with the same Brent tolerance. track_modes builds its pairing costs at once and
+skips the Hungarian algorithm where the pairing is plain; the reference runs it at every step.
 """
 
 import numpy as np
