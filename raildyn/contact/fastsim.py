@@ -13,7 +13,7 @@ the total forces at small creepage equal Kalker's linear theory for γ_x, γ_y a
 
 :func:`fastsim` checks its input and prepares each state with numpy (flexibilities,
 pressure, scaling of huge creepages), then marches the cells of every state in a
-numba-compiled loop (:mod:`raildyn.contact._fastsim_kernel`): on 20 × 20 cells, the
+numba-compiled loop (``raildyn.contact._fastsim_kernel``): on 20 × 20 cells, the
 march takes about 0.8 µs per contact and a whole call on a large batch about 1.6 µs.
 Each step uses the exact increment of the adhesion solution over the cell, and the
 cells are evaluated at their midpoints, so that in full adhesion the forces are exact

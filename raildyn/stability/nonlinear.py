@@ -145,7 +145,7 @@ def simulate(
         accuracy asked for, needs about a tenth of the evaluations (give it a ``max_step`` of a
         fraction of the period, not the explicit methods' 2 ms).
     engine : str
-        Who runs RK45: ``"compiled"``, the numba engine (:mod:`raildyn.stability._engine`, the
+        Who runs RK45: ``"compiled"``, the numba engine (``raildyn.stability._engine``, the
         same steps as scipy's RK45 at some hundred times the speed); ``"scipy"``,
         ``scipy.integrate.solve_ivp`` on the model's ``rhs`` (the reference the engine is tested
         against); ``"auto"`` (default), the engine wherever it holds the model (not nonlinear
@@ -657,7 +657,9 @@ class BifurcationDiagram:
                     ("linear", 1, "--", "linear"),
                     ("nonlinear", 2, ":", "nonlinear"),
                 ):
-                    artists[key] = ax.axvline(0.0, color=plots.COLORS[colour], ls=style, label=f"{name} $V_c$")
+                    artists[key] = ax.axvline(
+                        0.0, color=plots.COLORS[colour], ls=style, label=f"{name} $V_c$"
+                    )
                     artists[f"{key}_text"] = ax.text(
                         0.0, 1.0, "", transform=ax.get_xaxis_transform(), color=plots.COLORS[colour],
                         ha="center", va="bottom", fontsize="small",
