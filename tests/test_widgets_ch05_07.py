@@ -133,9 +133,12 @@ def test_critical_curve_follows_the_critical_speed_map():
         progress=False,
     )
     car_line = container.live.figure.axes[0].lines[0]
-    np.testing.assert_allclose(car_line.get_ydata(), 3.6 * expected.speeds[0], rtol=1e-12)
+    # The widget's systems are the map's to round-off (1e-12), which can turn a step of the bracketed
+    # search the other way: each answer lies within tol = 0.1 m/s of the same zero, so within 2 tol.
+    np.testing.assert_allclose(car_line.get_ydata(), 3.6 * expected.speeds[0], rtol=0.0, atol=3.6 * 0.2)
     i = int(np.argmin(np.abs(conicities - 0.15)))
-    assert f"car {3.6 * expected.speeds[0, i]:.0f} km/h" in status_line(container)
+    assert f"car {car_line.get_ydata()[i]:.0f} km/h" in status_line(container)
+    assert abs(car_line.get_ydata()[i] - 3.6 * expected.speeds[0, i]) <= 3.6 * 0.2
 
 
 @pytest.mark.parametrize(

@@ -41,8 +41,8 @@ import numpy as np
 from raildyn import _checks
 from raildyn.curving.steady import steady_curving
 from raildyn.linear_model import as_linear_system
+from raildyn.stability.linear import _MAX_SCAN, _STATUSES, _crossings, _StateMatrices
 from raildyn.vehicles import Bogie
-from raildyn.vibration.mdof import first_order_matrix
 
 __all__ = [
     "BendingShear",
@@ -317,11 +317,6 @@ class StabilityCurving:
         return {"critical": critical, "attack": attack, "axes": (ax, right)}
 
 
-_STATUSES = ("crossing", "stable over the range", "unstable at the lowest speed")
-_MAX_SCAN = 10_000  # as raildyn.stability.critical_speed
-_MAX_ITERATIONS = 100  # bracketed steps; each at least halves the Illinois weight, so far more than needed
-
-
 def _range(speed_range) -> tuple[float, float]:
     r = _checks.array("speed_range", speed_range)
     if r.shape != (2,):
@@ -358,74 +353,6 @@ def _stiffness_matrices(model, ks: np.ndarray):
     if not all(same(s) for s in systems):
         raise ValueError("model: replace(yaw_stiffness=...) must change only the stiffness matrix")
     return s1, np.stack([s.K for s in systems])
-
-
-def _largest_real_parts(system, Ks: np.ndarray, speeds: np.ndarray) -> np.ndarray:
-    """max Re λ of the state matrix for each pair (Ks[i], speeds[i]), 1/s."""
-    C = system.C0[None] + system.C1[None] / speeds[:, None, None]
-    return np.linalg.eigvals(first_order_matrix(system.M, C, Ks)).real.max(axis=-1)
-
-
-def _critical_speeds(system, Ks, low: float, high: float, tol: float, scan: int):
-    """The first upward zero of max Re λ(V) in [low, high] for every K at once.
-
-    The definition of :func:`raildyn.stability.linear.critical_speed` (a coarse scan, then a
-    bracketed refinement), with all stiffnesses in one batched eigenvalue call per
-    step. The scan rises in speed and leaves a stiffness at its first crossing; the
-    refinement is the Illinois variant of regula falsi, each step kept at least tol/2
-    inside its bracket, until every bracket is narrower than 2 tol; the midpoint is
-    returned.
-    """
-    m = Ks.shape[0]
-    V = np.linspace(low, high, scan)
-    speed = np.full(m, np.inf)
-    status = np.full(m, _STATUSES[1], dtype=object)
-    g0 = _largest_real_parts(system, Ks, np.full(m, low))
-    unstable = g0 >= 0.0
-    speed[unstable], status[unstable] = low, _STATUSES[2]
-    # The scan goes up in speed and drops each stiffness at its first crossing: the first upward zero
-    # is all that is sought, so the speeds above it need no eigenvalues.
-    open_ = np.flatnonzero(~unstable)
-    g_open = g0[open_]
-    todo, a, b, ga, gb = [], [], [], [], []
-    for j in range(1, scan):
-        if open_.size == 0:
-            break
-        g = _largest_real_parts(system, Ks[open_], np.full(open_.size, V[j]))
-        up = g >= 0.0  # g was < 0 at every lower speed of the scan
-        todo.append(open_[up])
-        a.append(np.full(up.sum(), V[j - 1]))
-        b.append(np.full(up.sum(), V[j]))
-        ga.append(g_open[up])
-        gb.append(g[up])
-        open_, g_open = open_[~up], g[~up]
-    todo, a, b, ga, gb = (np.concatenate(x) if x else np.empty(0) for x in (todo, a, b, ga, gb))
-    todo = todo.astype(int)
-    if todo.size == 0:
-        return speed, tuple(status)
-    side = np.zeros(todo.size, dtype=int)  # which end the last step kept: −1 a, +1 b
-    for _ in range(_MAX_ITERATIONS):
-        active = (b - a) > 2 * tol
-        if not active.any():
-            break
-        i = np.flatnonzero(active)
-        c = (a[i] * gb[i] - b[i] * ga[i]) / (gb[i] - ga[i])
-        c = np.clip(c, a[i] + 0.5 * tol, b[i] - 0.5 * tol)
-        gc = _largest_real_parts(system, Ks[todo[i]], c)
-        right = gc >= 0.0  # the zero lies in [a, c]: c becomes b
-        for mask, keep in ((right, -1), (~right, 1)):
-            k = i[mask]
-            if keep == -1:
-                b[k], gb[k] = c[mask], gc[mask]
-                ga[k] = np.where(side[k] == -1, 0.5 * ga[k], ga[k])  # Illinois: a kept twice
-            else:
-                a[k], ga[k] = c[mask], gc[mask]
-                gb[k] = np.where(side[k] == 1, 0.5 * gb[k], gb[k])
-            side[k] = keep
-    else:  # pragma: no cover - each step removes at least tol/2 of a bracket of finite width
-        raise RuntimeError("the critical-speed refinement did not converge")
-    speed[todo], status[todo] = 0.5 * (a + b), _STATUSES[0]
-    return speed, tuple(status)
 
 
 def stability_and_curving(
@@ -509,5 +436,8 @@ def stability_and_curving(
     ipsi = system.wheelsets[lead][1]
     # α = −(ψ − x/R): the same change of yaw in the vehicle's axes changes α by its opposite
     alpha = state.angle_of_attack[lead] - (q[:, ipsi] - state.displacement[ipsi])
-    speeds, status = _critical_speeds(system, Ks, low, high, tol, scan)
-    return StabilityCurving(ks, speeds, status, alpha, state.speed, state.radius, state.cant, (low, high))
+    # The critical speeds: chapter 7's search, all stiffnesses at once (M, C₀ and C₁ are shared).
+    status, speeds = _crossings(_StateMatrices(system.M, Ks, system.C0, system.C1), low, high, tol, scan)
+    return StabilityCurving(
+        ks, speeds, tuple(status), alpha, state.speed, state.radius, state.cant, (low, high)
+    )

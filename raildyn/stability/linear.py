@@ -573,40 +573,146 @@ def _range(speed_range) -> tuple[float, float]:
 
 
 class _StateMatrices:
-    """A(V) = [[0, I], [−M⁻¹K, −M⁻¹C₀ − M⁻¹C₁/V]] of one system at any speeds, M⁻¹ applied once.
+    """A(V) = [[0, I], [−M⁻¹K, −M⁻¹C₀ − M⁻¹C₁/V]] of one system or of a stack of systems of one size.
 
     :func:`critical_speed` asks for A at a dozen or more single speeds (the scan, then each step
-    of Brent's method); :meth:`LinearSystem.state_matrices` checks the speeds and M and solves
+    of the refinement); :meth:`LinearSystem.state_matrices` checks the speeds and M and solves
     with M at every call, which took about as long as the eigenvalues of a 30-state car. Here the
-    three blocks are solved once; A(V) differs from that method's by round-off only.
+    three blocks are solved once; A(V) differs from that method's by round-off only. Each of M, K,
+    C₀ and C₁ is (n, n) or a stack (m, n, n): a matrix shared by the whole stack is solved once.
     """
 
-    def __init__(self, system: LinearSystem):
-        n = system.size
-        # The system has checked M (symmetric positive definite) and the other matrices (finite).
-        blocks = -np.linalg.solve(system.M, np.concatenate([system.K, system.C0, system.C1], axis=1))
-        self.n = n
-        self.stiffness, self.damping, self.creep = blocks[:, :n], blocks[:, n : 2 * n], blocks[:, 2 * n :]
+    _CHUNK = 1024  # state matrices per eigenvalue call: a long scan of many systems stays within memory
 
-    def __call__(self, speeds: np.ndarray) -> np.ndarray:
-        """A at each of ``speeds`` (m/s, > 0, as the caller has checked): shape (m, 2n, 2n)."""
+    def __init__(self, M, K, C0, C1):
+        self.n = n = M.shape[-1]
+        self.count = max([1] + [x.shape[0] for x in (M, K, C0, C1) if x.ndim == 3])
+        if M.ndim == 2 and C0.ndim == 2 and C1.ndim == 2:  # only K varies (or nothing): M⁻¹C once
+            self.stiffness = -np.linalg.solve(M, K)
+            damping = -np.linalg.solve(M, np.concatenate([C0, C1], axis=1))
+            self.damping, self.creep = damping[:, :n], damping[:, n:]
+        else:
+            # The system has checked M (symmetric positive definite) and the other matrices (finite).
+            stack = np.concatenate(np.broadcast_arrays(K, C0, C1), axis=-1)
+            blocks = -np.linalg.solve(M, stack)
+            self.stiffness, self.damping, self.creep = (
+                blocks[..., :n],
+                blocks[..., n : 2 * n],
+                blocks[..., 2 * n :],
+            )
+
+    @classmethod
+    def of(cls, system: LinearSystem) -> _StateMatrices:
+        return cls(system.M, system.K, system.C0, system.C1)
+
+    def __call__(self, speeds: np.ndarray, which: np.ndarray | None = None) -> np.ndarray:
+        """A of system ``which[k]`` (default 0) at ``speeds[k]`` (m/s, > 0, checked): (m, 2n, 2n)."""
         n = self.n
+        which = np.zeros(speeds.size, dtype=int) if which is None else which
+
+        def pick(block):
+            return block[which] if block.ndim == 3 else block
+
         A = np.zeros((speeds.size, 2 * n, 2 * n))
         A[:, :n, n:] = np.eye(n)
-        A[:, n:, :n] = self.stiffness
-        A[:, n:, n:] = self.damping + self.creep / speeds[:, None, None]
+        A[:, n:, :n] = pick(self.stiffness)
+        A[:, n:, n:] = pick(self.damping) + pick(self.creep) / speeds[:, None, None]
         return A
 
+    def largest(self, which: np.ndarray, speeds: np.ndarray) -> np.ndarray:
+        """max Re λ of A for each pair (system ``which[k]``, ``speeds[k]``), 1/s."""
+        out = np.empty(speeds.size)
+        for start in range(0, speeds.size, self._CHUNK):
+            part = slice(start, start + self._CHUNK)
+            out[part] = np.linalg.eigvals(self(speeds[part], which[part])).real.max(axis=-1)
+        return out
 
-_MAX_SCAN = 10_000  # speeds in a coarse scan: Brent's method refines the bracket, so more only cost time
+
+_MAX_SCAN = 10_000  # speeds in a coarse scan: the refinement narrows the bracket, so more only cost time
+_MAX_STEPS = 400  # of the refinement: every two steps at least halve a bracket, so far more than needed
+
+
+def _crossings(state: _StateMatrices, low: float, high: float, tol: float, scan: int):
+    """The status and critical speed of every system of ``state`` (arguments checked by the caller).
+
+    The definition of :func:`critical_speed`, for a stack of systems at once: a coarse scan of
+    ``scan`` speeds brackets each system's first upward zero of g(V) = max Re λ(V), then a
+    bracketed refinement narrows every bracket below 2 tol; the midpoint is returned. The scan
+    goes up in batches of 4 speeds, then of half the speeds done so far, and leaves a system at
+    its first upward crossing: a crossing low in the range costs a few eigenvalue problems, a
+    system stable over the range a few batched calls. The refinement is the Illinois variant of
+    regula falsi, each point kept at least tol/2 inside its bracket; a step that leaves more than
+    half of its bracket is followed by a bisection, so that a kink of g (two modes trading places)
+    cannot stall it.
+
+    Returns (status, speed): an object array of :data:`_STATUSES` and V_c in m/s (inf where
+    stable over the range, ``low`` where unstable at the lowest speed), each of shape (m,).
+    """
+    m = state.count
+    V = np.linspace(low, high, scan)
+    speed = np.full(m, np.inf)
+    status = np.full(m, _STATUSES[1], dtype=object)
+    every = np.arange(m)
+    g_low = state.largest(every, np.full(m, low))
+    unstable = g_low >= 0.0
+    speed[unstable], status[unstable] = low, _STATUSES[2]
+    open_, g_last = every[~unstable], g_low[~unstable]
+    todo, a, b, ga, gb = [], [], [], [], []
+    done = 1  # speeds of the scan behind every open system, all with g < 0
+    while open_.size and done < scan:
+        batch = V[done : done + max(4, done // 2)]
+        g = state.largest(np.repeat(open_, batch.size), np.tile(batch, open_.size)).reshape(open_.size, -1)
+        up = g >= 0.0
+        crossed = np.flatnonzero(up.any(axis=1))
+        k = up[crossed].argmax(axis=1)  # the first speed of the batch where g ≥ 0
+        before = np.where(k == 0, g_last[crossed], g[crossed, k - 1])
+        todo.append(open_[crossed])
+        a.append(V[done - 1 + k])
+        b.append(V[done + k])
+        ga.append(before)
+        gb.append(g[crossed, k])
+        stay = ~up.any(axis=1)
+        open_, g_last = open_[stay], g[stay, -1]
+        done += batch.size
+    if not todo or not sum(t.size for t in todo):
+        return status, speed
+    todo, a, b, ga, gb = (np.concatenate(x) for x in (todo, a, b, ga, gb))
+    side = np.zeros(todo.size, dtype=int)  # which end the last step kept: −1 a, +1 b
+    bisect = np.zeros(todo.size, dtype=bool)
+    for _ in range(_MAX_STEPS):
+        # a bracket as narrow as the speeds' round-off is done too, whatever tol asked for
+        active = (b - a > 2.0 * tol) & (b - a > 8.0 * np.spacing(b))
+        if not active.any():
+            break
+        i = np.flatnonzero(active)
+        width = b[i] - a[i]
+        falsi = (a[i] * gb[i] - b[i] * ga[i]) / (gb[i] - ga[i])
+        c = np.where(bisect[i], 0.5 * (a[i] + b[i]), np.clip(falsi, a[i] + 0.5 * tol, b[i] - 0.5 * tol))
+        gc = state.largest(todo[i], c)
+        right = gc >= 0.0  # the zero lies in [a, c]: c becomes b
+        for mask, keep in ((right, -1), (~right, 1)):
+            j = i[mask]
+            if keep == -1:
+                b[j], gb[j] = c[mask], gc[mask]
+                ga[j] = np.where(side[j] == -1, 0.5 * ga[j], ga[j])  # Illinois: a kept twice
+            else:
+                a[j], ga[j] = c[mask], gc[mask]
+                gb[j] = np.where(side[j] == 1, 0.5 * gb[j], gb[j])
+            side[j] = keep
+        bisect[i] = b[i] - a[i] > 0.5 * width
+    else:  # pragma: no cover - every two steps at least halve each bracket
+        raise RuntimeError("the critical-speed refinement did not converge")
+    speed[todo], status[todo] = 0.5 * (a + b), _STATUSES[0]
+    return status, speed
 
 
 def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: int = 64) -> CriticalSpeed:
     """The linear critical speed: where the largest real part of the eigenvalues first becomes positive.
 
     A coarse batched scan of ``scan`` speeds brackets the first upward zero of
-    g(V) = max Re λ(V), which Brent's method then refines to ``tol`` m/s. The scan ends at that
-    bracket (the speeds above it are not needed).
+    g(V) = max Re λ(V), which a bracketed refinement (regula falsi, Illinois variant, with
+    bisection where it stalls) narrows to ``tol`` m/s. The scan ends at that bracket (the speeds
+    above it are not needed).
 
     Parameters
     ----------
@@ -617,7 +723,7 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     tol : float
         Absolute tolerance on V_c, m/s (> 0; default 0.01, well inside 0.1 m/s).
     scan : int
-        Number of speeds in the coarse scan, in [8, 10 000] (Brent's method refines the
+        Number of speeds in the coarse scan, in [8, 10 000] (the refinement narrows the
         bracket, so more speeds only cost time).
 
     Returns
@@ -637,7 +743,8 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     low, high = _range(speed_range)
     positive("tol", tol)
     integer("scan", scan, low=8, high=_MAX_SCAN)
-    status, speed, state = _crossing(system, low, high, tol, scan)
+    state = _StateMatrices.of(system)
+    (status,), (speed,) = _crossings(state, low, high, tol, scan)
     n = system.size
     if status == "stable over the range":
         return CriticalSpeed(
@@ -648,42 +755,6 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     shape = vec[:n, j] / vec[:n, j][np.argmax(np.abs(vec[:n, j]))]
     frequency = float(abs(lam[j].imag) / (2 * np.pi))
     return CriticalSpeed(float(speed), frequency, complex(lam[j]), status, shape, system.labels)
-
-
-def _crossing(system: LinearSystem, low: float, high: float, tol: float, scan: int):
-    """The status and speed of :func:`critical_speed` (checked arguments), and the system's A(V).
-
-    :func:`critical_speed_map` needs the speed only, not the mode at it (one more eigenvalue
-    problem, with vectors).
-    """
-    V = np.linspace(low, high, scan)
-    state = _StateMatrices(system)
-    # The scan stops at its first upward crossing: the speeds beyond it cannot change the bracket.
-    # It goes in batches of 4 speeds, then of half the speeds done so far: a crossing low in the
-    # range costs a few eigenvalue problems, a model stable over the range a few batched calls.
-    g = np.empty(0)
-    up = np.empty(0, dtype=int)
-    while g.size < scan:
-        batch = V[g.size : g.size + max(4, g.size // 2)]
-        g = np.concatenate([g, np.linalg.eigvals(state(batch)).real.max(axis=1)])
-        up = np.flatnonzero((g[:-1] < 0.0) & (g[1:] >= 0.0))
-        if g[0] >= 0.0 or up.size:
-            break
-    if g[0] >= 0.0:
-        return "unstable at the lowest speed", low, state
-    if up.size == 0:
-        return "stable over the range", np.inf, state
-
-    def largest(speed):
-        return np.linalg.eigvals(state(np.array([speed]))[0]).real.max()
-
-    i = int(up[0])
-    # Brent's method starts from g at the two ends of the bracket, which the scan has found already.
-    known = {float(V[i]): float(g[i]), float(V[i + 1]): float(g[i + 1])}
-    speed = scipy.optimize.brentq(
-        lambda v: known[v] if v in known else largest(v), float(V[i]), float(V[i + 1]), xtol=tol
-    )
-    return "crossing", speed, state
 
 
 @dataclass(frozen=True)
@@ -835,6 +906,21 @@ class CriticalSpeedMap:
         return {"lines": lines}
 
 
+_MAP_CHUNK = 64  # grid points searched together: one eigenvalue call a step for all of them
+
+
+def _search_together(built: list, out: np.ndarray, low: float, high: float, tol: float, scan: int) -> None:
+    """out[j, i] = the critical speed of each (j, i, system) of ``built``, systems of one size at once."""
+    for n in {system.size for _, _, system in built}:
+        group = [(j, i, system) for j, i, system in built if system.size == n]
+        state = _StateMatrices(
+            *(np.stack([getattr(s, name) for *_, s in group]) for name in ("M", "K", "C0", "C1"))
+        )
+        _, speeds = _crossings(state, low, high, tol, scan)
+        for (j, i, _), v in zip(group, speeds, strict=True):
+            out[j, i] = v
+
+
 def critical_speed_map(
     factory: Callable[[float, float], object],
     x,
@@ -851,7 +937,8 @@ def critical_speed_map(
 
     Example: critical speed against conicity and primary yaw stiffness,
     ``factory = lambda lam, k: car.replace(conicity=lam, yaw_stiffness=k)``.
-    Each model goes through :func:`critical_speed`.
+    Each model has the critical speed of :func:`critical_speed` (the same search, the same
+    numbers); up to 64 models are searched together, one batched eigenvalue call a step.
 
     Parameters
     ----------
@@ -892,7 +979,8 @@ def critical_speed_map(
     pairs = [(j, i) for j in range(ys.size) for i in range(xs.size)]
     if _checks.flag("progress", progress):
         pairs = progress_bar(pairs, desc="critical speed map")
-    for j, i in pairs:
+    built: list = []  # (j, i, system) not yet searched: up to a chunk, searched together
+    for count, (j, i) in enumerate(pairs, start=1):
         xi, yj = float(xs[i]), float(ys[j])
         where = f"x[{i}] = {xi!r}, y[{j}] = {yj!r}"
         try:
@@ -902,5 +990,8 @@ def critical_speed_map(
             raise kind(f"factory failed at {where}: {err}") from err
         if not isinstance(model, LinearSystem) and not callable(getattr(model, "linear_system", None)):
             raise TypeError(f"factory must return a linear model, returned {model!r:.80} at {where}")
-        out[j, i] = _crossing(as_linear_system(model), low, high, tol, scan)[1]
+        built.append((j, i, as_linear_system(model)))
+        if len(built) == _MAP_CHUNK or count == xs.size * ys.size:
+            _search_together(built, out, low, high, tol, scan)
+            built = []
     return CriticalSpeedMap(xs, ys, out, x_name, y_name)

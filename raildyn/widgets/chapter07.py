@@ -18,7 +18,9 @@ import ipywidgets as widgets
 import numpy as np
 
 from raildyn import plots, stability
-from raildyn.linear_model import LinearSystem
+
+# the search of critical_speed_map on stacked matrices: the widget's systems are never objects
+from raildyn.stability.linear import _crossings, _StateMatrices
 from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Car
 from raildyn.widgets._core import Recipe, slider
 
@@ -99,70 +101,99 @@ def car_roots():
 _CONICITIES = np.linspace(0.03, 0.5, 10)
 
 
-def _systems_over_conicity(make, conicities) -> dict:
-    """``make(λ).linear_system()`` at each conicity (sorted, three or more), assembled three times only.
+class _AffineFamily:
+    """The matrices M, C₀, C₁ and K of ``make(*p).linear_system()`` for many parameter vectors p at once.
 
-    The wheel–rail terms are affine in λ (the creep stiffness 2af₁₁λ/r₀, and the gravitational
-    stiffnesses Wε/a and −Waϑ₀ whose ε and ϑ₀ follow λ: :func:`raildyn.wheelset.creep_terms`), so
-    M, C₀, C₁ and K in between are the straight line between the two ends. Assembling the car
-    took longer than its critical speed; here the ends and a middle conicity are assembled, and
-    the middle one checks the line to round-off (1e-12 of each matrix), else every conicity is
-    assembled as before. Only what :func:`raildyn.stability.critical_speed` reads is kept.
+    The car's matrices are affine in the conicity (the creep stiffness 2af₁₁λ/r₀, and the
+    gravitational stiffnesses Wε/a and −Waϑ₀ whose ε and ϑ₀ follow λ:
+    :func:`raildyn.wheelset.creep_terms`) and in each suspension stiffness, with no product of two
+    of them. So A(p) = A(p₀) + Σᵢ (pᵢ − p₀ᵢ) ∂A/∂pᵢ, each slope from one more assembly: assembling
+    the car took longer than its critical speed, and a slider move now assembles nothing. The
+    point halfway between ``origin`` and ``far`` checks the plane to round-off (1e-12 of each
+    matrix): it sees both a curve along one parameter and a product of two. Where the check fails,
+    every point is assembled.
     """
-    first, last = conicities[0], conicities[-1]
-    ends = [make(first).linear_system(), make(last).linear_system()]
 
-    def between(lam):
-        t = (lam - first) / (last - first)
-        mats = {
-            name: (1.0 - t) * getattr(ends[0], name) + t * getattr(ends[1], name)
-            for name in ("M", "C0", "C1", "K")
+    _NAMES = ("M", "C0", "C1", "K")
+
+    def __init__(self, make, origin, far):
+        self.make = make
+        self.origin = np.asarray(origin, dtype=float)
+        far = np.asarray(far, dtype=float)
+        base = make(*self.origin).linear_system()
+        self.base = {name: getattr(base, name) for name in self._NAMES}
+        self.slopes = []
+        for i in range(self.origin.size):
+            p = self.origin.copy()
+            p[i] = far[i]
+            moved = make(*p).linear_system()
+            self.slopes.append(
+                {n: (getattr(moved, n) - self.base[n]) / (far[i] - self.origin[i]) for n in self._NAMES}
+            )
+        middle = 0.5 * (self.origin + far)
+        assembled = make(*middle).linear_system()
+        guess = self._plane(middle[None])
+        self.affine = all(
+            np.abs(guess[n][0] - getattr(assembled, n)).max() <= 1e-12 * np.abs(getattr(assembled, n)).max()
+            for n in self._NAMES
+        )
+
+    def _plane(self, points: np.ndarray) -> dict:
+        step = points - self.origin
+        return {
+            n: self.base[n] + sum(step[:, i, None, None] * slope[n] for i, slope in enumerate(self.slopes))
+            for n in self._NAMES
         }
-        return LinearSystem(**mats, labels=ends[0].labels)
 
-    middle = conicities[len(conicities) // 2]
-    assembled = make(middle).linear_system()
-    guess = between(middle)
-    affine = all(
-        np.abs(getattr(guess, name) - getattr(assembled, name)).max()
-        <= 1e-12 * np.abs(getattr(assembled, name)).max()
-        for name in ("M", "C0", "C1", "K")
+    def stacks(self, points) -> dict:
+        """{"M", "C0", "C1", "K"}: each (m, n, n), the model's matrices at each row of ``points``."""
+        points = np.atleast_2d(np.asarray(points, dtype=float))
+        if self.affine:
+            return self._plane(points)
+        systems = [self.make(*p).linear_system() for p in points]
+        return {n: np.stack([getattr(s, n) for s in systems]) for n in self._NAMES}
+
+
+# (λ, k_ψ, k_sψ) in (–, N·m/rad, N·m/rad): the corners of the widget's controls and conicities
+_CURVE_ORIGIN, _CURVE_FAR = (0.03, 2.0e6, 0.0), (0.5, 120.0e6, 2.0e6)
+
+
+@lru_cache(maxsize=1)
+def _curve_families() -> tuple[_AffineFamily, _AffineFamily]:
+    """The car and its bogie as affine families in (λ, k_ψ, k_sψ)."""
+
+    def car(lam, k, ks):
+        return _CAR.replace(conicity=lam, yaw_stiffness=k, secondary_yaw_stiffness=ks)
+
+    return (
+        _AffineFamily(car, _CURVE_ORIGIN, _CURVE_FAR),
+        _AffineFamily(lambda *p: car(*p).bogie, _CURVE_ORIGIN, _CURVE_FAR),
     )
-    if not affine:
-        return {lam: make(lam).linear_system() for lam in conicities}
-    known = {first: ends[0], last: ends[1], middle: assembled}
-    return {lam: known[lam] if lam in known else between(lam) for lam in conicities}
 
 
 def _critical_curves(yaw_stiffness: float, secondary_yaw_stiffness: float):
-    """Critical-speed maps of the car and of its bogie against conicity (stiffnesses in MN·m/rad)."""
-    base = _CAR.replace(
-        secondary_yaw_stiffness=1e6 * secondary_yaw_stiffness, yaw_stiffness=1e6 * yaw_stiffness
-    )
-    conicities = [float(lam) for lam in _CONICITIES]
-    cars = _systems_over_conicity(lambda lam: base.replace(conicity=lam), conicities)
-    bogies = _systems_over_conicity(lambda lam: base.replace(conicity=lam).bogie, conicities)
+    """Critical-speed maps of the car and of its bogie against conicity (stiffnesses in MN·m/rad).
 
-    def car(lam, _k):
-        return cars[lam]
-
-    def bogie(lam, _k):
-        return bogies[lam]
-
-    def curve(factory):
-        return stability.critical_speed_map(
-            factory,
+    :func:`raildyn.stability.critical_speed_map`'s search (scan 16, tol 0.1 m/s over 1–200 m/s),
+    run on the families' matrices directly: every conicity of each vehicle in one batched search.
+    """
+    points = np.column_stack(
+        [
             _CONICITIES,
-            [yaw_stiffness],
-            (1.0, 200.0),
-            x_name="conicity λ",
-            y_name="primary k_ψ (MN·m/rad)",
-            tol=0.1,
-            scan=16,
-            progress=False,
+            np.full(_CONICITIES.size, 1e6 * yaw_stiffness),
+            np.full(_CONICITIES.size, 1e6 * secondary_yaw_stiffness),
+        ]
+    )
+
+    def curve(family):
+        m = family.stacks(points)
+        state = _StateMatrices(m["M"], m["K"], m["C0"], m["C1"])
+        _, speeds = _crossings(state, 1.0, 200.0, 0.1, 16)
+        return stability.CriticalSpeedMap(
+            _CONICITIES, np.array([yaw_stiffness]), speeds[None], "conicity λ", "primary k_ψ (MN·m/rad)"
         )
 
-    return curve(car), curve(bogie)
+    return tuple(curve(family) for family in _curve_families())
 
 
 def _critical_curve_setup(live, status):
