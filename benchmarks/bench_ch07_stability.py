@@ -3,7 +3,7 @@
 The baseline is the straightforward approach: build a ``control.StateSpace`` at
 each of 1000 speeds, take its poles, and interpolate the speed where the largest
 real part crosses zero. raildyn scans 64 speeds in one batched eigenvalue call
-and refines the crossing with Brent's method. Both answers are checked to agree
+and refines the crossing by bracketed regula falsi. Both answers are checked to agree
 within 0.1 m/s (the grid spacing of the baseline is 0.2 m/s, and its linear
 interpolation is far better than that) before timing counts.
 """

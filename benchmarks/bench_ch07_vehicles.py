@@ -4,7 +4,7 @@ six-axle locomotive, raildyn against python-control poles on a 1000-point speed 
 The baseline is the straightforward approach: a ``control.StateSpace`` at each of 1000 speeds,
 its poles, and the speed where the largest real part first crosses zero, interpolated. raildyn
 (:func:`raildyn.stability.critical_speed`) scans 64 speeds in one batched eigenvalue call and
-refines the crossing with Brent's method (``benchmarks.common.critical_speed_case``).
+refines the crossing by bracketed regula falsi (``benchmarks.common.critical_speed_case``).
 """
 
 from __future__ import annotations

@@ -4,7 +4,7 @@
 The car is :class:`raildyn.vehicles.Car` (the Manchester benchmark vehicle); the primary lateral and
 yaw stiffnesses, the secondary lateral and yaw stiffnesses and the conicity each scatter uniformly
 by ±10 % about their defaults. Each evaluation is one :func:`raildyn.stability.linear.critical_speed`
-(a batched eigenvalue scan and Brent's method, about 20 ms). The baseline is the plain loop over the
+(a batched eigenvalue scan and a bracketed regula falsi, about 20 ms). The baseline is the plain loop over the
 same 1,000 draws in this process. The two answers must agree to 1e-9 m/s (the same arithmetic on the
 same numbers; only the process differs) before the timing counts.
 

@@ -11,7 +11,7 @@ eigenvalues come from one batched ``numpy.linalg`` call.
   mode followed across speed by its modal assurance criterion (MAC), so
   that crossing branches keep their labels;
 * :func:`~raildyn.stability.linear.critical_speed` — the lowest speed at which the largest real part
-  becomes positive, by a batched coarse scan and Brent's method;
+  becomes positive, by a batched coarse scan and a bracketed regula falsi (one system or many at once);
 * :func:`~raildyn.stability.linear.critical_speed_map` — the critical speed over a grid of two parameters;
 * :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`,
   :func:`~raildyn.stability.nonlinear.bifurcation_diagram` — nonlinear hunting: the
