@@ -71,9 +71,7 @@ def cases(repeats: int):
 
     result = [critical_speed_case("Manchester car (15 dof)", Car(), SPEED_RANGE, repeats)]
     for label, recipe, control_name, values in chapter05.BENCH_MOVES + chapter07.BENCH_MOVES:
-        # The vehicle comparison (issue 16) is held to 50 ms, as DESIGN.md asks; the older ones to 100.
-        goal = "median ≤ 50 ms" if recipe is chapter07.VEHICLE_COMPARISON else "median ≤ 100 ms"
-        result.append(widget_case(label, recipe, control_name, values, repeats, goal=goal))
+        result.append(widget_case(label, recipe, control_name, values, repeats))
     result.append(_bifurcation_case(repeats))
     result.append(_bifurcation_widget_case(repeats))
     return result

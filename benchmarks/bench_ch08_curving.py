@@ -49,7 +49,7 @@ def cases(repeats: int):
     from raildyn.widgets import chapter08
 
     return _map_case(repeats) + [
-        widget_case(label, recipe, control, values, repeats, goal="median ≤ 50 ms")
+        widget_case(label, recipe, control, values, repeats)
         for label, recipe, control, values in chapter08.BENCH_MOVES
     ]
 

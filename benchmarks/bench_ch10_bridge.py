@@ -107,7 +107,7 @@ def cases(repeats: int):
     from raildyn.widgets import chapter10
 
     widgets = [
-        widget_case(label, recipe, control, values, repeats, goal="median ≤ 50 ms")
+        widget_case(label, recipe, control, values, repeats)
         for label, recipe, control, values in chapter10.BENCH_MOVES
     ]
     return [_spectrum_case(repeats), *_crossing_cases(repeats), *widgets]

@@ -132,6 +132,6 @@ def _widget_cases(repeats: int) -> list[Case]:
     from raildyn.widgets import chapter11
 
     return [
-        widget_case(label, recipe, control, values, repeats, goal="median ≤ 50 ms")
+        widget_case(label, recipe, control, values, repeats)
         for label, recipe, control, values in chapter11.BENCH_MOVES
     ]
