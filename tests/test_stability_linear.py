@@ -88,3 +88,12 @@ def test_track_modes_pairs_as_the_hungarian_algorithm_at_every_step(model, speed
     expected_lam, expected_vec = _track_step_by_step(lam, vec)
     np.testing.assert_array_equal(tracked.eigenvalues, expected_lam)
     np.testing.assert_array_equal(tracked.vectors, expected_vec)
+
+
+@pytest.mark.parametrize(("model", "speed_range"), [MODELS[0], MODELS[3], MODELS[6]])
+def test_a_tolerance_below_round_off_still_ends_at_the_zero(model, speed_range):
+    # tol far below the spacing of floats near V_c: the search ends where its bracket can shrink no
+    # more (a few units in the last place), at Brent's zero to the round-off of g itself.
+    cs = stability.critical_speed(model, speed_range, tol=1e-300, scan=16)
+    _, speed = _full_scan(model, speed_range, 1e-12, 16)
+    assert abs(cs.speed - speed) <= 1e-9 * speed

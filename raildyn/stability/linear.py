@@ -629,7 +629,7 @@ class _StateMatrices:
 
 
 _MAX_SCAN = 10_000  # speeds in a coarse scan: the refinement narrows the bracket, so more only cost time
-_MAX_STEPS = 400  # of the refinement: every two steps at least halve a bracket, so far more than needed
+_MAX_STEPS = 400  # of the refinement: every three steps at least halve a bracket, so far more than needed
 
 
 def _crossings(state: _StateMatrices, low: float, high: float, tol: float, scan: int):
@@ -641,9 +641,9 @@ def _crossings(state: _StateMatrices, low: float, high: float, tol: float, scan:
     goes up in batches of 4 speeds, then of half the speeds done so far, and leaves a system at
     its first upward crossing: a crossing low in the range costs a few eigenvalue problems, a
     system stable over the range a few batched calls. The refinement is the Illinois variant of
-    regula falsi, each point kept at least tol/2 inside its bracket; a step that leaves more than
-    half of its bracket is followed by a bisection, so that a kink of g (two modes trading places)
-    cannot stall it.
+    regula falsi, each point kept at least tol/2 inside its bracket; where two steps have not
+    halved a bracket, a bisection follows, so that a kink of g (two modes trading places) cannot
+    stall it.
 
     Returns (status, speed): an object array of :data:`_STATUSES` and V_c in m/s (inf where
     stable over the range, ``low`` where unstable at the lowest speed), each of shape (m,).
@@ -679,6 +679,7 @@ def _crossings(state: _StateMatrices, low: float, high: float, tol: float, scan:
     todo, a, b, ga, gb = (np.concatenate(x) for x in (todo, a, b, ga, gb))
     side = np.zeros(todo.size, dtype=int)  # which end the last step kept: −1 a, +1 b
     bisect = np.zeros(todo.size, dtype=bool)
+    before = np.full(todo.size, np.inf)  # each bracket's width when the previous step began
     for _ in range(_MAX_STEPS):
         # a bracket as narrow as the speeds' round-off is done too, whatever tol asked for
         active = (b - a > 2.0 * tol) & (b - a > 8.0 * np.spacing(b))
@@ -699,8 +700,10 @@ def _crossings(state: _StateMatrices, low: float, high: float, tol: float, scan:
                 a[j], ga[j] = c[mask], gc[mask]
                 gb[j] = np.where(side[j] == 1, 0.5 * gb[j], gb[j])
             side[j] = keep
-        bisect[i] = b[i] - a[i] > 0.5 * width
-    else:  # pragma: no cover - every two steps at least halve each bracket
+        # two steps that have not halved the bracket are followed by a bisection
+        bisect[i] = b[i] - a[i] > 0.5 * before[i]
+        before[i] = width
+    else:  # pragma: no cover - every three steps at least halve each bracket
         raise RuntimeError("the critical-speed refinement did not converge")
     speed[todo], status[todo] = 0.5 * (a + b), _STATUSES[0]
     return status, speed
