@@ -245,6 +245,35 @@ def test_the_plot_moves_in_place(tradeoff):
     assert len(ax.figure.axes) == 2  # the twin axis was made once
 
 
+class _UnhashableCar(Car):
+    """The car that cannot be hashed, so that nothing of it is kept."""
+
+    __hash__ = None
+
+
+def test_a_new_curve_reuses_the_critical_speeds_and_an_unhashable_model_gets_the_same(monkeypatch):
+    from raildyn.curving import stiffness
+
+    stiffness._kept_critical_speeds.cache_clear()
+    searches = []
+    search = stiffness._crossings
+    monkeypatch.setattr(stiffness, "_crossings", lambda *a: searches.append(1) or search(*a))
+    car = Car().replace(conicity=0.21)
+    first = stability_and_curving(car, _KS, balance_speed(600.0, 0.1), 600.0, 0.1, scan=8)
+    other = stability_and_curving(car, _KS, balance_speed(1500.0, 0.1), 1500.0, 0.1, scan=8)
+    assert len(searches) == 1  # the critical speeds do not depend on the curve
+    np.testing.assert_array_equal(first.critical_speed, other.critical_speed)
+    assert not np.array_equal(first.angle_of_attack, other.angle_of_attack)
+    first.critical_speed[0] = -1.0  # each result has its own arrays: nothing kept is changed
+    assert other.critical_speed[0] > 0
+    plain = stability_and_curving(
+        _UnhashableCar().replace(conicity=0.21), _KS, balance_speed(1500.0, 0.1), 1500.0, 0.1, scan=8
+    )
+    assert len(searches) == 2  # searched afresh
+    np.testing.assert_array_equal(plain.critical_speed, other.critical_speed)
+    np.testing.assert_array_equal(plain.angle_of_attack, other.angle_of_attack)
+
+
 def test_stability_and_curving_refuses_bad_input():
     car = Car()
     with pytest.raises(TypeError, match="model"):

@@ -178,7 +178,7 @@ def test_median_update(label, recipe, control, values):
     _, update = recipe.build()
     median = median_update_ms(update, control, values)
     print(f"{label}: median update {median:.1f} ms")
-    # Issue 22 asks for 30 ms (3–14 ms here on an idle machine, 3–32 ms on a value's first visit:
+    # Issue 22 asks for 30 ms (3–14 ms here on an idle machine, 3–25 ms on a value's first visit:
     # benchmarks/README.md); a test on a shared machine under load only guards against a widget that
     # recomputes far too much.
     assert median < 250.0

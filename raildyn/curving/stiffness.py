@@ -35,6 +35,7 @@ lateral spring (k_y, moved to the frame's yaw by b²) is in series with its yaw 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -355,6 +356,35 @@ def _stiffness_matrices(model, ks: np.ndarray):
     return s1, np.stack([s.K for s in systems])
 
 
+# The stiffness matrices and the critical speeds depend on the model and the stiffnesses alone, not
+# on the curve: a call that changes only the curve (a radius slider) reuses them. The models are
+# frozen dataclasses, hashed by their parameters; the last 32 are kept, and an unhashable model is
+# searched afresh every time.
+_KEPT = 32
+
+
+@lru_cache(maxsize=_KEPT)
+def _kept_matrices(model, ks: tuple):
+    system, Ks = _stiffness_matrices(model, np.array(ks))
+    Ks.setflags(write=False)  # shared by every call that reuses it
+    return system, Ks
+
+
+@lru_cache(maxsize=_KEPT)
+def _kept_critical_speeds(model, ks: tuple, low: float, high: float, tol: float, scan: int):
+    system, Ks = _kept_matrices(model, ks)
+    status, speeds = _crossings(_StateMatrices(system.M, Ks, system.C0, system.C1), low, high, tol, scan)
+    return tuple(status), tuple(speeds)
+
+
+def _hashable(model) -> bool:
+    try:
+        hash(model)
+    except TypeError:
+        return False
+    return True
+
+
 def stability_and_curving(
     model, yaw_stiffnesses, speed, radius, cant=0.0, *, speed_range=(1.0, 150.0), tol=0.05, scan=24
 ) -> StabilityCurving:
@@ -372,7 +402,9 @@ def stability_and_curving(
     Vectorised: the stiffness matrix is linear in k_ψ (checked), so every critical
     speed comes from one batched coarse scan and a few batched refinement steps, and
     every steady state from one batched linear solve with the curve's loads of one
-    :func:`~raildyn.curving.steady.steady_curving` call.
+    :func:`~raildyn.curving.steady.steady_curving` call. The critical speeds do not depend
+    on the curve: a call that changes only ``speed``, ``radius`` or ``cant`` reuses those of
+    an earlier call with the same model and stiffnesses (the last 32 kept).
 
     Parameters
     ----------
@@ -418,7 +450,10 @@ def stability_and_curving(
     low, high = _range(speed_range)
     tol = _checks.positive("tol", tol)
     scan = _checks.integer("scan", scan, low=8, high=_MAX_SCAN)
-    system, Ks = _stiffness_matrices(model, ks)  # system: the model at the largest k_ψ
+    kept = _hashable(model)
+    key = (model, tuple(ks.tolist()))
+    # system: the model at the largest k_ψ
+    system, Ks = _kept_matrices(*key) if kept else _stiffness_matrices(model, ks)
     if not system.wheelsets:
         raise ValueError(f"model must have wheelsets on the rails, got one with coordinates {system.labels}")
     state = steady_curving(system, speed, radius, cant)  # checks speed, radius and cant
@@ -437,7 +472,10 @@ def stability_and_curving(
     # α = −(ψ − x/R): the same change of yaw in the vehicle's axes changes α by its opposite
     alpha = state.angle_of_attack[lead] - (q[:, ipsi] - state.displacement[ipsi])
     # The critical speeds: chapter 7's search, all stiffnesses at once (M, C₀ and C₁ are shared).
-    status, speeds = _crossings(_StateMatrices(system.M, Ks, system.C0, system.C1), low, high, tol, scan)
+    if kept:
+        status, speeds = _kept_critical_speeds(*key, low, high, tol, scan)
+    else:
+        status, speeds = _crossings(_StateMatrices(system.M, Ks, system.C0, system.C1), low, high, tol, scan)
     return StabilityCurving(
-        ks, speeds, tuple(status), alpha, state.speed, state.radius, state.cant, (low, high)
+        ks, np.array(speeds), tuple(status), alpha, state.speed, state.radius, state.cant, (low, high)
     )
