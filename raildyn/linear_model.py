@@ -669,6 +669,67 @@ def as_linear_system(model) -> LinearSystem:
     raise TypeError(f"model must be a raildyn linear model (LinearModel), got {type(model).__name__}")
 
 
+class _AffineFamily:
+    """The matrices M, C₀, C₁ and K of ``make(*p)`` for many parameter vectors p at once.
+
+    A model's matrices are often affine in the parameters a study moves: in the conicity (the creep
+    stiffness 2af₁₁λ/r₀, and the gravitational stiffnesses Wε/a and −Waϑ₀ whose ε and ϑ₀ follow λ:
+    :func:`raildyn.wheelset.creep_terms`) and in each spring, with no product of two of them. Then
+    A(p) = A(p₀) + Σᵢ (pᵢ − p₀ᵢ) ∂A/∂pᵢ, each slope from one assembly at ``origin`` moved to ``far``
+    in that parameter alone: a sweep over many points assembles the model 2 + len(p) times. The
+    point halfway between ``origin`` and ``far`` checks the plane to round-off (1e-12 of each
+    matrix): it sees both a curve along one parameter and a product of two. Where the check fails,
+    :attr:`affine` is False and every point is assembled.
+
+    ``make(*p)`` returns a linear model or its system. :attr:`assembled` maps each point assembled
+    here (a tuple) to its :class:`LinearSystem`.
+    """
+
+    _NAMES = ("M", "C0", "C1", "K")
+
+    def __init__(self, make, origin, far):
+        self.make = make
+        self.origin = np.asarray(origin, dtype=float)
+        far = np.asarray(far, dtype=float)
+        self.assembled = {tuple(self.origin.tolist()): as_linear_system(make(*self.origin))}
+        base = self.assembled[tuple(self.origin.tolist())]
+        self.base = {n: getattr(base, n) for n in self._NAMES}
+        self.slopes = []
+        for i in range(self.origin.size):
+            p = self.origin.copy()
+            p[i] = far[i]
+            moved = self.assembled.setdefault(tuple(p.tolist()), as_linear_system(make(*p)))
+            self.slopes.append(
+                {n: (getattr(moved, n) - self.base[n]) / (far[i] - self.origin[i]) for n in self._NAMES}
+            )
+        middle = 0.5 * (self.origin + far)
+        check = self.assembled.setdefault(tuple(middle.tolist()), as_linear_system(make(*middle)))
+        guess = self._plane(middle[None])
+        self.affine = all(
+            np.abs(guess[n][0] - getattr(check, n)).max() <= 1e-12 * np.abs(getattr(check, n)).max()
+            for n in self._NAMES
+        )
+
+    def _plane(self, points: np.ndarray) -> dict:
+        step = points - self.origin
+        return {
+            n: self.base[n] + sum(step[:, i, None, None] * slope[n] for i, slope in enumerate(self.slopes))
+            for n in self._NAMES
+        }
+
+    def constant(self, name: str) -> bool:
+        """Whether matrix ``name`` ("M", "C0", "C1", "K") stays put as every parameter moves (affine only)."""
+        return self.affine and not any(np.any(slope[name]) for slope in self.slopes)
+
+    def stacks(self, points) -> dict:
+        """{"M", "C0", "C1", "K"}: each (m, n, n), the model's matrices at each row of ``points``."""
+        points = np.atleast_2d(np.asarray(points, dtype=float))
+        if self.affine:
+            return self._plane(points)
+        systems = [as_linear_system(self.make(*p)) for p in points]
+        return {n: np.stack([getattr(s, n) for s in systems]) for n in self._NAMES}
+
+
 _MAX_INPUTS = 10_000
 
 

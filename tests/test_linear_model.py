@@ -194,3 +194,49 @@ def test_a_system_with_a_direct_input_force_does_not_know_its_reaction():
     asm.track_force("z", 0, 5.0)
     with pytest.raises(ValueError, match="input_stiffness"):
         asm.system().input_forces([0.0], [0.0], [0.0], [0.0])
+
+
+# ---------------------------------------------------------------------------
+# The affine family (raildyn.linear_model._AffineFamily)
+
+
+def test_an_affine_family_is_the_assembled_models_and_knows_what_stays_put():
+    from raildyn.linear_model import _AffineFamily
+
+    def make(lam, k):
+        return Wheelset(conicity=lam, yaw_stiffness=k, lateral_stiffness=1.0e6)
+
+    family = _AffineFamily(make, (0.03, 1.0e6), (0.5, 5.0e6))
+    assert family.affine
+    assert family.constant("M") and not family.constant("K")
+    points = [(0.1, 2.0e6), (0.45, 4.5e6), (0.02, 8.0e6)]  # inside, and beyond ``origin`` and ``far``
+    stacks = family.stacks(points)
+    for k, p in enumerate(points):
+        assembled = make(*p).linear_system()
+        for name in ("M", "C0", "C1", "K"):
+            theirs = getattr(assembled, name)
+            np.testing.assert_allclose(stacks[name][k], theirs, rtol=0.0, atol=1e-12 * np.abs(theirs).max())
+    # the systems it assembled: the origin, each parameter moved alone, and the halfway check
+    assert sorted(family.assembled) == [(0.03, 1.0e6), (0.03, 5.0e6), (0.265, 3.0e6), (0.5, 1.0e6)]
+    assert isinstance(family.assembled[(0.5, 1.0e6)], LinearSystem)
+
+
+@pytest.mark.parametrize(
+    "make",
+    [
+        # ε following λ² rather than λ: a curve along one parameter
+        lambda lam, k: Wheelset(conicity=lam, contact_angle_parameter=lam**2, yaw_stiffness=k),
+        # the yaw stiffness scaled by the conicity: affine in each alone, not in both
+        lambda lam, k: Wheelset(conicity=lam, yaw_stiffness=k * lam),
+    ],
+    ids=["curve", "product"],
+)
+def test_a_family_off_the_plane_is_assembled_at_every_point(make):
+    from raildyn.linear_model import _AffineFamily
+
+    family = _AffineFamily(make, (0.03, 1.0e6), (0.5, 5.0e6))
+    assert not family.affine and not family.constant("M")
+    points = [(0.1, 2.0e6), (0.3, 4.0e6)]
+    stacks = family.stacks(points)
+    for k, p in enumerate(points):
+        np.testing.assert_array_equal(stacks["K"][k], make(*p).linear_system().K)

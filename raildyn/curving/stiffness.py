@@ -41,7 +41,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.curving.steady import steady_curving
-from raildyn.linear_model import as_linear_system
+from raildyn.linear_model import _AffineFamily, as_linear_system
 from raildyn.stability.linear import _MAX_SCAN, _STATUSES, _crossings, _StateMatrices
 from raildyn.vehicles import Bogie
 
@@ -330,28 +330,24 @@ def _range(speed_range) -> tuple[float, float]:
 def _stiffness_matrices(model, ks: np.ndarray):
     """The model's system at the largest k_ψ and one K per k_ψ (M, C₀ and C₁ do not change).
 
-    K is linear in k_ψ when ``replace(yaw_stiffness=...)`` changes only the primary yaw
-    springs: K(k) = K(0) + k (K(k_top) − K(0))/k_top, checked at k_top/2; if the check
-    fails, every K is built.
+    K is affine in k_ψ when ``replace(yaw_stiffness=...)`` changes only the primary yaw springs:
+    the model as an affine family in k_ψ (``raildyn.linear_model._AffineFamily``, three
+    assemblies, checked at k_top/2) gives every K; where the check fails, every K is built.
     """
     top = float(ks[-1]) if ks[-1] > 0 else 1.0
-    try:
-        s0, s1, s_mid = (as_linear_system(model.replace(yaw_stiffness=k)) for k in (0.0, top, 0.5 * top))
-    except TypeError as err:
-        raise TypeError(f"model: replace(yaw_stiffness=...) failed: {err}") from None
 
-    def same(s):
-        return all(np.array_equal(getattr(s, n), getattr(s1, n)) for n in ("M", "C0", "C1"))
+    def make(k):
+        try:
+            return model.replace(yaw_stiffness=k)
+        except TypeError as err:
+            raise TypeError(f"model: replace(yaw_stiffness=...) failed: {err}") from None
 
-    dK = (s1.K - s0.K) / top
-    if (
-        same(s0)
-        and same(s_mid)
-        and np.abs(s0.K + 0.5 * top * dK - s_mid.K).max() <= 1e-12 * np.abs(s1.K).max()
-    ):
-        return s1, s0.K[None] + ks[:, None, None] * dK[None]
-    systems = [as_linear_system(model.replace(yaw_stiffness=float(k))) for k in ks]
-    if not all(same(s) for s in systems):
+    family = _AffineFamily(make, (0.0,), (top,))
+    s1 = family.assembled[(top,)]
+    if family.affine and all(family.constant(n) for n in ("M", "C0", "C1")):
+        return s1, family.stacks(ks[:, None])["K"]
+    systems = [as_linear_system(make(float(k))) for k in ks]
+    if not all(np.array_equal(getattr(s, n), getattr(s1, n)) for s in systems for n in ("M", "C0", "C1")):
         raise ValueError("model: replace(yaw_stiffness=...) must change only the stiffness matrix")
     return s1, np.stack([s.K for s in systems])
 

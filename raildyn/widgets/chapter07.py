@@ -18,6 +18,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from raildyn import plots, stability
+from raildyn.linear_model import _AffineFamily
 
 # the search of critical_speed_map on stacked matrices: the widget's systems are never objects
 from raildyn.stability.linear import _crossings, _StateMatrices
@@ -101,66 +102,13 @@ def car_roots():
 _CONICITIES = np.linspace(0.03, 0.5, 10)
 
 
-class _AffineFamily:
-    """The matrices M, C₀, C₁ and K of ``make(*p).linear_system()`` for many parameter vectors p at once.
-
-    The car's matrices are affine in the conicity (the creep stiffness 2af₁₁λ/r₀, and the
-    gravitational stiffnesses Wε/a and −Waϑ₀ whose ε and ϑ₀ follow λ:
-    :func:`raildyn.wheelset.creep_terms`) and in each suspension stiffness, with no product of two
-    of them. So A(p) = A(p₀) + Σᵢ (pᵢ − p₀ᵢ) ∂A/∂pᵢ, each slope from one more assembly: assembling
-    the car took longer than its critical speed, and a slider move now assembles nothing. The
-    point halfway between ``origin`` and ``far`` checks the plane to round-off (1e-12 of each
-    matrix): it sees both a curve along one parameter and a product of two. Where the check fails,
-    every point is assembled.
-    """
-
-    _NAMES = ("M", "C0", "C1", "K")
-
-    def __init__(self, make, origin, far):
-        self.make = make
-        self.origin = np.asarray(origin, dtype=float)
-        far = np.asarray(far, dtype=float)
-        base = make(*self.origin).linear_system()
-        self.base = {name: getattr(base, name) for name in self._NAMES}
-        self.slopes = []
-        for i in range(self.origin.size):
-            p = self.origin.copy()
-            p[i] = far[i]
-            moved = make(*p).linear_system()
-            self.slopes.append(
-                {n: (getattr(moved, n) - self.base[n]) / (far[i] - self.origin[i]) for n in self._NAMES}
-            )
-        middle = 0.5 * (self.origin + far)
-        assembled = make(*middle).linear_system()
-        guess = self._plane(middle[None])
-        self.affine = all(
-            np.abs(guess[n][0] - getattr(assembled, n)).max() <= 1e-12 * np.abs(getattr(assembled, n)).max()
-            for n in self._NAMES
-        )
-
-    def _plane(self, points: np.ndarray) -> dict:
-        step = points - self.origin
-        return {
-            n: self.base[n] + sum(step[:, i, None, None] * slope[n] for i, slope in enumerate(self.slopes))
-            for n in self._NAMES
-        }
-
-    def stacks(self, points) -> dict:
-        """{"M", "C0", "C1", "K"}: each (m, n, n), the model's matrices at each row of ``points``."""
-        points = np.atleast_2d(np.asarray(points, dtype=float))
-        if self.affine:
-            return self._plane(points)
-        systems = [self.make(*p).linear_system() for p in points]
-        return {n: np.stack([getattr(s, n) for s in systems]) for n in self._NAMES}
-
-
 # (λ, k_ψ, k_sψ) in (–, N·m/rad, N·m/rad): the corners of the widget's controls and conicities
 _CURVE_ORIGIN, _CURVE_FAR = (0.03, 2.0e6, 0.0), (0.5, 120.0e6, 2.0e6)
 
 
 @lru_cache(maxsize=1)
 def _curve_families() -> tuple[_AffineFamily, _AffineFamily]:
-    """The car and its bogie as affine families in (λ, k_ψ, k_sψ)."""
+    """The car and its bogie as affine families in (λ, k_ψ, k_sψ): a slider move assembles nothing."""
 
     def car(lam, k, ks):
         return _CAR.replace(conicity=lam, yaw_stiffness=k, secondary_yaw_stiffness=ks)
