@@ -23,6 +23,7 @@ from raildyn.vehicles import (
     MANCHESTER_CAR,
     MANCHESTER_VERTICAL,
     Bogie,
+    Car,
     FreightCar,
 )
 from raildyn.wheelset import Wheelset
@@ -197,25 +198,59 @@ def test_a_system_with_a_direct_input_force_does_not_know_its_reaction():
 
 
 # ---------------------------------------------------------------------------
-# The affine family (raildyn.linear_model._AffineFamily)
+# The affine family (raildyn.linear_model._AffineFamily), and chapter 7's curve widget's families
 
 
-def test_an_affine_family_is_the_assembled_models_and_knows_what_stays_put():
+def _wheelset_family(lam, k):
+    return Wheelset(conicity=lam, yaw_stiffness=k, lateral_stiffness=1.0e6)
+
+
+def _car_family(lam, k, ks):
+    return Car().replace(conicity=lam, yaw_stiffness=k, secondary_yaw_stiffness=ks)
+
+
+# Chapter 7's critical-speed curve: every corner of its controls, the defaults, points off the grid.
+_CURVE_POINTS = [
+    (0.03, 2.0e6, 0.0),
+    (0.5, 120.0e6, 2.0e6),
+    (0.15, 62.8e6, 1.0e6),
+    (0.41, 7.0e6, 0.37e6),
+    (0.08, 95.0e6, 1.9e6),
+]
+
+
+def _families():
+    """(family, make, points): a wheelset's, and the car's and bogie's of chapter 7's curve widget."""
     from raildyn.linear_model import _AffineFamily
+    from raildyn.widgets import chapter07
 
-    def make(lam, k):
-        return Wheelset(conicity=lam, yaw_stiffness=k, lateral_stiffness=1.0e6)
+    car, bogie = chapter07._curve_families()
+    return [
+        # inside, and beyond ``origin`` and ``far``
+        (_AffineFamily(_wheelset_family, (0.03, 1.0e6), (0.5, 5.0e6)), _wheelset_family,
+         [(0.1, 2.0e6), (0.45, 4.5e6), (0.02, 8.0e6)]),
+        (car, _car_family, _CURVE_POINTS),
+        (bogie, lambda *p: _car_family(*p).bogie, _CURVE_POINTS),
+    ]  # fmt: skip
 
-    family = _AffineFamily(make, (0.03, 1.0e6), (0.5, 5.0e6))
+
+@pytest.mark.parametrize("case", [0, 1, 2], ids=["wheelset", "chapter 7 car", "chapter 7 bogie"])
+def test_an_affine_family_gives_the_assembled_matrices(case):
+    family, make, points = _families()[case]
     assert family.affine
-    assert family.constant("M") and not family.constant("K")
-    points = [(0.1, 2.0e6), (0.45, 4.5e6), (0.02, 8.0e6)]  # inside, and beyond ``origin`` and ``far``
     stacks = family.stacks(points)
     for k, p in enumerate(points):
         assembled = make(*p).linear_system()
         for name in ("M", "C0", "C1", "K"):
             theirs = getattr(assembled, name)
             np.testing.assert_allclose(stacks[name][k], theirs, rtol=0.0, atol=1e-12 * np.abs(theirs).max())
+
+
+def test_an_affine_family_knows_what_stays_put_and_what_it_assembled():
+    from raildyn.linear_model import _AffineFamily
+
+    family = _AffineFamily(_wheelset_family, (0.03, 1.0e6), (0.5, 5.0e6))
+    assert family.constant("M") and not family.constant("K")
     # the systems it assembled: the origin, each parameter moved alone, and the halfway check
     assert sorted(family.assembled) == [(0.03, 1.0e6), (0.03, 5.0e6), (0.265, 3.0e6), (0.5, 1.0e6)]
     assert isinstance(family.assembled[(0.5, 1.0e6)], LinearSystem)
