@@ -63,6 +63,7 @@ __all__ = [
     "pure_rolling_offset",
     "rigid_bogie_wavelength",
     "track_on_arc",
+    "tread_contact_angles",
     "wheel_forces",
     "wickens_critical_speed",
 ]
@@ -431,15 +432,20 @@ def creep_terms(ws: Wheelset) -> CreepTerms:
     """The linear wheel–rail terms of one wheelset on its coordinates [y, ψ].
 
     From Kalker's linear law summed over the two wheels (Garg & Dukkipati 1984,
-    ch. 5; Wickens 2003, ch. 2):
+    ch. 5; Wickens 2003, ch. 2), with the creepages of
+    :func:`raildyn.contact.creep.wheelset_creepages` to first order:
 
-    * lateral:  F_y = −2f₂₂(ẏ/V − ψ) − 2f₂₃ψ̇/V − (Wε/a) y
-    * yaw:      M_z = −2af₁₁(aψ̇/V + λy/r₀) + 2f₂₃(ẏ/V − ψ) − 2f₃₃ψ̇/V + W a ϑ₀ ψ
+    * lateral:  F_y = −2f₂₂(ẏ/V − ψ) − 2f₂₃(ψ̇/V − εy/(a r₀)) − (Wε/a) y
+    * yaw:      M_z = −2af₁₁(aψ̇/V + λy/r₀) + 2f₂₃(ẏ/V − ψ) − 2f₃₃(ψ̇/V − εy/(a r₀)) + W a ϑ₀ ψ
 
-    The spin of the contact-angle difference is left out: a lateral force 2f₂₃εy/(a r₀) and a
-    yaw moment 2f₃₃εy/(a r₀), small beside the creep and suspension stiffnesses though not
-    beside W ε/a. :func:`raildyn.derivations.wheelset.tangent_wheelset` derives these terms
-    from the contact kinematics and shows what is left out.
+    The terms in εy/(a r₀) are the spin of the contact-angle difference: as the wheelset
+    shifts by y the two contact angles part by 2εy/a, and each wheel turning at V/r₀ about
+    its axle spins about its tilted contact normal by ∓ sin ϑ/r₀, which no longer cancel
+    between the wheels. They give a lateral force 2f₂₃εy/(a r₀), which pulls the wheelset
+    away from the centre and so cancels most of the gravitational stiffness Wε/a (for the
+    default wheelset the net lateral stiffness is a fifth of Wε/a), and a yaw moment
+    2f₃₃εy/(a r₀). :func:`raildyn.derivations.wheelset.tangent_wheelset` derives every term
+    from the contact kinematics.
 
     Parameters
     ----------
@@ -448,16 +454,26 @@ def creep_terms(ws: Wheelset) -> CreepTerms:
     Returns
     -------
     CreepTerms
+
+    Examples
+    --------
+    The net lateral stiffness of the default wheelset, Wε/a − 2f₂₃ε/(a r₀), against Wε/a:
+
+    >>> ws = Wheelset()
+    >>> terms = creep_terms(ws)
+    >>> net = terms.K_creep[0, 0] + terms.K_gravity[0, 0]
+    >>> round(float(terms.K_gravity[0, 0] / net), 2)
+    4.71
     """
     _checks.instance("ws", ws, Wheelset)
-    a, r0, lam = ws.half_gauge, ws.rolling_radius, ws.conicity
+    a, r0, lam, eps = ws.half_gauge, ws.rolling_radius, ws.conicity, ws.contact_angle_parameter
     f11, f22, f23, f33 = ws.f11, ws.f22, ws.f23, ws.f33
     # fmt: off
     C1 = np.array([[2 * f22,   2 * f23],
                    [-2 * f23,  2 * a**2 * f11 + 2 * f33]])
-    K_creep = np.array([[0.0,                   -2 * f22],
-                        [2 * a * f11 * lam / r0,  2 * f23]])
-    K_gravity = np.array([[ws.axle_load * ws.contact_angle_parameter / a, 0.0],
+    K_creep = np.array([[-2 * f23 * eps / (a * r0),                            -2 * f22],
+                        [2 * a * f11 * lam / r0 - 2 * f33 * eps / (a * r0),  2 * f23]])
+    K_gravity = np.array([[ws.axle_load * eps / a, 0.0],
                           [0.0, -ws.axle_load * a * ws.contact_angle]])
     # fmt: on
     return CreepTerms(C1, K_creep, K_gravity)
@@ -694,9 +710,10 @@ class WheelRailContact:
         [0, π/2)). None: the linear 2εy/a of the wheelset.
     tread_angles : callable or None
         [ϑ_L(y), ϑ_R(y)], the two tread contacts' angles, rad, vectorised: an array of shape
-        ``(2, *y.shape)``, each within ±π/2. They tilt each wheel's normal force in its lateral
-        force Y (:func:`raildyn.curving.quasi_static.quasi_static_curving`); the dynamics need only their
-        difference, ``contact_angle_difference``. None: ϑ₀ ± εy/a of the wheelset (a cone).
+        ``(2, *y.shape)``, each within ±π/2. Each wheel spins about its contact normal by
+        sin ϑ/r₀ (:func:`contact_forces`), and its normal force, tilted by ϑ, enters its lateral
+        force Y (:func:`raildyn.curving.quasi_static.quasi_static_curving`). None: ϑ₀ ± Δϑ(y)/2
+        of the wheelset (:func:`tread_contact_angles`; ϑ₀ ± εy/a on a cone).
 
     Each callable is tried once, at y = −e, 0 and e, and what it returns checked.
     """
@@ -838,14 +855,23 @@ class _Table:
 def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
     """Lateral force (N) and yaw moment (N·m) of the rails on a wheelset, nonlinear; arrays broadcast.
 
-    The creepages are those of :func:`raildyn.contact.creep.wheelset_creepages` with
-    r_L,R = r₀ ± Δr(y)/2 and no contact-angle spin: γ_x = ∓(aψ̇/V + Δr/(2r₀)),
-    γ_y = ẏ/V − ψ, spin ψ̇/V on the left/right wheel. Each wheel's longitudinal and
-    lateral linear force is reduced by :func:`raildyn.contact.creep.saturation_factor`
-    at μ W/2;
-    gravity acts through the contact-angle difference, and the flange as a
-    spring beyond the clearance. For small motion the result equals the linear
-    forces of :func:`creep_terms`.
+    Each wheel has the creepages of :func:`raildyn.contact.creep.wheelset_creepages` with
+    r_L,R = r₀ ± Δr(y)/2 and its own tread contact angle ϑ_L(y), ϑ_R(y)
+    (:func:`tread_contact_angles`): γ_x = ∓(aψ̇/V + Δr/(2r₀)), γ_y = ẏ/V − ψ and the spin
+    φ = ψ̇ cos ϑ/V ∓ sin ϑ/r₀ on the left/right wheel. Kalker's linear forces of each wheel,
+    F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ and M_z = f₂₃γ_y − f₃₃φ, are scaled together by the
+    saturation of Shen, Hedrick and Elkins (:func:`raildyn.contact.creep.saturation_factor`)
+    of that wheel's resultant √(F_x² + F_y²) at μ W/2, as
+    :func:`raildyn.contact.creep.shen_hedrick_elkins` scales them. Gravity acts through the
+    contact-angle difference, and the flange as a spring beyond the clearance.
+
+    One simplification: the spins ∓ sin ϑ_c/r₀ of the centred wheelset (ϑ_c its tread angles at
+    y = 0, ϑ₀ on a cone) are taken out of each wheel's spin. Their forces ±f₂₃ sin ϑ_c/r₀ are
+    equal and opposite and leave the wheelset's equations, as in the linear model; kept in each
+    wheel, they would take up part of its adhesion at rest (39 % of μW/2 on the default cone of
+    0.15, under 8 % on a tread of 2°) and the saturation's slope there would soften every creep
+    force about the centre. Left out, the nonlinear wheelset linearises about the centre to
+    exactly the forces of :func:`creep_terms`, and its Hopf point is the linear critical speed.
 
     Parameters
     ----------
@@ -881,24 +907,82 @@ def _motion(ws, contact, y, psi, ydot, psidot, speed) -> list:
 _MOTION = ("y", "psi", "ydot", "psidot")
 
 
-def _creep(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
-    """The left wheel's creepages γ_x, γ_y, the linear forces −f γ and their saturation factor; Δϑ(y).
+def tread_contact_angles(ws: Wheelset, contact: WheelRailContact, y) -> np.ndarray:
+    """The contact angles ϑ_L(y), ϑ_R(y) of a wheelset's two treads, rad.
 
-    The right wheel's longitudinal creepage and force are opposite, its others the same.
+    The contact's ``tread_angles`` where it has them (a profile pair,
+    :func:`profile_contact`); else ϑ₀ ± Δϑ(y)/2 with Δϑ(y) the contact's
+    ``contact_angle_difference`` or, on a cone, the linear 2εy/a of the wheelset.
+
+    Parameters
+    ----------
+    ws : Wheelset
+    contact : WheelRailContact
+    y : float or array_like
+        Lateral displacement of the wheelset relative to the rails, m, finite.
+
+    Returns
+    -------
+    ndarray, shape (2, *y.shape)
+        [ϑ_L, ϑ_R], rad.
+
+    Examples
+    --------
+    >>> ws = Wheelset(contact_angle=0.05, contact_angle_parameter=0.1)
+    >>> np.round(tread_contact_angles(ws, WheelRailContact(), 3e-3), 4).tolist()
+    [0.0504, 0.0496]
     """
-    a, r0 = ws.half_gauge, ws.rolling_radius
-    dr = (contact.rolling_radius_difference or _cone(ws.conicity))(y)
+    _checks.instance("ws", ws, Wheelset)
+    _checks.instance("contact", contact, WheelRailContact)
+    return np.stack(_angles(ws, contact, _checks.array("y", y))[:2])
+
+
+def _angles(ws: Wheelset, contact: WheelRailContact, y):
+    """ϑ_L(y), ϑ_R(y) and Δϑ(y) of :func:`tread_contact_angles`, unchecked."""
     if contact.contact_angle_difference is None:
-        dd = 2.0 * ws.contact_angle_parameter * np.asarray(y, dtype=float) / a
+        dd = 2.0 * ws.contact_angle_parameter * np.asarray(y, dtype=float) / ws.half_gauge
     else:
         dd = contact.contact_angle_difference(y)
-    creep = wheelset_creepages(speed, ydot, psi, psidot, r0 + dr / 2.0, r0 - dr / 2.0, r0, a, check=False)
-    xi_x, xi_y, spin = creep.longitudinal[0], creep.lateral[0], creep.spin[0]
+    if contact.tread_angles is None:
+        return ws.contact_angle + dd / 2.0, ws.contact_angle - dd / 2.0, dd
+    left, right = contact.tread_angles(y)
+    return left, right, dd
+
+
+def _creep(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
+    """Each wheel's creepages, Kalker's linear forces and their saturation factor; Δϑ(y).
+
+    Returns γ_x, γ_y, φ, F_x, F_y, M_z and the factor, each of shape (2, ...) (left, right),
+    and Δϑ.
+    """
+    r0 = ws.rolling_radius
+    dr = (contact.rolling_radius_difference or _cone(ws.conicity))(y)
+    theta_l, theta_r, dd = _angles(ws, contact, y)
+    creep = wheelset_creepages(
+        speed,
+        ydot,
+        psi,
+        psidot,
+        r0 + dr / 2.0,
+        r0 - dr / 2.0,
+        r0,
+        ws.half_gauge,
+        theta_l,
+        theta_r,
+        check=False,
+    )
+    xi_x, xi_y = creep.longitudinal, creep.lateral
+    # Less the centred wheelset's spins ∓ sin ϑ_c/r₀, whose forces cancel (contact_forces says why).
+    centred_l, centred_r = _angles(ws, contact, 0.0)[:2]
+    spin = (
+        creep.spin
+        + np.array([np.sin(centred_l), -np.sin(centred_r)]).reshape((2,) + (1,) * (creep.spin.ndim - 1)) / r0
+    )
     fx = -ws.f11 * xi_x
     fy = -ws.f22 * xi_y - ws.f23 * spin
-    # The two wheels have the same lateral and opposite longitudinal force, so the same magnitude.
+    mz = ws.f23 * xi_y - ws.f33 * spin
     scale = saturation_factor(np.hypot(fx, fy), contact.friction * ws.axle_load / 2.0, check=False)
-    return xi_x, xi_y, spin, fx, fy, scale, dd
+    return xi_x, xi_y, spin, fx, fy, mz, scale, dd
 
 
 def _flange(contact: WheelRailContact, y):
@@ -910,10 +994,10 @@ def _flange(contact: WheelRailContact, y):
 def _contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
     """:func:`contact_forces` without the checks, for the right-hand sides (called at every step)."""
     a, W = ws.half_gauge, ws.axle_load
-    xi_x, xi_y, spin, fx, fy, scale, dd = _creep(ws, contact, y, psi, ydot, psidot, speed)
-    lateral = 2.0 * scale * fy - W / 2.0 * dd + _flange(contact, y)
-    yaw = -2.0 * a * scale * fx + 2.0 * (ws.f23 * xi_y - ws.f33 * spin) + W * a * ws.contact_angle * psi
-    return lateral, yaw
+    _, _, _, fx, fy, mz, scale, dd = _creep(ws, contact, y, psi, ydot, psidot, speed)
+    lateral = scale[0] * fy[0] + scale[1] * fy[1] - W / 2.0 * dd + _flange(contact, y)
+    yaw = a * (scale[1] * fx[1] - scale[0] * fx[0]) + scale[0] * mz[0] + scale[1] * mz[1]
+    return lateral, yaw + W * a * ws.contact_angle * psi
 
 
 @dataclass(frozen=True)
@@ -976,15 +1060,14 @@ def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, 
     (-42.3, 0.0)
     """
     y, psi, ydot, psidot, speed = _motion(ws, contact, y, psi, ydot, psidot, speed)
-    xi_x, xi_y, _, fx, fy, scale, _ = _creep(ws, contact, y, psi, ydot, psidot, speed)
+    xi_x, xi_y, _, fx, fy, _, scale, _ = _creep(ws, contact, y, psi, ydot, psidot, speed)
     tx, ty = scale * fx, scale * fy
     flange = _flange(contact, y)
-    wear = np.abs(tx * xi_x) + np.abs(ty * xi_y)
     return WheelForces(
-        np.stack([tx, -tx]),
-        np.stack([ty, ty]),
+        tx,
+        ty,
         np.stack([np.where(y > 0, flange, 0.0), np.where(y < 0, flange, 0.0)]),
-        np.stack([wear, wear]),
+        np.abs(tx * xi_x) + np.abs(ty * xi_y),
     )
 
 

@@ -253,8 +253,17 @@ def test_wheelset_creepages_of_a_shifted_coned_wheelset():
     assert c.longitudinal[0] == pytest.approx(-lam * y / r0)
     assert c.longitudinal[1] == pytest.approx(lam * y / r0)
     assert c.lateral[0] == pytest.approx(-1e-3)
-    assert c.spin[0] == pytest.approx(-math.sin(lam) / (r0 + lam * y))
-    assert c.spin[1] == pytest.approx(math.sin(lam) / (r0 - lam * y))
+    # the spin's roll term over the axle's nominal radius r₀ (it turns at V/r₀), not the wheel's own
+    assert c.spin[0] == pytest.approx(-math.sin(lam) / r0, rel=1e-14)
+    assert c.spin[1] == pytest.approx(math.sin(lam) / r0, rel=1e-14)
+
+
+def test_the_yaw_rate_spins_a_steep_contact_by_its_cosine():
+    # On a flange at 70° the yaw rate's share of the spin is ψ̇ cos 70°/V, a third of ψ̇/V (book ch. 4).
+    v, psid, r0, flange = 30.0, 0.3, 0.46, math.radians(70.0)
+    c = wheelset_creepages(v, 0.0, 0.0, psid, r0, r0, r0, 0.75, flange, 0.02)
+    assert c.spin[0] == pytest.approx(psid * math.cos(flange) / v - math.sin(flange) / r0, rel=1e-14)
+    assert c.spin[1] == pytest.approx(psid * math.cos(0.02) / v + math.sin(0.02) / r0, rel=1e-14)
 
 
 def test_bad_input():

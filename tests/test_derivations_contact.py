@@ -1,8 +1,9 @@
 """Chapter 4's creepages derived from the contact points' velocities (raildyn.derivations.contact).
 
 The derived (first-order) creepages are held to raildyn.contact.wheelset_creepages: to round-off
-where the two are the same formulas (no contact angle), and within the second-order terms the
-package's book form keeps (sin ϑ/r_L for ϑ/r₀) otherwise.
+where the two are the same formulas (no contact angle), and within the higher-order terms the
+package's exact spin keeps (ψ̇ cos ϑ/V ∓ sin ϑ/r₀ for ψ̇/V ∓ ϑ/r₀) otherwise; the package's spin
+is held to the derivation's exact (unlinearised) spin to round-off at any contact angle.
 """
 
 from __future__ import annotations
@@ -51,16 +52,34 @@ def test_derived_creepages_equal_the_package_without_contact_angles(V, yd, psi, 
 @settings(max_examples=60, deadline=None)
 @given(V=speeds, psid=yaw_rates, r0=radii, dL=shifts, dR=shifts, thL=st.floats(-0.1, 0.1),
        thR=st.floats(-0.1, 0.1))  # fmt: skip
-def test_spin_differs_from_the_book_form_by_second_order_terms_only(V, psid, r0, dL, dR, thL, thR):
-    # Derived: φ = ψ̇/V ∓ ϑ/r₀; package (book): ψ̇/V ∓ sin ϑ/r. Their difference is
-    # ϑ/r₀ − sin ϑ/r = (ϑ − sin ϑ)/r + ϑ(r − r₀)/(r r₀), bounded by |ϑ|³/(6r) + |ϑ||r − r₀|/(r r₀):
-    # a product of two small quantities, as a first-order derivation leaves out.
+def test_spin_differs_from_the_first_order_form_by_higher_order_terms_only(V, psid, r0, dL, dR, thL, thR):
+    # Derived to first order: φ = ψ̇/V ∓ ϑ/r₀; package (exact): ψ̇ cos ϑ/V ∓ sin ϑ/r₀. Their difference,
+    # ψ̇(1 − cos ϑ)/V ∓ (ϑ − sin ϑ)/r₀, is bounded by |ψ̇|ϑ²/(2V) + |ϑ|³/(6r₀): products of small
+    # quantities, as a first-order derivation leaves out.
     r = np.array([r0 + dL, r0 + dR])
     th = np.array([thL, thR])
     mine = creepages().numeric(V, 0.0, 0.0, psid, *r, r0, 0.75, thL, thR).spin
     theirs = contact.wheelset_creepages(V, 0.0, 0.0, psid, *r, r0, 0.75, thL, thR).spin
-    bound = np.abs(th) ** 3 / (6 * r) + np.abs(th) * np.abs(r - r0) / (r * r0)
+    bound = abs(psid) * th**2 / (2 * V) + np.abs(th) ** 3 / (6 * r0)
     assert np.all(np.abs(mine - theirs) <= bound * (1 + 1e-9) + 1e-15 * (abs(psid) / V + 1))
+
+
+@settings(max_examples=60, deadline=None)
+@given(V=speeds, psid=yaw_rates, r0=radii, dL=shifts, dR=shifts, thL=st.floats(-1.5, 1.5),
+       thR=st.floats(-1.5, 1.5))  # fmt: skip
+def test_package_spin_is_the_angular_velocity_about_the_contact_normal(V, psid, r0, dL, dR, thL, thR):
+    # The derivation's exact spin, ω·n/V = ψ̇ cos ϑ/V ∓ sin ϑ/r₀ before it is linearised, against the
+    # package at any contact angle, a flange's included: the same formula, so to round-off of its
+    # two terms. The yaw rate's term carries cos ϑ (a third of it at 70°) and the roll's term the
+    # axle's angular speed V/r₀, the nominal radius, whatever the contact's own rolling radius.
+    d = creepages()
+    exact = [next(s.equation.rhs for s in d.steps if str(s.equation.lhs) == f"varphi_{k}") for k in "LR"]
+    spin = sympy.lambdify(list(d.symbols), exact, modules="numpy")
+    args = (V, 0.0, 0.0, psid, r0 + dL, r0 + dR, r0, 0.75, thL, thR)
+    mine = np.array(spin(*args), dtype=float)
+    theirs = contact.wheelset_creepages(*args).spin
+    scale = abs(psid) / V + 1.0 / r0
+    np.testing.assert_allclose(theirs, mine, rtol=0.0, atol=RELATIVE * scale)
 
 
 def test_creepages_in_closed_form():

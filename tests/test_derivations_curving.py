@@ -127,12 +127,14 @@ def test_bending_shear_gives_the_self_steering_closed_form():
 
 
 def test_wheelset_curving_closed_forms():
-    # Hand-written entries: K[0, 1] = −2f₂₂ (lateral creep of the yaw), K[1, 0] = 2aλf₁₁/r₀; the
-    # centred wheelset's yaw load per unit κ is −2a²f₁₁ − 2f₃₃ (longitudinal creep and spin).
+    # Hand-written entries: K[0, 1] = −2f₂₂ (lateral creep of the yaw), K[1, 0] = 2aλf₁₁/r₀ − 2f₃₃ε/(a r₀)
+    # (longitudinal creep, and the spin of the contact-angle difference); the centred wheelset's yaw
+    # load per unit κ is −2a²f₁₁ − 2f₃₃ (longitudinal creep and spin).
     d = wheelset_curving()
     symbol = {str(s): s for s, _ in d.parameters}
     f11, f22, f33, a, r0, lam = (symbol[n] for n in ("f_11", "f_22", "f_33", "a", "r_0", "lambda"))
+    eps = symbol["varepsilon"]
     assert d.K[0, 1] == -2 * f22
-    assert sympy.simplify(d.K[1, 0] - 2 * a * lam * f11 / r0) == 0
+    assert sympy.simplify(d.K[1, 0] - (2 * a * lam * f11 / r0 - 2 * f33 * eps / (a * r0))) == 0
     assert sympy.simplify(d.GK[1, 0] - (-2 * a**2 * f11 - 2 * f33)) == 0
     assert d.M == sympy.zeros(2, 2) and d.C == sympy.zeros(2, 2)

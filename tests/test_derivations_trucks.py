@@ -119,10 +119,15 @@ def test_three_piece_truck_by_hand():
     s = _symbols(d)
     # The side frames slide ±d ψ_b as the bolster yaws: their mass at d adds to its inertia.
     assert _entry(d, "M", "psi_b", "psi_b") == s["I_b"] + s["m_f"] * s["d"] ** 2
-    # Wheelset creep: lateral force −2f₂₂(ẏ/V − ψ), yaw moment −2af₁₁λy/r₀ and the gravitational W a ϑ₀ ψ.
+    # Wheelset creep: lateral force −2f₂₂(ẏ/V − ψ), yaw moment −2af₁₁λy/r₀ with the spin of the
+    # contact-angle difference 2f₃₃εy/(a r₀), and the gravitational W a ϑ₀ ψ.
     assert _entry(d, "K", "y_1", "psi_1") == -2 * s["f_22"]
+    spin = 2 * s["f_33"] * s["epsilon"] / (s["a"] * s["r_0"])
     assert (
-        sympy.simplify(_entry(d, "K", "psi_1", "y_1") - 2 * s["a"] * s["f_11"] * s["lambda"] / s["r_0"]) == 0
+        sympy.simplify(
+            _entry(d, "K", "psi_1", "y_1") - (2 * s["a"] * s["f_11"] * s["lambda"] / s["r_0"] - spin)
+        )
+        == 0
     )
     assert (
         sympy.simplify(

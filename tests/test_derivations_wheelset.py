@@ -57,16 +57,21 @@ def test_tangent_wheelset_closed_forms():
     assert d.GC == sympy.zeros(2, 2)
 
 
-def test_tangent_wheelset_states_what_it_leaves_out():
-    # The spin of the contact-angle difference, left out as raildyn.wheelset leaves it out:
-    # 2f₂₃ε(y − y_t)/(a r₀) laterally and 2f₃₃ε(y − y_t)/(a r₀) in yaw.
+def test_tangent_wheelset_shows_the_spin_of_the_contact_angle_difference():
+    # The spin of the contact-angle difference, 2f₂₃εy/(a r₀) laterally and 2f₃₃εy/(a r₀) in yaw (at
+    # y_t = 0), shown as a step and held in K: −2f₂₃ε/(a r₀) beside the gravitational Wε/a, and
+    # −2f₃₃ε/(a r₀) beside 2af₁₁λ/r₀.
     d = tangent_wheelset()
-    (step,) = [s for s in d.steps if "left out" in s.caption]
-    f23, f33, eps, a, r0 = (_symbol(d, n) for n in ("f_23", "f_33", "varepsilon", "a", "r_0"))
+    (step,) = [s for s in d.steps if "spin of the contact-angle difference" in s.caption]
+    f11, f23, f33, eps, a, r0, lam, W = (
+        _symbol(d, n) for n in ("f_11", "f_23", "f_33", "varepsilon", "a", "r_0", "lambda", "W")
+    )
     y, _ = d.coordinates
-    y_t, _ = d.inputs
-    expected = sympy.Matrix([2 * f23, 2 * f33]) * eps * (y - y_t) / (a * r0)
+    expected = sympy.Matrix([2 * f23, 2 * f33]) * eps * y / (a * r0)
     assert (step.equation.rhs - expected).applyfunc(sympy.simplify) == sympy.zeros(2, 1)
+    k_y = _symbol(d, "k_y")
+    assert sympy.simplify(d.K[0, 0] - (k_y + W * eps / a - 2 * f23 * eps / (a * r0))) == 0
+    assert sympy.simplify(d.K[1, 0] - (2 * a * f11 * lam / r0 - 2 * f33 * eps / (a * r0))) == 0
 
 
 def test_free_wheelset_is_the_tangent_one_without_suspension():

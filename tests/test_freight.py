@@ -17,6 +17,7 @@ from raildyn.integrators import stable_step
 from raildyn.vehicles import response as resp
 from raildyn.vehicles.freight import (
     GDU_ORE_CAR,
+    LABELS,
     FreightCar,
     RockAndRoll,
     WedgeFriction,
@@ -59,6 +60,24 @@ def test_roll_stiffness_loses_the_weight_term():
     )
     # the resonance sits where one cross-level cycle per rail meets f_roll
     assert CAR.roll_resonance_speed(11.9) == pytest.approx(CAR.natural_frequencies().roll_hz * 11.9)
+
+
+@pytest.mark.parametrize("car", [CAR, GDU_ORE_CAR], ids=["hopper", "GDU"])
+def test_pitch_turns_about_the_spring_plane_as_the_roll_does(car):
+    # Pitch about the transverse axis in the spring plane (the centre plates hold the body along the
+    # track): the weight h above it takes m g h from 4 k l², and the inertia is I_θ + m h², written
+    # here from the class docstring; the pitch frequency is then √((4kl² − mgh)/(I_θ + mh²))/(2π).
+    k, l, m, h = car.nest_stiffness, car.semi_truck_spacing, car.body_mass, car.cg_height
+    stiffness, inertia = 4 * k * l**2 - m * GRAVITY * h, car.body_pitch_inertia + m * h**2
+    mats = car.matrices(10.0)
+    pitch = LABELS.index("body θ")
+    assert mats.K[pitch, pitch] == pytest.approx(stiffness, rel=1e-14)
+    assert mats.M[pitch, pitch] == pytest.approx(inertia, rel=1e-14)
+    hz = car.natural_frequencies().pitch_hz
+    assert hz == pytest.approx(np.sqrt(stiffness / inertia) / (2 * np.pi), rel=1e-14)
+    # Raising the centre of gravity lowers both the pitch and the roll frequencies.
+    taller = car.replace(cg_height=h + 0.2).natural_frequencies()
+    assert taller.pitch_hz < hz and taller.roll_hz < car.natural_frequencies().roll_hz
 
 
 def test_wedge_energy_is_four_f_x():

@@ -266,7 +266,9 @@ def test_lateral_car_follows_long_alignment():
 
 def test_lateral_car_static_cross_level_balances_the_rail_forces():
     """A constant cross-level c: K q = G_K c. The suspension forces are internal, so the lateral
-    wheel–rail forces on the four wheelsets must add to zero: Σ [−(Wε/a) y + 2f₂₂ψ − W c/(2a)] = 0."""
+    wheel–rail forces on the four wheelsets must add to zero:
+    Σ [−(Wε/a − 2f₂₃ε/(a r₀)) y + 2f₂₂ψ − W c/(2a)] = 0, the gravitational stiffness less the spin of the
+    contact-angle difference."""
     from raildyn.vehicles import MANCHESTER_CAR
 
     v = MANCHESTER_CAR.linear_system()
@@ -278,7 +280,9 @@ def test_lateral_car_static_cross_level_balances_the_rail_forces():
     for b in "12":
         for k in "12":
             y, psi = q[v.labels.index(f"wheelset{b}{k} y")], q[v.labels.index(f"wheelset{b}{k} ψ")]
-            total += -ws.axle_load * ws.contact_angle_parameter / ws.half_gauge * y + 2 * ws.f22 * psi + push
+            eps, a = ws.contact_angle_parameter, ws.half_gauge
+            lateral = ws.axle_load * eps / a - 2 * ws.f23 * eps / (a * ws.rolling_radius)
+            total += -lateral * y + 2 * ws.f22 * psi + push
     # a 15×15 solve with creep coefficients ~10⁷ against pushes ~10³ N: rounding, 1e-6 of the push
     assert total == pytest.approx(0.0, abs=1e-6 * abs(4 * push))
     assert abs(q[v.labels.index("body φ")]) > 0

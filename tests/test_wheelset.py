@@ -97,10 +97,13 @@ def test_wheelset_matrices_by_hand():
             [-2 * ws.f23 / V, 2 * a**2 * ws.f11 / V + 2 * ws.f33 / V + ws.yaw_damping],
         ]
     )
+    # With the spin of the contact-angle difference: 2f₂₃εy/(a r₀) laterally, 2f₃₃εy/(a r₀) in yaw.
+    eps = ws.contact_angle_parameter
+    spin = np.array([2 * ws.f23, 2 * ws.f33]) * eps / (a * r0)
     K_hand = np.array(
         [
-            [ws.lateral_stiffness + W * ws.contact_angle_parameter / a, -2 * ws.f22],
-            [2 * a * ws.f11 * lam / r0, ws.yaw_stiffness + 2 * ws.f23 - W * a * ws.contact_angle],
+            [ws.lateral_stiffness + W * eps / a - spin[0], -2 * ws.f22],
+            [2 * a * ws.f11 * lam / r0 - spin[1], ws.yaw_stiffness + 2 * ws.f23 - W * a * ws.contact_angle],
         ]
     )
     np.testing.assert_allclose(C, C_hand, rtol=1e-14)
@@ -214,15 +217,27 @@ def _jacobian(rhs, x0, h=1e-9):
     return J, f0
 
 
-def test_nonlinear_wheelset_linearises_to_the_linear_model():
+@pytest.mark.parametrize("centred_angle", [0.0, 0.15])
+def test_nonlinear_wheelset_linearises_to_the_linear_model(centred_angle):
     # The Jacobian at the centred state (central differences, h = 1 nm) equals A(V) of the linear
-    # model; the saturation's slope is 1 − O(u) and the flange is inactive, so 1e-5 relative.
-    ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
+    # model, the spin of the contact-angle difference included; the saturation's slope is 1 − O(u) and
+    # the flange is inactive, so 1e-5 relative. The nonlinear spin ψ̇ cos ϑ/V ∓ sin ϑ/r₀ linearises to
+    # cos ϑ₀ (ψ̇/V ∓ εy/(a r₀)), where the linear model takes cos ϑ₀ = 1: exact at ϑ₀ = 0, and at
+    # ϑ₀ = 0.15 the spin's entries (f₂₃ in ÿ, f₃₃ in ψ̈) differ by 1 − cos ϑ₀ = 1.1 % of themselves.
+    ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6, contact_angle=centred_angle)
     model = NonlinearWheelset(ws, WheelRailContact(), 40.0)
     J, f0 = _jacobian(model.rhs, np.zeros(4))
     A = ws.linear_system().state_matrices([40.0])[0]
     np.testing.assert_allclose(f0, 0.0, atol=1e-12)
-    np.testing.assert_allclose(J, A, rtol=1e-5, atol=1e-5 * np.abs(A).max())
+    if centred_angle == 0.0:
+        np.testing.assert_allclose(J, A, rtol=1e-5, atol=1e-5 * np.abs(A).max())
+        return
+    a, r0, eps, V = ws.half_gauge, ws.rolling_radius, ws.contact_angle_parameter, 40.0
+    spin = np.zeros((4, 4))  # the spin's entries of A: lateral force and yaw moment over the inertias
+    spin[2, [0, 3]] = np.array([2 * ws.f23 * eps / (a * r0), -2 * ws.f23 / V]) / ws.mass
+    spin[3, [0, 3]] = np.array([2 * ws.f33 * eps / (a * r0), -2 * ws.f33 / V]) / ws.yaw_inertia
+    expected = A - (1 - np.cos(centred_angle)) * spin
+    np.testing.assert_allclose(J, expected, rtol=1e-5, atol=1e-5 * np.abs(A).max())
 
 
 def test_generic_nonlinear_model_equals_the_wheelset_one():
@@ -253,10 +268,23 @@ def test_flange_force_acts_only_beyond_the_clearance():
     d = contact.flange_clearance
     inside, _ = contact_forces(ws, contact, 0.99 * d, 0.0, 0.0, 0.0, 30.0)
     outside, _ = contact_forces(ws, contact, d + 1e-3, 0.0, 0.0, 0.0, 30.0)
-    gravity = -ws.axle_load * ws.contact_angle_parameter / ws.half_gauge
-    # Inside: only gravity (creep saturates the −2f22(−ψ) term, zero here as ψ = 0) — exact.
-    assert inside == pytest.approx(gravity * 0.99 * d, rel=1e-12)
-    assert outside == pytest.approx(gravity * (d + 1e-3) - contact.flange_stiffness * 1e-3, rel=1e-12)
+    a, r0, eps, th0 = ws.half_gauge, ws.rolling_radius, ws.contact_angle_parameter, ws.contact_angle
+    gravity = -ws.axle_load * eps / a
+    limit = contact.friction * ws.axle_load / 2
+
+    def spin(y):
+        # Each wheel's lateral spin force f₂₃|sin(ϑ₀ ± εy/a) − sin ϑ₀|/r₀ (outwards on both, away from the
+        # centre), beside its longitudinal creep force f₁₁λy/r₀ of the rolling-radius difference;
+        # Shen–Hedrick–Elkins scales both by F_sat/F with F_sat = μN(u − u²/3 + u³/27), u = F/(μN) < 3.
+        lateral = ws.f23 * np.abs(np.sin(th0 + np.array([1, -1]) * eps * y / a) - np.sin(th0)) / r0
+        u = np.hypot(ws.f11 * ws.conicity * y / r0, lateral) / limit
+        assert np.all(u < 3)
+        return float(np.sum(lateral * (1 - u / 3 + u**2 / 27)))
+
+    # Inside: gravity and the spin of the contact-angle difference (ψ = ẏ = ψ̇ = 0).
+    assert inside == pytest.approx(gravity * 0.99 * d + spin(0.99 * d), rel=1e-12)
+    expected = gravity * (d + 1e-3) + spin(d + 1e-3) - contact.flange_stiffness * 1e-3
+    assert outside == pytest.approx(expected, rel=1e-12)
 
 
 # ---------------------------------------------------------------------------

@@ -785,14 +785,22 @@ def wheelset_creepages(
 ) -> WheelsetCreepages:
     """Creepages of a wheelset on straight track (Garg & Dukkipati 1984, ch. 4–5).
 
-    The wheelset runs at ``speed`` V with the angular speed V/r₀ of its nominal
-    rolling radius; y is positive to the left, the yaw ψ positive anticlockwise
-    seen from above, the contact angles ϑ positive when the contact moves
-    towards the flange. Then, with a the half distance between the contacts,
+    The wheelset runs at ``speed`` V and turns about its axle at Ω = V/r₀, the angular
+    speed of its nominal rolling radius; y is positive to the left, the yaw ψ positive
+    anticlockwise seen from above, the contact angles ϑ positive when the contact moves
+    towards the flange. Each creepage is a slip velocity of the contact point divided by
+    V, so all three share the one radius that sets Ω, the nominal r₀: the rolling radius
+    r_L or r_R enters only through the rim's speed Ω r in γ_x, and the spin is the angular
+    velocity about the contact normal, ψ̇ cos ϑ ∓ Ω sin ϑ, over V. With a the half
+    distance between the contacts,
 
-        γ_x,L = (r₀ − r_L)/r₀ − a ψ̇/V,      γ_x,R = (r₀ − r_R)/r₀ + a ψ̇/V,
+        γ_x,L = (r₀ − r_L)/r₀ − a ψ̇/V,            γ_x,R = (r₀ − r_R)/r₀ + a ψ̇/V,
         γ_y   = ẏ/V − ψ,
-        φ_L = ψ̇/V − sin ϑ_L / r_L,          φ_R = ψ̇/V + sin ϑ_R / r_R.
+        φ_L = ψ̇ cos ϑ_L / V − sin ϑ_L / r₀,     φ_R = ψ̇ cos ϑ_R / V + sin ϑ_R / r₀
+
+    (Kalker 1967; :func:`raildyn.derivations.contact.creepages` derives them from the
+    velocities of the contact points). The cos ϑ matters at a steep contact: on a flange
+    at 70° the yaw rate gives only a third of the spin it gives on the tread.
 
     Parameters
     ----------
@@ -852,8 +860,8 @@ def _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r):
         (r0 - r_l) / r0 - yaw,
         (r0 - r_r) / r0 + yaw,
         y_dot / v - psi,
-        spin - np.sin(d_l) / r_l,
-        spin + np.sin(d_r) / r_r,
+        spin * np.cos(d_l) - np.sin(d_l) / r0,
+        spin * np.cos(d_r) + np.sin(d_r) / r0,
     )
     # Broadcast only when the shapes differ: the nonlinear wheelset calls this at every evaluation
     # of its right-hand side, with arrays of one shape.

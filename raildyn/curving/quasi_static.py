@@ -43,7 +43,13 @@ from raildyn.curving.geometry import (
 )
 from raildyn.curving.steady import SteadyCurving, steady_curving
 from raildyn.errors import SolverError
-from raildyn.wheelset import NonlinearLateral, contact_forces, track_on_arc, wheel_forces
+from raildyn.wheelset import (
+    NonlinearLateral,
+    contact_forces,
+    track_on_arc,
+    tread_contact_angles,
+    wheel_forces,
+)
 
 __all__ = ["CurvingMap", "QuasiStaticCurving", "curving_map", "quasi_static_curving"]
 
@@ -313,16 +319,13 @@ def _wheels(
         out["wear"][j] = forces.wear_number.sum(axis=0)
         out["guiding"][j] = contact_forces(ws, model.contact, y[j], psi[j], 0.0, V / R, V)[0]
         # Q: each wheel's share of the axle load with the roll moment of m a_q at h; a flange bears
-        # F/tan ϑ_f of it, the tread the rest, tilted by its contact angle (the contact's tread_angles, or
-        # the cone's ϑ₀ ± εy/a) towards the track's centre line (inner wheel: to the right, outer: left).
+        # F/tan ϑ_f of it, the tread the rest, tilted by its contact angle (tread_contact_angles)
+        # towards the track's centre line (inner wheel: to the right, outer: left).
         a, W = ws.half_gauge, ws.axle_load
         transfer = 0.5 * W * h / a * a_q / GRAVITY
         Q[j] = 0.5 * W - transfer, 0.5 * W + transfer
         tread = Q[j] - np.abs(forces.flange) / tan_flange
-        if model.contact.tread_angles is not None:
-            tilt = model.contact.tread_angles(y[j])
-        else:  # the cone's
-            tilt = ws.contact_angle + np.array([[1.0], [-1.0]]) * ws.contact_angle_parameter * y[j] / a
+        tilt = tread_contact_angles(ws, model.contact, y[j])
         Y[j] = forces.lateral + forces.flange + np.array([[-1.0], [1.0]]) * tread * np.tan(tilt)
     if np.any(Q <= 0.0):
         raise SolverError(

@@ -232,10 +232,12 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
     psi = q[ipsi] - psi_t  # from the local tangent, anticlockwise
     fx, fy = np.empty(len(x)), np.empty(len(x))
     for k, (_, _, ws) in enumerate(system.wheelsets):
-        r0, lam = ws.rolling_radius, ws.conicity
-        # Steady in the turning axes: ẏ = 0, ψ̇ = V/R. The contact-angle spin is left out, as in
-        # raildyn.wheelset.creep_terms, so that these are the forces of the linear equations.
-        c = wheelset_creepages(V, 0.0, psi[k], V / R, r0 + lam * y[k], r0 - lam * y[k], r0, ws.half_gauge)
+        r0, lam, a = ws.rolling_radius, ws.conicity, ws.half_gauge
+        # Steady in the turning axes: ẏ = 0, ψ̇ = V/R. The spin of the contact-angle difference, first
+        # order as in raildyn.wheelset.creep_terms (−2εy/(a r₀) over the two wheels), so that these are
+        # the forces of the linear equations.
+        c = wheelset_creepages(V, 0.0, psi[k], V / R, r0 + lam * y[k], r0 - lam * y[k], r0, a)
+        spin = c.spin.sum() - 2 * ws.contact_angle_parameter * y[k] / (a * r0)
         fx[k] = -ws.f11 * c.longitudinal[1]  # the right wheel, outer in a left-hand curve
-        fy[k] = ws.f22 * c.lateral.sum() + ws.f23 * c.spin.sum()  # −F_y: towards the outer rail
+        fy[k] = ws.f22 * c.lateral.sum() + ws.f23 * spin  # −F_y: towards the outer rail
     return SteadyCurving(R, V, D, a_q, system.labels, q, x, -y, -psi, fx, fy)

@@ -437,7 +437,7 @@ def stability_and_curving(
     >>> from raildyn.vehicles import Car
     >>> r = stability_and_curving(Car(), [5e6, 60e6], balance_speed(600.0, 0.1), 600.0, 0.1)
     >>> [round(3.6 * v) for v in r.critical_speed], [round(1e3 * float(a), 2) for a in r.angle_of_attack]
-    ([155, 281], [0.17, 1.73])
+    ([154, 280], [0.16, 1.72])
     """
     _checks.linear_model("model", model)
     if not callable(getattr(model, "replace", None)):

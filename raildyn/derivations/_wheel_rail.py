@@ -4,7 +4,7 @@ generalized forces of its wheel–rail forces by virtual work, linearised.
 :mod:`raildyn.derivations.lateral` (bogie, car) and :mod:`raildyn.derivations.trucks` (freight truck,
 locomotive) build their wheelsets from here, so that the wheel–rail forces of every lateral vehicle
 are one derivation. The single wheelset of chapter 5 (:mod:`raildyn.derivations.wheelset`) is
-derived in full in its own module, with the spin terms this one leaves out, as the notebook shows.
+derived in full in its own module, step by step, as the notebook shows.
 """
 
 from __future__ import annotations
@@ -119,16 +119,22 @@ def _wheel_rail_of(w: WheelsetSymbols, V) -> tuple:
     * longitudinal creepage γ_x = (V − s a ψ̇ − Ω r)/V with Ω = V/r₀: the contact point of the wheel moves
       forward at V − s a ψ̇ and its rim backward at Ω r;
     * lateral creepage γ_y = (ẏ − V sin ψ)/V: the wheel rolls along its own plane, yawed by ψ;
-    * spin φ = ψ̇/V: the contact angle's part ∓ϑ/r₀ is left out, as raildyn does (its constant parts cancel
-      between the wheels, its difference 2εy/(a r₀) is small);
+    * the contact angle ϑ = ϑ₀ + s ε (y − y_a)/a;
+    * spin φ = ψ̇ cos ϑ/V − s sin ϑ/r₀, the angular velocity about the contact normal over V
+      (:func:`raildyn.derivations.contact.creepages`), for a small angle ψ̇/V − s ϑ/r₀ (as the normal
+      force's lateral component below): its constant parts ∓ϑ₀/r₀ cancel between the wheels, its
+      difference 2ε(y − y_a)/(a r₀) does not;
     * Kalker's linear law per wheel: F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ, M_z = f₂₃γ_y − f₃₃φ;
-    * the rail's normal force, W/2 on each wheel, tilted by the contact angle ϑ = ϑ₀ + s ε (y − y_a)/a,
-      pushes the wheel laterally by −s (W/2) ϑ;
+    * the rail's normal force, W/2 on each wheel, tilted by the contact angle, pushes the wheel
+      laterally by −s (W/2) ϑ;
     * on a cross-level Δz the track rolls by Δz/(2a), and the weight's component in its plane pushes the
       wheelset toward the low rail by −W Δz/(2a).
 
     The forces work through the displacements of the contact point, the point (0, s a) of the wheelset:
-    x = −s a sin ψ and y + s a (cos ψ − 1); the spin moment through ψ. The generalized forces are
+    x = −s a sin ψ and y + s a (cos ψ − 1) in the track's axes, where the normal force acts; the creep
+    force F_y lies along the axle, along which the point moves by cos ψ δy; the spin moment works
+    through ψ. (The two wheels' spin forces ±f₂₃ϑ₀/r₀ at rest lie on the axle's line: a yaw turns
+    them together and they make no couple.) The generalized forces are
     linearised about rest before they join the equations (first-order Taylor polynomials).
     """
     y, psi, ya, c = coordinates(r"y psi y_a \Delta{}z")  # c: the cross-level Δz
@@ -139,15 +145,16 @@ def _wheel_rail_of(w: WheelsetSymbols, V) -> tuple:
         radius = w.r0 + s * w.lam * (y - ya)
         gx = (V - s * w.a * psid - V / w.r0 * radius) / V
         gy = (yd - V * sympy.sin(psi)) / V
-        spin = psid / V
+        angle = w.theta0 + s * w.eps * (y - ya) / w.a
+        spin = psid / V - s * angle / w.r0  # ψ̇ cos ϑ/V − s sin ϑ/r₀ for a small angle, as in the normal force
         Fx = -w.f11 * gx
         Fy = -w.f22 * gy - w.f23 * spin
         Mz = w.f23 * gy - w.f33 * spin
-        angle = w.theta0 + s * w.eps * (y - ya) / w.a
         normal = -s * w.W / 2 * angle
         pairs += [
             (Fx, -s * w.a * sympy.sin(psi)),
-            (Fy + normal, y + s * w.a * (sympy.cos(psi) - 1)),
+            (Fy, y),  # along the axle: the contact point moves along it by cos ψ δy (first order: δy)
+            (normal, y + s * w.a * (sympy.cos(psi) - 1)),  # across the rails, in the track's axes
             (Mz, psi),
         ]
         if s == 1:

@@ -62,27 +62,32 @@ def _wheelset_in_curve(y, psi, x, kappa):
     gx_L = -_a * kappa - _lam * y_r / _r0  # (V − aΩ − ω r_L)/V
     gx_R = _a * kappa + _lam * y_r / _r0  # (V + aΩ − ω r_R)/V
     gy = -psi_r  # (ẏ − V ψ_r)/V on both wheels
-    spin = kappa  # Ω/V; the contact-angle spin ±ϑ₀/r₀ cancels over the two wheels and is left out
+    # Spin Ω/V ∓ ϑ/r₀ at the contact angles ϑ₀ ± εy_r/a (first order): the ϑ₀ parts cancel over the
+    # two wheels, the difference 2εy_r/a does not.
+    spin_L = kappa - (_theta0 + _eps * y_r / _a) / _r0
+    spin_R = kappa + (_theta0 - _eps * y_r / _a) / _r0
     # Kalker's linear law on each wheel, forces on the wheel: F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ,
     # M_z = f₂₃γ_y − f₃₃φ; the longitudinal forces at ±a turn the wheelset by −a F_xL + a F_xR.
     Fx_L, Fx_R = -_f11 * gx_L, -_f11 * gx_R
-    F_creep = 2 * (-_f22 * gy - _f23 * spin)
-    M_creep = -_a * Fx_L + _a * Fx_R + 2 * (_f23 * gy - _f33 * spin)
+    F_creep = 2 * (-_f22 * gy) - _f23 * (spin_L + spin_R)
+    M_creep = -_a * Fx_L + _a * Fx_R + 2 * _f23 * gy - _f33 * (spin_L + spin_R)
     # Gravitational forces of the contact geometry (chapter 5): the rails' normal forces, tilted by
     # the contact angles ϑ₀ ± εy/a, push the displaced wheelset back (W ε/a) and their longitudinal
     # components yaw it further (W a ϑ₀).
     F_grav = -_W * _eps / _a * y_r
     M_grav = _W * _a * _theta0 * psi_r
     Fy, Mz = sympy.expand(F_creep + F_grav), sympy.expand(M_creep + M_grav)
-    gamma_y, phi = sympy.symbols("gamma_y varphi")
+    gamma_y = sympy.Symbol("gamma_y")
     steps = (
         Step("the track under the wheelset: displaced and turned",
              sympy.Eq(sympy.Matrix(sympy.symbols("y_t psi_t")), sympy.Matrix([y_t, psi_t]))),
         Step("longitudinal creepage, left (inner) and right (outer) wheel",
              sympy.Eq(sympy.Matrix([sympy.Symbol("gamma_xL"), sympy.Symbol("gamma_xR")]),
                       sympy.Matrix([gx_L, gx_R]))),
-        Step("lateral creepage and spin, each wheel",
-             sympy.Eq(sympy.Matrix([gamma_y, phi]), sympy.Matrix([gy, spin]))),
+        Step("lateral creepage, each wheel", sympy.Eq(gamma_y, gy)),
+        Step("spin, left (inner) and right (outer) wheel",
+             sympy.Eq(sympy.Matrix([sympy.Symbol("varphi_L"), sympy.Symbol("varphi_R")]),
+                      sympy.Matrix([spin_L, spin_R]))),
         Step("lateral force on the wheelset (creep and gravitational)", sympy.Eq(sympy.Symbol("F_y"), Fy)),
         Step("yaw moment on the wheelset (creep and gravitational)", sympy.Eq(sympy.Symbol("M_z"), Mz)),
     )  # fmt: skip

@@ -215,8 +215,8 @@ def vertical_locomotive() -> Derivation:
 def freight_rock_and_roll() -> Derivation:
     """The freight car's body bouncing, pitching and rolling on its four spring nests (linear model).
 
-    Coordinates q = (z, θ, φ): the height of the body's roll axis, which lies in the spring plane
-    (m), the pitch (rad, front up) and the roll (rad, left side up). The nests stand at x = ±l (the
+    Coordinates q = (z, θ, φ): the height of the body's pitch and roll axes, which lie in the spring
+    plane (m), the pitch (rad, front up) and the roll (rad, left side up). The nests stand at x = ±l (the
     truck centres) and y = ±d (the side frames, left positive); each carries k and, in the linear
     model, the viscous c that stands for its wedges. A side frame rides on its two wheels, so the
     nest on it is pushed up by the mean of the two rail heights under them: with w₁…w₈ the rail
@@ -224,17 +224,17 @@ def freight_rock_and_roll() -> Derivation:
 
         u = z + x θ + y φ − ½ (w on that rail under the leading axle + under the trailing axle).
 
-    The centre of gravity lies h above the roll axis; rolling by φ moves it to (−h sin φ,
-    z + h cos φ) in the cross-section, so the body's weight adds U_g = m g (z + h cos φ), whose
-    ½ (−m g h) φ² lowers the roll stiffness to 4 k d² − m g h (chapter 6's rock and roll). The pitch
-    inertia I_θ is taken, as the model takes it, about a transverse axis through the centre of
-    gravity: the height h does not enter the pitch (the model leaves out its m h² and − m g h there).
+    The body turns about axes in the spring plane, where the trucks hold it at its centre plates,
+    and its centre of gravity lies h above them; pitching by θ and rolling by φ move it to
+    (−h sin θ, −h sin φ, z + h cos θ cos φ), so the body's weight adds U_g = m g z_G, whose
+    ½ (−m g h)(θ² + φ²) lowers the pitch stiffness to 4 k l² − m g h and the roll stiffness to
+    4 k d² − m g h (chapter 6's rock and roll).
 
-        T = ½ m (ẏ_G² + ż_G²) + ½ I_φ φ̇² + ½ I_θ θ̇²,
+        T = ½ m (ẋ_G² + ẏ_G² + ż_G²) + ½ I_θ θ̇² + ½ I_φ φ̇²,
         U = ½ k Σ u² + m g z_G,   D = ½ c Σ u̇²,
 
-    with I_φ the roll inertia about the centre of gravity; Lagrange's equations then give the roll
-    inertia about the roll axis, I_φ + m h², by the parallel-axis theorem.
+    with I_θ and I_φ the inertias about the centre of gravity; Lagrange's equations then give the
+    inertias about the axes in the spring plane, I + m h², by the parallel-axis theorem.
 
     Returns
     -------
@@ -256,10 +256,11 @@ def freight_rock_and_roll() -> Derivation:
     h, c = sympy.symbols("h c", nonnegative=True)
     g = sympy.Symbol("g", positive=True)
     zd, thd, phd = (v.diff(time) for v in q)
-    # The centre of gravity in the cross-section (lateral, vertical), the roll axis at height z:
-    # (−h sin φ, z + h cos φ), the cosine to second order, which the weight's potential needs.
-    y_g, z_g = -h * ph, z + h * (1 - ph**2 / 2)
-    T = m * (y_g.diff(time) ** 2 + z_g.diff(time) ** 2) / 2 + I_ph * phd**2 / 2 + I_th * thd**2 / 2
+    # The centre of gravity h above the axes in the spring plane, those at height z: (−h sin θ, −h sin φ,
+    # z + h cos θ cos φ), the cosines to second order, which the weight's potential needs.
+    x_g, y_g, z_g = -h * th, -h * ph, z + h * (1 - th**2 / 2 - ph**2 / 2)
+    T = m * (x_g.diff(time) ** 2 + y_g.diff(time) ** 2 + z_g.diff(time) ** 2) / 2
+    T += I_ph * phd**2 / 2 + I_th * thd**2 / 2
     nests = []
     for truck, x in enumerate((l, -l)):
         for side, y in enumerate((d, -d)):
@@ -296,8 +297,10 @@ def freight_rock_and_roll() -> Derivation:
                 sympy.Eq(sympy.Matrix(sympy.symbols("u_1:5")), sympy.Matrix(nests), evaluate=False),
             ),
             Step(
-                "centre of gravity in the cross-section (lateral, vertical)",
-                sympy.Eq(sympy.Matrix(sympy.symbols("y_G z_G")), sympy.Matrix([y_g, z_g]), evaluate=False),
+                "centre of gravity (longitudinal, lateral, vertical)",
+                sympy.Eq(
+                    sympy.Matrix(sympy.symbols("x_G y_G z_G")), sympy.Matrix([x_g, y_g, z_g]), evaluate=False
+                ),
             ),
             Step("kinetic energy", _eq("T", T)),
             Step("potential energy of the nests and of the weight", _eq("U", U_springs + U_weight)),

@@ -63,11 +63,10 @@ def _contact(s: dict, y, psi, yd, psid, V, offset, path_yaw, turning, tilt):
     ``offset`` is the wheelset's displacement relative to the rails, y − y_t; ``path_yaw`` the
     direction of its path (0 on tangent track); ``turning`` the yaw rate of the axes (0 on
     tangent track); ``tilt`` the roll of the rails' plane by the cross-level. Returns the
-    generalized forces (with the spin's contact-angle terms, and without), and the steps.
+    force pairs and the steps.
     """
     r0, a, lam, eps, th0 = (s[k][0] for k in ("r_0", "a", "lambda", "varepsilon", "vartheta_0"))
     f11, f22, f23, f33, W = (s[k][0] for k in ("f_11", "f_22", "f_23", "f_33", "W"))
-    spin_share = sympy.Symbol("s_spin")  # 1: the spin of the contact-angle difference kept; 0: left out
     # Contact geometry of a cone on the rails: radii and angles follow the offset.
     r_L, r_R = r0 + lam * offset, r0 - lam * offset
     th_L, th_R = th0 + eps * offset / a, th0 - eps * offset / a
@@ -80,9 +79,11 @@ def _contact(s: dict, y, psi, yd, psid, V, offset, path_yaw, turning, tilt):
     v_xL = V - a * yaw_rate - Omega * r_L
     v_xR = V + a * yaw_rate - Omega * r_R
     v_y = yd - V * (psi - path_yaw)
-    # Spin: the angular velocity about each contact normal, ψ̇ cos ϑ ∓ ω_y sin ϑ (small angles).
-    w_L = yaw_rate - spin_share * Omega * (th_L - th0) - Omega * th0
-    w_R = yaw_rate + spin_share * Omega * (th_R - th0) + Omega * th0
+    # Spin: the angular velocity about each contact normal, tilted by ϑ towards the track's centre,
+    # ψ̇ cos ϑ ∓ ω_y sin ϑ (raildyn.derivations.contact.creepages), to first order in the small
+    # contact angle as the normal forces' lateral components N sin ϑ ≈ N ϑ below.
+    w_L = yaw_rate - Omega * th_L
+    w_R = yaw_rate + Omega * th_R
     g_xL, g_xR = sympy.expand(v_xL / V), sympy.expand(v_xR / V)
     g_y = sympy.expand(v_y / V)
     p_L, p_R = sympy.expand(w_L / V), sympy.expand(w_R / V)
@@ -96,7 +97,6 @@ def _contact(s: dict, y, psi, yd, psid, V, offset, path_yaw, turning, tilt):
     Fn_R = N * (th_R - tilt)
     return {
         "pairs": (Fx_L, Fx_R, Fy_L, Fy_R, Mz, Fn_L, Fn_R),
-        "spin_share": spin_share,
         "steps": (
             Step("rolling radius of the left wheel", _eq("r_L", r_L)),
             Step("rolling radius of the right wheel", _eq("r_R", r_R)),
@@ -105,11 +105,8 @@ def _contact(s: dict, y, psi, yd, psid, V, offset, path_yaw, turning, tilt):
             Step("longitudinal creepage, left wheel: (V − a ψ̇ − ω_y r_L)/V", _eq("gamma_xL", g_xL)),
             Step("longitudinal creepage, right wheel: (V + a ψ̇ − ω_y r_R)/V", _eq("gamma_xR", g_xR)),
             Step("lateral creepage, both wheels", _eq("gamma_y", g_y)),
-            Step(
-                "spin creepage, left wheel (s_spin = 1: with the contact-angle difference)",
-                _eq("varphi_L", p_L),
-            ),
-            Step("spin creepage, right wheel", _eq("varphi_R", p_R)),
+            Step("spin creepage, left wheel: (ψ̇ cos ϑ_L − ω_y sin ϑ_L)/V, small ϑ_L", _eq("varphi_L", p_L)),
+            Step("spin creepage, right wheel: (ψ̇ cos ϑ_R + ω_y sin ϑ_R)/V, small ϑ_R", _eq("varphi_R", p_R)),
             Step("Kalker: longitudinal creep force, left wheel", _eq("F_xL", Fx_L)),
             Step("Kalker: lateral creep force, left wheel", _eq("F_yL", Fy_L)),
             Step("Kalker: spin moments of both wheels", _eq("M_z", Mz)),
@@ -124,7 +121,8 @@ def _forces(contact: dict, y, psi, a, rail_yaw) -> tuple:
     points (±a along the axle; the lateral ones along the axle itself), the spin moments about z,
     the normal forces across the rails (turned by ``rail_yaw``) at the contact points.
 
-    Returns Q with the spin's contact-angle terms left out, and the terms left out.
+    Returns Q, and the part of it that the spin of the contact-angle difference gives (the terms
+    in f₂₃ and f₃₃ that the offset y − y_t moves), for a step to show.
     """
     Fx_L, Fx_R, Fy_L, Fy_R, Mz, Fn_L, Fn_R = contact["pairs"]
     q = [y, psi]
@@ -152,11 +150,7 @@ def _forces(contact: dict, y, psi, a, rail_yaw) -> tuple:
         (Fn_L, across_rails(1)),
         (Fn_R, across_rails(-1)),
     ]
-    full = generalized_forces([(sympy.expand(f), u) for f, u in pairs], q).applyfunc(sympy.expand)
-    share = contact["spin_share"]
-    kept = full.subs(share, 0)
-    left_out = (full.subs(share, 1) - kept).applyfunc(sympy.expand)
-    return kept, left_out
+    return generalized_forces([(sympy.expand(f), u) for f, u in pairs], q).applyfunc(sympy.expand)
 
 
 def _parameters(s: dict, source) -> tuple:
@@ -171,17 +165,19 @@ def tangent_wheelset() -> Derivation:
     track's centre line, m) and the cross-level (left rail height less the right, m) at the
     wheelset, as :meth:`raildyn.wheelset.Wheelset.linear_system` takes them. The rolling radii
     r₀ ± λ(y − y_t) and contact angles ϑ₀ ± ε(y − y_t)/a give the slip velocity of each contact
-    point, hence the creepages γ_x = ∓(aψ̇/V + λ(y − y_t)/r₀), γ_y = ẏ/V − ψ, φ = ψ̇/V ∓ ϑ/r₀;
+    point, hence the creepages γ_x = ∓(aψ̇/V + λ(y − y_t)/r₀), γ_y = ẏ/V − ψ and the spin
+    φ = ψ̇ cos ϑ/V ∓ sin ϑ/r₀ ≈ ψ̇/V ∓ ϑ/r₀ (small contact angles, as in the normal forces);
     Kalker's linear law gives each wheel F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ, M_z = f₂₃γ_y − f₃₃φ
-    (Kalker 1967); the normal forces W/2, tilted by ϑ and by the cross-level's roll Δz/(2a), give
-    the lateral gravitational stiffness Wε/a, the yaw one −Waϑ₀ and the load −W Δz/(2a)
-    (Wickens 1965; Garg & Dukkipati 1984, ch. 5). Lagrange's equations with
-    T = ½mẏ² + ½I_zψ̇², the suspension's U and D, and the contact forces by virtual work give
-    M q̈ + (C₀ + C₁/V) q̇ + K q = G_K w.
+    (Kalker 1967); the normal forces W/2, tilted by ϑ and
+    by the cross-level's roll Δz/(2a), give the lateral gravitational stiffness Wε/a, the yaw one
+    −Waϑ₀ and the load −W Δz/(2a) (Wickens 1965; Garg & Dukkipati 1984, ch. 5). The spin of the
+    contact-angle difference, ∓ε(y − y_t)/(a r₀) on the two wheels, adds the lateral force
+    2f₂₃ε(y − y_t)/(a r₀) and the yaw moment 2f₃₃ε(y − y_t)/(a r₀) (shown in a step). Lagrange's
+    equations with T = ½mẏ² + ½I_zψ̇², the suspension's U and D, and the contact forces by virtual
+    work give M q̈ + (C₀ + C₁/V) q̇ + K q = G_K w.
 
-    Left out, as the package leaves them out: the spin of the contact-angle difference
-    (the lateral force 2f₂₃ε(y − y_t)/(a r₀) and the yaw moment 2f₃₃ε(y − y_t)/(a r₀), shown in
-    a step), the gyroscopic couple of the spinning axle, and the change of the normal loads.
+    Left out, as the package leaves them out: the gyroscopic couple of the spinning axle and the
+    change of the normal loads.
 
     Returns
     -------
@@ -204,7 +200,7 @@ def tangent_wheelset() -> Derivation:
     y_t, z_c = coordinates(r"y_t \Delta{}z")  # the cross-level Δz
     yd, psid = y.diff(time), psi.diff(time)
     contact = _contact(s, y, psi, yd, psid, V, y - y_t, 0, 0, z_c / (2 * a))
-    Q, left_out = _forces(contact, y, psi, a, 0)
+    Q = _forces(contact, y, psi, a, 0)
     T = m * yd**2 / 2 + I_z * psid**2 / 2
     U = k_y * y**2 / 2 + k_psi * psi**2 / 2
     D = c_y * yd**2 / 2 + c_psi * psid**2 / 2
@@ -213,6 +209,11 @@ def tangent_wheelset() -> Derivation:
     linear_Q = (-(C - sympy.diag(c_y, c_psi)) * q.diff(time) - (K - sympy.diag(k_y, k_psi)) * q).applyfunc(
         sympy.expand
     )
+    eps, f23, f33 = (s[k][0] for k in ("varepsilon", "f_23", "f_33"))
+
+    def contact_angle_spin(entry):
+        return sum(t for t in sympy.Add.make_args(entry) if t.has(eps) and (t.has(f23) or t.has(f33)))
+
     return Derivation(
         title="wheelset on its primary suspension, tangent track",
         coordinates=(y, psi),
@@ -228,8 +229,8 @@ def tangent_wheelset() -> Derivation:
             *contact["steps"],
             Step("generalized forces of the contact (y_t = Δz = 0), lateral and yaw", _eq("Q", linear_Q)),
             Step(
-                "left out, as raildyn.wheelset does: the spin of the contact-angle difference",
-                _eq("Delta_Q", left_out),
+                "of which the spin of the contact-angle difference (y_t = Δz = 0)",
+                _eq("Q_spin", linear_Q.applyfunc(contact_angle_spin)),
             ),
             Step("kinetic energy", _eq("T", T)),
             Step("potential energy of the primary springs", _eq("U", U)),
@@ -302,7 +303,7 @@ def curved_wheelset() -> Derivation:
     yd, psid = y.diff(time), psi.diff(time)
     y_t, psi_t = x**2 * kappa / 2, x * kappa
     contact = _contact(s, y, psi, yd, psid, V, y - y_t, x * kappa, V * kappa, 0)
-    Q, _ = _forces(contact, y, psi, a, psi_t)
+    Q = _forces(contact, y, psi, a, psi_t)
     Omega = V * kappa
     T = m * ((V - Omega * y) ** 2 + (yd + Omega * x) ** 2) / 2 + I_z * (psid + Omega) ** 2 / 2
     U = k_y * y**2 / 2 + k_psi * psi**2 / 2 - m * g * h_t / (2 * a_r) * y

@@ -9,14 +9,15 @@ evaluates M q̈ = −C_s q̇ − K_s q + Σ F_contact (− m a_q on a curve) fro
 microsecond. It is the right-hand side of the one compiled integrator,
 :mod:`raildyn.integrators._dopri`, which advances many rows (speeds, parameter sets) at once.
 
-The wheel–rail forces are those of :func:`raildyn.wheelset.contact_forces`, term for term: the
-creepages of :func:`raildyn.contact.creep.wheelset_creepages` with r = r₀ ± Δr(y)/2, Kalker's linear
-forces scaled by :func:`raildyn.contact.creep.saturation_factor`, gravity through Δϑ(y), and the
-flange spring beyond the clearance; Δr and Δϑ from the cone or from the tables of
-:func:`raildyn.wheelset.profile_contact`. A model this engine cannot hold (nonlinear suspension
-elements, whose force laws are Python functions, or contact functions other than a cone or a
-table) is reported by :func:`pack` raising :class:`NotCompiled`, and its callers take scipy's path.
-The tests hold this engine to the numpy right-hand side and to scipy's integration of it.
+The wheel–rail forces are those of :func:`raildyn.wheelset.contact_forces`, term for term: each
+wheel's creepages of :func:`raildyn.contact.creep.wheelset_creepages` with r = r₀ ± Δr(y)/2 and its
+tread angle ϑ(y), Kalker's linear forces scaled by :func:`raildyn.contact.creep.saturation_factor`,
+gravity through Δϑ(y), and the flange spring beyond the clearance; Δr, Δϑ and the tread angles
+from the cone or from the tables of :func:`raildyn.wheelset.profile_contact`. A model this engine
+cannot hold (nonlinear suspension elements, whose force laws are Python functions, or contact
+functions other than a cone or a table) is reported by :func:`pack` raising :class:`NotCompiled`,
+and its callers take scipy's path. The tests hold this engine to the numpy right-hand side and to
+scipy's integration of it.
 """
 
 from __future__ import annotations
@@ -36,7 +37,8 @@ _FRICTION, _CLEARANCE, _FLANGE = 13, 14, 15
 _DR, _DR_SIZE, _DD, _DD_SIZE = 16, 17, 18, 19  # table offsets and sizes; offset −1: the cone
 _MK, _MC, _MINV, _WHEELSETS, _LATERAL = 20, 21, 22, 23, 24  # offsets of M⁻¹K_s, M⁻¹C_s, M⁻¹, …
 _K, _MASS = 25, 26  # offsets of K_s and of the lateral mass vector (the forces at rest on an arc)
-_HEADER = 27
+_TL, _TL_SIZE, _TR, _TR_SIZE = 27, 28, 29, 30  # the tread angles' tables; offset −1: ϑ₀ ± Δϑ/2
+_HEADER = 31
 # One wheelset's fields, in this order, from its offset.
 _FIELDS = ("iy", "ipsi", "x", "a", "r0", "f11", "f22", "f23", "f33", "W", "eps", "theta0", "lam")
 _WS = len(_FIELDS)
@@ -56,6 +58,18 @@ def _table(contact, name):
     if type(fn) is not _Table:
         raise NotCompiled(f"contact {name} is a Python function, not a profile table")
     return fn.x, fn.f
+
+
+def _tread_tables(contact):
+    """The (x, f) tables of ϑ_L and ϑ_R, or (None, None) without tread angles; NotCompiled for a function."""
+    from raildyn.wheelset import _Table, _Tables
+
+    fn = contact.tread_angles
+    if fn is None:
+        return None, None
+    if type(fn) is not _Tables or len(fn.tables) != 2 or any(type(t) is not _Table for t in fn.tables):
+        raise NotCompiled("contact tread_angles is a Python function, not two profile tables")
+    return tuple((t.x, t.f) for t in fn.tables)
 
 
 def _parts(model):
@@ -104,6 +118,7 @@ def pack(model) -> np.ndarray:
     """
     M, K, C, wheelsets, lateral_mass, contact, curve, start = _parts(model)
     dr, dd = _table(contact, "rolling_radius_difference"), _table(contact, "contact_angle_difference")
+    tl, tr = _tread_tables(contact)
     n = M.shape[0]
     M_inv = np.linalg.inv(M)
     pieces = [(M_inv @ K).ravel(), (M_inv @ C).ravel(), M_inv.ravel()]
@@ -129,7 +144,7 @@ def pack(model) -> np.ndarray:
     for place, piece in zip((_MK, _MC, _MINV, _WHEELSETS, _LATERAL, _K, _MASS), pieces, strict=True):
         header[place] = offset
         offset += piece.size
-    for place, table in ((_DR, dr), (_DD, dd)):
+    for place, table in ((_DR, dr), (_DD, dd), (_TL, tl), (_TR, tr)):
         header[place] = -1.0
         if table is not None:
             header[place], header[place + 1] = offset, table[0].size
@@ -173,6 +188,23 @@ def _interp(row, offset, size, y):
 
 
 @numba.njit(cache=True, error_model="numpy")
+def _wheel(f11, f22, f23, f33, limit, xi_x, xi_y, spin):
+    """One wheel's saturated creep forces F_x, F_y and moment M_z (as ``raildyn.wheelset.contact_forces``).
+
+    Kalker's linear forces scaled by Shen–Hedrick–Elkins at the limit μW/2 (``saturation_factor``).
+    """
+    fx = -f11 * xi_x
+    fy = -f22 * xi_y - f23 * spin
+    mz = f23 * xi_y - f33 * spin
+    u = math.hypot(fx, fy) / limit
+    scale = 1.0
+    if u > 0.0:
+        v = min(u, 3.0)
+        scale = (v - v * v / 3.0 + v * v * v / 27.0) / u
+    return scale * fx, scale * fy, scale * mz
+
+
+@numba.njit(cache=True, error_model="numpy")
 def wheel_rail(row, w, y, psi, ydot, psidot, speed):
     """Lateral force (N) and yaw moment (N·m) of the rails on wheelset ``w`` of a packed row."""
     k = int(row[_WHEELSETS]) + _WS * w
@@ -180,26 +212,32 @@ def wheel_rail(row, w, y, psi, ydot, psidot, speed):
     W, eps, theta0, lam = row[k + 9], row[k + 10], row[k + 11], row[k + 12]
     dr = 2.0 * lam * y if row[_DR] < 0.0 else _interp(row, row[_DR], row[_DR_SIZE], y)
     dd = 2.0 * eps * y / a if row[_DD] < 0.0 else _interp(row, row[_DD], row[_DD_SIZE], y)
-    # The left wheel's creepages (wheelset_creepages with r_L = r₀ + Δr/2 and no contact-angle spin).
-    r_left = r0 + 0.5 * dr
-    xi_x = (r0 - r_left) / r0 - a * psidot / speed
+    # The tread angles at y and at the centre (whose spins, cancelling, contact_forces takes out).
+    if row[_TL] < 0.0:
+        dd0 = 0.0 if row[_DD] < 0.0 else _interp(row, row[_DD], row[_DD_SIZE], 0.0)
+        theta_l, theta_r = theta0 + 0.5 * dd, theta0 - 0.5 * dd
+        centred_l, centred_r = theta0 + 0.5 * dd0, theta0 - 0.5 * dd0
+    else:
+        theta_l = _interp(row, row[_TL], row[_TL_SIZE], y)
+        theta_r = _interp(row, row[_TR], row[_TR_SIZE], y)
+        centred_l = _interp(row, row[_TL], row[_TL_SIZE], 0.0)
+        centred_r = _interp(row, row[_TR], row[_TR_SIZE], 0.0)
+    # Each wheel's creepages, as wheelset_creepages with r = r₀ ± Δr/2 and the tread angles.
+    yaw = a * psidot / speed
     xi_y = ydot / speed - psi
     spin = psidot / speed
-    fx = -f11 * xi_x
-    fy = -f22 * xi_y - f23 * spin
-    # Shen–Hedrick–Elkins, as saturation_factor: the two wheels' forces have one magnitude.
-    u = math.hypot(fx, fy) / (row[_FRICTION] * W / 2.0)
-    scale = 1.0
-    if u > 0.0:
-        v = min(u, 3.0)
-        scale = (v - v * v / 3.0 + v * v * v / 27.0) / u
+    limit = row[_FRICTION] * W / 2.0
+    spin_l = spin * math.cos(theta_l) - math.sin(theta_l) / r0 + math.sin(centred_l) / r0
+    spin_r = spin * math.cos(theta_r) + math.sin(theta_r) / r0 - math.sin(centred_r) / r0
+    fx_l, fy_l, mz_l = _wheel(f11, f22, f23, f33, limit, (r0 - (r0 + 0.5 * dr)) / r0 - yaw, xi_y, spin_l)
+    fx_r, fy_r, mz_r = _wheel(f11, f22, f23, f33, limit, (r0 - (r0 - 0.5 * dr)) / r0 + yaw, xi_y, spin_r)
     flange = 0.0
     excess = abs(y) - row[_CLEARANCE]
     if excess > 0.0:
         flange = -row[_FLANGE] * excess * (1.0 if y > 0.0 else -1.0)
-    lateral = 2.0 * scale * fy - W / 2.0 * dd + flange
-    yaw = -2.0 * a * scale * fx + 2.0 * (f23 * xi_y - f33 * spin) + W * a * theta0 * psi
-    return lateral, yaw
+    lateral = fy_l + fy_r - W / 2.0 * dd + flange
+    yaw_moment = a * (fx_r - fx_l) + mz_l + mz_r + W * a * theta0 * psi
+    return lateral, yaw_moment
 
 
 @numba.njit(cache=True, error_model="numpy")

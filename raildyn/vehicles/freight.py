@@ -72,9 +72,14 @@ class FreightCar(LinearModelBase):
     semi-wheelbase is less than the semi truck spacing, and the roll stiffness
     4 k d² − m g h is > 0, d the semi spring spacing (else the body topples). The linear
     model's equations are derived from the energies in
-    :func:`raildyn.derivations.vertical.freight_rock_and_roll` (notebook 06, section 6.4); its
-    pitch turns about a transverse axis through the centre of gravity, so that the height h
-    enters the roll alone.
+    :func:`raildyn.derivations.vertical.freight_rock_and_roll` (notebook 06, section 6.4).
+
+    The body pitches about a transverse axis in the spring plane, as it rolls about a longitudinal
+    one there: the trucks hold the body at its centre plates, along the track as across it, so
+    that it turns about that plane and not about its centre of gravity, h above it. Both motions
+    therefore lift the centre of gravity over the axis, and the weight lowers both stiffnesses by
+    m g h: pitch 4 k l² − m g h (l the semi truck spacing), roll 4 k d² − m g h; both inertias are
+    taken about the spring plane, I + m h².
 
     Attributes
     ----------
@@ -145,6 +150,17 @@ class FreightCar(LinearModelBase):
         """Roll inertia about the spring plane, I + m h², kg·m²."""
         return self.body_roll_inertia + self.body_mass * self.cg_height * self.cg_height
 
+    @property
+    def pitch_stiffness(self) -> float:
+        """4 k l² − m g h, N·m/rad (l the semi truck spacing, h the centre of gravity's height)."""
+        s = self.semi_truck_spacing
+        return 4 * self.nest_stiffness * s * s - self.body_mass * GRAVITY * self.cg_height
+
+    @property
+    def pitch_inertia_spring_plane(self) -> float:
+        """Pitch inertia about the transverse axis in the spring plane, I + m h², kg·m²."""
+        return self.body_pitch_inertia + self.body_mass * self.cg_height * self.cg_height
+
     def natural_frequencies(self) -> BodyFrequencies:
         """Undamped bounce, pitch and roll frequencies on the springs alone (wedges sliding freely).
 
@@ -152,10 +168,10 @@ class FreightCar(LinearModelBase):
         -------
         BodyFrequencies
         """
-        k, s = self.nest_stiffness, self.semi_truck_spacing
+        k = self.nest_stiffness
         return BodyFrequencies(
             bounce_hz=float(np.sqrt(4 * k / self.body_mass) / (2 * np.pi)),
-            pitch_hz=float(np.sqrt(4 * k * s**2 / self.body_pitch_inertia) / (2 * np.pi)),
+            pitch_hz=float(np.sqrt(self.pitch_stiffness / self.pitch_inertia_spring_plane) / (2 * np.pi)),
             roll_hz=float(np.sqrt(self.roll_stiffness / self.roll_inertia_spring_plane) / (2 * np.pi)),
         )
 
@@ -227,11 +243,12 @@ class FreightCar(LinearModelBase):
         c = self.equivalent_damping
         asm = Assembler(LABELS, 8)
         asm.mass("body z", self.body_mass)
-        asm.mass("body θ", self.body_pitch_inertia)
+        asm.mass("body θ", self.pitch_inertia_spring_plane)
         asm.mass("body φ", self.roll_inertia_spring_plane)
         for g, h in self.nests():
             asm.element(dict(zip(LABELS, g, strict=True)), self.nest_stiffness, c, dict(enumerate(h)))
-        asm.block(["body φ"], K=[[-self.body_mass * GRAVITY * self.cg_height]])
+        # The weight h above the spring plane, about which the body pitches and rolls (class docstring).
+        asm.block(["body θ", "body φ"], K=-self.body_mass * GRAVITY * self.cg_height * np.eye(2))
         positions = np.repeat(self.axle_positions, 2)
         rails = np.tile([1.0, -1.0], 4)
         weight = np.array([-GRAVITY * self.body_mass, 0.0, 0.0])

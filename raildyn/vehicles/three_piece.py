@@ -598,10 +598,10 @@ def freight_car(loaded: bool = True) -> LateralFreightCar:
       pressed by their own springs).
 
     Linear critical speeds (:func:`~raildyn.stability.linear.critical_speed`, measured): empty
-    14.6 m/s (52 km/h; 0.77 Hz, the body swaying on the side frames' pendulums), unstable
-    from there up, strongly (the trucks hunt) above about 40 m/s; loaded 34.8 m/s
+    14.5 m/s (52 km/h; 0.77 Hz, the body swaying on the side frames' pendulums), unstable
+    from there up, strongly (the trucks hunt) above about 40 m/s; loaded 34.7 m/s
     (125 km/h; 1.27 Hz, trucks and body laterally), a weak instability (growth rate at most
-    0.25 1/s) that ends at 67.2 m/s. The load-proportional centre-plate friction and
+    0.25 1/s) that ends at 67.5 m/s. The load-proportional centre-plate friction and
     pendulum stiffness make the difference (``tests/test_freight_lateral.py``). With its
     friction sliding, the empty car hunts from 12.6 m/s (a cycle of about 9 mm at 0.7 Hz,
     :func:`~raildyn.stability.nonlinear.bifurcation_diagram` with ``method="BDF"``), below

@@ -263,6 +263,11 @@ ENTRIES = [
         # displacements and rates of either sign; arrays broadcast (the speeds too, each > 0)
         accepts={**{p: "zero negative list" for p in ("y", "psi", "ydot", "psidot")}, "speed": "list"},
     ),
+    fuzz(
+        "raildyn.wheelset.tread_contact_angles",
+        lambda: call(SOFT, wh.WheelRailContact(), 1e-3),
+        accepts={"y": "zero negative list"},  # a displacement of either side; arrays give arrays
+    ),
     fuzz("raildyn.wheelset.NonlinearWheelset", lambda: call(SOFT, wh.WheelRailContact(), 60.0)),
     fuzz("raildyn.wheelset.NonlinearWheelset.at_speed", lambda: on(NW, 50.0)),
     fuzz(
