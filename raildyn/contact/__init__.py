@@ -5,13 +5,16 @@
   Carter, Johnson–Vermeulen, Shen–Hedrick–Elkins and Polach.
 * :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states.
 * :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles; contact points, Δr(y),
-  contact angles and equivalent conicity.
+  contact angles and the equivalent conicity of a profile pair.
+* :mod:`~raildyn.contact.conicity` — equivalent conicity of a tabulated Δr(y): EN 15302's kinematic
+  method and the first harmonic.
 * :mod:`~raildyn.contact.comparison` — every creep law on one sweep of lateral creepage, side by side.
 
 The elastic constants default to the steel of :mod:`raildyn.constants` everywhere.
 """
 
 from raildyn.contact.comparison import CREEP_LAWS, LateralCreepCurves, lateral_creep_curves
+from raildyn.contact.conicity import harmonic_conicity, kinematic_conicity
 from raildyn.contact.creep import (
     KALKER_NU,
     POLACH_DRY,
@@ -43,7 +46,6 @@ from raildyn.contact.profiles import (
     contact_angles,
     contact_geometry,
     equivalent_conicity,
-    harmonic_conicity,
     rolling_radius_difference,
     s1002_wheel,
     uic60_rail,
@@ -80,6 +82,7 @@ __all__ = [
     "johnson_vermeulen",
     "kalker_coefficients",
     "kalker_linear",
+    "kinematic_conicity",
     "lateral_creep_curves",
     "polach",
     "polach_adhesion",
