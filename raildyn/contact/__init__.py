@@ -2,7 +2,7 @@
 
 * :mod:`~raildyn.contact.hertz` — Hertz's normal contact: ellipse, m and n, pressure, approach, stiffness.
 * :mod:`~raildyn.contact.creep` — creepages of a wheelset, Kalker's coefficients and linear theory,
-  Carter, Johnson–Vermeulen, Shen–Hedrick–Elkins and Polach.
+  Carter, Johnson–Vermeulen (with its own creep coefficients), Shen–Hedrick–Elkins and Polach.
 * :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states.
 * :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles; contact points, Δr(y),
   contact angles and the equivalent conicity of a profile pair.
@@ -21,6 +21,7 @@ from raildyn.contact.creep import (
     POLACH_WET,
     CreepCoefficients,
     CreepForces,
+    JohnsonVermeulenCoefficients,
     KalkerCoefficients,
     PolachAdhesion,
     WheelsetCreepages,
@@ -28,6 +29,7 @@ from raildyn.contact.creep import (
     carter_coefficient,
     creep_coefficients,
     johnson_vermeulen,
+    johnson_vermeulen_coefficients,
     kalker_coefficients,
     kalker_linear,
     polach,
@@ -61,6 +63,7 @@ __all__ = [
     "Flexibilities",
     "HertzCoefficients",
     "HertzContact",
+    "JohnsonVermeulenCoefficients",
     "KalkerCoefficients",
     "LateralCreepCurves",
     "RailProfile",
@@ -80,6 +83,7 @@ __all__ = [
     "hertz_coefficients",
     "hertz_contact",
     "johnson_vermeulen",
+    "johnson_vermeulen_coefficients",
     "kalker_coefficients",
     "kalker_linear",
     "kinematic_conicity",

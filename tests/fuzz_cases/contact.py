@@ -162,9 +162,15 @@ ENTRIES = [
     fuzz("raildyn.contact.carter", lambda: call(1e-3, 1e5, 0.3, 1.5e7), accepts={"longitudinal": SIGNED}),
     fuzz(
         "raildyn.contact.johnson_vermeulen",
-        lambda: call(1e-3, 2e-3, 1e5, 0.3, coefficients()),
-        accepts={"longitudinal": SIGNED, "lateral": SIGNED},
+        lambda: call(1e-3, 2e-3, 1e5, 0.3, 6e-3, 4e-3),
+        accepts={"longitudinal": SIGNED, "lateral": SIGNED, "poisson_ratio": "zero"},
     ),
+    fuzz(
+        "raildyn.contact.johnson_vermeulen_coefficients",
+        lambda: call(1.5, 0.3),
+        accepts={"a_over_b": "list", "poisson_ratio": "zero"},
+    ),
+    fuzz("raildyn.contact.JohnsonVermeulenCoefficients", lambda: call(5.0, 4.5), accepts=RESULT_ARRAYS),
     fuzz("raildyn.contact.saturation_factor", lambda: call(3e4, 1e4), accepts={"force": "zero list"}),
     fuzz(
         "raildyn.contact.shen_hedrick_elkins",
