@@ -441,7 +441,8 @@ def johnson_vermeulen_coefficients(a_over_b, poisson_ratio) -> JohnsonVermeulenC
     displacement of such a traction (Cerruti's solution) is quadratic inside the ellipse, so
     the no-slip condition holds everywhere in the adhesion area, and the creepage at vanishing
     force gives f_ii = G a b C_ii with C_ii = π/c_i, where, with Johnson's elliptic integrals
-    B, C, D (:func:`_elliptic_bcd`) of e² = 1 − (minor/major)²:
+    B = ∫cos²φ/Δ dφ, C = ∫sin²φ cos²φ/Δ³ dφ, D = ∫sin²φ/Δ dφ (over [0, π/2], Δ = √(1 − e² sin²φ);
+    D = (K − E)/e², B = K − D, C = (D − B)/e² in Legendre's K, E) of e² = 1 − (minor/major)²:
 
     * a ≤ b (g = a/b): c₁ = B − ν(D − C), c₂ = (1 − ν)B + ν(D − C);
     * a ≥ b (g = b/a): c₁ = g[(1 − ν)D + νC], c₂ = g(D − νC).

@@ -371,7 +371,10 @@ class ContactGeometry:
         return self.contact_angle[0] - self.contact_angle[1]
 
     def equivalent_conicity(self, amplitudes) -> np.ndarray:
-        """EN 15302's equivalent conicity λ_e(ŷ) of this table of Δr(y) (:func:`.kinematic_conicity`).
+        """EN 15302's equivalent conicity λ_e(ŷ) of this table of Δr(y).
+
+        The kinematic method of :func:`~raildyn.contact.conicity.kinematic_conicity` on the
+        table sorted by shift.
 
         Parameters
         ----------
