@@ -12,6 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
 from raildyn.contact import (
     KALKER_NU,
     POLACH_DRY,
@@ -23,6 +24,7 @@ from raildyn.contact import (
     carter_coefficient,
     creep_coefficients,
     johnson_vermeulen,
+    johnson_vermeulen_coefficients,
     kalker_coefficients,
     kalker_linear,
     polach,
@@ -135,13 +137,13 @@ def test_carter_closed_form_and_its_saturation():
 def test_johnson_vermeulen_and_she_are_bounded_and_start_on_the_linear_theory(xi, eta, mu):
     n = 1e5
     f = creep_coefficients(6e-3, 4e-3)
-    jv = johnson_vermeulen(xi, eta, n, mu, f)
+    jv = johnson_vermeulen(xi, eta, n, mu, 6e-3, 4e-3)
     she = shen_hedrick_elkins(xi, eta, 0.0, n, mu, f)
     # Bounded by μN up to rounding.
     assert math.hypot(jv.fx, jv.fy) <= mu * n * (1 + 1e-12)
     assert math.hypot(she.fx, she.fy) <= mu * n * (1 + 1e-12)
     # Monotone: more creepage in the same direction never lowers the resultant.
-    jv2 = johnson_vermeulen(xi * 1.1 + 1e-7, eta * 1.1, n, mu, f)
+    jv2 = johnson_vermeulen(xi * 1.1 + 1e-7, eta * 1.1, n, mu, 6e-3, 4e-3)
     she2 = shen_hedrick_elkins(xi * 1.1 + 1e-7, eta * 1.1, 0.0, n, mu, f)
     assert jv2.resultant >= jv.resultant - 1e-9 * n
     assert she2.resultant >= she.resultant - 1e-9 * n
@@ -152,12 +154,15 @@ def test_saturated_laws_tend_to_the_linear_theory_and_to_mu_n():
     f = creep_coefficients(6e-3, 4e-3)
     small = 1e-7
     lin = kalker_linear(small, 0.0, 0.0, f)
-    # At β = f11 ξ/(μN) ≈ 3e-5 the saturation factors differ from 1 by O(β): 1e-4.
-    assert johnson_vermeulen(small, 0.0, n, mu, f).fx == pytest.approx(lin.fx, rel=1e-4)
+    # At β = f11 ξ/(μN) ≈ 3e-5 the saturation factors differ from 1 by O(β): 1e-4. Johnson and
+    # Vermeulen start on their own linear law, −G a b C11 ξ with their C11, not on Kalker's.
+    c11 = johnson_vermeulen_coefficients(6e-3 / 4e-3, STEEL_POISSON_RATIO).c11
+    jv_lin = -STEEL_SHEAR_MODULUS * 6e-3 * 4e-3 * c11 * small
+    assert johnson_vermeulen(small, 0.0, n, mu, 6e-3, 4e-3).fx == pytest.approx(jv_lin, rel=1e-4)
     assert shen_hedrick_elkins(small, 0.0, 0.0, n, mu, f).fx == pytest.approx(lin.fx, rel=1e-4)
     assert polach(small, 0.0, 0.0, n, mu, 6e-3, 4e-3).fx == pytest.approx(lin.fx, rel=1e-4)
     big = 0.5
-    assert johnson_vermeulen(big, 0.0, n, mu, f).fx == pytest.approx(-mu * n, rel=1e-12)
+    assert johnson_vermeulen(big, 0.0, n, mu, 6e-3, 4e-3).fx == pytest.approx(-mu * n, rel=1e-12)
     assert shen_hedrick_elkins(big, 0.0, 0.0, n, mu, f).fx == pytest.approx(-mu * n, rel=1e-12)
     # Polach's arctan approaches μQ like 1 − 4/(πε): at ε ≈ 5e3 within 3e-4.
     assert polach(big, 0.0, 0.0, n, mu, 6e-3, 4e-3).fx == pytest.approx(-mu * n, rel=3e-4)
@@ -277,7 +282,7 @@ def test_bad_input():
         kalker_coefficients(1.0, -0.1)
     f = creep_coefficients(6e-3, 4e-3)
     with pytest.raises(ValueError, match="friction"):
-        johnson_vermeulen(0.01, 0.0, 1e5, 0.0, f)
+        johnson_vermeulen(0.01, 0.0, 1e5, 0.0, 6e-3, 4e-3)
     with pytest.raises(ValueError, match="friction"):
         shen_hedrick_elkins(0.01, 0.0, 0.0, 1e5, -0.1, f)
     with pytest.raises(ValueError, match="normal_load"):

@@ -19,6 +19,7 @@ from raildyn.contact import (
     contact_geometry,
     equivalent_conicity,
     harmonic_conicity,
+    kinematic_conicity,
     rolling_radius_difference,
     s1002_wheel,
     uic60_rail,
@@ -179,12 +180,12 @@ def test_geometry_plots_draw_and_move_their_lines():
         dr["rolling_radius_difference"].get_ydata(), 1e3 * s1002.rolling_radius_difference
     )
     np.testing.assert_allclose(ang["contact_angle"].get_ydata(), np.degrees(s1002.contact_angle[0]))
-    # The method is the harmonic linearisation of the same table (one call, identical numbers).
+    # The method is EN 15302's kinematic conicity of the same table (one call, identical numbers).
     np.testing.assert_array_equal(
         lam["equivalent_conicity"].get_ydata(),
-        harmonic_conicity(y, s1002.rolling_radius_difference, amp),
+        kinematic_conicity(y, s1002.rolling_radius_difference, amp),
     )
     cone = contact_geometry(conical_wheel(1 / 20), rail, y, roll=False)
     assert cone.plot_equivalent_conicity(amp, artists=lam) is lam and len(ax_l.lines) == 1
-    # A cone without roll: Δr = 2λy, so λ_e = λ at every amplitude (rounding of the quadrature).
+    # A cone without roll: Δr = 2λy, so λ_e = λ at every amplitude (rounding of the closed form).
     np.testing.assert_allclose(lam["equivalent_conicity"].get_ydata(), 0.05, rtol=1e-9)

@@ -2,22 +2,26 @@
 
 * :mod:`~raildyn.contact.hertz` — Hertz's normal contact: ellipse, m and n, pressure, approach, stiffness.
 * :mod:`~raildyn.contact.creep` — creepages of a wheelset, Kalker's coefficients and linear theory,
-  Carter, Johnson–Vermeulen, Shen–Hedrick–Elkins and Polach.
+  Carter, Johnson–Vermeulen (with its own creep coefficients), Shen–Hedrick–Elkins and Polach.
 * :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states.
 * :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles; contact points, Δr(y),
-  contact angles and equivalent conicity.
+  contact angles and the equivalent conicity of a profile pair.
+* :mod:`~raildyn.contact.conicity` — equivalent conicity of a tabulated Δr(y): EN 15302's kinematic
+  method and the first harmonic.
 * :mod:`~raildyn.contact.comparison` — every creep law on one sweep of lateral creepage, side by side.
 
 The elastic constants default to the steel of :mod:`raildyn.constants` everywhere.
 """
 
 from raildyn.contact.comparison import CREEP_LAWS, LateralCreepCurves, lateral_creep_curves
+from raildyn.contact.conicity import harmonic_conicity, kinematic_conicity
 from raildyn.contact.creep import (
     KALKER_NU,
     POLACH_DRY,
     POLACH_WET,
     CreepCoefficients,
     CreepForces,
+    JohnsonVermeulenCoefficients,
     KalkerCoefficients,
     PolachAdhesion,
     WheelsetCreepages,
@@ -25,6 +29,7 @@ from raildyn.contact.creep import (
     carter_coefficient,
     creep_coefficients,
     johnson_vermeulen,
+    johnson_vermeulen_coefficients,
     kalker_coefficients,
     kalker_linear,
     polach,
@@ -43,7 +48,6 @@ from raildyn.contact.profiles import (
     contact_angles,
     contact_geometry,
     equivalent_conicity,
-    harmonic_conicity,
     rolling_radius_difference,
     s1002_wheel,
     uic60_rail,
@@ -59,6 +63,7 @@ __all__ = [
     "Flexibilities",
     "HertzCoefficients",
     "HertzContact",
+    "JohnsonVermeulenCoefficients",
     "KalkerCoefficients",
     "LateralCreepCurves",
     "RailProfile",
@@ -78,8 +83,10 @@ __all__ = [
     "hertz_coefficients",
     "hertz_contact",
     "johnson_vermeulen",
+    "johnson_vermeulen_coefficients",
     "kalker_coefficients",
     "kalker_linear",
+    "kinematic_conicity",
     "lateral_creep_curves",
     "polach",
     "polach_adhesion",

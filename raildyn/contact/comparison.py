@@ -1,10 +1,11 @@
 """The creep-force laws of chapter 4 side by side on one sweep of lateral creepage.
 
-Kalker's linear theory, Carter's two-dimensional law and Johnson–Vermeulen's
-cubic (both with Kalker's initial slope), the saturation of Shen, Hedrick and
-Elkins, Polach's method and FASTSIM, all for the same contact ellipse, load and
-friction: the chart of the chapter's figure ``fig4.creep`` and of its creep-law
-widget, drawn by :meth:`LateralCreepCurves.plot`.
+Kalker's linear theory, Carter's two-dimensional law (with Kalker's initial slope),
+Vermeulen and Johnson's theory (with its own creep coefficients), the saturation of
+Shen, Hedrick and Elkins (Kalker's forces, spin included), Polach's method and
+FASTSIM, all for the same contact ellipse, load and friction: the chart of the
+chapter's figure ``fig4.creep`` and of its creep-law widget, drawn by
+:meth:`LateralCreepCurves.plot`.
 """
 
 from __future__ import annotations
@@ -165,9 +166,11 @@ def lateral_creep_curves(
 ) -> LateralCreepCurves:
     """Lateral creep force of every law of chapter 4 over a sweep of lateral creepage.
 
-    Carter's law and Johnson–Vermeulen's use Kalker's f₂₂ as their initial
-    slope, so every curve but Polach's (whose slope is Kalker's too) starts on
-    the linear theory; all saturate at μN except the linear theory.
+    Carter's law takes Kalker's f₂₂ as its initial slope, so it, SHE, Polach and
+    FASTSIM start on the linear theory; Vermeulen and Johnson start on their own,
+    steeper slope G a b C₂₂ (:func:`~raildyn.contact.creep.johnson_vermeulen_coefficients`),
+    and at zero spin that is all that parts them from SHE, whose saturation is their
+    cubic. All saturate at μN except the linear theory.
 
     Parameters
     ----------
@@ -207,7 +210,7 @@ def lateral_creep_curves(
     fy = {
         "kalker_linear": kalker_linear(0.0, eta, phi, f).fy,
         "carter": carter(eta, load, mu, f.f22),
-        "johnson_vermeulen": johnson_vermeulen(0.0, eta, load, mu, f).fy,
+        "johnson_vermeulen": johnson_vermeulen(0.0, eta, load, mu, a, b, shear_modulus, poisson_ratio).fy,
         "shen_hedrick_elkins": shen_hedrick_elkins(0.0, eta, phi, load, mu, f).fy,
         "polach": polach(0.0, eta, phi, load, mu, a, b, shear_modulus, poisson_ratio).fy,
         "fastsim": fastsim(0.0, eta, phi, load, mu, a, b, shear_modulus, poisson_ratio, fields=False).fy,

@@ -28,6 +28,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from raildyn import _checks
+from raildyn.contact.conicity import kinematic_conicity
 
 __all__ = [
     "ContactGeometry",
@@ -37,7 +38,6 @@ __all__ = [
     "contact_angles",
     "contact_geometry",
     "equivalent_conicity",
-    "harmonic_conicity",
     "rolling_radius_difference",
     "s1002_wheel",
     "uic60_rail",
@@ -48,9 +48,6 @@ _STEP = 0.05e-3  # m; sampling of the profiles and of the contact search, refine
 _RADIUS_MAX = 2.0  # m; the largest railway wheels (steam locomotives' drivers) have a radius of ~1.1 m
 _WIDTH = (1e-3, 0.5)  # m; a tread is ~0.14 m wide; 0.5 m bounds the cone's grid at 10,000 samples
 _CANT_MAX = 0.1  # rail inclination (slope); in track 1:20 to 1:40, or upright
-_SAMPLES_MAX = (
-    65536  # quadrature points: the rectangle rule is long converged (spectrally, or 1/n² at a kink)
-)
 
 
 def _grid(name: str, value, *, uniform: bool = False) -> np.ndarray:
@@ -373,15 +370,17 @@ class ContactGeometry:
         """ϑ_L − ϑ_R (rad)."""
         return self.contact_angle[0] - self.contact_angle[1]
 
-    def equivalent_conicity(self, amplitudes, *, samples: int = 256) -> np.ndarray:
-        """Equivalent conicity λ_e(A) from this table of Δr(y) (:func:`harmonic_conicity`).
+    def equivalent_conicity(self, amplitudes) -> np.ndarray:
+        """EN 15302's equivalent conicity λ_e(ŷ) of this table of Δr(y).
+
+        The kinematic method of :func:`~raildyn.contact.conicity.kinematic_conicity` on the
+        table sorted by shift.
 
         Parameters
         ----------
         amplitudes : float or array_like
-            A (m), > 0, within the shifts of this table (which must span ±A).
-        samples : int, keyword
-            Points in θ of the quadrature, 8 to 65536.
+            ŷ (m), > 0, within the reach of this table (its shifts must hold both turning
+            points of the motion: ±ŷ for a symmetric pair).
 
         Returns
         -------
@@ -389,9 +388,7 @@ class ContactGeometry:
             λ_e for each amplitude (dimensionless).
         """
         order = np.argsort(self.shift)  # the table in the order of its shifts, whatever order they came in
-        return harmonic_conicity(
-            self.shift[order], self.rolling_radius_difference[order], amplitudes, samples=samples
-        )
+        return kinematic_conicity(self.shift[order], self.rolling_radius_difference[order], amplitudes)
 
     def _line(self, ax, artists, key, x, y, label, color, xlabel, ylabel):
         if artists is not None:
@@ -458,12 +455,12 @@ class ContactGeometry:
         )  # fmt: skip
 
     def plot_equivalent_conicity(self, amplitudes, ax=None, *, label=None, color=None, artists=None) -> dict:
-        """Draw λ_e(A) (:meth:`equivalent_conicity`) against the amplitude A in mm.
+        """Draw EN 15302's λ_e(ŷ) (:meth:`equivalent_conicity`) against the amplitude ŷ in mm.
 
         Parameters
         ----------
         amplitudes : float or array_like
-            A (m), > 0, within the shifts of this table.
+            ŷ (m), > 0, within the reach of this table.
         ax : matplotlib.axes.Axes, optional
             Where to draw; new axes on a new pyplot figure if None.
         label : str, optional
@@ -481,7 +478,7 @@ class ContactGeometry:
         amp = _amplitudes(amplitudes)
         return self._line(
             ax, artists, "equivalent_conicity", 1e3 * amp, self.equivalent_conicity(amp),
-            label, color, "amplitude A (mm)", "equivalent conicity λ_e",
+            label, color, "amplitude ŷ (mm)", "equivalent conicity λ_e",
         )  # fmt: skip
 
 
@@ -674,19 +671,15 @@ def contact_angles(wheel: WheelProfile, rail: RailProfile, shifts, **kwargs) -> 
     return contact_geometry(wheel, rail, shifts, **kwargs).contact_angle
 
 
-def equivalent_conicity(
-    wheel: WheelProfile, rail: RailProfile, amplitudes, *, samples: int = 256, **kwargs
-) -> np.ndarray:
-    """Equivalent conicity λ_e(A) by harmonic linearization of Δr(y).
+def equivalent_conicity(wheel: WheelProfile, rail: RailProfile, amplitudes, **kwargs) -> np.ndarray:
+    """Equivalent conicity λ_e(ŷ) of a wheel and rail profile pair, as EN 15302 defines it.
 
-    For a sinusoidal lateral motion y = A sin θ the first Fourier component of
-    Δr(y)/2 defines the cone that would give the same wavelength:
-
-        λ_e(A) = (1/(2πA)) ∫₀^{2π} Δr(A sin θ) sin θ dθ,
-
-    so a cone of slope λ gives λ_e = λ for every A (the describing-function
-    method; cf. EN 15302, which fits the same quantity from the kinematic
-    wavelength).
+    The rolling-radius difference Δr(y) of the pair (:func:`contact_geometry`, on 801 shifts
+    over ±max(ŷ)) goes to EN 15302's kinematic method
+    (:func:`~raildyn.contact.conicity.kinematic_conicity`): the wavelength of the wheelset's
+    kinematic motion of amplitude ŷ on this Δr, compared with Klingel's
+    L = 2π√(r₀ e₀/λ_e) of a cone. For the first-harmonic value of the same table, pass its
+    shifts and Δr to :func:`~raildyn.contact.conicity.harmonic_conicity`.
 
     Parameters
     ----------
@@ -695,10 +688,7 @@ def equivalent_conicity(
     rail : RailProfile
         The rail profile (both sides).
     amplitudes : float or array_like
-        A (m), > 0, 1-D; the wheelset must stay on the rails over ±max(A).
-    samples : int, keyword
-        Points in θ of the quadrature (the rectangle rule, spectrally accurate
-        for a periodic integrand apart from the kinks of flange contact), 8 to 65536.
+        ŷ (m), > 0, 1-D; the wheelset must stay on the rails over ±max(ŷ).
     **kwargs
         ``gauge``, ``tape_distance``, ``roll`` as :func:`contact_geometry`.
 
@@ -713,10 +703,12 @@ def equivalent_conicity(
     0.05
     """
     amp = _amplitudes(amplitudes)
-    _checks.integer("samples", samples, low=8, high=_SAMPLES_MAX)
     table_y = np.linspace(-amp.max(), amp.max(), 801)
     dr = _geometry(wheel, rail, table_y, "amplitudes", **kwargs).rolling_radius_difference
-    return harmonic_conicity(table_y, dr, amp, samples=samples)
+    # The two wheels are mirror images: Δr is odd in y. Taking its odd part removes the rounding of
+    # the contact search, so that the motion is centred on y = 0 and reaches exactly ±ŷ.
+    dr = 0.5 * (dr - dr[::-1])
+    return kinematic_conicity(table_y, dr, amp)
 
 
 def _amplitudes(amplitudes) -> np.ndarray:
@@ -725,44 +717,3 @@ def _amplitudes(amplitudes) -> np.ndarray:
     if amp.ndim != 1:
         raise ValueError(f"amplitudes must be a number or a 1-D array, got shape {amp.shape}")
     return amp
-
-
-def harmonic_conicity(shifts, delta_r, amplitudes, *, samples: int = 256) -> np.ndarray:
-    """Equivalent conicity from a tabulated Δr(y), by the harmonic linearization of
-    :func:`equivalent_conicity` (Δr interpolated linearly; the table must cover ±max(A)).
-
-    Parameters
-    ----------
-    shifts : array_like
-        y (m), strictly increasing, at least two.
-    delta_r : array_like
-        Δr(y) (m), same length, any sign.
-    amplitudes : float or array_like
-        A (m), > 0, 1-D, within the table: the shifts must span ±max(A).
-    samples : int, keyword
-        Points in θ of the quadrature, 8 to 65536.
-
-    Returns
-    -------
-    ndarray
-        λ_e for each amplitude (dimensionless).
-
-    Examples
-    --------
-    >>> y = np.linspace(-0.01, 0.01, 201)
-    >>> np.round(harmonic_conicity(y, 2 * 0.05 * y, [2e-3, 5e-3]), 12).tolist()  # a cone: λ
-    [0.05, 0.05]
-    """
-    y = _grid("shifts", shifts)
-    dr = _checks.array("delta_r", delta_r, shape=(y.size,))
-    amp = _amplitudes(amplitudes)
-    reach = min(-y[0], y[-1])
-    if amp.max() > reach * (1 + 1e-12):
-        raise ValueError(
-            f"amplitudes must lie within the table of shifts, which spans ±{max(reach, 0.0):.4g} m "
-            f"(from {y[0]:.4g} to {y[-1]:.4g} m), got {amp.max()!r}"
-        )
-    n = _checks.integer("samples", samples, low=8, high=_SAMPLES_MAX)
-    theta = 2 * np.pi * np.arange(n) / n
-    values = np.interp(amp[:, None] * np.sin(theta)[None, :], y, dr)
-    return (values * np.sin(theta)).mean(axis=1) / amp

@@ -42,8 +42,9 @@ def hertz_coefficients_figure() -> Figure:
 @register(
     "fig4.creep",
     "Lateral creep force against lateral creepage for a_c = 6 mm, b_c = 4 mm, N = 100 kN, μ = 0.3, no spin: "
-    "Kalker's linear theory, Carter's 2-D law and Johnson–Vermeulen with the same initial slope, the "
-    "saturation of Shen, Hedrick and Elkins, Polach's method and FASTSIM.",
+    "Kalker's linear theory, Carter's 2-D law with Kalker's initial slope, Johnson–Vermeulen with its own "
+    "(steeper) creep coefficients, the saturation of Shen, Hedrick and Elkins (Johnson–Vermeulen's cubic on "
+    "Kalker's forces), Polach's method and FASTSIM.",
     chapter=4,
 )
 def creep_laws_figure() -> Figure:
@@ -99,8 +100,8 @@ def fastsim_figure() -> Figure:
 
 @register(
     "fig4.profiles",
-    "Rolling-radius difference Δr(y) and equivalent conicity λ_e(A) of the 1:20 and 1:40 cones and of "
-    "S1002 on 60E1 rails inclined at 1:40 (gauge 1435 mm, tape circles 1500 mm apart).",
+    "Rolling-radius difference Δr(y) and equivalent conicity λ_e(ŷ) (EN 15302) of the 1:20 and 1:40 cones "
+    "and of S1002 on 60E1 rails inclined at 1:40 (gauge 1435 mm, tape circles 1500 mm apart).",
     chapter=4,
 )
 def profiles_figure() -> Figure:
@@ -115,4 +116,26 @@ def profiles_figure() -> Figure:
         geometry.plot_rolling_radius_difference(ax_r, label=wheel.name, color=plots.COLORS[i])
         geometry.plot_equivalent_conicity(amp, ax_l, label=wheel.name, color=plots.COLORS[i])
     ax_r.legend()
+    return fig
+
+
+@register(
+    "fig4.conicity",
+    "Equivalent conicity of S1002 on 60E1 rails inclined at 1:40 (gauge 1435 mm) against the amplitude: "
+    "EN 15302's kinematic value (solid) and the first harmonic of Δr (dashed), with Δr(y) beside them. "
+    "The two part where Δr jumps.",
+    chapter=4,
+)
+def conicity_figure() -> Figure:
+    geometry = contact.contact_geometry(
+        contact.s1002_wheel(), contact.uic60_rail(1 / 40), np.linspace(-10e-3, 10e-3, 801)
+    )
+    amp = np.linspace(0.5e-3, 10e-3, 96)
+    harmonic = contact.harmonic_conicity(geometry.shift, geometry.rolling_radius_difference, amp)
+    fig = new_figure(figsize=(8.0, 3.4))
+    ax_r, ax_l = fig.subplots(1, 2)
+    geometry.plot_rolling_radius_difference(ax_r, color=plots.COLORS[2])
+    geometry.plot_equivalent_conicity(amp, ax_l, label="EN 15302 (kinematic)", color=plots.COLORS[0])
+    ax_l.plot(1e3 * amp, harmonic, "--", color=plots.COLORS[1], label="first harmonic")
+    ax_l.legend()
     return fig

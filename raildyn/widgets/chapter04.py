@@ -14,6 +14,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from raildyn import contact, plots
+from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
 from raildyn.widgets._core import Recipe, slider
 
 __all__ = ["creep_laws", "fastsim_patch", "hertz", "profiles"]
@@ -128,8 +129,10 @@ def _creep_setup(live, status):
         curves = _creep_curves(load, v["a_over_b"], mu, v["spin"], eta)
         curves.plot(artists=lines)
         a, b, f = curves.a, curves.b, curves.coefficients
+        jv = contact.johnson_vermeulen_coefficients(a / b, STEEL_POISSON_RATIO).c22
         status.value = (
-            f"a_c = {1e3 * a:.2f} mm, b_c = {1e3 * b:.2f} mm · f₂₂ = {f.f22 / 1e6:.2f} MN, "
+            f"a_c = {1e3 * a:.2f} mm, b_c = {1e3 * b:.2f} mm · Kalker's f₂₂ = {f.f22 / 1e6:.2f} MN "
+            f"(Johnson–Vermeulen's {STEEL_SHEAR_MODULUS * a * b * jv / 1e6:.2f} MN), "
             f"f₂₃ = {f.f23 / 1e3:.2f} kN m · μN = {mu * load / 1e3:.1f} kN "
             "(Carter and Johnson–Vermeulen take no spin)"
         )
@@ -151,7 +154,8 @@ def creep_laws():
 
     Controls: a_c/b_c, spin φ (1/m), friction μ and wheel load (kN); the ellipse
     area is that of Hertz's circular contact for 460 mm radii in both directions. Forces are
-    shown as −F_y/(μN), so the saturation level is 1.
+    shown as −F_y/(μN), so the saturation level is 1. The status line gives Kalker's f₂₂ and
+    Johnson and Vermeulen's own, which is all that parts their curve from SHE's at zero spin.
 
     Returns
     -------
@@ -300,9 +304,10 @@ def _profile_setup(live, status):
         g.plot_equivalent_conicity(_AMPLITUDES, artists=lam)
         conicity = lam["equivalent_conicity"].get_ydata()
         i3 = int(np.argmin(np.abs(_AMPLITUDES - 3e-3)))
+        harmonic = contact.harmonic_conicity(g.shift, g.rolling_radius_difference, _AMPLITUDES[i3])[0]
         status.value = (
-            f"λ_e(3 mm) = {conicity[i3]:.3f} · largest contact angle "
-            f"{np.degrees(g.contact_angle[0]).max():.1f}°"
+            f"λ_e(3 mm) = {conicity[i3]:.3f} (EN 15302; first harmonic {harmonic:.3f}) · largest contact "
+            f"angle {np.degrees(g.contact_angle[0]).max():.1f}°"
         )
 
     return redraw
@@ -321,8 +326,8 @@ def profiles():
     """Δr(y), the left contact angle and the equivalent conicity for a chosen wheel, rail and gauge.
 
     Controls: the wheel (1:20 and 1:40 cones, S1002), the 60E1 rail's
-    inclination and the track gauge (mm). The status line gives λ_e at 3 mm
-    and the largest contact angle.
+    inclination and the track gauge (mm). The conicity is EN 15302's; the status line
+    gives it at 3 mm beside the first-harmonic value, and the largest contact angle.
 
     Returns
     -------

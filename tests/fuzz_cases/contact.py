@@ -162,9 +162,15 @@ ENTRIES = [
     fuzz("raildyn.contact.carter", lambda: call(1e-3, 1e5, 0.3, 1.5e7), accepts={"longitudinal": SIGNED}),
     fuzz(
         "raildyn.contact.johnson_vermeulen",
-        lambda: call(1e-3, 2e-3, 1e5, 0.3, coefficients()),
-        accepts={"longitudinal": SIGNED, "lateral": SIGNED},
+        lambda: call(1e-3, 2e-3, 1e5, 0.3, 6e-3, 4e-3),
+        accepts={"longitudinal": SIGNED, "lateral": SIGNED, "poisson_ratio": "zero"},
     ),
+    fuzz(
+        "raildyn.contact.johnson_vermeulen_coefficients",
+        lambda: call(1.5, 0.3),
+        accepts={"a_over_b": "list", "poisson_ratio": "zero"},
+    ),
+    fuzz("raildyn.contact.JohnsonVermeulenCoefficients", lambda: call(5.0, 4.5), accepts=RESULT_ARRAYS),
     fuzz("raildyn.contact.saturation_factor", lambda: call(3e4, 1e4), accepts={"force": "zero list"}),
     fuzz(
         "raildyn.contact.shen_hedrick_elkins",
@@ -280,7 +286,7 @@ ENTRIES = [
     ),
     fuzz(
         "raildyn.contact.equivalent_conicity",
-        lambda: call(cone(), rail(), 3e-3, samples=32, roll=False),
+        lambda: call(cone(), rail(), 3e-3, roll=False),
         accepts={"amplitudes": "list"},
     ),
     fuzz(
@@ -292,8 +298,15 @@ ENTRIES = [
         accepts={"delta_r": "zero negative"},
     ),
     fuzz(
+        "raildyn.contact.kinematic_conicity",
+        lambda: call(np.linspace(-0.01, 0.01, 21), 0.1 * np.linspace(-0.01, 0.01, 21), [2e-3, 5e-3]),
+        # A cylinder (Δr = 0) steers nothing: λ_e = 0. A Δr that never rises through zero (all
+        # negative) is refused: the wheelset has no kinematic oscillation to measure.
+        accepts={"delta_r": "zero", "amplitudes": "list"},
+    ),
+    fuzz(
         "raildyn.contact.ContactGeometry.equivalent_conicity",
-        lambda: on(geometry(), 2e-3, samples=32),
+        lambda: on(geometry(), 2e-3),
         accepts={"amplitudes": "list"},
     ),
     fuzz("raildyn.contact.ContactGeometry.plot_rolling_radius_difference", lambda: on(geometry())),
