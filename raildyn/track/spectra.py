@@ -52,7 +52,7 @@ sources use them. A_g (5.32e-8 low, 1.032e-7 high) is Zhai's value; the one
 retrievable copy we found is an open-source Python implementation of these
 spectra (its repository could not be identified) that codes every German
 parameter with the values below, the same formulas and the same one-sided
-m²/(rad/m) reading. A second source for A_g is still wanted.
+m²/(rad/m) reading; Zhai remains the only primary source for A_g that we know of.
 
 References
 ----------
