@@ -365,7 +365,7 @@ class TrackSpectrum:
     """A track irregularity spectrum S(Ω) that knows what it describes.
 
     Built by :func:`track_psd`; called like a function of the wavenumber. A vehicle's response
-    (:func:`raildyn.vehicles.response_spectrum`) reads ``component`` from it, so a spectrum of the
+    (:func:`raildyn.vehicles.response.response_spectrum`) reads ``component`` from it, so a spectrum of the
     alignment cannot be taken for a vertical profile.
 
     Attributes
@@ -438,7 +438,7 @@ def track_psd(spectrum: str, component: str, grade) -> TrackSpectrum:
 
 
 def wavelength_band(band) -> tuple[float, float]:
-    """Check a wavelength band and return the matching wavenumber band (2π/λ_max, 2π/λ_min).
+    """Check a wavelength band and return the matching wavenumber band (2π/L_max, 2π/L_min).
 
     A band is a pair (low, high) wherever raildyn takes one, so this conversion
     returns the pair itself, ready to pass on as ``band``.
@@ -446,7 +446,7 @@ def wavelength_band(band) -> tuple[float, float]:
     Parameters
     ----------
     band : (float, float)
-        (λ_min, λ_max), m, 0 < λ_min < λ_max.
+        (L_min, L_max), the shortest and longest wavelengths L_w, m, 0 < L_min < L_max.
 
     Returns
     -------

@@ -18,7 +18,7 @@ damping of the lateral models.
   speed V, one per irregularity component, the components independent
   (:func:`raildyn.track.synthesis.excitation_csd` and
   :func:`raildyn.random_vibration.response_psd`). Each spectrum says which component
-  it describes (a :class:`raildyn.track.TrackSpectrum` names its own; a plain callable
+  it describes (a :class:`raildyn.track.spectra.TrackSpectrum` names its own; a plain callable
   needs ``component=``), and a component the vehicle has no input for is refused;
 * :func:`rms_over_speeds` — the RMS of :func:`response_spectrum` at many speeds;
 * :func:`time_response` — the history over a track profile, by the first-order hold of
@@ -57,7 +57,7 @@ def _rail_weights(system: LinearSystem, component: str, source: str = "component
     """a_j: how an irregularity of the given component reaches each input.
 
     An input of the same kind takes it whole; a rail-height input takes a vertical
-    irregularity whole and a cross-level c as ±c/2 on the left/right rail. A component
+    irregularity whole and a cross-level Δz as ±Δz/2 on the left/right rail. A component
     that reaches no input (the vertical car has no alignment input, the lateral car no
     rail height) is refused, naming ``source``, the caller's parameter that gave it: its
     response would be a zero that says nothing.
@@ -251,7 +251,7 @@ def _spectra(psd, component) -> dict:
     """{component: (S(Ω), the caller's parameter that named the component)} from the arguments.
 
     ``psd`` is one spectrum or a mapping {component: S} of independent components. A
-    :class:`raildyn.track.TrackSpectrum` names its own component; a plain callable needs
+    :class:`raildyn.track.spectra.TrackSpectrum` names its own component; a plain callable needs
     ``component``. A spectrum whose component is not stated, a ``component`` that contradicts
     the spectrum's own, and the gauge (no vehicle here has a gauge input) are refused. Each S
     is wrapped so that what it returns is checked where it is used: finite, ≥ 0, shaped like Ω.
@@ -309,7 +309,7 @@ def _inputs_for(system: LinearSystem, psd, component) -> dict:
 
 
 def _own_component(spectrum) -> str | None:
-    """The component a spectrum names itself (a :class:`raildyn.track.TrackSpectrum`), else None."""
+    """The component a spectrum names itself (a :class:`raildyn.track.spectra.TrackSpectrum`), else None."""
     return spectrum.component if isinstance(spectrum, _track.TrackSpectrum) else None
 
 
@@ -343,8 +343,8 @@ def response_spectrum(
     ----------
     vehicle : LinearModel or LinearSystem
     psd : TrackSpectrum, callable or mapping
-        S(Ω), one-sided, m²/(rad/m): a :class:`raildyn.track.TrackSpectrum` (from
-        :func:`raildyn.track.track_psd`), which names its component; a plain callable of
+        S(Ω), one-sided, m²/(rad/m): a :class:`raildyn.track.spectra.TrackSpectrum` (from
+        :func:`raildyn.track.spectra.track_psd`), which names its component; a plain callable of
         the irregularity named by ``component``; or a mapping {component: S} of
         independent components. Each S takes an array of Ω (rad/m) and returns finite
         values ≥ 0 of the same shape.
@@ -358,7 +358,7 @@ def response_spectrum(
         Displacement, velocity or acceleration of the output.
     component : {"vertical", "alignment", "cross_level"}, optional
         With a single ``psd``: the component it describes. Required for a plain callable;
-        for a :class:`~raildyn.track.TrackSpectrum`, it may only repeat the spectrum's own.
+        for a :class:`~raildyn.track.spectra.TrackSpectrum`, it may only repeat the spectrum's own.
 
     Returns
     -------
