@@ -11,13 +11,17 @@
 * :data:`STEEL_SHEAR_MODULUS` — G = E/(2(1 + ν)) = 80.8 GPa, the shear modulus
   that goes with them, so that Hertz's patch and Kalker's coefficients describe
   the same steel.
+* :data:`MPH` — one mile per hour in m/s, 1609.344/3600 (the international mile of
+  1959, exact), for sources in US units: the FRA's track-class speed limits, Davis's
+  resistance formula.
 """
 
 from __future__ import annotations
 
-__all__ = ["GRAVITY", "STEEL_POISSON_RATIO", "STEEL_SHEAR_MODULUS", "STEEL_YOUNGS_MODULUS"]
+__all__ = ["GRAVITY", "MPH", "STEEL_POISSON_RATIO", "STEEL_SHEAR_MODULUS", "STEEL_YOUNGS_MODULUS"]
 
 GRAVITY = 9.80665  # m/s², standard gravity (3rd CGPM, 1901; ISO 80000-3)
 STEEL_YOUNGS_MODULUS = 2.1e11  # Pa (Johnson 1985)
 STEEL_POISSON_RATIO = 0.3  # (Johnson 1985)
 STEEL_SHEAR_MODULUS = STEEL_YOUNGS_MODULUS / (2.0 * (1.0 + STEEL_POISSON_RATIO))  # Pa, isotropic elasticity
+MPH = 1609.344 / 3600  # m/s per mile per hour (international mile, 1959: exact)

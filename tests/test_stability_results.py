@@ -72,7 +72,7 @@ def test_mode_sweep_plot_draws_roots_modes_and_the_critical_speed():
     # The default windows: near the imaginary axis, below 70 rad/s; ξ from −0.15 to 0.5.
     assert ax_s.get_xlim() == (-25.0, 5.0) and ax_s.get_ylim() == (0.0, 70.0)
     assert ax_d.get_ylim() == (-0.15, 0.5)
-    assert ax_d.get_xlabel() == "speed (km/h)" and ax_s.get_ylabel() == "Im λ (rad/s)"
+    assert ax_d.get_xlabel() == "speed (km/h)" and ax_s.get_ylabel() == "Im $s_r$ (rad/s)"
 
 
 def test_mode_sweep_plot_moves_its_artists_in_place():

@@ -1,10 +1,21 @@
-"""The compiled time stepping of raildyn.vehicles.response against scipy.signal.lsim, its reference."""
+"""raildyn.vehicles.response: the compiled time stepping against scipy.signal.lsim, its reference; the
+spectra a response takes, each of which must say what it describes."""
 
 import numpy as np
 import pytest
 from scipy import signal
 
-from raildyn.vehicles import MANCHESTER_VERTICAL, periodic_profile, time_response
+from raildyn import track
+from raildyn.vehicles import (
+    MANCHESTER_CAR,
+    MANCHESTER_VERTICAL,
+    FreightCar,
+    periodic_profile,
+    response_spectrum,
+    rms_over_speeds,
+    time_response,
+    track_frf,
+)
 from raildyn.vehicles import response as resp
 
 
@@ -59,3 +70,115 @@ def test_time_response_equals_lsim_on_a_track(derivative):
     U = np.hstack([track.height(x), V * track.slope(x)])
     reference = signal.lsim((A, B, C[None, :], D[None, :]), U, t)[1]
     assert np.abs(ours.y - reference).max() <= 1e-12 * np.abs(reference).max()
+
+
+# ------------------------------------------------------------------------ a spectrum says what it describes
+
+W_RIDE = np.linspace(0.2, 2 * np.pi * 30.0, 3000)  # rad/s, the ride grid of chapter 6
+ALIGNMENT = track.track_psd("fra", "alignment", 4)
+
+
+def test_an_alignment_spectrum_drives_the_lateral_car_without_component():
+    """Wrong answer fixed: the lateral car given an alignment spectrum without component= took it for a
+    vertical profile, which it has no input for, and returned an RMS of 0.0. The spectrum now names its
+    component: the answer is the one component="alignment" gives with a plain callable (the same
+    computation, so rel 1e-12), and it is not zero."""
+    own = response_spectrum(MANCHESTER_CAR, ALIGNMENT, 30.0, W_RIDE, "body y")
+    plain = response_spectrum(
+        MANCHESTER_CAR,
+        lambda W: track.fra_psd("alignment", 4, W),
+        30.0,
+        W_RIDE,
+        "body y",
+        component="alignment",
+    )
+    assert own.rms > 0.1  # m/s², a lateral ride on class-4 alignment (0.247 here), far from a silent zero
+    assert own.rms == pytest.approx(plain.rms, rel=1e-12)
+    speeds = np.array([20.0, 30.0])
+    np.testing.assert_allclose(
+        rms_over_speeds(MANCHESTER_CAR, ALIGNMENT, speeds, W_RIDE, "body y"),
+        rms_over_speeds(MANCHESTER_CAR, ALIGNMENT, speeds, W_RIDE, "body y", component="alignment"),
+        rtol=1e-12,
+    )
+
+
+def test_the_vertical_car_refuses_an_alignment_it_has_no_input_for():
+    """Wrong answers fixed: the vertical car given an alignment spectrum returned 0.0 with
+    component="alignment" and, without component=, took it for a vertical profile (RMS 0.394 m/s²).
+    Both are refused, each naming the parameter that gave the component, in both functions."""
+    for call in (response_spectrum, rms_over_speeds):
+        speed = 30.0 if call is response_spectrum else [30.0]
+        with pytest.raises(ValueError, match=r"^component 'alignment' is not an input of this vehicle"):
+            call(MANCHESTER_VERTICAL, ALIGNMENT, speed, W_RIDE, component="alignment")
+        with pytest.raises(ValueError, match=r"^psd describes the 'alignment' component, not an input"):
+            call(MANCHESTER_VERTICAL, ALIGNMENT, speed, W_RIDE)
+        with pytest.raises(ValueError, match=r"allowed components: \['vertical'\]"):
+            call(MANCHESTER_VERTICAL, ALIGNMENT, speed, W_RIDE)
+        # a mapping keyed by a component the car has no input for: the same refusal, blamed on psd
+        with pytest.raises(ValueError, match=r"^psd describes the 'alignment' component"):
+            call(MANCHESTER_VERTICAL, {"alignment": ALIGNMENT}, speed, W_RIDE)
+
+
+def test_a_spectrum_whose_component_is_unstated_or_contradicted_is_refused():
+    plain = lambda W: track.fra_psd("vertical", 4, W)  # noqa: E731
+    for call, speed in ((response_spectrum, 30.0), (rms_over_speeds, [30.0])):
+        with pytest.raises(
+            ValueError, match=r"^psd does not say which irregularity it describes: give component="
+        ):
+            call(MANCHESTER_VERTICAL, plain, speed, W_RIDE)
+        with pytest.raises(
+            ValueError, match=r"^component 'vertical' contradicts psd, a spectrum of the 'alignment'"
+        ):
+            call(MANCHESTER_CAR, ALIGNMENT, speed, W_RIDE, "body y", component="vertical")
+        with pytest.raises(
+            ValueError, match=r"^psd is a spectrum of the 'gauge' component, which no vehicle"
+        ):
+            call(MANCHESTER_CAR, track.track_psd("fra", "gauge", 4), speed, W_RIDE, "body y")
+        with pytest.raises(
+            ValueError, match=r"^psd\['cross_level'\] is a spectrum of the 'alignment' component"
+        ):
+            call(MANCHESTER_CAR, {"cross_level": ALIGNMENT}, speed, W_RIDE, "body y")
+    # a spectrum that repeats its own component, and a plain one that states it, are taken as they are
+    vertical = track.track_psd("fra", "vertical", 4)
+    stated = response_spectrum(MANCHESTER_VERTICAL, vertical, 30.0, W_RIDE, component="vertical")
+    assert stated.rms == response_spectrum(MANCHESTER_VERTICAL, vertical, 30.0, W_RIDE).rms
+    assert stated.rms == response_spectrum(MANCHESTER_VERTICAL, plain, 30.0, W_RIDE, component="vertical").rms
+
+
+def test_track_frf_refuses_a_component_without_inputs():
+    """A zero FRF says nothing: the lateral car has no rail-height input, the vertical car no alignment."""
+    with pytest.raises(
+        ValueError, match=r"^component 'vertical' is not an input .* \['alignment', 'cross_level'\]"
+    ):
+        track_frf(MANCHESTER_CAR, [1.0], 30.0, "body y")
+    with pytest.raises(ValueError, match=r"^component 'cross_level' is not an input of this vehicle"):
+        track_frf(MANCHESTER_VERTICAL, [1.0], 30.0, "body z", component="cross_level")
+    # the freight car stands on two rails: its rail heights take a cross-level as ±c/2
+    assert abs(track_frf(FreightCar(), [5.0], 10.0, "body φ", component="cross_level")[0]) > 0
+
+
+def test_track_spectrum_is_the_function_it_names():
+    for family, component, grade, fn in (
+        ("fra", "cross_level", 3, lambda W: track.fra_psd("cross_level", 3, W)),
+        ("german", "alignment", "high", lambda W: track.german_psd("alignment", "high", W)),
+    ):
+        psd = track.track_psd(family, component, grade)
+        assert (psd.family, psd.component, psd.grade) == (family, component, grade)
+        W = np.geomspace(0.01, 10.0, 7).reshape(7, 1)
+        np.testing.assert_array_equal(psd(W), fn(W))  # the same function: bit for bit
+    assert track.track_psd("fra", "vertical", np.int64(4)) == track.TrackSpectrum("fra", "vertical", 4)
+    with pytest.raises(ValueError, match=r"^family must be one of \['fra', 'german'\]"):
+        track.TrackSpectrum("sncf", "vertical", 4)
+    with pytest.raises(ValueError, match=r"^component must be one of"):
+        track.TrackSpectrum("fra", "twist", 4)
+    with pytest.raises(TypeError, match=r"^grade must be a string, one of \['high', 'low'\]"):
+        track.TrackSpectrum("german", "vertical", 4)
+
+
+def test_a_wavenumber_so_small_that_the_fra_spectrum_overflows_is_refused():
+    # S ∝ 1/Ω² towards 0: at Ω = 1e-160 rad/m it exceeds double precision; at 1e-100 it is 1.3e195
+    with pytest.raises(ValueError, match=r"^wavenumber must be large enough that S\(Ω\)"):
+        track.fra_psd("vertical", 4, [1.0, 1e-160])
+    assert np.isfinite(track.fra_psd("alignment", 4, [1e-100])).all()
+    # the German spectra stay bounded (flat below Ω_r; the cross-level and gauge vanish) as Ω → 0
+    assert np.isfinite(track.german_psd("gauge", "low", [1e-300])).all()

@@ -251,7 +251,7 @@ def resonance_speeds(frequency_hz, spacing, count: int = 3) -> np.ndarray:
 
     Each axle passes a point of the bridge every d/v seconds; when i such passes fit one period of
     the mode, every axle adds to the motion the one before it left: v_i = n₀ d / i, i = 1, 2, …
-    (Yang, Yau & Hsu 1997; EN 1991-2 §6.4.6.4 writes v = n₀ λ with λ = d/i).
+    (Yang, Yau & Hsu 1997; EN 1991-2 §6.4.6.4 writes the same as n₀ times the wavelength d/i).
 
     Parameters
     ----------

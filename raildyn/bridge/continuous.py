@@ -1,7 +1,9 @@
 """A uniform Euler–Bernoulli beam continuous over several spans, by its exact modes (book chapter 10).
 
-Inside each span the free vibration at ω is w(s) = A sin βs + B cos βs + C sinh βs + D cosh βs,
-β⁴ = mω²/(EI). Every support holds the beam against deflection and leaves it free to turn; slope
+Inside each span the free vibration at ω is
+w(s) = A sin(Ω_b s) + B cos(Ω_b s) + C sinh(Ω_b s) + D cosh(Ω_b s), Ω_b⁴ = m̄ω²/(EI), with Ω_b the
+wavenumber of the bending wave and m̄ the mass per length. Every support holds the beam against
+deflection and leaves it free to turn; slope
 and bending moment are continuous over the inner supports and the moment vanishes at both ends.
 With the deflection fixed at every support, the slopes θ₀ … θₙ at the n + 1 supports are the
 only unknowns: each span contributes the exact 2 × 2 dynamic stiffness that relates its end
@@ -10,7 +12,7 @@ moments to its end slopes, and the assembled matrix K(ω) is singular at a natur
 The natural frequencies are found by the Wittrick–Williams algorithm (Wittrick & Williams 1971):
 the number of natural frequencies below ω is J(ω) = J₀(ω) + s{K(ω)}, with s{K} the number of
 negative eigenvalues of K(ω) and J₀ the number of clamped–clamped frequencies of the single spans
-below ω (each span's J₀ = i − ½(1 − (−1)ⁱ sgn(1 − cos μ cosh μ)), i = ⌊μ/π⌋, μ = βL, Williams &
+below ω (each span's J₀ = i − ½(1 − (−1)ⁱ sgn(1 − cos μ cosh μ)), i = ⌊μ/π⌋, μ = Ω_b L, Williams &
 Wittrick 1970). Bisection on that count brackets every frequency, a repeated one included, so
 none is missed; each is then located to about 1e-14 of its value. The slopes of a mode are the
 null vector of K at its frequency, and each span's shape follows from its end slopes.
@@ -37,10 +39,10 @@ _MAX_RATIO = 20.0  # longest / shortest span: beyond it the short spans are rigi
 
 
 def _basis(beta, s, span, derivative=0):
-    """The span's four functions sin βs, cos βs, e^{−βs}, e^{−β(L−s)} (or a derivative), (..., 4).
+    """The span's four functions sin Ω_b s, cos Ω_b s, e^{−Ω_b s}, e^{−Ω_b (L−s)} (or a derivative), (..., 4).
 
     The two decaying exponentials span the same space as sinh and cosh but stay of order one
-    for any βL, which keeps the 4 × 4 end conditions well conditioned at high modes.
+    for any Ω_b L, which keeps the 4 × 4 end conditions well conditioned at high modes.
     """
     bs = beta * s
     d = derivative
@@ -64,7 +66,7 @@ _UNIT_SLOPES = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 0.0], [0.0, 1.0]])
 def _span_stiffness(beta, span, rigidity):
     """Each span's exact dynamic stiffness: [−EI w″(0), EI w″(L)] = K [θ(0), θ(L)], (..., 2, 2).
 
-    Statically (β → 0) it tends to (EI/L)[[4, 2], [2, 4]], the slope-deflection stiffness.
+    Statically (Ω_b → 0) it tends to (EI/L)[[4, 2], [2, 4]], the slope-deflection stiffness.
     """
     span = np.asarray(span, dtype=float)
     coefficients = np.linalg.solve(_end_matrix(beta, span), _UNIT_SLOPES)  # (..., 4, 2)
@@ -74,7 +76,7 @@ def _span_stiffness(beta, span, rigidity):
 
 
 def _clamped_count(mu):
-    """How many clamped–clamped frequencies a span has below μ = βL (Williams & Wittrick 1970)."""
+    """How many clamped–clamped frequencies a span has below μ = Ω_b L (Williams & Wittrick 1970)."""
     i = np.floor(mu / np.pi)
     sign = np.sign(1.0 - np.cos(mu) * np.cosh(mu))
     return int(np.sum(i - 0.5 * (1 - (-1.0) ** i * sign)))
@@ -109,7 +111,7 @@ class ContinuousBeam:
 
     Examples
     --------
-    Two equal spans: the first two frequency parameters βL are π (each span as a simple span,
+    Two equal spans: the first two frequency parameters Ω_b L are π (each span as a simple span,
     in opposite phase) and 3.9266 (each span as a propped cantilever):
 
     >>> beam = ContinuousBeam((20.0, 20.0), 1.0e10, 1.0e4, modes=2)
@@ -158,13 +160,13 @@ class ContinuousBeam:
         return K
 
     def _count(self, beta) -> int:
-        """J(β): the number of natural frequencies below the one whose wavenumber is β."""
+        """J(Ω_b): the number of natural frequencies below the one whose wavenumber is Ω_b."""
         K = self._stiffness(beta)
         negative = int(np.sum(np.linalg.eigvalsh(0.5 * (K + K.T)) < 0.0))
         return negative + _clamped_count(beta * np.array(self.spans))
 
     def _off_poles(self, beta, a, b):
-        """β, or a point beside it within (a, b) if a span is within rounding of a clamped frequency."""
+        """Ω_b, or a point beside it within (a, b) if a span is within rounding of a clamped frequency."""
         for _ in range(8):
             mu = beta * np.array(self.spans)
             if np.all(np.abs(1.0 / np.cosh(mu) - np.cos(mu)) > 1e-9):
@@ -183,7 +185,7 @@ class ContinuousBeam:
 
     @functools.cached_property
     def _solution(self):
-        """Wavenumbers β_j (1/m) and the basis coefficients of each mode, (modes, spans, 4)."""
+        """Wavenumbers Ω_j (1/m) and the basis coefficients of each mode, (modes, spans, 4)."""
         n = self.modes
         seen = {0.0: 0}  # every count made: later roots start from the tightest bracket already known
         # An irrational start keeps the bisection's points off the spans' clamped–clamped frequencies,
@@ -196,7 +198,7 @@ class ContinuousBeam:
         betas = np.empty(n)
         j = 0
         while j < n:
-            # Bisect for the smallest β with J(β) > j: the (j+1)-th frequency (1e-14 of β: 50 halvings).
+            # Bisect for the smallest Ω_b with J(Ω_b) > j: the (j+1)-th frequency (1e-14 of Ω_b: 50 halvings).
             a = max(beta for beta, c in seen.items() if c <= j)
             b = min(beta for beta, c in seen.items() if c > j)
             while b - a > 1e-14 * b:
@@ -250,7 +252,7 @@ class ContinuousBeam:
         return nodes, (w * h / 2).ravel()
 
     def _inner(self, beta, c1, c2) -> float:
-        """∫ φ₁ φ₂ dx over the beam for two shapes of the same β."""
+        """∫ φ₁ φ₂ dx over the beam for two shapes of the same Ω_b."""
         total = 0.0
         for i, span in enumerate(self.spans):
             s, w = self._gauss(beta, span)
@@ -285,7 +287,7 @@ class ContinuousBeam:
 
     @property
     def frequencies_hz(self) -> np.ndarray:
-        """f_j = β_j² √(EI/m)/(2π) of the kept modes, Hz, ascending."""
+        """f_j = Ω_j² √(EI/m̄)/(2π) of the kept modes, Hz, ascending."""
         betas, _ = self._solution
         return betas**2 * np.sqrt(self.flexural_rigidity / self.mass_per_length) / (2 * np.pi)
 

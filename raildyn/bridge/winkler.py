@@ -1,15 +1,15 @@
 """An infinite beam on a Winkler foundation under a constant moving force (book chapter 10).
 
 The rail on its bed, or a long viaduct on soft supports: a beam of flexural rigidity EI and mass
-m per length rests on springs of modulus k (N/m per m of beam) and dashpots c (N·s/m per m), and
+m̄ per length rests on springs of modulus k (N/m per m of beam) and dashpots c (N·s/m per m), and
 a force P moves along it at the speed V. In the coordinate x̄ = x − Vt that travels with the force
 (x̄ > 0 ahead of it; the ``x`` that the methods take) the steady state obeys, with ′ = d/dx̄,
 
-    EI w'''' + m V² w'' − c V w' + k w = P δ_D(x̄)
+    EI w'''' + m̄ V² w'' − c V w' + k w = P δ_D(x̄)
 
-(Frýba 1972, ch. 9; Kenney 1954). Scaled by the characteristic length 1/β, β = (k/(4EI))^{1/4},
-and with the speed ratio α = V/V_cr, V_cr = (4kEI/m²)^{1/4}, and the foundation's damping ratio
-ξ = c/(2√(km)), its characteristic polynomial in ρ = r/β (w ∝ e^{r x}) is
+(Frýba 1972, ch. 9; Kenney 1954). Scaled by the characteristic length 1/Ω_W, Ω_W = (k/(4EI))^{1/4},
+and with the speed ratio α = V/V_cr, V_cr = (4kEI/m̄²)^{1/4}, and the foundation's damping ratio
+ξ = c/(2√(km̄)), its characteristic polynomial in ρ = r/Ω_W (w ∝ e^{r x}) is
 
     ρ⁴/4 + α² ρ² − 2ξα ρ + 1 = 0.
 
@@ -57,7 +57,7 @@ class WinklerBeam:
 
     Examples
     --------
-    The rail on its bed: β, the deflection under a 100 kN wheel at rest and the critical speed:
+    The rail on its bed: Ω_W, the deflection under a 100 kN wheel at rest and the critical speed:
 
     >>> rail = WinklerBeam()
     >>> round(rail.characteristic_length, 4), round(float(1e3 * rail.static_deflection([0.0], 1e5)[0]), 3)
@@ -78,12 +78,13 @@ class WinklerBeam:
 
     @property
     def characteristic_length(self) -> float:
-        """β = (k/(4EI))^{1/4}, 1/m (Hetényi 1946): 1/β is the length over which the deflection decays."""
+        """Ω_W = (k/(4EI))^{1/4}, 1/m (Hetényi 1946), a wavenumber despite the name: 1/Ω_W is the length
+        over which the deflection decays."""
         return (self.foundation_modulus / (4 * self.flexural_rigidity)) ** 0.25
 
     @property
     def critical_speed(self) -> float:
-        """v_cr = (4kEI/m²)^{1/4}, m/s: the undamped steady state grows without bound as v → v_cr.
+        """v_cr = (4kEI/m̄²)^{1/4}, m/s: the undamped steady state grows without bound as v → v_cr.
 
         (Kenney 1954; Frýba 1972, ch. 9.)
         """
@@ -91,13 +92,13 @@ class WinklerBeam:
 
     @property
     def damping_ratio(self) -> float:
-        """ξ = c/(2√(km)): the foundation's damping relative to its critical value."""
+        """ξ = c/(2√(km̄)): the foundation's damping relative to its critical value."""
         return self.damping / (2 * np.sqrt(self.foundation_modulus * self.mass_per_length))
 
     def static_deflection(self, x, force) -> np.ndarray:
         """The deflection under a force at rest at x = 0, m (Hetényi 1946).
 
-        w(x) = (Pβ/(2k)) e^{−β|x|} (cos β|x| + sin β|x|).
+        w(x) = (PΩ_W/(2k)) e^{−Ω_W|x|} (cos Ω_W|x| + sin Ω_W|x|).
 
         Parameters
         ----------
@@ -121,7 +122,7 @@ class WinklerBeam:
         """The steady deflection about a force moving at constant speed, m, in the moving coordinate.
 
         The closed form of the module docstring: with ρ_j the roots of ρ⁴/4 + α²ρ² − 2ξαρ + 1 and
-        p′ the derivative of the (dimensional) polynomial EI r⁴ + m v² r² − c v r + k,
+        p′ the derivative of the (dimensional) polynomial EI r⁴ + m̄ v² r² − c v r + k,
         w(x) = P Σ_{Re r_j < 0} e^{r_j x}/p′(r_j) ahead of the force (x ≥ 0) and
         w(x) = −P Σ_{Re r_j > 0} e^{r_j x}/p′(r_j) behind it (Frýba 1972, ch. 9).
 
@@ -144,7 +145,7 @@ class WinklerBeam:
         --------
         At half the critical speed the rail deflects 15 % more under the wheel than at rest:
         undamped, the roots are ρ = ±√(1 − α²) ± i√(1 + α²), and their residues sum at x = 0 to
-        (Pβ/(2k))/√(1 − α²):
+        (PΩ_W/(2k))/√(1 − α²):
 
         >>> rail = WinklerBeam()
         >>> w = rail.steady_deflection([0.0], 0.5 * rail.critical_speed, 1e5)[0]

@@ -11,9 +11,9 @@
   heading and plan coordinates as functions of the distance s along the centre line.
 
 **One convention, the railway engineer's.** The cant quantities are linear in the cant:
-the track's roll angle θ_t is taken small (sin θ_t ≈ tan θ_t ≈ θ_t = h_t/(2a)), which is how the
+the track's roll angle θ_t is taken small (sin θ_t ≈ tan θ_t ≈ θ_t = h_t/(2a_r)), which is how the
 design standards state them (EN 13803 writes the equilibrium cant of standard-gauge
-track as 11.8 V²/R, mm with V in km/h and R in m: 2a = 1500 mm) and how Garg & Dukkipati
+track as 11.8 V²/R, mm with V in km/h and R in m: 2a_r = 1500 mm) and how Garg & Dukkipati
 (1984, ch. 8) use them. In this convention the balance speed has zero cant deficiency
 and zero unbalanced acceleration exactly. :func:`unbalanced_acceleration` gives the
 exact in-plane form V²/R cos θ_t − g sin θ_t on request (``exact=True``); the two differ by
@@ -52,7 +52,7 @@ __all__ = [
 ]
 
 STANDARD_RAIL_SPACING = 1.5
-"""2a, m: the lateral distance between the two rails' centres (their running-band centres)
+"""2a_r, m: the lateral distance between the two rails' centres (their running-band centres)
 of standard-gauge (1435 mm) track, the base on which cant is measured and stated: the
 1500 mm of EN 13803 (whence its 11.8 V²/R) and of UIC practice."""
 
@@ -65,7 +65,7 @@ such curves need leave the small-angle curving theory of chapter 8 that these cu
 MAXIMUM_CANT = 0.2
 """The largest cant accepted, m: a hard bound a little above the 180 mm that EN 13803 allows
 as the design cant of ballasted standard-gauge track, so that every main-line design cant
-passes. At 0.2 m on 2a = 1.5 m the roll angle is 0.134 rad and 1 − cos θ_t < 0.9 %, so the
+passes. At 0.2 m on 2a_r = 1.5 m the roll angle is 0.134 rad and 1 − cos θ_t < 0.9 %, so the
 small-angle convention of this module stays within a per cent of the exact trigonometry."""
 
 MAXIMUM_SPEED = 200.0
@@ -127,7 +127,7 @@ def _result(value: np.ndarray, *inputs):
 def equilibrium_cant(speed, radius, rail_spacing=STANDARD_RAIL_SPACING):
     """The cant at which a vehicle at ``speed`` feels no lateral acceleration in the track plane, m.
 
-    h_eq = 2a V²/(g R) (Garg & Dukkipati 1984, ch. 8; EN 13803's 11.8 V²/R in mm with V in
+    h_eq = 2a_r V²/(g R) (Garg & Dukkipati 1984, ch. 8; EN 13803's 11.8 V²/R in mm with V in
     km/h), in the small-angle convention of this module.
 
     Parameters
@@ -137,7 +137,7 @@ def equilibrium_cant(speed, radius, rail_spacing=STANDARD_RAIL_SPACING):
     radius : float or array_like
         R, m (≥ :data:`MINIMUM_RADIUS`); broadcast against ``speed``.
     rail_spacing : float
-        2a, m, in [0.5, 2.0]; :data:`STANDARD_RAIL_SPACING` (1.5 m) by default.
+        2a_r, m, in [0.5, 2.0]; :data:`STANDARD_RAIL_SPACING` (1.5 m) by default.
 
     Returns
     -------
@@ -159,7 +159,7 @@ def equilibrium_cant(speed, radius, rail_spacing=STANDARD_RAIL_SPACING):
 def cant_deficiency(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
     """The cant deficiency I = h_eq − h_t, m: positive short of equilibrium, negative a cant excess.
 
-    I = 2a V²/(g R) − h_t (Garg & Dukkipati 1984, ch. 8; EN 13803), in the small-angle convention.
+    I = 2a_r V²/(g R) − h_t (Garg & Dukkipati 1984, ch. 8; EN 13803), in the small-angle convention.
 
     Parameters
     ----------
@@ -170,7 +170,7 @@ def cant_deficiency(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
     cant : float or array_like
         h_t, the height of the outer rail over the inner, m, in [0, :data:`MAXIMUM_CANT`].
     rail_spacing : float
-        2a, m, in [0.5, 2.0].
+        2a_r, m, in [0.5, 2.0].
 
     Returns
     -------
@@ -191,10 +191,10 @@ def cant_deficiency(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
 def unbalanced_acceleration(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPACING, *, exact=False):
     """The lateral acceleration left unbalanced in the plane of the track, m/s², positive outwards.
 
-    The module's small-angle form (the default): a_q = g I/(2a), with I the cant deficiency,
+    The module's small-angle form (the default): a_q = g I/(2a_r), with I the cant deficiency,
     zero at the balance speed. With ``exact=True`` the exact in-plane component,
-    a_q = V²/R cos θ_t − g sin θ_t with sin θ_t = h_t/(2a) (Garg & Dukkipati 1984, ch. 8). In closed
-    form exact = (g I/(2a)) cos θ_t − g sin θ_t (1 − cos θ_t), so the two differ by at most
+    a_q = V²/R cos θ_t − g sin θ_t with sin θ_t = h_t/(2a_r) (Garg & Dukkipati 1984, ch. 8). In closed
+    form exact = (g I/(2a_r)) cos θ_t − g sin θ_t (1 − cos θ_t), so the two differ by at most
     (|a_q| + g sin θ_t)(1 − cos θ_t) ≈ (|a_q| + g θ_t) θ_t²/2.
 
     Parameters
@@ -206,9 +206,9 @@ def unbalanced_acceleration(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPAC
     cant : float or array_like
         h_t, m, in [0, :data:`MAXIMUM_CANT`].
     rail_spacing : float
-        2a, m, in [0.5, 2.0].
+        2a_r, m, in [0.5, 2.0].
     exact : bool
-        False (the module's convention) for g I/(2a), True for V²/R cos θ_t − g sin θ_t.
+        False (the module's convention) for g I/(2a_r), True for V²/R cos θ_t − g sin θ_t.
 
     Returns
     -------
@@ -237,7 +237,7 @@ def unbalanced_acceleration(speed, radius, cant, rail_spacing=STANDARD_RAIL_SPAC
 def balance_speed(radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
     """The speed at which the cant balances the centripetal acceleration, m/s.
 
-    V_b = √(g R h_t/(2a)) (Garg & Dukkipati 1984, ch. 8): the small-angle form of √(g R tan θ_t),
+    V_b = √(g R h_t/(2a_r)) (Garg & Dukkipati 1984, ch. 8): the small-angle form of √(g R tan θ_t),
     the speed at which :func:`cant_deficiency` and :func:`unbalanced_acceleration` are zero.
 
     Parameters
@@ -247,7 +247,7 @@ def balance_speed(radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
     cant : float or array_like
         h_t, m, in [0, :data:`MAXIMUM_CANT`] (no cant: a balance speed of 0).
     rail_spacing : float
-        2a, m, in [0.5, 2.0].
+        2a_r, m, in [0.5, 2.0].
 
     Returns
     -------
@@ -269,7 +269,7 @@ def balance_speed(radius, cant, rail_spacing=STANDARD_RAIL_SPACING):
 def speed_for_deficiency(radius, cant, deficiency, rail_spacing=STANDARD_RAIL_SPACING):
     """The speed that runs a curve at a given cant deficiency, m/s.
 
-    V = √(g R (h_t + I)/(2a)), the inverse of :func:`cant_deficiency` (Garg & Dukkipati 1984,
+    V = √(g R (h_t + I)/(2a_r)), the inverse of :func:`cant_deficiency` (Garg & Dukkipati 1984,
     ch. 8): the highest speed a permitted deficiency allows, or with I = 0 the balance speed.
 
     Parameters
@@ -281,7 +281,7 @@ def speed_for_deficiency(radius, cant, deficiency, rail_spacing=STANDARD_RAIL_SP
     deficiency : float or array_like
         I, m, with h_t + I ≥ 0 (a cant excess −I at most the cant itself: I = −h_t is standing still).
     rail_spacing : float
-        2a, m, in [0.5, 2.0].
+        2a_r, m, in [0.5, 2.0].
 
     Returns
     -------
@@ -327,7 +327,7 @@ class Curve:
     ----------
     radius : float
         R, m (≥ :data:`MINIMUM_RADIUS`). 600 m by default: a main-line curve of moderate
-        radius, the one of issue 17's questions.
+        radius.
     cant : float
         h_t, m, in [0, :data:`MAXIMUM_CANT`]. 0.1 m by default (balance speed 71 km/h on 600 m).
     transition_length : float
@@ -338,7 +338,7 @@ class Curve:
     straight : float
         The straight before the entry transition, m (≥ 0). 50 m by default.
     rail_spacing : float
-        2a, m, in [0.5, 2.0]; the base of the cant (:data:`STANDARD_RAIL_SPACING`).
+        2a_r, m, in [0.5, 2.0]; the base of the cant (:data:`STANDARD_RAIL_SPACING`).
 
     Examples
     --------
@@ -461,10 +461,10 @@ class Curve:
         return self._out(out, s)
 
     def unbalanced_acceleration(self, s, speed):
-        """The unbalanced lateral acceleration a_q(s) = V² κ(s) − g h_t(s)/(2a) at distance s, m/s².
+        """The unbalanced lateral acceleration a_q(s) = V² κ(s) − g h_t(s)/(2a_r) at distance s, m/s².
 
         :func:`unbalanced_acceleration` along the curve, in the module's small-angle convention
-        (g I/(2a) with I = 2a V² κ/g − h_t): zero on the straights, growing along the transitions.
+        (g I/(2a_r) with I = 2a_r V² κ/g − h_t): zero on the straights, growing along the transitions.
 
         Parameters
         ----------

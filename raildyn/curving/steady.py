@@ -213,7 +213,7 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
     V = _checks.scalar("speed", speed, low=0.0, low_open=True, high=MAXIMUM_SPEED)
     R = _checks.scalar("radius", radius, low=MINIMUM_RADIUS)
     D = _checks.scalar("cant", cant, low=0.0, high=MAXIMUM_CANT)
-    a_q = unbalanced_acceleration(V, R, D)  # the small-angle g I/(2a) of the linear theory
+    a_q = unbalanced_acceleration(V, R, D)  # the small-angle g I/(2a_r) of the linear theory
     lateral = np.array([label.endswith(" y") for label in system.labels], dtype=float)
     try:
         x = system.wheelset_positions

@@ -154,9 +154,9 @@ def self_steering_curving(bogie: Bogie, radius) -> SelfSteeringCurving:
     each), with the creep forces 2f₂₂ψᵢ and −2af₁₁(a/R + λyᵢ/r₀) and the spring
     forces of k_b and k_sh, solved by hand (derived in chapter 8 of the companion;
     the method is Wickens' 2003, ch. 7, after Boocock 1969). With
-    κ = a λ f₁₁ f₂₂ / r₀ (per wheel f₁₁, f₂₂):
+    χ = a λ f₁₁ f₂₂ / r₀ (per wheel f₁₁, f₂₂):
 
-        α₁ = −α₂ = (b/R) k_b k_sh / (k_b k_sh + κ)
+        α₁ = −α₂ = (b/R) k_b k_sh / (k_b k_sh + χ)
         ȳ = r₀a/(λR) + r₀ b f₂₂ α₁ / (λ a f₁₁),       y₁ − y₂ = 2 f₂₂ α₁ / k_sh,
 
     offsets towards the outer rail. A soft bending stiffness lets the wheelsets take up

@@ -11,7 +11,7 @@ gravitational stiffness, Wickens 2003, ch. 2). The tests hold them to
 
 Sign convention: x forward, y to the left, z up; ψ (yaw) turns x towards y, the roll ϕ turns y
 towards z. The track inputs are the alignment y_a (lateral position of the track centre line)
-and the cross-level c (left rail height minus right rail height) under each wheelset, m.
+and the cross-level Δz (left rail height minus right rail height) under each wheelset, m.
 """
 
 from __future__ import annotations
@@ -247,7 +247,7 @@ def lateral_car() -> Derivation:
     Coordinates q = [y, ψ, ϕ; y_f1, ψ_f1, y₁₁, ψ₁₁, y₁₂, ψ₁₂; y_f2, ψ_f2, y₂₁, ψ₂₁, y₂₂, ψ₂₂]:
     the body's lateral displacement (m), yaw and roll (rad); each bogie frame's lateral
     displacement and yaw; each wheelset's (bogie 1 leading, at x = +l; wheelset j1 leading in its
-    bogie). Inputs w: the alignment y_a under the four wheelsets, then the cross-level c there (m).
+    bogie). Inputs w: the alignment y_a under the four wheelsets, then the cross-level Δz there (m).
     Lagrange's equations (book ch. 7) with the bogie's T, U, D and Q (:func:`bogie`) for each bogie,
     the secondary seat at x = ±l, h below the body's centre of gravity, moving by
     y ± lψ + hϕ, and for the body

@@ -21,8 +21,8 @@ side frames y_f, ψ_f (``frame y``, ``frame ψ``), bolster ψ_b (``bolster ψ``)
 ψ_T (``frame y``, ``frame ψ``), wheelset k y_k, ψ_k (``wheelsetk y``, ``wheelsetk ψ``); on a vehicle the
 truck's number comes first (y_f1; y_12: truck 1, wheelset 2), and the body has y, ψ, ϕ (``body y``,
 ``body ψ``, ``body φ``: lateral, yaw, roll). Track inputs: the alignment y_a (lateral position of the
-track centre line) and the cross-level c (left rail height minus right rail height) at each wheelset, m,
-numbered as the wheelsets (y_a12, c_12), in the models' order (every alignment, then every cross-level).
+track centre line) and the cross-level Δz (left rail height minus right rail height) at each wheelset, m,
+numbered as the wheelsets (y_a12, Δz_12), in the models' order (every alignment, then every cross-level).
 """
 
 from __future__ import annotations
@@ -395,8 +395,8 @@ def _body_symbols(p: _Parameters) -> _BodySymbols:
 def _body(B: _BodySymbols, trucks, a) -> tuple:
     """The body's coordinates and parts: its inertia, its weight h above the seats, the roll springs.
 
-    Each truck's seats tilt with the mean cross-level c̄ of its wheelsets, by c̄/(2a) (a of the wheelset),
-    so the roll spring and damper of a truck act on φ − c̄/(2a).
+    Each truck's seats tilt with the mean cross-level Δz̄ of its wheelsets, by Δz̄/(2a) (a of the wheelset),
+    so the roll spring and damper of a truck act on φ − Δz̄/(2a).
     """
     y, psi, phi = coordinates("y psi phi")
     parts = [
@@ -449,7 +449,7 @@ def lateral_freight_car() -> Derivation:
     :func:`three_piece_truck`, its centre plate at x = ±l moving with the body's point h below its centre
     of gravity, y_c = y ± l ψ + h φ, and turning with ψ; the body's weight h above the nests, U = m g h cos φ
     (so −m g h in the roll stiffness); the nests' roll stiffness k_φ and the wedges' vertical friction c_φ
-    per truck on φ − c̄/(2a), c̄ the mean cross-level under the truck.
+    per truck on φ − Δz̄/(2a), Δz̄ the mean cross-level under the truck.
 
     Returns
     -------
@@ -510,7 +510,7 @@ def _three_axle(s: _ThreeAxleSymbols, tag: str, seat, seat_yaw, V) -> _Truck:
     c = coordinates(" ".join(rf"\Delta{{}}z_{tag}{k}" for k in (1, 2, 3)))  # cross-levels Δz
     parts = [_Part(T=s.mt * yt.diff(time) ** 2 / 2 + s.It * psit.diff(time) ** 2 / 2)]
     for k, ((y, psi), x, yak, ck) in enumerate(zip(wheelsets, (s.b, 0, -s.b), ya, c, strict=True), start=1):
-        # The traction motor: a share κ moves laterally with the axle, the rest with the frame at x.
+        # The traction motor: a share ρ_m moves laterally with the axle, the rest with the frame at x.
         parts.append(_Part(T=s.kappa * s.mm * y.diff(time) ** 2 / 2))
         parts.append(_Part(T=(1 - s.kappa) * s.mm * (yt + x * psit).diff(time) ** 2 / 2))
         parts.append(_wheelset(y, psi, yak, ck, w, V))
@@ -532,9 +532,9 @@ def three_axle_truck() -> Derivation:
     As :class:`raildyn.vehicles.locomotive_lateral.ThreeAxleTruck`: a frame (y_T, ψ_T) on three wheelsets at
     x = +b, 0, −b (b the model's ``axle_spacing``, half the truck's wheelbase):
 
-    * T: the frame (m_t, I_t); the wheelsets (m_w, I_w); each traction motor m_m, a share κ moving laterally
-      with its axle and 1 − κ with the frame at x_k, ½(1 − κ) m_m (ẏ_t + x_k ψ̇_t)² (the cross terms cancel
-      as Σ x_k = 0, and (1 − κ) m_m Σ x_k² adds to I_t);
+    * T: the frame (m_t, I_t); the wheelsets (m_w, I_w); each traction motor m_m, a share ρ_m moving laterally
+      with its axle and 1 − ρ_m with the frame at x_k, ½(1 − ρ_m) m_m (ẏ_t + x_k ψ̇_t)² (the cross terms cancel
+      as Σ x_k = 0, and (1 − ρ_m) m_m Σ x_k² adds to I_t);
     * U, D: the primary lateral k_y, c_y of the end axles and k_m, c_m of the middle one on
       y_k − y_T − x_k ψ_T, the primary yaw k_ψ, c_ψ on ψ_k − ψ_T, the secondary k_sy, c_sy on y_T and
       k_sψ, c_sψ on ψ_T;
@@ -580,7 +580,7 @@ def lateral_locomotive() -> Derivation:
     As :class:`raildyn.vehicles.locomotive_lateral.LateralLocomotive`: each truck as in
     :func:`three_axle_truck`, its secondary seat at x = ±l moving with the body's point h below its centre
     of gravity, y ± l ψ + h φ, and its yaw spring on ψ_T − ψ; the body's weight h above the seats,
-    U = m g h cos φ; the secondary roll stiffness k_φ and damping c_φ per truck on φ − c̄/(2a), c̄ the mean
+    U = m g h cos φ; the secondary roll stiffness k_φ and damping c_φ per truck on φ − Δz̄/(2a), Δz̄ the mean
     cross-level under the truck's three wheelsets.
 
     Returns

@@ -3,9 +3,10 @@
 Applied to one oscillator with a constant step, every scheme of this package is a
 linear recursion z₊ = A z; A is its amplification matrix {Bathe 1996, §9.4.1}.
 Its eigenvalues tell all: the scheme is stable while the spectral radius
-ρ(A) = max|λ| stays at or below 1, and the principal pair λ = exp(Δt(−ξ̄ω̄ ± iω̄))
-gives the computed frequency ω̄ and decay, hence the period elongation and the
-amplitude decay plotted against Δt/T in {Bathe 1996, Figs. 9.2–9.4}. The period is
+ρ(A), the largest modulus of its eigenvalues, stays at or below 1, and the principal
+pair exp(s̄Δt), s̄ = −ξ̄ω̄ ± iω̄ (the computed characteristic roots), gives the computed
+frequency ω̄ and decay, hence the period elongation and the amplitude decay plotted
+against Δt/T in {Bathe 1996, Figs. 9.2–9.4}. The period is
 T = 1 s, so ω = 2π rad/s and Δt = Δt/T.
 """
 
@@ -161,7 +162,7 @@ def amplification_matrix(method: str, dt_over_T, damping_ratio: float = 0.0, **p
 
 
 def spectral_radius(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
-    """ρ(A) = max |λ(A)| of the amplification matrix: the scheme is stable while ρ <= 1.
+    """ρ(A), the largest modulus of the amplification matrix's eigenvalues: the scheme is stable while ρ <= 1.
 
     Parameters
     ----------
@@ -214,7 +215,7 @@ def _shape(value, dt_over_T):
 def period_elongation(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
     """(T̄ − T_d)/T_d: relative error of the computed period (NaN where the principal root is real).
 
-    T̄ = 2πΔt/arg λ from the principal eigenvalue λ; T_d is the exact damped period.
+    T̄ = 2π/Im s̄ from the principal eigenvalue exp(s̄Δt) of A; T_d is the exact damped period.
     Positive means the computed motion is too slow (Bathe's "PE", as a fraction, not %).
 
     Parameters
@@ -257,8 +258,9 @@ def _principal_elongation(method, dt_over_T, damping_ratio, params) -> np.ndarra
 def amplitude_decay(method: str, dt_over_T, damping_ratio: float = 0.0, **params):
     """1 − (computed / exact amplitude) after one damped period T_d (Bathe's "AD", as a fraction).
 
-    The computed amplitude shrinks by |λ| a step over T_d/Δt steps; the exact one by
-    exp(−ξωT_d). Zero for a scheme with no numerical damping; negative if it grows.
+    The computed amplitude shrinks by |exp(s̄Δt)| (the principal eigenvalue of A) a step over
+    T_d/Δt steps; the exact one by exp(−ξωT_d). Zero for a scheme with no numerical damping;
+    negative if it grows.
 
     Parameters
     ----------
@@ -337,7 +339,7 @@ def stability_limit(method: str, damping_ratio: float = 0.0, **params) -> float:
 
 
 def _scalar_radius(method: str, z: np.ndarray) -> np.ndarray:
-    """ρ of a first-order scheme on y' = λy with z = Δtλ (complex array)."""
+    """ρ of a first-order scheme on y' = s y with z = Δt s (complex array)."""
     if method == "forward_euler":
         return np.abs(1 + z)
     if method == "rk4":
@@ -346,20 +348,20 @@ def _scalar_radius(method: str, z: np.ndarray) -> np.ndarray:
 
 
 def first_order_step_limit(method: str, eigenvalue: complex) -> float:
-    """Largest Δt (s) for which a first-order scheme keeps the mode y' = λy from growing.
+    """Largest Δt (s) for which a first-order scheme keeps the mode y' = s y from growing.
 
     For schemes of the (x, x') form (forward Euler, RK4, Adams–Bashforth–Moulton), the
-    limit on a damped or non-symmetric system is set by the eigenvalues λ of the
-    first-order system, not by the undamped periods: a heavily damped real λ (a creep
+    limit on a damped or non-symmetric system is set by the eigenvalues s of the
+    first-order system, not by the undamped periods: a heavily damped real s (a creep
     or friction time constant) can bind first. 0 when no step is stable (an undamped
-    mode under forward Euler, or Re λ > 0, a mode that grows anyway).
+    mode under forward Euler, or Re s > 0, a mode that grows anyway).
 
     Parameters
     ----------
     method : {"forward_euler", "rk4", "abm"}
         A first-order scheme.
     eigenvalue : complex
-        λ of the mode, 1/s: finite and nonzero (a mode with λ = 0 sets no limit).
+        s of the mode (its characteristic root), 1/s: finite and nonzero (a mode with s = 0 sets no limit).
 
     Returns
     -------
@@ -368,7 +370,7 @@ def first_order_step_limit(method: str, eigenvalue: complex) -> float:
 
     Examples
     --------
-    >>> round(first_order_step_limit("forward_euler", -100.0), 9)  # |1 + Δtλ| <= 1: Δt <= 2/|λ|
+    >>> round(first_order_step_limit("forward_euler", -100.0), 9)  # |1 + Δt s| <= 1: Δt <= 2/|s|
     0.02
     """
     _checks.choice("method", method, FIRST_ORDER)
@@ -380,7 +382,7 @@ def first_order_step_limit(method: str, eigenvalue: complex) -> float:
         raise ValueError(f"eigenvalue must be finite, got {eigenvalue!r}")
     if size == 0.0:
         raise ValueError(
-            "eigenvalue must be nonzero: a mode with λ = 0 neither grows nor decays under any step, "
+            "eigenvalue must be nonzero: a mode with s = 0 neither grows nor decays under any step, "
             "so it sets no limit"
         )
     steps = np.logspace(-4, 2, 241) / size
@@ -434,7 +436,7 @@ def stable_step(method: str, M, C, K, **params) -> float:
     --------
     >>> round(stable_step("central_difference", 1.0, 0.0, 1.0e6), 9)  # 2/ω_max, ω_max = 1000 rad/s
     0.002
-    >>> round(stable_step("rk4", 1.0, 2000.0, 1.0) * 1e3, 4)  # the creep-like mode λ = −2000 1/s binds
+    >>> round(stable_step("rk4", 1.0, 2000.0, 1.0) * 1e3, 4)  # the creep-like mode s = −2000 1/s binds
     1.3926
     """
     chosen = _parameters(method, params)
@@ -452,7 +454,7 @@ def stable_step(method: str, M, C, K, **params) -> float:
 
 
 def stiffness_ratio(M, C, K) -> float:
-    """|λ|max / |λ|min over the eigenvalues of the first-order system: how stiff the equations are.
+    """|s|max / |s|min over the eigenvalues s of the first-order system: how stiff the equations are.
 
     A ratio of thousands means motions on very different time scales: an explicit
     scheme must follow the fastest, an implicit one may step over it {Hairer & Wanner 1996}.
@@ -471,12 +473,12 @@ def stiffness_ratio(M, C, K) -> float:
     Raises
     ------
     ValueError
-        If K is singular (a rigid-body mode, λ = 0: the ratio is unbounded), or M, C and K
+        If K is singular (a rigid-body mode, s = 0: the ratio is unbounded), or M, C and K
         span time scales beyond double precision.
 
     Examples
     --------
-    >>> round(stiffness_ratio(1.0, 1001.0, 1000.0), 6)  # λ = −1 and −1000 1/s
+    >>> round(stiffness_ratio(1.0, 1001.0, 1000.0), 6)  # s = −1 and −1000 1/s
     1000.0
     """
     M = square_matrix("M", M, positive_definite=True)
@@ -485,14 +487,14 @@ def stiffness_ratio(M, C, K) -> float:
     size = np.abs(np.linalg.eigvals(first_order_matrix(M, C, K)))
     if size.min() == 0.0:
         raise ValueError(
-            "the first-order system has an eigenvalue λ = 0, so the stiffness ratio is unbounded: K is "
+            "the first-order system has an eigenvalue s = 0, so the stiffness ratio is unbounded: K is "
             "singular (a rigid-body mode), or M, C and K span time scales beyond double precision"
         )
     with np.errstate(over="ignore"):
         ratio = float(size.max() / size.min())
     if not np.isfinite(ratio):
         raise ValueError(
-            f"M, C and K span time scales beyond double precision: |λ| from {size.min():.3g} to "
+            f"M, C and K span time scales beyond double precision: |s| from {size.min():.3g} to "
             f"{size.max():.3g} 1/s"
         )
     return ratio

@@ -53,7 +53,7 @@ def eigenvalues_against_speed(model, speeds) -> np.ndarray:
     Returns
     -------
     ndarray of complex, shape (n_speeds, 2n)
-        The eigenvalues λ, 1/s, in no particular order at each speed.
+        The eigenvalues s_r (characteristic roots), 1/s, in no particular order at each speed.
     """
     V = _checks.speeds("speeds", speeds)
     return np.linalg.eigvals(as_linear_system(model).state_matrices(V))
@@ -72,7 +72,7 @@ def largest_real_part(model, speeds) -> np.ndarray:
     Returns
     -------
     ndarray, shape (n_speeds,)
-        max Re λ, 1/s.
+        max Re s_r, 1/s.
     """
     return eigenvalues_against_speed(model, speeds).real.max(axis=1)
 
@@ -221,11 +221,11 @@ class ModeSweep:
     speeds : ndarray (n_speeds,)
         m/s, > 0 and strictly increasing.
     eigenvalues : complex ndarray (n_speeds, k)
-        λ, 1/s; only the roots with Im λ ≥ 0 at the first speed are kept (one of each pair).
+        s_r, 1/s; only the roots with Im s_r ≥ 0 at the first speed are kept (one of each pair).
     frequencies_hz : ndarray (n_speeds, k)
-        Damped frequency |Im λ|/2π, Hz (≥ 0).
+        Damped frequency |Im s_r|/2π, Hz (≥ 0).
     damping_ratios : ndarray (n_speeds, k)
-        ξ = −Re λ/|λ| (negative when the mode is unstable).
+        ξ = −Re s_r/|s_r| (negative when the mode is unstable).
     shapes : complex ndarray (n_speeds, n, k)
         Displacement part of each eigenvector, largest entry 1.
     labels : tuple of str
@@ -272,7 +272,7 @@ class ModeSweep:
     ) -> dict:
         """Draw the roots against speed (left) and the damping factor of every mode (right).
 
-        Left: every root λ of the sweep in the complex plane, coloured by speed (km/h). Right:
+        Left: every root s_r of the sweep in the complex plane, coloured by speed (km/h). Right:
         the damping factor ξ of each mode against speed (km/h), grey, with the mode least
         damped at the highest speed (:attr:`hunting_mode`) in colour and the critical speed
         marked on ξ = 0 with its speed and frequency. The default windows show the roots
@@ -292,9 +292,9 @@ class ModeSweep:
             (``set_offsets``, ``set_data``, ``set_text``) and nothing is drawn anew; the sweep
             must have as many modes as the one drawn first.
         real_limits : (float, float) or None
-            Range of Re λ shown, 1/s (finite, low < high); None to fit the data.
+            Range of Re s_r shown, 1/s (finite, low < high); None to fit the data.
         imag_limits : (float, float) or None
-            Range of Im λ shown, rad/s (finite, low < high); None to fit the data.
+            Range of Im s_r shown, rad/s (finite, low < high); None to fit the data.
         damping_limits : (float, float) or None
             Range of ξ shown (dimensionless; finite, low < high); None to fit the data.
 
@@ -373,8 +373,8 @@ class ModeSweep:
             )
             bar = ax_s.figure.colorbar(roots, ax=ax_s, label="speed (km/h)")
             ax_s.axvline(0.0, color="k", lw=0.8)
-            ax_s.set_xlabel("Re λ (1/s)")
-            ax_s.set_ylabel("Im λ (rad/s)")
+            ax_s.set_xlabel("Re $s_r$ (1/s)")
+            ax_s.set_ylabel("Im $s_r$ (rad/s)")
             modes = [ax_d.plot(kmh, xi, color="0.75", lw=0.8)[0] for xi in self.damping_ratios.T]
             (hunting,) = ax_d.plot(
                 kmh, self.damping_ratios[:, worst], color=plots.COLORS[1], lw=2, label="hunting mode"
@@ -494,11 +494,11 @@ class CriticalSpeed:
     Attributes
     ----------
     speed : float
-        V_c, m/s (> 0): the lowest speed where max Re λ crosses zero upwards.
+        V_c, m/s (> 0): the lowest speed where max Re s_r crosses zero upwards.
         ``inf`` when stable over the whole range; the lower end of the range
         when unstable already there (see ``status``).
     frequency_hz : float
-        Frequency of the mode that loses stability, |Im λ|/2π, Hz (≥ 0; nan when none does).
+        Frequency of the mode that loses stability, |Im s_r|/2π, Hz (≥ 0; nan when none does).
     eigenvalue : complex
         That mode's eigenvalue at V_c, 1/s (a real number is a complex one with no imaginary part).
     status : str
@@ -620,7 +620,7 @@ class _StateMatrices:
         return A
 
     def largest(self, which: np.ndarray, speeds: np.ndarray) -> np.ndarray:
-        """max Re λ of A for each pair (system ``which[k]``, ``speeds[k]``), 1/s."""
+        """max Re s_r of A for each pair (system ``which[k]``, ``speeds[k]``), 1/s."""
         out = np.empty(speeds.size)
         for start in range(0, speeds.size, self._CHUNK):
             part = slice(start, start + self._CHUNK)
@@ -636,7 +636,7 @@ def _crossings(state: _StateMatrices, low: float, high: float, tol: float, scan:
     """The status and critical speed of every system of ``state`` (arguments checked by the caller).
 
     The definition of :func:`critical_speed`, for a stack of systems at once: a coarse scan of
-    ``scan`` speeds brackets each system's first upward zero of g(V) = max Re λ(V), then a
+    ``scan`` speeds brackets each system's first upward zero of g(V) = max Re s_r(V), then a
     bracketed refinement narrows every bracket below 2 tol; the midpoint is returned. The scan
     goes up in batches of 4 speeds, then of half the speeds done so far, and leaves a system at
     its first upward crossing: a crossing low in the range costs a few eigenvalue problems, a
@@ -713,7 +713,7 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     """The linear critical speed: where the largest real part of the eigenvalues first becomes positive.
 
     A coarse batched scan of ``scan`` speeds brackets the first upward zero of
-    g(V) = max Re λ(V), which a bracketed refinement (regula falsi, Illinois variant, with
+    g(V) = max Re s_r(V), which a bracketed refinement (regula falsi, Illinois variant, with
     bisection where it stalls) narrows to ``tol`` m/s. The scan ends at that bracket (the speeds
     above it are not needed).
 

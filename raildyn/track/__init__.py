@@ -4,7 +4,8 @@
   joints (staggered or in phase), an isolated bump, sinusoids; with derivatives.
 * :mod:`raildyn.track.spectra` — the FRA classes 1–6 (Hamid & Yang 1981) and the
   German low/high-disturbance spectra, one-sided per rad/m, with their band
-  variances in closed form.
+  variances in closed form; a spectrum as a callable that names its component
+  (:class:`~raildyn.track.spectra.TrackSpectrum`); the speed each FRA class allows.
 * :mod:`raildyn.track.synthesis` — seeded samples along distance, a consistent
   two-rail sample, and the spectrum in time at speed V with the delays between axles.
 
@@ -27,10 +28,13 @@ from raildyn.track.spectra import (
     COMPONENTS,
     FRA_CLASSES,
     FRA_PARAMETERS,
+    FRA_SPEED_LIMITS_MPH,
     GERMAN_LEVELS,
     GERMAN_PARAMETERS,
+    TrackSpectrum,
     band_variance,
     fra_psd,
+    fra_speed_limit,
     german_psd,
     track_psd,
     wavelength_band,
@@ -61,10 +65,13 @@ __all__ = [
     "COMPONENTS",
     "FRA_CLASSES",
     "FRA_PARAMETERS",
+    "FRA_SPEED_LIMITS_MPH",
     "GERMAN_LEVELS",
     "GERMAN_PARAMETERS",
+    "TrackSpectrum",
     "band_variance",
     "fra_psd",
+    "fra_speed_limit",
     "german_psd",
     "track_psd",
     "wavelength_band",

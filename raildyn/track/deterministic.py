@@ -328,7 +328,7 @@ def sinusoid(
     amplitude : float
         A, m (any sign).
     wavelength : float
-        λ > 0, m.
+        L_w > 0, m.
     phase : float
         φ, rad (any real).
     derivative : {0, 1, 2}

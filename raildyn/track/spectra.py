@@ -52,7 +52,7 @@ sources use them. A_g (5.32e-8 low, 1.032e-7 high) is Zhai's value; the one
 retrievable copy we found is an open-source Python implementation of these
 spectra (its repository could not be identified) that codes every German
 parameter with the values below, the same formulas and the same one-sided
-m²/(rad/m) reading. A second source for A_g is still wanted.
+m²/(rad/m) reading; Zhai remains the only primary source for A_g that we know of.
 
 References
 ----------
@@ -71,23 +71,26 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 
 from raildyn import _checks
 from raildyn import random_vibration as rv
+from raildyn.constants import MPH
 
 __all__ = [
     "COMPONENTS",
     "FRA_CLASSES",
     "GERMAN_LEVELS",
     "FRA_PARAMETERS",
+    "FRA_SPEED_LIMITS_MPH",
     "GERMAN_PARAMETERS",
+    "fra_speed_limit",
     "fra_psd",
     "german_psd",
     "track_psd",
+    "TrackSpectrum",
     "band_variance",
     "wavelength_band",
 ]
@@ -133,6 +136,51 @@ FRA_PARAMETERS = {
     6: FRAParameters(0.0339, 0.0339, 0.8245, 0.4380),
 }
 # fmt: on
+
+
+#: The highest speed each FRA class of track allows, mph, for "freight" and "passenger" trains: 49 CFR
+#: 213.9(a) for classes 1–5; 49 CFR 213.307(a) for class 6, 110 mph for any train (freight only on the
+#: conditions of its note 1; the same 110 mph for both stood in 213.9 when Hamid & Yang fitted the spectra).
+FRA_SPEED_LIMITS_MPH = {
+    1: {"freight": 10.0, "passenger": 15.0},
+    2: {"freight": 25.0, "passenger": 30.0},
+    3: {"freight": 40.0, "passenger": 60.0},
+    4: {"freight": 60.0, "passenger": 80.0},
+    5: {"freight": 80.0, "passenger": 90.0},
+    6: {"freight": 110.0, "passenger": 110.0},
+}
+_SERVICES = ("freight", "passenger")
+
+
+def fra_speed_limit(track_class: int, service: str = "passenger") -> float:
+    """The highest speed an FRA class of track allows (49 CFR 213.9(a), 213.307(a)), m/s.
+
+    A track's spectrum describes track kept to its class, and the class is what permits a
+    speed: a vehicle run on class-4 track faster than class 4 allows is run on track that
+    would not be kept so. :data:`FRA_SPEED_LIMITS_MPH` holds the limits in mph.
+
+    Parameters
+    ----------
+    track_class : int
+        FRA class 1 (worst) to 6 (best).
+    service : {"passenger", "freight"}
+        The kind of train.
+
+    Returns
+    -------
+    float
+        The maximum operating speed, m/s (> 0).
+
+    Examples
+    --------
+    >>> round(3.6 * fra_speed_limit(4), 1)  # 80 mph
+    128.7
+    >>> round(3.6 * fra_speed_limit(4, "freight"), 1)  # 60 mph
+    96.6
+    """
+    c = _checks.integer("track_class", track_class, low=min(FRA_CLASSES), high=max(FRA_CLASSES))
+    service = _checks.choice("service", service, _SERVICES)
+    return FRA_SPEED_LIMITS_MPH[c][service] * MPH
 
 
 @dataclass(frozen=True)
@@ -203,9 +251,12 @@ def _k(value) -> float:
     return _checks.scalar("k", value, low=0.0, low_open=True, high=_K_MAX)
 
 
-def _family(spectrum, grade):
-    """The checked family name and the parameters of its ``grade`` (an FRA class or a German level)."""
-    spectrum = _checks.choice("spectrum", spectrum, _SPECTRA)
+def _family(spectrum, grade, name: str = "spectrum"):
+    """The checked family name and the parameters of its ``grade`` (an FRA class or a German level).
+
+    ``name`` is the caller's parameter for the family.
+    """
+    spectrum = _checks.choice(name, spectrum, _SPECTRA)
     if spectrum == "fra":
         return spectrum, _fra_class(grade, "grade")
     return spectrum, _german_level(grade, "grade")
@@ -244,13 +295,20 @@ def fra_psd(component: str, track_class: int, wavenumber, *, k: float = FRA_K) -
     k = _k(k)
     w = _wavenumber(wavenumber)
     wc2 = p.omega_c**2
-    with np.errstate(over="ignore"):  # Ω² overflows above 1e154 rad/m, where S is 0 to double precision
+    # Ω² overflows above 1e154 rad/m, where S is 0 to double precision, and underflows below 1e-154.
+    with np.errstate(over="ignore", under="ignore", divide="ignore"):
         w2 = w**2
         if component in ("vertical", "alignment"):
             A = p.A_v if component == "vertical" else p.A_a
             s_cm2 = k * A * wc2 / (w2 * (w2 + wc2))
         else:
             s_cm2 = 4.0 * k * p.A_v * wc2 / ((w2 + wc2) * (w2 + p.omega_s**2))
+    if not np.all(np.isfinite(s_cm2)):  # S grows as Ω⁻² towards Ω = 0: beyond double precision
+        bad = float(w[~np.isfinite(s_cm2)].flat[0])
+        raise ValueError(
+            f"wavenumber must be large enough that S(Ω), which grows as 1/Ω² towards 0, stays finite "
+            f"(above about 1e-150 rad/m, a wavelength of 6e150 m), got {bad!r}"
+        )
     return rv.convert_psd(_CM2 * s_cm2, **_SOURCE_FORM, to_unit="rad/m")
 
 
@@ -284,11 +342,12 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
     p = _german_level(level)
     w = _wavenumber(wavenumber)
     wc2, wr2 = p.omega_c**2, p.omega_r**2
-    with np.errstate(over="ignore"):  # Ω² overflows above 1e154 rad/m, where S is 0 to double precision
+    # Ω² overflows above 1e154 rad/m, where S is 0 to double precision, and underflows below 1e-154.
+    with np.errstate(over="ignore", under="ignore", divide="ignore"):
         w2 = w**2
         base = wc2 / ((w2 + wr2) * (w2 + wc2))
-    # Ω²/(Ω² + Ω_s²) written as 1/(1 + Ω_s²/Ω²): 1, not inf/inf, where Ω² overflows.
-    high_pass = 1.0 / (1.0 + p.omega_s**2 / w2)
+        # Ω²/(Ω² + Ω_s²) as 1/(1 + Ω_s²/Ω²): 1, not inf/inf, where Ω² overflows; 0 where it underflows.
+        high_pass = 1.0 / (1.0 + p.omega_s**2 / w2)
     if component == "vertical":
         s = p.A_v * base
     elif component == "alignment":
@@ -301,8 +360,52 @@ def german_psd(component: str, level: str, wavenumber) -> np.ndarray:
     return rv.convert_psd(s, **_SOURCE_FORM, to_unit="rad/m")
 
 
-def track_psd(spectrum: str, component: str, grade) -> Callable[[np.ndarray], np.ndarray]:
-    """The spectrum S(Ω) as a callable, for the synthesis and the widgets.
+@dataclass(frozen=True)
+class TrackSpectrum:
+    """A track irregularity spectrum S(Ω) that knows what it describes.
+
+    Built by :func:`track_psd`; called like a function of the wavenumber. A vehicle's response
+    (:func:`raildyn.vehicles.response.response_spectrum`) reads ``component`` from it, so a spectrum of the
+    alignment cannot be taken for a vertical profile.
+
+    Attributes
+    ----------
+    family : {"fra", "german"}
+        The source: FRA classes (Hamid & Yang 1981) or the German spectra.
+    component : {"vertical", "alignment", "cross_level", "gauge"}
+        The irregularity it describes, as for :func:`fra_psd`.
+    grade : int or str
+        FRA class 1–6, or German level ``"low"`` or ``"high"``.
+
+    Examples
+    --------
+    >>> psd = TrackSpectrum("fra", "alignment", 4)
+    >>> psd.component
+    'alignment'
+    >>> bool(np.isclose(psd([0.5])[0], fra_psd("alignment", 4, [0.5])[0]))
+    True
+    """
+
+    family: str
+    component: str
+    grade: int | str
+
+    def __post_init__(self):
+        family, _ = _family(self.family, self.grade, "family")
+        object.__setattr__(self, "family", family)
+        object.__setattr__(self, "component", _component(self.component))
+        if family == "fra":  # numpy integers as Python ints, so equal spectra compare equal
+            object.__setattr__(self, "grade", int(self.grade))
+
+    def __call__(self, wavenumber) -> np.ndarray:
+        """S(Ω): the one-sided PSD, m²/(rad/m), at wavenumbers Ω (rad/m, > 0, any shape, not empty)."""
+        if self.family == "fra":
+            return fra_psd(self.component, self.grade, wavenumber)
+        return german_psd(self.component, self.grade, wavenumber)
+
+
+def track_psd(spectrum: str, component: str, grade) -> TrackSpectrum:
+    """The spectrum S(Ω) as a callable that names its component, for the synthesis, response and widgets.
 
     The arguments are checked now, not at the first call.
 
@@ -317,24 +420,25 @@ def track_psd(spectrum: str, component: str, grade) -> Callable[[np.ndarray], np
 
     Returns
     -------
-    callable
-        S(Ω): wavenumbers (rad/m, > 0) to the one-sided PSD, m²/(rad/m).
+    TrackSpectrum
+        S(Ω): wavenumbers (rad/m, > 0) to the one-sided PSD, m²/(rad/m); its ``component``,
+        ``family`` and ``grade`` say what it describes.
 
     Examples
     --------
     >>> psd = track_psd("fra", "vertical", 4)
     >>> bool(np.isclose(psd(np.array([0.5]))[0], fra_psd("vertical", 4, [0.5])[0]))
     True
+    >>> psd.component
+    'vertical'
     """
-    spectrum, _ = _family(spectrum, grade)
-    _component(component)
-    if spectrum == "fra":
-        return lambda w: fra_psd(component, grade, w)
-    return lambda w: german_psd(component, grade, w)
+    spectrum = _checks.choice("spectrum", spectrum, _SPECTRA)
+    _family(spectrum, grade)
+    return TrackSpectrum(spectrum, _component(component), grade)
 
 
 def wavelength_band(band) -> tuple[float, float]:
-    """Check a wavelength band and return the matching wavenumber band (2π/λ_max, 2π/λ_min).
+    """Check a wavelength band and return the matching wavenumber band (2π/L_max, 2π/L_min).
 
     A band is a pair (low, high) wherever raildyn takes one, so this conversion
     returns the pair itself, ready to pass on as ``band``.
@@ -342,7 +446,7 @@ def wavelength_band(band) -> tuple[float, float]:
     Parameters
     ----------
     band : (float, float)
-        (λ_min, λ_max), m, 0 < λ_min < λ_max.
+        (L_min, L_max), the shortest and longest wavelengths L_w, m, 0 < L_min < L_max.
 
     Returns
     -------

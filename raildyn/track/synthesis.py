@@ -216,7 +216,7 @@ def synthesize_irregularity(
 
 
 def _wavelength_band_checked(band, length: float, dx: float) -> tuple[float, float]:
-    """Wavenumber band of a wavelength band, checked against the record: 2·dx <= λ_min, λ_max <= length."""
+    """Wavenumber band of a wavelength band, checked against the record: 2·dx <= L_min, L_max <= length."""
     lo, hi = _wavenumber_band(band, "wavelength_band")
     shortest, longest = 2 * np.pi / hi, 2 * np.pi / lo
     if shortest < 2.0 * dx * (1 - 1e-12):
@@ -557,12 +557,12 @@ def excitation_csd(psd: Callable, omega, axle_positions, speed) -> np.ndarray:
 
 
 def axle_filter_wavelengths(axle_spacing: float, count: int) -> np.ndarray:
-    """Wavelengths λ_j = 2d/(2j + 1) that the mean of two axles a distance d apart does not feel.
+    """Wavelengths L_j = 2d/(2j + 1) that the mean of two axles a distance d apart does not feel.
 
     Each axle meets the same track d apart; where d is an odd number of half
     wavelengths the two see opposite irregularities and their mean (the bounce
     of a bogie or a car) is zero, whatever the speed. At speed V these are the
-    frequencies V/λ_j (:func:`~raildyn.track.deterministic.passing_frequency`), i.e. the
+    frequencies V/L_j (:func:`~raildyn.track.deterministic.passing_frequency`), i.e. the
     :func:`raildyn.random_vibration.cancellation_frequencies` for τ = d/V.
 
     Parameters
@@ -575,7 +575,7 @@ def axle_filter_wavelengths(axle_spacing: float, count: int) -> np.ndarray:
     Returns
     -------
     ndarray, shape (count,)
-        λ_j, m, j = 0 … count − 1, longest first.
+        L_j, m, j = 0 … count − 1, longest first.
 
     Examples
     --------

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from raildyn import _checks
-from raildyn.constants import GRAVITY
+from raildyn.constants import GRAVITY, MPH
 from raildyn.train.vehicles import FT, LB, LBF
 
 __all__ = [
@@ -29,8 +29,6 @@ __all__ = [
 
 #: kg per short ton (2000 lb, exact).
 SHORT_TON = 2000 * LB
-#: m/s per mile per hour (exact).
-MPH = 1609.344 / 3600
 
 # Original Davis coefficients by vehicle kind {davis1926}: B in lb/ton per mph, c_a in lb/ton per
 # (ft²·mph²/(ton-per-axle·axles)). Freight cars B = 0.045, c_a = 0.0005; locomotives and passenger

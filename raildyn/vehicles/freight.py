@@ -353,9 +353,9 @@ def rock_and_roll(
     lasts ``cycles`` rail lengths at the lowest speed; the amplitude is taken over
     its last quarter.
 
-    RK4 is explicit: it is stable only while every eigenvalue λ of the car with its
+    RK4 is explicit: it is stable only while every eigenvalue s_r of the car with its
     stiffest wedge law — sticking, the tanh's slope F/v_ε as a viscous damper —
-    keeps |1 + z + z²/2 + z³/6 + z⁴/24| ≤ 1 at z = λ Δt. A larger ``dt`` is
+    keeps |1 + z + z²/2 + z³/6 + z⁴/24| ≤ 1 at z = s_r Δt. A larger ``dt`` is
     refused before the run with the largest stable step in the message; a run
     whose roll still becomes non-finite raises :class:`raildyn.errors.SolverError`.
 

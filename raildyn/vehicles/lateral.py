@@ -321,10 +321,10 @@ class Car(_OnTheRails):
         """The 15-coordinate car (body y, ψ, φ; each frame y, ψ; each wheelset y, ψ) and its track inputs.
 
         Eight inputs: the alignment y_a (m) at each of the four wheelsets, then the
-        cross-level c (m) there, coupled to each wheelset by
+        cross-level Δz (m) there, coupled to each wheelset by
         :func:`~raildyn.wheelset.add_wheelset`. The bogie frames, which the model
         keeps upright on the track, tilt with the mean of their two wheelsets, so
-        the secondary roll springs act on φ − c̄/(2a).
+        the secondary roll springs act on φ − Δz̄/(2a), Δz̄ the mean of the two.
 
         Returns
         -------

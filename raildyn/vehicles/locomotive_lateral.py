@@ -534,10 +534,10 @@ class LateralLocomotive(LinearModelBase):
         """The 19-coordinate locomotive (body y, ψ, φ; each frame y, ψ; each wheelset y, ψ) and its inputs.
 
         Twelve inputs: the alignment y_a (m) at each of the six wheelsets, then the
-        cross-level c (m) there, coupled to each wheelset by
+        cross-level Δz (m) there, coupled to each wheelset by
         :func:`~raildyn.wheelset.add_wheelset`. The truck frames, kept upright on the
         track, tilt with the mean of their three wheelsets' cross-level, so the
-        secondary roll springs act on φ − c̄/(2a).
+        secondary roll springs act on φ − Δz̄/(2a), Δz̄ that mean.
 
         Returns
         -------

@@ -17,7 +17,9 @@ damping of the lateral models.
 * :func:`response_spectrum` — response PSD and RMS for spatial track spectra at
   speed V, one per irregularity component, the components independent
   (:func:`raildyn.track.synthesis.excitation_csd` and
-  :func:`raildyn.random_vibration.response_psd`);
+  :func:`raildyn.random_vibration.response_psd`). Each spectrum says which component
+  it describes (a :class:`raildyn.track.spectra.TrackSpectrum` names its own; a plain callable
+  needs ``component=``), and a component the vehicle has no input for is refused;
 * :func:`rms_over_speeds` — the RMS of :func:`response_spectrum` at many speeds;
 * :func:`time_response` — the history over a track profile, by the first-order hold of
   ``scipy.signal.lsim`` with its step loop compiled.
@@ -51,13 +53,33 @@ __all__ = [
 ]
 
 
-def _rail_weights(system: LinearSystem, component: str) -> np.ndarray:
+def _rail_weights(system: LinearSystem, component: str, source: str = "component") -> np.ndarray:
     """a_j: how an irregularity of the given component reaches each input.
 
     An input of the same kind takes it whole; a rail-height input takes a vertical
-    irregularity whole and a cross-level c as ±c/2 on the left/right rail.
+    irregularity whole and a cross-level Δz as ±Δz/2 on the left/right rail. A component
+    that reaches no input (the vertical car has no alignment input, the lateral car no
+    rail height) is refused, naming ``source``, the caller's parameter that gave it: its
+    response would be a zero that says nothing.
     """
-    _checks.choice("component", component, INPUT_KINDS)
+    _checks.choice(source, component, INPUT_KINDS)
+    weights = _weights(system, component)
+    if not np.any(weights):
+        allowed = [kind for kind in INPUT_KINDS if np.any(_weights(system, kind))]
+        what = (
+            f"component {component!r} is"
+            if source == "component"
+            else f"psd describes the {component!r} component,"
+        )
+        raise ValueError(
+            f"{what} not an input of this vehicle (its inputs are {sorted(set(system.input_kinds))}): "
+            f"its response would be zero; allowed components: {allowed}"
+        )
+    return weights
+
+
+def _weights(system: LinearSystem, component: str) -> np.ndarray:
+    """a_j of :func:`_rail_weights`, zeros included."""
     kinds = np.array(system.input_kinds)
     weights = (kinds == component).astype(float)
     if component == "cross_level":  # left − right = c: the left rail at +c/2, the right at −c/2
@@ -129,10 +151,17 @@ def track_frf(vehicle, omega, speed, output="body z", derivative: int = 0, compo
     derivative : {0, 1, 2}
         Output in m, m/s or m/s² per m of track.
     component : {"vertical", "alignment", "cross_level"}
+        The irregularity; one the vehicle has an input for (the vertical car takes only
+        "vertical", the lateral car "alignment" and "cross_level").
 
     Returns
     -------
     ndarray, complex, (n_ω,)
+
+    Raises
+    ------
+    ValueError
+        If the vehicle has no input for ``component`` (the FRF would be a zero that says nothing).
     """
     system, V = _steady_system(vehicle, speed)
     w = _omega(omega, positive=False)
@@ -219,27 +248,69 @@ class ResponseSpectrum:
 
 
 def _spectra(psd, component) -> dict:
-    """{component: S(Ω)} from one spectrum and its component, or from a mapping of independent components.
+    """{component: (S(Ω), the caller's parameter that named the component)} from the arguments.
 
-    Each S is wrapped so that what it returns is checked where it is used: finite, ≥ 0, shaped like Ω.
+    ``psd`` is one spectrum or a mapping {component: S} of independent components. A
+    :class:`raildyn.track.spectra.TrackSpectrum` names its own component; a plain callable needs
+    ``component``. A spectrum whose component is not stated, a ``component`` that contradicts
+    the spectrum's own, and the gauge (no vehicle here has a gauge input) are refused. Each S
+    is wrapped so that what it returns is checked where it is used: finite, ≥ 0, shaped like Ω.
     """
     if isinstance(psd, Mapping):
         if component is not None:
             raise ValueError(f"component must be None when psd is a mapping of components, got {component!r}")
         if not psd:
             raise ValueError("psd must hold at least one spectrum, got an empty mapping")
-        for name in psd:
+        for name, S in psd.items():
             if name not in INPUT_KINDS:
                 raise ValueError(f"psd must map components {INPUT_KINDS} to spectra; got the key {name!r}")
-        labels = {name: f"psd[{name!r}]" for name in psd}
-        spectra = dict(psd)
+            own = _own_component(S)
+            if own is not None and own != name:
+                raise ValueError(
+                    f"psd[{name!r}] is a spectrum of the {own!r} component, not of {name!r}: key each "
+                    f"spectrum by its own component"
+                )
+        entries = {name: (f"psd[{name!r}]", S, "psd") for name, S in psd.items()}
     else:
-        name = "vertical" if component is None else _checks.choice("component", component, INPUT_KINDS)
-        labels, spectra = {name: "psd"}, {name: psd}
+        own = _own_component(psd)
+        if component is not None:
+            _checks.choice("component", component, INPUT_KINDS)
+        if own is None and component is None:
+            _checks.function("psd", psd)
+            raise ValueError(
+                "psd does not say which irregularity it describes: give component= one of "
+                f"{list(INPUT_KINDS)}, or pass a spectrum that names its own (raildyn.track.track_psd), "
+                f"got {psd!r:.80}"
+            )
+        if own is not None and component is not None and own != component:
+            raise ValueError(
+                f"component {component!r} contradicts psd, a spectrum of the {own!r} component: "
+                f"give component={own!r} or leave it out"
+            )
+        if own is not None and own not in INPUT_KINDS:
+            raise ValueError(
+                f"psd is a spectrum of the {own!r} component, which no vehicle model takes as an input; "
+                f"allowed components: {list(INPUT_KINDS)}"
+            )
+        name, source = (own, "psd") if component is None else (component, "component")
+        entries = {name: ("psd", psd, source)}
     return {
-        name: _checked_spectrum(labels[name], _checks.function(labels[name], S))
-        for name, S in spectra.items()
+        name: (_checked_spectrum(label, _checks.function(label, S)), source)
+        for name, (label, S, source) in entries.items()
     }
+
+
+def _inputs_for(system: LinearSystem, psd, component) -> dict:
+    """:func:`_spectra`, each component checked, before any work, to reach an input of ``system``."""
+    spectra = _spectra(psd, component)
+    for name, (_, source) in spectra.items():
+        _rail_weights(system, name, source)
+    return spectra
+
+
+def _own_component(spectrum) -> str | None:
+    """The component a spectrum names itself (a :class:`raildyn.track.spectra.TrackSpectrum`), else None."""
+    return spectrum.component if isinstance(spectrum, _track.TrackSpectrum) else None
 
 
 def _checked_spectrum(label: str, spectrum: Callable) -> Callable:
@@ -271,10 +342,12 @@ def response_spectrum(
     Parameters
     ----------
     vehicle : LinearModel or LinearSystem
-    psd : callable or mapping
-        S(Ω), one-sided, m²/(rad/m), of the irregularity named by ``component``
-        (default "vertical"); or a mapping {component: S} of independent components.
-        Each S takes an array of Ω (rad/m) and returns finite values ≥ 0 of the same shape.
+    psd : TrackSpectrum, callable or mapping
+        S(Ω), one-sided, m²/(rad/m): a :class:`raildyn.track.spectra.TrackSpectrum` (from
+        :func:`raildyn.track.spectra.track_psd`), which names its component; a plain callable of
+        the irregularity named by ``component``; or a mapping {component: S} of
+        independent components. Each S takes an array of Ω (rad/m) and returns finite
+        values ≥ 0 of the same shape.
     speed : float
         V, m/s (> 0, below the critical speed of a lateral model).
     omega : array_like
@@ -284,7 +357,8 @@ def response_spectrum(
     derivative : {0, 1, 2}
         Displacement, velocity or acceleration of the output.
     component : {"vertical", "alignment", "cross_level"}, optional
-        With a single ``psd``: the component it describes.
+        With a single ``psd``: the component it describes. Required for a plain callable;
+        for a :class:`~raildyn.track.spectra.TrackSpectrum`, it may only repeat the spectrum's own.
 
     Returns
     -------
@@ -293,19 +367,32 @@ def response_spectrum(
     Raises
     ------
     ValueError
-        If a spectrum returns a non-finite or negative value, or an array not shaped like its Ω.
+        If a spectrum returns a non-finite or negative value, or an array not shaped like its Ω;
+        if the component of a plain callable is not given, or ``component`` contradicts the
+        spectrum's own; if the vehicle has no input for a component (the vertical car has no
+        alignment or cross-level input, the lateral car no rail height): its response would be
+        a zero that says nothing.
+
+    Examples
+    --------
+    >>> from raildyn import track
+    >>> from raildyn.vehicles import MANCHESTER_CAR
+    >>> w = np.linspace(1.0, 60.0, 200)
+    >>> spec = response_spectrum(MANCHESTER_CAR, track.track_psd("fra", "alignment", 4), 30.0, w, "body y")
+    >>> bool(spec.rms > 0)
+    True
     """
     system, V = _steady_system(vehicle, speed)
     w = _omega(omega, positive=True)
-    return _response_spectrum(system, _spectra(psd, component), V, w, output, derivative)
+    return _response_spectrum(system, _inputs_for(system, psd, component), V, w, output, derivative)
 
 
 def _response_spectrum(system, spectra, V, w, output, derivative) -> ResponseSpectrum:
     """:func:`response_spectrum` for checked arguments (the spectra from :func:`_spectra`)."""
     Hj = system.axle_frf(w, V, output, derivative)
     S = np.zeros(w.size)
-    for name, spectrum in spectra.items():
-        H = Hj * _rail_weights(system, name)[None, :]
+    for name, (spectrum, source) in spectra.items():
+        H = Hj * _rail_weights(system, name, source)[None, :]
         S_in = _track.excitation_csd(spectrum, w, system.input_positions, V)
         S = S + rv.response_psd(H, S_in)
     return ResponseSpectrum(w, S, float(np.sqrt(rv.mean_square(S, w))), V)
@@ -336,12 +423,12 @@ def rms_over_speeds(
     Raises
     ------
     ValueError
-        If a spectrum returns a non-finite or negative value, or an array not shaped like its Ω.
+        As for :func:`response_spectrum`.
     """
     system = _vehicle(vehicle)
     V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
     w = _omega(omega, positive=True)
-    spectra = _spectra(psd, component)
+    spectra = _inputs_for(system, psd, component)
     if np.any(system.C1):
         steady = (_steady_system(system, v, "speeds") for v in V)
         return np.array(
@@ -350,8 +437,8 @@ def rms_over_speeds(
     Hj = system.axle_frf(w, V[0], output, derivative)  # (n_ω, q), the same at every speed
     tau = _track.axle_delays(system.input_positions, 1.0)[None, :] / V[:, None]  # (n_V, q), s
     S = np.zeros((V.size, w.size))
-    for name, spectrum in spectra.items():
-        H = _delayed_sum(Hj, _rail_weights(system, name), w, tau)  # (n_V, n_ω)
+    for name, (spectrum, source) in spectra.items():
+        H = _delayed_sum(Hj, _rail_weights(system, name, source), w, tau)  # (n_V, n_ω)
         S = S + np.abs(H) ** 2 * np.asarray(spectrum(w[None, :] / V[:, None])) / V[:, None]
     return np.sqrt(np.trapezoid(S, w, axis=1))
 

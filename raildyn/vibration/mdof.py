@@ -114,15 +114,16 @@ class ComplexModes:
     Attributes
     ----------
     eigenvalues : complex ndarray, shape (2n,)
-        λ in rad/s, ascending in |λ|; each conjugate pair adjacent, Im λ >= 0 first.
+        The characteristic roots s_r, rad/s, ascending in |s_r|; each conjugate pair adjacent,
+        Im s_r >= 0 first.
     mode_shapes : complex ndarray, shape (n, 2n)
         Displacement part of each eigenvector, scaled so its largest-magnitude
         entry is 1 + 0j (dimensionless).
     natural_frequencies : ndarray, shape (2n,)
-        |λ|, rad/s (the undamped ω_j when damping is proportional); in Hz as
+        |s_r|, rad/s (the undamped ω_j when damping is proportional); in Hz as
         :attr:`natural_frequencies_hz`.
     damping_ratios : ndarray, shape (2n,)
-        −Re λ/|λ| (1 for a real, overdamped eigenvalue; 0 for λ = 0).
+        −Re s_r/|s_r| (1 for a real, overdamped eigenvalue; 0 for s_r = 0).
     """
 
     eigenvalues: np.ndarray
@@ -144,7 +145,7 @@ class ComplexModes:
 
     @property
     def natural_frequencies_hz(self) -> np.ndarray:
-        """|λ|/(2π), Hz."""
+        """|s_r|/(2π), Hz."""
         return self.natural_frequencies / (2.0 * np.pi)
 
     def relative_phase(self, coordinate: int, reference: int) -> np.ndarray:
@@ -210,14 +211,14 @@ class ChainMatrices:
 
 @dataclass(frozen=True)
 class RayleighCoefficients:
-    """Coefficients of Rayleigh (proportional) damping C = αM + βK.
+    """Coefficients of Rayleigh (proportional) damping C = a_M M + a_K K.
 
     Attributes
     ----------
     alpha : float
-        α, 1/s.
+        a_M, 1/s.
     beta : float
-        β, s.
+        a_K, s.
     """
 
     alpha: float
@@ -228,7 +229,7 @@ class RayleighCoefficients:
         object.__setattr__(self, "beta", scalar("beta", self.beta))
 
     def damping_ratio(self, omega):
-        """Damping ratio ξ(ω) = α/(2ω) + βω/2 that C = αM + βK gives a mode of frequency ω.
+        """Damping ratio ξ(ω) = a_M/(2ω) + a_Kω/2 that C = a_M M + a_K K gives a mode of frequency ω.
 
         Parameters
         ----------
@@ -249,7 +250,7 @@ class RayleighCoefficients:
         return xi[()]
 
     def damping_matrix(self, M, K) -> np.ndarray:
-        """C = αM + βK, N·s/m (see :func:`rayleigh_damping`).
+        """C = a_M M + a_K K, N·s/m (see :func:`rayleigh_damping`).
 
         Parameters
         ----------
@@ -458,11 +459,11 @@ def uniform_chain_frequencies(count: int, mass: float, stiffness: float) -> np.n
 
 
 def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) -> RayleighCoefficients:
-    """Coefficients (α, β) of C = αM + βK that give damping ratios ξ₁ at ω₁ and ξ₂ at ω₂.
+    """Coefficients (a_M, a_K) of C = a_M M + a_K K that give damping ratios ξ₁ at ω₁ and ξ₂ at ω₂.
 
-    Mode j then has ξ_j = α/(2ω_j) + βω_j/2 (Rayleigh damping; see Clough &
+    Mode j then has ξ_j = a_M/(2ω_j) + a_Kω_j/2 (Rayleigh damping; see Clough &
     Penzien, *Dynamics of Structures*, 2nd ed., 1993). Very unequal ratios can
-    make α or β negative, which damps some other frequencies negatively; check
+    make a_M or a_K negative, which damps some other frequencies negatively; check
     the result.
 
     Parameters
@@ -475,7 +476,7 @@ def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) 
     Returns
     -------
     RayleighCoefficients
-        α (1/s) and β (s).
+        a_M (1/s) and a_K (s), in the fields ``alpha`` and ``beta``.
 
     Examples
     --------
@@ -500,7 +501,7 @@ def rayleigh_coefficients(omega1: float, omega2: float, xi1: float, xi2: float) 
 
 
 def rayleigh_damping(M, K, alpha: float, beta: float) -> np.ndarray:
-    """Proportional damping matrix C = αM + βK.
+    """Proportional damping matrix C = a_M M + a_K K (Rayleigh damping).
 
     Parameters
     ----------
@@ -509,9 +510,9 @@ def rayleigh_damping(M, K, alpha: float, beta: float) -> np.ndarray:
     K : array_like, shape (n, n)
         Stiffness matrix, N/m; symmetric positive semi-definite.
     alpha : float
-        α, 1/s (any finite value).
+        a_M, 1/s (any finite value).
     beta : float
-        β, s (any finite value).
+        a_K, s (any finite value).
 
     Returns
     -------
@@ -746,9 +747,9 @@ def complex_modes(M, C, K) -> ComplexModes:
     """Eigenvalues and complex mode shapes of ``M x'' + C x' + K x = 0``, any damping.
 
     Writes the system in first-order form z' = A z with
-    A = [[0, I], [−M⁻¹K, −M⁻¹C]] and solves A z = λ z (scipy.linalg.eig). For
-    an underdamped mode λ = −ξω ± iω√(1 − ξ²), the multi-degree-of-freedom
-    counterpart of eq. (1.9).
+    A = [[0, I], [−M⁻¹K, −M⁻¹C]] and solves A z = s_r z (scipy.linalg.eig). For
+    an underdamped mode s_r = −ξω ± iω√(1 − ξ²), the multi-degree-of-freedom
+    counterpart of the roots s₁, s₂ of eq. (1.9).
 
     Parameters
     ----------
@@ -761,7 +762,7 @@ def complex_modes(M, C, K) -> ComplexModes:
     Returns
     -------
     ComplexModes
-        Eigenvalues (rad/s), complex shapes, |λ| and damping ratios.
+        Eigenvalues s_r (rad/s), complex shapes, |s_r| and damping ratios.
 
     Notes
     -----

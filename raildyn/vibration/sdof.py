@@ -643,8 +643,8 @@ class SDOF:
                 f"decay_peaks needs an oscillating system (damping ratio < 1), got {self.damping_ratio!r}"
             )
         sigma = self.damping_ratio * self.natural_frequency
-        # x = A e^(−σt) cos(ω_d t − φ) has x' = −A ω_n e^(−σt) sin(ω_d t − φ + β), sin β = ξ;
-        # maxima sit where ω_d t − φ + β is a whole number of turns.
+        # x = A e^(−σt) cos(ω_d t − φ) has x' = −A ω_n e^(−σt) sin(ω_d t − φ + arcsin ξ);
+        # maxima sit where ω_d t − φ + arcsin ξ is a whole number of turns.
         phi = math.atan2((v0 + sigma * x0) / wd, x0)
         offset = (phi - math.asin(self.damping_ratio)) % (2.0 * math.pi)
         if 2.0 * math.pi - offset < 1e-9:  # a peak rounded to just before t = 0 is the one at t = 0

@@ -49,8 +49,8 @@ def _random_track_controls():
             description="component",
         ),
         "speed_kmh": slider("V (km/h)", 80.0, 20.0, 300.0, 5.0, fmt=".0f"),
-        "shortest": slider("shortest λ (m)", 1.5, 0.5, 10.0, 0.5, fmt=".1f"),
-        "longest": slider("longest λ (m)", 300.0, 20.0, 1000.0, 10.0, fmt=".0f"),
+        "shortest": slider("shortest L_w (m)", 1.5, 0.5, 10.0, 0.5, fmt=".1f"),
+        "longest": slider("longest L_w (m)", 300.0, 20.0, 1000.0, 10.0, fmt=".0f"),
         "seed": widgets.IntSlider(value=1, min=0, max=20, description="seed"),
     }
 
@@ -110,7 +110,7 @@ def _random_track_setup(live, status):
         analytic = track.band_variance(spectrum, component, grade, sample.band)
         f_lo, f_hi = V * lo / (2 * np.pi), V * hi / (2 * np.pi)
         status.value = (
-            f"RMS over λ ∈ [{shortest:g}, {longest:g}] m: analytic {1e3 * np.sqrt(analytic):.2f} mm · "
+            f"RMS over L_w ∈ [{shortest:g}, {longest:g}] m: analytic {1e3 * np.sqrt(analytic):.2f} mm · "
             f"1 km sample {1e3 * sample.measured_rms:.2f} mm · at {v['speed_kmh']:.0f} km/h "
             f"this band excites {f_lo:.2f}–{f_hi:.1f} Hz"
         )

@@ -173,15 +173,15 @@ def _hunting_motion(speed: float) -> tuple[np.ndarray, np.ndarray, complex]:
     """The least-damped mode of the chapter's soft wheelset at ``speed`` (m/s), over one cycle.
 
     Returns y (m) and ψ (rad) at the phases ωt of ``_PHASES`` (degrees): the mode's eigenvector
-    times e^{λt}, growing or decaying as e^{σt} over the cycle, scaled so that the largest
-    |y| is 4 mm (or |ψ| stays within what the plan draws); and the eigenvalue λ = σ + iω (1/s).
+    times e^{s_r t}, growing or decaying as e^{(Re s_r)t} over the cycle, scaled so that the largest
+    |y| is 4 mm (or |ψ| stays within what the plan draws); and the eigenvalue s_r (1/s).
     """
     sweep = stability.mode_sweep(_HUNTING_WHEELSET, [speed])
     j = sweep.hunting_mode
     lam = complex(sweep.eigenvalues[0, j])
     shape = sweep.shapes[0, :, j]
     phase = np.radians(_PHASES)
-    # x(t) = Re(v e^{λt}) at t = φ/ω: one turn of the phase, with the growth e^{σt} of the cycle.
+    # x(t) = Re(v e^{s_r t}) at t = φ/ω: one turn of the phase, with the growth e^{(Re s_r)t} of the cycle.
     path = np.exp((lam.real / abs(lam.imag) + 1j) * phase)
     y, psi = np.real(shape[0] * path), np.real(shape[1] * path)
     scale = min(_HUNTING_Y / np.abs(y).max(), _HUNTING_PSI / np.abs(psi).max())
@@ -259,8 +259,8 @@ def hunting_wheelset():
     """The suspended wheelset's least-damped (hunting) mode, drawn in plan and moved over one cycle.
 
     The chapter's soft wheelset (k_ψ = 2 MN·m/rad, k_y = 1 MN/m, V_c ≈ 197 km/h). At the chosen
-    speed the linear model's least-damped mode, λ = σ + iω with eigenvector (y, ψ), gives the motion
-    Re(v e^{λt}); the phase slider moves ωt over one cycle. Left: the wheelset in plan
+    speed the linear model's least-damped mode, the eigenvalue s_r with eigenvector (y, ψ), gives the motion
+    Re(v e^{s_r t}); the phase slider moves ωt over one cycle. Left: the wheelset in plan
     (:func:`raildyn.diagrams.rolling.wheelset_plan`, y and ψ drawn 20 times larger), moved in place; right:
     y (mm) and ψ (mrad) over the cycle, scaled so that the largest |y| is 4 mm, growing above the
     critical speed and decaying below it. Controls: speed V (km/h), phase ωt (degrees).

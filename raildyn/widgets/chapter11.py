@@ -230,7 +230,8 @@ _SYNTH_SEED = 11  # the noise's seed: one fixed realisation, scaled by the slide
 def _synthetic(t) -> np.ndarray:
     """The 'measured' record: a decaying 5 Hz transient starting at 0.2 s, 1 at most (dimensionless).
 
-    The form e^(−λ(t−τ)) sin 2πf(t−τ) of Schwer's (2007) comparison of validation metrics.
+    The form e^(−a(t−τ)) sin 2πf(t−τ), a decay rate a (here 2 1/s), of Schwer's (2007) comparison of
+    validation metrics.
     """
     s = np.clip(t - 0.2, 0.0, None)
     return np.exp(-2.0 * s) * np.sin(2 * np.pi * 5.0 * s)

@@ -94,6 +94,8 @@ ENTRIES = [
     fuzz("raildyn.track.fra_psd", lambda: call("vertical", 4, W, k=0.25), accepts={"wavenumber": "shape"}),
     fuzz("raildyn.track.german_psd", lambda: call("cross_level", "low", W), accepts={"wavenumber": "shape"}),
     fuzz("raildyn.track.track_psd", lambda: call("fra", "vertical", 4)),
+    fuzz("raildyn.track.TrackSpectrum", lambda: call("german", "alignment", "high")),
+    fuzz("raildyn.track.fra_speed_limit", lambda: call(4, "freight")),
     fuzz("raildyn.track.wavelength_band", lambda: call((1.524, 304.8))),
     fuzz("raildyn.track.band_variance", lambda: call("fra", "cross_level", 4, (0.02, 4.0), k=0.25)),
     # ----------------------------------------------------------------- samples and the view in time

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 from fuzzing import call, fuzz, on
 
+from raildyn import track
 from raildyn import vehicles as veh
 from raildyn.linear_model import Assembler
 from raildyn.vehicles import vertical
@@ -36,7 +37,7 @@ def bogie_assembler():
 
 
 def spectrum():
-    return veh.response_spectrum(veh.VerticalCar(), spatial_psd, 30.0, OMEGA)
+    return veh.response_spectrum(veh.VerticalCar(), spatial_psd, 30.0, OMEGA, component="vertical")
 
 
 def rocking():
@@ -153,14 +154,17 @@ ENTRIES = [
         lambda: call(veh.VerticalCar(), OMEGA, 30.0),
         accepts={"omega": "zero", "derivative": "zero"},
     ),
+    # A spectrum must say what it describes: a plain callable with component= (component None: the
+    # refusal of an unstated component, "unknown" and "type": of a name that is no component) ...
     fuzz(
         "raildyn.vehicles.response_spectrum",
-        lambda: call(veh.VerticalCar(), spatial_psd, 30.0, OMEGA),
+        lambda: call(veh.VerticalCar(), spatial_psd, 30.0, OMEGA, component="vertical"),
         accepts={"derivative": "zero"},
     ),
+    # ... or a TrackSpectrum, which names its own (component "abc": refused by name, not taken for it).
     fuzz(
         "raildyn.vehicles.rms_over_speeds",
-        lambda: call(veh.VerticalCar(), spatial_psd, [20.0, 30.0], OMEGA),
+        lambda: call(veh.VerticalCar(), track.track_psd("german", "vertical", "low"), [20.0, 30.0], OMEGA),
         accepts={"derivative": "zero"},
     ),
     fuzz(
