@@ -127,18 +127,10 @@ def test_the_page_gives_each_of_these_symbols_one_meaning():
         assert not re.search(rf"^- {re.escape(symbol)}\b", local, re.M), f"{symbol} keeps a second meaning"
 
 
-# Chapter 4's saturation ratio β of the creep laws is renamed with those laws, in the part of this work
-# that rewrites chapter 4's creep comparison; strict, so that the mark goes when the rename lands.
-_PENDING = {("β", "04")}
-
-
 def _one_meaning_cases():
     for symbol in ONE_MEANING:
         for path in NOTEBOOKS:
-            marks = ()
-            if (symbol, path.stem[:2]) in _PENDING:
-                marks = pytest.mark.xfail(strict=True, reason="chapter 4's creep laws rename their β")
-            yield pytest.param(symbol, path, id=f"{symbol}-{path.stem[:2]}", marks=marks)
+            yield pytest.param(symbol, path, id=f"{symbol}-{path.stem[:2]}")
 
 
 @pytest.mark.parametrize("symbol, path", list(_one_meaning_cases()))

@@ -502,7 +502,7 @@ def johnson_vermeulen(
     sliding), directed along (f₁₁γ_x, f₂₂γ_y). At small creepage the forces are −f₁₁γ_x and
     −f₂₂γ_y with these coefficients, 15–23 % above Kalker's for a circle.
 
-    The cubic in χ is, with β = 3χ, Shen, Hedrick and Elkins's β − β²/3 + β³/27: their law
+    The cubic in χ is, with F̂ = 3χ, Shen, Hedrick and Elkins's F̂ − F̂²/3 + F̂³/27: their law
     (:func:`shen_hedrick_elkins`) applies this saturation to Kalker's linear forces, spin
     included, so the two differ at zero spin only through the creep coefficients.
 
@@ -558,7 +558,7 @@ def johnson_vermeulen(
 def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
     """Shen–Hedrick–Elkins reduction of a linear creep force F towards μN (Shen et al. 1983): F_sat/F.
 
-    With u = F/(μN), F_sat = μN(u − u²/3 + u³/27) for u < 3 and μN beyond. The one
+    With F̂ = F/(μN), F_sat = μN(F̂ − F̂²/3 + F̂³/27) for F̂ < 3 and μN beyond. The one
     statement of the law in raildyn: :func:`shen_hedrick_elkins` and the nonlinear
     wheelset (:func:`raildyn.wheelset.contact_forces`) both scale by it.
 
@@ -579,7 +579,7 @@ def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
 
     Examples
     --------
-    >>> float(saturation_factor(3.0e4, 1.0e4))  # u = 3: fully saturated, F_sat = μN
+    >>> float(saturation_factor(3.0e4, 1.0e4))  # F̂ = 3: fully saturated, F_sat = μN
     0.3333333333333333
     """
     if check is not False:
@@ -594,9 +594,9 @@ def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
 def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coefficients: CreepCoefficients):
     """Kalker's linear forces bounded by the heuristic saturation of Shen, Hedrick and Elkins (1983).
 
-    The linear forces include spin (Fy = −f₂₂γ_y − f₂₃φ). With β = |F_lin|/(μN), the resultant
-    √(Fx² + Fy²) becomes μN(β − β²/3 + β³/27) for β ≤ 3 and μN beyond; Fx, Fy and Mz are all
-    scaled by the same factor. The cubic is Vermeulen and Johnson's 1 − (1 − β/3)³
+    The linear forces include spin (Fy = −f₂₂γ_y − f₂₃φ). With F̂ = |F_lin|/(μN), the resultant
+    √(Fx² + Fy²) becomes μN(F̂ − F̂²/3 + F̂³/27) for F̂ ≤ 3 and μN beyond; Fx, Fy and Mz are all
+    scaled by the same factor. The cubic is Vermeulen and Johnson's 1 − (1 − F̂/3)³
     (:func:`johnson_vermeulen`), applied to Kalker's coefficients instead of theirs.
 
     Parameters
@@ -619,7 +619,7 @@ def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coef
 
     Examples
     --------
-    At β = 3 (the linear force three times μN) the curve meets μN:
+    At F̂ = 3 (the linear force three times μN) the curve meets μN:
 
     >>> f = creep_coefficients(6e-3, 4e-3)
     >>> round(shen_hedrick_elkins(3 * 30e3 / f.f11, 0.0, 0.0, 1e5, 0.3, f).fx, 6)
