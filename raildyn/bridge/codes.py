@@ -160,7 +160,8 @@ def en1991_real_train_factor(speed, determinant_length, frequency_hz, maintenanc
     Parameters
     ----------
     speed : float
-        v, m/s, in [0, 200] (the annex is written for speeds up to 200 km/h, 55.6 m/s, where no
+        v, m/s, in [0, :data:`~raildyn.constants.MAXIMUM_SPEED`] (200 m/s; the annex is written for speeds
+        up to 200 km/h, 55.6 m/s, where no
         dynamic analysis is asked for; beyond, φ′ stays at its plateau).
     determinant_length : float
         L_Φ, m, in (0, 1e5].
@@ -181,7 +182,7 @@ def en1991_real_train_factor(speed, determinant_length, frequency_hz, maintenanc
     >>> round(en1991_real_train_factor(40.0, 20.0, 4.0), 4)
     1.3367
     """
-    v = _checks.scalar("speed", speed, low=0.0, high=200.0)
+    v = _checks.speed("speed", speed, low_open=False)
     L = float(_lengths("determinant_length", _checks.scalar("determinant_length", determinant_length)))
     n0 = _checks.positive("frequency_hz", frequency_hz)
     kind = _checks.choice("maintenance", maintenance, ("careful", "standard"))

@@ -33,7 +33,7 @@ class CurveEntry:
     Attributes
     ----------
     speed : float
-        V, m/s (> 0).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     curve : Curve
     distance : ndarray, (m,)
         s_c, the vehicle centre's distance along the curve, m (increasing).
@@ -60,7 +60,7 @@ class CurveEntry:
     flange_force: np.ndarray
 
     def __post_init__(self):
-        _checks.positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         _checks.instance("curve", self.curve, Curve)
         m = _checks.array("distance", self.distance, ndim=1, allow_empty=False).shape[0]
         k = _checks.array("positions", self.positions, ndim=1, allow_empty=False).shape[0]

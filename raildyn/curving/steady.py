@@ -40,7 +40,7 @@ class SteadyCurving:
     radius : float
         R, m (> 0).
     speed : float
-        V, m/s (> 0).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     cant : float
         h_t, height of the outer rail above the inner, m (≥ 0).
     unbalanced_acceleration : float
@@ -81,7 +81,7 @@ class SteadyCurving:
 
     def __post_init__(self):
         _checks.positive("radius", self.radius)
-        _checks.positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         _checks.nonnegative("cant", self.cant)
         _checks.scalar("unbalanced_acceleration", self.unbalanced_acceleration)
         labels = _checks.strings("labels", self.labels)

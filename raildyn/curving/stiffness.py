@@ -259,7 +259,7 @@ class StabilityCurving:
             )
         _checks.array("critical_speed", np.where(stable, 1.0, v), low=0.0, low_open=True)
         _checks.array("angle_of_attack", self.angle_of_attack, shape=(m,))
-        _checks.positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         _checks.positive("radius", self.radius)
         _checks.nonnegative("cant", self.cant)
         _range(self.speed_range)
@@ -319,12 +319,7 @@ class StabilityCurving:
 
 
 def _range(speed_range) -> tuple[float, float]:
-    r = _checks.array("speed_range", speed_range)
-    if r.shape != (2,):
-        raise ValueError(f"speed_range must be (low, high) in m/s, got {speed_range!r}")
-    low = _checks.scalar("speed_range[0]", float(r[0]), low=0.0, low_open=True)
-    high = _checks.scalar("speed_range[1]", float(r[1]), low=low, low_open=True)
-    return low, high
+    return _checks.speed_range("speed_range", speed_range)
 
 
 def _stiffness_matrices(model, ks: np.ndarray):

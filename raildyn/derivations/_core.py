@@ -243,7 +243,7 @@ class Derivation:
             (M, C, K, GK, GC), shapes (n, n) × 3 and (n, p) × 2.
         """
         if self.speed is not None:
-            speed = _checks.positive("speed", speed)
+            speed = _checks.speed("speed", speed)
         elif speed is not None:
             speed = _checks.scalar("speed", speed)
         values = list(self.values(model).values())

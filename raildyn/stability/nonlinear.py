@@ -60,7 +60,7 @@ class NonlinearRun:
     lateral_index: int
 
     def __post_init__(self):
-        positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         n_t = _checks.time_grid("t", self.t).size
         rows = array("states", self.states, shape=(None, n_t), allow_empty=False).shape[0]
         integer("lateral_index", self.lateral_index, low=0, high=rows - 1)
@@ -128,7 +128,7 @@ def simulate(
     model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
         ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and ``lateral_index``.
     speed : float
-        V, m/s (> 0).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     initial_state : array_like, (state_size,)
         In the units of the model's state (finite).
     duration : float
@@ -170,7 +170,7 @@ def simulate(
     >>> run.states.shape[0], float(run.t[-1])
     (4, 0.5)
     """
-    V = scalar("speed", speed, low=0.0, low_open=True)
+    V = _checks.speed("speed", speed)
     T = _duration("duration", duration)
     h = positive("max_step", max_step)
     r = _checks.tolerance("rtol", rtol)
@@ -376,7 +376,7 @@ class LimitCycle:
     duration: float
 
     def __post_init__(self):
-        positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         for name in ("amplitude", "frequency_hz", "growth"):
             _checks.nonnegative(name, getattr(self, name))
         array("state", self.state, ndim=1, allow_empty=False)
@@ -478,7 +478,7 @@ def limit_cycle_amplitude(
         The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
         ``lateral_index``.
     speed : float
-        Speed V, m/s (> 0).
+        Speed V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     initial_displacement : float
         Starting lateral displacement of the first wheelset, m, either side, 0 < |y₀| ≤
         0.05 m: the centred state never moves, and no wheelset on the rails is further off
@@ -520,7 +520,7 @@ def limit_cycle_amplitude(
     >>> cycle.hunting(), round(1e3 * cycle.amplitude, 1), round(cycle.frequency_hz, 1)
     (True, 10.3, 5.7)
     """
-    V = scalar("speed", speed, low=0.0, low_open=True)
+    V = _checks.speed("speed", speed)
     T = _duration("duration", duration)
     h = positive("max_step", max_step)
     r = _checks.tolerance("rtol", rtol)
@@ -582,8 +582,8 @@ class BifurcationDiagram:
     hunting : ndarray of bool
         Whether the motion at each speed is a sustained oscillation (:meth:`LimitCycle.hunting`).
     nonlinear_critical_speed : float
-        Lowest speed at which a limit cycle persists, m/s (> 0), refined by bisection
-        between the grid speeds (inf if there is none on the grid).
+        Lowest speed at which a limit cycle persists, m/s, refined by bisection between the
+        grid speeds, so within their range (inf if there is none on the grid).
     threshold : float
         Amplitude of the oscillation below which the motion counts as decayed, m (> 0).
     """
@@ -605,7 +605,10 @@ class BifurcationDiagram:
         if hunting.shape != (n,):
             raise ValueError(f"hunting must have shape ({n},), got {hunting.shape}")
         if self.nonlinear_critical_speed != np.inf:  # inf: no limit cycle on the grid
-            positive("nonlinear_critical_speed", self.nonlinear_critical_speed)
+            V = np.asarray(self.speeds, dtype=float)
+            _checks.speed(
+                "nonlinear_critical_speed", self.nonlinear_critical_speed, low=V.min(), high=V.max()
+            )
         positive("threshold", self.threshold)
 
     def plot(
@@ -901,7 +904,7 @@ class PeriodicOrbit:
     residual: float
 
     def __post_init__(self):
-        positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         positive("period", self.period)
         n = array("state", self.state, ndim=1, allow_empty=False).size
         _checks.nonnegative("amplitude", self.amplitude)
@@ -941,7 +944,7 @@ def periodic_orbit(
         The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
         ``lateral_index``.
     speed : float
-        Speed V, m/s (> 0).
+        Speed V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     state : array_like, shape (state_size,)
         Guess of a point on the orbit (for instance the ``state`` at the end of a
         :func:`limit_cycle_amplitude` run), in the units of the model's state: finite, not
@@ -972,7 +975,7 @@ def periodic_orbit(
     The centred state is a trivial solution of the same equations: a guess
     far from any cycle may converge to it (amplitude 0).
     """
-    V = scalar("speed", speed, low=0.0, low_open=True)
+    V = _checks.speed("speed", speed)
     T = _duration("period", period)
     positive("tol", tol)
     iterations = integer("max_iter", max_iter, low=1, high=100)

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn.constants import MAXIMUM_SPEED
 
 __all__ = [
     "RAIL_LENGTH",
@@ -40,9 +41,8 @@ __all__ = [
 ]
 
 RAIL_LENGTH = 11.9  # m; the 39-ft rail of North American jointed track (Garg & Dukkipati 1984, ch. 3)
-# m/s: the speed a rate in time may be asked at, six times the rail speed record (160 m/s), so that
-# V² d²z/dx² stays finite for any finite profile.
-_MAX_SPEED = 1000.0
+# m/s: the speed a rate in time may be asked at: the package's one speed limit.
+_MAX_SPEED = MAXIMUM_SPEED
 _ARRANGEMENTS = ("staggered", "in_phase")
 
 
@@ -51,8 +51,8 @@ def _derivative(value) -> int:
 
 
 def _vehicle_speed(speed) -> float:
-    """A vehicle speed for a view in time, 0 < V <= 1000 m/s (``_MAX_SPEED``)."""
-    return _checks.scalar("speed", speed, low=0.0, low_open=True, high=_MAX_SPEED)
+    """A vehicle speed for a view in time, 0 < V <= MAXIMUM_SPEED (200 m/s)."""
+    return _checks.speed("speed", speed)
 
 
 def _speed(speed) -> float | None:
@@ -94,8 +94,8 @@ def dipped_joints(
         taken as the mean of its two one-sided values (0); the curvature returned
         is the regular part, without the Dirac term of the slope jump 4h_j/ℓ_j.
     speed : float, optional
-        V, m/s, 0 < V <= 1000 (six times the rail speed record, so that the rates
-        stay finite): return the rates met in time instead, dz/dt = V dz/dx (m/s)
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: return the rates met
+        in time instead, dz/dt = V dz/dx (m/s)
         or d²z/dt² = V² d²z/dx² (m/s²).
 
     Returns
@@ -241,7 +241,8 @@ def jointed_track(
     derivative : {0, 1, 2}
         Profiles (m), slopes or curvatures (1/m), as for :func:`dipped_joints`.
     speed : float, optional
-        V, m/s, 0 < V <= 1000: rates in time instead, as for :func:`dipped_joints`.
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: rates in time instead, as for
+        :func:`dipped_joints`.
 
     Returns
     -------
@@ -283,7 +284,8 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
     derivative : {0, 1, 2}
         z (m), dz/dx or d²z/dx² (1/m).
     speed : float, optional
-        V, m/s, 0 < V <= 1000: return the rates met in time instead, dz/dt = V dz/dx
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: return the rates met in
+        time instead, dz/dt = V dz/dx
         (m/s) or d²z/dt² = V² d²z/dx² (m/s²). The largest dz/dt is πhV/ℓ.
 
     Returns
@@ -334,7 +336,8 @@ def sinusoid(
     derivative : {0, 1, 2}
         z (m), dz/dx or d²z/dx² (1/m).
     speed : float, optional
-        V, m/s, 0 < V <= 1000: return the rates met in time instead (m/s, m/s²).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: return the rates met in
+        time instead (m/s, m/s²).
 
     Returns
     -------
@@ -367,7 +370,7 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     Parameters
     ----------
     speed : float
-        V, m/s, > 0.
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     rail_length : float
         L, m, > 0 (default 11.9).
 
@@ -381,7 +384,7 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     >>> round(passing_frequency(119.0 / 3.6), 4)  # 119 km/h over 11.9 m rails
     2.7778
     """
-    return _checks.positive("speed", speed) / _checks.positive("rail_length", rail_length)
+    return _vehicle_speed(speed) / _checks.positive("rail_length", rail_length)
 
 
 def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmonic: int = 1) -> float:
@@ -403,7 +406,8 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     Returns
     -------
     float
-        V, m/s.
+        V, m/s, at most :data:`~raildyn.constants.MAXIMUM_SPEED` (a frequency no train could
+        meet that fast is refused).
 
     Examples
     --------
@@ -413,7 +417,14 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     f = _checks.positive("frequency", frequency)
     L = _checks.positive("rail_length", rail_length)
     n = _checks.integer("harmonic", harmonic, low=1)
-    return f * L / n
+    V = f * L / n
+    if not V <= MAXIMUM_SPEED:
+        raise ValueError(
+            f"frequency = {frequency!r} Hz would be met at V = fL/n = {V:.4g} m/s, above the "
+            f"{MAXIMUM_SPEED:g} m/s of raildyn.constants.MAXIMUM_SPEED: no train meets it (a frequency "
+            f"in rad/s, or rail_length = {rail_length!r} m in millimetres?)"
+        )
+    return V
 
 
 def harmonic_amplitudes(one_period, count: int) -> np.ndarray:

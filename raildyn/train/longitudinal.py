@@ -54,6 +54,9 @@ METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 _MAX_DURATION = 86_400.0
 # Most output times of a run (its arrays are vehicles x samples).
 _MAX_SAMPLES = 1_000_000
+# Largest regularisation speed v_c of the retarding forces' tanh, m/s (3.6 km/h): a smoothing of the
+# sign of v, far below running speeds (the default is 0.05 m/s).
+_MAX_CREEP_SPEED = 1.0
 # Steps of the compiled integrator between two updates of the progress bar: some 0.1 s of a
 # 150-wagon run, so the bar moves smoothly and the return to Python costs nothing measurable.
 _CHUNK = 2000
@@ -87,7 +90,8 @@ class TrainModel:
     davis_form : {"original", "modified"}
         Form of the Davis resistance formula.
     creep_speed : float
-        v_c of the ``tanh`` regularisation of the retarding forces, m/s (> 0).
+        v_c of the ``tanh`` regularisation of the retarding forces, m/s, in (0, 1]: a
+        smoothing of the sign of v, far below running speeds (1 m/s is already 3.6 km/h).
     front_start : float
         Route position of the front coupler face at t = 0, m.
     resistance : bool
@@ -119,7 +123,7 @@ class TrainModel:
         _checks.choice("davis_form", self.davis_form, ("original", "modified"))
         _checks.scalar("notch", self.notch, low=0, high=NOTCHES)
         _checks.scalar("dynamic_brake", self.dynamic_brake, low=0.0, high=1.0)
-        _checks.positive("creep_speed", self.creep_speed)
+        _checks.scalar("creep_speed", self.creep_speed, low=0.0, low_open=True, high=_MAX_CREEP_SPEED)
         _checks.scalar("front_start", self.front_start)
         c = self.consist
         kinds = [v.kind for v in c.vehicles]

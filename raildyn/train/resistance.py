@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from raildyn import _checks
-from raildyn.constants import GRAVITY
+from raildyn.constants import GRAVITY, MAXIMUM_SPEED
 from raildyn.train.vehicles import FT, LB, LBF
 
 __all__ = [
@@ -54,9 +54,9 @@ _MAX_GRADE = 0.15
 # than any railway curve (tram curves go down to about 15 m); the AREA formula and the coupler
 # geometry are meant for curves far gentler than this.
 _MAX_CURVATURE = 0.1
-# Fastest speed the resistance and traction formulas take, m/s: 200 (720 km/h), above the
-# wheel-rail speed record (574.8 km/h, 160 m/s, 2007); Davis's formula was fitted far below it.
-_MAX_SPEED = 200.0
+# Fastest speed the resistance and traction formulas take, m/s: the package's one limit (720 km/h),
+# above the wheel-rail speed record; Davis's formula was fitted far below it.
+_MAX_SPEED = MAXIMUM_SPEED
 
 
 def _bounded(name, value, limit, unit):

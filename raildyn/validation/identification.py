@@ -640,7 +640,7 @@ def weigh_in_motion(
     fit_gaps = _checks.flag("fit_spacings", fit_spacings)
     level = _confidence(confidence)
     if speed is not None:
-        speed = _checks.scalar("speed", speed, low=0.0, high=200.0, low_open=True)
+        speed = _checks.speed("speed", speed)
     n_axles, n_sens = gaps.size + 1, pos.size
     scale = c / beam.flexural_rigidity
     L = beam.span
@@ -737,9 +737,7 @@ class CoastDownFit(ParameterFit):
         ndarray
             Shape of ``speed``.
         """
-        v = _checks.array("speed", speed, allow_empty=False)
-        if np.abs(v).max() > 1000.0:
-            raise ValueError(f"speed must be within ±1000 m/s, got {v.flat[np.argmax(np.abs(v))]!r}")
+        v = _checks.plausible_array("speed", speed, "speed", signed=True, allow_empty=False)
         a, b, c = self.estimate[:3]
         return a + b * v + c * v**2
 

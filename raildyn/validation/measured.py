@@ -248,7 +248,7 @@ class LerelvaCase:
         _checks.instance("fit", self.fit, WeighInMotionFit)
         _checks.instance("pattern", self.pattern, WeighInMotionFit)
         for name in ("peak_speed", "lag_speed", "model_lag_speed"):
-            _checks.positive(name, getattr(self, name))
+            _checks.speed(name, getattr(self, name))
         t = _checks.array("time", self.time, ndim=1, allow_empty=False)
         m = _checks.array("measured", self.measured, ndim=2)
         if m.shape[1] != t.size:

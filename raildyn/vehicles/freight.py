@@ -80,20 +80,27 @@ class FreightCar(LinearModelBase):
     ----------
     body_mass : float
         Body and lading, kg: the AAR 286 000 lb (129.7 t) gross rail load (the "286K standard",
-        railroad.net) less two trucks of about 4.35 t: 121 000 kg.
+        railroad.net) less two trucks of about 4.35 t: 121 000 kg; in [10, 1e6]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass").
     body_pitch_inertia : float
-        kg·m² (a uniform 15 m body: m L²/12 ≈ 2.3 × 10⁶ kg·m²).
+        kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (a uniform 15 m body: m
+        L²/12 ≈ 2.3 × 10⁶ kg·m²).
     body_roll_inertia : float
-        About the centre of gravity, kg·m² (3.2 m wide, 3.5 m tall box: m(w² + h²)/12).
+        About the centre of gravity, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "inertia") (3.2 m wide, 3.5 m tall box: m(w² + h²)/12).
     cg_height : float
-        Centre of gravity above the spring plane, m (2.1 m above rail, nests 0.6 m).
+        Centre of gravity above the spring plane, m, in [0, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (2.1 m above rail, nests 0.6 m).
     semi_truck_spacing : float
-        l, half the distance between truck centres, m (40 ft 8 in centres, the value
+        l, half the distance between truck centres, m, in (0, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (40 ft 8 in centres, the value
         :mod:`raildyn.train.vehicles` takes for the loaded hopper).
     semi_truck_wheelbase : float
-        b, half a truck's wheelbase, m (1.73 m wheelbase).
+        b, half a truck's wheelbase, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length") (1.73 m wheelbase).
     semi_spring_spacing : float
-        d, half the lateral distance between the nests (the side-frame spacing), m.
+        d, half the lateral distance between the nests (the side-frame spacing), m, in (0, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
     nest_stiffness : float
         Per nest, N/m: a static deflection of 0.06 m under a quarter of the body.
     wedge_friction : float
@@ -121,6 +128,11 @@ class FreightCar(LinearModelBase):
                 _checks.nonnegative(name, value)
             else:
                 _checks.positive(name, value)
+        _checks.plausible("body_mass", self.body_mass, "mass")
+        _checks.plausible_fields(self, "inertia", ("body_pitch_inertia", "body_roll_inertia"))
+        _checks.plausible("cg_height", self.cg_height, "vehicle_length")
+        lengths = ("semi_truck_spacing", "semi_truck_wheelbase", "semi_spring_spacing")
+        _checks.plausible_fields(self, "vehicle_length", lengths, low_open=True)
         if self.semi_truck_wheelbase >= self.semi_truck_spacing:
             raise ValueError(
                 f"semi_truck_wheelbase must be less than semi_truck_spacing ({self.semi_truck_spacing!r} m) "
@@ -245,7 +257,7 @@ class RockAndRoll:
     Attributes
     ----------
     speeds : ndarray, (n_speeds,)
-        m/s, > 0, not empty.
+        m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`], not empty.
     roll_amplitude : ndarray, (n_speeds,)
         Half the peak-to-peak roll over the last cycles, rad, ≥ 0, one per speed.
     resonance_speed : float
@@ -263,7 +275,7 @@ class RockAndRoll:
     roll: np.ndarray
 
     def __post_init__(self):
-        V = _checks.array("speeds", self.speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
+        V = _checks.speeds("speeds", self.speeds)
         t = _checks.time_grid("t", self.t)
         object.__setattr__(self, "speeds", V)
         object.__setattr__(self, "roll_amplitude", _checks.array("roll_amplitude", self.roll_amplitude,
@@ -351,7 +363,7 @@ def rock_and_roll(
     ----------
     car : FreightCar
     speeds : array_like
-        m/s, > 0, not empty.
+        m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`], not empty.
     depth, half_width : float
         Dip of each joint (m, ≥ 0) and its half-length along the rail (m, in (0, L/2]).
     rail_length : float
@@ -371,7 +383,7 @@ def rock_and_roll(
     RockAndRoll
     """
     _checks.instance("car", car, FreightCar)
-    V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
+    V = _checks.speeds("speeds", speeds)
     cycles = _checks.integer("cycles", cycles, low=4)
     eps = _checks.positive("velocity_scale", velocity_scale)
     L = _checks.positive("rail_length", rail_length)

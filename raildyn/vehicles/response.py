@@ -100,7 +100,7 @@ def _vehicle(vehicle) -> LinearSystem:
 def _steady_system(vehicle, speed, name: str = "speed") -> tuple[LinearSystem, float]:
     """The vehicle's system and V, refusing a speed at which the model is unstable (no steady response)."""
     system = _vehicle(vehicle)
-    V = _checks.positive(name, speed)
+    V = _checks.speed(name, speed)
     if np.any(system.C1):
         growth = np.linalg.eigvals(system.matrices(V).state_matrix()).real.max()
         if growth >= 0:
@@ -123,7 +123,8 @@ def track_frf(vehicle, omega, speed, output="body z", derivative: int = 0, compo
     omega : array_like, (n_ω,)
         rad/s, in [0, 1e6] (rigid-body models of motions below some 100 Hz), not empty.
     speed : float
-        V, m/s (> 0, below the critical speed of a lateral model).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
+        model.
     output : str, (str, float) or array_like
         See :meth:`raildyn.linear_model.LinearSystem.output_vector`.
     derivative : {0, 1, 2}
@@ -160,7 +161,7 @@ class ResponseSpectrum:
     rms : float
         √∫S dω over the grid, in the output unit, ≥ 0.
     speed : float
-        m/s, > 0.
+        m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     """
 
     omega: np.ndarray
@@ -173,7 +174,7 @@ class ResponseSpectrum:
         object.__setattr__(self, "omega", w)
         object.__setattr__(self, "psd", _checks.array("psd", self.psd, shape=w.shape, low=0.0))
         object.__setattr__(self, "rms", _checks.nonnegative("rms", self.rms))
-        object.__setattr__(self, "speed", _checks.positive("speed", self.speed))
+        object.__setattr__(self, "speed", _checks.speed("speed", self.speed))
 
     @property
     def frequency_hz(self) -> np.ndarray:
@@ -276,7 +277,8 @@ def response_spectrum(
         (default "vertical"); or a mapping {component: S} of independent components.
         Each S takes an array of Ω (rad/m) and returns finite values ≥ 0 of the same shape.
     speed : float
-        V, m/s (> 0, below the critical speed of a lateral model).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
+        model.
     omega : array_like
         rad/s, in (0, 1e6] (rigid-body models of motions below some 100 Hz), not empty.
     output : str, (str, float) or array_like
@@ -326,7 +328,8 @@ def rms_over_speeds(
     vehicle, psd, omega, output, derivative, component
         As for :func:`response_spectrum`.
     speeds : array_like, (n_V,)
-        m/s, > 0 (below the critical speed of a lateral model), not empty.
+        m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a
+        lateral model; not empty.
 
     Returns
     -------
@@ -339,7 +342,7 @@ def rms_over_speeds(
         If a spectrum returns a non-finite or negative value, or an array not shaped like its Ω.
     """
     system = _vehicle(vehicle)
-    V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
+    V = _checks.speeds("speeds", speeds)
     w = _omega(omega, positive=True)
     spectra = _spectra(psd, component)
     if np.any(system.C1):
@@ -551,7 +554,7 @@ def time_response(
         The slope dz/dx with the same signature and the same demands on what it
         returns; without it the damper inputs use a finite-difference slope.
     speed : float
-        m/s (> 0, below the critical speed of a lateral model).
+        m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral model.
     t : array_like
         Uniform, strictly increasing times, s, starting from rest at static equilibrium.
     output : str, (str, float) or array_like

@@ -353,6 +353,17 @@ ENTRIES = [
         lambda: call(OMEGA, np.array([1.0, 0.1, 0.01]), ax=axes()),
         accepts={"psd": "zero", "ax": "none"},
     ),
+    # ------------------------------------------------------------------ the plausible ranges
+    fuzz(
+        "raildyn.constants.PlausibleRange",
+        lambda: call("a wheel's rolling radius", 0.1, 1.5, "m", "from the smallest wheels to the largest"),
+        # any text describes a quantity; a range may start at 0 or below (a signed quantity), and a
+        # wider one (×1000, 1e9 or 1e300 at the top) is still a range
+        accepts={
+            "what": "unknown", "unit": "unknown", "reason": "unknown", "low": "zero negative",
+            "high": "mm big huge",
+        },  # fmt: skip
+    ),
     # ------------------------------------------------------------------ the failure policy
     fuzz(
         "raildyn.errors.SolverError",
