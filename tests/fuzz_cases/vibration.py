@@ -360,7 +360,10 @@ ENTRIES = [
         # any text describes a quantity; a range may start at 0 or below (a signed quantity), and a
         # wider one (×1000, 1e9 or 1e300 at the top) is still a range
         accepts={
-            "what": "unknown", "unit": "unknown", "reason": "unknown", "low": "zero negative",
+            "what": "unknown",
+            "unit": "unknown",
+            "reason": "unknown",
+            "low": "zero negative",
             "high": "mm big huge",
         },  # fmt: skip
     ),
