@@ -552,3 +552,20 @@ def speed_range(name: str, value) -> tuple[float, float]:
     low = speed(f"{name}[0]", float(r[0]))
     high = speed(f"{name}[1]", float(r[1]), low=low)
     return low, high
+
+
+#: The largest smoothing speed v_ε of a regularised friction law F tanh(v/v_ε), m/s: the law stands for
+#: the sign of v, so v_ε must be far below the sliding speeds it smooths (millimetres to centimetres a
+#: second); 1 m/s already blurs the stick-slip of any damper or wedge.
+MAX_SMOOTHING_SPEED = 1.0
+
+
+def smoothing_speed(name: str, value) -> np.ndarray:
+    """A non-empty array of smoothing speeds v_ε of a friction law, m/s, each in (0, 1]."""
+    arr = array(name, value, low=0.0, low_open=True, allow_empty=False)
+    if arr.max() > MAX_SMOOTHING_SPEED:
+        raise ValueError(
+            f"{name} must be in (0, {MAX_SMOOTHING_SPEED:g}] m/s (v_ε smooths the sign of a sliding "
+            f"velocity, far below it), got {arr.max()!r}"
+        )
+    return arr

@@ -112,7 +112,8 @@ _VEHICLE_LENGTH = (
     "wheelbase, a lever arm, a height or the vehicle's length): wagons and coaches are 10-30 m "
     "long, and even the longest single railway vehicles, the multi-bogie Schnabel cars that carry "
     "transformers, stay well under 100 m, which bounds every such dimension; a dimension typed in "
-    "millimetres (9500 for a 9.5 m half bogie spacing, 1800 for a 1.8 m height) lies far above."
+    "millimetres (9500 for a 9.5 m half bogie spacing, 1800 for a 1.8 m height) lies far above. No "
+    "spacing or lever arm of a vehicle is below 1 cm (a height may be 0)."
 )
 _MASS = (
     "The mass of one body of a vehicle model (a car body, a bogie frame, a side frame, a "
@@ -148,6 +149,56 @@ _WHEEL_LOAD = (
     "a thousand times too large (in the wrong unit) lies above. 1 N is far below any wheel's "
     "share of a vehicle's weight."
 )
+_RAIL_LENGTH = (
+    "The length of one rail of jointed track, between its joints: from about 6 m (short rails in "
+    "switches and sidings) through the 39 ft (11.9 m) of North American practice and 18-36 m in "
+    "Europe to the 120 m rolled lengths of today's mills; 150 m bounds them, and a length typed in "
+    "millimetres (11900) lies far above."
+)
+_TRACK_LENGTH = (
+    "A length along the track of one of its features (a joint dip's half-length, a bump, the "
+    "wavelength of a sinusoid, the spacing of a profile's samples): from 1 mm, below the scale of "
+    "the rail's own roughness (corrugation wavelengths are 30-80 mm), to 1 km, beyond any "
+    "wavelength that moves a vehicle (EN 13848 measures track geometry up to 200 m wavelengths)."
+)
+_IRREGULARITY = (
+    "The size of a deterministic track irregularity (a joint's dip, a bump's height, a sinusoid's "
+    "amplitude): at most 0.1 m, above the 3 in (76 mm) the FRA allows even on class 1 track for a "
+    "profile deviation; a track that far out has failed, and a size typed in millimetres lies far "
+    "above."
+)
+_SPAN = (
+    "The span of a bridge: from 1 m (a culvert) to 2 km, beyond the longest spans that carry "
+    "trains (the suspension bridges of road and rail reach about 1.4 km)."
+)
+_BEAM_MASS = (
+    "The mass per length of a beam: from 1 kg/m, below the lightest rail (about 5 kg/m), to "
+    "1000 t/m, above any bridge deck or track structure (a heavy concrete box girder carries some "
+    "tens of tonnes a metre)."
+)
+_FLEXURAL_RIGIDITY = (
+    "The flexural rigidity EI of a beam: from 1e3 N·m², below the lightest rail (about 1e5 N·m²), "
+    "to 1e16 N·m², above the stiffest bridge girders (about 1e14 N·m²)."
+)
+_FRONTAL_AREA = (
+    "The frontal area of a rail vehicle, for its aerodynamic drag: from 0.5 m² to 30 m², around "
+    "the 9-15 m² of main-line vehicles (the largest loading gauges are about 3.6 m wide and 6 m "
+    "tall: 22 m²)."
+)
+_TRACTION_FORCE = (
+    "A tractive or braking force of one vehicle: up to 2 MN, above the strongest locomotives "
+    "(about 1.2 MN for a two-unit heavy-haul locomotive); a force typed a thousand times too large "
+    "lies above."
+)
+_POWER = (
+    "The power of one vehicle at the rail: up to 20 MW, above the most powerful locomotives (about "
+    "12 MW for a two-unit electric locomotive)."
+)
+_COUPLER_TRAVEL = (
+    "A travel of a coupler or its draft gear (slack, gear travel): up to 0.5 m, above the slack "
+    "and travel of real couplings (a few centimetres each, some 0.1-0.2 m in all); a travel typed "
+    "in millimetres lies far above."
+)
 _AXLE_LOAD = (
     "The vertical load on one wheelset (both wheels), N: twice the wheel-load bound, 2 MN "
     "(a 200 t axle); the heaviest real axle loads are about 40 t (0.4 MN)."
@@ -170,7 +221,7 @@ PLAUSIBLE_RANGES = types.MappingProxyType(
         "half_gauge": PlausibleRange(
             "half the lateral spacing of a wheelset's contact points", 0.15, 1.1, "m", _HALF_GAUGE
         ),
-        "vehicle_length": PlausibleRange("a dimension of a vehicle", 0.0, 100.0, "m", _VEHICLE_LENGTH),
+        "vehicle_length": PlausibleRange("a dimension of a vehicle", 0.01, 100.0, "m", _VEHICLE_LENGTH),
         "mass": PlausibleRange("the mass of a body of a vehicle", 10.0, 1.0e6, "kg", _MASS),
         "inertia": PlausibleRange(
             "a moment of inertia of a body of a vehicle", 1.0, 5.0e8, "kg·m²", _INERTIA
@@ -181,5 +232,19 @@ PLAUSIBLE_RANGES = types.MappingProxyType(
         ),
         "wheel_load": PlausibleRange("the normal load on one wheel", 1.0, 1.0e6, "N", _WHEEL_LOAD),
         "axle_load": PlausibleRange("the vertical load on one wheelset", 1.0, 2.0e6, "N", _AXLE_LOAD),
+        "rail_length": PlausibleRange("the length of a rail between joints", 1.0, 150.0, "m", _RAIL_LENGTH),
+        "track_length": PlausibleRange("a length along the track", 1.0e-3, 1.0e3, "m", _TRACK_LENGTH),
+        "irregularity": PlausibleRange("a track irregularity's size", 0.0, 0.1, "m", _IRREGULARITY),
+        "span": PlausibleRange("a bridge's span", 1.0, 2.0e3, "m", _SPAN),
+        "beam_mass": PlausibleRange("the mass per length of a beam", 1.0, 1.0e6, "kg/m", _BEAM_MASS),
+        "flexural_rigidity": PlausibleRange(
+            "the flexural rigidity of a beam", 1.0e3, 1.0e16, "N·m²", _FLEXURAL_RIGIDITY
+        ),
+        "frontal_area": PlausibleRange("a vehicle's frontal area", 0.5, 30.0, "m²", _FRONTAL_AREA),
+        "traction_force": PlausibleRange(
+            "a tractive or braking force of one vehicle", 0.0, 2.0e6, "N", _TRACTION_FORCE
+        ),
+        "power": PlausibleRange("the power of one vehicle", 0.0, 2.0e7, "W", _POWER),
+        "coupler_travel": PlausibleRange("a travel of a coupler", 0.0, 0.5, "m", _COUPLER_TRAVEL),
     }
 )

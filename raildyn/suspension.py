@@ -117,7 +117,8 @@ def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.nda
     friction_force : array_like
         F_f >= 0, N (μN for a friction wedge under normal load N).
     velocity_scale : float or array_like, optional
-        v_ε > 0, m/s. Without it the ideal law is returned (F = 0 at v = 0
+        v_ε, m/s, in (0, 1] (a smoothing of the sign of v, far below the sliding speeds). Without it the
+        ideal law is returned (F = 0 at v = 0
         exactly); with it, the smooth law, whose error is bounded by
         :func:`friction_error_bound`.
 
@@ -138,7 +139,7 @@ def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.nda
     if velocity_scale is None:
         _checks.broadcast(velocity=v, friction_force=f)
         return np.asarray(f * np.sign(v))
-    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _checks.smoothing_speed("velocity_scale", velocity_scale)
     _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     return np.asarray(f * np.tanh(v / eps))
 
@@ -158,7 +159,7 @@ def coulomb_friction_slope(velocity, friction_force, *, velocity_scale) -> np.nd
     friction_force : array_like
         F_f >= 0, N.
     velocity_scale : float or array_like
-        v_ε > 0, m/s.
+        v_ε, m/s, in (0, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Returns
     -------
@@ -172,7 +173,7 @@ def coulomb_friction_slope(velocity, friction_force, *, velocity_scale) -> np.nd
     """
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
-    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _checks.smoothing_speed("velocity_scale", velocity_scale)
     _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     # sech² u = 4e^{−2|u|}/(1 + e^{−2|u|})²: no overflow however large |u|.
     decay = np.exp(-2.0 * np.abs(v / eps))
@@ -192,7 +193,7 @@ def friction_error_bound(velocity, friction_force, velocity_scale) -> np.ndarray
     friction_force : array_like
         F_f >= 0, N.
     velocity_scale : float or array_like
-        v_ε > 0, m/s.
+        v_ε, m/s, in (0, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Returns
     -------
@@ -206,7 +207,7 @@ def friction_error_bound(velocity, friction_force, velocity_scale) -> np.ndarray
     """
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
-    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _checks.smoothing_speed("velocity_scale", velocity_scale)
     _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     return np.asarray(2.0 * f * np.exp(-2.0 * np.abs(v) / eps))
 
@@ -294,7 +295,7 @@ class FrictionDamper:
     friction_force : float or array_like, shape (n,)
         F_f >= 0, N: one for every coordinate, or one value for all.
     velocity_scale : float or array_like, shape (n,)
-        v_ε > 0, m/s.
+        v_ε, m/s, in (0, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Examples
     --------
@@ -310,7 +311,7 @@ class FrictionDamper:
 
     def __post_init__(self):
         f = _field("friction_force", self.friction_force, low=0.0)
-        eps = _field("velocity_scale", self.velocity_scale, low=0.0, low_open=True)
+        eps = _checks.smoothing_speed("velocity_scale", self.velocity_scale)
         for name, value in (("friction_force", f), ("velocity_scale", eps)):
             if value.ndim > 1:
                 raise ValueError(f"{name} must be a number or a vector (n,), got shape {value.shape}")

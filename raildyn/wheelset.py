@@ -118,7 +118,7 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
     rolling_radius, half_gauge, conicity : float
         r₀ (m), a (m) and λ, as for :func:`kinematic_wavelength`.
     semi_wheelbase : float
-        b, half the distance between the two axles, m, in (0, 100]
+        b, half the distance between the two axles, m, in [0.01, 100]
         (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
 
     Returns
@@ -131,7 +131,7 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
     >>> round(rigid_bogie_wavelength(0.46, 0.75, 0.05, 1.28), 3)
     32.647
     """
-    b = _checks.plausible("semi_wheelbase", semi_wheelbase, "vehicle_length", low_open=True)
+    b = _checks.plausible("semi_wheelbase", semi_wheelbase, "vehicle_length")
     a = _checks.plausible("half_gauge", half_gauge, "half_gauge")
     # √(1 + (b/a)²) as a hypotenuse, which stays finite for any finite b/a
     return kinematic_wavelength(rolling_radius, half_gauge, conicity) * float(np.hypot(1.0, b / a))

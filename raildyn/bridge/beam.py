@@ -33,11 +33,11 @@ class SimplySupportedBeam:
     Attributes
     ----------
     span : float
-        L, m (> 0).
+        L, m, in [1, 2000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "span").
     flexural_rigidity : float
-        EI, N·m² (> 0).
+        EI, N·m², in [1e3, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity").
     mass_per_length : float
-        m, kg/m (> 0).
+        m, kg/m, in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "beam_mass").
     damping_ratio : float
         ξ of every mode, in [0, 1).
     modes : int
@@ -59,8 +59,12 @@ class SimplySupportedBeam:
     modes: int = 10
 
     def __post_init__(self):
-        for name in ("span", "flexural_rigidity", "mass_per_length"):
-            _checks.positive(name, getattr(self, name))
+        for name, quantity in (
+            ("span", "span"),
+            ("flexural_rigidity", "flexural_rigidity"),
+            ("mass_per_length", "beam_mass"),
+        ):
+            _checks.plausible(name, getattr(self, name), quantity)
         _checks.scalar("damping_ratio", self.damping_ratio, low=0.0, high=1.0, high_open=True)
         _checks.integer("modes", self.modes, low=1, high=_MAX_MODES)
 

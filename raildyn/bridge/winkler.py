@@ -47,9 +47,12 @@ class WinklerBeam:
     Attributes
     ----------
     flexural_rigidity : float
-        EI, N·m² (> 0). Default: one UIC 60 rail, 6.42 MN·m² (Esveld 2001).
+        EI, N·m², in [1e3, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity").
+        Default: one UIC 60 rail,
+        6.42 MN·m² (Esveld 2001).
     mass_per_length : float
-        m, kg/m (> 0). Default: the rail's 60.34 kg/m.
+        m, kg/m, in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "beam_mass"). Default: the rail's
+        60.34 kg/m.
     foundation_modulus : float
         k, N/m² (N/m of deflection per m of beam, > 0). Default: 50 MN/m², a ballasted bed.
     damping : float
@@ -74,6 +77,8 @@ class WinklerBeam:
     def __post_init__(self):
         for name in ("flexural_rigidity", "mass_per_length", "foundation_modulus"):
             _checks.positive(name, getattr(self, name))
+        _checks.plausible("flexural_rigidity", self.flexural_rigidity, "flexural_rigidity")
+        _checks.plausible("mass_per_length", self.mass_per_length, "beam_mass")
         _checks.nonnegative("damping", self.damping)
 
     @property

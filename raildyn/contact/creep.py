@@ -659,12 +659,15 @@ class PolachAdhesion:
 
         Examples
         --------
-        >>> POLACH_DRY.friction(0.0), round(POLACH_DRY.friction(1e3), 6)
+        >>> POLACH_DRY.friction(0.0), round(POLACH_DRY.friction(100.0), 6)
         (0.55, 0.22)
         """
-        w = _checks.plausible_array("slip_speed", slip_speed, "speed", low=0.0)
+        return _out(self._mu(_checks.plausible_array("slip_speed", slip_speed, "speed", low=0.0)))
+
+    def _mu(self, w):
+        """μ at slip speeds w ≥ 0 already checked (polach_adhesion's, which grow with the creepages)."""
         a = self.limit_ratio
-        return _out(self.static_friction * ((1 - a) * np.exp(-self.decay_rate * w) + a))
+        return self.static_friction * ((1 - a) * np.exp(-self.decay_rate * w) + a)
 
 
 # Polach (2005), Table 2: the parameters fitted to measured adhesion of locomotives on dry and
@@ -729,7 +732,7 @@ def polach_adhesion(
     inputs = _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio)
     v = _checks.speed("speed", speed)
     xi, eta = inputs[:2]
-    mu = np.asarray(conditions.friction(v * np.hypot(xi, eta)))
+    mu = np.asarray(conditions._mu(v * np.hypot(xi, eta)))
     return _polach(*inputs, mu, conditions.k_a, conditions.k_s)
 
 
@@ -817,7 +820,7 @@ def wheelset_creepages(
         (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
         "half_gauge").
     contact_angle_left, contact_angle_right : float or array_like
-        ϑ_L, ϑ_R (rad).
+        ϑ_L, ϑ_R (rad), within ±π/2.
     check : bool
         Check the input and the result (default). A caller that has checked it already, such as
         the right-hand side of :class:`raildyn.wheelset.NonlinearLateral` evaluated
@@ -852,6 +855,9 @@ def wheelset_creepages(
     r_r = _checks.plausible_array("rolling_radius_right", rolling_radius_right, "wheel_radius")
     d_l = _checks.array("contact_angle_left", contact_angle_left)
     d_r = _checks.array("contact_angle_right", contact_angle_right)
+    for name, angle in (("contact_angle_left", d_l), ("contact_angle_right", d_r)):
+        if np.abs(angle).max(initial=0.0) > np.pi / 2:
+            raise ValueError(f"{name} must be within ±π/2 rad (an angle in degrees?), got {angle!r:.80}")
     return WheelsetCreepages(*_wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r))
 
 

@@ -777,7 +777,7 @@ def convergence_study(
         Steps over the run, at least two, each in [4, 100000] (beyond, rounding rather than
         the scheme sets the error), in increasing order.
     duration : float
-        Length of the run, s, in (0, 100] (after 100 periods the free motion has decayed by
+        Length of the run, s, in [0.01, 100] (after 100 periods the free motion has decayed by
         e^-31, leaving the static deflection every scheme reproduces).
     **params
         The scheme's parameters (see :func:`amplification_matrix`).

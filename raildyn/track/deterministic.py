@@ -46,6 +46,22 @@ _MAX_SPEED = MAXIMUM_SPEED
 _ARRANGEMENTS = ("staggered", "in_phase")
 
 
+def _rail_length(value) -> float:
+    """L, m, in [1, 150] (``PLAUSIBLE_RANGES["rail_length"]``)."""
+    return _checks.plausible("rail_length", value, "rail_length")
+
+
+def _along(name: str, value, high=None) -> float:
+    """A length along the track, m, in [1 mm, 1 km] (``PLAUSIBLE_RANGES["track_length"]``), at most
+    ``high``."""
+    return _checks.plausible(name, value, "track_length", high=high)
+
+
+def _size(name: str, value, *, signed: bool = False) -> float:
+    """A dip's depth in [0, 0.1] m, or a height or amplitude within ±0.1 m (``signed``)."""
+    return _checks.plausible(name, value, "irregularity", signed=signed)
+
+
 def _derivative(value) -> int:
     return _checks.integer("derivative", value, low=0, high=2)
 
@@ -82,11 +98,14 @@ def dipped_joints(
     x : array_like
         Distance along the track, m; any shape, not empty.
     depth : float
-        h_j >= 0, depth of the dip at each joint, m.
+        h_j, depth of the dip at each joint, m, in [0, 0.1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "irregularity").
     half_width : float
-        ℓ_j, half the length of track each dip spans, m, 0 < ℓ_j <= L/2.
+        ℓ_j, half the length of track each dip spans, m, in [0.001, L/2]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length").
     rail_length : float
-        L > 0, distance between joints, m (default 11.9).
+        L, distance between joints, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "rail_length"; default 11.9).
     offset : float
         Position of one joint, m (any real).
     derivative : {0, 1, 2}
@@ -109,9 +128,9 @@ def dipped_joints(
     [-0.01, -0.0025, 0.0]
     """
     x = _checks.array("x", x, allow_empty=False)
-    delta = _checks.nonnegative("depth", depth)
-    L = _checks.positive("rail_length", rail_length)
-    a = _checks.scalar("half_width", half_width, low=0.0, low_open=True, high=L / 2)
+    delta = _size("depth", depth)
+    L = _rail_length(rail_length)
+    a = _along("half_width", half_width, high=L / 2)
     offset = _checks.scalar("offset", offset)
     order = _derivative(derivative)
     speed = _speed(speed)
@@ -231,11 +250,12 @@ def jointed_track(
     x : array_like
         Distance along the track, m; any shape, not empty.
     depth : float
-        h_j >= 0, depth of each dip, m.
+        h_j, depth of each dip, m, in [0, 0.1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "irregularity").
     half_width : float
-        ℓ_j, half the length of track each dip spans, m, 0 < ℓ_j <= L/2.
+        ℓ_j, half the length of track each dip spans, m, in [0.001, L/2]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length").
     rail_length : float
-        L > 0, m (default 11.9).
+        L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length"; default 11.9).
     arrangement : {"staggered", "in_phase"}
         Joints of the right rail half a rail length along, or opposite those of the left.
     derivative : {0, 1, 2}
@@ -256,7 +276,7 @@ def jointed_track(
     [-0.01, 0.01]
     """
     _checks.choice("arrangement", arrangement, _ARRANGEMENTS)
-    L = _checks.positive("rail_length", rail_length)
+    L = _rail_length(rail_length)
     left = dipped_joints(x, depth, half_width, rail_length=L, derivative=derivative, speed=speed)
     shift = 0.5 * L if arrangement == "staggered" else 0.0
     right = dipped_joints(
@@ -276,9 +296,9 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
     x : array_like
         Distance, m; any shape, not empty.
     height : float
-        h, m (any sign).
+        h, m, of either sign, within ±0.1 (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "irregularity").
     length : float
-        ℓ > 0, m.
+        ℓ, m, in [0.001, 1000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length").
     position : float
         x₀, start of the bump, m (any real).
     derivative : {0, 1, 2}
@@ -301,8 +321,8 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
     0.628319
     """
     x = _checks.array("x", x, allow_empty=False)
-    h = _checks.scalar("height", height)
-    ell = _checks.positive("length", length)
+    h = _size("height", height, signed=True)
+    ell = _along("length", length)
     x0 = _checks.scalar("position", position)
     order = _derivative(derivative)
     speed = _speed(speed)
@@ -328,9 +348,9 @@ def sinusoid(
     x : array_like
         Distance, m; any shape, not empty.
     amplitude : float
-        A, m (any sign).
+        A, m, of either sign, within ±0.1 (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "irregularity").
     wavelength : float
-        λ > 0, m.
+        λ, m, in [0.001, 1000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length").
     phase : float
         φ, rad (any real).
     derivative : {0, 1, 2}
@@ -350,8 +370,8 @@ def sinusoid(
     0.0015707963267948967
     """
     x = _checks.array("x", x, allow_empty=False)
-    A = _checks.scalar("amplitude", amplitude)
-    lam = _checks.positive("wavelength", wavelength)
+    A = _size("amplitude", amplitude, signed=True)
+    lam = _along("wavelength", wavelength)
     phi = _checks.scalar("phase", phase)
     order = _derivative(derivative)
     speed = _speed(speed)
@@ -372,7 +392,7 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     speed : float
         V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     rail_length : float
-        L, m, > 0 (default 11.9).
+        L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length"; default 11.9).
 
     Returns
     -------
@@ -384,7 +404,7 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     >>> round(passing_frequency(119.0 / 3.6), 4)  # 119 km/h over 11.9 m rails
     2.7778
     """
-    return _vehicle_speed(speed) / _checks.positive("rail_length", rail_length)
+    return _vehicle_speed(speed) / _rail_length(rail_length)
 
 
 def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmonic: int = 1) -> float:
@@ -399,7 +419,7 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     frequency : float
         f, Hz, > 0.
     rail_length : float
-        L, m, > 0 (default 11.9).
+        L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length"; default 11.9).
     harmonic : int
         n >= 1.
 
@@ -415,7 +435,7 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     12.85
     """
     f = _checks.positive("frequency", frequency)
-    L = _checks.positive("rail_length", rail_length)
+    L = _rail_length(rail_length)
     n = _checks.integer("harmonic", harmonic, low=1)
     V = f * L / n
     if not V <= MAXIMUM_SPEED:

@@ -102,11 +102,15 @@ def davis_resistance(
         Speed, m/s (``units="SI"``) or mph (``units="US"``); its sign is ignored; at most
         200 m/s (447 mph), above the wheel–rail speed record, in size.
     mass : float or array
-        Mass, kg (SI) or weight in short tons (US); > 0.
+        Mass of one vehicle, kg (SI) or weight in short tons (US), in [10, 1e6] kg
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "mass").
     axles : int or array
         Number of axles, whole numbers >= 1.
     frontal_area : float or array
-        m² (SI) or ft² (US), > 0; used by the original form only.
+        m² (SI) or ft² (US), in [0.5, 30] m² (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "frontal_area");
+        used by the original form
+        only.
     kind : {"freight", "locomotive", "passenger"}
         Original-form coefficients.
     form : {"original", "modified"}
@@ -137,6 +141,9 @@ def davis_resistance(
     a = _checks.array("frontal_area", frontal_area, low=0.0, low_open=True, allow_empty=False)
     if drag_coefficient is not None:
         _checks.nonnegative("drag_coefficient", drag_coefficient)
+    # One vehicle's mass and frontal area, each in its plausible range (in SI: the US figures converted).
+    _checks.plausible_array("mass", m if units == "SI" else m * SHORT_TON, "mass")
+    _checks.plausible_array("frontal_area", a if units == "SI" else a * FT**2, "frontal_area")
     if units == "SI":
         v, tons, area = v / MPH, m / SHORT_TON, a / FT**2
     else:

@@ -592,7 +592,7 @@ def weigh_in_motion(
         Distances between consecutive axles, m, each in (0, 1000]: the values when ``fit_spacings`` is
         False, the start otherwise (its length sets the number of axles, a − 1 >= 0).
     fibre_distance : float
-        c, m, in (0, 100]: the distance from the neutral axis to the gauge; loads scale as EI/c, so
+        c, m, in [0.01, 100]: the distance from the neutral axis to the gauge; loads scale as EI/c, so
         with an unknown section c = 1 gives loads in units of EI/c (calibrate them by a known
         train).
     speed : float, optional

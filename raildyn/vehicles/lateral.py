@@ -91,8 +91,8 @@ def _check_body_on_two_trucks(car, spacing: str, truck_half: str, truck_half_len
         nonnegative(name, getattr(car, name))
     _checks.plausible("body_mass", car.body_mass, "mass")
     _checks.plausible_fields(car, "inertia", ("body_yaw_inertia", "body_roll_inertia"))
-    _checks.plausible(spacing, getattr(car, spacing), "vehicle_length", low_open=True)
-    _checks.plausible("body_height", car.body_height, "vehicle_length")
+    _checks.plausible(spacing, getattr(car, spacing), "vehicle_length")
+    _checks.plausible("body_height", car.body_height, "vehicle_length", low=0.0)
     if getattr(car, spacing) <= truck_half_length:
         raise ValueError(
             f"{spacing} must exceed the truck's {truck_half} ({truck_half_length!r} m) so that the "
@@ -153,7 +153,7 @@ class Bogie(_OnTheRails):
         I_f, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (Iwnicki 1998: 3067
         kg·m²).
     semi_wheelbase : float
-        b, half the wheelbase, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        b, half the wheelbase, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
         "vehicle_length") (Iwnicki 1998: 2.56 m wheelbase).
     secondary_lateral_stiffness, secondary_lateral_damping : float
         k_sy and c_sy, per bogie, N/m and N·s/m, ≥ 0 (Iwnicki 1998: 160 kN/m and 32 kN·s/m per
@@ -178,7 +178,7 @@ class Bogie(_OnTheRails):
             positive(name, getattr(self, name))
         _checks.plausible("frame_mass", self.frame_mass, "mass")
         _checks.plausible("frame_yaw_inertia", self.frame_yaw_inertia, "inertia")
-        _checks.plausible("semi_wheelbase", self.semi_wheelbase, "vehicle_length", low_open=True)
+        _checks.plausible("semi_wheelbase", self.semi_wheelbase, "vehicle_length")
         for name in (
             "secondary_lateral_stiffness",
             "secondary_lateral_damping",
@@ -277,7 +277,7 @@ class Car(_OnTheRails):
         I_x, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (Iwnicki 1998: 5.68
         × 10⁴ kg·m²).
     semi_bogie_spacing : float
-        l, half the distance between bogie centres, m, in (0, 100]
+        l, half the distance between bogie centres, m, in [0.01, 100]
         (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length"), greater than the bogie's
         semi-wheelbase (the bogies' wheelsets do not cross) (Iwnicki 1998: 19 m between centres).
     body_height : float

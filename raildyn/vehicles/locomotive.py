@@ -48,10 +48,10 @@ class Locomotive(LinearModelBase):
         One truck frame, kg in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") and kg·m² in
         [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia").
     semi_truck_spacing : float
-        l, half the distance between truck centres, m, in (0, 100]
+        l, half the distance between truck centres, m, in [0.01, 100]
         (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
     axle_spacing : float
-        Between neighbouring axles of a truck, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        Between neighbouring axles of a truck, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
         "vehicle_length"): b, the truck's semi-wheelbase (the middle axle
         stands under the truck's centre).
     primary_stiffness, primary_damping : float
@@ -79,9 +79,7 @@ class Locomotive(LinearModelBase):
                 _checks.positive(name, getattr(self, name))
         _checks.plausible_fields(self, "mass", ("body_mass", "truck_mass"))
         _checks.plausible_fields(self, "inertia", ("body_pitch_inertia", "truck_pitch_inertia"))
-        _checks.plausible_fields(
-            self, "vehicle_length", ("semi_truck_spacing", "axle_spacing"), low_open=True
-        )
+        _checks.plausible_fields(self, "vehicle_length", ("semi_truck_spacing", "axle_spacing"))
         if self.axle_spacing >= self.semi_truck_spacing:
             raise ValueError(
                 f"axle_spacing must be less than semi_truck_spacing ({self.semi_truck_spacing!r} m), "

@@ -189,7 +189,7 @@ def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -
     rolling_radius, half_gauge, conicity : float
         r₀ (m, > 0), a (m, > 0) and λ (> 0), as for :func:`raildyn.wheelset.kinematic_wavelength`.
     axle_spacing : float
-        d, between neighbouring axles, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        d, between neighbouring axles, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
         "vehicle_length").
 
     Returns
@@ -202,7 +202,7 @@ def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -
     >>> round(rigid_truck_wavelength(0.508, 0.75, 0.05, 2.07), 2)
     42.76
     """
-    d = _checks.plausible("axle_spacing", axle_spacing, "vehicle_length", low_open=True)
+    d = _checks.plausible("axle_spacing", axle_spacing, "vehicle_length")
     a = _checks.plausible("half_gauge", half_gauge, "half_gauge")
     free = kinematic_wavelength(rolling_radius, half_gauge, conicity)
     # √(1 + (2/3)(d/a)²) as a hypotenuse, finite for any finite d/a
@@ -233,7 +233,7 @@ class ThreeAxleTruck(LinearModelBase):
         Fraction of each motor's mass that moves with its axle, in [0, 1]; the rest moves with
         the frame (nose suspension: a half).
     axle_spacing : float
-        d, between neighbouring axles, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        d, between neighbouring axles, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
         "vehicle_length") (2.07 m, as the vertical model).
     middle_lateral_stiffness, middle_lateral_damping : float
         The middle axle's lateral restraint within its play, N/m and N·s/m, ≥ 0
@@ -270,7 +270,7 @@ class ThreeAxleTruck(LinearModelBase):
             positive(name, getattr(self, name))
         _checks.plausible("frame_mass", self.frame_mass, "mass")
         _checks.plausible("frame_yaw_inertia", self.frame_yaw_inertia, "inertia")
-        _checks.plausible("axle_spacing", self.axle_spacing, "vehicle_length", low_open=True)
+        _checks.plausible("axle_spacing", self.axle_spacing, "vehicle_length")
         if self.motor_mass != 0:
             _checks.plausible("motor_mass", self.motor_mass, "mass")
         _checks.scalar("motor_axle_share", self.motor_axle_share, low=0.0, high=1.0)
@@ -459,7 +459,7 @@ class LateralLocomotive(LinearModelBase):
         kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (m (w² + h²)/12, 3.12 m
         wide, mass over 2.5 m of height).
     semi_truck_spacing : float
-        Half the distance between truck centres, m, in (0, 100]
+        Half the distance between truck centres, m, in [0.01, 100]
         (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length"), greater than the truck's axle
         spacing (each truck's axles on its own side of the body's centre) (13.26 m between centres).
     body_height : float

@@ -217,9 +217,9 @@ class ThreePieceTruck(LinearModelBase):
         The bolster, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (99 kg·m²);
         the side frames' 2 m d² is added to it.
     semi_wheelbase : float
-        b, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (0.865 m).
+        b, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (0.865 m).
     side_frame_spacing : float
-        d, half the distance between the side frames (and their nests), m, in (0, 100]
+        d, half the distance between the side frames (and their nests), m, in [0.01, 100]
         (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (1.0 m).
     warp_stiffness : float
         Between bolster and side frames, N·m/rad, ≥ 0 (representative: 2 MN·m/rad).
@@ -273,9 +273,7 @@ class ThreePieceTruck(LinearModelBase):
             positive(name, getattr(self, name))
         _checks.plausible("side_frame_mass", self.side_frame_mass, "mass")
         _checks.plausible_fields(self, "inertia", ("side_frame_yaw_inertia", "bolster_yaw_inertia"))
-        _checks.plausible_fields(
-            self, "vehicle_length", ("semi_wheelbase", "side_frame_spacing"), low_open=True
-        )
+        _checks.plausible_fields(self, "vehicle_length", ("semi_wheelbase", "side_frame_spacing"))
         for name in (
             "warp_stiffness",
             "nest_shear_stiffness",
@@ -480,7 +478,7 @@ class LateralFreightCar(LinearModelBase):
         About the centre of gravity, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
         "inertia").
     semi_truck_spacing : float
-        Half the distance between truck centres, m, in (0, 100]
+        Half the distance between truck centres, m, in [0.01, 100]
         (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length"), greater than the truck's
         semi-wheelbase.
     body_height : float

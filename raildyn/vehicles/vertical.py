@@ -79,7 +79,7 @@ def body_on_two_trucks(
     body_pitch_inertia, truck_pitch_inertia : float
         kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia").
     semi_truck_spacing : float
-        l, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
+        l, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
     axle_offsets : sequence of float
         Axle positions ahead of the truck's centre, m, leading first: at least two,
         strictly decreasing (else the truck's pitch stands on nothing) and within
@@ -112,7 +112,7 @@ def body_on_two_trucks(
     _checks.plausible("truck_pitch_inertia", truck_pitch_inertia, "inertia")
     primary_damping = _checks.nonnegative("primary_damping", primary_damping)
     secondary_damping = _checks.nonnegative("secondary_damping", secondary_damping)
-    s = _checks.plausible("semi_truck_spacing", semi_truck_spacing, "vehicle_length", low_open=True)
+    s = _checks.plausible("semi_truck_spacing", semi_truck_spacing, "vehicle_length")
     offsets = _checks.array("axle_offsets", axle_offsets, ndim=1)
     if offsets.size < 2 or np.any(np.diff(offsets) >= 0):
         raise ValueError(f"axle_offsets must hold at least two offsets, strictly decreasing, got {offsets}")
@@ -174,10 +174,10 @@ class VerticalCar(LinearModelBase):
         vertical plane: ``TrainProp_Manchester_BenchMark.m``,
         https://github.com/DanielCanteroNTNU/TTB-2D, commit 2b414dd).
     semi_bogie_spacing : float
-        l, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (Iwnicki 1998: 19
+        l, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (Iwnicki 1998: 19
         m between bogie centres).
     semi_wheelbase : float
-        b, m, in (0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (Iwnicki 1998:
+        b, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (Iwnicki 1998:
         2.56 m wheelbase).
     primary_stiffness, primary_damping : float
         Per wheelset (two axleboxes), N/m and N·s/m (Iwnicki 1998: 1220 kN/m and
@@ -206,9 +206,7 @@ class VerticalCar(LinearModelBase):
                 positive(name, getattr(self, name))
         _checks.plausible_fields(self, "mass", ("body_mass", "bogie_mass"))
         _checks.plausible_fields(self, "inertia", ("body_pitch_inertia", "bogie_pitch_inertia"))
-        _checks.plausible_fields(
-            self, "vehicle_length", ("semi_bogie_spacing", "semi_wheelbase"), low_open=True
-        )
+        _checks.plausible_fields(self, "vehicle_length", ("semi_bogie_spacing", "semi_wheelbase"))
         if self.semi_wheelbase >= self.semi_bogie_spacing:
             raise ValueError(
                 f"semi_wheelbase must be less than semi_bogie_spacing ({self.semi_bogie_spacing!r} m), "
