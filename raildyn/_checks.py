@@ -275,8 +275,24 @@ def flag(name: str, value) -> bool:
     return bool(value)
 
 
+def not_a_class(name: str, value, what: str = "a model"):
+    """Refuse a class passed where an instance of it belongs (``Wheelset`` for ``Wheelset()``).
+
+    Calling a method on the class would fail inside with "missing 1 required positional argument:
+    'self'", a message that names nothing the caller passed.
+    """
+    if isinstance(value, type):
+        raise TypeError(
+            f"{name} must be {what}, an instance such as {value.__name__}(), "
+            f"got the class {value.__name__} itself"
+        )
+    return value
+
+
 def instance(name: str, value, kind, what: str | None = None):
     """``value`` itself if it is an instance of ``kind`` (a class or a tuple of classes)."""
+    if isinstance(value, type):
+        not_a_class(name, value, f"a {what or getattr(kind, '__name__', 'model')}")
     if not isinstance(value, kind):
         if what is None:
             kinds = kind if isinstance(kind, tuple) else (kind,)
@@ -352,6 +368,7 @@ def fields(obj, *, skip=(), flags=()) -> None:
 
 def linear_model(name: str, value):
     """``value`` itself if it follows the linear model protocol (it has ``linear_system()``)."""
+    not_a_class(name, value, "a linear model")
     if not callable(getattr(value, "linear_system", None)):
         raise TypeError(
             f"{name} must be a linear model (an object with linear_system(), e.g. raildyn.wheelset."
@@ -512,27 +529,29 @@ def speeds(name: str, value, *, low=0.0, low_open=True) -> np.ndarray:
     return plausible_array(name, V, "speed", low=low, low_open=low_open)
 
 
-#: The most samples (time steps, grid points) one call may tabulate: 5e7 floats of 8 bytes is
-#: 0.4 GB per stored quantity, well beyond any run the notebooks make (a few 1e5), and far below
-#: what a mistyped step (1e-9 s over seconds) would ask for.
-MAX_SAMPLES = 50_000_000
+#: The most memory one grid of samples (time steps, grid points) may take, bytes: 1 GiB, far beyond any
+#: run the notebooks make (a few MB) and far below what a mistyped step asks for (a step of 1e-9 s over
+#: ten seconds: 1e10 samples, tens of GiB).
+MAX_BYTES = 2**30
 
 
-def samples(name: str, span: float, step: float, *, per_sample: int = 1, limit: int = MAX_SAMPLES) -> int:
-    """The number of samples a grid over ``span`` at ``step`` needs, refused above ``limit``.
+def samples(
+    name: str, value, span: float, step: float, *, per_sample: int = 1, limit: float = MAX_BYTES
+) -> int:
+    """The number of samples, ⌈span/step⌉ + 1, of a grid over ``span`` at ``step``, refused when their
+    ``per_sample`` floats (8 bytes each) would take more than ``limit`` bytes.
 
-    The message names ``name`` (the parameter that sets the step), the count and the memory it
-    would take (``per_sample`` floats of 8 bytes each), so that a step of 1e-300 s or 1e-9 s over
-    seconds is refused before anything is allocated.
+    ``name`` and ``value`` are the caller's parameter that sets the step (a ``max_step``, a ``dt``);
+    the message says how many samples and how much memory it would need, before anything is allocated.
     """
-    n = span / step if step > 0 else math.inf
-    if not n <= limit:
-        need = n * per_sample * 8
+    n = span / step + 1.0 if step > 0 else math.inf
+    need = n * max(per_sample, 1) * 8.0
+    if not need <= limit:
         raise ValueError(
-            f"{name} = {step!r} over {span:g} would need {n:.3g} samples, about {_bytes(need)} of "
-            f"memory; at most {limit:.3g} samples: take a larger {name}"
+            f"{name} = {value!r} would need {n:.3g} samples over a span of {span:g}, about {_bytes(need)} "
+            f"of memory (at most {_bytes(limit)}): take a larger {name} or a shorter span"
         )
-    return int(math.ceil(n)) + 1
+    return int(math.ceil(span / step)) + 1
 
 
 def _bytes(n: float) -> str:

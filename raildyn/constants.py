@@ -177,8 +177,9 @@ _BEAM_MASS = (
     "tens of tonnes a metre)."
 )
 _FLEXURAL_RIGIDITY = (
-    "The flexural rigidity EI of a beam: from 1e3 N·m², below the lightest rail (about 1e5 N·m²), "
-    "to 1e16 N·m², above the stiffest bridge girders (about 1e14 N·m²)."
+    "The flexural rigidity EI of a beam: from 1 N·m² (a beam of unit rigidity, with which a "
+    "weigh-in-motion reads loads in units of EI/c; the lightest rail has about 1e5 N·m²) to "
+    "1e16 N·m², above the stiffest bridge girders (about 1e14 N·m²)."
 )
 _FRONTAL_AREA = (
     "The frontal area of a rail vehicle, for its aerodynamic drag: from 0.5 m² to 30 m², around "
@@ -238,7 +239,7 @@ PLAUSIBLE_RANGES = types.MappingProxyType(
         "span": PlausibleRange("a bridge's span", 1.0, 2.0e3, "m", _SPAN),
         "beam_mass": PlausibleRange("the mass per length of a beam", 1.0, 1.0e6, "kg/m", _BEAM_MASS),
         "flexural_rigidity": PlausibleRange(
-            "the flexural rigidity of a beam", 1.0e3, 1.0e16, "N·m²", _FLEXURAL_RIGIDITY
+            "the flexural rigidity of a beam", 1.0, 1.0e16, "N·m²", _FLEXURAL_RIGIDITY
         ),
         "frontal_area": PlausibleRange("a vehicle's frontal area", 0.5, 30.0, "m²", _FRONTAL_AREA),
         "traction_force": PlausibleRange(

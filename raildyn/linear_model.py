@@ -659,6 +659,7 @@ def as_linear_system(model) -> LinearSystem:
     """
     if isinstance(model, LinearSystem):
         return model
+    _checks.not_a_class("model", model, "a linear model")
     if isinstance(model, LinearModel):
         system = model.linear_system()
         if isinstance(system, LinearSystem):

@@ -52,6 +52,23 @@ def _field(name: str, value, *, low=None, low_open=False) -> np.ndarray:
     return _checks.array(name, value, low=low, low_open=low_open, allow_empty=False)
 
 
+def _force(law, **inputs) -> np.ndarray:
+    """The force ``law()`` computes from the checked ``inputs``, refused if it overflows.
+
+    Finite inputs of absurd size (a deflection of 1e300 m against a stiffness of 1e6 N/m) give a
+    force beyond double precision: a ValueError names the inputs, never a silent inf or NaN.
+    """
+    with np.errstate(over="ignore", invalid="ignore"):
+        force = np.asarray(law())
+    if not np.isfinite(force).all():
+        names = ", ".join(inputs)
+        largest = ", ".join(f"{k} = {np.abs(v).max():.3g}" for k, v in inputs.items())
+        raise ValueError(
+            f"the force overflows: {names} are too large together for double precision ({largest})"
+        )
+    return force
+
+
 def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
     """Linear spring: F = k u + F₀ (N).
 
@@ -78,7 +95,7 @@ def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
     k = _field("stiffness", stiffness, low=0.0)
     f0 = _field("preload", preload)
     _checks.broadcast(deflection=d, stiffness=k, preload=f0)
-    return np.asarray(k * d + f0)
+    return _force(lambda: k * d + f0, deflection=d, stiffness=k, preload=f0)
 
 
 def damper_force(velocity, damping) -> np.ndarray:
@@ -104,7 +121,7 @@ def damper_force(velocity, damping) -> np.ndarray:
     v = _field("velocity", velocity)
     c = _field("damping", damping, low=0.0)
     _checks.broadcast(velocity=v, damping=c)
-    return np.asarray(c * v)
+    return _force(lambda: c * v, velocity=v, damping=c)
 
 
 def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.ndarray:
@@ -240,7 +257,7 @@ def friction_amplitude_loss(friction_force, stiffness) -> np.ndarray:
     f = _field("friction_force", friction_force, low=0.0)
     k = _field("stiffness", stiffness, low=0.0, low_open=True)
     _checks.broadcast(friction_force=f, stiffness=k)
-    return np.asarray(4.0 * f / k)
+    return _force(lambda: 4.0 * f / k, friction_force=f, stiffness=k)
 
 
 def clearance_force(deflection, clearance, stop_stiffness, stiffness=0.0) -> np.ndarray:
@@ -277,7 +294,13 @@ def clearance_force(deflection, clearance, stop_stiffness, stiffness=0.0) -> np.
     ks = _field("stop_stiffness", stop_stiffness, low=0.0)
     k = _field("stiffness", stiffness, low=0.0)
     _checks.broadcast(deflection=d, clearance=g, stop_stiffness=ks, stiffness=k)
-    return np.asarray(k * d + ks * np.maximum(np.abs(d) - g, 0.0) * np.sign(d))
+    return _force(
+        lambda: k * d + ks * np.maximum(np.abs(d) - g, 0.0) * np.sign(d),
+        deflection=d,
+        clearance=g,
+        stop_stiffness=ks,
+        stiffness=k,
+    )
 
 
 @dataclass(frozen=True)

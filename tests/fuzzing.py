@@ -25,7 +25,7 @@ fraction, a complex number, a bool, a string, None and a list; for an array a Na
 first entry, a NaN entry in the middle and as the last entry, zeros, negatives, 1e300, an
 empty array, an extra axis, complex entries, booleans, a string and None; for a name an
 unknown name, a number and None; for a flag a string and None; for a model or other object
-a number, a string and None; for a callback a non-callable, and a callback whose values are
+a number, a string, None and its class (``Wheelset`` for ``Wheelset()``); for a callback a non-callable, and a callback whose values are
 NaN, negative or of the wrong shape; for a parameter left at None a string. Every callable
 also meets an unknown keyword. Parameters in :data:`FREE` (text that labels a plot) take
 anything. A parameter that may be zero may also be 1e-300 (``tiny`` is valid wherever
@@ -72,7 +72,7 @@ DOMAIN = frozenset({"zero", "negative", "huge", "big", "tiny", "mm"})
 CHANGES = (
     "nan", "inf", "-inf", "zero", "negative", "huge", "fraction", "list", "empty", "shape",
     "string", "none", "type", "unknown", "returns-nan", "returns-negative", "returns-shape",
-    "complex", "bool", "nan-middle", "nan-last", "mm", "kmh", "big", "tiny",
+    "complex", "bool", "nan-middle", "nan-last", "mm", "kmh", "big", "tiny", "class",
 )  # fmt: skip
 
 #: The highest speed the package accepts, m/s (``raildyn.constants.MAXIMUM_SPEED``, written here
@@ -316,7 +316,10 @@ def mutations(value, param: str = "") -> dict[str, object]:
             "returns-negative": _returns(value, "returns-negative"),
             "returns-shape": _returns(value, "returns-shape"),
         }  # fmt: skip
-    return {"type": 1.0, "string": "abc", "none": None}
+    changes = {"type": 1.0, "string": "abc", "none": None}
+    if not isinstance(value, type) and type(value).__module__ != "builtins":
+        changes["class"] = type(value)  # the class where an instance of it belongs: Wheelset for Wheelset()
+    return changes
 
 
 # --------------------------------------------------------------------------- running and sorting

@@ -35,7 +35,7 @@ class SimplySupportedBeam:
     span : float
         L, m, in [1, 2000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "span").
     flexural_rigidity : float
-        EI, N·m², in [1e3, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity").
+        EI, N·m², in [1, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity").
     mass_per_length : float
         m, kg/m, in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "beam_mass").
     damping_ratio : float

@@ -95,7 +95,7 @@ class ContinuousBeam:
         "span"), the longest at most
         20 times the shortest, at most 50 spans. One span is the simply supported beam.
     flexural_rigidity : float
-        EI, N·m², in [1e3, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity"), the
+        EI, N·m², in [1, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity"), the
         same in every span.
     mass_per_length : float
         m, kg/m, in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "beam_mass").

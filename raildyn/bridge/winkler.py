@@ -47,7 +47,7 @@ class WinklerBeam:
     Attributes
     ----------
     flexural_rigidity : float
-        EI, N·m², in [1e3, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity").
+        EI, N·m², in [1, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity").
         Default: one UIC 60 rail,
         6.42 MN·m² (Esveld 2001).
     mass_per_length : float

@@ -297,9 +297,9 @@ def kalker_linear(longitudinal, lateral, spin, coefficients: CreepCoefficients) 
     >>> bool(kalker_linear(1e-3, 0.0, 0.0, f).fx == -f.f11 * 1e-3)
     True
     """
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
-    phi = _checks.array("spin", spin)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    eta = _checks.array("lateral", lateral, allow_empty=False)
+    phi = _checks.array("spin", spin, allow_empty=False)
     f = _coefficients(coefficients)
     return CreepForces(
         fx=_out(-f.f11 * xi + 0.0 * (eta + phi)),
@@ -368,7 +368,7 @@ def carter(longitudinal, normal_load, friction, creep_coefficient):
     >>> carter(0.05, 1e5, 0.3, carter_coefficient(1e5, 0.46, 6e-3))
     -30000.0
     """
-    xi = _checks.array("longitudinal", longitudinal)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
     n = _checks.plausible("normal_load", normal_load, "wheel_load")
     mu = _friction(friction)
     f = _checks.positive("creep_coefficient", creep_coefficient)
@@ -408,8 +408,8 @@ def johnson_vermeulen(longitudinal, lateral, normal_load, friction, coefficients
     >>> round(johnson_vermeulen(0.5, 0.0, 1e5, 0.3, creep_coefficients(6e-3, 4e-3)).fx, 6)  # saturated
     -30000.0
     """
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    eta = _checks.array("lateral", lateral, allow_empty=False)
     n = _checks.plausible("normal_load", normal_load, "wheel_load")
     mu = _friction(friction)
     coefficients = _coefficients(coefficients)
@@ -451,7 +451,10 @@ def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
     """
     if check is not False:
         _checks.flag("check", check)
-        force, limit = _checks.array("force", force, low=0.0), _checks.positive("limit", limit)
+        force, limit = (
+            _checks.array("force", force, low=0.0, allow_empty=False),
+            _checks.positive("limit", limit),
+        )
     u = np.abs(force) / limit
     v = np.minimum(u, 3.0)  # u ≥ 3: saturated, v − v²/3 + v³/27 = 1 (and no overflow for a huge u)
     sat = v - v**2 / 3.0 + v**3 / 27.0
@@ -570,9 +573,9 @@ def polach(
 
 def _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio):
     """Checked (γ_x, γ_y, φ broadcast together, Q, a, b, G, Kalker's C) for Polach's method."""
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
-    phi = _checks.array("spin", spin)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    eta = _checks.array("lateral", lateral, allow_empty=False)
+    phi = _checks.array("spin", spin, allow_empty=False)
     q = _checks.plausible("normal_load", normal_load, "wheel_load")
     a = _checks.plausible("a", a, "contact_semi_axis")
     b = _checks.plausible("b", b, "contact_semi_axis")
@@ -848,13 +851,17 @@ def wheelset_creepages(
     v = _checks.speed("speed", speed)
     r0 = _checks.plausible("nominal_radius", nominal_radius, "wheel_radius")
     l_half = _checks.plausible("half_gauge", half_gauge, "half_gauge")
-    y_dot = _checks.array("lateral_velocity", lateral_velocity)
-    psi = _checks.array("yaw_angle", yaw_angle)
-    psi_dot = _checks.array("yaw_rate", yaw_rate)
-    r_l = _checks.plausible_array("rolling_radius_left", rolling_radius_left, "wheel_radius")
-    r_r = _checks.plausible_array("rolling_radius_right", rolling_radius_right, "wheel_radius")
-    d_l = _checks.array("contact_angle_left", contact_angle_left)
-    d_r = _checks.array("contact_angle_right", contact_angle_right)
+    y_dot = _checks.array("lateral_velocity", lateral_velocity, allow_empty=False)
+    psi = _checks.array("yaw_angle", yaw_angle, allow_empty=False)
+    psi_dot = _checks.array("yaw_rate", yaw_rate, allow_empty=False)
+    r_l = _checks.plausible_array(
+        "rolling_radius_left", rolling_radius_left, "wheel_radius", allow_empty=False
+    )
+    r_r = _checks.plausible_array(
+        "rolling_radius_right", rolling_radius_right, "wheel_radius", allow_empty=False
+    )
+    d_l = _checks.array("contact_angle_left", contact_angle_left, allow_empty=False)
+    d_r = _checks.array("contact_angle_right", contact_angle_right, allow_empty=False)
     for name, angle in (("contact_angle_left", d_l), ("contact_angle_right", d_r)):
         if np.abs(angle).max(initial=0.0) > np.pi / 2:
             raise ValueError(f"{name} must be within ±π/2 rad (an angle in degrees?), got {angle!r:.80}")

@@ -432,9 +432,9 @@ def _prepare(
     longitudinal, lateral, spin, normal_load, friction, a, b, shear_modulus, poisson_ratio, n_x, n_y, fields
 ) -> _State:
     """Check fastsim's input and compute the flexibilities, the pressure and the scaled creepages."""
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
-    phi = _checks.array("spin", spin)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    eta = _checks.array("lateral", lateral, allow_empty=False)
+    phi = _checks.array("spin", spin, allow_empty=False)
     load = _checks.plausible_array("normal_load", normal_load, "wheel_load")
     mu = _checks.plausible_array("friction", friction, "friction", low=0.0, low_open=True)
     a = _checks.plausible_array("a", a, "contact_semi_axis")

@@ -177,7 +177,7 @@ def simulate(
     method, engine = _method(method), _engine_choice(engine)
     m = _at_speed(model, V)
     y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    t = _samples(T, h)
+    t = _samples(T, h, m.state_size)
     (states,), _ = _runs([m], [V], [y0], T, h, r, method, engine, rows=None)
     return NonlinearRun(V, t, states, m.lateral_index)
 
@@ -198,14 +198,17 @@ def _engine_choice(value) -> str:
     return _checks.choice("engine", value, _ENGINES)
 
 
-def _samples(duration: float, max_step: float) -> np.ndarray:
+def _samples(duration: float, max_step: float, rows: int = 1) -> np.ndarray:
     """The uniform times at which a run is read, s: every min(max_step, 1 ms)/2.
 
     Half a millisecond reads the peak of a 15 Hz oscillation (the top of the hunting band) to
     3e-4 of its amplitude: 1 − cos(π f Δt).
     """
     spacing = 0.5 * min(max_step, 1.0e-3)
-    return np.linspace(0.0, duration, int(math.ceil(duration / spacing)) + 1)
+    n = _checks.samples(
+        "max_step", max_step, duration, spacing, per_sample=rows
+    )  # before anything is allocated
+    return np.linspace(0.0, duration, n)
 
 
 def _runs(
@@ -220,7 +223,8 @@ def _runs(
     from raildyn.integrators import _dopri  # here: numba loads only when a run needs it
     from raildyn.stability import _engine
 
-    t = _samples(duration, max_step)
+    kept = models[0].state_size if rows is None else len(rows)
+    t = _samples(duration, max_step, kept * len(models))
     packed = None
     if engine != "scipy" and method == "RK45":
         try:
@@ -262,6 +266,11 @@ def _runs(
 
 _MAX_DURATION = 120.0  # s, the longest run (and period) asked for: hunting settles within seconds
 _MAX_EVALUATIONS = 1_000_000  # of a right-hand side in one integration: the bound on a run's work
+# Evaluations of the (batched) right-hand side one periodic_orbit may make in all its integrations: a
+# shooting that converges takes some 14 000 (a wheelset) to 25 000 (a bogie or a car, about 1.5 s), so
+# four times that is ample, and a hopeless guess (a period of 100 s) fails in a few seconds instead of
+# running each of its integrations up to _MAX_EVALUATIONS (about 50 s for a car).
+_SHOOTING_EVALUATIONS = 100_000
 
 
 def _duration(name: str, value) -> float:
@@ -271,6 +280,7 @@ def _duration(name: str, value) -> float:
 
 def _at_speed(model, speed: float):
     """``model.at_speed(speed)``, checked to offer ``rhs``, ``state_size`` and ``lateral_index``."""
+    _checks.not_a_class("model", model, "a nonlinear model")
     if not callable(getattr(model, "at_speed", None)):
         raise TypeError(
             "model must be a nonlinear model with at_speed(V) (NonlinearWheelset, NonlinearLateral), "
@@ -284,23 +294,29 @@ def _at_speed(model, speed: float):
     return m
 
 
-def _integrate(rhs, duration: float, y0, method: str, rtol: float, atol: float, speed: float, **options):
+def _integrate(
+    rhs, duration: float, y0, method: str, rtol: float, atol: float, speed: float, budget=None, **options
+):
     """``scipy.integrate.solve_ivp`` over (0, duration) with the failure policy: a bounded run.
 
-    At most :data:`_MAX_EVALUATIONS` evaluations of ``rhs``; a non-finite state or a failed
-    run raises :class:`SolverError`.
+    At most :data:`_MAX_EVALUATIONS` evaluations of ``rhs`` (and, with ``budget``, a one-item list
+    of the evaluations a whole task has left, at most that many: it is decremented); a non-finite
+    state or a failed run raises :class:`SolverError`.
     """
     import scipy.integrate
 
     count = 0
+    limit = _MAX_EVALUATIONS if budget is None else min(_MAX_EVALUATIONS, budget[0])
 
     def bounded(t, y):
         nonlocal count
         count += 1
-        if count > _MAX_EVALUATIONS:
+        if budget is not None:
+            budget[0] -= 1
+        if count > limit:
             raise SolverError(
-                f"the integration at V = {speed:.6g} m/s took more than {_MAX_EVALUATIONS} evaluations "
-                "of the right-hand side (a stiff motion or a tiny max_step)",
+                f"the integration at V = {speed:.6g} m/s took more than {limit} evaluations "
+                "of the right-hand side (a stiff motion, a tiny max_step, or a task's whole budget)",
                 time=float(t),
             )
         if not math.isfinite(y.sum()):
@@ -547,7 +563,7 @@ def _cycles(models, speeds, starts, duration, max_step, rtol, method, engine) ->
 
     The models share one ``lateral_index``, the row that is sampled.
     """
-    t = _samples(duration, max_step)
+    t = _samples(duration, max_step, len(models))
     rows = [models[0].lateral_index]
     runs, ends = _runs(models, speeds, starts, duration, max_step, rtol, method, engine, rows)
     return [
@@ -967,8 +983,10 @@ def periodic_orbit(
     Raises
     ------
     SolverError
-        If an integration fails (see :func:`~raildyn.stability.nonlinear.simulate`) or Newton's
-        method does not converge in ``max_iter`` steps.
+        If an integration fails (see :func:`~raildyn.stability.nonlinear.simulate`), Newton's
+        method does not converge in ``max_iter`` steps, or the integrations together take more
+        than 100 000 evaluations of the right-hand side (four times what a converging shooting
+        needs: the work is bounded to a few seconds).
 
     Notes
     -----
@@ -994,7 +1012,8 @@ def periodic_orbit(
 
     section.direction = -1.0  # a maximum of the lateral displacement
     # Move the guess along its own trajectory to the section ẏ = 0, so that it meets the phase condition.
-    sol = _integrate(m.rhs, 2.0 * T, x, "DOP853", rtol, 1e-12, V, events=section)
+    budget = [_SHOOTING_EVALUATIONS]  # the whole shooting's work, shared by every integration below
+    sol = _integrate(m.rhs, 2.0 * T, x, "DOP853", rtol, 1e-12, V, budget=budget, events=section)
     if sol.t_events[0].size:
         x = sol.y_events[0][0].copy()
     x[iv] = 0.0
@@ -1011,7 +1030,7 @@ def periodic_orbit(
         def rhs(t, z):
             return m.rhs(t, z.reshape(n, k)).reshape(-1)
 
-        sol = _integrate(rhs, t_end, starts.reshape(-1), "DOP853", rtol, 1e-12, V)
+        sol = _integrate(rhs, t_end, starts.reshape(-1), "DOP853", rtol, 1e-12, V, budget=budget)
         return sol.y[:, -1].reshape(n, k)
 
     # Finite-difference steps relative to each entry, with a floor so that an entry near 0 (such

@@ -25,6 +25,7 @@ force becomes non-finite; a ``TrainRun`` that is returned is a success. The resu
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -210,6 +211,22 @@ class TrainModel:
         m = 2 * self.size
         return _checks.array(name, y, shape=(m,) if np.ndim(y) == 1 else (m, None), allow_empty=False)
 
+    @staticmethod
+    def _finite(dydt, y):
+        """``dydt`` if finite; else a ValueError naming the state ``y`` whose sizes overflow the forces.
+
+        An integrator's trial state may leave the laws' domain (couplers parted, speeds beyond the
+        train's) and still give a finite derivative, which is returned; only sizes at which a force
+        overflows (the solid draft gear at 2.5e8 N/m, the v² of the resistance) are refused.
+        """
+        if math.isfinite(dydt.sum()):
+            return dydt
+        raise ValueError(
+            "y holds sizes at which the forces overflow (coupler extensions or speeds beyond double "
+            "precision once multiplied by the stiffnesses and resistances): largest |y| = "
+            f"{np.abs(y).max()!r}"
+        )
+
     def _vehicle_array(self, name, value):
         """``value`` as a finite float array with the vehicle axis first: (n,) or (n, k)."""
         n = self.size
@@ -385,7 +402,8 @@ class TrainModel:
         Raises
         ------
         ValueError
-            If ``y`` does not have 2n rows or holds a non-finite number.
+            If ``y`` does not have 2n rows, holds a non-finite number, or holds sizes at which the
+            forces overflow (then no derivative is a number).
 
         Notes
         -----
@@ -403,9 +421,9 @@ class TrainModel:
         """
         t = _checks.scalar("t", t)
         y = self._state(y)
-        if y.ndim == 1:
-            return self._rhs_one(t, y)
-        return self._rhs_numpy(t, y)
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused by _finite
+            dydt = self._rhs_one(t, y) if y.ndim == 1 else self._rhs_numpy(t, y)
+        return self._finite(dydt, y)
 
     def _rhs_one(self, t, y):
         """The compiled right-hand side of one state; ``y`` must already be checked."""
@@ -427,7 +445,9 @@ class TrainModel:
             Time derivative of the state: m/s, m/s, m/s².
         """
         t = _checks.scalar("t", t)
-        return self._rhs_numpy(t, self._state(y))
+        y = self._state(y)
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused by _finite
+            return self._finite(self._rhs_numpy(t, y), y)
 
     def _rhs_numpy(self, t, y):
         n = self.size

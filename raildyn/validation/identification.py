@@ -777,7 +777,8 @@ def coast_down(time, speed, mass: float, *, confidence: float = 0.95) -> CoastDo
     time : array_like, (n,)
         t, s: uniformly spaced and increasing, more than 4 samples.
     speed : array_like, (n,)
-        v(t), m/s, > 0 (the record must end before the train stops).
+        v(t), m/s, > 0 (the record must end before the train stops), lower at the end than at the
+        start (a coasting train slows down).
     mass : float
         m, kg, in (0, 1e9] (a million tonnes: beyond any train).
     confidence : float
@@ -799,6 +800,11 @@ def coast_down(time, speed, mass: float, *, confidence: float = 0.95) -> CoastDo
     if np.any(v <= 0.0):
         raise ValueError(
             f"speed must be > 0 throughout (a coast-down before standstill), got min {v.min()!r}"
+        )
+    if v[-1] >= v[0]:
+        raise ValueError(
+            f"speed must fall over the record (a train coasting slows by its resistance), got "
+            f"{v[0]!r} m/s at the start and {v[-1]!r} m/s at the end"
         )
     m = _checks.scalar("mass", mass, low=0.0, high=1.0e9, low_open=True)
     level = _confidence(confidence)
