@@ -663,7 +663,8 @@ def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
     ----------
     ws : Wheelset
     radius : float
-        R, m (> 0; the curve turns to the left, +y).
+        R, m, at least 50 (:data:`raildyn.curving.geometry.MINIMUM_RADIUS`; the curve turns to
+        the left, +y).
     position : float
         x, the wheelset's distance ahead of the axes' origin, m, in [−100, 100] (negative
         behind): the axes follow one vehicle, and x/R must stay a small angle.
@@ -683,7 +684,7 @@ def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
     True
     """
     terms = creep_terms(_checks.instance("ws", ws, Wheelset))
-    R = positive("radius", radius)
+    R = scalar("radius", radius, low=_MIN_RADIUS)
     x = scalar("position", position, low=-_MAX_POSITION, high=_MAX_POSITION)
     track = np.array(track_on_arc(x, 1.0 / R))
     return (terms.K_creep + terms.K_gravity) @ track - terms.C1[:, 1] / R

@@ -222,6 +222,7 @@ def crossing(
     >>> round(run.amplification, 2)
     1.73
     """
+    _checks.not_a_class("beam", beam, "a beam")
     for name in (
         "length",
         "frequencies_hz",
@@ -262,7 +263,7 @@ def crossing(
     steps = int(np.ceil(duration / h))
     if steps > _MAX_STEPS or (steps + 1) * load.positions.size > _MAX_AXLE_SAMPLES:
         raise ValueError(
-            f"time_step {h!r} s gives {steps} steps over the {duration:.4g} s run for "
+            f"time_step {h!r} s gives {steps} steps over the {duration:.4g} s run (at speed {v!r} m/s) for "
             f"{load.positions.size} axles; at most {_MAX_STEPS} steps and {_MAX_AXLE_SAMPLES:.0e} "
             "axle-steps are allowed (a longer step, fewer modes or a shorter train)"
         )

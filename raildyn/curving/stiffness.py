@@ -40,6 +40,7 @@ from functools import lru_cache
 import numpy as np
 
 from raildyn import _checks
+from raildyn.curving.geometry import MINIMUM_RADIUS
 from raildyn.curving.steady import steady_curving
 from raildyn.linear_model import _AffineFamily, as_linear_system
 from raildyn.stability.linear import _MAX_SCAN, _STATUSES, _crossings, _StateMatrices
@@ -169,7 +170,7 @@ def self_steering_curving(bogie: Bogie, radius) -> SelfSteeringCurving:
         Its wheelset's r₀, a, λ (> 0), f₁₁ and f₂₂ (> 0), its primary stiffnesses and b.
         The wheelset's spin and gravitational terms are ignored here.
     radius : float
-        R, m (> 0).
+        R, m, at least :data:`~raildyn.curving.geometry.MINIMUM_RADIUS` (50 m).
 
     Returns
     -------
@@ -182,7 +183,7 @@ def self_steering_curving(bogie: Bogie, radius) -> SelfSteeringCurving:
     [1.741, -1.741]
     """
     _bogie(bogie)
-    R = _checks.positive("radius", radius)
+    R = _checks.scalar("radius", radius, low=MINIMUM_RADIUS)
     ws = bogie.wheelset
     r0, a, b = ws.rolling_radius, ws.half_gauge, bogie.semi_wheelbase
     lam = _checks.positive("bogie.wheelset.conicity", ws.conicity)

@@ -392,7 +392,8 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     speed : float
         V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     rail_length : float
-        L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length"; default 11.9).
+        L, m, the rail length or any wavelength, in [0.001, 1000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length";
+        default 11.9).
 
     Returns
     -------
@@ -404,7 +405,7 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     >>> round(passing_frequency(119.0 / 3.6), 4)  # 119 km/h over 11.9 m rails
     2.7778
     """
-    return _vehicle_speed(speed) / _rail_length(rail_length)
+    return _vehicle_speed(speed) / _along("rail_length", rail_length)
 
 
 def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmonic: int = 1) -> float:
@@ -419,7 +420,8 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     frequency : float
         f, Hz, > 0.
     rail_length : float
-        L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length"; default 11.9).
+        L, m, the rail length or any wavelength, in [0.001, 1000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length";
+        default 11.9).
     harmonic : int
         n >= 1.
 
@@ -435,7 +437,7 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     12.85
     """
     f = _checks.positive("frequency", frequency)
-    L = _rail_length(rail_length)
+    L = _along("rail_length", rail_length)
     n = _checks.integer("harmonic", harmonic, low=1)
     V = f * L / n
     if not V <= MAXIMUM_SPEED:
