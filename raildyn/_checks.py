@@ -579,12 +579,18 @@ def speed_range(name: str, value) -> tuple[float, float]:
 MAX_SMOOTHING_SPEED = 1.0
 
 
+#: The smallest: below a micrometre a second the smooth law is as steep as the ideal one, and the time
+#: step it asks of an explicit scheme (about m v_ε/F) vanishes.
+MIN_SMOOTHING_SPEED = 1.0e-6
+
+
 def smoothing_speed(name: str, value) -> np.ndarray:
-    """A non-empty array of smoothing speeds v_ε of a friction law, m/s, each in (0, 1]."""
+    """A non-empty array of smoothing speeds v_ε of a friction law, m/s, each in [1e-6, 1]."""
     arr = array(name, value, low=0.0, low_open=True, allow_empty=False)
-    if arr.max() > MAX_SMOOTHING_SPEED:
+    bad = (arr < MIN_SMOOTHING_SPEED) | (arr > MAX_SMOOTHING_SPEED)
+    if bad.any():
         raise ValueError(
-            f"{name} must be in (0, {MAX_SMOOTHING_SPEED:g}] m/s (v_ε smooths the sign of a sliding "
-            f"velocity, far below it), got {arr.max()!r}"
+            f"{name} must be in [{MIN_SMOOTHING_SPEED:g}, {MAX_SMOOTHING_SPEED:g}] m/s (v_ε smooths the "
+            f"sign of a sliding velocity, far below it), got {arr[bad].flat[0]!r}"
         )
     return arr

@@ -134,7 +134,7 @@ def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.nda
     friction_force : array_like
         F_f >= 0, N (μN for a friction wedge under normal load N).
     velocity_scale : float or array_like, optional
-        v_ε, m/s, in (0, 1] (a smoothing of the sign of v, far below the sliding speeds). Without it the
+        v_ε, m/s, in [1e-6, 1] (a smoothing of the sign of v, far below the sliding speeds). Without it the
         ideal law is returned (F = 0 at v = 0
         exactly); with it, the smooth law, whose error is bounded by
         :func:`friction_error_bound`.
@@ -176,7 +176,7 @@ def coulomb_friction_slope(velocity, friction_force, *, velocity_scale) -> np.nd
     friction_force : array_like
         F_f >= 0, N.
     velocity_scale : float or array_like
-        v_ε, m/s, in (0, 1] (a smoothing of the sign of v, far below the sliding speeds).
+        v_ε, m/s, in [1e-6, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Returns
     -------
@@ -210,7 +210,7 @@ def friction_error_bound(velocity, friction_force, velocity_scale) -> np.ndarray
     friction_force : array_like
         F_f >= 0, N.
     velocity_scale : float or array_like
-        v_ε, m/s, in (0, 1] (a smoothing of the sign of v, far below the sliding speeds).
+        v_ε, m/s, in [1e-6, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Returns
     -------
@@ -318,7 +318,7 @@ class FrictionDamper:
     friction_force : float or array_like, shape (n,)
         F_f >= 0, N: one for every coordinate, or one value for all.
     velocity_scale : float or array_like, shape (n,)
-        v_ε, m/s, in (0, 1] (a smoothing of the sign of v, far below the sliding speeds).
+        v_ε, m/s, in [1e-6, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Examples
     --------

@@ -258,7 +258,7 @@ class StabilityCurving:
             raise ValueError(
                 f"critical_speed must be inf exactly where the status is {_STATUSES[1]!r}, got {v!r:.80}"
             )
-        _checks.array("critical_speed", np.where(stable, 1.0, v), low=0.0, low_open=True)
+        _checks.plausible_array("critical_speed", np.where(stable, 1.0, v), "speed", low_open=True)
         _checks.array("angle_of_attack", self.angle_of_attack, shape=(m,))
         _checks.speed("speed", self.speed)
         _checks.positive("radius", self.radius)

@@ -132,7 +132,7 @@ def simulate(
     initial_state : array_like, (state_size,)
         In the units of the model's state (finite).
     duration : float
-        s, in (0, 120]: two minutes of running, where hunting settles within seconds.
+        s, in [0.001, 120]: two minutes of running, where hunting settles within seconds.
     max_step : float
         Largest step, s (> 0).
     rtol : float
@@ -264,6 +264,7 @@ def _runs(
     return list(sampled), list(ends)
 
 
+_MIN_DURATION = 1.0e-3  # s, the shortest run (and period) asked for
 _MAX_DURATION = 120.0  # s, the longest run (and period) asked for: hunting settles within seconds
 _MAX_EVALUATIONS = 1_000_000  # of a right-hand side in one integration: the bound on a run's work
 # Evaluations of the (batched) right-hand side one periodic_orbit may make in all its integrations: a
@@ -274,8 +275,9 @@ _SHOOTING_EVALUATIONS = 100_000
 
 
 def _duration(name: str, value) -> float:
-    """A run's length (or a period), s, in (0, 120]."""
-    return scalar(name, value, low=0.0, low_open=True, high=_MAX_DURATION)
+    """A run's length (or a period), s, in [1 ms, 120 s]: shorter, no motion of a vehicle shows
+    (its fastest modes take some 10 ms a cycle), and the measures of a run read nothing."""
+    return scalar(name, value, low=_MIN_DURATION, high=_MAX_DURATION)
 
 
 def _at_speed(model, speed: float):
@@ -503,7 +505,7 @@ def limit_cycle_amplitude(
     initial_state : array_like, optional
         Full starting state (finite), instead of ``initial_displacement``.
     duration : float
-        Simulated time, s, in (0, 120].
+        Simulated time, s, in [0.001, 120].
     max_step : float
         Largest solver step, s (> 0).
     rtol : float
@@ -640,7 +642,8 @@ class BifurcationDiagram:
         ax : matplotlib Axes, optional
             Axes to draw on; new ones by default. Ignored when ``artists`` is given.
         linear_critical_speed : float, optional
-            The linear critical speed of the same vehicle, m/s (finite, > 0; from
+            The linear critical speed of the same vehicle, m/s (in (0,
+            :data:`~raildyn.constants.MAXIMUM_SPEED`]; from
             :func:`~raildyn.stability.linear.critical_speed`), drawn as a dashed line; left out if None.
         artists : dict, optional
             The artists an earlier call returned: they are moved to this diagram in place (a
@@ -660,9 +663,7 @@ class BifurcationDiagram:
         V, amp, hunt = 3.6 * self.speeds, 1e3 * self.amplitudes, self.hunting
         marks = {"nonlinear": 3.6 * self.nonlinear_critical_speed, "linear": np.nan}
         if linear_critical_speed is not None:
-            marks["linear"] = 3.6 * scalar(
-                "linear_critical_speed", linear_critical_speed, low=0.0, low_open=True
-            )
+            marks["linear"] = 3.6 * _checks.speed("linear_critical_speed", linear_critical_speed)
         if artists is None:
             ax = plots.axes_or_new(ax)
             with matplotlib.rc_context(plots.STYLE):
@@ -738,7 +739,7 @@ def bifurcation_diagram(
         a speed where the motion died away), m, either side, 0 < |y₀| ≤ 0.05 m (as for
         :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`).
     duration : float
-        Simulated time at each speed, s, in (0, 120]: at least four periods of the hunting,
+        Simulated time at each speed, s, in [0.001, 120]: at least four periods of the hunting,
         so that each quarter of the run compared holds one (:meth:`LimitCycle.hunting`).
     max_step : float
         Largest solver step, s (> 0).
@@ -966,7 +967,7 @@ def periodic_orbit(
         :func:`limit_cycle_amplitude` run), in the units of the model's state: finite, not
         all zero (the centred state is the trivial solution).
     period : float
-        Guess of T, s, in (0, 120] (1 / ``frequency_hz`` of the settled motion).
+        Guess of T, s, in [0.001, 120] (1 / ``frequency_hz`` of the settled motion).
     tol : float
         Convergence on the relative size of the Newton step (dimensionless, > 0).
     max_iter : int

@@ -392,7 +392,8 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     speed : float
         V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     rail_length : float
-        L, m, the rail length or any wavelength, in [0.001, 1000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length";
+        L, m, the rail length or any wavelength, in [0.001, 1000]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length";
         default 11.9).
 
     Returns
@@ -420,7 +421,8 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     frequency : float
         f, Hz, > 0.
     rail_length : float
-        L, m, the rail length or any wavelength, in [0.001, 1000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length";
+        L, m, the rail length or any wavelength, in [0.001, 1000]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length";
         default 11.9).
     harmonic : int
         n >= 1.

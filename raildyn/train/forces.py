@@ -44,6 +44,8 @@ DYNAMIC_BRAKE_FADE_SPEED = 20.0
 # Fastest brake-pipe signal, m/s: the speed of sound in air at 20 °C; a pressure wave in the pipe
 # cannot outrun it (emergency applications travel at about 250-290 m/s {cole2006}).
 _SOUND_SPEED = 343.0
+# Slowest: a signal slower than 10 m/s (36 km/h) would be outrun by the train it brakes.
+_SLOWEST_SIGNAL = 10.0
 
 
 def tractive_effort(speed, notch, max_tractive_effort: float, rail_power: float):
@@ -138,10 +140,11 @@ class AirBrake:
     start : float
         Time of the application at the front, s (>= 0).
     propagation_speed : float
-        Speed of the brake-pipe signal along the train, m/s, in (0, 343]. Emergency
+        Speed of the brake-pipe signal along the train, m/s, in [10, 343]. Emergency
         applications propagate at roughly 250–290 m/s, service ones more slowly
         {cole2006}; a pressure signal in air cannot outrun sound (343 m/s at 20 °C), so a
-        faster one is a slip (e.g. km/h typed for m/s).
+        faster one is a slip (e.g. km/h typed for m/s), and one slower than 10 m/s would be
+        outrun by the train.
     build_up_time : float
         Time constant of the brake-cylinder pressure rise at each vehicle, s (> 0).
     level : float
@@ -155,7 +158,7 @@ class AirBrake:
 
     def __post_init__(self):
         _checks.nonnegative("start", self.start)
-        _checks.scalar("propagation_speed", self.propagation_speed, low=0.0, low_open=True, high=_SOUND_SPEED)
+        _checks.scalar("propagation_speed", self.propagation_speed, low=_SLOWEST_SIGNAL, high=_SOUND_SPEED)
         _checks.positive("build_up_time", self.build_up_time)
         _checks.scalar("level", self.level, low=0.0, high=1.0, low_open=True)
 

@@ -636,7 +636,7 @@ def weigh_in_motion(
     gaps = _checks.array("spacings", spacings, ndim=1, low=0.0, low_open=True)
     if gaps.size and gaps.max() > 1000.0:
         raise ValueError(f"spacings must be at most 1000 m each, got {gaps.max()!r}")
-    c = _checks.scalar("fibre_distance", fibre_distance, low=0.0, high=100.0, low_open=True)
+    c = _checks.scalar("fibre_distance", fibre_distance, low=0.01, high=100.0)
     fit_gaps = _checks.flag("fit_spacings", fit_spacings)
     level = _confidence(confidence)
     if speed is not None:
@@ -780,7 +780,8 @@ def coast_down(time, speed, mass: float, *, confidence: float = 0.95) -> CoastDo
         v(t), m/s, > 0 (the record must end before the train stops), lower at the end than at the
         start (a coasting train slows down).
     mass : float
-        m, kg, in (0, 1e9] (a million tonnes: beyond any train).
+        m, kg, in [10, 1e9] (from the lightest vehicle body, PLAUSIBLE_RANGES["mass"], to a million
+        tonnes: beyond any train).
     confidence : float
         Level of the intervals, in (0, 1); default 0.95.
 
@@ -797,6 +798,7 @@ def coast_down(time, speed, mass: float, *, confidence: float = 0.95) -> CoastDo
     array([4000.,   60.,    6.,   40.])
     """
     t, v = _record(time, speed, name="speed")
+    _checks.plausible_array("speed", v, "speed", low=-np.inf)  # at most MAXIMUM_SPEED (>0 just below)
     if np.any(v <= 0.0):
         raise ValueError(
             f"speed must be > 0 throughout (a coast-down before standstill), got min {v.min()!r}"
@@ -806,7 +808,7 @@ def coast_down(time, speed, mass: float, *, confidence: float = 0.95) -> CoastDo
             f"speed must fall over the record (a train coasting slows by its resistance), got "
             f"{v[0]!r} m/s at the start and {v[-1]!r} m/s at the end"
         )
-    m = _checks.scalar("mass", mass, low=0.0, high=1.0e9, low_open=True)
+    m = _checks.scalar("mass", mass, low=10.0, high=1.0e9)
     level = _confidence(confidence)
     if t.size <= 4:
         raise ValueError(f"time must hold more than the 4 parameters fitted, got {t.size} samples")

@@ -377,7 +377,7 @@ def rock_and_roll(
         Time step, s (> 0, at most the stability limit below). Default: 8 ms, or 0.9 of the
         stability limit (:func:`raildyn.integrators.stable_step`) where that is smaller (stiff wedges).
     velocity_scale : float
-        v_ε of the smooth friction law, m/s, in (0, 1] (a smoothing of the sign of the sliding
+        v_ε of the smooth friction law, m/s, in [1e-6, 1] (a smoothing of the sign of the sliding
         velocity, far below it).
     progress : bool
         Show a progress bar.
@@ -472,7 +472,7 @@ def wedge_energy_per_cycle(
     frequency : float
         Hz (> 0).
     velocity_scale : float, optional
-        v_ε of the smooth law F tanh(v/v_ε), m/s, in (0, 1]; None for the ideal law.
+        v_ε of the smooth law F tanh(v/v_ε), m/s, in [1e-6, 1]; None for the ideal law.
     n : int
         Midpoint samples over the cycle for the smooth law, in [16, 10⁶]: the midpoint rule on this
         smooth periodic integrand has converged to rounding long before the upper bound, which keeps

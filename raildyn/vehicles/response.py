@@ -100,7 +100,9 @@ def _vehicle(vehicle) -> LinearSystem:
 def _steady_system(vehicle, speed, name: str = "speed") -> tuple[LinearSystem, float]:
     """The vehicle's system and V, refusing a speed at which the model is unstable (no steady response)."""
     system = _vehicle(vehicle)
-    V = _checks.speed(name, speed)
+    # At least 1 mm/s: slower, the track's spectrum in time, S(ω/V)/V, and the creep damping C₁/V
+    # overflow, and no vehicle's response is of interest.
+    V = _checks.speed(name, speed, low=1.0e-3, low_open=False)
     if np.any(system.C1):
         growth = np.linalg.eigvals(system.matrices(V).state_matrix()).real.max()
         if growth >= 0:
@@ -123,7 +125,7 @@ def track_frf(vehicle, omega, speed, output="body z", derivative: int = 0, compo
     omega : array_like, (n_ω,)
         rad/s, in [0, 1e6] (rigid-body models of motions below some 100 Hz), not empty.
     speed : float
-        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
+        V, m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
         model.
     output : str, (str, float) or array_like
         See :meth:`raildyn.linear_model.LinearSystem.output_vector`.
@@ -161,7 +163,7 @@ class ResponseSpectrum:
     rms : float
         √∫S dω over the grid, in the output unit, ≥ 0.
     speed : float
-        m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
+        m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     """
 
     omega: np.ndarray
@@ -174,7 +176,7 @@ class ResponseSpectrum:
         object.__setattr__(self, "omega", w)
         object.__setattr__(self, "psd", _checks.array("psd", self.psd, shape=w.shape, low=0.0))
         object.__setattr__(self, "rms", _checks.nonnegative("rms", self.rms))
-        object.__setattr__(self, "speed", _checks.speed("speed", self.speed))
+        object.__setattr__(self, "speed", _checks.speed("speed", self.speed, low=1.0e-3, low_open=False))
 
     @property
     def frequency_hz(self) -> np.ndarray:
@@ -277,7 +279,7 @@ def response_spectrum(
         (default "vertical"); or a mapping {component: S} of independent components.
         Each S takes an array of Ω (rad/m) and returns finite values ≥ 0 of the same shape.
     speed : float
-        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
+        V, m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
         model.
     omega : array_like
         rad/s, in (0, 1e6] (rigid-body models of motions below some 100 Hz), not empty.
@@ -328,7 +330,7 @@ def rms_over_speeds(
     vehicle, psd, omega, output, derivative, component
         As for :func:`response_spectrum`.
     speeds : array_like, (n_V,)
-        m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a
+        m/s, each in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a
         lateral model; not empty.
 
     Returns
@@ -342,7 +344,7 @@ def rms_over_speeds(
         If a spectrum returns a non-finite or negative value, or an array not shaped like its Ω.
     """
     system = _vehicle(vehicle)
-    V = _checks.speeds("speeds", speeds)
+    V = _checks.speeds("speeds", speeds, low=1.0e-3, low_open=False)
     w = _omega(omega, positive=True)
     spectra = _spectra(psd, component)
     if np.any(system.C1):
@@ -554,7 +556,8 @@ def time_response(
         The slope dz/dx with the same signature and the same demands on what it
         returns; without it the damper inputs use a finite-difference slope.
     speed : float
-        m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral model.
+        m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
+        model.
     t : array_like
         Uniform, strictly increasing times, s, starting from rest at static equilibrium.
     output : str, (str, float) or array_like
