@@ -25,8 +25,9 @@ fraction, a complex number, a bool, a string, None and a list; for an array a Na
 first entry, a NaN entry in the middle and as the last entry, zeros, negatives, 1e300, an
 empty array, an extra axis, complex entries, booleans, a string and None; for a name an
 unknown name, a number and None; for a flag a string and None; for a model or other object
-a number, a string, None and its class (``Wheelset`` for ``Wheelset()``); for a callback a non-callable, and a callback whose values are
-NaN, negative or of the wrong shape; for a parameter left at None a string. Every callable
+a number, a string, None and its class (``Wheelset`` for ``Wheelset()``); for a callback a
+non-callable, and a callback whose values are NaN, negative or of the wrong shape; for a
+parameter left at None a string. Every callable
 also meets an unknown keyword. Parameters in :data:`FREE` (text that labels a plot) take
 anything. A parameter that may be zero may also be 1e-300 (``tiny`` is valid wherever
 ``zero`` is declared valid).

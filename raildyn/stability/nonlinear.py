@@ -901,7 +901,7 @@ class PeriodicOrbit:
     speed : float
         m/s (> 0).
     period : float
-        T, s (> 0).
+        T, s, in [0.001, 120] (as the guess of :func:`periodic_orbit`).
     state : ndarray
         A point of the orbit, where the first wheelset's lateral velocity is zero.
     amplitude : float
@@ -922,7 +922,7 @@ class PeriodicOrbit:
 
     def __post_init__(self):
         _checks.speed("speed", self.speed)
-        positive("period", self.period)
+        _duration("period", self.period)
         n = array("state", self.state, ndim=1, allow_empty=False).size
         _checks.nonnegative("amplitude", self.amplitude)
         array("multipliers", self.multipliers, shape=(n,), dtype=complex)
