@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.curving.geometry import MAXIMUM_SPEED, Curve
+from raildyn.curving.geometry import Curve
 from raildyn.stability.nonlinear import simulate
 from raildyn.wheelset import NonlinearLateral, wheel_forces
 
@@ -150,7 +150,7 @@ def curve_entry(model, speed, curve, *, max_step: float = 0.01, rtol: float = 1e
     (2, 168.72)
     """
     _checks.instance("model", model, NonlinearLateral)
-    V = _checks.scalar("speed", speed, low=0.0, low_open=True, high=MAXIMUM_SPEED)
+    V = _checks.speed("speed", speed)
     _checks.instance("curve", curve, Curve)
     x = model.system.wheelset_positions
     start = -x.max() - _LEAD_IN

@@ -485,7 +485,7 @@ class Curve:
         >>> bool(np.isclose(c.unbalanced_acceleration(150.0, V), unbalanced_acceleration(V, 600.0, 0.1)))
         True
         """
-        V = scalar("speed", speed, low=0.0, high=MAXIMUM_SPEED)
+        V = _checks.speed("speed", speed, low_open=False)
         return V * V * self.curvature(s) - GRAVITY * self.cant_at(s) / self.rail_spacing
 
     def cant_gradient(self, s):

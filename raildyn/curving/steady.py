@@ -24,7 +24,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.contact.creep import wheelset_creepages
-from raildyn.curving.geometry import MAXIMUM_CANT, MAXIMUM_SPEED, MINIMUM_RADIUS, unbalanced_acceleration
+from raildyn.curving.geometry import MAXIMUM_CANT, MINIMUM_RADIUS, unbalanced_acceleration
 from raildyn.linear_model import as_linear_system
 from raildyn.wheelset import curve_loads, track_on_arc
 
@@ -210,7 +210,7 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
     system = as_linear_system(model)
     if not system.wheelsets:
         raise ValueError(f"model must have wheelsets on the rails, got one with coordinates {system.labels}")
-    V = _checks.scalar("speed", speed, low=0.0, low_open=True, high=MAXIMUM_SPEED)
+    V = _checks.speed("speed", speed)
     R = _checks.scalar("radius", radius, low=MINIMUM_RADIUS)
     D = _checks.scalar("cant", cant, low=0.0, high=MAXIMUM_CANT)
     a_q = unbalanced_acceleration(V, R, D)  # the small-angle g I/(2a) of the linear theory

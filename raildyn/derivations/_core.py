@@ -244,8 +244,8 @@ class Derivation:
         """
         if self.speed is not None:
             speed = _checks.speed("speed", speed)
-        elif speed is not None:
-            speed = _checks.scalar("speed", speed)
+        elif speed is not None:  # unused by a speed-free model, but still a speed
+            speed = _checks.speed("speed", speed, signed=True)
         values = list(self.values(model).values())
         n, p = len(self.coordinates), len(self.inputs)
         shapes = ((n, n),) * 3 + ((n, p),) * 2

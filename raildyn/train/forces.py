@@ -103,11 +103,12 @@ def dynamic_brake_force(speed, level, max_force: float, peak_speed=None, fade_sp
     max_force : float
         Largest retarding force at full level, N (>= 0).
     peak_speed : float, optional
-        Corner speed where the force reaches its maximum, m/s (> 0); default
-        ``DYNAMIC_BRAKE_PEAK_SPEED``.
+        Corner speed where the force reaches its maximum, m/s, in (0,
+        :data:`~raildyn.constants.MAXIMUM_SPEED`]; default ``DYNAMIC_BRAKE_PEAK_SPEED``.
     fade_speed : float, optional
         Corner speed above which the force falls at constant power, m/s
-        (>= ``peak_speed``); default ``DYNAMIC_BRAKE_FADE_SPEED``.
+        (>= ``peak_speed``, at most :data:`~raildyn.constants.MAXIMUM_SPEED`); default
+        ``DYNAMIC_BRAKE_FADE_SPEED``.
 
     Returns
     -------
@@ -122,9 +123,9 @@ def dynamic_brake_force(speed, level, max_force: float, peak_speed=None, fade_sp
     v = np.abs(_checks.plausible_array("speed", speed, "speed", signed=True, allow_empty=False))
     level = _checks.scalar("level", level, low=0.0, high=1.0)
     f = _checks.nonnegative("max_force", max_force)
-    peak = _checks.positive("peak_speed", DYNAMIC_BRAKE_PEAK_SPEED if peak_speed is None else peak_speed)
-    fade = _checks.scalar(
-        "fade_speed", DYNAMIC_BRAKE_FADE_SPEED if fade_speed is None else fade_speed, low=peak
+    peak = _checks.speed("peak_speed", DYNAMIC_BRAKE_PEAK_SPEED if peak_speed is None else peak_speed)
+    fade = _checks.speed(
+        "fade_speed", DYNAMIC_BRAKE_FADE_SPEED if fade_speed is None else fade_speed, low=peak, low_open=False
     )
     shape = np.minimum(v / peak, np.minimum(1.0, fade / np.maximum(v, 1e-12)))
     out = level * f * shape
