@@ -206,7 +206,7 @@ _AXLE_LOAD = (
 )
 
 #: Each physical quantity's plausible range, by name: its interval, unit and the reason with its
-#: sources. The checks of :mod:`raildyn` refuse a value outside it (``raildyn._checks.plausible``)
+#: sources. raildyn's checks refuse a value outside it (``raildyn._checks.plausible``)
 #: and each parameter's docstring states the range it is held to.
 PLAUSIBLE_RANGES = types.MappingProxyType(
     {
