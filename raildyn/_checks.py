@@ -28,10 +28,11 @@ def scalar(name: str, value, *, low=None, high=None, low_open=False, high_open=F
     ``low_open`` / ``high_open`` make the matching bound strict.
     """
     # The common case first and cheaply (this runs inside right-hand sides): a plain float or int.
+    # A bool is no number (True is not 1.0 m), and a complex number is not cast to its real part.
     if type(value) is not float and (
         isinstance(value, bool) or not isinstance(value, (numbers.Real, np.floating, np.integer))
     ):
-        if not (isinstance(value, np.ndarray) and value.ndim == 0):
+        if not (isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf"):
             raise TypeError(f"{name} must be a real number, got {value!r} of type {type(value).__name__}")
     x = float(value)
     if not math.isfinite(x):
@@ -94,12 +95,31 @@ def array(
 
 
 def _numbers(name: str, value, dtype=float) -> np.ndarray:
-    """``value`` as a numeric array; a string, None or an object refused by a TypeError naming ``name``."""
+    """``value`` as a numeric array of ``dtype``; a TypeError naming ``name`` refuses a string, None,
+    an object, booleans (True is no number: a flag passed where a number belongs) and, for a real
+    ``dtype``, complex values (cast to real they would lose their imaginary part without a word)."""
     if value is None or isinstance(value, (str, bytes)):
         raise TypeError(f"{name} must be a number or an array of numbers, got {value!r}")
+    want = np.dtype(dtype).kind
     try:
-        return np.asarray(value, dtype=dtype)
-    except (TypeError, ValueError):
+        raw = np.asarray(value)
+        kind = raw.dtype.kind
+        if kind == "b" and want != "b":
+            raise TypeError(f"{name} must hold numbers, not booleans, got {_show(raw)}")
+        if kind == "c" and want != "c":
+            raise TypeError(f"{name} must hold real numbers, got complex values: {_show(raw)}")
+        if kind == "O":  # a list of mixed objects: each converted on its own (a complex one refused)
+            if any(isinstance(v, (bool, np.bool_, complex, np.complexfloating)) for v in raw.flat):
+                raise TypeError(f"{name} must hold real numbers, got {value!r:.80}")
+        return raw if raw.dtype == dtype else raw.astype(dtype)
+    except TypeError as err:
+        if str(err).startswith(name):
+            raise
+        raise TypeError(
+            f"{name} must be a number or an array of numbers, got {value!r:.80} "
+            f"of type {type(value).__name__}"
+        ) from None
+    except ValueError:
         raise TypeError(
             f"{name} must be a number or an array of numbers, got {value!r:.80} "
             f"of type {type(value).__name__}"
@@ -230,16 +250,6 @@ def interval(name: str, value, *, unit: str = "", low: float = 0.0) -> tuple[flo
     return lo, hi
 
 
-def speeds(name: str, value) -> np.ndarray:
-    """A non-empty 1-D array of finite speeds, m/s, all > 0 (creep forces divide by V)."""
-    V = array(name, np.atleast_1d(value), ndim=1)
-    if V.size == 0:
-        raise ValueError(f"{name} must hold at least one speed, got an empty array")
-    if np.any(V <= 0):
-        raise ValueError(f"{name} must all be > 0 m/s (creep forces divide by V), got {V[V <= 0][0]!r}")
-    return V
-
-
 def tolerance(name: str, value, *, low: float = 1e-13, high: float = 1.0) -> float:
     """A solver tolerance, finite, in ``[low, high)``.
 
@@ -265,8 +275,24 @@ def flag(name: str, value) -> bool:
     return bool(value)
 
 
+def not_a_class(name: str, value, what: str = "a model"):
+    """Refuse a class passed where an instance of it belongs (``Wheelset`` for ``Wheelset()``).
+
+    Calling a method on the class would fail inside with "missing 1 required positional argument:
+    'self'", a message that names nothing the caller passed.
+    """
+    if isinstance(value, type):
+        raise TypeError(
+            f"{name} must be {what}, an instance such as {value.__name__}(), "
+            f"got the class {value.__name__} itself"
+        )
+    return value
+
+
 def instance(name: str, value, kind, what: str | None = None):
     """``value`` itself if it is an instance of ``kind`` (a class or a tuple of classes)."""
+    if isinstance(value, type):
+        not_a_class(name, value, f"a {what or getattr(kind, '__name__', 'model')}")
     if not isinstance(value, kind):
         if what is None:
             kinds = kind if isinstance(kind, tuple) else (kind,)
@@ -290,9 +316,9 @@ def returned(name: str, value, *, shape=None, low=None, at: str = "") -> np.ndar
     """
     where = f" at {at}" if at else ""
     try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must return numbers, returned {value!r:.80}{where}") from None
+        arr = _numbers(name, value)
+    except TypeError:
+        raise TypeError(f"{name} must return numbers (real ones), returned {value!r:.80}{where}") from None
     if shape is not None and arr.shape != tuple(shape):
         raise ValueError(
             f"{name} must return an array of shape {tuple(shape)}, returned shape {arr.shape}{where}"
@@ -307,14 +333,15 @@ def returned(name: str, value, *, shape=None, low=None, at: str = "") -> np.ndar
 _NUMERIC = ("float", "int", "complex", "ndarray", "np.floating")
 
 
-def fields(obj, *, skip=()) -> None:
+def fields(obj, *, skip=(), flags=()) -> None:
     """Check the numeric fields of a dataclass: finite numbers, or None where the type allows it.
 
     A field counts as numeric when its annotation names ``float``, ``int``, ``complex`` or
     ``ndarray``; a string, an object, a None it does not allow or an array where the
     annotation names no ``ndarray`` is refused by a TypeError, a NaN, an inf or an empty
-    array by a ValueError, each naming the field. For result dataclasses, whose
-    values raildyn computes: the check keeps a hand-built result honest and costs one pass.
+    array by a ValueError, each naming the field; booleans are refused except in the fields named
+    in ``flags`` (a mask: where a patch adheres). For result dataclasses, whose values raildyn
+    computes: the check keeps a hand-built result honest and costs one pass.
     """
     import dataclasses
 
@@ -329,7 +356,8 @@ def fields(obj, *, skip=()) -> None:
             raise TypeError(f"{f.name} must be a number or an array of numbers, got None")
         if isinstance(value, (bool, np.bool_)) and "bool" not in ann:
             raise TypeError(f"{f.name} must be a number, got {value!r}")
-        arr = _numbers(f.name, value, complex if "complex" in ann else float)
+        kind = bool if f.name in flags else complex if "complex" in ann else float
+        arr = _numbers(f.name, value, kind)
         if "ndarray" not in ann and arr.ndim:
             raise TypeError(f"{f.name} must be a single number, got {_show(value)}")
         if arr.size == 0:
@@ -340,6 +368,7 @@ def fields(obj, *, skip=()) -> None:
 
 def linear_model(name: str, value):
     """``value`` itself if it follows the linear model protocol (it has ``linear_system()``)."""
+    not_a_class(name, value, "a linear model")
     if not callable(getattr(value, "linear_system", None)):
         raise TypeError(
             f"{name} must be a linear model (an object with linear_system(), e.g. raildyn.wheelset."
@@ -368,7 +397,8 @@ def increasing(name: str, value, *, low=None, low_open: bool = False) -> np.ndar
 def strings(name: str, value, n=None, *, unique: bool = False) -> tuple:
     """A tuple or list of strings (not one string: its letters are no names), of length ``n`` when given.
 
-    For labels, coordinate names and input kinds; ``unique`` refuses a repeated name.
+    For labels, coordinate names and input kinds; ``unique`` (names that identify something)
+    refuses a repeated name and an empty or blank one.
     """
     if isinstance(value, str) or not isinstance(value, (tuple, list)):
         raise TypeError(f"{name} must be a tuple or list of strings, got {value!r:.80}")
@@ -378,6 +408,8 @@ def strings(name: str, value, n=None, *, unique: bool = False) -> tuple:
         raise ValueError(f"{name} must hold {n} strings, got {len(value)}: {value!r:.80}")
     if unique and len(set(value)) != len(value):
         raise ValueError(f"{name} must not repeat a name, got {value!r:.80}")
+    if unique and any(not s.strip() for s in value):
+        raise ValueError(f"{name} must not hold an empty name, got {value!r:.80}")
     return tuple(value)
 
 
@@ -395,3 +427,170 @@ def broadcast(**arrays) -> tuple:
             ) from None
         seen.append(name)
     return shape
+
+
+# --------------------------------------------------------------------------- plausible ranges
+
+
+def _hint(value: float, quantity: str) -> str:
+    """A likely slip behind an implausible value, for the message (empty if none fits)."""
+    from raildyn.constants import PLAUSIBLE_RANGES
+
+    r = PLAUSIBLE_RANGES[quantity]
+    x = abs(value)
+    # A slip multiplies by 3.6, 100 or 1000: a value just outside the range suggests none.
+    if r.unit == "m/s" and x > 1.2 * r.high and x / 3.6 in r:
+        return f": a speed in km/h? {x:g} km/h is {x / 3.6:.4g} m/s"
+    if r.unit == "m" and x > 10.0 * r.high and x / 1000.0 in r:
+        return f": a length in millimetres? {x:g} mm is {x / 1000.0:.4g} m"
+    if r.unit == "" and x > 10.0 * r.high and x / 100.0 in r:
+        return f": a percentage? {x:g} % is {x / 100.0:.4g}"
+    if r.unit == "kg" and x * 1000.0 in r:
+        return f": a mass in tonnes? {x:g} t is {x * 1000.0:.4g} kg"
+    return ""
+
+
+def _implausible(name, value, quantity, low, low_open, high, signed=False) -> str:
+    from raildyn.constants import PLAUSIBLE_RANGES
+
+    r = PLAUSIBLE_RANGES[quantity]
+    unit = f" {r.unit}" if r.unit else ""
+    where = f"±{high}" if signed else _interval(low, high, low_open, False)
+    hint = _hint(float(value), quantity) if np.isfinite(value) else ""
+    return (
+        f"{name} must be {'within ' if signed else 'in '}{where}{unit} (the plausible range of {r.what}: "
+        f"raildyn.constants.PLAUSIBLE_RANGES[{quantity!r}]), got {value!r}{hint}"
+    )
+
+
+def plausible(name: str, value, quantity: str, *, low=None, low_open=False, high=None, signed=False) -> float:
+    """A finite float in the plausible range of ``quantity`` (a key of
+    :data:`raildyn.constants.PLAUSIBLE_RANGES`): a unit slip (km/h for m/s, mm for m, a
+    percentage for a friction coefficient) is refused with a message that suggests it.
+
+    ``low`` replaces the range's lower bound (a function that accepts zero, or one that needs
+    more), ``low_open`` makes it strict; ``high`` lowers the upper bound (a model valid in part
+    of the range); ``signed`` accepts ``-high <= value <= high`` (a velocity that may run
+    backwards).
+    """
+    from raildyn.constants import PLAUSIBLE_RANGES
+
+    r = PLAUSIBLE_RANGES[quantity]
+    hi = r.high if high is None else min(high, r.high)
+    lo = -hi if signed else (r.low if low is None else low)
+    x = scalar(name, value)
+    if x < lo or (low_open and x == lo) or x > hi:
+        raise ValueError(_implausible(name, value, quantity, lo, low_open, hi, signed))
+    return x
+
+
+def plausible_array(
+    name: str, value, quantity: str, *, low=None, low_open=False, signed=False, **options
+) -> np.ndarray:
+    """:func:`array` (with its ``options``: ``ndim``, ``shape``, ``allow_empty``) whose every entry
+    is in the plausible range of ``quantity``, as :func:`plausible`."""
+    from raildyn.constants import PLAUSIBLE_RANGES
+
+    r = PLAUSIBLE_RANGES[quantity]
+    arr = array(name, value, **options)
+    if arr.size:
+        lo = -r.high if signed else (r.low if low is None else low)
+        bad = (arr < lo) | (arr > r.high) | ((arr == lo) if low_open else False)
+        if bad.any():
+            raise ValueError(_implausible(name, arr[bad].flat[0], quantity, lo, low_open, r.high, signed))
+    return arr
+
+
+def plausible_fields(obj, quantity: str, names, *, low=None, low_open=False) -> None:
+    """:func:`plausible` for each field of ``obj`` named in ``names`` (a dataclass's masses, say)."""
+    for name in names:
+        plausible(name, getattr(obj, name), quantity, low=low, low_open=low_open)
+
+
+def friction(name: str, value, *, low_open=True) -> float:
+    """A coefficient of friction μ in (0, 1] (``low_open=False``: [0, 1]); see
+    :data:`raildyn.constants.PLAUSIBLE_RANGES` ``"friction"`` (30 for 0.3 is a percentage)."""
+    return plausible(name, value, "friction", low=0.0, low_open=low_open)
+
+
+def speed(name: str, value, *, low=0.0, low_open=True, high=None, signed=False) -> float:
+    """A speed, m/s, in (0, :data:`raildyn.constants.MAXIMUM_SPEED`] (``low``, ``low_open``: the
+    lower bound; ``high``: a lower upper bound; ``signed``: within ±MAXIMUM_SPEED, for a train
+    that may back)."""
+    return plausible(name, value, "speed", low=low, low_open=low_open, high=high, signed=signed)
+
+
+def speeds(name: str, value, *, low=0.0, low_open=True) -> np.ndarray:
+    """A non-empty 1-D array of finite speeds, m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]
+    (creep forces divide by V; ``low``, ``low_open`` change the lower bound)."""
+    V = array(name, np.atleast_1d(value), ndim=1)
+    if V.size == 0:
+        raise ValueError(f"{name} must not be empty: give at least one speed, m/s")
+    return plausible_array(name, V, "speed", low=low, low_open=low_open)
+
+
+#: The most memory one grid of samples (time steps, grid points) may take, bytes: 1 GiB, far beyond any
+#: run the notebooks make (a few MB) and far below what a mistyped step asks for (a step of 1e-9 s over
+#: ten seconds: 1e10 samples, tens of GiB).
+MAX_BYTES = 2**30
+
+
+def samples(
+    name: str, value, span: float, step: float, *, per_sample: int = 1, limit: float = MAX_BYTES
+) -> int:
+    """The number of samples, ⌈span/step⌉ + 1, of a grid over ``span`` at ``step``, refused when their
+    ``per_sample`` floats (8 bytes each) would take more than ``limit`` bytes.
+
+    ``name`` and ``value`` are the caller's parameter that sets the step (a ``max_step``, a ``dt``);
+    the message says how many samples and how much memory it would need, before anything is allocated.
+    """
+    n = span / step + 1.0 if step > 0 else math.inf
+    need = n * max(per_sample, 1) * 8.0
+    if not need <= limit:
+        raise ValueError(
+            f"{name} = {value!r} would need {n:.3g} samples over a span of {span:g}, about {_bytes(need)} "
+            f"of memory (at most {_bytes(limit)}): take a larger {name} or a shorter span"
+        )
+    return int(math.ceil(span / step)) + 1
+
+
+def _bytes(n: float) -> str:
+    """A number of bytes in words (GiB, MiB or bytes)."""
+    for unit, size in (("GiB", 2**30), ("MiB", 2**20)):
+        if n >= size:
+            return f"{n / size:.3g} {unit}"
+    return f"{n:.3g} bytes"
+
+
+def speed_range(name: str, value) -> tuple[float, float]:
+    """A pair (low, high) of speeds, m/s, with 0 < low < high <= :data:`~raildyn.constants.MAXIMUM_SPEED`
+    (the bracket a critical speed is searched in)."""
+    r = array(name, value)
+    if r.shape != (2,):
+        raise ValueError(f"{name} must be (low, high) in m/s, got {value!r}")
+    low = speed(f"{name}[0]", float(r[0]))
+    high = speed(f"{name}[1]", float(r[1]), low=low)
+    return low, high
+
+
+#: The largest smoothing speed v_ε of a regularised friction law F tanh(v/v_ε), m/s: the law stands for
+#: the sign of v, so v_ε must be far below the sliding speeds it smooths (millimetres to centimetres a
+#: second); 1 m/s already blurs the stick-slip of any damper or wedge.
+MAX_SMOOTHING_SPEED = 1.0
+
+
+#: The smallest: below a micrometre a second the smooth law is as steep as the ideal one, and the time
+#: step it asks of an explicit scheme (about m v_ε/F) vanishes.
+MIN_SMOOTHING_SPEED = 1.0e-6
+
+
+def smoothing_speed(name: str, value) -> np.ndarray:
+    """A non-empty array of smoothing speeds v_ε of a friction law, m/s, each in [1e-6, 1]."""
+    arr = array(name, value, low=0.0, low_open=True, allow_empty=False)
+    bad = (arr < MIN_SMOOTHING_SPEED) | (arr > MAX_SMOOTHING_SPEED)
+    if bad.any():
+        raise ValueError(
+            f"{name} must be in [{MIN_SMOOTHING_SPEED:g}, {MAX_SMOOTHING_SPEED:g}] m/s (v_ε smooths the "
+            f"sign of a sliding velocity, far below it), got {arr[bad].flat[0]!r}"
+        )
+    return arr

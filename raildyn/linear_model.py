@@ -65,9 +65,9 @@ class SystemMatrices:
     GK, GC : ndarray, (n, q)
         Forces per unit track input and per unit input rate, N/m and N·s/m (either sign).
     labels : tuple of str
-        Name of each coordinate.
+        Name of each coordinate, each one different and not empty.
     speed : float
-        V, m/s.
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     """
 
     M: np.ndarray
@@ -85,8 +85,8 @@ class SystemMatrices:
             _checks.array(name, getattr(self, name), shape=(n, n))
         q = _checks.array("GK", self.GK, shape=(n, None)).shape[1]
         _checks.array("GC", self.GC, shape=(n, q))
-        _checks.strings("labels", self.labels, n)
-        _checks.positive("speed", self.speed)
+        _checks.strings("labels", self.labels, n, unique=True)
+        _checks.speed("speed", self.speed)
 
     def state_matrix(self) -> np.ndarray:
         """A = [[0, I], [−M⁻¹K, −M⁻¹C]], shape (2n, 2n), 1/s² and 1/s blocks.
@@ -327,13 +327,14 @@ class LinearSystem:
         Parameters
         ----------
         speed : float
-            V, m/s (> 0: the creep damping divides by it).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] (> 0: the creep damping
+            divides by it; a speed above 200 m/s is a slip, e.g. km/h typed for m/s).
 
         Returns
         -------
         SystemMatrices
         """
-        V = _checks.positive("speed", speed)
+        V = _checks.speed("speed", speed)
         return SystemMatrices(self.M, self.C0 + self.C1 / V, self.K, self.GK, self.GC, self.labels, V)
 
     def state_matrices(self, speeds) -> np.ndarray:
@@ -342,7 +343,7 @@ class LinearSystem:
         Parameters
         ----------
         speeds : array_like, (m,)
-            m/s, each > 0; at least one.
+            m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]; at least one.
 
         Returns
         -------
@@ -396,7 +397,7 @@ class LinearSystem:
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         outputs : sequence, optional
             Output specifications as for :meth:`output_vector` (a list or tuple of them, at
             least one); None: every coordinate.
@@ -480,7 +481,7 @@ class LinearSystem:
             rad/s, at least one, each in [0, 1e7]: far above any mode of a vehicle, and low
             enough that ω²M cannot overflow.
         speed : float
-            V, m/s (> 0: the creep damping depends on it).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] (the creep damping depends on it).
         output : see :meth:`output_vector`
         derivative : {0, 1, 2}
             Output in m, m/s or m/s².
@@ -535,7 +536,7 @@ class LinearModel(Protocol):
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
 
         Returns
         -------
@@ -549,7 +550,7 @@ class LinearModel(Protocol):
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         outputs : sequence, optional
             Output specifications (coordinate labels by default).
         derivative : {0, 1, 2}
@@ -599,7 +600,7 @@ class LinearModelBase:
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
 
         Returns
         -------
@@ -613,7 +614,7 @@ class LinearModelBase:
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         outputs : sequence, optional
             Output specifications (coordinate labels by default).
         derivative : {0, 1, 2}
@@ -658,6 +659,7 @@ def as_linear_system(model) -> LinearSystem:
     """
     if isinstance(model, LinearSystem):
         return model
+    _checks.not_a_class("model", model, "a linear model")
     if isinstance(model, LinearModel):
         system = model.linear_system()
         if isinstance(system, LinearSystem):
@@ -739,7 +741,7 @@ class Assembler:
     Parameters
     ----------
     labels : sequence of str
-        Names of the coordinates (at least one, each once).
+        Names of the coordinates (at least one, each once, none empty).
     n_inputs : int
         Number of track inputs q, in [0, 10 000] (one per wheel of a long train is far fewer).
 
@@ -863,13 +865,13 @@ class Assembler:
         Parameters
         ----------
         labels : sequence of str
-            The coordinates of the block's rows and columns.
+            The coordinates of the block's rows and columns, each once.
         C1, K : array_like, (k, k), optional
             Finite, of either sign (creep and gravity terms).
         """
         rows = [
             self.labels.index(_checks.choice("labels", s, self.labels))
-            for s in _checks.strings("labels", labels)
+            for s in _checks.strings("labels", labels, unique=True)
         ]
         k = len(rows)
         C1 = None if C1 is None else _checks.array("C1", C1, shape=(k, k))

@@ -680,7 +680,8 @@ def _band_mask(band, w: np.ndarray, dt: float) -> np.ndarray:
         return np.ones(w.shape, dtype=bool)
     nyquist = np.pi / dt
     try:
-        lo, hi = (float(b) for b in band)
+        pair = _checks._numbers("band", band)
+        lo, hi = (float(b) for b in pair)
     except (TypeError, ValueError):
         raise ValueError(f"band must be a pair (omega_lo, omega_hi) in rad/s, got {band!r}") from None
     if not (np.isfinite(lo) and np.isfinite(hi) and 0.0 <= lo < hi <= nyquist):

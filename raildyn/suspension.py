@@ -52,6 +52,23 @@ def _field(name: str, value, *, low=None, low_open=False) -> np.ndarray:
     return _checks.array(name, value, low=low, low_open=low_open, allow_empty=False)
 
 
+def _force(law, **inputs) -> np.ndarray:
+    """The force ``law()`` computes from the checked ``inputs``, refused if it overflows.
+
+    Finite inputs of absurd size (a deflection of 1e300 m against a stiffness of 1e6 N/m) give a
+    force beyond double precision: a ValueError names the inputs, never a silent inf or NaN.
+    """
+    with np.errstate(over="ignore", invalid="ignore"):
+        force = np.asarray(law())
+    if not np.isfinite(force).all():
+        names = ", ".join(inputs)
+        largest = ", ".join(f"{k} = {np.abs(v).max():.3g}" for k, v in inputs.items())
+        raise ValueError(
+            f"the force overflows: {names} are too large together for double precision ({largest})"
+        )
+    return force
+
+
 def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
     """Linear spring: F = k u + F₀ (N).
 
@@ -78,7 +95,7 @@ def spring_force(deflection, stiffness, preload=0.0) -> np.ndarray:
     k = _field("stiffness", stiffness, low=0.0)
     f0 = _field("preload", preload)
     _checks.broadcast(deflection=d, stiffness=k, preload=f0)
-    return np.asarray(k * d + f0)
+    return _force(lambda: k * d + f0, deflection=d, stiffness=k, preload=f0)
 
 
 def damper_force(velocity, damping) -> np.ndarray:
@@ -104,7 +121,7 @@ def damper_force(velocity, damping) -> np.ndarray:
     v = _field("velocity", velocity)
     c = _field("damping", damping, low=0.0)
     _checks.broadcast(velocity=v, damping=c)
-    return np.asarray(c * v)
+    return _force(lambda: c * v, velocity=v, damping=c)
 
 
 def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.ndarray:
@@ -117,7 +134,8 @@ def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.nda
     friction_force : array_like
         F_f >= 0, N (μN for a friction wedge under normal load N).
     velocity_scale : float or array_like, optional
-        v_ε > 0, m/s. Without it the ideal law is returned (F = 0 at v = 0
+        v_ε, m/s, in [1e-6, 1] (a smoothing of the sign of v, far below the sliding speeds). Without it the
+        ideal law is returned (F = 0 at v = 0
         exactly); with it, the smooth law, whose error is bounded by
         :func:`friction_error_bound`.
 
@@ -138,7 +156,7 @@ def coulomb_friction(velocity, friction_force, *, velocity_scale=None) -> np.nda
     if velocity_scale is None:
         _checks.broadcast(velocity=v, friction_force=f)
         return np.asarray(f * np.sign(v))
-    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _checks.smoothing_speed("velocity_scale", velocity_scale)
     _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     return np.asarray(f * np.tanh(v / eps))
 
@@ -158,7 +176,7 @@ def coulomb_friction_slope(velocity, friction_force, *, velocity_scale) -> np.nd
     friction_force : array_like
         F_f >= 0, N.
     velocity_scale : float or array_like
-        v_ε > 0, m/s.
+        v_ε, m/s, in [1e-6, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Returns
     -------
@@ -172,7 +190,7 @@ def coulomb_friction_slope(velocity, friction_force, *, velocity_scale) -> np.nd
     """
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
-    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _checks.smoothing_speed("velocity_scale", velocity_scale)
     _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     # sech² u = 4e^{−2|u|}/(1 + e^{−2|u|})²: no overflow however large |u|.
     decay = np.exp(-2.0 * np.abs(v / eps))
@@ -192,7 +210,7 @@ def friction_error_bound(velocity, friction_force, velocity_scale) -> np.ndarray
     friction_force : array_like
         F_f >= 0, N.
     velocity_scale : float or array_like
-        v_ε > 0, m/s.
+        v_ε, m/s, in [1e-6, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Returns
     -------
@@ -206,7 +224,7 @@ def friction_error_bound(velocity, friction_force, velocity_scale) -> np.ndarray
     """
     v = _field("velocity", velocity)
     f = _field("friction_force", friction_force, low=0.0)
-    eps = _field("velocity_scale", velocity_scale, low=0.0, low_open=True)
+    eps = _checks.smoothing_speed("velocity_scale", velocity_scale)
     _checks.broadcast(velocity=v, friction_force=f, velocity_scale=eps)
     return np.asarray(2.0 * f * np.exp(-2.0 * np.abs(v) / eps))
 
@@ -239,7 +257,7 @@ def friction_amplitude_loss(friction_force, stiffness) -> np.ndarray:
     f = _field("friction_force", friction_force, low=0.0)
     k = _field("stiffness", stiffness, low=0.0, low_open=True)
     _checks.broadcast(friction_force=f, stiffness=k)
-    return np.asarray(4.0 * f / k)
+    return _force(lambda: 4.0 * f / k, friction_force=f, stiffness=k)
 
 
 def clearance_force(deflection, clearance, stop_stiffness, stiffness=0.0) -> np.ndarray:
@@ -276,7 +294,13 @@ def clearance_force(deflection, clearance, stop_stiffness, stiffness=0.0) -> np.
     ks = _field("stop_stiffness", stop_stiffness, low=0.0)
     k = _field("stiffness", stiffness, low=0.0)
     _checks.broadcast(deflection=d, clearance=g, stop_stiffness=ks, stiffness=k)
-    return np.asarray(k * d + ks * np.maximum(np.abs(d) - g, 0.0) * np.sign(d))
+    return _force(
+        lambda: k * d + ks * np.maximum(np.abs(d) - g, 0.0) * np.sign(d),
+        deflection=d,
+        clearance=g,
+        stop_stiffness=ks,
+        stiffness=k,
+    )
 
 
 @dataclass(frozen=True)
@@ -294,7 +318,7 @@ class FrictionDamper:
     friction_force : float or array_like, shape (n,)
         F_f >= 0, N: one for every coordinate, or one value for all.
     velocity_scale : float or array_like, shape (n,)
-        v_ε > 0, m/s.
+        v_ε, m/s, in [1e-6, 1] (a smoothing of the sign of v, far below the sliding speeds).
 
     Examples
     --------
@@ -310,7 +334,7 @@ class FrictionDamper:
 
     def __post_init__(self):
         f = _field("friction_force", self.friction_force, low=0.0)
-        eps = _field("velocity_scale", self.velocity_scale, low=0.0, low_open=True)
+        eps = _checks.smoothing_speed("velocity_scale", self.velocity_scale)
         for name, value in (("friction_force", f), ("velocity_scale", eps)):
             if value.ndim > 1:
                 raise ValueError(f"{name} must be a number or a vector (n,), got shape {value.shape}")

@@ -77,11 +77,13 @@ def kinematic_wavelength(rolling_radius, half_gauge, conicity) -> float:
     Parameters
     ----------
     rolling_radius : float
-        Centred rolling radius r₀, m (> 0).
+        Centred rolling radius r₀, m, in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "wheel_radius").
     half_gauge : float
-        Half the lateral distance between the two contact points a, m (> 0).
+        Half the lateral distance between the two contact points a, m, in [0.15, 1.1]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "half_gauge").
     conicity : float
-        Equivalent conicity λ (> 0), dimensionless.
+        Equivalent conicity λ, dimensionless, in (0, 0.5] (real wheels run below about 0.5).
 
     Returns
     -------
@@ -93,10 +95,16 @@ def kinematic_wavelength(rolling_radius, half_gauge, conicity) -> float:
     >>> round(kinematic_wavelength(0.46, 0.75, 0.05), 3)
     16.505
     """
-    r0 = positive("rolling_radius", rolling_radius)
-    a = positive("half_gauge", half_gauge)
-    lam = positive("conicity", conicity)
+    r0, a, lam = _coned_wheelset(rolling_radius, half_gauge, conicity)
     return float(2.0 * np.pi * np.sqrt(r0 * a / lam))
+
+
+def _coned_wheelset(rolling_radius, half_gauge, conicity) -> tuple[float, float, float]:
+    """The checked r₀, a and λ > 0 of the kinematic formulas, each in its plausible range."""
+    r0 = _checks.plausible("rolling_radius", rolling_radius, "wheel_radius")
+    a = _checks.plausible("half_gauge", half_gauge, "half_gauge")
+    lam = scalar("conicity", conicity, low=0.0, low_open=True, high=_MAX_ANGLE)
+    return r0, a, lam
 
 
 def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase) -> float:
@@ -111,7 +119,8 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
     rolling_radius, half_gauge, conicity : float
         r₀ (m), a (m) and λ, as for :func:`kinematic_wavelength`.
     semi_wheelbase : float
-        b, half the distance between the two axles, m (> 0).
+        b, half the distance between the two axles, m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
 
     Returns
     -------
@@ -123,8 +132,8 @@ def rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, semi_wheelbase)
     >>> round(rigid_bogie_wavelength(0.46, 0.75, 0.05, 1.28), 3)
     32.647
     """
-    b = positive("semi_wheelbase", semi_wheelbase)
-    a = positive("half_gauge", half_gauge)
+    b = _checks.plausible("semi_wheelbase", semi_wheelbase, "vehicle_length")
+    a = _checks.plausible("half_gauge", half_gauge, "half_gauge")
     # √(1 + (b/a)²) as a hypotenuse, which stays finite for any finite b/a
     return kinematic_wavelength(rolling_radius, half_gauge, conicity) * float(np.hypot(1.0, b / a))
 
@@ -273,18 +282,24 @@ class Wheelset(LinearModelBase):
     Attributes
     ----------
     mass : float
-        m, kg (> 0).
+        m, kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass").
     yaw_inertia : float
-        I_z, kg·m² (> 0).
+        I_z, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia").
     rolling_radius : float
-        r₀, m (> 0).
+        r₀, m, in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_radius": from the smallest
+        wheels of low-floor
+        wagons to the largest steam drivers; 460 would be millimetres).
     half_gauge : float
-        a, half the distance between the contact points, m (> 0).
+        a, half the distance between the contact points, m, in [0.15, 1.1]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "half_gauge": from minimum gauge to the broadest; 750 would be millimetres).
     conicity : float
         λ, in [0, 0.5]: Δr = r_L − r_R = 2λy for small y. Real wheels run below about
         0.5, and the contact angle and ε, which follow λ by default, are small angles.
     axle_load : float
-        W, total vertical load on the two wheels, N (> 0: the creep forces saturate at μW/2).
+        W, total vertical load on the two wheels, N, in [1, 2e6]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "axle_load"; > 0: the
+        creep forces saturate at μW/2).
     f11, f22, f23, f33 : float
         Kalker's longitudinal (N), lateral (N), lateral–spin (N·m) and spin
         (N·m²) creep coefficients of one wheel, each ≥ 0.
@@ -321,6 +336,14 @@ class Wheelset(LinearModelBase):
     def __post_init__(self):
         for name in ("mass", "yaw_inertia", "rolling_radius", "half_gauge", "axle_load"):
             positive(name, getattr(self, name))
+        for name, quantity in (
+            ("mass", "mass"),
+            ("yaw_inertia", "inertia"),
+            ("rolling_radius", "wheel_radius"),
+            ("half_gauge", "half_gauge"),
+            ("axle_load", "axle_load"),
+        ):
+            _checks.plausible(name, getattr(self, name), quantity)
         # Checked before the contact angle and ε that follow it, so that a message names it.
         scalar("conicity", self.conicity, low=0.0, high=_MAX_ANGLE)
         for name in (
@@ -400,7 +423,7 @@ class Wheelset(LinearModelBase):
 
 
 def _speed(speed) -> float:
-    return scalar("speed", speed, low=0.0, low_open=True)
+    return _checks.speed("speed", speed)
 
 
 @dataclass(frozen=True)
@@ -492,7 +515,8 @@ def add_wheelset(asm: Assembler, y: str, psi: str, ws: Wheelset, *, alignment=No
     ----------
     asm : Assembler
     y, psi : str
-        Labels of the wheelset's lateral (m) and yaw (rad) coordinates in ``asm``.
+        Labels of the wheelset's lateral (m) and yaw (rad) coordinates in ``asm``: two different
+        coordinates, neither already a wheelset's.
     ws : Wheelset
     alignment, cross_level : int, optional
         Indices of the track inputs (in [0, q − 1]) that carry the alignment and the
@@ -502,6 +526,13 @@ def add_wheelset(asm: Assembler, y: str, psi: str, ws: Wheelset, *, alignment=No
     _checks.instance("asm", asm, Assembler)
     iy = asm.labels.index(_checks.choice("y", y, asm.labels))
     ipsi = asm.labels.index(_checks.choice("psi", psi, asm.labels))
+    if ipsi == iy:
+        raise ValueError(
+            f"psi must be another coordinate than y (the yaw, not the lateral motion), got {psi!r}"
+        )
+    for name, label, i in (("y", y, iy), ("psi", psi, ipsi)):
+        if any(i in (jy, jpsi) for jy, jpsi, _ in asm.wheelsets):
+            raise ValueError(f"{name} = {label!r} is already a wheelset's coordinate in asm (added twice?)")
     terms = creep_terms(_checks.instance("ws", ws, Wheelset))
     inputs = {}
     for name, j in (("alignment", alignment), ("cross_level", cross_level)):
@@ -566,7 +597,7 @@ def pure_rolling_offset(rolling_radius, half_gauge, conicity, radius) -> float:
     Parameters
     ----------
     rolling_radius, half_gauge, conicity : float
-        r₀ (m), a (m) and λ, as for :func:`kinematic_wavelength` (each > 0).
+        r₀ (m), a (m) and λ, as for :func:`kinematic_wavelength` (each in its range there).
     radius : float
         R, radius of the curve, m (> 0).
 
@@ -582,9 +613,7 @@ def pure_rolling_offset(rolling_radius, half_gauge, conicity, radius) -> float:
     >>> round(1e3 * pure_rolling_offset(0.46, 0.75, 0.15, 600.0), 2)
     3.83
     """
-    r0 = positive("rolling_radius", rolling_radius)
-    a = positive("half_gauge", half_gauge)
-    lam = positive("conicity", conicity)
+    r0, a, lam = _coned_wheelset(rolling_radius, half_gauge, conicity)
     return float(r0 * a / (lam * positive("radius", radius)))
 
 
@@ -650,7 +679,8 @@ def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
     ----------
     ws : Wheelset
     radius : float
-        R, m (> 0; the curve turns to the left, +y).
+        R, m, at least 50 (:data:`raildyn.curving.geometry.MINIMUM_RADIUS`; the curve turns to
+        the left, +y).
     position : float
         x, the wheelset's distance ahead of the axes' origin, m, in [−100, 100] (negative
         behind): the axes follow one vehicle, and x/R must stay a small angle.
@@ -670,7 +700,7 @@ def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
     True
     """
     terms = creep_terms(_checks.instance("ws", ws, Wheelset))
-    R = positive("radius", radius)
+    R = scalar("radius", radius, low=_MIN_RADIUS)
     x = scalar("position", position, low=-_MAX_POSITION, high=_MAX_POSITION)
     track = np.array(track_on_arc(x, 1.0 / R))
     return (terms.K_creep + terms.K_gravity) @ track - terms.C1[:, 1] / R
@@ -694,7 +724,9 @@ class WheelRailContact:
     Attributes
     ----------
     friction : float
-        Coefficient of friction μ (> 0); the creep force of a wheel saturates at μ W/2.
+        Coefficient of friction μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction": dry
+        rail steel reaches about
+        0.6; 30 would be a percentage); the creep force of a wheel saturates at μ W/2.
     flange_clearance : float
         Flangeway clearance e, m, in (0, 0.05]: the flange touches the rail beyond
         |y| = e (5 to 15 mm on standard-gauge track).
@@ -726,7 +758,7 @@ class WheelRailContact:
     tread_angles: Callable | None = None
 
     def __post_init__(self):
-        positive("friction", self.friction)
+        _checks.friction("friction", self.friction)
         scalar("flange_clearance", self.flange_clearance, low=0.0, low_open=True, high=0.05)
         nonnegative("flange_stiffness", self.flange_stiffness)
         y = np.array([-1.0, 0.0, 1.0]) * self.flange_clearance
@@ -881,7 +913,8 @@ def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot
         Lateral displacement (m), yaw (rad) and their rates (m/s, rad/s): finite, of
         either sign, shapes that broadcast together.
     speed : float or ndarray
-        V, m/s (each > 0: the creepages divide by it), of a shape that broadcasts with the motion.
+        V, m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] (the creepages divide by
+        it), of a shape that broadcasts with the motion.
 
     Returns
     -------
@@ -899,7 +932,7 @@ def _motion(ws, contact, y, psi, ydot, psidot, speed) -> list:
     _checks.instance("contact", contact, WheelRailContact)
     names = (*_MOTION, "speed")
     motion = [_checks.array(name, v) for name, v in zip(_MOTION, (y, psi, ydot, psidot), strict=True)]
-    motion.append(_checks.array("speed", speed, low=0.0, low_open=True))
+    motion.append(_checks.plausible_array("speed", speed, "speed", low_open=True))
     _checks.broadcast(**dict(zip(names, motion, strict=True)))
     return list(np.broadcast_arrays(*motion))
 
@@ -1106,7 +1139,7 @@ class NonlinearWheelset:
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
 
         Returns
         -------
@@ -1226,7 +1259,7 @@ class NonlinearLateral:
         With at least one wheelset on the rails.
     contact : WheelRailContact
     speed : float
-        V, m/s (> 0).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     elements : tuple of SuspensionElement
         Nonlinear suspension elements, each naming coordinates of ``system``; empty by default.
     curve : raildyn.curving.geometry.Curve or None
@@ -1329,7 +1362,7 @@ class NonlinearLateral:
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
 
         Returns
         -------
@@ -1420,7 +1453,7 @@ class NonlinearLateral:
         q : ndarray, (n,) or (n, k)
             Coordinates, finite; one column per state of the batch.
         speed : float or array_like, (k,)
-            V, m/s, each > 0.
+            V, m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         curvature : float or array_like, (k,)
             κ = 1/R, 1/m, finite (positive: turning left).
         unbalanced_acceleration : float or array_like, (k,)
@@ -1440,7 +1473,7 @@ class NonlinearLateral:
         if not 1 <= q.ndim <= 2 or q.shape[0] != n:
             raise ValueError(f"q must have shape ({n},) or ({n}, k), got shape {q.shape}")
         batch = () if q.ndim == 1 else (q.shape[1],)
-        V = _checks.array("speed", speed, low=0.0, low_open=True)
+        V = _checks.plausible_array("speed", speed, "speed", low_open=True)
         kappa = _checks.array("curvature", curvature)
         a_q = _checks.array("unbalanced_acceleration", unbalanced_acceleration)
         for name, value in (("speed", V), ("curvature", kappa), ("unbalanced_acceleration", a_q)):

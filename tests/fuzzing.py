@@ -17,13 +17,24 @@ argument of that call at a time to a bad value and sorts what happens:
   not name the parameter).
 
 The bad values follow the kind of the valid one (see :func:`mutations`): for a number
-NaN, ±inf, 0, a negative, 1e300, a string, None and a list; for an integer also a
-fraction and 10**12; for an array a NaN or inf entry, zeros, negatives, 1e300, an empty
-array, an extra axis, a string and None; for a name an unknown name, a number and None;
-for a flag a string and None; for a model or other object a number, a string and None;
-for a callback a non-callable, and a callback whose values are NaN, negative or of the
-wrong shape; for a parameter left at None a string. Every callable also meets an unknown
-keyword. Parameters in :data:`FREE` (text that labels a plot) take anything.
+NaN, ±inf, 0, a negative, 1e300, a string, None and a list, and the slips of a careless
+user: a complex number, a bool, the number ×1000 (millimetres typed for metres), an absurd
+size 1e9 and a vanishing 1e-300; for a speed (a parameter whose name says so) also the
+speed typed in km/h (see :func:`kmh`); for an integer NaN, 0, a negative, 10**12, a
+fraction, a complex number, a bool, a string, None and a list; for an array a NaN or inf
+first entry, a NaN entry in the middle and as the last entry, zeros, negatives, 1e300, an
+empty array, an extra axis, complex entries, booleans, a string and None; for a name an
+unknown name, a number and None; for a flag a string and None; for a model or other object
+a number, a string, None and its class (``Wheelset`` for ``Wheelset()``); for a callback a
+non-callable, and a callback whose values are NaN, negative or of the wrong shape; for a
+parameter left at None a string. Every callable
+also meets an unknown keyword. Parameters in :data:`FREE` (text that labels a plot) take
+anything. A parameter that may be zero may also be 1e-300 (``tiny`` is valid wherever
+``zero`` is declared valid).
+
+``python tests/test_fuzz.py`` prints, for the whole package, the share of the bad calls
+(every changed call not declared valid) that are refused clearly: a ValueError or
+TypeError naming the parameter, or the SolverError of the failure policy.
 """
 
 from __future__ import annotations
@@ -56,13 +67,18 @@ VALID_LIMIT = 60.0
 FREE = frozenset({"label", "title", "name", "caption", "color", "description_text"})
 
 #: Changes that stay inside the number domain: a SolverError there is the failure policy at work.
-DOMAIN = frozenset({"zero", "negative", "huge"})
+DOMAIN = frozenset({"zero", "negative", "huge", "big", "tiny", "mm"})
 
 #: Every change the test makes, by name (the keys of ``accepts`` in an entry).
 CHANGES = (
     "nan", "inf", "-inf", "zero", "negative", "huge", "fraction", "list", "empty", "shape",
     "string", "none", "type", "unknown", "returns-nan", "returns-negative", "returns-shape",
+    "complex", "bool", "nan-middle", "nan-last", "mm", "kmh", "big", "tiny", "class",
 )  # fmt: skip
+
+#: The highest speed the package accepts, m/s (``raildyn.constants.MAXIMUM_SPEED``, written here
+#: so that the mutations do not depend on the code under test).
+MAXIMUM_SPEED = 200.0
 
 OUTCOMES = ("refused", "accepted", "solver", "hang", "non-finite", "nonsense", "obscure")
 FAILURES = ("hang", "non-finite", "nonsense", "obscure")
@@ -217,45 +233,94 @@ def _returns(fn, change):
     return changed
 
 
-def mutations(value) -> dict[str, object]:
-    """The bad values for a parameter whose valid value is ``value``, by change name."""
+def is_speed(param: str) -> bool:
+    """Whether a parameter holds a speed in m/s, by its name (``speed``, ``speeds``,
+    ``initial_speed``, ``speed_range``...; not ``speed_kmh``, which is in km/h)."""
+    return "speed" in param and "kmh" not in param
+
+
+def kmh(value):
+    """A speed typed in km/h for m/s: the valid value ×3.6; where that would still be a
+    plausible speed (≤ :data:`MAXIMUM_SPEED`, a slip no check can tell from a real speed), the
+    plain 300 that a student types for a 300 km/h train (for an array, scaled so that its
+    largest entry is 300)."""
+    if isinstance(value, (np.ndarray, list, tuple)):
+        arr = np.asarray(value, dtype=float)
+        top = np.abs(arr).max()
+        if top == 0:
+            return np.full_like(arr, 300.0)
+        return 3.6 * arr if 3.6 * top > MAXIMUM_SPEED else arr * (300.0 / top)
+    v = abs(float(value))
+    return 3.6 * v if 3.6 * v > MAXIMUM_SPEED else 300.0
+
+
+def _at(arr: np.ndarray, index: int, bad) -> np.ndarray:
+    """A copy of ``arr`` with its flat entry ``index`` set to ``bad``."""
+    out = arr.copy()
+    out.flat[index] = bad
+    return out
+
+
+def mutations(value, param: str = "") -> dict[str, object]:
+    """The bad values for a parameter ``param`` whose valid value is ``value``, by change name."""
     if value is None:
         return {"string": "abc"}
     if isinstance(value, (bool, np.bool_)):
         return {"string": "yes", "none": None}
-    if _is_integer(value):
+    speed = is_speed(param)
+    if _is_integer(value) and not speed:
         return {
             "nan": math.nan, "zero": 0, "negative": -abs(int(value)) - 1, "huge": 10**12,
             "fraction": int(value) + 0.5, "string": "abc", "none": None, "list": [value, value],
+            "complex": complex(int(value), 1), "bool": True,
         }  # fmt: skip
     if _is_number(value):
         v = float(value)
-        return {
+        changes = {
             "nan": math.nan, "inf": math.inf, "-inf": -math.inf, "zero": 0.0,
             "negative": -abs(v) if v else -1.0, "huge": 1e300, "string": "abc", "none": None,
-            "list": [v, v],
+            "list": [v, v], "complex": complex(v, 1.0), "bool": True, "big": 1e9, "tiny": 1e-300,
         }  # fmt: skip
+        if v:
+            changes["mm"] = 1000.0 * v
+        if speed:
+            changes["kmh"] = kmh(v)
+        return changes
     if isinstance(value, str):
         return {"unknown": "no-such-name", "type": 1.0, "none": None}
     if _is_numeric_array(value):
         arr = np.array(value)
-        arr = arr.astype(complex if arr.dtype.kind == "c" else float)
+        real = arr.dtype.kind != "c"
+        arr = arr.astype(float if real else complex)
         first = np.zeros(arr.size, dtype=bool)
         first[0] = True
         first = first.reshape(arr.shape)
-        return {
+        changes = {
             "nan": np.where(first, np.nan, arr), "inf": np.where(first, np.inf, arr),
             "zero": np.zeros_like(arr), "negative": -np.abs(arr) - (arr == 0),
             "huge": np.where(first, 1e300, arr), "empty": np.empty((0,) + arr.shape[1:]),
             "shape": np.stack([arr, arr]), "string": "abc", "none": None,
         }  # fmt: skip
+        if arr.size > 2:
+            changes["nan-middle"] = _at(arr, arr.size // 2, np.nan)
+        if arr.size > 1:
+            changes["nan-last"] = _at(arr, arr.size - 1, np.nan)
+        if real:
+            changes["complex"] = arr + 1j
+            changes["bool"] = np.ones(arr.shape, dtype=bool)
+        if speed:
+            changes["kmh"] = kmh(arr)
+        return changes
     if inspect.isfunction(value) or inspect.ismethod(value) or isinstance(value, np.ufunc):
         return {
             "type": 1.0, "returns-nan": _returns(value, "returns-nan"),
             "returns-negative": _returns(value, "returns-negative"),
             "returns-shape": _returns(value, "returns-shape"),
         }  # fmt: skip
-    return {"type": 1.0, "string": "abc", "none": None}
+    changes = {"type": 1.0, "string": "abc", "none": None}
+    if not isinstance(value, type) and type(value).__module__ != "builtins":
+        changes["class"] = type(value)  # the class where an instance of it belongs: Wheelset for Wheelset()
+    return changes
 
 
 # --------------------------------------------------------------------------- running and sorting
@@ -348,10 +413,19 @@ class Outcome:
         return f"{self.target}({self.param}: {self.change}) → {self.kind}: {self.detail}"
 
 
+def declared(entry: Entry, param: str) -> set[str]:
+    """The changes declared valid for ``param`` (``tiny`` wherever ``zero`` is: a value that may
+    vanish may be vanishingly small)."""
+    valid = set((entry.accepts.get(param, "") + " " + entry.accepts.get("*", "")).split())
+    if "zero" in valid:
+        valid.add("tiny")
+    return valid
+
+
 def _sort(entry: Entry, param: str, change: str, run: Callable[[], object]) -> Outcome:
     import matplotlib.pyplot as plt
 
-    accepted = change in (entry.accepts.get(param, "") + " " + entry.accepts.get("*", "")).split()
+    accepted = change in declared(entry, param)
     try:
         result = run()
     except Hang:
@@ -374,6 +448,13 @@ def _sort(entry: Entry, param: str, change: str, run: Callable[[], object]) -> O
         # 1e300 may be answered by a formulation that stays finite (issue 15, item 5).
         return Outcome(entry.target, param, change, "accepted", "a finite result")
     return Outcome(entry.target, param, change, "nonsense", f"returned {type(result).__name__}, not refused")
+
+
+def share_refused(counts) -> float:
+    """The share of bad calls refused clearly: refused (or the solver's failure policy) over every
+    changed call that is not declared valid (outcome ``accepted``); 1.0 when there is none."""
+    bad = sum(counts[k] for k in OUTCOMES) - counts["accepted"]
+    return (counts["refused"] + counts["solver"]) / bad if bad else 1.0
 
 
 def valid_result(entry: Entry):
@@ -400,7 +481,7 @@ def run(entry: Entry) -> list[Outcome]:
             continue
         if kind == inspect.Parameter.VAR_KEYWORD:
             continue
-        for change, bad in mutations(value).items():
+        for change, bad in mutations(value, param).items():
 
             def changed(param=param, bad=bad):
                 c = entry.make()

@@ -113,7 +113,7 @@ def test_wheel_on_rail_ellipse_is_long_in_the_rolling_direction():
     assert flipped.a < flipped.b
 
 
-@given(st.floats(1e3, 3e5), st.floats(1.5, 10.0))
+@given(st.floats(1e3, 1e5), st.floats(1.5, 10.0))  # both loads within the plausible 1 N to 1 MN
 @PROPERTY
 def test_semi_axes_grow_as_the_cube_root_of_the_load(load, factor):
     c1 = hertz_contact(load, 0.46, 0.5, 0.3)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 import sympy
-from derivation_helpers import assert_derived, system_matrices
+from derivation_helpers import FACTOR_RANGES, assert_derived, system_matrices
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -43,7 +43,8 @@ BODY = {
 
 
 def _factors(names, low=0.3, high=3.0):
-    return st.fixed_dictionaries({n: st.floats(low, high) for n in names})
+    # narrower where a parameter would leave its plausible range (derivation_helpers.FACTOR_RANGES)
+    return st.fixed_dictionaries({n: st.floats(*FACTOR_RANGES.get(n, (low, high))) for n in names})
 
 
 def _bogie_changes(base: Bogie, ws: dict, frame: dict, angles: dict) -> dict:

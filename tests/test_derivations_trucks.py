@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import sympy
-from derivation_helpers import assert_derived, system_matrices
+from derivation_helpers import FACTOR_RANGES, assert_derived, system_matrices
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
@@ -74,7 +74,8 @@ def _scaled(model, changes: dict):
 
 
 def _factors(names):
-    return st.fixed_dictionaries({n: st.floats(0.3, 3.0) for n in names})
+    # narrower where a parameter would leave its plausible range (derivation_helpers.FACTOR_RANGES)
+    return st.fixed_dictionaries({n: st.floats(*FACTOR_RANGES.get(n, (0.3, 3.0))) for n in names})
 
 
 def _assert_matches(derivation, model):

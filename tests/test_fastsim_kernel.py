@@ -92,10 +92,25 @@ def test_limits_full_adhesion_full_slip_pure_spin_zero_creepage():
     assert np.shape(new.fx) == (4, 3) and new.px.shape == (4, 3, 20, 20)
 
 
-def test_bounds_outside_the_fast_slide_test_and_huge_creepages():
+def test_bounds_outside_the_fast_slide_test_and_huge_creepages(monkeypatch):
     # μp₀ beyond 1e100 Pa or below 1e-100 Pa: the kernel takes hypot, as numpy does, so that no
     # square overflows or underflows; huge creepages are scaled down before either march.
-    for mu in (1e200, 1e-200, 1e95, 1e-95):
+    for mu in (1e-200, 1e-95):
+        for creep in (1e-3, 1e300):
+            _assert_same((creep, 0.5 * creep, 1.0, N, mu, A, B))
+    # A friction coefficient above 1 is refused (raildyn.constants.PLAUSIBLE_RANGES), so μp₀ beyond
+    # 1e100 Pa no longer comes from outside; the two marches are still held together there, with the
+    # plausible ranges lifted for this test.
+    for mu in (1e200, 1e95):
+        with pytest.raises(ValueError, match="friction must be in"):
+            fastsim(1e-3, 5e-4, 1.0, N, mu, A, B)
+    array = module._checks.array
+    monkeypatch.setattr(
+        module._checks,
+        "plausible_array",
+        lambda name, value, quantity, low=None, low_open=False: array(name, value),
+    )
+    for mu in (1e200, 1e95):
         for creep in (1e-3, 1e300):
             _assert_same((creep, 0.5 * creep, 1.0, N, mu, A, B))
 
@@ -140,4 +155,4 @@ def test_bad_input_is_refused_before_the_kernel():
     with pytest.raises(ValueError, match="n_y"):
         fastsim(1e-3, 0.0, 0.0, N, MU, A, B, n_y=1)
     with pytest.raises(ValueError, match="a/b must be in"):
-        fastsim(1e-3, 0.0, 0.0, N, MU, A, 20 * A)
+        fastsim(1e-3, 0.0, 0.0, N, MU, A / 4, 5 * A)  # a/b = 1/20, each semi-axis plausible

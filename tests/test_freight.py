@@ -240,9 +240,14 @@ def test_issue_15_bad_input_is_refused_by_name():
     with pytest.raises(ValueError, match="rail_length"):
         rock_and_roll(CAR, [25.0], rail_length=1e300, half_width=1.0, cycles=4)
     # a roll stiffness that overflows, or a body so heavy that it topples, names every field involved
+    # (the spacing and the mass within their plausible ranges: an overflowing 4 k d², a 1000 t body 3 m up)
     with pytest.raises(ValueError, match="semi_spring_spacing .* finite and > 0"):
-        FreightCar(semi_spring_spacing=1e300)
+        FreightCar(nest_stiffness=1e308)
     with pytest.raises(ValueError, match="body_mass .* finite and > 0"):
+        FreightCar(body_mass=1e6, cg_height=3.0)
+    with pytest.raises(ValueError, match="semi_spring_spacing must be in"):
+        FreightCar(semi_spring_spacing=1e300)
+    with pytest.raises(ValueError, match="body_mass must be in"):
         FreightCar(body_mass=1e300)
     with pytest.raises(ValueError, match="semi_truck_wheelbase"):
         FreightCar(semi_truck_wheelbase=10.0)

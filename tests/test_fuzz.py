@@ -6,7 +6,8 @@ requires each changed call to be refused with a ValueError or TypeError naming t
 parameter, or to return a finite result for a change the entry declares valid. Hangs,
 silent NaN/inf/empty results, accepted nonsense and obscure exceptions fail.
 
-``python tests/test_fuzz.py [prefix ...]`` prints the counts of every outcome by kind.
+``python tests/test_fuzz.py [prefix ...]`` prints the counts of every outcome by kind and the
+share of the bad calls refused clearly (see :func:`fuzzing.share_refused`).
 """
 
 from __future__ import annotations
@@ -21,10 +22,22 @@ import warnings
 
 import pytest
 from fuzz_cases import entries
-from fuzzing import FAILURES, OUTCOMES, bad_numbers, public_callables, resolve, run, valid_result
+from fuzzing import (
+    FAILURES,
+    OUTCOMES,
+    bad_numbers,
+    public_callables,
+    resolve,
+    run,
+    share_refused,
+    valid_result,
+)
 
 ENTRIES = entries()
 BY_TARGET = {e.target: e for e in ENTRIES}
+
+#: The outcomes counted by ``test_bad_input_is_refused_clearly``, by target, for the package's share.
+SEEN: dict[str, collections.Counter] = {}
 
 
 def test_every_public_callable_has_one_entry():
@@ -47,8 +60,21 @@ def test_bad_input_is_refused_clearly(target, tmp_path, monkeypatch):
         # refuses before the body runs; the widget tests make the valid call.
         where = bad_numbers(valid_result(entry), entry.infinite)
         assert where is None, f"the registry's valid call of {target} returns {where}"
-    failures = [o for o in run(entry) if o.kind in FAILURES]
+    outcomes = run(entry)
+    SEEN[target] = collections.Counter(o.kind for o in outcomes)
+    failures = [o for o in outcomes if o.kind in FAILURES]
     assert not failures, f"{len(failures)} bad outcomes:\n" + "\n".join(map(str, failures))
+
+
+def test_every_bad_call_is_refused_or_declared_valid():
+    """Over every entry the test above ran: the share of bad calls refused clearly is 1 (all)."""
+    if not SEEN:
+        pytest.skip("no entry ran (a selection without test_bad_input_is_refused_clearly)")
+    counts = sum(SEEN.values(), collections.Counter())
+    share = share_refused(counts)
+    print(f"\nfuzz: {share:.2%} of {counts.total() - counts['accepted']} bad calls refused clearly "
+          f"over {len(SEEN)} callables: {dict(counts)}")  # fmt: skip
+    assert share == 1.0, f"only {share:.4%} of the bad calls are refused clearly: {dict(counts)}"
 
 
 def report(*prefixes: str) -> collections.Counter:
@@ -63,6 +89,9 @@ def report(*prefixes: str) -> collections.Counter:
             if outcome.kind in FAILURES:
                 print(outcome)
     print({kind: counts[kind] for kind in OUTCOMES}, f"{time.perf_counter() - start:.1f} s")
+    bad = counts.total() - counts["accepted"]
+    clear = counts["refused"] + counts["solver"]
+    print(f"bad calls refused clearly: {share_refused(counts):.2%} ({clear} of {bad}; {bad - clear} not)")
     return counts
 
 

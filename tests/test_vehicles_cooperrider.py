@@ -73,6 +73,13 @@ def test_cooperrider_car_is_built_afresh_and_leaves_the_defaults_alone():
     assert MANCHESTER_CAR.body_mass == 32000.0 and MANCHESTER_CAR.wheelset.mass == 1813.0
 
 
+# On its 1:40 cone Cooperrider's car hunts only at 235 m/s in this linear model (measured with the
+# range (1, 400) before raildyn.constants.MAXIMUM_SPEED bounded every speed at 200 m/s): over the speeds
+# raildyn accepts it is stable. The checks of the critical speed run on the same car on a 1:20 cone,
+# which hunts at 164 m/s, within the range.
+COOPERRIDER_1_20 = COOPERRIDER_CAR.replace(conicity=0.05)
+
+
 def _max_real_pole(system, speed):
     """Largest real part of the poles of python-control's state space built here from M, C(V), K."""
     mats = system.matrices(speed)
@@ -100,14 +107,16 @@ def test_cooperrider_critical_speed_matches_bisection_on_control_poles(reference
     # raildyn's batched eigenvalues and Brent's method against python-control's poles and plain
     # bisection: the same speed to 0.1 m/s. The range is a coarse guard: on a 1:40 cone the
     # kinematic frequency of the wheelsets, V√(λ/(a r₀)), reaches the ~10 Hz of their lateral
-    # modes on the soft primary suspension only at some 200 m/s.
-    cs = stability.critical_speed(COOPERRIDER_CAR, (1.0, 400.0))
+    # modes on the soft primary suspension only above 200 m/s, so the car is stable over every
+    # speed raildyn accepts; on a 1:20 cone (a kinematic frequency √2 higher) it hunts below 200 m/s.
+    assert stability.critical_speed(COOPERRIDER_CAR, (1.0, 200.0)).status == "stable over the range"
+    cs = stability.critical_speed(COOPERRIDER_1_20, (1.0, 200.0))
     assert cs.found
-    assert 150.0 < cs.speed < 300.0
-    bisected = _bisect_critical_speed(COOPERRIDER_CAR.linear_system(), 5.0, 400.0)
+    assert 120.0 < cs.speed < 200.0
+    bisected = _bisect_critical_speed(COOPERRIDER_1_20.linear_system(), 5.0, 200.0)
     reference(
         7,
-        "critical speed of Cooperrider's car",
+        "critical speed of Cooperrider's car on a 1:20 cone",
         "bisection on python-control poles",
         "python-control",
         abs(cs.speed - bisected),
@@ -123,7 +132,7 @@ def _hunting_and_kinematic_limits(car):
     (yaw springs → 0) and the rigid bogie (→ ∞), whose frequencies are V over each wavelength.
     """
     ws = car.wheelset
-    cs = stability.critical_speed(car, (1.0, 400.0))
+    cs = stability.critical_speed(car, (1.0, 200.0))
     free = cs.speed / kinematic_wavelength(ws.rolling_radius, ws.half_gauge, ws.conicity)
     rigid = cs.speed / rigid_bogie_wavelength(
         ws.rolling_radius, ws.half_gauge, ws.conicity, car.bogie.semi_wheelbase
@@ -131,7 +140,7 @@ def _hunting_and_kinematic_limits(car):
     return cs.frequency_hz, rigid, free
 
 
-@pytest.mark.parametrize("car", [MANCHESTER_CAR, COOPERRIDER_CAR], ids=["manchester", "cooperrider"])
+@pytest.mark.parametrize("car", [MANCHESTER_CAR, COOPERRIDER_1_20], ids=["manchester", "cooperrider"])
 def test_hunting_frequency_lies_between_rigid_bogie_and_free_wheelset(car):
     hunting, rigid, free = _hunting_and_kinematic_limits(car)
     assert rigid < hunting < free
@@ -145,12 +154,12 @@ def test_softer_primary_yaw_puts_cooperrider_hunting_nearer_the_free_wheelset():
         hunting, rigid, free = _hunting_and_kinematic_limits(car)
         return (hunting - rigid) / (free - rigid)
 
-    assert COOPERRIDER_CAR.wheelset.yaw_stiffness < MANCHESTER_CAR.wheelset.yaw_stiffness / 20
-    assert position(COOPERRIDER_CAR) > position(MANCHESTER_CAR) + 0.3
+    assert COOPERRIDER_1_20.wheelset.yaw_stiffness < MANCHESTER_CAR.wheelset.yaw_stiffness / 20
+    assert position(COOPERRIDER_1_20) > position(MANCHESTER_CAR) + 0.3
 
 
 def test_body_yaw_inertia_of_the_other_dytsi_variant_hardly_moves_the_critical_speed():
     # CooperriderModel.cpp has 5.6e6 kg·m² where the orthogonal model has 5.0e5 (as the docstring says).
-    base = stability.critical_speed(COOPERRIDER_CAR, (1.0, 400.0)).speed
-    other = stability.critical_speed(COOPERRIDER_CAR.replace(body_yaw_inertia=5.6e6), (1.0, 400.0)).speed
+    base = stability.critical_speed(COOPERRIDER_1_20, (1.0, 200.0)).speed
+    other = stability.critical_speed(COOPERRIDER_1_20.replace(body_yaw_inertia=5.6e6), (1.0, 200.0)).speed
     assert other == pytest.approx(base, abs=0.05)

@@ -59,7 +59,7 @@ def test_braking_widget_envelope_is_the_runs_own_plot_moved_in_place():
         ({"cars": 201}, ValueError, r"cars must be an integer in \[1, 200\]"),
         ({"slack_mm": -1.0}, ValueError, "slack_mm must be in"),  # was blamed on slack
         ({"slack_mm": None}, TypeError, "slack_mm must be a real number"),
-        ({"signal_speed": 400.0}, ValueError, r"signal_speed must be in \(0.0, 343.0\]"),
+        ({"signal_speed": 400.0}, ValueError, r"signal_speed must be in \[10.0, 343.0\]"),
         ({"speed_kmh": 0.0}, ValueError, "speed_kmh must be in"),  # was a run of a standing train
     ],
 )

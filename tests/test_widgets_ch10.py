@@ -7,6 +7,7 @@ from widget_helpers import median_update_ms, status_line
 
 from raildyn.bridge import SimplySupportedBeam, codes, fryba_deflection, moving_force
 from raildyn.bridge.trains import regular_train
+from raildyn.constants import MAXIMUM_SPEED
 from raildyn.widgets import chapter10
 
 # ---------------------------------------------------------------------------
@@ -56,10 +57,19 @@ def test_explorer_marks_the_closed_form_amplification_near_frybas_peak():
     assert f"amplification {mark.get_ydata()[0]:.3f}" in status_line(container)
     # the bold curve is the closed form for the chosen damping, and the curve's peak is Frýba's
     update(damping=0.05)
-    speeds = chapter10._ALPHAS * 2 * beam.frequencies_hz[0] * 20.0
+    # the curve is computed on a 40 m span of the same section (α = 1.5 at 118 m/s, within
+    # raildyn.constants.MAXIMUM_SPEED; the 20 m beam would need 236 m/s)
+    long = SimplySupportedBeam(40.0, 1.0e10, 1.0e4, damping_ratio=0.05, modes=10)
+    speeds = chapter10._ALPHAS * 2 * long.frequencies_hz[0] * 40.0
+    np.testing.assert_allclose(curve.get_ydata(), moving_force(long, speeds, 1.0e5).amplification, rtol=1e-12)
+    # ... which is the 20 m beam's curve, as the amplification depends on α alone: the same to rounding
+    # (1e-9; measured below 1e-13) wherever the 20 m beam's speed is one raildyn accepts
     damped = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, damping_ratio=0.05, modes=10)
+    short = chapter10._ALPHAS * 2 * damped.frequencies_hz[0] * 20.0
+    within = short <= MAXIMUM_SPEED
+    assert within.sum() > 200
     np.testing.assert_allclose(
-        curve.get_ydata(), moving_force(damped, speeds, 1.0e5).amplification, rtol=1e-12
+        curve.get_ydata()[within], moving_force(damped, short[within], 1.0e5).amplification, rtol=1e-9
     )
     undamped = chapter10._daf_curve(0.0)
     assert undamped.max() == pytest.approx(peak, rel=2e-3)  # the grid is 0.006 apart in α: flat at the top

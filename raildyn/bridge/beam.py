@@ -33,11 +33,11 @@ class SimplySupportedBeam:
     Attributes
     ----------
     span : float
-        L, m (> 0).
+        L, m, in [1, 2000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "span").
     flexural_rigidity : float
-        EI, N·m² (> 0).
+        EI, N·m², in [1, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity").
     mass_per_length : float
-        m, kg/m (> 0).
+        m, kg/m, in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "beam_mass").
     damping_ratio : float
         ξ of every mode, in [0, 1).
     modes : int
@@ -59,8 +59,12 @@ class SimplySupportedBeam:
     modes: int = 10
 
     def __post_init__(self):
-        for name in ("span", "flexural_rigidity", "mass_per_length"):
-            _checks.positive(name, getattr(self, name))
+        for name, quantity in (
+            ("span", "span"),
+            ("flexural_rigidity", "flexural_rigidity"),
+            ("mass_per_length", "beam_mass"),
+        ):
+            _checks.plausible(name, getattr(self, name), quantity)
         _checks.scalar("damping_ratio", self.damping_ratio, low=0.0, high=1.0, high_open=True)
         _checks.integer("modes", self.modes, low=1, high=_MAX_MODES)
 
@@ -122,7 +126,7 @@ class MovingForceResponse:
     Attributes
     ----------
     speeds : ndarray, (s,)
-        v, m/s (> 0).
+        v, m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     time : ndarray, (s, k)
         t, s, from the force's arrival (each row from 0 to twice its crossing time).
     deflection : ndarray, (s, k)
@@ -147,7 +151,7 @@ class MovingForceResponse:
     acceleration: np.ndarray | None = None
 
     def __post_init__(self):
-        s = _checks.array("speeds", self.speeds, ndim=1, low=0.0, low_open=True, allow_empty=False).size
+        s = _checks.speeds("speeds", self.speeds).size
         k = _checks.array("time", self.time, shape=(s, None)).shape[1]
         _checks.array("deflection", self.deflection, shape=(s, k))
         _checks.scalar("position", self.position, low=0.0)
@@ -179,7 +183,7 @@ def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None,
     ----------
     beam : SimplySupportedBeam
     speeds : float or array_like
-        v, m/s, each in (0, 1000].
+        v, m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     force : float or AxleSequence
         P, N (finite; positive downwards gives a positive deflection), or the axles of a train.
     position : float, optional
@@ -205,9 +209,7 @@ def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None,
     from raildyn.bridge.loads import AxleSequence  # loads builds on this module
 
     _checks.instance("beam", beam, SimplySupportedBeam)
-    v = np.atleast_1d(_checks.array("speeds", speeds, low=0.0, low_open=True, allow_empty=False))
-    if v.ndim != 1 or v.max() > 1000.0:
-        raise ValueError(f"speeds must be a number or a 1-D array within (0, 1000] m/s, got {speeds!r:.80}")
+    v = _checks.speeds("speeds", speeds)
     if isinstance(force, AxleSequence):
         delays, loads = force.positions, force.loads
     else:
@@ -237,7 +239,7 @@ def fryba_deflection(beam: SimplySupportedBeam, speed, force, time, position=Non
     beam : SimplySupportedBeam
         Its damping ratio must be 0 (the series is the undamped one).
     speed : float
-        v, m/s, in (0, 1000], not at a resonance α = j (j ≤ modes).
+        v, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`], not at a resonance α = j (j ≤ modes).
     force : float
         P, N (finite).
     time : array_like, (k,)
@@ -255,7 +257,7 @@ def fryba_deflection(beam: SimplySupportedBeam, speed, force, time, position=Non
         raise ValueError(
             f"beam must be undamped for Frýba's series, got damping_ratio {beam.damping_ratio!r}"
         )
-    v = _checks.scalar("speed", speed, low=0.0, low_open=True, high=1000.0)
+    v = _checks.speed("speed", speed)
     P = _checks.scalar("force", force)
     L = beam.span
     t = _checks.array("time", time, ndim=1, low=0.0, allow_empty=False)

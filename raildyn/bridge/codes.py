@@ -41,13 +41,12 @@ COMFORT_ACCELERATION_LIMITS = {"very good": 1.0, "good": 1.3, "acceptable": 2.0}
 
 
 def _lengths(name, value):
-    """A length or an array of lengths, m, each in (0, 1e5]: returned as an array with its shape."""
-    arr = _checks.array(name, value, low=0.0, low_open=True)
+    """A length or an array of lengths of a bridge, m, each in [1, 2000] (``PLAUSIBLE_RANGES["span"]``):
+    returned as an array with its shape."""
+    arr = _checks.array(name, value)
     if arr.size == 0:
         raise ValueError(f"{name} must not be empty, got an array of shape {arr.shape}")
-    if arr.max() > 1.0e5:
-        raise ValueError(f"{name} must be at most 1e5 m (100 km), got {arr.max()!r}")
-    return arr
+    return _checks.plausible_array(name, arr, "span")
 
 
 def _out(arr):
@@ -77,7 +76,8 @@ def arema_impact_factor(span, girder_spacing=None):
     Parameters
     ----------
     span : float or array_like
-        L, m (each in (0, 1e5]), the span centre to centre of bearings.
+        L, m (each in [1, 2000], :data:`~raildyn.constants.PLAUSIBLE_RANGES` "span"), the span centre to
+        centre of bearings.
     girder_spacing : float, optional
         S, m (> 0), between the centres of the girders or stringers; None leaves the rocking
         term out.
@@ -99,7 +99,7 @@ def arema_impact_factor(span, girder_spacing=None):
     vertical = np.where(L < 80.0, 40.0 - 3.0 * L**2 / 1600.0, 16.0 + 600.0 / np.maximum(L - 30.0, 50.0))
     rocking = 0.0
     if girder_spacing is not None:
-        S = _checks.positive("girder_spacing", girder_spacing) / FOOT
+        S = _checks.plausible("girder_spacing", girder_spacing, "span") / FOOT
         rocking = 100.0 / S
     return _out((vertical + rocking) / 100.0)
 
@@ -121,7 +121,8 @@ def en1991_dynamic_factor(determinant_length, maintenance: str = "careful"):
     Parameters
     ----------
     determinant_length : float or array_like
-        L_Φ, m (each in (0, 1e5]), from EN 1991-2 Table 6.2 (for a simply supported main girder,
+        L_Φ, m (each in [1, 2000], :data:`~raildyn.constants.PLAUSIBLE_RANGES` "span"), from EN 1991-2
+        Table 6.2 (for a simply supported main girder,
         its span).
     maintenance : {"careful", "standard"}
         The track maintenance: Φ₂ or Φ₃.
@@ -160,7 +161,8 @@ def en1991_real_train_factor(speed, determinant_length, frequency_hz, maintenanc
     Parameters
     ----------
     speed : float
-        v, m/s, in [0, 200] (the annex is written for speeds up to 200 km/h, 55.6 m/s, where no
+        v, m/s, in [0, :data:`~raildyn.constants.MAXIMUM_SPEED`] (200 m/s; the annex is written for speeds
+        up to 200 km/h, 55.6 m/s, where no
         dynamic analysis is asked for; beyond, φ′ stays at its plateau).
     determinant_length : float
         L_Φ, m, in (0, 1e5].
@@ -181,7 +183,7 @@ def en1991_real_train_factor(speed, determinant_length, frequency_hz, maintenanc
     >>> round(en1991_real_train_factor(40.0, 20.0, 4.0), 4)
     1.3367
     """
-    v = _checks.scalar("speed", speed, low=0.0, high=200.0)
+    v = _checks.speed("speed", speed, low_open=False)
     L = float(_lengths("determinant_length", _checks.scalar("determinant_length", determinant_length)))
     n0 = _checks.positive("frequency_hz", frequency_hz)
     kind = _checks.choice("maintenance", maintenance, ("careful", "standard"))
@@ -258,7 +260,9 @@ def resonance_speeds(frequency_hz, spacing, count: int = 3) -> np.ndarray:
     frequency_hz : float
         n₀, the mode's frequency, Hz (> 0).
     spacing : float
-        d, the regular spacing of the axle groups (the coach length), m (> 0).
+        d, the regular spacing of the axle groups (the coach length), m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length").
     count : int
         How many speeds, i = 1 … count, in [1, 1000].
 
@@ -275,7 +279,7 @@ def resonance_speeds(frequency_hz, spacing, count: int = 3) -> np.ndarray:
     array([72., 36., 24.])
     """
     n0 = _checks.positive("frequency_hz", frequency_hz)
-    d = _checks.positive("spacing", spacing)
+    d = _checks.plausible("spacing", spacing, "vehicle_length")
     i = np.arange(1, _checks.integer("count", count, low=1, high=1000) + 1)
     return n0 * d / i
 
@@ -297,7 +301,8 @@ def cancellation_spans(spacing, order: int = 1, count: int = 3) -> np.ndarray:
     Parameters
     ----------
     spacing : float
-        d, the regular axle spacing, m (> 0).
+        d, the regular axle spacing, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length").
     order : int
         i, the resonance (1: v = f₁d), in [1, 1000].
     count : int
@@ -315,7 +320,7 @@ def cancellation_spans(spacing, order: int = 1, count: int = 3) -> np.ndarray:
     >>> cancellation_spans(18.0)
     array([27., 45., 63.])
     """
-    d = _checks.positive("spacing", spacing)
+    d = _checks.plausible("spacing", spacing, "vehicle_length")
     i = _checks.integer("order", order, low=1, high=1000)
     k = np.arange(1, _checks.integer("count", count, low=1, high=1000) + 1)
     return d * (2 * k + 1) / (2 * i)

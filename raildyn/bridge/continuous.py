@@ -93,12 +93,14 @@ class ContinuousBeam:
     Attributes
     ----------
     spans : tuple of float
-        L₁ … Lₙ, m, from the left end: each in (0, 10 000], the longest at most 20 times the
-        shortest, at most 50 spans. One span is the simply supported beam.
+        L₁ … Lₙ, m, from the left end: each in [1, 2000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "span"), the longest at most
+        20 times the shortest, at most 50 spans. One span is the simply supported beam.
     flexural_rigidity : float
-        EI, N·m² (> 0), the same in every span.
+        EI, N·m², in [1, 1e16] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "flexural_rigidity"), the
+        same in every span.
     mass_per_length : float
-        m, kg/m (> 0).
+        m, kg/m, in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "beam_mass").
     damping_ratio : float
         ξ of every mode, in [0, 1).
     modes : int
@@ -137,8 +139,9 @@ class ContinuousBeam:
                 f"spans must keep the longest within {_MAX_RATIO:g} times the shortest, got {lengths}"
             )
         object.__setattr__(self, "spans", tuple(float(v) for v in lengths))
-        for name in ("flexural_rigidity", "mass_per_length"):
-            _checks.positive(name, getattr(self, name))
+        _checks.plausible_array("spans", lengths, "span")
+        _checks.plausible("flexural_rigidity", self.flexural_rigidity, "flexural_rigidity")
+        _checks.plausible("mass_per_length", self.mass_per_length, "beam_mass")
         _checks.scalar("damping_ratio", self.damping_ratio, low=0.0, high=1.0, high_open=True)
         _checks.integer("modes", self.modes, low=1, high=_MAX_MODES)
 

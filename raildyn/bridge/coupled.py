@@ -49,7 +49,7 @@ class BridgeCrossing:
     Attributes
     ----------
     speed : float
-        v, m/s.
+        v, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     at : float
         x of the beam's output point, m.
     time : ndarray, (k,)
@@ -89,7 +89,7 @@ class BridgeCrossing:
     vehicle_labels: tuple
 
     def __post_init__(self):
-        _checks.positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         _checks.scalar("at", self.at)
         k = _checks.array("time", self.time, ndim=1, allow_empty=False).size
         for name in ("deflection", "static_deflection", "moment", "deck_acceleration"):
@@ -190,7 +190,7 @@ def crossing(
     load : MovingLoad or AxleSequence
         What crosses (an axle sequence: as constant forces).
     speed : float
-        v, m/s, in (0, 1000].
+        v, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     irregularity : (array_like, array_like), optional
         x (m, increasing, covering from minus the load's length to the beam's end) and the
         rail's height z there (m, upwards): a cubic spline gives r, r′, r″. None: level.
@@ -222,6 +222,7 @@ def crossing(
     >>> round(run.amplification, 2)
     1.73
     """
+    _checks.not_a_class("beam", beam, "a beam")
     for name in (
         "length",
         "frequencies_hz",
@@ -238,7 +239,7 @@ def crossing(
     if isinstance(load, AxleSequence):
         load = moving_forces(load)
     _checks.instance("load", load, MovingLoad, "MovingLoad or AxleSequence")
-    v = _checks.scalar("speed", speed, low=0.0, low_open=True, high=1000.0)
+    v = _checks.speed("speed", speed)
     L = float(beam.length)
     first_span = getattr(beam, "spans", (L,))[0]  # a continuous beam's middle may be a support
     x_out = first_span / 2 if at is None else _checks.scalar("at", at, low=0.0, high=L)
@@ -262,7 +263,7 @@ def crossing(
     steps = int(np.ceil(duration / h))
     if steps > _MAX_STEPS or (steps + 1) * load.positions.size > _MAX_AXLE_SAMPLES:
         raise ValueError(
-            f"time_step {h!r} s gives {steps} steps over the {duration:.4g} s run for "
+            f"time_step {h!r} s gives {steps} steps over the {duration:.4g} s run (at speed {v!r} m/s) for "
             f"{load.positions.size} axles; at most {_MAX_STEPS} steps and {_MAX_AXLE_SAMPLES:.0e} "
             "axle-steps are allowed (a longer step, fewer modes or a shorter train)"
         )

@@ -174,13 +174,13 @@ def moving_mass(mass) -> MovingLoad:
     Parameters
     ----------
     mass : float
-        M, kg (> 0).
+        M, kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass").
 
     Returns
     -------
     MovingLoad
     """
-    M = _checks.positive("mass", mass)
+    M = _checks.plausible("mass", mass, "mass")
     return MovingLoad([0.0], [M * GRAVITY], [M], None, "moving mass")
 
 
@@ -194,13 +194,13 @@ def sprung_mass(mass, stiffness, damping=0.0, unsprung_mass=0.0) -> MovingLoad:
     Parameters
     ----------
     mass : float
-        M_v, kg (> 0).
+        M_v, kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass").
     stiffness : float
         k_v, N/m (> 0).
     damping : float
         c_v, N·s/m (≥ 0).
     unsprung_mass : float
-        m_w, kg (≥ 0).
+        m_w, kg, 0 or in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass").
 
     Returns
     -------
@@ -215,10 +215,12 @@ def sprung_mass(mass, stiffness, damping=0.0, unsprung_mass=0.0) -> MovingLoad:
     >>> round(float(load.static_loads[0]))
     56388
     """
-    M = _checks.positive("mass", mass)
+    M = _checks.plausible("mass", mass, "mass")
     k = _checks.positive("stiffness", stiffness)
     c = _checks.nonnegative("damping", damping)
     m = _checks.nonnegative("unsprung_mass", unsprung_mass)
+    if m:
+        _checks.plausible("unsprung_mass", m, "mass")
     asm = Assembler(["body z"], n_inputs=1)
     asm.mass("body z", M)
     asm.element({"body z": 1.0}, k, c, inputs={0: 1.0})
@@ -239,7 +241,8 @@ def vehicle(model, wheelset_mass=0.0) -> MovingLoad:
     model : LinearModel or LinearSystem
         A vertical model of the protocol whose inputs are the axles.
     wheelset_mass : float
-        kg, each wheelset's unsprung mass (≥ 0; the Manchester vehicle's is 1813 kg,
+        kg, each wheelset's unsprung mass, 0 or in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "mass"; the Manchester vehicle's is 1813 kg,
         Iwnicki 1998, as :class:`raildyn.wheelset.Wheelset`).
 
     Returns
@@ -255,6 +258,8 @@ def vehicle(model, wheelset_mass=0.0) -> MovingLoad:
     """
     system = as_linear_system(model)
     m = _checks.nonnegative("wheelset_mass", wheelset_mass)
+    if m:
+        _checks.plausible("wheelset_mass", m, "mass")
     if system.n_inputs == 0:
         raise ValueError(f"model must have track inputs (its axles), got {type(model).__name__} with none")
     _sprung_system(system, system.n_inputs)

@@ -100,9 +100,11 @@ def regular_train(
     coach_length : float
         D, m, in (0, 1000].
     bogie_axle_spacing : float
-        d, m (> 0): less than D for articulated coaches, less than ``bogie_centres`` otherwise.
+        d, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length"): less than D
+        for articulated coaches, less
+        than ``bogie_centres`` otherwise.
     axle_load : float
-        P, N (> 0), the same on every axle.
+        P, N, in [1, 2e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "axle_load"), the same on every axle.
     bogie_centres : float, optional
         a, m, between the two bogie centres of a coach: a + d ≤ D. None: articulated.
 
@@ -120,8 +122,8 @@ def regular_train(
     """
     n = _checks.integer("coaches", coaches, low=1, high=1000)
     D = _checks.scalar("coach_length", coach_length, low=0.0, low_open=True, high=1000.0)
-    d = _checks.positive("bogie_axle_spacing", bogie_axle_spacing)
-    P = _checks.positive("axle_load", axle_load)
+    d = _checks.plausible("bogie_axle_spacing", bogie_axle_spacing, "vehicle_length")
+    P = _checks.plausible("axle_load", axle_load, "axle_load")
     if bogie_centres is None:
         if d >= D:
             raise ValueError(f"bogie_axle_spacing must be less than coach_length {D!r} m, got {d!r}")

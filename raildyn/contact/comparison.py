@@ -177,11 +177,12 @@ def lateral_creep_curves(
     lateral : array_like, shape (n,)
         γ_y, dimensionless, >= 0, at least one.
     normal_load : float
-        N, N, > 0.
+        N, N, in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     friction : float
-        μ > 0.
+        μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction").
     a, b : float
-        Semi-axes of the contact ellipse, m, 0.1 <= a/b <= 10.
+        Semi-axes of the contact ellipse, m, each in [1e-5, 0.05] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "contact_semi_axis"), 0.1 <= a/b <= 10.
     spin : float
         φ, 1/m.
     shear_modulus : float
@@ -201,10 +202,10 @@ def lateral_creep_curves(
     [-0.0, 0.555, 0.854, 0.976, 1.0]
     """
     eta = _checks.array("lateral", lateral, ndim=1, low=0.0, allow_empty=False)
-    load = _checks.positive("normal_load", normal_load)
-    mu = _checks.positive("friction", friction)
-    a = _checks.positive("a", a)
-    b = _checks.positive("b", b)
+    load = _checks.plausible("normal_load", normal_load, "wheel_load")
+    mu = _checks.friction("friction", friction)
+    a = _checks.plausible("a", a, "contact_semi_axis")
+    b = _checks.plausible("b", b, "contact_semi_axis")
     phi = _checks.scalar("spin", spin)
     f = creep_coefficients(a, b, shear_modulus, poisson_ratio)
     fy = {

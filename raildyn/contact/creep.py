@@ -163,7 +163,7 @@ def _poisson(poisson_ratio) -> float:
 
 
 def _friction(friction, name: str = "friction") -> float:
-    return _checks.scalar(name, friction, low=0.0, low_open=True)
+    return _checks.friction(name, friction)
 
 
 def _coefficients(coefficients) -> CreepCoefficients:
@@ -241,7 +241,8 @@ def creep_coefficients(
     Parameters
     ----------
     a, b : float or array_like
-        Semi-axes (m) in the rolling and lateral directions, > 0, with
+        Semi-axes (m) in the rolling and lateral directions, each in [1e-5, 0.05]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "contact_semi_axis"), with
         0.1 ≤ a/b ≤ 10. Arrays broadcast together.
     shear_modulus : float
         G (Pa); default :data:`raildyn.constants.STEEL_SHEAR_MODULUS`, E/(2(1 + ν)) = 80.8 GPa.
@@ -261,8 +262,8 @@ def creep_coefficients(
     >>> round(f.f11 / 1e6, 3)  # MN
     12.014
     """
-    a_arr = _checks.array("a", a, low=0.0, low_open=True)
-    b_arr = _checks.array("b", b, low=0.0, low_open=True)
+    a_arr = _checks.plausible_array("a", a, "contact_semi_axis")
+    b_arr = _checks.plausible_array("b", b, "contact_semi_axis")
     g_mod = _checks.positive("shear_modulus", shear_modulus)
     a_arr, b_arr = np.broadcast_arrays(a_arr, b_arr)
     c = kalker_coefficients(_ratio(a_arr, b_arr), poisson_ratio)
@@ -298,9 +299,9 @@ def kalker_linear(longitudinal, lateral, spin, coefficients: CreepCoefficients) 
     >>> bool(kalker_linear(1e-3, 0.0, 0.0, f).fx == -f.f11 * 1e-3)
     True
     """
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
-    phi = _checks.array("spin", spin)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    eta = _checks.array("lateral", lateral, allow_empty=False)
+    phi = _checks.array("spin", spin, allow_empty=False)
     f = _coefficients(coefficients)
     return CreepForces(
         fx=_out(-f.f11 * xi + 0.0 * (eta + phi)),
@@ -315,11 +316,12 @@ def carter_coefficient(normal_load, wheel_radius, semi_axis):
     Parameters
     ----------
     normal_load : float
-        N (N), > 0.
+        N (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     wheel_radius : float
-        R (m), > 0.
+        R (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_radius").
     semi_axis : float
-        Half-length a of the contact strip in the rolling direction (m), > 0.
+        Half-length a of the contact strip in the rolling direction (m), in [1e-5, 0.05]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "contact_semi_axis").
 
     Returns
     -------
@@ -331,9 +333,9 @@ def carter_coefficient(normal_load, wheel_radius, semi_axis):
     >>> round(carter_coefficient(1e5, 0.46, 6e-3) / 1e6, 4)  # 2NR/a, MN
     15.3333
     """
-    n = _checks.positive("normal_load", normal_load)
-    r = _checks.positive("wheel_radius", wheel_radius)
-    a = _checks.positive("semi_axis", semi_axis)
+    n = _checks.plausible("normal_load", normal_load, "wheel_load")
+    r = _checks.plausible("wheel_radius", wheel_radius, "wheel_radius")
+    a = _checks.plausible("semi_axis", semi_axis, "contact_semi_axis")
     return 2.0 * n * r / a
 
 
@@ -350,9 +352,9 @@ def carter(longitudinal, normal_load, friction, creep_coefficient):
     longitudinal : float or array_like
         Creepage γ_x.
     normal_load : float
-        N (N), > 0.
+        N (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     friction : float
-        Coefficient of friction μ, > 0.
+        Coefficient of friction μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction").
     creep_coefficient : float
         Initial slope dF/dγ_x (N), > 0.
 
@@ -368,8 +370,8 @@ def carter(longitudinal, normal_load, friction, creep_coefficient):
     >>> carter(0.05, 1e5, 0.3, carter_coefficient(1e5, 0.46, 6e-3))
     -30000.0
     """
-    xi = _checks.array("longitudinal", longitudinal)
-    n = _checks.positive("normal_load", normal_load)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    n = _checks.plausible("normal_load", normal_load, "wheel_load")
     mu = _friction(friction)
     f = _checks.positive("creep_coefficient", creep_coefficient)
     u = f * xi / (2 * mu * n)
@@ -511,11 +513,12 @@ def johnson_vermeulen(
     longitudinal, lateral : float or array_like
         Creepages γ_x, γ_y (dimensionless).
     normal_load : float
-        N (N), > 0.
+        N (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     friction : float
-        μ > 0.
+        μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction").
     a, b : float
-        Semi-axes of the contact ellipse (m), > 0, in the rolling and lateral directions, with
+        Semi-axes of the contact ellipse (m), in the rolling and lateral directions, each in
+        [1e-5, 0.05] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "contact_semi_axis"), with
         1e-3 ≤ a/b ≤ 1e3.
     shear_modulus, poisson_ratio : float
         G (Pa) and ν; the steel of :mod:`raildyn.constants` by default.
@@ -533,12 +536,12 @@ def johnson_vermeulen(
     >>> round(-f / 1e-7 / (8.1e10 * 36e-6 * 16 / 3.25), 4)
     1.0
     """
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
-    n = _checks.positive("normal_load", normal_load)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    eta = _checks.array("lateral", lateral, allow_empty=False)
+    n = _checks.plausible("normal_load", normal_load, "wheel_load")
     mu = _friction(friction)
-    a = _checks.positive("a", a)
-    b = _checks.positive("b", b)
+    a = _checks.plausible("a", a, "contact_semi_axis")
+    b = _checks.plausible("b", b, "contact_semi_axis")
     g_mod = _checks.positive("shear_modulus", shear_modulus)
     if not _JV_RATIO[0] <= a / b <= _JV_RATIO[1]:
         raise ValueError(
@@ -584,7 +587,10 @@ def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
     """
     if check is not False:
         _checks.flag("check", check)
-        force, limit = _checks.array("force", force, low=0.0), _checks.positive("limit", limit)
+        force, limit = (
+            _checks.array("force", force, low=0.0, allow_empty=False),
+            _checks.positive("limit", limit),
+        )
     u = np.abs(force) / limit
     v = np.minimum(u, 3.0)  # u ≥ 3: saturated, v − v²/3 + v³/27 = 1 (and no overflow for a huge u)
     sat = v - v**2 / 3.0 + v**3 / 27.0
@@ -606,9 +612,9 @@ def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coef
     spin : float or array_like
         φ (1/m).
     normal_load : float
-        N (N), > 0.
+        N (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     friction : float
-        μ > 0.
+        μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction").
     coefficients : CreepCoefficients
         Kalker's coefficients of the contact.
 
@@ -625,7 +631,7 @@ def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coef
     >>> round(shen_hedrick_elkins(3 * 30e3 / f.f11, 0.0, 0.0, 1e5, 0.3, f).fx, 6)
     -30000.0
     """
-    n = _checks.positive("normal_load", normal_load)
+    n = _checks.plausible("normal_load", normal_load, "wheel_load")
     mu = _friction(friction)
     lin = kalker_linear(longitudinal, lateral, spin, coefficients)
     scale = saturation_factor(lin.resultant, mu * n)
@@ -673,11 +679,13 @@ def polach(
     spin : float or array_like
         φ (1/m).
     normal_load : float
-        Q (N), > 0.
+        Q (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     friction : float
-        μ > 0.
+        μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction").
     a, b : float
-        Semi-axes of the contact ellipse (m), > 0, with 0.1 ≤ a/b ≤ 10 (Kalker's table).
+        Semi-axes of the contact ellipse (m), each in [1e-5, 0.05]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "contact_semi_axis": a few mm in service),
+        with 0.1 ≤ a/b ≤ 10 (Kalker's table).
     shear_modulus, poisson_ratio : float
         G (Pa) and ν for Kalker's coefficients; the steel of :mod:`raildyn.constants` by default.
     k_a, k_s : float, keyword
@@ -703,12 +711,12 @@ def polach(
 
 def _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio):
     """Checked (γ_x, γ_y, φ broadcast together, Q, a, b, G, Kalker's C) for Polach's method."""
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
-    phi = _checks.array("spin", spin)
-    q = _checks.positive("normal_load", normal_load)
-    a = _checks.positive("a", a)
-    b = _checks.positive("b", b)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    eta = _checks.array("lateral", lateral, allow_empty=False)
+    phi = _checks.array("spin", spin, allow_empty=False)
+    q = _checks.plausible("normal_load", normal_load, "wheel_load")
+    a = _checks.plausible("a", a, "contact_semi_axis")
+    b = _checks.plausible("b", b, "contact_semi_axis")
     g_mod = _checks.positive("shear_modulus", shear_modulus)
     c = kalker_coefficients(_ratio(a, b), poisson_ratio)
     return (*np.broadcast_arrays(xi, eta, phi), q, a, b, g_mod, c)
@@ -783,7 +791,7 @@ class PolachAdhesion:
         Parameters
         ----------
         slip_speed : float or array_like
-            w, m/s, >= 0 (any shape).
+            w, m/s, each in [0, :data:`~raildyn.constants.MAXIMUM_SPEED`] (any shape).
 
         Returns
         -------
@@ -792,12 +800,15 @@ class PolachAdhesion:
 
         Examples
         --------
-        >>> POLACH_DRY.friction(0.0), round(POLACH_DRY.friction(1e3), 6)
+        >>> POLACH_DRY.friction(0.0), round(POLACH_DRY.friction(100.0), 6)
         (0.55, 0.22)
         """
-        w = _checks.array("slip_speed", slip_speed, low=0.0)
+        return _out(self._mu(_checks.plausible_array("slip_speed", slip_speed, "speed", low=0.0)))
+
+    def _mu(self, w):
+        """μ at slip speeds w ≥ 0 already checked (polach_adhesion's, which grow with the creepages)."""
         a = self.limit_ratio
-        return _out(self.static_friction * ((1 - a) * np.exp(-self.decay_rate * w) + a))
+        return self.static_friction * ((1 - a) * np.exp(-self.decay_rate * w) + a)
 
 
 # Polach (2005), Table 2: the parameters fitted to measured adhesion of locomotives on dry and
@@ -833,11 +844,13 @@ def polach_adhesion(
     longitudinal, lateral, spin : float or array_like
         γ_x, γ_y, φ (1/m).
     normal_load : float
-        Q (N), > 0.
+        Q (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     speed : float
-        Rolling speed V (m/s), > 0.
+        Rolling speed V (m/s), in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     a, b : float
-        Semi-axes of the contact ellipse (m), > 0, with 0.1 ≤ a/b ≤ 10 (Kalker's table).
+        Semi-axes of the contact ellipse (m), each in [1e-5, 0.05]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "contact_semi_axis": a few mm in service),
+        with 0.1 ≤ a/b ≤ 10 (Kalker's table).
     conditions : PolachAdhesion
         :data:`POLACH_DRY` (default) or :data:`POLACH_WET`, or your own.
     shear_modulus, poisson_ratio : float
@@ -858,9 +871,9 @@ def polach_adhesion(
     """
     _checks.instance("conditions", conditions, PolachAdhesion)
     inputs = _polach_inputs(longitudinal, lateral, spin, normal_load, a, b, shear_modulus, poisson_ratio)
-    v = _checks.positive("speed", speed)
+    v = _checks.speed("speed", speed)
     xi, eta = inputs[:2]
-    mu = np.asarray(conditions.friction(v * np.hypot(xi, eta)))
+    mu = np.asarray(conditions._mu(v * np.hypot(xi, eta)))
     return _polach(*inputs, mu, conditions.k_a, conditions.k_s)
 
 
@@ -942,17 +955,21 @@ def wheelset_creepages(
     Parameters
     ----------
     speed : float
-        V (m/s), > 0.
+        V (m/s), in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     lateral_velocity, yaw_angle, yaw_rate : float or array_like
         ẏ (m/s), ψ (rad), ψ̇ (rad/s).
     rolling_radius_left, rolling_radius_right : float or array_like
-        r_L, r_R at the current contacts (m), > 0, e.g. r₀ ± Δr(y)/2.
+        r_L, r_R at the current contacts (m), each in [0.1, 1.5]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_radius"),
+        e.g. r₀ ± Δr(y)/2.
     nominal_radius : float
-        r₀ (m), > 0.
+        r₀ (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_radius").
     half_gauge : float
-        a (m), half the lateral distance between the contact points, > 0.
+        a (m), half the lateral distance between the contact points, in [0.15, 1.1]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "half_gauge").
     contact_angle_left, contact_angle_right : float or array_like
-        ϑ_L, ϑ_R (rad).
+        ϑ_L, ϑ_R (rad), within ±π/2.
     check : bool
         Check the input and the result (default). A caller that has checked it already, such as
         the right-hand side of :class:`raildyn.wheelset.NonlinearLateral` evaluated
@@ -977,16 +994,23 @@ def wheelset_creepages(
             nominal_radius, half_gauge, contact_angle_left, contact_angle_right,
         ))  # fmt: skip
     _checks.flag("check", check)
-    v = _checks.positive("speed", speed)
-    r0 = _checks.positive("nominal_radius", nominal_radius)
-    l_half = _checks.positive("half_gauge", half_gauge)
-    y_dot = _checks.array("lateral_velocity", lateral_velocity)
-    psi = _checks.array("yaw_angle", yaw_angle)
-    psi_dot = _checks.array("yaw_rate", yaw_rate)
-    r_l = _checks.array("rolling_radius_left", rolling_radius_left, low=0.0, low_open=True)
-    r_r = _checks.array("rolling_radius_right", rolling_radius_right, low=0.0, low_open=True)
-    d_l = _checks.array("contact_angle_left", contact_angle_left)
-    d_r = _checks.array("contact_angle_right", contact_angle_right)
+    v = _checks.speed("speed", speed)
+    r0 = _checks.plausible("nominal_radius", nominal_radius, "wheel_radius")
+    l_half = _checks.plausible("half_gauge", half_gauge, "half_gauge")
+    y_dot = _checks.array("lateral_velocity", lateral_velocity, allow_empty=False)
+    psi = _checks.array("yaw_angle", yaw_angle, allow_empty=False)
+    psi_dot = _checks.array("yaw_rate", yaw_rate, allow_empty=False)
+    r_l = _checks.plausible_array(
+        "rolling_radius_left", rolling_radius_left, "wheel_radius", allow_empty=False
+    )
+    r_r = _checks.plausible_array(
+        "rolling_radius_right", rolling_radius_right, "wheel_radius", allow_empty=False
+    )
+    d_l = _checks.array("contact_angle_left", contact_angle_left, allow_empty=False)
+    d_r = _checks.array("contact_angle_right", contact_angle_right, allow_empty=False)
+    for name, angle in (("contact_angle_left", d_l), ("contact_angle_right", d_r)):
+        if np.abs(angle).max(initial=0.0) > np.pi / 2:
+            raise ValueError(f"{name} must be within ±π/2 rad (an angle in degrees?), got {angle!r:.80}")
     return WheelsetCreepages(*_wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r))
 
 

@@ -96,7 +96,7 @@ class FastsimResult:
     b: np.ndarray | float | None = None
 
     def __post_init__(self):
-        _checks.fields(self)
+        _checks.fields(self, flags=("adhesion",))
         grids = {k: getattr(self, k) for k in ("x", "y", "px", "py", "pz", "slip_x", "slip_y", "adhesion")}
         missing = [k for k, v in grids.items() if v is None]
         if missing and len(missing) < len(grids):
@@ -223,7 +223,8 @@ def flexibilities(
     Parameters
     ----------
     a, b : float or array_like
-        Semi-axes (m), > 0, a in the rolling direction; 0.1 <= a/b <= 10.
+        Semi-axes (m), each in [1e-5, 0.05] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "contact_semi_axis"), a in the rolling direction; 0.1 <= a/b <= 10.
     shear_modulus : float
         G (Pa), > 0; :data:`raildyn.constants.STEEL_SHEAR_MODULUS` by default.
     poisson_ratio : float
@@ -240,8 +241,8 @@ def flexibilities(
     >>> round(f.l1 * 1e14, 4)  # 8a/(3 C₁₁ G), 1e-14 m/Pa
     4.7944
     """
-    a = _checks.array("a", a, low=0.0, low_open=True)
-    b = _checks.array("b", b, low=0.0, low_open=True)
+    a = _checks.plausible_array("a", a, "contact_semi_axis")
+    b = _checks.plausible_array("b", b, "contact_semi_axis")
     g = _checks.positive("shear_modulus", shear_modulus)
     c = kalker_coefficients(_ratio(a, b), poisson_ratio)
 
@@ -307,11 +308,12 @@ def fastsim(
     spin : float or array_like
         Spin creepage φ (1/m).
     normal_load : float or array_like
-        N (N), > 0.
+        N (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     friction : float or array_like
-        μ > 0.
+        μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction").
     a, b : float or array_like
-        Semi-axes (m), > 0: a in the rolling direction; 0.1 ≤ a/b ≤ 10.
+        Semi-axes (m), each in [1e-5, 0.05] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "contact_semi_axis"): a in the rolling direction; 0.1 ≤ a/b ≤ 10.
     shear_modulus : float
         G (Pa); :data:`raildyn.constants.STEEL_SHEAR_MODULUS` by default.
     poisson_ratio : float
@@ -430,13 +432,13 @@ def _prepare(
     longitudinal, lateral, spin, normal_load, friction, a, b, shear_modulus, poisson_ratio, n_x, n_y, fields
 ) -> _State:
     """Check fastsim's input and compute the flexibilities, the pressure and the scaled creepages."""
-    xi = _checks.array("longitudinal", longitudinal)
-    eta = _checks.array("lateral", lateral)
-    phi = _checks.array("spin", spin)
-    load = _checks.array("normal_load", normal_load, low=0.0, low_open=True)
-    mu = _checks.array("friction", friction, low=0.0, low_open=True)
-    a = _checks.array("a", a, low=0.0, low_open=True)
-    b = _checks.array("b", b, low=0.0, low_open=True)
+    xi = _checks.array("longitudinal", longitudinal, allow_empty=False)
+    eta = _checks.array("lateral", lateral, allow_empty=False)
+    phi = _checks.array("spin", spin, allow_empty=False)
+    load = _checks.plausible_array("normal_load", normal_load, "wheel_load")
+    mu = _checks.plausible_array("friction", friction, "friction", low=0.0, low_open=True)
+    a = _checks.plausible_array("a", a, "contact_semi_axis")
+    b = _checks.plausible_array("b", b, "contact_semi_axis")
     g_mod = _checks.positive("shear_modulus", shear_modulus)
     n_x = _checks.integer("n_x", n_x, low=2, high=_CELLS_MAX)
     n_y = _checks.integer("n_y", n_y, low=2, high=_CELLS_MAX)
@@ -584,9 +586,9 @@ def fastsim_reference(
     spin : float
         φ (1/m).
     normal_load : float
-        N (N), > 0.
+        N (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     friction : float
-        μ > 0.
+        μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction").
     a, b : float
         Semi-axes (m), > 0, with 0.1 ≤ a/b ≤ 10 as for :func:`fastsim`.
     l1, l2, l3 : float

@@ -188,13 +188,24 @@ class HertzContact:
 
 
 def _curvature(name: str, radius) -> float:
-    """1/R for a signed radius (m); ``math.inf`` gives a flat direction (0)."""
+    """1/R for a signed radius (m), |R| >= 1 mm; ``math.inf`` gives a flat direction (0).
+
+    The sharpest radii of real profiles are the 13-15 mm of a rail's gauge corner and a wheel's
+    flange root; a radius below a millimetre is a slip (metres typed as kilometres, or a
+    curvature for a radius), and its curvature would overflow the formulas.
+    """
     if radius == math.inf:
         return 0.0
     r = _checks.scalar(name, radius)
-    if r == 0.0:
-        raise ValueError(f"{name} must be a non-zero radius in m (math.inf if straight), got {radius!r}")
+    if abs(r) < _MIN_PROFILE_RADIUS:
+        raise ValueError(
+            f"{name} must be a radius in m of at least {_MIN_PROFILE_RADIUS} m in size (math.inf if "
+            f"straight), got {radius!r}"
+        )
     return 1.0 / r
+
+
+_MIN_PROFILE_RADIUS = 1.0e-3  # m: below any radius of a real wheel or rail profile (see _curvature)
 
 
 def hertz_contact(
@@ -212,15 +223,17 @@ def hertz_contact(
     Parameters
     ----------
     normal_load : float
-        Normal force N (N), > 0.
+        Normal force N (N), in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_load").
     wheel_rolling_radius : float
-        Rolling radius of the wheel R₁ (m), > 0.
+        Rolling radius of the wheel R₁ (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "wheel_radius").
     wheel_transverse_radius : float
-        Radius of the wheel profile across the rail R₁′ (m), non-zero: positive when convex,
+        Radius of the wheel profile across the rail R₁′ (m), at least 1 mm in size (the
+        sharpest real profile radii, at a flange root or gauge corner, are 13-15 mm): positive when convex,
         negative when concave (a hollow tread or the flange root), ``math.inf``
         for a conical tread.
     rail_transverse_radius : float
-        Radius of the rail head across the rail R₂′ (m), non-zero, positive convex,
+        Radius of the rail head across the rail R₂′ (m), at least 1 mm in size, positive convex,
         ``math.inf`` for a flat rail. The transverse curvatures must add up to
         B = ½(1/R₁′ + 1/R₂′) > 0, and the rolling ones to A = ½(1/R₁ + 1/R₂) > 0: else
         the bodies do not touch in an ellipse.
@@ -229,7 +242,7 @@ def hertz_contact(
     poisson_ratio : float
         ν in [0, 0.5); default :data:`raildyn.constants.STEEL_POISSON_RATIO` (0.3).
     rail_rolling_radius : float, keyword
-        Radius of the rail along the track (m), non-zero (negative in a sag); ``math.inf``
+        Radius of the rail along the track (m), at least 1 mm in size (negative in a sag); ``math.inf``
         for straight track.
 
     Returns
@@ -251,8 +264,8 @@ def hertz_contact(
     >>> round(c.a * 1e3, 2), round(c.b * 1e3, 2)  # mm
     (7.16, 5.39)
     """
-    load = _checks.positive("normal_load", normal_load)
-    _checks.positive("wheel_rolling_radius", wheel_rolling_radius)
+    load = _checks.plausible("normal_load", normal_load, "wheel_load")
+    _checks.plausible("wheel_rolling_radius", wheel_rolling_radius, "wheel_radius")
     young = _checks.positive("youngs_modulus", youngs_modulus)
     nu = _checks.scalar("poisson_ratio", poisson_ratio, low=0.0, high=0.5, high_open=True)
     big_a = 0.5 * (

@@ -78,7 +78,7 @@ class WheelProfile:
         Rolling radius r(u) (m), one per ``lateral``, each in (0, 2] m (the largest railway
         wheels have a radius of about 1.1 m).
     nominal_radius : float
-        r₀ = r(0) (m), in (0, 2].
+        r₀ = r(0) (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_radius").
     """
 
     name: str
@@ -92,7 +92,7 @@ class WheelProfile:
         r = _checks.array("radius", self.radius, shape=(u.size,), low=0.0, low_open=True)
         if r.max() > _RADIUS_MAX:
             raise ValueError(f"radius must be <= {_RADIUS_MAX} m (a railway wheel), got {r.max()!r}")
-        r0 = _checks.scalar("nominal_radius", self.nominal_radius, low=0.0, high=_RADIUS_MAX, low_open=True)
+        r0 = _checks.plausible("nominal_radius", self.nominal_radius, "wheel_radius")
         object.__setattr__(self, "lateral", u)
         object.__setattr__(self, "radius", r)
         object.__setattr__(self, "nominal_radius", r0)
@@ -175,7 +175,7 @@ def conical_wheel(slope, nominal_radius=0.46, *, width=0.13) -> WheelProfile:
     slope : float
         Conicity λ (e.g. 1/20 or 1/40), ≥ 0, with λ·width/2 < r₀ so that every radius is positive.
     nominal_radius : float
-        r₀ (m), in (0, 2].
+        r₀ (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_radius").
     width : float, keyword
         Lateral extent of the tread, centred on the tape circle (m), from 1 mm to 0.5 m (a
         tread is about 0.14 m wide).
@@ -191,7 +191,7 @@ def conical_wheel(slope, nominal_radius=0.46, *, width=0.13) -> WheelProfile:
     'cone 1:40'
     """
     lam = _checks.nonnegative("slope", slope)
-    r0 = _checks.scalar("nominal_radius", nominal_radius, low=0.0, high=_RADIUS_MAX, low_open=True)
+    r0 = _checks.plausible("nominal_radius", nominal_radius, "wheel_radius")
     w = _checks.scalar("width", width, low=_WIDTH[0], high=_WIDTH[1])
     if lam * w / 2 >= r0:
         raise ValueError(
@@ -240,7 +240,8 @@ def s1002_wheel(nominal_radius=0.46) -> WheelProfile:
     Parameters
     ----------
     nominal_radius : float
-        r₀, the radius at the tape circle (m), in (0.01, 2].
+        r₀, the radius at the tape circle (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "wheel_radius").
 
     Returns
     -------
@@ -253,7 +254,7 @@ def s1002_wheel(nominal_radius=0.46) -> WheelProfile:
     28.0
     """
     # The tread falls 2.6 mm below the tape circle at its field-side end: 10 mm keeps every radius > 0.
-    r0 = _checks.scalar("nominal_radius", nominal_radius, low=0.01, high=_RADIUS_MAX, low_open=True)
+    r0 = _checks.plausible("nominal_radius", nominal_radius, "wheel_radius")
     u = np.arange(-60.0 * _MM, 68.0 * _MM + _STEP / 2, _STEP)
     return WheelProfile("S1002", u, r0 + _s1002_height_mm(-u / _MM) * _MM, r0)
 

@@ -30,6 +30,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import scalar
+from raildyn.constants import PLAUSIBLE_RANGES
 
 __all__ = [
     "MAXIMUM_FRICTION",
@@ -40,9 +41,10 @@ __all__ = [
     "wheel_climb",
 ]
 
-MAXIMUM_FRICTION = 1.0
-"""The largest friction coefficient accepted. Dry, clean wheel–rail steel reaches about 0.6;
-1 is a generous bound, beyond which the number is most likely a percentage."""
+MAXIMUM_FRICTION = PLAUSIBLE_RANGES["friction"].high
+"""The largest friction coefficient accepted, 1 (``raildyn.constants.PLAUSIBLE_RANGES["friction"]``).
+Dry, clean wheel–rail steel reaches about 0.6; 1 is a generous bound, beyond which the number is
+most likely a percentage."""
 
 
 def _values(name: str, value, *, low: float, high: float, low_open: bool = False, high_open: bool = False):

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.curving.geometry import MAXIMUM_SPEED, Curve
+from raildyn.curving.geometry import Curve
 from raildyn.stability.nonlinear import simulate
 from raildyn.wheelset import NonlinearLateral, wheel_forces
 
@@ -33,7 +33,7 @@ class CurveEntry:
     Attributes
     ----------
     speed : float
-        V, m/s (> 0).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     curve : Curve
     distance : ndarray, (m,)
         s_c, the vehicle centre's distance along the curve, m (increasing).
@@ -60,7 +60,7 @@ class CurveEntry:
     flange_force: np.ndarray
 
     def __post_init__(self):
-        _checks.positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         _checks.instance("curve", self.curve, Curve)
         m = _checks.array("distance", self.distance, ndim=1, allow_empty=False).shape[0]
         k = _checks.array("positions", self.positions, ndim=1, allow_empty=False).shape[0]
@@ -150,7 +150,7 @@ def curve_entry(model, speed, curve, *, max_step: float = 0.01, rtol: float = 1e
     (2, 168.72)
     """
     _checks.instance("model", model, NonlinearLateral)
-    V = _checks.scalar("speed", speed, low=0.0, low_open=True, high=MAXIMUM_SPEED)
+    V = _checks.speed("speed", speed)
     _checks.instance("curve", curve, Curve)
     x = model.system.wheelset_positions
     start = -x.max() - _LEAD_IN

@@ -32,7 +32,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 from scipy.special import fresnel
 
-from raildyn import _checks
+from raildyn import _checks, constants
 from raildyn._checks import nonnegative, scalar
 from raildyn.constants import GRAVITY
 
@@ -68,10 +68,9 @@ as the design cant of ballasted standard-gauge track, so that every main-line de
 passes. At 0.2 m on 2a_r = 1.5 m the roll angle is 0.134 rad and 1 − cos θ_t < 0.9 %, so the
 small-angle convention of this module stays within a per cent of the exact trigonometry."""
 
-MAXIMUM_SPEED = 200.0
-"""The largest speed accepted, m/s (720 km/h): above the wheel-on-rail record of 574.8 km/h
-(160 m/s, TGV V150, 2007), so every real train passes and a speed given in km/h by mistake
-at high speed is caught."""
+MAXIMUM_SPEED = constants.MAXIMUM_SPEED
+"""The largest speed accepted, m/s (720 km/h): the package's one speed limit,
+:data:`raildyn.constants.MAXIMUM_SPEED`, named here too for the curving functions that state it."""
 
 CANT_GRADIENT_LIMIT = 2.25e-3
 """A limiting cant gradient dD/ds of a linear cant ramp, m/m (2.25 mm/m), the value EN 13803
@@ -486,7 +485,7 @@ class Curve:
         >>> bool(np.isclose(c.unbalanced_acceleration(150.0, V), unbalanced_acceleration(V, 600.0, 0.1)))
         True
         """
-        V = scalar("speed", speed, low=0.0, high=MAXIMUM_SPEED)
+        V = _checks.speed("speed", speed, low_open=False)
         return V * V * self.curvature(s) - GRAVITY * self.cant_at(s) / self.rail_spacing
 
     def cant_gradient(self, s):

@@ -35,7 +35,6 @@ from raildyn import _checks
 from raildyn.constants import GRAVITY
 from raildyn.curving.geometry import (
     MAXIMUM_CANT,
-    MAXIMUM_SPEED,
     MINIMUM_RADIUS,
     Curve,
     balance_speed,
@@ -338,9 +337,8 @@ def _wheels(
 
 def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_angle):
     """The checked (V, R, h_t, h, tan ϑ_f) of either public function."""
-    V = np.atleast_1d(_checks.array(speed_name, speed, low=0.0, low_open=True, allow_empty=False))
+    V = np.atleast_1d(_checks.plausible_array(speed_name, speed, "speed", low_open=True, allow_empty=False))
     R = np.atleast_1d(_checks.array(radius_name, radius, low=MINIMUM_RADIUS, allow_empty=False))
-    _checks.scalar(speed_name, V.max(), high=MAXIMUM_SPEED)
     D = _checks.scalar("cant", cant, low=0.0, high=MAXIMUM_CANT)
     h = _checks.scalar("cg_height", cg_height, low=0.0, low_open=True, high=4.0)
     delta = _checks.scalar(
@@ -457,7 +455,7 @@ class CurvingMap:
 
     def __post_init__(self):
         r = _checks.array("radii", self.radii, ndim=1, low=MINIMUM_RADIUS, allow_empty=False).size
-        s = _checks.array("speeds", self.speeds, ndim=1, low=0.0, low_open=True, allow_empty=False).size
+        s = _checks.speeds("speeds", self.speeds).size
         _checks.nonnegative("cant", self.cant)
         _checks.array("unbalanced_acceleration", self.unbalanced_acceleration, shape=(r, s))
         k = _checks.array("offset", self.offset, shape=(r, s, None)).shape[2]

@@ -24,7 +24,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.contact.creep import wheelset_creepages
-from raildyn.curving.geometry import MAXIMUM_CANT, MAXIMUM_SPEED, MINIMUM_RADIUS, unbalanced_acceleration
+from raildyn.curving.geometry import MAXIMUM_CANT, MINIMUM_RADIUS, unbalanced_acceleration
 from raildyn.linear_model import as_linear_system
 from raildyn.wheelset import curve_loads, track_on_arc
 
@@ -40,7 +40,7 @@ class SteadyCurving:
     radius : float
         R, m (> 0).
     speed : float
-        V, m/s (> 0).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     cant : float
         h_t, height of the outer rail above the inner, m (≥ 0).
     unbalanced_acceleration : float
@@ -81,7 +81,7 @@ class SteadyCurving:
 
     def __post_init__(self):
         _checks.positive("radius", self.radius)
-        _checks.positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         _checks.nonnegative("cant", self.cant)
         _checks.scalar("unbalanced_acceleration", self.unbalanced_acceleration)
         labels = _checks.strings("labels", self.labels)
@@ -210,7 +210,7 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
     system = as_linear_system(model)
     if not system.wheelsets:
         raise ValueError(f"model must have wheelsets on the rails, got one with coordinates {system.labels}")
-    V = _checks.scalar("speed", speed, low=0.0, low_open=True, high=MAXIMUM_SPEED)
+    V = _checks.speed("speed", speed)
     R = _checks.scalar("radius", radius, low=MINIMUM_RADIUS)
     D = _checks.scalar("cant", cant, low=0.0, high=MAXIMUM_CANT)
     a_q = unbalanced_acceleration(V, R, D)  # the small-angle g I/(2a_r) of the linear theory

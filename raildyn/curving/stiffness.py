@@ -40,6 +40,7 @@ from functools import lru_cache
 import numpy as np
 
 from raildyn import _checks
+from raildyn.curving.geometry import MINIMUM_RADIUS
 from raildyn.curving.steady import steady_curving
 from raildyn.linear_model import _AffineFamily, as_linear_system
 from raildyn.stability.linear import _MAX_SCAN, _STATUSES, _crossings, _StateMatrices
@@ -169,7 +170,7 @@ def self_steering_curving(bogie: Bogie, radius) -> SelfSteeringCurving:
         Its wheelset's r₀, a, λ (> 0), f₁₁ and f₂₂ (> 0), its primary stiffnesses and b.
         The wheelset's spin and gravitational terms are ignored here.
     radius : float
-        R, m (> 0).
+        R, m, at least :data:`~raildyn.curving.geometry.MINIMUM_RADIUS` (50 m).
 
     Returns
     -------
@@ -182,7 +183,7 @@ def self_steering_curving(bogie: Bogie, radius) -> SelfSteeringCurving:
     [1.741, -1.741]
     """
     _bogie(bogie)
-    R = _checks.positive("radius", radius)
+    R = _checks.scalar("radius", radius, low=MINIMUM_RADIUS)
     ws = bogie.wheelset
     r0, a, b = ws.rolling_radius, ws.half_gauge, bogie.semi_wheelbase
     lam = _checks.positive("bogie.wheelset.conicity", ws.conicity)
@@ -257,9 +258,9 @@ class StabilityCurving:
             raise ValueError(
                 f"critical_speed must be inf exactly where the status is {_STATUSES[1]!r}, got {v!r:.80}"
             )
-        _checks.array("critical_speed", np.where(stable, 1.0, v), low=0.0, low_open=True)
+        _checks.plausible_array("critical_speed", np.where(stable, 1.0, v), "speed", low_open=True)
         _checks.array("angle_of_attack", self.angle_of_attack, shape=(m,))
-        _checks.positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         _checks.positive("radius", self.radius)
         _checks.nonnegative("cant", self.cant)
         _range(self.speed_range)
@@ -319,12 +320,7 @@ class StabilityCurving:
 
 
 def _range(speed_range) -> tuple[float, float]:
-    r = _checks.array("speed_range", speed_range)
-    if r.shape != (2,):
-        raise ValueError(f"speed_range must be (low, high) in m/s, got {speed_range!r}")
-    low = _checks.scalar("speed_range[0]", float(r[0]), low=0.0, low_open=True)
-    high = _checks.scalar("speed_range[1]", float(r[1]), low=low, low_open=True)
-    return low, high
+    return _checks.speed_range("speed_range", speed_range)
 
 
 def _stiffness_matrices(model, ks: np.ndarray):

@@ -243,9 +243,9 @@ class Derivation:
             (M, C, K, GK, GC), shapes (n, n) × 3 and (n, p) × 2.
         """
         if self.speed is not None:
-            speed = _checks.positive("speed", speed)
-        elif speed is not None:
-            speed = _checks.scalar("speed", speed)
+            speed = _checks.speed("speed", speed)
+        elif speed is not None:  # unused by a speed-free model, but still a speed
+            speed = _checks.speed("speed", speed, signed=True)
         values = list(self.values(model).values())
         n, p = len(self.coordinates), len(self.inputs)
         shapes = ((n, n),) * 3 + ((n, p),) * 2

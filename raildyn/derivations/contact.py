@@ -102,13 +102,15 @@ class CreepageDerivation:
         Parameters
         ----------
         speed : float
-            V (m/s), > 0.
+            V (m/s), in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         lateral_velocity, yaw_angle, yaw_rate : float
             ẏ (m/s), ψ (rad), ψ̇ (rad/s).
         rolling_radius_left, rolling_radius_right, nominal_radius : float
-            r_L, r_R, r₀ (m), > 0.
+            r_L, r_R, r₀ (m), each in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_radius").
         half_gauge : float
-            a (m), half the distance between the contact points, > 0.
+            a (m), half the distance between the contact points, in [0.15, 1.1]
+            (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+            "half_gauge").
         contact_angle_left, contact_angle_right : float
             ϑ_L, ϑ_R (rad), in [−π/2, π/2].
 
@@ -120,14 +122,14 @@ class CreepageDerivation:
         from raildyn.contact import WheelsetCreepages
 
         values = (
-            _checks.positive("speed", speed),
+            _checks.speed("speed", speed),
             _checks.scalar("lateral_velocity", lateral_velocity),
             _checks.scalar("yaw_angle", yaw_angle),
             _checks.scalar("yaw_rate", yaw_rate),
-            _checks.positive("rolling_radius_left", rolling_radius_left),
-            _checks.positive("rolling_radius_right", rolling_radius_right),
-            _checks.positive("nominal_radius", nominal_radius),
-            _checks.positive("half_gauge", half_gauge),
+            _checks.plausible("rolling_radius_left", rolling_radius_left, "wheel_radius"),
+            _checks.plausible("rolling_radius_right", rolling_radius_right, "wheel_radius"),
+            _checks.plausible("nominal_radius", nominal_radius, "wheel_radius"),
+            _checks.plausible("half_gauge", half_gauge, "half_gauge"),
             _checks.scalar("contact_angle_left", contact_angle_left, low=-np.pi / 2, high=np.pi / 2),
             _checks.scalar("contact_angle_right", contact_angle_right, low=-np.pi / 2, high=np.pi / 2),
         )

@@ -18,6 +18,7 @@ import numpy as np
 import sympy
 
 from raildyn import _checks
+from raildyn.constants import MAXIMUM_SPEED
 from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
 
 __all__ = ["coupler_chain", "loaded_train_matrices"]
@@ -184,7 +185,7 @@ def loaded_train_matrices(model, speed: float, deflection=0.01, signs=1.0) -> tu
     if n < 2:
         raise ValueError(f"model must have at least 2 vehicles (one coupler), got {n}")
     gear = model.gear
-    speed = _checks.scalar("speed", speed, low=40 * model.creep_speed, high=200.0)
+    speed = _checks.speed("speed", speed, low=40 * model.creep_speed, low_open=False)
     u = _per_coupler("deflection", deflection, n)
     low = (gear.smoothing if gear.slack > 0 else 0.0) + 2 * _STEP_EXTENSION
     high = gear.travel - 2 * _STEP_EXTENSION
@@ -198,9 +199,10 @@ def loaded_train_matrices(model, speed: float, deflection=0.01, signs=1.0) -> tu
         raise ValueError(f"signs must each be +1 (draft) or -1 (buff), got {signs!r:.80}")
     rate = sign * _LOADING_RATES * gear.transition_rate
     v = speed - np.r_[0.0, np.cumsum(rate)]
-    if v.min() < 40 * model.creep_speed or v.max() > 200.0:
+    if v.min() < 40 * model.creep_speed or v.max() > MAXIMUM_SPEED:
         raise ValueError(
-            f"speed must keep every vehicle within [{40 * model.creep_speed:.6g}, 200] m/s while the "
+            f"speed must keep every vehicle within [{40 * model.creep_speed:.6g}, {MAXIMUM_SPEED:g}] m/s "
+            f"while the "
             f"couplers load at {_LOADING_RATES * gear.transition_rate:.3g} m/s each; got {speed!r}, "
             f"which gives [{v.min():.6g}, {v.max():.6g}]"
         )

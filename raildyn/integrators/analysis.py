@@ -48,12 +48,21 @@ __all__ = [
 # The largest Δt/T analysed: beyond, (ωΔt)² passes 4e13 and the amplification matrix loses its
 # digits to rounding, while every scheme has long reached its behaviour as Δt/T → ∞.
 MAX_DT_OVER_T = 1.0e6
+# The smallest: below, each scheme's errors in period and amplitude, of order (2πΔt/T)² ≈ 4e-7 at
+# 1e-4, sink into the rounding of the amplification matrix (at 1e-6 the period error of Newmark's
+# scheme reads with the wrong sign) and a step of 1e-300 T overflows its effective matrix.
+MIN_DT_OVER_T = 1.0e-4
 
 
 def _ratios(dt_over_T) -> np.ndarray:
-    """The steps over the period as a checked 1-D array: each in (0, MAX_DT_OVER_T]."""
+    """The steps over the period as a checked 1-D array: each in [MIN_DT_OVER_T, MAX_DT_OVER_T]."""
     ratios = array("dt_over_T", np.atleast_1d(_checks.array("dt_over_T", dt_over_T)), ndim=1, low=0.0,
                    low_open=True, allow_empty=False)  # fmt: skip
+    if ratios.min() < MIN_DT_OVER_T:
+        raise ValueError(
+            f"dt_over_T must be >= {MIN_DT_OVER_T:g} (below, the schemes' errors sink into the rounding "
+            f"of the amplification matrix), got {ratios.min()!r}"
+        )
     if ratios.max() > MAX_DT_OVER_T:
         raise ValueError(
             f"dt_over_T must be <= {MAX_DT_OVER_T:g} (beyond, the amplification matrix is lost to "
@@ -134,7 +143,7 @@ def amplification_matrix(method: str, dt_over_T, damping_ratio: float = 0.0, **p
     method : str
         One of ``METHODS``.
     dt_over_T : float or array_like
-        Step over the undamped natural period, in (0, 1e6] (beyond, the amplification
+        Step over the undamped natural period, in [1e-4, 1e6] (outside, the amplification
         matrix is lost to rounding).
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
@@ -169,7 +178,7 @@ def spectral_radius(method: str, dt_over_T, damping_ratio: float = 0.0, **params
     method : str
         One of ``METHODS``.
     dt_over_T : float or array_like
-        Step over the undamped natural period, in (0, 1e6] (beyond, the amplification
+        Step over the undamped natural period, in [1e-4, 1e6] (outside, the amplification
         matrix is lost to rounding).
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
@@ -223,7 +232,7 @@ def period_elongation(method: str, dt_over_T, damping_ratio: float = 0.0, **para
     method : str
         One of ``METHODS``.
     dt_over_T : float or array_like
-        Step over the undamped natural period, in (0, 1e6] (beyond, the amplification
+        Step over the undamped natural period, in [1e-4, 1e6] (outside, the amplification
         matrix is lost to rounding).
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
@@ -267,7 +276,7 @@ def amplitude_decay(method: str, dt_over_T, damping_ratio: float = 0.0, **params
     method : str
         One of ``METHODS``.
     dt_over_T : float or array_like
-        Step over the undamped natural period, in (0, 1e6] (beyond, the amplification
+        Step over the undamped natural period, in [1e-4, 1e6] (outside, the amplification
         matrix is lost to rounding).
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
@@ -670,7 +679,7 @@ def scheme_accuracy(method: str, dt_over_T, damping_ratio: float = 0.0, **params
     method : str
         One of ``METHODS``.
     dt_over_T : array_like, shape (k,)
-        Steps over the undamped natural period, in (0, 1e6], at least one.
+        Steps over the undamped natural period, in [1e-4, 1e6], at least one.
     damping_ratio : float
         ξ of the oscillator, in [0, 1).
     **params
@@ -779,7 +788,7 @@ def convergence_study(
         Steps over the run, at least two, each in [4, 100000] (beyond, rounding rather than
         the scheme sets the error), in increasing order.
     duration : float
-        Length of the run, s, in (0, 100] (after 100 periods the free motion has decayed by
+        Length of the run, s, in [0.01, 100] (after 100 periods the free motion has decayed by
         e^-31, leaving the static deflection every scheme reproduces).
     **params
         The scheme's parameters (see :func:`amplification_matrix`).
@@ -805,7 +814,7 @@ def convergence_study(
     counts = [integer("step_counts", k, low=4, high=_STUDY_MAX_STEPS) for k in step_counts]
     if len(counts) < 2 or any(b <= a for a, b in zip(counts, counts[1:], strict=False)):
         raise ValueError(f"step_counts must hold at least two increasing counts, got {step_counts!r}")
-    duration = scalar("duration", duration, low=0.0, low_open=True, high=_STUDY_MAX_DURATION)
+    duration = scalar("duration", duration, low=0.01, high=_STUDY_MAX_DURATION)
     system = SDOF.from_modal(2 * np.pi / _STUDY_PERIOD, _STUDY_DAMPING)
     x0, v0 = _STUDY_START
     errors = []

@@ -43,10 +43,11 @@ MAX_ITERATIONS = 1000
 # below, it means nothing physical and only keeps the solver stepping finely near zero crossings.
 MIN_ATOL = 1e-20
 
-# Steps the stiff solver may take (some 30 s of work): a run that needs more is following fast
-# oscillations one by one rather than stepping over a stiff decay, which a fixed-step scheme
-# does faster; it is reported as a failure rather than left to run for hours.
-MAX_STIFF_STEPS = 20_000
+# Steps the stiff solver may take (a few seconds of work with a Python force, about 0.2 ms a step):
+# a run that needs more is following fast oscillations one by one rather than stepping over a stiff
+# decay, which a fixed-step scheme does faster; it is reported as a failure rather than left to run
+# for minutes.
+MAX_STIFF_STEPS = 10_000
 
 __all__ = ["abm", "forward_euler", "newmark_newton", "rk4", "stiff"]
 
@@ -474,7 +475,7 @@ def stiff(
     ------
     raildyn.errors.SolverError
         If scipy gives up (a step size that underflows, a state that is not finite) or the
-        run needs more than 20 000 steps (it is then following fast oscillations one by
+        run needs more than 10 000 steps (it is then following fast oscillations one by
         one, which a fixed-step scheme does faster): the reason is scipy's message, ``step``
         the steps taken, ``time`` where it stopped, and ``partial`` the history on the grid
         ``t`` up to there.

@@ -18,7 +18,7 @@ import numpy as np
 import scipy.optimize
 
 from raildyn import _checks
-from raildyn._checks import array, integer, positive, scalar
+from raildyn._checks import array, integer, positive
 from raildyn._progress import progress_bar
 from raildyn.linear_model import LinearSystem, as_linear_system
 
@@ -48,7 +48,7 @@ def eigenvalues_against_speed(model, speeds) -> np.ndarray:
     model : LinearModel or LinearSystem
         A linear model of :mod:`raildyn.wheelset` or :mod:`raildyn.vehicles`, or its system.
     speeds : array_like, shape (n_speeds,)
-        Speeds V, m/s (> 0: the creep damping divides by V).
+        Speeds V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] (the creep damping divides by V).
 
     Returns
     -------
@@ -67,7 +67,7 @@ def largest_real_part(model, speeds) -> np.ndarray:
     model : LinearModel or LinearSystem
         A linear model, or its system.
     speeds : array_like, shape (n_speeds,)
-        Speeds V, m/s (> 0).
+        Speeds V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
 
     Returns
     -------
@@ -244,7 +244,7 @@ class ModeSweep:
     coordinates: tuple
 
     def __post_init__(self):
-        s = _checks.increasing("speeds", self.speeds, low=0.0, low_open=True).size
+        s = _checks.speeds("speeds", _checks.increasing("speeds", self.speeds, low=0.0, low_open=True)).size
         k = _checks.array("eigenvalues", self.eigenvalues, shape=(s, None), dtype=complex).shape[1]
         _checks.array("frequencies_hz", self.frequencies_hz, shape=(s, k), low=0.0)
         _checks.array("damping_ratios", self.damping_ratios, shape=(s, k))
@@ -455,7 +455,7 @@ def mode_sweep(model, speeds) -> ModeSweep:
     array([6.87, 6.97])
     """
     system = as_linear_system(model)
-    V = _checks.increasing("speeds", np.atleast_1d(speeds), low=0.0, low_open=True)
+    V = _checks.speeds("speeds", _checks.increasing("speeds", np.atleast_1d(speeds), low=0.0, low_open=True))
     n = system.size
     lam, vec = np.linalg.eig(system.state_matrices(V))
     tracked = track_modes(lam, vec)
@@ -529,7 +529,7 @@ class CriticalSpeed:
             if np.shape(self.mode_shape) != (n,):
                 raise ValueError(f"mode_shape must have shape ({n},), got {np.shape(self.mode_shape)}")
             return
-        _checks.positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         _checks.nonnegative("frequency_hz", self.frequency_hz)
         if isinstance(self.eigenvalue, (str, bytes, bool)) or not isinstance(self.eigenvalue, numbers.Number):
             raise TypeError(f"eigenvalue must be a complex number, got {self.eigenvalue!r:.80}")
@@ -564,12 +564,7 @@ class CriticalSpeed:
 
 
 def _range(speed_range) -> tuple[float, float]:
-    r = _checks.array("speed_range", speed_range)
-    if r.shape != (2,):
-        raise ValueError(f"speed_range must be (low, high) in m/s, got {speed_range!r}")
-    low = scalar("speed_range[0]", float(r[0]), low=0.0, low_open=True)
-    high = scalar("speed_range[1]", float(r[1]), low=low, low_open=True)
-    return low, high
+    return _checks.speed_range("speed_range", speed_range)
 
 
 class _StateMatrices:
@@ -786,8 +781,7 @@ class CriticalSpeedMap:
         # inf where stable over the range: the one non-finite value a critical speed may take
         speeds = _checks._numbers("speeds", self.speeds)
         speeds = _checks.array("speeds", np.where(np.isposinf(speeds), 1.0, speeds), shape=(ny, nx))
-        if np.any(speeds <= 0):
-            raise ValueError(f"speeds must be > 0 m/s (or inf), got {speeds[speeds <= 0][0]!r}")
+        _checks.plausible_array("speeds", speeds, "speed", low_open=True)  # or inf, taken as 1 above
         for name in ("x_name", "y_name"):
             _checks.instance(name, getattr(self, name), str, "string")
 

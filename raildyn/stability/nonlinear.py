@@ -60,7 +60,7 @@ class NonlinearRun:
     lateral_index: int
 
     def __post_init__(self):
-        positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         n_t = _checks.time_grid("t", self.t).size
         rows = array("states", self.states, shape=(None, n_t), allow_empty=False).shape[0]
         integer("lateral_index", self.lateral_index, low=0, high=rows - 1)
@@ -128,11 +128,11 @@ def simulate(
     model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
         ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and ``lateral_index``.
     speed : float
-        V, m/s (> 0).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     initial_state : array_like, (state_size,)
         In the units of the model's state (finite).
     duration : float
-        s, in (0, 120]: two minutes of running, where hunting settles within seconds.
+        s, in [0.001, 120]: two minutes of running, where hunting settles within seconds.
     max_step : float
         Largest step, s (> 0).
     rtol : float
@@ -170,14 +170,14 @@ def simulate(
     >>> run.states.shape[0], float(run.t[-1])
     (4, 0.5)
     """
-    V = scalar("speed", speed, low=0.0, low_open=True)
+    V = _checks.speed("speed", speed)
     T = _duration("duration", duration)
     h = positive("max_step", max_step)
     r = _checks.tolerance("rtol", rtol)
     method, engine = _method(method), _engine_choice(engine)
     m = _at_speed(model, V)
     y0 = array("initial_state", initial_state, shape=(m.state_size,))
-    t = _samples(T, h)
+    t = _samples(T, h, m.state_size)
     (states,), _ = _runs([m], [V], [y0], T, h, r, method, engine, rows=None)
     return NonlinearRun(V, t, states, m.lateral_index)
 
@@ -198,14 +198,17 @@ def _engine_choice(value) -> str:
     return _checks.choice("engine", value, _ENGINES)
 
 
-def _samples(duration: float, max_step: float) -> np.ndarray:
+def _samples(duration: float, max_step: float, rows: int = 1) -> np.ndarray:
     """The uniform times at which a run is read, s: every min(max_step, 1 ms)/2.
 
     Half a millisecond reads the peak of a 15 Hz oscillation (the top of the hunting band) to
     3e-4 of its amplitude: 1 − cos(π f Δt).
     """
     spacing = 0.5 * min(max_step, 1.0e-3)
-    return np.linspace(0.0, duration, int(math.ceil(duration / spacing)) + 1)
+    n = _checks.samples(
+        "max_step", max_step, duration, spacing, per_sample=rows
+    )  # before anything is allocated
+    return np.linspace(0.0, duration, n)
 
 
 def _runs(
@@ -220,7 +223,8 @@ def _runs(
     from raildyn.integrators import _dopri  # here: numba loads only when a run needs it
     from raildyn.stability import _engine
 
-    t = _samples(duration, max_step)
+    kept = models[0].state_size if rows is None else len(rows)
+    t = _samples(duration, max_step, kept * len(models))
     packed = None
     if engine != "scipy" and method == "RK45":
         try:
@@ -260,17 +264,25 @@ def _runs(
     return list(sampled), list(ends)
 
 
+_MIN_DURATION = 1.0e-3  # s, the shortest run (and period) asked for
 _MAX_DURATION = 120.0  # s, the longest run (and period) asked for: hunting settles within seconds
 _MAX_EVALUATIONS = 1_000_000  # of a right-hand side in one integration: the bound on a run's work
+# Evaluations of the (batched) right-hand side one periodic_orbit may make in all its integrations: a
+# shooting that converges takes some 14 000 (a wheelset) to 25 000 (a bogie or a car, about 1.5 s), so
+# four times that is ample, and a hopeless guess (a period of 100 s) fails in a few seconds instead of
+# running each of its integrations up to _MAX_EVALUATIONS (about 50 s for a car).
+_SHOOTING_EVALUATIONS = 100_000
 
 
 def _duration(name: str, value) -> float:
-    """A run's length (or a period), s, in (0, 120]."""
-    return scalar(name, value, low=0.0, low_open=True, high=_MAX_DURATION)
+    """A run's length (or a period), s, in [1 ms, 120 s]: shorter, no motion of a vehicle shows
+    (its fastest modes take some 10 ms a cycle), and the measures of a run read nothing."""
+    return scalar(name, value, low=_MIN_DURATION, high=_MAX_DURATION)
 
 
 def _at_speed(model, speed: float):
     """``model.at_speed(speed)``, checked to offer ``rhs``, ``state_size`` and ``lateral_index``."""
+    _checks.not_a_class("model", model, "a nonlinear model")
     if not callable(getattr(model, "at_speed", None)):
         raise TypeError(
             "model must be a nonlinear model with at_speed(V) (NonlinearWheelset, NonlinearLateral), "
@@ -284,23 +296,29 @@ def _at_speed(model, speed: float):
     return m
 
 
-def _integrate(rhs, duration: float, y0, method: str, rtol: float, atol: float, speed: float, **options):
+def _integrate(
+    rhs, duration: float, y0, method: str, rtol: float, atol: float, speed: float, budget=None, **options
+):
     """``scipy.integrate.solve_ivp`` over (0, duration) with the failure policy: a bounded run.
 
-    At most :data:`_MAX_EVALUATIONS` evaluations of ``rhs``; a non-finite state or a failed
-    run raises :class:`SolverError`.
+    At most :data:`_MAX_EVALUATIONS` evaluations of ``rhs`` (and, with ``budget``, a one-item list
+    of the evaluations a whole task has left, at most that many: it is decremented); a non-finite
+    state or a failed run raises :class:`SolverError`.
     """
     import scipy.integrate
 
     count = 0
+    limit = _MAX_EVALUATIONS if budget is None else min(_MAX_EVALUATIONS, budget[0])
 
     def bounded(t, y):
         nonlocal count
         count += 1
-        if count > _MAX_EVALUATIONS:
+        if budget is not None:
+            budget[0] -= 1
+        if count > limit:
             raise SolverError(
-                f"the integration at V = {speed:.6g} m/s took more than {_MAX_EVALUATIONS} evaluations "
-                "of the right-hand side (a stiff motion or a tiny max_step)",
+                f"the integration at V = {speed:.6g} m/s took more than {limit} evaluations "
+                "of the right-hand side (a stiff motion, a tiny max_step, or a task's whole budget)",
                 time=float(t),
             )
         if not math.isfinite(y.sum()):
@@ -376,7 +394,7 @@ class LimitCycle:
     duration: float
 
     def __post_init__(self):
-        positive("speed", self.speed)
+        _checks.speed("speed", self.speed)
         for name in ("amplitude", "frequency_hz", "growth"):
             _checks.nonnegative(name, getattr(self, name))
         array("state", self.state, ndim=1, allow_empty=False)
@@ -478,7 +496,7 @@ def limit_cycle_amplitude(
         The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
         ``lateral_index``.
     speed : float
-        Speed V, m/s (> 0).
+        Speed V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     initial_displacement : float
         Starting lateral displacement of the first wheelset, m, either side, 0 < |y₀| ≤
         0.05 m: the centred state never moves, and no wheelset on the rails is further off
@@ -487,7 +505,7 @@ def limit_cycle_amplitude(
     initial_state : array_like, optional
         Full starting state (finite), instead of ``initial_displacement``.
     duration : float
-        Simulated time, s, in (0, 120].
+        Simulated time, s, in [0.001, 120].
     max_step : float
         Largest solver step, s (> 0).
     rtol : float
@@ -520,7 +538,7 @@ def limit_cycle_amplitude(
     >>> cycle.hunting(), round(1e3 * cycle.amplitude, 1), round(cycle.frequency_hz, 1)
     (True, 10.3, 5.7)
     """
-    V = scalar("speed", speed, low=0.0, low_open=True)
+    V = _checks.speed("speed", speed)
     T = _duration("duration", duration)
     h = positive("max_step", max_step)
     r = _checks.tolerance("rtol", rtol)
@@ -547,7 +565,7 @@ def _cycles(models, speeds, starts, duration, max_step, rtol, method, engine) ->
 
     The models share one ``lateral_index``, the row that is sampled.
     """
-    t = _samples(duration, max_step)
+    t = _samples(duration, max_step, len(models))
     rows = [models[0].lateral_index]
     runs, ends = _runs(models, speeds, starts, duration, max_step, rtol, method, engine, rows)
     return [
@@ -582,8 +600,8 @@ class BifurcationDiagram:
     hunting : ndarray of bool
         Whether the motion at each speed is a sustained oscillation (:meth:`LimitCycle.hunting`).
     nonlinear_critical_speed : float
-        Lowest speed at which a limit cycle persists, m/s (> 0), refined by bisection
-        between the grid speeds (inf if there is none on the grid).
+        Lowest speed at which a limit cycle persists, m/s, refined by bisection between the
+        grid speeds, so within their range (inf if there is none on the grid).
     threshold : float
         Amplitude of the oscillation below which the motion counts as decayed, m (> 0).
     """
@@ -605,7 +623,10 @@ class BifurcationDiagram:
         if hunting.shape != (n,):
             raise ValueError(f"hunting must have shape ({n},), got {hunting.shape}")
         if self.nonlinear_critical_speed != np.inf:  # inf: no limit cycle on the grid
-            positive("nonlinear_critical_speed", self.nonlinear_critical_speed)
+            V = np.asarray(self.speeds, dtype=float)
+            _checks.speed(
+                "nonlinear_critical_speed", self.nonlinear_critical_speed, low=V.min(), high=V.max()
+            )
         positive("threshold", self.threshold)
 
     def plot(
@@ -621,7 +642,8 @@ class BifurcationDiagram:
         ax : matplotlib Axes, optional
             Axes to draw on; new ones by default. Ignored when ``artists`` is given.
         linear_critical_speed : float, optional
-            The linear critical speed of the same vehicle, m/s (finite, > 0; from
+            The linear critical speed of the same vehicle, m/s (in (0,
+            :data:`~raildyn.constants.MAXIMUM_SPEED`]; from
             :func:`~raildyn.stability.linear.critical_speed`), drawn as a dashed line; left out if None.
         artists : dict, optional
             The artists an earlier call returned: they are moved to this diagram in place (a
@@ -641,9 +663,7 @@ class BifurcationDiagram:
         V, amp, hunt = 3.6 * self.speeds, 1e3 * self.amplitudes, self.hunting
         marks = {"nonlinear": 3.6 * self.nonlinear_critical_speed, "linear": np.nan}
         if linear_critical_speed is not None:
-            marks["linear"] = 3.6 * scalar(
-                "linear_critical_speed", linear_critical_speed, low=0.0, low_open=True
-            )
+            marks["linear"] = 3.6 * _checks.speed("linear_critical_speed", linear_critical_speed)
         if artists is None:
             ax = plots.axes_or_new(ax)
             with matplotlib.rc_context(plots.STYLE):
@@ -719,7 +739,7 @@ def bifurcation_diagram(
         a speed where the motion died away), m, either side, 0 < |y₀| ≤ 0.05 m (as for
         :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`).
     duration : float
-        Simulated time at each speed, s, in (0, 120]: at least four periods of the hunting,
+        Simulated time at each speed, s, in [0.001, 120]: at least four periods of the hunting,
         so that each quarter of the run compared holds one (:meth:`LimitCycle.hunting`).
     max_step : float
         Largest solver step, s (> 0).
@@ -881,7 +901,7 @@ class PeriodicOrbit:
     speed : float
         m/s (> 0).
     period : float
-        T, s (> 0).
+        T, s, in [0.001, 120] (as the guess of :func:`periodic_orbit`).
     state : ndarray
         A point of the orbit, where the first wheelset's lateral velocity is zero.
     amplitude : float
@@ -901,8 +921,8 @@ class PeriodicOrbit:
     residual: float
 
     def __post_init__(self):
-        positive("speed", self.speed)
-        positive("period", self.period)
+        _checks.speed("speed", self.speed)
+        _duration("period", self.period)
         n = array("state", self.state, ndim=1, allow_empty=False).size
         _checks.nonnegative("amplitude", self.amplitude)
         array("multipliers", self.multipliers, shape=(n,), dtype=complex)
@@ -941,13 +961,13 @@ def periodic_orbit(
         The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
         ``lateral_index``.
     speed : float
-        Speed V, m/s (> 0).
+        Speed V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     state : array_like, shape (state_size,)
         Guess of a point on the orbit (for instance the ``state`` at the end of a
         :func:`limit_cycle_amplitude` run), in the units of the model's state: finite, not
         all zero (the centred state is the trivial solution).
     period : float
-        Guess of T, s, in (0, 120] (1 / ``frequency_hz`` of the settled motion).
+        Guess of T, s, in [0.001, 120] (1 / ``frequency_hz`` of the settled motion).
     tol : float
         Convergence on the relative size of the Newton step (dimensionless, > 0).
     max_iter : int
@@ -964,15 +984,17 @@ def periodic_orbit(
     Raises
     ------
     SolverError
-        If an integration fails (see :func:`~raildyn.stability.nonlinear.simulate`) or Newton's
-        method does not converge in ``max_iter`` steps.
+        If an integration fails (see :func:`~raildyn.stability.nonlinear.simulate`), Newton's
+        method does not converge in ``max_iter`` steps, or the integrations together take more
+        than 100 000 evaluations of the right-hand side (four times what a converging shooting
+        needs: the work is bounded to a few seconds).
 
     Notes
     -----
     The centred state is a trivial solution of the same equations: a guess
     far from any cycle may converge to it (amplitude 0).
     """
-    V = scalar("speed", speed, low=0.0, low_open=True)
+    V = _checks.speed("speed", speed)
     T = _duration("period", period)
     positive("tol", tol)
     iterations = integer("max_iter", max_iter, low=1, high=100)
@@ -991,7 +1013,8 @@ def periodic_orbit(
 
     section.direction = -1.0  # a maximum of the lateral displacement
     # Move the guess along its own trajectory to the section ẏ = 0, so that it meets the phase condition.
-    sol = _integrate(m.rhs, 2.0 * T, x, "DOP853", rtol, 1e-12, V, events=section)
+    budget = [_SHOOTING_EVALUATIONS]  # the whole shooting's work, shared by every integration below
+    sol = _integrate(m.rhs, 2.0 * T, x, "DOP853", rtol, 1e-12, V, budget=budget, events=section)
     if sol.t_events[0].size:
         x = sol.y_events[0][0].copy()
     x[iv] = 0.0
@@ -1008,7 +1031,7 @@ def periodic_orbit(
         def rhs(t, z):
             return m.rhs(t, z.reshape(n, k)).reshape(-1)
 
-        sol = _integrate(rhs, t_end, starts.reshape(-1), "DOP853", rtol, 1e-12, V)
+        sol = _integrate(rhs, t_end, starts.reshape(-1), "DOP853", rtol, 1e-12, V, budget=budget)
         return sol.y[:, -1].reshape(n, k)
 
     # Finite-difference steps relative to each entry, with a floor so that an entry near 0 (such

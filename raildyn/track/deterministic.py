@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn.constants import MAXIMUM_SPEED
 
 __all__ = [
     "RAIL_LENGTH",
@@ -40,10 +41,25 @@ __all__ = [
 ]
 
 RAIL_LENGTH = 11.9  # m; the 39-ft rail of North American jointed track (Garg & Dukkipati 1984, ch. 3)
-# m/s: the speed a rate in time may be asked at, six times the rail speed record (160 m/s), so that
-# V² d²z/dx² stays finite for any finite profile.
-_MAX_SPEED = 1000.0
+# m/s: the speed a rate in time may be asked at: the package's one speed limit.
+_MAX_SPEED = MAXIMUM_SPEED
 _ARRANGEMENTS = ("staggered", "in_phase")
+
+
+def _rail_length(value) -> float:
+    """L, m, in [1, 150] (``PLAUSIBLE_RANGES["rail_length"]``)."""
+    return _checks.plausible("rail_length", value, "rail_length")
+
+
+def _along(name: str, value, high=None) -> float:
+    """A length along the track, m, in [1 mm, 1 km] (``PLAUSIBLE_RANGES["track_length"]``), at most
+    ``high``."""
+    return _checks.plausible(name, value, "track_length", high=high)
+
+
+def _size(name: str, value, *, signed: bool = False) -> float:
+    """A dip's depth in [0, 0.1] m, or a height or amplitude within ±0.1 m (``signed``)."""
+    return _checks.plausible(name, value, "irregularity", signed=signed)
 
 
 def _derivative(value) -> int:
@@ -51,8 +67,8 @@ def _derivative(value) -> int:
 
 
 def _vehicle_speed(speed) -> float:
-    """A vehicle speed for a view in time, 0 < V <= 1000 m/s (``_MAX_SPEED``)."""
-    return _checks.scalar("speed", speed, low=0.0, low_open=True, high=_MAX_SPEED)
+    """A vehicle speed for a view in time, 0 < V <= MAXIMUM_SPEED (200 m/s)."""
+    return _checks.speed("speed", speed)
 
 
 def _speed(speed) -> float | None:
@@ -82,11 +98,14 @@ def dipped_joints(
     x : array_like
         Distance along the track, m; any shape, not empty.
     depth : float
-        h_j >= 0, depth of the dip at each joint, m.
+        h_j, depth of the dip at each joint, m, in [0, 0.1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "irregularity").
     half_width : float
-        ℓ_j, half the length of track each dip spans, m, 0 < ℓ_j <= L/2.
+        ℓ_j, half the length of track each dip spans, m, in [0.001, L/2]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length").
     rail_length : float
-        L > 0, distance between joints, m (default 11.9).
+        L, distance between joints, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "rail_length"; default 11.9).
     offset : float
         Position of one joint, m (any real).
     derivative : {0, 1, 2}
@@ -94,8 +113,8 @@ def dipped_joints(
         taken as the mean of its two one-sided values (0); the curvature returned
         is the regular part, without the Dirac term of the slope jump 4h_j/ℓ_j.
     speed : float, optional
-        V, m/s, 0 < V <= 1000 (six times the rail speed record, so that the rates
-        stay finite): return the rates met in time instead, dz/dt = V dz/dx (m/s)
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: return the rates met
+        in time instead, dz/dt = V dz/dx (m/s)
         or d²z/dt² = V² d²z/dx² (m/s²).
 
     Returns
@@ -109,9 +128,9 @@ def dipped_joints(
     [-0.01, -0.0025, 0.0]
     """
     x = _checks.array("x", x, allow_empty=False)
-    delta = _checks.nonnegative("depth", depth)
-    L = _checks.positive("rail_length", rail_length)
-    a = _checks.scalar("half_width", half_width, low=0.0, low_open=True, high=L / 2)
+    delta = _size("depth", depth)
+    L = _rail_length(rail_length)
+    a = _along("half_width", half_width, high=L / 2)
     offset = _checks.scalar("offset", offset)
     order = _derivative(derivative)
     speed = _speed(speed)
@@ -231,17 +250,19 @@ def jointed_track(
     x : array_like
         Distance along the track, m; any shape, not empty.
     depth : float
-        h_j >= 0, depth of each dip, m.
+        h_j, depth of each dip, m, in [0, 0.1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "irregularity").
     half_width : float
-        ℓ_j, half the length of track each dip spans, m, 0 < ℓ_j <= L/2.
+        ℓ_j, half the length of track each dip spans, m, in [0.001, L/2]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length").
     rail_length : float
-        L > 0, m (default 11.9).
+        L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length"; default 11.9).
     arrangement : {"staggered", "in_phase"}
         Joints of the right rail half a rail length along, or opposite those of the left.
     derivative : {0, 1, 2}
         Profiles (m), slopes or curvatures (1/m), as for :func:`dipped_joints`.
     speed : float, optional
-        V, m/s, 0 < V <= 1000: rates in time instead, as for :func:`dipped_joints`.
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: rates in time instead, as for
+        :func:`dipped_joints`.
 
     Returns
     -------
@@ -255,7 +276,7 @@ def jointed_track(
     [-0.01, 0.01]
     """
     _checks.choice("arrangement", arrangement, _ARRANGEMENTS)
-    L = _checks.positive("rail_length", rail_length)
+    L = _rail_length(rail_length)
     left = dipped_joints(x, depth, half_width, rail_length=L, derivative=derivative, speed=speed)
     shift = 0.5 * L if arrangement == "staggered" else 0.0
     right = dipped_joints(
@@ -275,15 +296,16 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
     x : array_like
         Distance, m; any shape, not empty.
     height : float
-        h, m (any sign).
+        h, m, of either sign, within ±0.1 (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "irregularity").
     length : float
-        ℓ > 0, m.
+        ℓ, m, in [0.001, 1000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length").
     position : float
         x₀, start of the bump, m (any real).
     derivative : {0, 1, 2}
         z (m), dz/dx or d²z/dx² (1/m).
     speed : float, optional
-        V, m/s, 0 < V <= 1000: return the rates met in time instead, dz/dt = V dz/dx
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: return the rates met in
+        time instead, dz/dt = V dz/dx
         (m/s) or d²z/dt² = V² d²z/dx² (m/s²). The largest dz/dt is πhV/ℓ.
 
     Returns
@@ -299,8 +321,8 @@ def bump(x, height: float, length: float, *, position: float = 0.0, derivative=0
     0.628319
     """
     x = _checks.array("x", x, allow_empty=False)
-    h = _checks.scalar("height", height)
-    ell = _checks.positive("length", length)
+    h = _size("height", height, signed=True)
+    ell = _along("length", length)
     x0 = _checks.scalar("position", position)
     order = _derivative(derivative)
     speed = _speed(speed)
@@ -326,15 +348,16 @@ def sinusoid(
     x : array_like
         Distance, m; any shape, not empty.
     amplitude : float
-        A, m (any sign).
+        A, m, of either sign, within ±0.1 (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "irregularity").
     wavelength : float
-        L_w > 0, m.
+        L_w, m, in [0.001, 1000] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length").
     phase : float
         φ, rad (any real).
     derivative : {0, 1, 2}
         z (m), dz/dx or d²z/dx² (1/m).
     speed : float, optional
-        V, m/s, 0 < V <= 1000: return the rates met in time instead (m/s, m/s²).
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: return the rates met in
+        time instead (m/s, m/s²).
 
     Returns
     -------
@@ -347,8 +370,8 @@ def sinusoid(
     0.0015707963267948967
     """
     x = _checks.array("x", x, allow_empty=False)
-    A = _checks.scalar("amplitude", amplitude)
-    lam = _checks.positive("wavelength", wavelength)
+    A = _size("amplitude", amplitude, signed=True)
+    lam = _along("wavelength", wavelength)
     phi = _checks.scalar("phase", phase)
     order = _derivative(derivative)
     speed = _speed(speed)
@@ -367,9 +390,11 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     Parameters
     ----------
     speed : float
-        V, m/s, > 0.
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     rail_length : float
-        L, m, > 0 (default 11.9).
+        L, m, the rail length or any wavelength, in [0.001, 1000]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length";
+        default 11.9).
 
     Returns
     -------
@@ -381,7 +406,7 @@ def passing_frequency(speed: float, rail_length: float = RAIL_LENGTH) -> float:
     >>> round(passing_frequency(119.0 / 3.6), 4)  # 119 km/h over 11.9 m rails
     2.7778
     """
-    return _checks.positive("speed", speed) / _checks.positive("rail_length", rail_length)
+    return _vehicle_speed(speed) / _along("rail_length", rail_length)
 
 
 def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmonic: int = 1) -> float:
@@ -396,14 +421,17 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     frequency : float
         f, Hz, > 0.
     rail_length : float
-        L, m, > 0 (default 11.9).
+        L, m, the rail length or any wavelength, in [0.001, 1000]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "track_length";
+        default 11.9).
     harmonic : int
         n >= 1.
 
     Returns
     -------
     float
-        V, m/s.
+        V, m/s, at most :data:`~raildyn.constants.MAXIMUM_SPEED` (a frequency no train could
+        meet that fast is refused).
 
     Examples
     --------
@@ -411,9 +439,16 @@ def passing_speed(frequency: float, rail_length: float = RAIL_LENGTH, *, harmoni
     12.85
     """
     f = _checks.positive("frequency", frequency)
-    L = _checks.positive("rail_length", rail_length)
+    L = _along("rail_length", rail_length)
     n = _checks.integer("harmonic", harmonic, low=1)
-    return f * L / n
+    V = f * L / n
+    if not V <= MAXIMUM_SPEED:
+        raise ValueError(
+            f"frequency = {frequency!r} Hz would be met at V = fL/n = {V:.4g} m/s, above the "
+            f"{MAXIMUM_SPEED:g} m/s of raildyn.constants.MAXIMUM_SPEED: no train meets it (a frequency "
+            f"in rad/s, or rail_length = {rail_length!r} m in millimetres?)"
+        )
+    return V
 
 
 def harmonic_amplitudes(one_period, count: int) -> np.ndarray:

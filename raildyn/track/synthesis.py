@@ -491,7 +491,7 @@ def spatial_to_temporal(psd_values, wavenumber, speed) -> rv.Spectrum:
     >>> s.omega.tolist(), s.psd.tolist()
     ([0.0, 10.0], [0.2, 0.2])
     """
-    V = _checks.positive("speed", speed)
+    V = _checks.speed("speed", speed)
     W = _checks.time_grid("wavenumber", wavenumber)
     if W[0] < 0:
         raise ValueError(f"wavenumber must be >= 0 rad/m, got {W[0]!r}")
@@ -521,7 +521,7 @@ def axle_delays(axle_positions, speed) -> np.ndarray:
     >>> axle_delays([0.0, 2.5, 17.5], 25.0).tolist()
     [0.0, 0.1, 0.7]
     """
-    V = _checks.positive("speed", speed)
+    V = _checks.speed("speed", speed)
     d = _checks.array("axle_positions", axle_positions, ndim=1)
     if d.size == 0:
         raise ValueError("axle_positions must hold at least one axle, got an empty array")

@@ -50,13 +50,16 @@ class DraftGear:
     Parameters
     ----------
     slack : float
-        Total free play of the coupling, m (>= 0); half on each side of centre.
+        Total free play of the coupling, m, in [0, 0.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "coupler_travel"); half on each
+        side of centre.
     loading_stiffness : float
         Stiffness while the gear is being compressed further, N/m (> 0).
     unloading_stiffness : float
         Stiffness while it recovers, N/m; 0 < value <= ``loading_stiffness``.
     travel : float
-        Draft-gear travel before it goes solid, m (> 0).
+        Draft-gear travel before it goes solid, m, in (0, 0.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "coupler_travel").
     solid_stiffness : float
         Extra stiffness once the travel is used up, N/m (>= 0).
     smoothing : float
@@ -81,16 +84,15 @@ class DraftGear:
     transition_rate: float = 0.02
 
     def __post_init__(self):
-        _checks.nonnegative("slack", self.slack)
-        _checks.positive("loading_stiffness", self.loading_stiffness)
-        _checks.scalar(
-            "unloading_stiffness",
-            self.unloading_stiffness,
-            low=0.0,
-            high=self.loading_stiffness,
-            low_open=True,
-        )
-        _checks.positive("travel", self.travel)
+        _checks.plausible("slack", self.slack, "coupler_travel")
+        k = _checks.positive("loading_stiffness", self.loading_stiffness)
+        _checks.positive("unloading_stiffness", self.unloading_stiffness)
+        if self.unloading_stiffness > k:
+            raise ValueError(
+                f"unloading_stiffness must be at most loading_stiffness = {k!r} N/m (the gear recovers on "
+                f"a softer branch), got {self.unloading_stiffness!r}"
+            )
+        _checks.plausible("travel", self.travel, "coupler_travel", low_open=True)
         _checks.nonnegative("solid_stiffness", self.solid_stiffness)
         _checks.positive("smoothing", self.smoothing)
         if self.slack > 0 and self.smoothing >= self.slack / 2:

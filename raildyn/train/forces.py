@@ -41,6 +41,12 @@ DYNAMIC_BRAKE_PEAK_SPEED = 8.0
 #: (72 km/h); assumed, as ``DYNAMIC_BRAKE_PEAK_SPEED``.
 DYNAMIC_BRAKE_FADE_SPEED = 20.0
 
+# Fastest brake-pipe signal, m/s: the speed of sound in air at 20 °C; a pressure wave in the pipe
+# cannot outrun it (emergency applications travel at about 250-290 m/s {cole2006}).
+_SOUND_SPEED = 343.0
+# Slowest: a signal slower than 10 m/s (36 km/h) would be outrun by the train it brakes.
+_SLOWEST_SIGNAL = 10.0
+
 
 def tractive_effort(speed, notch, max_tractive_effort: float, rail_power: float):
     """Tractive effort of a locomotive, N.
@@ -71,7 +77,7 @@ def tractive_effort(speed, notch, max_tractive_effort: float, rail_power: float)
     >>> round(tractive_effort(20.0, 4, 500e3, 2e6) / 1e3)  # half of 2 MW / 20 m/s
     50
     """
-    v = np.abs(_checks.array("speed", speed, allow_empty=False))
+    v = np.abs(_checks.plausible_array("speed", speed, "speed", signed=True, allow_empty=False))
     notch = _checks.scalar("notch", notch, low=0, high=NOTCHES)
     f_max = _checks.nonnegative("max_tractive_effort", max_tractive_effort)
     power = _checks.nonnegative("rail_power", rail_power)
@@ -97,11 +103,12 @@ def dynamic_brake_force(speed, level, max_force: float, peak_speed=None, fade_sp
     max_force : float
         Largest retarding force at full level, N (>= 0).
     peak_speed : float, optional
-        Corner speed where the force reaches its maximum, m/s (> 0); default
-        ``DYNAMIC_BRAKE_PEAK_SPEED``.
+        Corner speed where the force reaches its maximum, m/s, in (0,
+        :data:`~raildyn.constants.MAXIMUM_SPEED`]; default ``DYNAMIC_BRAKE_PEAK_SPEED``.
     fade_speed : float, optional
         Corner speed above which the force falls at constant power, m/s
-        (>= ``peak_speed``); default ``DYNAMIC_BRAKE_FADE_SPEED``.
+        (>= ``peak_speed``, at most :data:`~raildyn.constants.MAXIMUM_SPEED`); default
+        ``DYNAMIC_BRAKE_FADE_SPEED``.
 
     Returns
     -------
@@ -113,12 +120,12 @@ def dynamic_brake_force(speed, level, max_force: float, peak_speed=None, fade_sp
     >>> dynamic_brake_force([4.0, 12.0, 40.0], 1.0, 300e3) / 1e3
     array([150., 300., 150.])
     """
-    v = np.abs(_checks.array("speed", speed, allow_empty=False))
+    v = np.abs(_checks.plausible_array("speed", speed, "speed", signed=True, allow_empty=False))
     level = _checks.scalar("level", level, low=0.0, high=1.0)
     f = _checks.nonnegative("max_force", max_force)
-    peak = _checks.positive("peak_speed", DYNAMIC_BRAKE_PEAK_SPEED if peak_speed is None else peak_speed)
-    fade = _checks.scalar(
-        "fade_speed", DYNAMIC_BRAKE_FADE_SPEED if fade_speed is None else fade_speed, low=peak
+    peak = _checks.speed("peak_speed", DYNAMIC_BRAKE_PEAK_SPEED if peak_speed is None else peak_speed)
+    fade = _checks.speed(
+        "fade_speed", DYNAMIC_BRAKE_FADE_SPEED if fade_speed is None else fade_speed, low=peak, low_open=False
     )
     shape = np.minimum(v / peak, np.minimum(1.0, fade / np.maximum(v, 1e-12)))
     out = level * f * shape
@@ -134,9 +141,11 @@ class AirBrake:
     start : float
         Time of the application at the front, s (>= 0).
     propagation_speed : float
-        Speed of the brake-pipe signal along the train, m/s (> 0). Emergency
+        Speed of the brake-pipe signal along the train, m/s, in [10, 343]. Emergency
         applications propagate at roughly 250–290 m/s, service ones more slowly
-        {cole2006}.
+        {cole2006}; a pressure signal in air cannot outrun sound (343 m/s at 20 °C), so a
+        faster one is a slip (e.g. km/h typed for m/s), and one slower than 10 m/s would be
+        outrun by the train.
     build_up_time : float
         Time constant of the brake-cylinder pressure rise at each vehicle, s (> 0).
     level : float
@@ -150,7 +159,7 @@ class AirBrake:
 
     def __post_init__(self):
         _checks.nonnegative("start", self.start)
-        _checks.positive("propagation_speed", self.propagation_speed)
+        _checks.scalar("propagation_speed", self.propagation_speed, low=_SLOWEST_SIGNAL, high=_SOUND_SPEED)
         _checks.positive("build_up_time", self.build_up_time)
         _checks.scalar("level", self.level, low=0.0, high=1.0, low_open=True)
 

@@ -25,6 +25,7 @@ force becomes non-finite; a ``TrainRun`` that is returned is a success. The resu
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -54,6 +55,9 @@ METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 _MAX_DURATION = 86_400.0
 # Most output times of a run (its arrays are vehicles x samples).
 _MAX_SAMPLES = 1_000_000
+# Largest regularisation speed v_c of the retarding forces' tanh, m/s (3.6 km/h): a smoothing of the
+# sign of v, far below running speeds (the default is 0.05 m/s).
+_MAX_CREEP_SPEED = 1.0
 # Steps of the compiled integrator between two updates of the progress bar: some 0.1 s of a
 # 150-wagon run, so the bar moves smoothly and the return to Python costs nothing measurable.
 _CHUNK = 2000
@@ -87,7 +91,8 @@ class TrainModel:
     davis_form : {"original", "modified"}
         Form of the Davis resistance formula.
     creep_speed : float
-        v_c of the ``tanh`` regularisation of the retarding forces, m/s (> 0).
+        v_c of the ``tanh`` regularisation of the retarding forces, m/s, in (0, 1]: a
+        smoothing of the sign of v, far below running speeds (1 m/s is already 3.6 km/h).
     front_start : float
         Route position of the front coupler face at t = 0, m.
     resistance : bool
@@ -119,7 +124,7 @@ class TrainModel:
         _checks.choice("davis_form", self.davis_form, ("original", "modified"))
         _checks.scalar("notch", self.notch, low=0, high=NOTCHES)
         _checks.scalar("dynamic_brake", self.dynamic_brake, low=0.0, high=1.0)
-        _checks.positive("creep_speed", self.creep_speed)
+        _checks.scalar("creep_speed", self.creep_speed, low=0.0, low_open=True, high=_MAX_CREEP_SPEED)
         _checks.scalar("front_start", self.front_start)
         c = self.consist
         kinds = [v.kind for v in c.vehicles]
@@ -205,6 +210,22 @@ class TrainModel:
         """``y`` as a finite float array of shape (2n,) or (2n, k); ValueError otherwise."""
         m = 2 * self.size
         return _checks.array(name, y, shape=(m,) if np.ndim(y) == 1 else (m, None), allow_empty=False)
+
+    @staticmethod
+    def _finite(dydt, y):
+        """``dydt`` if finite; else a ValueError naming the state ``y`` whose sizes overflow the forces.
+
+        An integrator's trial state may leave the laws' domain (couplers parted, speeds beyond the
+        train's) and still give a finite derivative, which is returned; only sizes at which a force
+        overflows (the solid draft gear at 2.5e8 N/m, the v² of the resistance) are refused.
+        """
+        if math.isfinite(dydt.sum()):
+            return dydt
+        raise ValueError(
+            "y holds sizes at which the forces overflow (coupler extensions or speeds beyond double "
+            "precision once multiplied by the stiffnesses and resistances): largest |y| = "
+            f"{np.abs(y).max()!r}"
+        )
 
     def _vehicle_array(self, name, value):
         """``value`` as a finite float array with the vehicle axis first: (n,) or (n, k)."""
@@ -381,7 +402,8 @@ class TrainModel:
         Raises
         ------
         ValueError
-            If ``y`` does not have 2n rows or holds a non-finite number.
+            If ``y`` does not have 2n rows, holds a non-finite number, or holds sizes at which the
+            forces overflow (then no derivative is a number).
 
         Notes
         -----
@@ -399,9 +421,9 @@ class TrainModel:
         """
         t = _checks.scalar("t", t)
         y = self._state(y)
-        if y.ndim == 1:
-            return self._rhs_one(t, y)
-        return self._rhs_numpy(t, y)
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused by _finite
+            dydt = self._rhs_one(t, y) if y.ndim == 1 else self._rhs_numpy(t, y)
+        return self._finite(dydt, y)
 
     def _rhs_one(self, t, y):
         """The compiled right-hand side of one state; ``y`` must already be checked."""
@@ -423,7 +445,9 @@ class TrainModel:
             Time derivative of the state: m/s, m/s, m/s².
         """
         t = _checks.scalar("t", t)
-        return self._rhs_numpy(t, self._state(y))
+        y = self._state(y)
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused by _finite
+            return self._finite(self._rhs_numpy(t, y), y)
 
     def _rhs_numpy(self, t, y):
         n = self.size

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from raildyn import _checks
-from raildyn.constants import GRAVITY, MPH
+from raildyn.constants import GRAVITY, MAXIMUM_SPEED, MPH
 from raildyn.train.vehicles import FT, LB, LBF
 
 __all__ = [
@@ -52,9 +52,9 @@ _MAX_GRADE = 0.15
 # than any railway curve (tram curves go down to about 15 m); the AREA formula and the coupler
 # geometry are meant for curves far gentler than this.
 _MAX_CURVATURE = 0.1
-# Fastest speed the resistance and traction formulas take, m/s: 200 (720 km/h), above the
-# wheel-rail speed record (574.8 km/h, 160 m/s, 2007); Davis's formula was fitted far below it.
-_MAX_SPEED = 200.0
+# Fastest speed the resistance and traction formulas take, m/s: the package's one limit (720 km/h),
+# above the wheel-rail speed record; Davis's formula was fitted far below it.
+_MAX_SPEED = MAXIMUM_SPEED
 
 
 def _bounded(name, value, limit, unit):
@@ -100,11 +100,15 @@ def davis_resistance(
         Speed, m/s (``units="SI"``) or mph (``units="US"``); its sign is ignored; at most
         200 m/s (447 mph), above the wheel–rail speed record, in size.
     mass : float or array
-        Mass, kg (SI) or weight in short tons (US); > 0.
+        Mass of one vehicle, kg (SI) or weight in short tons (US), in [10, 1e6] kg
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "mass").
     axles : int or array
         Number of axles, whole numbers >= 1.
     frontal_area : float or array
-        m² (SI) or ft² (US), > 0; used by the original form only.
+        m² (SI) or ft² (US), in [0.5, 30] m² (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "frontal_area");
+        used by the original form
+        only.
     kind : {"freight", "locomotive", "passenger"}
         Original-form coefficients.
     form : {"original", "modified"}
@@ -135,6 +139,9 @@ def davis_resistance(
     a = _checks.array("frontal_area", frontal_area, low=0.0, low_open=True, allow_empty=False)
     if drag_coefficient is not None:
         _checks.nonnegative("drag_coefficient", drag_coefficient)
+    # One vehicle's mass and frontal area, each in its plausible range (in SI: the US figures converted).
+    _checks.plausible_array("mass", m if units == "SI" else m * SHORT_TON, "mass")
+    _checks.plausible_array("frontal_area", a if units == "SI" else a * FT**2, "frontal_area")
     if units == "SI":
         v, tons, area = v / MPH, m / SHORT_TON, a / FT**2
     else:

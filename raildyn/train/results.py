@@ -146,7 +146,7 @@ class TrainRun:
 
     def __post_init__(self):
         t = _checks.array("t", self.t, ndim=1, allow_empty=False)
-        speed = _checks.array("speed", self.speed, ndim=2, allow_empty=False)
+        speed = _checks.plausible_array("speed", self.speed, "speed", signed=True, ndim=2, allow_empty=False)
         n, m = speed.shape
         if m != t.size:
             raise ValueError(f"speed must have one column per time, shape ({n}, {t.size}), got {speed.shape}")

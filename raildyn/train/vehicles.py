@@ -38,25 +38,31 @@ class Vehicle:
     name : str
         Name of the vehicle type, as :func:`make_consist` looks it up.
     mass : float
-        Mass on the rails, kg (> 0).
+        Mass on the rails, kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass").
     length : float
-        Length over the coupler pulling faces, m (> 0).
+        Length over the coupler pulling faces, m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
     axles : int
         Number of axles (>= 1).
     frontal_area : float
-        Cross-section used by the Davis air-resistance term, m² (> 0).
+        Cross-section used by the Davis air-resistance term, m², in [0.5, 30]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "frontal_area").
     truck_centres : float
-        Distance between the truck (bogie) centres, m; > 0 and < ``length``.
+        Distance between the truck (bogie) centres, m, in [0.01, 100] and < ``length``.
     kind : {"locomotive", "freight", "passenger"}
         Selects the Davis coefficients of the original form.
     max_tractive_effort : float
-        Adhesion-limited starting tractive effort at full notch, N (0 for a wagon).
+        Adhesion-limited starting tractive effort at full notch, N, in [0, 2e6]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "traction_force"; 0 for a wagon).
     rail_power : float
-        Power at the rail at full notch, W (0 for a wagon).
+        Power at the rail at full notch, W, in [0, 2e7] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "power"; 0 for a wagon).
     max_dynamic_brake : float
-        Largest dynamic-brake retarding force, N (0 for a wagon).
+        Largest dynamic-brake retarding force, N, in [0, 2e6] ("traction_force"; 0 for a wagon).
     brake_force : float
-        Retarding force of a full emergency air-brake application, N (>= 0).
+        Retarding force of a full emergency air-brake application, N, in [0, 2e6] ("traction_force").
     """
 
     name: str
@@ -72,17 +78,20 @@ class Vehicle:
     brake_force: float = 0.0
 
     def __post_init__(self):
-        _checks.positive("mass", self.mass)
-        _checks.positive("length", self.length)
+        _checks.plausible("mass", self.mass, "mass")
+        _checks.plausible("length", self.length, "vehicle_length")
         _checks.integer("axles", self.axles, low=1)
-        _checks.positive("frontal_area", self.frontal_area)
-        _checks.scalar(
-            "truck_centres", self.truck_centres, low=0.0, high=self.length, low_open=True, high_open=True
-        )
+        _checks.plausible("frontal_area", self.frontal_area, "frontal_area")
+        _checks.plausible("truck_centres", self.truck_centres, "vehicle_length")
+        if self.truck_centres >= self.length:
+            raise ValueError(
+                f"truck_centres must be less than length = {self.length!r} m, got {self.truck_centres!r}"
+            )
         _checks.instance("name", self.name, str, "string")
         _checks.choice("kind", self.kind, DAVIS_KINDS)
-        for name in ("max_tractive_effort", "rail_power", "max_dynamic_brake", "brake_force"):
-            _checks.nonnegative(name, getattr(self, name))
+        for name in ("max_tractive_effort", "max_dynamic_brake", "brake_force"):
+            _checks.plausible(name, getattr(self, name), "traction_force")
+        _checks.plausible("rail_power", self.rail_power, "power")
 
     @property
     def weight(self) -> float:

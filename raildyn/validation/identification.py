@@ -592,7 +592,7 @@ def weigh_in_motion(
         Distances between consecutive axles, m, each in (0, 1000]: the values when ``fit_spacings`` is
         False, the start otherwise (its length sets the number of axles, a − 1 >= 0).
     fibre_distance : float
-        c, m, in (0, 100]: the distance from the neutral axis to the gauge; loads scale as EI/c, so
+        c, m, in [0.01, 100]: the distance from the neutral axis to the gauge; loads scale as EI/c, so
         with an unknown section c = 1 gives loads in units of EI/c (calibrate them by a known
         train).
     speed : float, optional
@@ -636,11 +636,11 @@ def weigh_in_motion(
     gaps = _checks.array("spacings", spacings, ndim=1, low=0.0, low_open=True)
     if gaps.size and gaps.max() > 1000.0:
         raise ValueError(f"spacings must be at most 1000 m each, got {gaps.max()!r}")
-    c = _checks.scalar("fibre_distance", fibre_distance, low=0.0, high=100.0, low_open=True)
+    c = _checks.scalar("fibre_distance", fibre_distance, low=0.01, high=100.0)
     fit_gaps = _checks.flag("fit_spacings", fit_spacings)
     level = _confidence(confidence)
     if speed is not None:
-        speed = _checks.scalar("speed", speed, low=0.0, high=200.0, low_open=True)
+        speed = _checks.speed("speed", speed)
     n_axles, n_sens = gaps.size + 1, pos.size
     scale = c / beam.flexural_rigidity
     L = beam.span
@@ -737,9 +737,7 @@ class CoastDownFit(ParameterFit):
         ndarray
             Shape of ``speed``.
         """
-        v = _checks.array("speed", speed, allow_empty=False)
-        if np.abs(v).max() > 1000.0:
-            raise ValueError(f"speed must be within ±1000 m/s, got {v.flat[np.argmax(np.abs(v))]!r}")
+        v = _checks.plausible_array("speed", speed, "speed", signed=True, allow_empty=False)
         a, b, c = self.estimate[:3]
         return a + b * v + c * v**2
 
@@ -779,9 +777,11 @@ def coast_down(time, speed, mass: float, *, confidence: float = 0.95) -> CoastDo
     time : array_like, (n,)
         t, s: uniformly spaced and increasing, more than 4 samples.
     speed : array_like, (n,)
-        v(t), m/s, > 0 (the record must end before the train stops).
+        v(t), m/s, > 0 (the record must end before the train stops), lower at the end than at the
+        start (a coasting train slows down).
     mass : float
-        m, kg, in (0, 1e9] (a million tonnes: beyond any train).
+        m, kg, in [10, 1e9] (from the lightest vehicle body, PLAUSIBLE_RANGES["mass"], to a million
+        tonnes: beyond any train).
     confidence : float
         Level of the intervals, in (0, 1); default 0.95.
 
@@ -798,11 +798,17 @@ def coast_down(time, speed, mass: float, *, confidence: float = 0.95) -> CoastDo
     array([4000.,   60.,    6.,   40.])
     """
     t, v = _record(time, speed, name="speed")
+    _checks.plausible_array("speed", v, "speed", low=-np.inf)  # at most MAXIMUM_SPEED (>0 just below)
     if np.any(v <= 0.0):
         raise ValueError(
             f"speed must be > 0 throughout (a coast-down before standstill), got min {v.min()!r}"
         )
-    m = _checks.scalar("mass", mass, low=0.0, high=1.0e9, low_open=True)
+    if v[-1] >= v[0]:
+        raise ValueError(
+            f"speed must fall over the record (a train coasting slows by its resistance), got "
+            f"{v[0]!r} m/s at the start and {v[-1]!r} m/s at the end"
+        )
+    m = _checks.scalar("mass", mass, low=10.0, high=1.0e9)
     level = _confidence(confidence)
     if t.size <= 4:
         raise ValueError(f"time must hold more than the 4 parameters fitted, got {t.size} samples")

@@ -77,7 +77,7 @@ class StrainRecord:
     units : tuple of str
         The unit of each row of ``strain``.
     rate_hz : float
-        Sampling rate, Hz.
+        Sampling rate, Hz: 1/Δt of ``time`` (to 1e-6 relative).
     provenance : str
         Where the record comes from and what was done to it.
     """
@@ -99,7 +99,14 @@ class StrainRecord:
         _checks.strings("channels", self.channels, eps.shape[0])
         _checks.strings("units", self.units, eps.shape[0])
         _checks.array("positions", self.positions, shape=(eps.shape[0],))
-        _checks.positive("rate_hz", self.rate_hz)
+        rate = _checks.positive("rate_hz", self.rate_hz)
+        if t.size > 1:
+            step = (t[-1] - t[0]) / (t.size - 1)
+            if abs(rate * step - 1.0) > 1e-6:  # the time vector's own rate, to the rounding of its times
+                raise ValueError(
+                    f"rate_hz must be the sampling rate of time, 1/Δt = {1.0 / step:.9g} Hz, "
+                    f"got {self.rate_hz!r}"
+                )
         _checks.instance("provenance", self.provenance, str)
 
     def zeroed(self, before: float | None = None) -> np.ndarray:
@@ -248,7 +255,7 @@ class LerelvaCase:
         _checks.instance("fit", self.fit, WeighInMotionFit)
         _checks.instance("pattern", self.pattern, WeighInMotionFit)
         for name in ("peak_speed", "lag_speed", "model_lag_speed"):
-            _checks.positive(name, getattr(self, name))
+            _checks.speed(name, getattr(self, name))
         t = _checks.array("time", self.time, ndim=1, allow_empty=False)
         m = _checks.array("measured", self.measured, ndim=2)
         if m.shape[1] != t.size:

@@ -85,20 +85,27 @@ class FreightCar(LinearModelBase):
     ----------
     body_mass : float
         Body and lading, kg: the AAR 286 000 lb (129.7 t) gross rail load (the "286K standard",
-        railroad.net) less two trucks of about 4.35 t: 121 000 kg.
+        railroad.net) less two trucks of about 4.35 t: 121 000 kg; in [10, 1e6]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass").
     body_pitch_inertia : float
-        kg·m² (a uniform 15 m body: m L²/12 ≈ 2.3 × 10⁶ kg·m²).
+        kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (a uniform 15 m body: m
+        L²/12 ≈ 2.3 × 10⁶ kg·m²).
     body_roll_inertia : float
-        About the centre of gravity, kg·m² (3.2 m wide, 3.5 m tall box: m(w² + h²)/12).
+        About the centre of gravity, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "inertia") (3.2 m wide, 3.5 m tall box: m(w² + h²)/12).
     cg_height : float
-        Centre of gravity above the spring plane, m (2.1 m above rail, nests 0.6 m).
+        Centre of gravity above the spring plane, m, in [0, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (2.1 m above rail, nests 0.6 m).
     semi_truck_spacing : float
-        l, half the distance between truck centres, m (40 ft 8 in centres, the value
+        l, half the distance between truck centres, m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (40 ft 8 in centres, the value
         :mod:`raildyn.train.vehicles` takes for the loaded hopper).
     semi_truck_wheelbase : float
-        b, half a truck's wheelbase, m (1.73 m wheelbase).
+        b, half a truck's wheelbase, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length") (1.73 m wheelbase).
     semi_spring_spacing : float
-        d, half the lateral distance between the nests (the side-frame spacing), m.
+        d, half the lateral distance between the nests (the side-frame spacing), m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
     nest_stiffness : float
         Per nest, N/m: a static deflection of 0.06 m under a quarter of the body.
     wedge_friction : float
@@ -126,6 +133,11 @@ class FreightCar(LinearModelBase):
                 _checks.nonnegative(name, value)
             else:
                 _checks.positive(name, value)
+        _checks.plausible("body_mass", self.body_mass, "mass")
+        _checks.plausible_fields(self, "inertia", ("body_pitch_inertia", "body_roll_inertia"))
+        _checks.plausible("cg_height", self.cg_height, "vehicle_length", low=0.0)
+        lengths = ("semi_truck_spacing", "semi_truck_wheelbase", "semi_spring_spacing")
+        _checks.plausible_fields(self, "vehicle_length", lengths)
         if self.semi_truck_wheelbase >= self.semi_truck_spacing:
             raise ValueError(
                 f"semi_truck_wheelbase must be less than semi_truck_spacing ({self.semi_truck_spacing!r} m) "
@@ -182,14 +194,15 @@ class FreightCar(LinearModelBase):
         Parameters
         ----------
         rail_length : float
-            L, m.
+            L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length").
 
         Returns
         -------
         float
             V, m/s.
         """
-        return self.natural_frequencies().roll_hz * _checks.positive("rail_length", rail_length)
+        L = _checks.plausible("rail_length", rail_length, "rail_length")
+        return self.natural_frequencies().roll_hz * L
 
     def roll_input_factor(self, rail_length: float = _track.RAIL_LENGTH) -> float:
         """|cos(2π l/L)|: the share of a cross-level wave of length L that the two trucks, 2l apart,
@@ -198,14 +211,14 @@ class FreightCar(LinearModelBase):
         Parameters
         ----------
         rail_length : float
-            L, m.
+            L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length").
 
         Returns
         -------
         float
             In [0, 1].
         """
-        L = _checks.positive("rail_length", rail_length)
+        L = _checks.plausible("rail_length", rail_length, "rail_length")
         return float(abs(np.cos(2 * np.pi * self.semi_truck_spacing / L)))
 
     @property
@@ -262,7 +275,7 @@ class RockAndRoll:
     Attributes
     ----------
     speeds : ndarray, (n_speeds,)
-        m/s, > 0, not empty.
+        m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`], not empty.
     roll_amplitude : ndarray, (n_speeds,)
         Half the peak-to-peak roll over the last cycles, rad, ≥ 0, one per speed.
     resonance_speed : float
@@ -280,12 +293,12 @@ class RockAndRoll:
     roll: np.ndarray
 
     def __post_init__(self):
-        V = _checks.array("speeds", self.speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
+        V = _checks.speeds("speeds", self.speeds)
         t = _checks.time_grid("t", self.t)
         object.__setattr__(self, "speeds", V)
         object.__setattr__(self, "roll_amplitude", _checks.array("roll_amplitude", self.roll_amplitude,
                                                                  shape=V.shape, low=0.0))  # fmt: skip
-        object.__setattr__(self, "resonance_speed", _checks.positive("resonance_speed", self.resonance_speed))
+        object.__setattr__(self, "resonance_speed", _checks.speed("resonance_speed", self.resonance_speed))
         object.__setattr__(self, "t", t)
         object.__setattr__(self, "roll", _checks.array("roll", self.roll, shape=(V.size, t.size)))
 
@@ -368,18 +381,21 @@ def rock_and_roll(
     ----------
     car : FreightCar
     speeds : array_like
-        m/s, > 0, not empty.
+        m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`], not empty.
     depth, half_width : float
-        Dip of each joint (m, ≥ 0) and its half-length along the rail (m, in (0, L/2]).
+        Dip of each joint (m, in [0, 0.1], :data:`~raildyn.constants.PLAUSIBLE_RANGES` "irregularity") and
+        its half-length along
+        the rail (m, in [0.001, L/2], "track_length").
     rail_length : float
-        L, m, > 0.
+        L, m, in [1, 150] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "rail_length").
     cycles : int
         Rail lengths run at the lowest speed (≥ 4).
     dt : float, optional
         Time step, s (> 0, at most the stability limit below). Default: 8 ms, or 0.9 of the
         stability limit (:func:`raildyn.integrators.stable_step`) where that is smaller (stiff wedges).
     velocity_scale : float
-        v_ε of the smooth friction law, m/s, > 0.
+        v_ε of the smooth friction law, m/s, in [1e-6, 1] (a smoothing of the sign of the sliding
+        velocity, far below it).
     progress : bool
         Show a progress bar.
 
@@ -388,10 +404,13 @@ def rock_and_roll(
     RockAndRoll
     """
     _checks.instance("car", car, FreightCar)
-    V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
+    V = _checks.speeds("speeds", speeds)
     cycles = _checks.integer("cycles", cycles, low=4)
-    eps = _checks.positive("velocity_scale", velocity_scale)
-    L = _checks.positive("rail_length", rail_length)
+    eps = float(_checks.smoothing_speed("velocity_scale", velocity_scale).max())
+    _checks.scalar("velocity_scale", velocity_scale)  # one number
+    L = _checks.plausible("rail_length", rail_length, "rail_length")
+    _checks.plausible("depth", depth, "irregularity")
+    _checks.plausible("half_width", half_width, "track_length", high=L / 2)
     progress = _checks.flag("progress", progress)
     sticking = car.replace(equivalent_damping=car.wedge_friction / eps).matrices(1.0)
     limit = stable_step("rk4", sticking.M, sticking.C, sticking.K)
@@ -470,7 +489,7 @@ def wedge_energy_per_cycle(
     frequency : float
         Hz (> 0).
     velocity_scale : float, optional
-        v_ε of the smooth law F tanh(v/v_ε), m/s (> 0); None for the ideal law.
+        v_ε of the smooth law F tanh(v/v_ε), m/s, in [1e-6, 1]; None for the ideal law.
     n : int
         Midpoint samples over the cycle for the smooth law, in [16, 10⁶]: the midpoint rule on this
         smooth periodic integrand has converged to rounding long before the upper bound, which keeps
@@ -490,7 +509,8 @@ def wedge_energy_per_cycle(
     X = _checks.positive("amplitude", amplitude)
     w = 2 * np.pi * _checks.positive("frequency", frequency)
     if velocity_scale is not None:
-        velocity_scale = _checks.positive("velocity_scale", velocity_scale)
+        v_eps = _checks.scalar("velocity_scale", velocity_scale)
+        velocity_scale = float(_checks.smoothing_speed("velocity_scale", v_eps))
     n = _checks.integer("n", n, low=16, high=10**6)
     if velocity_scale is None:
         energy = 4.0 * F * X

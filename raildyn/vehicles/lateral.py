@@ -79,7 +79,8 @@ def _replace_through(model, changes: dict, inner: str):
 def _check_body_on_two_trucks(car, spacing: str, truck_half: str, truck_half_length: float) -> None:
     """The checks every car body on two trucks shares, each naming the field at fault.
 
-    Masses and inertias > 0; height and roll terms ≥ 0; the semi-spacing of the trucks
+    Masses, inertias and the semi-spacing of the trucks in their plausible ranges
+    (:data:`raildyn.constants.PLAUSIBLE_RANGES`); height and roll terms ≥ 0; the semi-spacing of the trucks
     (field ``spacing``) beyond the truck's half length (its field ``truck_half``), so that
     the wheelsets of the two trucks do not cross; and the two trucks' roll stiffness 2 k_φ
     above m g h, the roll moment of the body's weight h above the springs, else it topples.
@@ -88,6 +89,10 @@ def _check_body_on_two_trucks(car, spacing: str, truck_half: str, truck_half_len
         positive(name, getattr(car, name))
     for name in ("body_height", "roll_stiffness", "roll_damping"):
         nonnegative(name, getattr(car, name))
+    _checks.plausible("body_mass", car.body_mass, "mass")
+    _checks.plausible_fields(car, "inertia", ("body_yaw_inertia", "body_roll_inertia"))
+    _checks.plausible(spacing, getattr(car, spacing), "vehicle_length")
+    _checks.plausible("body_height", car.body_height, "vehicle_length", low=0.0)
     if getattr(car, spacing) <= truck_half_length:
         raise ValueError(
             f"{spacing} must exceed the truck's {truck_half} ({truck_half_length!r} m) so that the "
@@ -143,11 +148,13 @@ class Bogie(_OnTheRails):
     ----------
     wheelset : Wheelset
     frame_mass : float
-        m_f, kg, > 0 (Iwnicki 1998: 2615 kg).
+        m_f, kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") (Iwnicki 1998: 2615 kg).
     frame_yaw_inertia : float
-        I_f, kg·m², > 0 (Iwnicki 1998: 3067 kg·m²).
+        I_f, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (Iwnicki 1998: 3067
+        kg·m²).
     semi_wheelbase : float
-        b, half the wheelbase, m, > 0 (Iwnicki 1998: 2.56 m wheelbase).
+        b, half the wheelbase, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length") (Iwnicki 1998: 2.56 m wheelbase).
     secondary_lateral_stiffness, secondary_lateral_damping : float
         k_sy and c_sy, per bogie, N/m and N·s/m, ≥ 0 (Iwnicki 1998: 160 kN/m and 32 kN·s/m per
         side).
@@ -169,6 +176,9 @@ class Bogie(_OnTheRails):
         _checks.instance("wheelset", self.wheelset, Wheelset)
         for name in ("frame_mass", "frame_yaw_inertia", "semi_wheelbase"):
             positive(name, getattr(self, name))
+        _checks.plausible("frame_mass", self.frame_mass, "mass")
+        _checks.plausible("frame_yaw_inertia", self.frame_yaw_inertia, "inertia")
+        _checks.plausible("semi_wheelbase", self.semi_wheelbase, "vehicle_length")
         for name in (
             "secondary_lateral_stiffness",
             "secondary_lateral_damping",
@@ -259,17 +269,21 @@ class Car(_OnTheRails):
     ----------
     bogie : Bogie
     body_mass : float
-        m, kg, > 0 (Iwnicki 1998: 32000 kg).
+        m, kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") (Iwnicki 1998: 32000 kg).
     body_yaw_inertia : float
-        I_z, kg·m², > 0 (Iwnicki 1998: 1.97 × 10⁶ kg·m²).
+        I_z, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (Iwnicki 1998: 1.97
+        × 10⁶ kg·m²).
     body_roll_inertia : float
-        I_x, kg·m², > 0 (Iwnicki 1998: 5.68 × 10⁴ kg·m²).
+        I_x, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (Iwnicki 1998: 5.68
+        × 10⁴ kg·m²).
     semi_bogie_spacing : float
-        l, half the distance between bogie centres, m, greater than the bogie's semi-wheelbase
-        (the bogies' wheelsets do not cross) (Iwnicki 1998: 19 m between centres).
+        l, half the distance between bogie centres, m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length"), greater than the bogie's
+        semi-wheelbase (the bogies' wheelsets do not cross) (Iwnicki 1998: 19 m between centres).
     body_height : float
-        h, height of the body's centre of gravity above the secondary lateral springs, m, ≥ 0
-        (1.8 m above rail, seat at 0.8275 m: 0.9725 m).
+        h, height of the body's centre of gravity above the secondary lateral springs, m, in
+        [0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (1.8 m above rail, seat at
+        0.8275 m: 0.9725 m).
     roll_stiffness : float
         k_ϕ, per bogie, N·m/rad: the vertical secondary springs, 430 kN/m per side at
         1.0 m (Iwnicki 1998), plus the anti-roll bar, 940 kN·m/rad. The two bogies'

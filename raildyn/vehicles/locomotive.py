@@ -40,15 +40,19 @@ class Locomotive(LinearModelBase):
     Attributes
     ----------
     body_mass : float
-        kg (167 t less 6 × 3.5 t unsprung and 2 × 6.5 t frames).
+        kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") (167 t less 6 × 3.5 t
+        unsprung and 2 × 6.5 t frames).
     body_pitch_inertia : float
-        kg·m² (m L²/12 for a 20 m body).
+        kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (m L²/12 for a 20 m body).
     truck_mass, truck_pitch_inertia : float
-        One truck frame, kg and kg·m².
+        One truck frame, kg in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") and kg·m² in
+        [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia").
     semi_truck_spacing : float
-        l, half the distance between truck centres, m.
+        l, half the distance between truck centres, m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
     axle_spacing : float
-        Between neighbouring axles of a truck, m: b, the truck's semi-wheelbase (the middle axle
+        Between neighbouring axles of a truck, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length"): b, the truck's semi-wheelbase (the middle axle
         stands under the truck's centre).
     primary_stiffness, primary_damping : float
         Per axle, N/m and N·s/m.
@@ -73,6 +77,9 @@ class Locomotive(LinearModelBase):
                 _checks.nonnegative(name, getattr(self, name))
             else:
                 _checks.positive(name, getattr(self, name))
+        _checks.plausible_fields(self, "mass", ("body_mass", "truck_mass"))
+        _checks.plausible_fields(self, "inertia", ("body_pitch_inertia", "truck_pitch_inertia"))
+        _checks.plausible_fields(self, "vehicle_length", ("semi_truck_spacing", "axle_spacing"))
         if self.axle_spacing >= self.semi_truck_spacing:
             raise ValueError(
                 f"axle_spacing must be less than semi_truck_spacing ({self.semi_truck_spacing!r} m), "

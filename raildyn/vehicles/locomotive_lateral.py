@@ -189,7 +189,8 @@ def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -
     rolling_radius, half_gauge, conicity : float
         r₀ (m, > 0), a (m, > 0) and λ (> 0), as for :func:`raildyn.wheelset.kinematic_wavelength`.
     axle_spacing : float
-        d, between neighbouring axles, m (> 0).
+        d, between neighbouring axles, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length").
 
     Returns
     -------
@@ -201,8 +202,8 @@ def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -
     >>> round(rigid_truck_wavelength(0.508, 0.75, 0.05, 2.07), 2)
     42.76
     """
-    d = positive("axle_spacing", axle_spacing)
-    a = positive("half_gauge", half_gauge)
+    d = _checks.plausible("axle_spacing", axle_spacing, "vehicle_length")
+    a = _checks.plausible("half_gauge", half_gauge, "half_gauge")
     free = kinematic_wavelength(rolling_radius, half_gauge, conicity)
     # √(1 + (2/3)(d/a)²) as a hypotenuse, finite for any finite d/a
     return free * float(np.hypot(1.0, np.sqrt(2.0 / 3.0) * d / a))
@@ -222,15 +223,18 @@ class ThreeAxleTruck(LinearModelBase):
     wheelset : Wheelset
         Its ``mass`` is the wheelset's own, without the motor.
     frame_mass, frame_yaw_inertia : float
-        The frame alone, kg and kg·m², > 0 (representative: 2.0 t, the vertical model's
-        6.5 t truck less the frame's share of three motors; m L²/12 for 4.5 m).
+        The frame alone, kg in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") and
+        kg·m² in [1, 5e8] ("inertia") (representative: 2.0 t, the vertical model's 6.5 t truck
+        less the frame's share of three motors; m L²/12 for 4.5 m).
     motor_mass : float
-        One traction motor, kg, ≥ 0 (representative: 3 t).
+        One traction motor, kg, 0 or in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass")
+        (representative: 3 t).
     motor_axle_share : float
         Fraction of each motor's mass that moves with its axle, in [0, 1]; the rest moves with
         the frame (nose suspension: a half).
     axle_spacing : float
-        d, between neighbouring axles, m, > 0 (2.07 m, as the vertical model).
+        d, between neighbouring axles, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length") (2.07 m, as the vertical model).
     middle_lateral_stiffness, middle_lateral_damping : float
         The middle axle's lateral restraint within its play, N/m and N·s/m, ≥ 0
         (representative: soft centring springs, 0.3 MN/m; the end axles' damping).
@@ -264,6 +268,11 @@ class ThreeAxleTruck(LinearModelBase):
         _checks.instance("wheelset", self.wheelset, Wheelset)
         for name in ("frame_mass", "frame_yaw_inertia", "axle_spacing"):
             positive(name, getattr(self, name))
+        _checks.plausible("frame_mass", self.frame_mass, "mass")
+        _checks.plausible("frame_yaw_inertia", self.frame_yaw_inertia, "inertia")
+        _checks.plausible("axle_spacing", self.axle_spacing, "vehicle_length")
+        if self.motor_mass != 0:
+            _checks.plausible("motor_mass", self.motor_mass, "mass")
         _checks.scalar("motor_axle_share", self.motor_axle_share, low=0.0, high=1.0)
         for name in (
             "motor_mass",
@@ -356,7 +365,7 @@ class ThreeAxleTruck(LinearModelBase):
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 
@@ -442,16 +451,21 @@ class LateralLocomotive(LinearModelBase):
     ----------
     truck : ThreeAxleTruck
     body_mass : float
-        kg, > 0 (133 t, as the vertical :class:`~raildyn.vehicles.locomotive.Locomotive`).
+        kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") (133 t, as the vertical
+        :class:`~raildyn.vehicles.locomotive.Locomotive`).
     body_yaw_inertia : float
-        kg·m², > 0 (m L²/12 for a 20 m body).
+        kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (m L²/12 for a 20 m body).
     body_roll_inertia : float
-        kg·m², > 0 (m (w² + h²)/12, 3.12 m wide, mass over 2.5 m of height).
+        kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (m (w² + h²)/12, 3.12 m
+        wide, mass over 2.5 m of height).
     semi_truck_spacing : float
-        Half the distance between truck centres, m, greater than the truck's axle spacing
-        (each truck's axles on its own side of the body's centre) (13.26 m between centres).
+        Half the distance between truck centres, m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length"), greater than the truck's axle
+        spacing (each truck's axles on its own side of the body's centre) (13.26 m between centres).
     body_height : float
-        Height of the body's centre of gravity above the secondary lateral springs, m, ≥ 0 (0.9 m).
+        Height of the body's centre of gravity above the secondary lateral springs, m, in [0, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length")
+        (0.9 m).
     roll_stiffness, roll_damping : float
         Per truck, N·m/rad and N·m·s/rad, ≥ 0: the vertical model's secondary springs and dampers
         split between the two sides at ±1.0 m. The two trucks' 2 k_φ must exceed m g h, or the body
@@ -502,7 +516,7 @@ class LateralLocomotive(LinearModelBase):
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 

@@ -122,7 +122,9 @@ def _vehicle(vehicle) -> LinearSystem:
 def _steady_system(vehicle, speed, name: str = "speed") -> tuple[LinearSystem, float]:
     """The vehicle's system and V, refusing a speed at which the model is unstable (no steady response)."""
     system = _vehicle(vehicle)
-    V = _checks.positive(name, speed)
+    # At least 1 mm/s: slower, the track's spectrum in time, S(ω/V)/V, and the creep damping C₁/V
+    # overflow, and no vehicle's response is of interest.
+    V = _checks.speed(name, speed, low=1.0e-3, low_open=False)
     if np.any(system.C1):
         growth = np.linalg.eigvals(system.matrices(V).state_matrix()).real.max()
         if growth >= 0:
@@ -145,7 +147,8 @@ def track_frf(vehicle, omega, speed, output="body z", derivative: int = 0, compo
     omega : array_like, (n_ω,)
         rad/s, in [0, 1e6] (rigid-body models of motions below some 100 Hz), not empty.
     speed : float
-        V, m/s (> 0, below the critical speed of a lateral model).
+        V, m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
+        model.
     output : str, (str, float) or array_like
         See :meth:`raildyn.linear_model.LinearSystem.output_vector`.
     derivative : {0, 1, 2}
@@ -189,7 +192,7 @@ class ResponseSpectrum:
     rms : float
         √∫S dω over the grid, in the output unit, ≥ 0.
     speed : float
-        m/s, > 0.
+        m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     """
 
     omega: np.ndarray
@@ -202,7 +205,7 @@ class ResponseSpectrum:
         object.__setattr__(self, "omega", w)
         object.__setattr__(self, "psd", _checks.array("psd", self.psd, shape=w.shape, low=0.0))
         object.__setattr__(self, "rms", _checks.nonnegative("rms", self.rms))
-        object.__setattr__(self, "speed", _checks.positive("speed", self.speed))
+        object.__setattr__(self, "speed", _checks.speed("speed", self.speed, low=1.0e-3, low_open=False))
 
     @property
     def frequency_hz(self) -> np.ndarray:
@@ -349,7 +352,8 @@ def response_spectrum(
         independent components. Each S takes an array of Ω (rad/m) and returns finite
         values ≥ 0 of the same shape.
     speed : float
-        V, m/s (> 0, below the critical speed of a lateral model).
+        V, m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
+        model.
     omega : array_like
         rad/s, in (0, 1e6] (rigid-body models of motions below some 100 Hz), not empty.
     output : str, (str, float) or array_like
@@ -413,7 +417,8 @@ def rms_over_speeds(
     vehicle, psd, omega, output, derivative, component
         As for :func:`response_spectrum`.
     speeds : array_like, (n_V,)
-        m/s, > 0 (below the critical speed of a lateral model), not empty.
+        m/s, each in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a
+        lateral model; not empty.
 
     Returns
     -------
@@ -426,7 +431,7 @@ def rms_over_speeds(
         As for :func:`response_spectrum`.
     """
     system = _vehicle(vehicle)
-    V = _checks.array("speeds", speeds, ndim=1, low=0.0, low_open=True, allow_empty=False)
+    V = _checks.speeds("speeds", speeds, low=1.0e-3, low_open=False)
     w = _omega(omega, positive=True)
     spectra = _inputs_for(system, psd, component)
     if np.any(system.C1):
@@ -638,7 +643,8 @@ def time_response(
         The slope dz/dx with the same signature and the same demands on what it
         returns; without it the damper inputs use a finite-difference slope.
     speed : float
-        m/s (> 0, below the critical speed of a lateral model).
+        m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`] and below the critical speed of a lateral
+        model.
     t : array_like
         Uniform, strictly increasing times, s, starting from rest at static equilibrium.
     output : str, (str, float) or array_like

@@ -208,15 +208,19 @@ class ThreePieceTruck(LinearModelBase):
     ----------
     wheelset : Wheelset
     side_frame_mass : float
-        Both side frames, kg, > 0 (Baruffaldi's Ride Control truck: 2 × 290 kg).
+        Both side frames, kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass")
+        (Baruffaldi's Ride Control truck: 2 × 290 kg).
     side_frame_yaw_inertia : float
-        Both side frames about their own centres, kg·m², > 0 (2 × 91 kg·m²).
+        Both side frames about their own centres, kg·m², in [1, 5e8]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (2 × 91 kg·m²).
     bolster_yaw_inertia : float
-        The bolster, kg·m², > 0 (99 kg·m²); the side frames' 2 m d² is added to it.
+        The bolster, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (99 kg·m²);
+        the side frames' 2 m d² is added to it.
     semi_wheelbase : float
-        b, m, > 0 (0.865 m).
+        b, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (0.865 m).
     side_frame_spacing : float
-        d, half the distance between the side frames (and their nests), m, > 0 (1.0 m).
+        d, half the distance between the side frames (and their nests), m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (1.0 m).
     warp_stiffness : float
         Between bolster and side frames, N·m/rad, ≥ 0 (representative: 2 MN·m/rad).
     nest_shear_stiffness : float
@@ -267,6 +271,9 @@ class ThreePieceTruck(LinearModelBase):
             "reference_angle",
         ):
             positive(name, getattr(self, name))
+        _checks.plausible("side_frame_mass", self.side_frame_mass, "mass")
+        _checks.plausible_fields(self, "inertia", ("side_frame_yaw_inertia", "bolster_yaw_inertia"))
+        _checks.plausible_fields(self, "vehicle_length", ("semi_wheelbase", "side_frame_spacing"))
         for name in (
             "warp_stiffness",
             "nest_shear_stiffness",
@@ -405,7 +412,7 @@ class ThreePieceTruck(LinearModelBase):
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 
@@ -465,13 +472,18 @@ class LateralFreightCar(LinearModelBase):
     ----------
     truck : ThreePieceTruck
     body_mass : float
-        Body (with lading and the bolsters), kg, > 0.
+        Body (with lading and the bolsters), kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "mass").
     body_yaw_inertia, body_roll_inertia : float
-        About the centre of gravity, kg·m², > 0.
+        About the centre of gravity, kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "inertia").
     semi_truck_spacing : float
-        Half the distance between truck centres, m, greater than the truck's semi-wheelbase.
+        Half the distance between truck centres, m, in [0.01, 100]
+        (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length"), greater than the truck's
+        semi-wheelbase.
     body_height : float
-        Centre of gravity above the nests, m, ≥ 0.
+        Centre of gravity above the nests, m, in [0, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length").
     roll_stiffness : float
         Per truck, N·m/rad: the two nests' vertical rate at ±d, 2 k d². The two trucks'
         2 k_φ must exceed m g h (else the body topples).
@@ -562,7 +574,7 @@ class LateralFreightCar(LinearModelBase):
         Parameters
         ----------
         speed : float
-            V, m/s (> 0).
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 

@@ -73,13 +73,13 @@ def body_on_two_trucks(
     Parameters
     ----------
     labels : sequence of 6 str
-        Distinct.
+        Distinct, none empty.
     body_mass, truck_mass : float
-        kg, > 0.
+        kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass").
     body_pitch_inertia, truck_pitch_inertia : float
-        kg·m², > 0.
+        kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia").
     semi_truck_spacing : float
-        l, m, > 0.
+        l, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length").
     axle_offsets : sequence of float
         Axle positions ahead of the truck's centre, m, leading first: at least two,
         strictly decreasing (else the truck's pitch stands on nothing) and within
@@ -96,9 +96,7 @@ def body_on_two_trucks(
     -------
     LinearSystem
     """
-    labels = _checks.instance("labels", labels, (tuple, list), "sequence of 6 distinct str")
-    if len(labels) != 6 or not all(isinstance(label, str) for label in labels) or len(set(labels)) != 6:
-        raise ValueError(f"labels must hold 6 distinct strings, got {labels!r}")
+    labels = _checks.strings("labels", labels, 6, unique=True)
     for name, value in (
         ("body_mass", body_mass),
         ("body_pitch_inertia", body_pitch_inertia),
@@ -108,9 +106,13 @@ def body_on_two_trucks(
         ("secondary_stiffness", secondary_stiffness),
     ):
         _checks.positive(name, value)
+    _checks.plausible("body_mass", body_mass, "mass")
+    _checks.plausible("truck_mass", truck_mass, "mass")
+    _checks.plausible("body_pitch_inertia", body_pitch_inertia, "inertia")
+    _checks.plausible("truck_pitch_inertia", truck_pitch_inertia, "inertia")
     primary_damping = _checks.nonnegative("primary_damping", primary_damping)
     secondary_damping = _checks.nonnegative("secondary_damping", secondary_damping)
-    s = _checks.positive("semi_truck_spacing", semi_truck_spacing)
+    s = _checks.plausible("semi_truck_spacing", semi_truck_spacing, "vehicle_length")
     offsets = _checks.array("axle_offsets", axle_offsets, ndim=1)
     if offsets.size < 2 or np.any(np.diff(offsets) >= 0):
         raise ValueError(f"axle_offsets must hold at least two offsets, strictly decreasing, got {offsets}")
@@ -156,21 +158,27 @@ class VerticalCar(LinearModelBase):
     Attributes
     ----------
     body_mass : float
-        kg (Iwnicki 1998: 32 000 kg; as :class:`Car`).
+        kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") (Iwnicki 1998: 32 000 kg; as
+        :class:`Car`).
     body_pitch_inertia : float
-        kg·m² (Iwnicki 1998: 1.97 × 10⁶ kg·m²).
+        kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (Iwnicki 1998: 1.97 ×
+        10⁶ kg·m²).
     bogie_mass : float
-        Bogie frame, kg (Iwnicki 1998: 2615 kg; as :class:`Bogie`).
+        Bogie frame, kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") (Iwnicki 1998:
+        2615 kg; as :class:`Bogie`).
     bogie_pitch_inertia : float
-        kg·m² (Iwnicki 1998: the frame's inertias are 1722 about x (roll), 1476 about
+        kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (Iwnicki 1998: the
+        frame's inertias are 1722 about x (roll), 1476 about
         y (pitch) and 3067 kg·m² about z (yaw); pitch turns about y. The 1476 is
         also what D. Cantero's TTB-2D takes for this vehicle's bogie in the
         vertical plane: ``TrainProp_Manchester_BenchMark.m``,
         https://github.com/DanielCanteroNTNU/TTB-2D, commit 2b414dd).
     semi_bogie_spacing : float
-        l, m (Iwnicki 1998: 19 m between bogie centres).
+        l, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (Iwnicki 1998: 19
+        m between bogie centres).
     semi_wheelbase : float
-        b, m (Iwnicki 1998: 2.56 m wheelbase).
+        b, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "vehicle_length") (Iwnicki 1998:
+        2.56 m wheelbase).
     primary_stiffness, primary_damping : float
         Per wheelset (two axleboxes), N/m and N·s/m (Iwnicki 1998: 1220 kN/m and
         4 kN·s/m per axlebox).
@@ -196,6 +204,9 @@ class VerticalCar(LinearModelBase):
                 nonnegative(name, getattr(self, name))
             else:
                 positive(name, getattr(self, name))
+        _checks.plausible_fields(self, "mass", ("body_mass", "bogie_mass"))
+        _checks.plausible_fields(self, "inertia", ("body_pitch_inertia", "bogie_pitch_inertia"))
+        _checks.plausible_fields(self, "vehicle_length", ("semi_bogie_spacing", "semi_wheelbase"))
         if self.semi_wheelbase >= self.semi_bogie_spacing:
             raise ValueError(
                 f"semi_wheelbase must be less than semi_bogie_spacing ({self.semi_bogie_spacing!r} m), "

@@ -369,7 +369,7 @@ def _bifurcation(conicity: float, yaw_stiffness: float):
     diagram = _bifurcation_family().get((conicity, yaw_stiffness))
     if diagram is None:  # off the grid: one diagram, a third of a second
         diagram = stability.bifurcation_diagram(car.nonlinear(), _BIFURCATION_SPEEDS, **_BIFURCATION_RUN)
-    return diagram, stability.critical_speed(car, (5.0, 250.0), tol=0.05)
+    return diagram, stability.critical_speed(car, (5.0, 200.0), tol=0.05)
 
 
 def _bifurcation_controls():

@@ -24,6 +24,7 @@ SLACK_GRID = [0, 10, 20, 30, 40, 50, 60, 75]  # mm, precomputed for the page wit
 _MAX_CARS = 200
 _MAX_SLACK_MM = 200.0
 _MAX_SIGNAL_SPEED = 343.0  # m/s, the speed of sound in air at 20 °C
+_MIN_SIGNAL_SPEED = 10.0  # m/s (36 km/h): a slower brake signal would be outrun by the train
 _MAX_SPEED_KMH = 200.0
 
 
@@ -35,11 +36,12 @@ def braking_run(cars: int, slack_mm: float, signal_speed: float, speed_kmh: floa
     cars : int
         Number of loaded hoppers, 1–200 (a 3.6 km train, whose run takes a few seconds).
     slack_mm : float
-        Slack of every coupler, mm, 0–200 (draft gear has up to about 75 mm); the run
-        starts with every coupler stretched.
+        Slack of every coupler, mm, 0 or 2–200 (draft gear has up to about 75 mm; the gap's edge
+        is rounded over 1 mm each side); the run starts with every coupler stretched.
     signal_speed : float
-        Speed of the brake-pipe signal, m/s, 0 < c <= 343 (a pressure wave in the
-        pipe is not faster than sound in air).
+        Speed of the brake-pipe signal, m/s, 10 <= c <= 343 (a pressure wave in the
+        pipe is not faster than sound in air, and one slower than 10 m/s would be outrun by
+        the train).
     speed_kmh : float
         Initial speed of the train, km/h, 0 < V <= 200 (a braking run starts moving;
         200 km/h is far above any freight train).
@@ -51,9 +53,11 @@ def braking_run(cars: int, slack_mm: float, signal_speed: float, speed_kmh: floa
     """
     cars = _checks.integer("cars", cars, low=1, high=_MAX_CARS)
     slack_mm = _checks.scalar("slack_mm", slack_mm, low=0.0, high=_MAX_SLACK_MM)
-    signal_speed = _checks.scalar(
-        "signal_speed", signal_speed, low=0.0, low_open=True, high=_MAX_SIGNAL_SPEED
-    )
+    if 0.0 < slack_mm < 2.0:  # the draft gear rounds the edge of the gap over 1 mm each side
+        raise ValueError(
+            f"slack_mm must be 0 or at least 2 mm (twice the gap's 1 mm rounding), got {slack_mm!r}"
+        )
+    signal_speed = _checks.scalar("signal_speed", signal_speed, low=_MIN_SIGNAL_SPEED, high=_MAX_SIGNAL_SPEED)
     speed_kmh = _checks.scalar("speed_kmh", speed_kmh, low=0.0, low_open=True, high=_MAX_SPEED_KMH)
     return _braking_run(cars, slack_mm, signal_speed, speed_kmh)
 

@@ -27,12 +27,12 @@ ENTRIES = [
     fuzz(
         "raildyn.bridge.SimplySupportedBeam",
         lambda: call(20.0, 1.0e10, 1.0e4, 0.02, 5),
-        accepts={"damping_ratio": "zero"},
+        accepts={"flexural_rigidity": "big mm", "damping_ratio": "zero"},
     ),  # fmt: skip
     fuzz(
         "raildyn.bridge.SimplySupportedBeam.static_midspan_deflection",
         lambda: on(BEAM, 1.0e5),
-        accepts={"force": "zero negative"},
+        accepts={"force": "zero negative big mm"},
     ),  # fmt: skip
     fuzz(
         "raildyn.bridge.SimplySupportedBeam.mode_shapes",
@@ -47,7 +47,7 @@ ENTRIES = [
     fuzz(
         "raildyn.bridge.moving_force",
         lambda: call(BEAM, [20.0, 40.0], 1.0e5, position=5.0, samples=50),
-        accepts={"force": "zero negative", "position": "zero none", "speeds": "list"},  # None: midspan
+        accepts={"force": "zero negative big mm", "position": "zero none", "speeds": "list"},  # None: midspan
     ),
     fuzz(
         "raildyn.bridge.MovingForceResponse",
@@ -58,14 +58,19 @@ ENTRIES = [
             "acceleration": "zero negative none",  # None: not computed
             "deflection": "zero negative",
             "time": "zero negative",
-            "position": "zero",
-            "static": "zero negative",
+            "position": "zero big mm",
+            "static": "zero negative big mm",
         },  # fmt: skip
     ),
     fuzz(
         "raildyn.bridge.fryba_deflection",
         lambda: call(BEAM, 30.0, 1.0e5, [0.0, 0.2, 0.5], position=5.0),
-        accepts={"force": "zero negative", "position": "zero none", "time": "zero list"},  # None: midspan
+        accepts={
+            "speed": "tiny",
+            "force": "zero negative big mm",
+            "position": "zero none",
+            "time": "zero list",
+        },  # None: midspan
     ),
 ]
 
@@ -81,11 +86,11 @@ ENTRIES += [
         accepts={"positions": "zero", "unsprung_masses": "zero", "system": "none", "name": "empty"},
     ),
     fuzz("raildyn.bridge.moving_forces", lambda: call(PAIR)),
-    fuzz("raildyn.bridge.moving_mass", lambda: call(1000.0)),
+    fuzz("raildyn.bridge.moving_mass", lambda: call(1000.0), accepts={"mass": "mm"}),
     fuzz(
         "raildyn.bridge.sprung_mass",
         lambda: call(5000.0, 1.0e6, 1.0e3, 500.0),
-        accepts={"damping": "zero", "unsprung_mass": "zero"},
+        accepts={"stiffness": "big tiny mm", "damping": "zero big mm", "unsprung_mass": "zero mm"},
     ),
     fuzz("raildyn.bridge.vehicle", lambda: call(VerticalCar(), 1813.0), accepts={"wheelset_mass": "zero"}),
     fuzz(
@@ -99,7 +104,7 @@ ENTRIES += [
         accepts={
             "at": "zero none",  # None: the middle of the first span
             "time_step": "none",
-            "free_time": "zero none",
+            "free_time": "zero none mm",
             "irregularity": "none",
         },
     ),
@@ -119,9 +124,10 @@ ENTRIES += [
             ("body z",),
         ),  # fmt: skip
         accepts={
+            "speed": "tiny",
             **{name: "zero negative" for name in ("deflection", "static_deflection", "moment")},
             **{name: "zero negative" for name in ("deck_acceleration", "contact_forces", "modal", "vehicle")},
-            "at": "zero negative",  # a point of the beam; the crossing checks it lies on the beam
+            "at": "zero negative big mm",  # a point of the beam; the crossing checks it lies on the beam
             "time": "zero negative",
         },
     ),

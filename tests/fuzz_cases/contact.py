@@ -17,12 +17,12 @@ from raildyn import contact
 
 # Changes a result dataclass holds without complaint: its fields are whatever a model computed
 # (a force, a creepage or a position of any sign, a zero); NaN, inf, strings and None are refused.
-RESULT = {"*": "zero negative"}
+RESULT = {"*": "zero negative mm big"}
 # The same where every field may hold an array: a list of numbers is read as one.
-RESULT_ARRAYS = {"*": "zero negative list"}
+RESULT_ARRAYS = {"*": "zero negative list mm big"}
 # Creepages (ξ, η, φ), lateral speeds and positions, angles: any sign, zero included; a parameter
 # documented as "float or array_like" takes a list of numbers.
-SIGNED = "zero negative list"
+SIGNED = "zero negative list mm big"
 ETA = np.array([0.0, 2e-3, 1e-2])
 
 
@@ -113,15 +113,18 @@ ENTRIES = [
         lambda: on(hertz(), 1e-3, 5e-4),
         accepts={"x": SIGNED, "y": SIGNED},
     ),
-    fuzz("raildyn.contact.hertz_coefficients", lambda: call(math.radians(60)), accepts={"theta": "list"}),
+    fuzz(
+        "raildyn.contact.hertz_coefficients", lambda: call(math.radians(60)), accepts={"theta": "list tiny"}
+    ),
     fuzz(
         "raildyn.contact.hertz_contact",
         lambda: call(1e5, 0.46, -0.5, 0.3),
         # A transverse radius is signed (convex > 0, concave < 0) and math.inf is a flat direction.
         accepts={
-            "wheel_transverse_radius": "inf negative",
+            "youngs_modulus": "big tiny mm",
+            "wheel_transverse_radius": "inf negative big mm",
             "rail_transverse_radius": "inf",
-            "rail_rolling_radius": "inf",
+            "rail_rolling_radius": "inf big mm",
             "poisson_ratio": "zero",
         },
     ),
@@ -131,12 +134,20 @@ ENTRIES = [
         "raildyn.contact.CreepCoefficients",
         lambda: call(9.8e6, 8.7e6, 9.2e3, 1.8e1),
         # One value per contact in an array (a list is stored as one); f₂₃ = f₃₃ = 0 neglects spin.
-        accepts={"f11": "list", "f22": "list", "f23": "zero list", "f33": "zero list"},
+        accepts={
+            "f11": "list big tiny mm",
+            "f22": "list big tiny mm",
+            "f23": "zero list big mm",
+            "f33": "zero list big mm",
+        },
     ),
     fuzz(
         "raildyn.contact.CreepForces",
         lambda: call(-100.0, 50.0, 1.0),
-        accepts={**RESULT_ARRAYS, "mz": "none"},  # mz is None for the laws that give no spin moment
+        accepts={
+            **RESULT_ARRAYS,
+            "mz": "none big mm",
+        },  # mz is None for the laws that give no spin moment
     ),
     fuzz(
         "raildyn.contact.WheelsetCreepages",
@@ -151,7 +162,7 @@ ENTRIES = [
     fuzz(
         "raildyn.contact.creep_coefficients",
         lambda: call(6e-3, 4e-3),
-        accepts={"a": "list", "b": "list", "poisson_ratio": "zero"},
+        accepts={"shear_modulus": "big tiny mm", "a": "list", "b": "list", "poisson_ratio": "zero"},
     ),
     fuzz(
         "raildyn.contact.kalker_linear",
@@ -159,11 +170,21 @@ ENTRIES = [
         accepts={"longitudinal": SIGNED, "lateral": SIGNED, "spin": SIGNED},
     ),
     fuzz("raildyn.contact.carter_coefficient", lambda: call(1e5, 0.46, 6e-3)),
-    fuzz("raildyn.contact.carter", lambda: call(1e-3, 1e5, 0.3, 1.5e7), accepts={"longitudinal": SIGNED}),
+    fuzz(
+        "raildyn.contact.carter",
+        lambda: call(1e-3, 1e5, 0.3, 1.5e7),
+        accepts={"friction": "tiny", "creep_coefficient": "big tiny mm", "longitudinal": SIGNED},
+    ),
     fuzz(
         "raildyn.contact.johnson_vermeulen",
         lambda: call(1e-3, 2e-3, 1e5, 0.3, 6e-3, 4e-3),
-        accepts={"longitudinal": SIGNED, "lateral": SIGNED, "poisson_ratio": "zero"},
+        accepts={
+            "friction": "tiny",
+            "longitudinal": SIGNED,
+            "lateral": SIGNED,
+            "poisson_ratio": "zero",
+            "shear_modulus": "big tiny mm",
+        },
     ),
     fuzz(
         "raildyn.contact.johnson_vermeulen_coefficients",
@@ -171,21 +192,40 @@ ENTRIES = [
         accepts={"a_over_b": "list", "poisson_ratio": "zero"},
     ),
     fuzz("raildyn.contact.JohnsonVermeulenCoefficients", lambda: call(5.0, 4.5), accepts=RESULT_ARRAYS),
-    fuzz("raildyn.contact.saturation_factor", lambda: call(3e4, 1e4), accepts={"force": "zero list"}),
+    fuzz(
+        "raildyn.contact.saturation_factor",
+        lambda: call(3e4, 1e4),
+        accepts={"limit": "big tiny mm", "force": "zero list big mm"},
+    ),
     fuzz(
         "raildyn.contact.shen_hedrick_elkins",
         lambda: call(1e-3, 2e-3, 0.1, 1e5, 0.3, coefficients()),
-        accepts={"longitudinal": SIGNED, "lateral": SIGNED, "spin": SIGNED},
+        accepts={"friction": "tiny", "longitudinal": SIGNED, "lateral": SIGNED, "spin": SIGNED},
     ),
     fuzz(
         "raildyn.contact.polach",
         lambda: call(1e-3, 2e-3, 0.1, 1e5, 0.3, 6e-3, 4e-3),
-        accepts={"longitudinal": SIGNED, "lateral": SIGNED, "spin": SIGNED, "poisson_ratio": "zero"},
+        accepts={
+            "friction": "tiny",
+            "shear_modulus": "big tiny mm",
+            "k_a": "tiny",
+            "k_s": "tiny",
+            "longitudinal": SIGNED,
+            "lateral": SIGNED,
+            "spin": SIGNED,
+            "poisson_ratio": "zero",
+        },
     ),
     fuzz(
         "raildyn.contact.PolachAdhesion",
         lambda: call(1.0, 0.4, 0.55, 0.4, 0.6),
-        accepts={"decay_rate": "zero"},
+        accepts={
+            "k_a": "tiny",
+            "k_s": "tiny",
+            "static_friction": "tiny",
+            "limit_ratio": "tiny",
+            "decay_rate": "zero big mm",
+        },
     ),
     fuzz(
         "raildyn.contact.PolachAdhesion.friction",
@@ -195,12 +235,20 @@ ENTRIES = [
     fuzz(
         "raildyn.contact.polach_adhesion",
         lambda: call(1e-2, 2e-3, 0.1, 1e5, 20.0, 6e-3, 4e-3),
-        accepts={"longitudinal": SIGNED, "lateral": SIGNED, "spin": SIGNED, "poisson_ratio": "zero"},
+        accepts={
+            "speed": "tiny",
+            "shear_modulus": "big tiny mm",
+            "longitudinal": SIGNED,
+            "lateral": SIGNED,
+            "spin": SIGNED,
+            "poisson_ratio": "zero",
+        },
     ),
     fuzz(
         "raildyn.contact.wheelset_creepages",
         lambda: call(40.0, 0.01, 1e-3, 0.02, 0.46015, 0.45985, 0.46, 0.75, 0.05, -0.05),
         accepts={
+            "speed": "tiny",
             "rolling_radius_left": "list",
             "rolling_radius_right": "list",
             "lateral_velocity": SIGNED,
@@ -215,7 +263,7 @@ ENTRIES = [
     fuzz(
         "raildyn.contact.flexibilities",
         lambda: call(6e-3, 4e-3),
-        accepts={"a": "list", "b": "list", "poisson_ratio": "zero"},
+        accepts={"shear_modulus": "big tiny mm", "a": "list", "b": "list", "poisson_ratio": "zero"},
     ),
     fuzz(
         "raildyn.contact.FastsimResult",
@@ -231,11 +279,12 @@ ENTRIES = [
         "raildyn.contact.fastsim.fastsim",  # the module of the same name shadows it in resolve()
         lambda: call(1e-3, 5e-4, 0.1, 1e5, 0.3, 6e-3, 4e-3, n_x=4, n_y=4),
         accepts={
+            "shear_modulus": "big tiny mm",
             "longitudinal": SIGNED,
             "lateral": SIGNED,
             "spin": SIGNED,
             "normal_load": "list",
-            "friction": "list",
+            "friction": "list tiny",
             "a": "list",
             "b": "list",
             "poisson_ratio": "zero",
@@ -244,7 +293,16 @@ ENTRIES = [
     fuzz(
         "raildyn.contact.fastsim_reference",
         lambda: call(1e-3, 5e-4, 0.1, 1e5, 0.3, 6e-3, 4e-3, 5e-14, 5e-14, 5e-14, n_x=4, n_y=4),
-        accepts={"longitudinal": SIGNED, "lateral": SIGNED, "spin": SIGNED},
+        accepts={
+            "normal_load": "big tiny mm",
+            "friction": "big tiny mm",
+            "l1": "big tiny mm",
+            "l2": "big tiny mm",
+            "l3": "big tiny mm",
+            "longitudinal": SIGNED,
+            "lateral": SIGNED,
+            "spin": SIGNED,
+        },
     ),
     # --------------------------------------------------------------- comparison
     fuzz("raildyn.contact.LateralCreepCurves", _curve_fields, accepts=RESULT),
@@ -253,7 +311,13 @@ ENTRIES = [
     fuzz(
         "raildyn.contact.lateral_creep_curves",
         lambda: call(ETA, 1e5, 0.3, 6e-3, 4e-3),
-        accepts={"lateral": "zero", "spin": SIGNED, "poisson_ratio": "zero"},
+        accepts={
+            "friction": "tiny",
+            "shear_modulus": "big tiny mm",
+            "lateral": "zero",
+            "spin": SIGNED,
+            "poisson_ratio": "zero",
+        },
     ),
     # --------------------------------------------------------------- profiles and geometry
     fuzz("raildyn.contact.WheelProfile", _wheel_fields),
@@ -263,7 +327,7 @@ ENTRIES = [
         _rail_fields,
         # An upright rail; a flat head (z = 0 everywhere). The 60E1 heights are all <= 0 (none exactly 0
         # on the grid), so the change "negative", −|z|, gives back the same valid profile.
-        accepts={"inclination": "zero", "height": "zero negative"},
+        accepts={"gauge_face": "tiny", "inclination": "zero", "height": "zero negative"},
     ),
     fuzz("raildyn.contact.conical_wheel", lambda: call(1 / 20, width=0.02), accepts={"slope": "zero"}),
     fuzz("raildyn.contact.s1002_wheel", lambda: call()),
@@ -287,7 +351,7 @@ ENTRIES = [
     fuzz(
         "raildyn.contact.equivalent_conicity",
         lambda: call(cone(), rail(), 3e-3, roll=False),
-        accepts={"amplitudes": "list"},
+        accepts={"amplitudes": "list tiny"},
     ),
     fuzz(
         "raildyn.contact.harmonic_conicity",
@@ -307,7 +371,7 @@ ENTRIES = [
     fuzz(
         "raildyn.contact.ContactGeometry.equivalent_conicity",
         lambda: on(geometry(), 2e-3),
-        accepts={"amplitudes": "list"},
+        accepts={"amplitudes": "list tiny"},
     ),
     fuzz("raildyn.contact.ContactGeometry.plot_rolling_radius_difference", lambda: on(geometry())),
     fuzz("raildyn.contact.ContactGeometry.plot_contact_angle", lambda: on(geometry())),

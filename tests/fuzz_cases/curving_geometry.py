@@ -16,10 +16,10 @@ from raildyn.curving import climb, geometry
 
 S = np.linspace(0.0, 400.0, 9)  # m, across every segment of the default curve
 DISTANCES = {"s": "zero negative shape"}
-V = "list"  # a vectorised argument
+V = "list mm big"  # a vectorised argument (a radius a thousand times longer is a gentler curve)
 
 # A result dataclass holds what the model computed: signs and shapes are the model's (its docstring).
-RESULT = {"*": "zero negative list fraction shape"}
+RESULT = {"*": "zero negative list fraction shape mm big"}
 
 
 def _climb():
@@ -60,13 +60,19 @@ ENTRIES = [
         "raildyn.curving.geometry.speed_for_deficiency",
         lambda: call(600.0, 0.1, 0.15),
         # no cant with a deficiency, no deficiency (the balance speed), or a cant excess equal to the cant
-        accepts={"radius": V, "cant": "zero list", "deficiency": "zero negative list"},
+        accepts={"radius": V, "cant": "zero list", "deficiency": "zero negative list big mm"},
     ),
     # ------------------------------------------------------------------ the curve
     fuzz(
         "raildyn.curving.geometry.Curve",
         lambda: call(600.0, 0.1, 60.0, 200.0, 50.0),
-        accepts={"cant": "zero", "transition_length": "zero", "arc_length": "zero", "straight": "zero"},
+        accepts={
+            "radius": "big mm",
+            "cant": "zero",
+            "transition_length": "zero big mm",
+            "arc_length": "zero big mm",
+            "straight": "zero big mm",
+        },
     ),
     fuzz("raildyn.curving.geometry.Curve.replace", lambda: on(geometry.Curve(), radius=800.0)),
     fuzz("raildyn.curving.geometry.Curve.curvature", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
@@ -77,7 +83,11 @@ ENTRIES = [
         accepts=DISTANCES | {"speed": "zero"},
     ),
     fuzz("raildyn.curving.geometry.Curve.cant_gradient", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
-    fuzz("raildyn.curving.geometry.Curve.twist", lambda: on(geometry.Curve(), S, 2.5), accepts=DISTANCES),
+    fuzz(
+        "raildyn.curving.geometry.Curve.twist",
+        lambda: on(geometry.Curve(), S, 2.5),
+        accepts={**DISTANCES, "base": "mm big tiny"},  # a twist over any base length
+    ),
     fuzz("raildyn.curving.geometry.Curve.heading", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
     fuzz("raildyn.curving.geometry.Curve.x", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
     fuzz("raildyn.curving.geometry.Curve.y", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
@@ -86,20 +96,25 @@ ENTRIES = [
     fuzz(
         "raildyn.curving.climb.nadal_limit",
         lambda: call(1.2, 0.3),
-        accepts={"flange_angle": V, "friction": "zero list"},
+        accepts={"flange_angle": V + " tiny", "friction": "zero list"},  # a flange angle → 0: the limit
     ),
     fuzz(
         "raildyn.curving.climb.weinstock_limit",
         lambda: call(1.2, 0.3, 0.2),
         # other_friction None: the flange's friction
-        accepts={"flange_angle": V, "friction": "zero list", "other_friction": "zero list none"},
+        accepts={"flange_angle": V + " tiny", "friction": "zero list", "other_friction": "zero list none"},
     ),
     fuzz(
         "raildyn.curving.climb.wheel_climb",
         lambda: call([45e3, -20e3], [60e3, 50e3], 1.2, 0.3, 0.2),
         # lateral forces of either sign, or none; two axles (a shape (2, 2)) are refused only by the
         # vertical loads that no longer match
-        accepts={"lateral": "zero negative", "friction": "zero", "other_friction": "zero none"},
+        accepts={
+            "flange_angle": "tiny",
+            "lateral": "zero negative",
+            "friction": "zero",
+            "other_friction": "zero none",
+        },
     ),
     fuzz("raildyn.curving.climb.WheelClimb", _climb_fields, accepts=RESULT),
     fuzz("raildyn.curving.climb.WheelClimb.plot", lambda: on(_climb())),

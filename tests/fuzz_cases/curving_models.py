@@ -46,7 +46,7 @@ def grid():
     return curving_map(Bogie().nonlinear(), [15.0, 25.0], [300.0, 600.0], 0.1)
 
 
-RESULT = {"*": "zero negative", "radius": "", "speed": "", "cant": "zero"}
+RESULT = {"*": "zero negative mm big", "radius": "", "speed": "", "cant": "zero"}
 
 
 ENTRIES = [
@@ -57,14 +57,22 @@ ENTRIES = [
         # arrays broadcast: an extra axis is a grid of places
         accepts={"position": "zero negative list shape", "curvature": "zero negative list"},
     ),
-    fuzz("raildyn.wheelset.pure_rolling_offset", lambda: call(0.46, 0.75, 0.15, 600.0)),
+    fuzz(
+        "raildyn.wheelset.pure_rolling_offset",
+        lambda: call(0.46, 0.75, 0.15, 600.0),
+        accepts={"conicity": "tiny", "radius": "big tiny mm"},
+    ),
     # a wheelset behind the axes' origin is at a negative position; at the origin it is zero
     fuzz(
         "raildyn.wheelset.curve_loads",
         lambda: call(Wheelset(), 600.0, 1.28),
-        accepts={"position": "zero negative"},
+        accepts={"radius": "big mm", "position": "zero negative"},
     ),
-    fuzz("raildyn.curving.steady_curving", lambda: call(Bogie(), 25.0, 600.0, 0.1), accepts={"cant": "zero"}),
+    fuzz(
+        "raildyn.curving.steady_curving",
+        lambda: call(Bogie(), 25.0, 600.0, 0.1),
+        accepts={"speed": "tiny", "radius": "big mm", "cant": "zero"},
+    ),
     fuzz(
         "raildyn.curving.SteadyCurving",
         lambda: call(600.0, 20.0, 0.0, 0.1, ("a y", "a ψ"), np.zeros(2), np.zeros(1), *np.ones((4, 1))),
@@ -72,11 +80,22 @@ ENTRIES = [
         accepts=RESULT,
     ),
     fuzz("raildyn.curving.SteadyCurving.coordinate", lambda: on(state(), "frame y")),
-    fuzz("raildyn.curving.SteadyCurving.plot", lambda: on(state()), accepts={"ax": "none"}),
+    fuzz(
+        "raildyn.curving.SteadyCurving.plot",
+        lambda: on(state()),
+        accepts={"exaggeration": "big tiny mm", "ax": "none"},
+    ),
     fuzz(
         "raildyn.curving.quasi_static_curving",
         lambda: call(Bogie().nonlinear(), 25.0, 600.0, 0.1, start=nearby()),
-        accepts={"cant": "zero", "start": "none"},  # None: from the linear steady state
+        accepts={
+            "speed": "tiny",
+            "radius": "big mm",
+            "cg_height": "tiny",
+            "flange_angle": "tiny",
+            "cant": "zero",
+            "start": "none",
+        },  # None: from the linear steady state
         limit=20.0,  # a stalled search tries four methods and a short run before it gives up
     ),
     fuzz(
@@ -97,7 +116,12 @@ ENTRIES = [
         ),
         accepts=RESULT | {"wheel_vertical": ""},
     ),
-    fuzz("raildyn.curving.curve_entry", lambda: call(Bogie().nonlinear(), 25.0, SHORT), limit=20.0),
+    fuzz(
+        "raildyn.curving.curve_entry",
+        lambda: call(Bogie().nonlinear(), 25.0, SHORT),
+        limit=20.0,
+        accepts={"max_step": "big mm", "rtol": "mm"},
+    ),
     fuzz(
         "raildyn.curving.CurveEntry",
         lambda: call(25.0, SHORT, np.arange(3.0), np.zeros(1), *np.ones((3, 1, 3))),
@@ -107,7 +131,7 @@ ENTRIES = [
     fuzz(
         "raildyn.curving.curving_map",
         lambda: call(Bogie().nonlinear(), [15.0, 25.0], [300.0, 600.0], 0.1),
-        accepts={"cant": "zero"},
+        accepts={"cg_height": "tiny", "flange_angle": "tiny", "cant": "zero"},
         limit=20.0,  # as quasi_static_curving, for each point a stalled search leaves
     ),
     fuzz(
@@ -127,7 +151,7 @@ ENTRIES = [
             "flange_force": "zero negative",
             "wear_number": "zero",
             "derailment_quotient": "zero",
-            "cant": "zero",
+            "cant": "zero big mm",
         },  # fmt: skip
     ),
     fuzz(
@@ -140,35 +164,40 @@ ENTRIES = [
         lambda: on(Bogie().nonlinear(), np.full(6, 1e-3), 25.0, 1.0 / 600.0, 0.5),
         # a state of either sign; a tangent track (κ = 0) and any unbalanced acceleration
         accepts={
+            "speed": "tiny",
             "q": "zero negative",
             "curvature": "zero negative",
-            "unbalanced_acceleration": "zero negative",
+            "unbalanced_acceleration": "zero negative big mm",
         },
     ),
     fuzz(
         "raildyn.wheelset.NonlinearLateral.arc_jacobian",
         lambda: on(Bogie().nonlinear(), np.full(6, 1e-3), 25.0, 1.0 / 600.0, 0.5),
         accepts={
+            "speed": "tiny",
             "q": "zero negative",
             "curvature": "zero negative",
-            "unbalanced_acceleration": "zero negative",
+            "unbalanced_acceleration": "zero negative big mm",
         },
     ),
     fuzz(
         "raildyn.wheelset.NonlinearLateral.relative_to_track",
         lambda: on(curved(), 1.0, np.full(12, 1e-3)),
-        accepts={"t": "zero negative", "state": "zero negative"},
+        accepts={"t": "zero negative big mm", "state": "zero negative"},
     ),
     fuzz(
         "raildyn.wheelset.profile_contact",
         lambda: call(s1002_wheel(), uic60_rail(1 / 40), friction=0.3, flange_stiffness=1.0e7),
-        accepts={"flange_stiffness": "zero"},
+        accepts={"friction": "tiny", "flange_stiffness": "zero big mm"},
     ),
     fuzz(
         "raildyn.wheelset.wheel_forces",
         lambda: call(Wheelset(), WheelRailContact(), 0.012, 1e-3, 0.01, 0.02, 30.0),
         # displacements and rates of either sign; arrays broadcast (the speeds too, each > 0)
-        accepts={**{name: "zero negative list" for name in ("y", "psi", "ydot", "psidot")}, "speed": "list"},
+        accepts={
+            **{name: "zero negative list mm big" for name in ("y", "psi", "ydot", "psidot")},
+            "speed": "list tiny",
+        },
     ),
     fuzz(
         "raildyn.wheelset.WheelForces",

@@ -18,19 +18,27 @@ def tradeoff() -> StabilityCurving:
 ENTRIES = [
     fuzz("raildyn.curving.stiffness.bending_shear_stiffness", lambda: call(Bogie())),
     # stiffnesses ≥ 0: a bogie with no primary yaw or lateral spring has none
-    fuzz("raildyn.curving.stiffness.BendingShear", lambda: call(31.4e6, 3.2e6), accepts={"*": "zero"}),
-    fuzz("raildyn.curving.stiffness.self_steering_curving", lambda: call(Bogie(), 600.0)),
+    fuzz(
+        "raildyn.curving.stiffness.BendingShear",
+        lambda: call(31.4e6, 3.2e6),
+        accepts={"bending": "big mm", "shear": "big mm", "*": "zero"},
+    ),
+    fuzz(
+        "raildyn.curving.stiffness.self_steering_curving",
+        lambda: call(Bogie(), 600.0),
+        accepts={"radius": "big mm"},
+    ),
     fuzz(
         "raildyn.curving.stiffness.SelfSteeringCurving",
         lambda: call(600.0, BendingShear(31.4e6, 3.2e6), np.array([4e-3, 3e-3]), np.array([1e-3, -1e-3])),
         # a result: offsets and angles of attack of either sign
-        accepts={"offset": "zero negative", "angle_of_attack": "zero negative"},
+        accepts={"radius": "big tiny mm", "offset": "zero negative", "angle_of_attack": "zero negative"},
     ),
     fuzz(
         "raildyn.curving.stiffness.stability_and_curving",
         lambda: call(Bogie(), [5e6, 20e6], 25.0, 800.0, 0.05, scan=8),
         # k_ψ = 0 is a bogie with no primary yaw spring; on straight track the cant may be zero
-        accepts={"cant": "zero"},
+        accepts={"speed": "tiny", "radius": "big mm", "tol": "big tiny mm", "cant": "zero"},
         limit=10.0,
     ),
     fuzz(
@@ -45,7 +53,12 @@ ENTRIES = [
             0.05,
             (1.0, 150.0),
         ),
-        accepts={"angle_of_attack": "zero negative", "cant": "zero"},
+        accepts={
+            "speed": "tiny",
+            "radius": "big tiny mm",
+            "angle_of_attack": "zero negative",
+            "cant": "zero big mm",
+        },
     ),
     fuzz("raildyn.curving.stiffness.StabilityCurving.plot", lambda: on(tradeoff()), accepts={"ax": "none"}),
     # a widget factory takes no arguments: only the unknown keyword applies (tests/test_widgets_ch08.py

@@ -22,9 +22,10 @@ ENTRIES = [
         lambda: on(DERIVED, *ARGS),
         # Rates and angles of either sign, or zero, are states of a running wheelset.
         accepts={
-            "lateral_velocity": "zero negative",
-            "yaw_angle": "zero negative",
-            "yaw_rate": "zero negative",
+            "speed": "tiny",
+            "lateral_velocity": "zero negative big mm",
+            "yaw_angle": "zero negative big mm",
+            "yaw_rate": "zero negative big mm",
             "contact_angle_left": "zero negative",
             "contact_angle_right": "zero negative",
         },

@@ -21,16 +21,23 @@ def truck_assembler():
     return Assembler(labels, n_inputs=4)
 
 
-# Friction forces and the stiffnesses that sit beside friction may be zero (no wedge, no warp spring).
+# Friction forces and the stiffnesses that sit beside friction may be zero (no wedge, no warp spring), and
+# have no plausible upper bound; the side frames' mass and the inertias a thousand times larger are still
+# within the plausible ranges (PLAUSIBLE_RANGES "mass", "inertia"); the reference conditions of the
+# equivalent linearisation (frequency, amplitude, angle) are any positive numbers.
 TRUCK_ZEROS = {
-    name: "zero"
-    for name in (
-        "warp_stiffness",
-        "nest_shear_stiffness",
-        "lateral_friction",
-        "warp_friction",
-        "centre_plate_friction",
-    )
+    **{
+        name: "zero mm big"
+        for name in (
+            "warp_stiffness",
+            "nest_shear_stiffness",
+            "lateral_friction",
+            "warp_friction",
+            "centre_plate_friction",
+        )
+    },
+    **{name: "mm" for name in ("side_frame_mass", "side_frame_yaw_inertia", "bolster_yaw_inertia")},
+    **{name: "mm big tiny" for name in ("reference_frequency", "reference_amplitude", "reference_angle")},
 }
 
 ENTRIES = [
@@ -38,7 +45,7 @@ ENTRIES = [
         "raildyn.wheelset.SuspensionElement",
         lambda: call({"frame y": 1.0, "wheelset1 y": -1.0}, wedge, 1.0e6, 2.0e4),
         # a law's force has either sign (it pulls a deflection of either sign back)
-        accepts={"stiffness": "zero", "damping": "zero", "force": "returns-negative"},
+        accepts={"stiffness": "zero big mm", "damping": "zero big mm", "force": "returns-negative"},
     ),
     fuzz("raildyn.vehicles.ThreePieceTruck", lambda: call(), accepts=TRUCK_ZEROS),
     fuzz(
@@ -47,15 +54,28 @@ ENTRIES = [
         accepts={"first_input": "zero"},
     ),
     fuzz("raildyn.vehicles.ThreePieceTruck.linear_system", lambda: on(veh.ThreePieceTruck())),
-    fuzz("raildyn.vehicles.ThreePieceTruck.nonlinear", lambda: on(veh.ThreePieceTruck(), 20.0)),
+    fuzz(
+        "raildyn.vehicles.ThreePieceTruck.nonlinear",
+        lambda: on(veh.ThreePieceTruck(), 20.0),
+        accepts={"speed": "tiny"},
+    ),
     fuzz("raildyn.vehicles.ThreePieceTruck.replace", lambda: on(veh.ThreePieceTruck(), warp_stiffness=1.0e6)),
     fuzz(
         "raildyn.vehicles.LateralFreightCar",
         lambda: call(),
-        accepts={"body_height": "zero", "roll_damping": "zero"},
+        accepts={
+            "body_roll_inertia": "mm",
+            "roll_stiffness": "big mm",
+            "body_height": "zero",
+            "roll_damping": "zero big mm",
+        },
     ),
     fuzz("raildyn.vehicles.LateralFreightCar.linear_system", lambda: on(veh.LateralFreightCar())),
-    fuzz("raildyn.vehicles.LateralFreightCar.nonlinear", lambda: on(veh.LateralFreightCar(), 20.0)),
+    fuzz(
+        "raildyn.vehicles.LateralFreightCar.nonlinear",
+        lambda: on(veh.LateralFreightCar(), 20.0),
+        accepts={"speed": "tiny"},
+    ),
     fuzz(
         "raildyn.vehicles.LateralFreightCar.replace",
         lambda: on(veh.LateralFreightCar(), body_mass=100_000.0),

@@ -46,17 +46,22 @@ def damper():
 
 # M, C, K of a linear run; C and K may be zero or negative (the equations of a system that is
 # undamped, or unstable, are integrated as they are); x0, v0 and the force take any sign.
-LINEAR = {"C": "zero negative", "K": "zero negative", "x0": "zero negative", "v0": "zero negative"}
+# An abstract system has no plausible size: any mass, damping, stiffness or start is valid.
+ANY = "zero negative mm big"
+LINEAR = {"M": "mm big tiny", "C": ANY, "K": ANY, "x0": ANY, "v0": ANY}
 LOAD = {**LINEAR, "force": "returns-negative"}
 FIRST = {**LINEAR, "force": "returns-negative"}
-STEP = {"C": "zero negative", "K": "zero negative"}
+STEP = {"M": "mm big tiny", "C": ANY, "K": ANY, "h": "mm big tiny"}
 
 ENTRIES = [
     # --- linear schemes, f(t) as a callable or as samples
     fuzz(
         "raildyn.integrators.newmark",
         lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load, gamma=0.6, beta=0.3),
-        accepts={**LOAD, "beta": "zero"},  # β in [0, 1]: β = 0 is the explicit member
+        accepts={
+            **LOAD,
+            "beta": "zero",
+        },  # β in [0, 1]: β = 0 is the explicit member
     ),
     fuzz(
         "raildyn.integrators.average_acceleration",
@@ -66,12 +71,18 @@ ENTRIES = [
     fuzz(
         "raildyn.integrators.linear_acceleration",
         lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, np.sin(T)[None, :]),
-        accepts={**LINEAR, "force": "zero negative none"},  # None: no load
+        accepts={
+            **LINEAR,
+            "force": "zero negative none",
+        },  # None: no load
     ),
     fuzz(
         "raildyn.integrators.hht_alpha",
         lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load, alpha=-0.1),
-        accepts={**LOAD, "alpha": "zero negative"},  # α in [−⅓, 0]
+        accepts={
+            **LOAD,
+            "alpha": "zero negative",
+        },  # α in [−⅓, 0]
     ),
     fuzz(
         "raildyn.integrators.wilson", lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, load, theta=1.5), accepts=LOAD
@@ -96,12 +107,28 @@ ENTRIES = [
     fuzz(
         "raildyn.integrators.newmark_newton",
         lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, hardening, jacobian=hardening_tangent, max_iter=10),
-        accepts={**FIRST, "jacobian": "returns-negative"},
+        accepts={
+            "M": "big mm",
+            "C": "big mm",
+            "K": "mm",
+            "beta": "tiny",
+            "tol": "mm",
+            **FIRST,
+            "jacobian": "returns-negative",
+        },
     ),
     fuzz(
         "raildyn.integrators.stiff",
         lambda: call(1.0, 0.1, W2, T, 1.0, 0.0, hardening, jacobian=hardening_tangent, rtol=1e-6, atol=1e-9),
-        accepts={**FIRST, "jacobian": "returns-negative"},
+        accepts={
+            "M": "big mm",
+            "C": "big mm",
+            "K": "mm",
+            "rtol": "mm",
+            "atol": "mm",
+            **FIRST,
+            "jacobian": "returns-negative",
+        },
     ),
     # --- the linear steps and their recursion matrices
     fuzz(
@@ -151,7 +178,7 @@ ENTRIES = [
     fuzz(
         "raildyn.integrators.IntegrationResult.plot",
         lambda: on(result(), None, dof=0, quantity="v", scale=2.0),
-        accepts={"dof": "zero", "scale": "negative"},
+        accepts={"dof": "zero", "scale": "negative big tiny mm"},
     ),
     fuzz(
         "raildyn.integrators.Deviation",
@@ -172,22 +199,22 @@ ENTRIES = [
     fuzz(
         "raildyn.integrators.amplification_matrix",
         lambda: call("newmark", 0.1, 0.05, gamma=0.6, beta=0.3),
-        accepts={"dt_over_T": "list", "damping_ratio": "zero"},
+        accepts={"dt_over_T": "list mm", "damping_ratio": "zero"},
     ),
     fuzz(
         "raildyn.integrators.spectral_radius",
         lambda: call("wilson", 0.1, 0.05, theta=1.4),
-        accepts={"dt_over_T": "list", "damping_ratio": "zero"},
+        accepts={"dt_over_T": "list mm", "damping_ratio": "zero"},
     ),
     fuzz(
         "raildyn.integrators.period_elongation",
         lambda: call("hht_alpha", 0.1, 0.05, alpha=-0.1),
-        accepts={"dt_over_T": "list", "damping_ratio": "zero"},
+        accepts={"dt_over_T": "list mm", "damping_ratio": "zero"},
     ),
     fuzz(
         "raildyn.integrators.amplitude_decay",
         lambda: call("houbolt", 0.1, 0.05),
-        accepts={"dt_over_T": "list", "damping_ratio": "zero"},
+        accepts={"dt_over_T": "list mm", "damping_ratio": "zero"},
     ),
     fuzz(
         "raildyn.integrators.stability_limit",
@@ -197,18 +224,18 @@ ENTRIES = [
     fuzz(
         "raildyn.integrators.first_order_step_limit",
         lambda: call("rk4", -100.0),
-        accepts={"eigenvalue": "negative"},
+        accepts={"eigenvalue": "negative complex big tiny mm"},
     ),
     fuzz(
         "raildyn.integrators.stable_step",
         lambda: call("central_difference", 1.0, 0.1, W2),
-        accepts={"C": "zero negative", "K": "zero negative"},
+        accepts={"M": "big tiny mm", "C": "zero negative big mm", "K": "zero negative big mm"},
         infinite=("return",),  # no stiffness: stable at any step, the documented +inf
     ),
     fuzz(
         "raildyn.integrators.stiffness_ratio",
         lambda: call(1.0, 101.0, 100.0),
-        accepts={"C": "zero negative", "K": "negative"},
+        accepts={"M": "big mm", "C": "zero negative mm", "K": "negative big mm"},
     ),
     fuzz(
         "raildyn.integrators.scheme_accuracy",
@@ -220,7 +247,7 @@ ENTRIES = [
         lambda: call(
             "rk4", {}, 0.0, np.array([0.1]), np.array([0.99]), np.array([0.01]), np.array([0.02]), 0.45
         ),
-        accepts={"*": "zero negative"},
+        accepts={"stability_limit_dt_over_T": "big mm", "*": "zero negative"},
     ),  # a result: its values are what the analysis computed
     fuzz("raildyn.integrators.SchemeAccuracy.plot_spectral_radius", lambda: on(chart(), None)),
     fuzz("raildyn.integrators.SchemeAccuracy.plot_period_elongation", lambda: on(chart(), None)),
@@ -240,62 +267,73 @@ ENTRIES = [
         lambda: call([0.0, 0.01], 1.0e6, 10.0),
         accepts={
             "deflection": "zero negative shape",
-            "stiffness": "zero list",
-            "preload": "zero negative list",
+            "stiffness": "zero list big mm",
+            "preload": "zero negative list big mm",
         },
     ),
     fuzz(
         "raildyn.suspension.damper_force",
         lambda: call([-0.1, 0.2], 2.0e4),
-        accepts={"velocity": "zero negative shape", "damping": "zero list"},
+        accepts={"velocity": "zero negative shape", "damping": "zero list big mm"},
     ),
     fuzz(
         "raildyn.suspension.coulomb_friction",
         lambda: call([-1.0, 0.5], 500.0, velocity_scale=0.01),
         accepts={
             "velocity": "zero negative shape",
-            "friction_force": "zero list",
+            "friction_force": "zero list big mm",
             "velocity_scale": "list none",  # None: the ideal law
         },
     ),
     fuzz(
         "raildyn.suspension.coulomb_friction_slope",
         lambda: call([0.0, 1e-3], 1.0e4, velocity_scale=1.0e-3),
-        accepts={"velocity": "zero negative shape", "friction_force": "zero list", "velocity_scale": "list"},
+        accepts={
+            "velocity": "zero negative shape",
+            "friction_force": "zero list big mm",
+            "velocity_scale": "list mm",
+        },
     ),
     fuzz(
         "raildyn.suspension.friction_error_bound",
         lambda: call(0.03, 500.0, 0.01),
-        accepts={"velocity": "zero negative list", "friction_force": "zero list", "velocity_scale": "list"},
+        accepts={
+            "velocity": "zero negative list big mm",
+            "friction_force": "zero list big mm",
+            "velocity_scale": "list",
+        },
     ),
     fuzz(
         "raildyn.suspension.friction_amplitude_loss",
         lambda: call(1.0e4, 5.0e6),
-        accepts={"friction_force": "zero list", "stiffness": "list"},
+        accepts={"friction_force": "zero list big mm", "stiffness": "list big tiny mm"},
     ),
     fuzz(
         "raildyn.suspension.clearance_force",
         lambda: call([-0.02, 0.005, 0.02], 0.01, 1.0e6, 1.0e5),
         accepts={
             "deflection": "zero negative shape",
-            "clearance": "zero",
-            "stop_stiffness": "zero",
-            "stiffness": "zero",
+            "clearance": "zero big mm",
+            "stop_stiffness": "zero big mm",
+            "stiffness": "zero big mm",
         },
     ),
     fuzz(
         "raildyn.suspension.FrictionDamper",
         lambda: call(100.0, 1e-3),
-        accepts={"friction_force": "zero list", "velocity_scale": "list"},  # one value per coordinate
+        accepts={
+            "friction_force": "zero list big mm",
+            "velocity_scale": "list mm",
+        },  # one value per coordinate
     ),
     fuzz(
         "raildyn.suspension.FrictionDamper.force",
         lambda: on(damper(), 0.1, np.zeros(1), np.array([0.01])),
-        accepts={"t": "zero negative", "x": "zero negative", "v": "zero negative"},
+        accepts={"t": "zero negative big mm", "x": "zero negative", "v": "zero negative"},
     ),
     fuzz(
         "raildyn.suspension.FrictionDamper.jacobian",
         lambda: on(damper(), 0.1, np.zeros(1), np.array([0.01])),
-        accepts={"t": "zero negative", "x": "zero negative", "v": "zero negative"},
+        accepts={"t": "zero negative big mm", "x": "zero negative", "v": "zero negative"},
     ),
 ]

@@ -19,15 +19,16 @@ ENTRIES = [
         "raildyn.vehicles.ThreeAxleTruck",
         lambda: call(),
         accepts={
+            "frame_yaw_inertia": "mm",
             "motor_mass": "zero",
             "motor_axle_share": "zero",
-            "middle_lateral_stiffness": "zero",
-            "middle_lateral_damping": "zero",
-            "middle_lateral_play": "zero",
-            "secondary_lateral_stiffness": "zero",
-            "secondary_lateral_damping": "zero",
-            "secondary_yaw_stiffness": "zero",
-            "secondary_yaw_damping": "zero",
+            "middle_lateral_stiffness": "zero big mm",
+            "middle_lateral_damping": "zero big mm",
+            "middle_lateral_play": "zero big mm",
+            "secondary_lateral_stiffness": "zero big mm",
+            "secondary_lateral_damping": "zero big mm",
+            "secondary_yaw_stiffness": "zero big mm",
+            "secondary_yaw_damping": "zero big",
         },
     ),
     fuzz(
@@ -39,12 +40,25 @@ ENTRIES = [
     fuzz("raildyn.vehicles.ThreeAxleTruck.replace", lambda: on(veh.ThreeAxleTruck(), frame_mass=2500.0)),
     fuzz("raildyn.vehicles.ThreeAxleTruck.without_play", lambda: on(veh.ThreeAxleTruck())),
     fuzz("raildyn.vehicles.ThreeAxleTruck.play_element", lambda: on(veh.ThreeAxleTruck(), "1")),
-    fuzz("raildyn.vehicles.ThreeAxleTruck.nonlinear", lambda: on(veh.ThreeAxleTruck(), 40.0)),
-    fuzz("raildyn.vehicles.LateralLocomotive.nonlinear", lambda: on(veh.LateralLocomotive(), 40.0)),
+    fuzz(
+        "raildyn.vehicles.ThreeAxleTruck.nonlinear",
+        lambda: on(veh.ThreeAxleTruck(), 40.0),
+        accepts={"speed": "tiny"},
+    ),
+    fuzz(
+        "raildyn.vehicles.LateralLocomotive.nonlinear",
+        lambda: on(veh.LateralLocomotive(), 40.0),
+        accepts={"speed": "tiny"},
+    ),
     fuzz(
         "raildyn.vehicles.LateralLocomotive",
         lambda: call(),
-        accepts={"body_height": "zero", "roll_damping": "zero"},
+        accepts={
+            "body_roll_inertia": "mm",
+            "roll_stiffness": "big mm",
+            "body_height": "zero",
+            "roll_damping": "zero big mm",
+        },
     ),
     fuzz("raildyn.vehicles.LateralLocomotive.linear_system", lambda: on(veh.LateralLocomotive())),
     fuzz(
@@ -52,5 +66,9 @@ ENTRIES = [
         lambda: on(veh.LateralLocomotive(), body_mass=120_000.0),
     ),
     fuzz("raildyn.vehicles.LateralLocomotive.without_play", lambda: on(veh.LateralLocomotive())),
-    fuzz("raildyn.vehicles.rigid_truck_wavelength", lambda: call(0.508, 0.75, 0.05, 2.07)),
+    fuzz(
+        "raildyn.vehicles.rigid_truck_wavelength",
+        lambda: call(0.508, 0.75, 0.05, 2.07),
+        accepts={"conicity": "tiny"},
+    ),
 ]

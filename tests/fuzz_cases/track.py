@@ -44,15 +44,15 @@ ENTRIES = [
         accepts={
             "x": "zero negative shape",
             "depth": "zero",
-            "offset": "zero negative",
+            "offset": "zero negative big",
             "derivative": "zero",
-            "speed": "none",  # None: the derivative along x
+            "speed": "none tiny",  # None: the derivative along x
         },
     ),
     fuzz(
         "raildyn.track.jointed_track",
         lambda: call(X, 0.01, 2.0, derivative=2, speed=10.0),
-        accepts={"x": "zero negative shape", "depth": "zero", "derivative": "zero", "speed": "none"},
+        accepts={"x": "zero negative shape", "depth": "zero", "derivative": "zero", "speed": "none tiny"},
     ),
     fuzz(
         "raildyn.track.JointedTrack",
@@ -65,11 +65,12 @@ ENTRIES = [
         "raildyn.track.bump",
         lambda: call(X, 0.02, 1.0, position=0.5, derivative=2, speed=10.0),
         accepts={
+            "length": "mm",
             "x": "zero negative shape",
             "height": "zero negative",
-            "position": "zero negative",
+            "position": "zero negative big mm",
             "derivative": "zero",
-            "speed": "none",  # None: the derivative along x
+            "speed": "none tiny",  # None: the derivative along x
         },
     ),
     fuzz(
@@ -78,49 +79,63 @@ ENTRIES = [
         accepts={
             "x": "zero negative shape",
             "amplitude": "zero negative",
-            "phase": "zero negative",
+            "phase": "zero negative big mm",
             "derivative": "zero",
-            "speed": "none",  # None: the derivative along x
+            "speed": "none tiny",  # None: the derivative along x
         },
     ),
-    fuzz("raildyn.track.passing_frequency", lambda: call(30.0, 11.9)),
-    fuzz("raildyn.track.passing_speed", lambda: call(0.9, 11.9, harmonic=3)),
+    fuzz("raildyn.track.passing_frequency", lambda: call(30.0, 11.9), accepts={"speed": "tiny"}),
+    fuzz("raildyn.track.passing_speed", lambda: call(0.9, 11.9, harmonic=3), accepts={"frequency": "tiny"}),
     fuzz(
         "raildyn.track.harmonic_amplitudes",
         lambda: call(np.cos(2 * np.pi * np.arange(16) / 16), 3),
         accepts={"one_period": "zero negative"},  # any profile, a flat one included
     ),
     # ----------------------------------------------------------------- spectra
-    fuzz("raildyn.track.fra_psd", lambda: call("vertical", 4, W, k=0.25), accepts={"wavenumber": "shape"}),
+    fuzz(
+        "raildyn.track.fra_psd",
+        lambda: call("vertical", 4, W, k=0.25),
+        accepts={"k": "tiny", "wavenumber": "shape"},
+    ),
     fuzz("raildyn.track.german_psd", lambda: call("cross_level", "low", W), accepts={"wavenumber": "shape"}),
     fuzz("raildyn.track.track_psd", lambda: call("fra", "vertical", 4)),
     fuzz("raildyn.track.TrackSpectrum", lambda: call("german", "alignment", "high")),
     fuzz("raildyn.track.fra_speed_limit", lambda: call(4, "freight")),
     fuzz("raildyn.track.wavelength_band", lambda: call((1.524, 304.8))),
-    fuzz("raildyn.track.band_variance", lambda: call("fra", "cross_level", 4, (0.02, 4.0), k=0.25)),
+    fuzz(
+        "raildyn.track.band_variance",
+        lambda: call("fra", "cross_level", 4, (0.02, 4.0), k=0.25),
+        accepts={"k": "tiny"},
+    ),
     # ----------------------------------------------------------------- samples and the view in time
     fuzz(
         "raildyn.track.synthesize_irregularity",
         lambda: call(_psd, 100.0, 1.0, BAND, rng=1, n_samples=2),
         # rng: a seed >= 0 (0 and 10**12 included) or None
-        accepts={"rng": "zero huge none"},
+        accepts={"length": "mm", "rng": "zero huge none"},
     ),
     fuzz(
         "raildyn.track.synthesize_track",
         lambda: call("german", "low", 100.0, 1.0, BAND, rng=1),
-        accepts={"rng": "zero huge none"},
+        accepts={"length": "mm", "rng": "zero huge none"},
     ),
     fuzz(
         "raildyn.track.IrregularitySample",
         lambda: call(np.arange(8.0), np.ones((2, 8)), (0.1, 1.0), 1e-4),
         # a result: the irregularity has any sign; a variance may be 0
-        accepts={"z": "zero negative", "variance": "zero"},
+        accepts={"z": "zero negative", "variance": "zero big mm"},
     ),
     fuzz("raildyn.track.IrregularitySample.plot", lambda: on(_sample())),
     fuzz(
         "raildyn.track.ComponentVariances",
         lambda: call(**_VARIANCES),
-        accepts={"*": "zero"},  # a result: variances >= 0
+        accepts={
+            "vertical": "big mm",
+            "alignment": "big mm",
+            "cross_level": "big mm",
+            "gauge": "big mm",
+            "*": "zero",
+        },  # a result: variances >= 0
     ),
     fuzz(
         "raildyn.track.TwoRailIrregularity",
@@ -135,24 +150,26 @@ ENTRIES = [
     fuzz("raildyn.track.TwoRailIrregularity.rms", lambda: on(_two_rail(), "vertical")),
     fuzz("raildyn.track.TwoRailIrregularity.measured_rms", lambda: on(_two_rail(), "gauge")),
     fuzz("raildyn.track.TwoRailIrregularity.plot", lambda: on(_two_rail())),
-    fuzz("raildyn.track.temporal_psd", lambda: call(_psd, 30.0)),
+    fuzz("raildyn.track.temporal_psd", lambda: call(_psd, 30.0), accepts={"speed": "tiny"}),
     fuzz(
         "raildyn.track.spatial_to_temporal",
         lambda: call([2.0, 1.0, 0.5], [0.0, 1.0, 2.0], 10.0),
-        accepts={"psd_values": "zero"},  # a spectrum >= 0
+        accepts={"speed": "tiny", "psd_values": "zero"},  # a spectrum >= 0
     ),
     fuzz(
         "raildyn.track.axle_delays",
         lambda: call(AXLES, 25.0),
         # the positions may coincide (the two rails under one axle) or lie ahead of the first
-        accepts={"axle_positions": "zero negative"},
+        accepts={"speed": "tiny", "axle_positions": "zero negative"},
     ),
     fuzz(
         "raildyn.track.excitation_csd",
         lambda: call(_psd, np.array([1.0, 5.0, 20.0]), AXLES, 25.0),
-        accepts={"axle_positions": "zero negative"},
+        accepts={"speed": "tiny", "axle_positions": "zero negative"},
     ),
-    fuzz("raildyn.track.axle_filter_wavelengths", lambda: call(2.5, 3)),
+    fuzz(
+        "raildyn.track.axle_filter_wavelengths", lambda: call(2.5, 3), accepts={"axle_spacing": "big tiny mm"}
+    ),
     # ----------------------------------------------------------------- ride measures
     fuzz(
         "raildyn.ride.sperling_correction",
@@ -168,9 +185,9 @@ ENTRIES = [
         "raildyn.ride.sperling_harmonic",
         lambda: call(0.3, 4.0, "vertical"),
         # array_like, broadcast together: a list of values is valid; a zero acceleration too
-        accepts={"amplitude": "zero list", "frequency": "list"},
+        accepts={"amplitude": "zero list big mm", "frequency": "list big mm"},
     ),
-    fuzz("raildyn.ride.sperling_index", lambda: call(0.05), accepts={"weighted_rms": "zero"}),
+    fuzz("raildyn.ride.sperling_index", lambda: call(0.05), accepts={"weighted_rms": "zero big mm"}),
     fuzz(
         "raildyn.ride.iso2631_weighting",
         lambda: call([0.5, 6.3, 80.0], "Wk"),
@@ -184,11 +201,17 @@ ENTRIES = [
     fuzz(
         "raildyn.ride.ride_quality_history",
         lambda: call(_ACC, 0.01, "lateral"),
-        accepts={"acceleration": "zero negative"},  # any acceleration history
+        accepts={"dt": "big tiny mm", "acceleration": "zero negative"},  # any acceleration history
     ),
     fuzz(
         "raildyn.ride.RideQuality",
         lambda: call(0.1, 0.05, 1.5, 0.08),
-        accepts={"*": "zero"},  # a result: RMS values and an index, all >= 0
+        accepts={
+            "rms": "big mm",
+            "sperling_rms": "big mm",
+            "wz": "big mm",
+            "iso_rms": "big mm",
+            "*": "zero",
+        },  # a result: RMS values and an index, all >= 0
     ),
 ]

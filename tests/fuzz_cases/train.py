@@ -54,7 +54,7 @@ Y3 = np.tile(STATE[:, None], (1, 3))
 EXT = np.array([-0.03, 0.0, 0.03])
 
 #: Result dataclasses hold whatever a model computes: zero, negative and huge values are valid.
-RESULT = {"*": "zero negative huge"}
+RESULT = {"*": "zero negative huge mm big"}
 
 ENTRIES = [
     # --- vehicles and consists
@@ -87,12 +87,12 @@ ENTRIES = [
     fuzz(
         "raildyn.train.grade_force",
         lambda: call(1e5, 0.01),
-        accepts={"mass": "list", "grade": "zero negative list"},
+        accepts={"mass": "list big tiny mm", "grade": "zero negative list"},
     ),
     fuzz(
         "raildyn.train.curve_resistance",
         lambda: call(1e5, 0.005),
-        accepts={"mass": "list", "curvature": "zero negative list"},
+        accepts={"mass": "list big tiny mm", "curvature": "zero negative list"},
     ),
     fuzz(
         "raildyn.train.Route",
@@ -103,20 +103,32 @@ ENTRIES = [
     fuzz(
         "raildyn.train.Route.grade_at",
         lambda: on(graded().route, 50.0),
-        accepts={"position": "zero negative list"},
+        accepts={"position": "zero negative list big mm"},
     ),
     fuzz(
         "raildyn.train.Route.curvature_at",
         lambda: on(graded().route, 50.0),
-        accepts={"position": "zero negative list"},
+        accepts={"position": "zero negative list big mm"},
     ),
     fuzz(
         "raildyn.train.Route.vertical_curvature_at",
         lambda: on(graded().route, 50.0),
-        accepts={"position": "zero negative list"},
+        accepts={"position": "zero negative list big mm"},
     ),
     # --- couplers
-    fuzz("raildyn.train.DraftGear", lambda: call(), accepts={"slack": "zero", "solid_stiffness": "zero"}),
+    fuzz(
+        "raildyn.train.DraftGear",
+        lambda: call(),
+        accepts={
+            "loading_stiffness": "big mm",
+            "unloading_stiffness": "tiny",
+            "travel": "tiny",
+            "smoothing": "tiny",
+            "transition_rate": "big tiny mm",
+            "slack": "zero",
+            "solid_stiffness": "zero big mm",
+        },
+    ),
     fuzz(
         "raildyn.train.DraftGear.deflection",
         lambda: on(train.DraftGear(), EXT),
@@ -132,7 +144,11 @@ ENTRIES = [
         lambda: on(train.DraftGear(), 0.05),
         accepts={"amplitude": "zero"},
     ),
-    fuzz("raildyn.train.DraftGear.static_loop", lambda: on(train.DraftGear(), 0.05, points=5)),
+    fuzz(
+        "raildyn.train.DraftGear.static_loop",
+        lambda: on(train.DraftGear(), 0.05, points=5),
+        accepts={"amplitude": "tiny"},
+    ),
     fuzz(
         "raildyn.train.DraftGearLoop",
         lambda: call(np.array([0.0, 0.05, 0.0]), np.array([0.0, 1e6, 0.0]), 100.0),
@@ -146,41 +162,49 @@ ENTRIES = [
         accepts={
             "speed": "zero negative list",  # its sign is ignored
             "notch": "zero",  # idle
-            "max_tractive_effort": "zero",
-            "rail_power": "zero",
+            "max_tractive_effort": "zero big mm",
+            "rail_power": "zero big mm",
         },
     ),
     fuzz(
         "raildyn.train.dynamic_brake_force",
         lambda: call(10.0, 1.0, 3e5),
-        accepts={"speed": "zero negative list", "level": "zero", "max_force": "zero"},
+        accepts={"speed": "zero negative list", "level": "zero", "max_force": "zero big mm"},
     ),
-    fuzz("raildyn.train.AirBrake", lambda: call(), accepts={"start": "zero"}),
+    fuzz(
+        "raildyn.train.AirBrake",
+        lambda: call(),
+        accepts={"build_up_time": "big tiny mm", "level": "tiny", "start": "zero big"},
+    ),
     fuzz(
         "raildyn.train.AirBrake.arrival",
         lambda: on(train.AirBrake(), 100.0),
-        accepts={"distance": "zero list"},
+        accepts={"distance": "zero list big mm"},
     ),
     fuzz(
         "raildyn.train.AirBrake.fraction",
         lambda: on(train.AirBrake(), 1.0, 100.0),
-        accepts={"t": "zero negative list", "distance": "zero list"},  # before the signal arrives: 0
+        accepts={
+            "t": "zero negative list big mm",
+            "distance": "zero list big mm",
+        },  # before the signal arrives: 0
     ),
     # --- the longitudinal model
     fuzz(
         "raildyn.train.TrainModel",
         lambda: call(consist(), air_brake=train.AirBrake()),
         accepts={
+            "creep_speed": "tiny",
             "notch": "zero",
             "dynamic_brake": "zero",
             "air_brake": "none",  # no air-brake application
-            "front_start": "zero negative",
+            "front_start": "zero negative big",
         },
     ),
     fuzz(
         "raildyn.train.TrainModel.initial_state",
         lambda: on(model(), 10.0, extension=0.001),
-        accepts={"speed": "zero negative", "extension": "zero negative"},  # backwards; bunched
+        accepts={"speed": "zero negative", "extension": "zero negative mm"},  # backwards; bunched
     ),
     fuzz("raildyn.train.TrainModel.positions", lambda: on(model(), STATE), accepts={"y": "zero negative"}),
     fuzz(
@@ -196,17 +220,17 @@ ENTRIES = [
     fuzz(
         "raildyn.train.TrainModel.external_forces",
         lambda: on(graded(), 1.0, X[:2], V[:2]),
-        accepts={"t": "zero negative", "x": "zero negative", "v": "zero negative"},
+        accepts={"t": "zero negative big mm", "x": "zero negative", "v": "zero negative"},
     ),
     fuzz(
         "raildyn.train.TrainModel.rhs",
         lambda: on(model(), 1.0, STATE),
-        accepts={"t": "zero negative", "y": "zero negative"},
+        accepts={"t": "zero negative big mm", "y": "zero negative"},
     ),
     fuzz(
         "raildyn.train.TrainModel.rhs_numpy",
         lambda: on(model(), 1.0, STATE),
-        accepts={"t": "zero negative", "y": "zero negative"},
+        accepts={"t": "zero negative big mm", "y": "zero negative"},
     ),
     fuzz(
         "raildyn.train.TrainModel.run_from_states",
@@ -219,6 +243,8 @@ ENTRIES = [
         "raildyn.train.simulate",
         lambda: call(model(), 1.0, 10.0, samples=11),
         accepts={
+            "duration": "tiny mm",
+            "rtol": "mm",
             "initial_speed": "zero negative",  # standing; running backwards
             "initial_extension": "zero negative",  # centred; bunched
         },
@@ -232,7 +258,11 @@ ENTRIES = [
         ),
         accepts=RESULT,
     ),
-    fuzz("raildyn.train.TrainRun.stop_time", lambda: on(run()), accepts={"vehicle": "zero negative"}),
+    fuzz(
+        "raildyn.train.TrainRun.stop_time",
+        lambda: on(run()),
+        accepts={"threshold": "big tiny mm", "vehicle": "zero negative"},
+    ),
     fuzz("raildyn.train.TrainRun.plot_envelope", lambda: on(run())),
     fuzz("raildyn.train.TrainRun.plot_wave", lambda: on(run())),
     fuzz("raildyn.train.CouplerPeak", lambda: call(-1e5, 1, 20.0, 0.5), accepts=RESULT),
@@ -275,6 +305,10 @@ ENTRIES = [
     fuzz(
         "raildyn.train.limiting_coupler_force",
         lambda: call(consist(), 1 / 150, 0.5, vehicle=1),
-        accepts={"curvature": "negative", "vehicle": "zero negative"},  # its sign is ignored; from the rear
+        accepts={
+            "l_over_v": "big tiny mm",
+            "curvature": "negative tiny",
+            "vehicle": "zero negative",
+        },  # its sign is ignored; from the rear
     ),
 ]

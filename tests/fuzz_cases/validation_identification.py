@@ -43,46 +43,72 @@ FIELDS = dict(
     fitted=np.ones(4),
 )
 # result fields hold what a fit computes: any finite number is valid, but not NaN/inf/empty/strings
-RESULT = "zero negative huge list fraction"
+RESULT = "zero negative huge list fraction mm big"
 
 ENTRIES = [
     fuzz(
         "raildyn.validation.identification.free_decay",
         lambda: call(T, X, confidence=0.95),
-        accepts={"response": "negative list"},  # a decay of either sign or any size is a decay
+        accepts={
+            "confidence": "tiny",
+            "response": "negative list",
+        },  # a decay of either sign or any size is a decay
     ),
     fuzz(
         "raildyn.validation.identification.bridge_free_vibration",
         lambda: call(T, X, 0.5, confidence=0.9),
-        accepts={"response": "negative list", "leaves": "zero"},  # leaves = 0: the whole record
+        accepts={
+            "confidence": "tiny",
+            "response": "negative list",
+            "leaves": "zero",
+        },  # leaves = 0: the whole record
     ),
     fuzz(
         "raildyn.validation.identification.weigh_in_motion",
         lambda: call(BEAM, TW, EPS, POS, [2.8], fibre_distance=0.1, speed=None, fit_spacings=True),
         # a scaled record gives scaled loads (negative: upward); lists are arrays
-        accepts={"strain": "list", "positions": "list", "spacings": "list empty"},  # empty: one axle
+        accepts={
+            "fibre_distance": "mm",
+            "confidence": "tiny",
+            "strain": "list",
+            "positions": "list",
+            "spacings": "list empty",
+        },  # empty: one axle
         limit=10.0,
     ),
     fuzz(
         "raildyn.validation.identification.coast_down",
         lambda: call(T, V, 1.0e5, confidence=0.95),
-        accepts={"speed": "list"},
+        accepts={"mass": "big mm", "confidence": "tiny", "speed": "list"},
     ),
-    fuzz("raildyn.validation.identification.ParameterFit", lambda: call(**FIELDS), accepts={"*": RESULT}),
+    fuzz(
+        "raildyn.validation.identification.ParameterFit",
+        lambda: call(**FIELDS),
+        accepts={"residual_rms": "big mm", "*": RESULT},
+    ),
     fuzz("raildyn.validation.identification.ParameterFit.value", lambda: on(FIT, "damping_ratio")),
     fuzz("raildyn.validation.identification.ParameterFit.bounds", lambda: on(FIT, "frequency_hz")),
     fuzz("raildyn.validation.identification.ParameterFit.plot", lambda: on(FIT, None)),
     fuzz(
         "raildyn.validation.identification.FreeDecayFit",
         lambda: call(**FIELDS, log_decrement=0.2, decrement_damping_ratio=0.03),
-        accepts={"*": RESULT, "log_decrement": RESULT + " none", "decrement_damping_ratio": RESULT + " none"},
+        accepts={
+            "residual_rms": "big mm",
+            "*": RESULT,
+            "log_decrement": RESULT + " none",
+            "decrement_damping_ratio": RESULT + " none",
+        },
     ),
     fuzz(
         "raildyn.validation.identification.WeighInMotionFit",
         lambda: call(**FIELDS, given_spacings=np.array([2.5])),
-        accepts={"*": RESULT, "given_spacings": RESULT + " none"},
+        accepts={"residual_rms": "big mm", "*": RESULT, "given_spacings": RESULT + " none"},
     ),
-    fuzz("raildyn.validation.identification.CoastDownFit", lambda: call(**FIELDS), accepts={"*": RESULT}),
+    fuzz(
+        "raildyn.validation.identification.CoastDownFit",
+        lambda: call(**FIELDS),
+        accepts={"residual_rms": "big mm", "*": RESULT},
+    ),
     fuzz(
         "raildyn.validation.identification.CoastDownFit.resistance",
         lambda: on(COAST, [5.0, 20.0]),
@@ -114,13 +140,13 @@ ENTRIES += [
     fuzz(
         "raildyn.validation.measured.StrainRecord.zeroed",
         lambda: on(RECORD, 14.0),
-        accepts={"before": "huge none"},  # None: the first quarter; beyond the end: the whole record
+        accepts={"before": "huge none big mm"},  # None: the first quarter; beyond the end: the whole record
     ),
     fuzz("raildyn.validation.measured.StrainRecord.plot", lambda: on(RECORD, None)),
     fuzz(
         "raildyn.validation.measured.lerelva_case",
         lambda: call("1603161045", flexural_rigidity=1.0e8, mass_per_length=1.0e3, damping_ratio=0.02),
-        accepts={"damping_ratio": "zero"},
+        accepts={"flexural_rigidity": "big mm", "mass_per_length": "mm", "damping_ratio": "zero"},
         limit=20.0,
     ),
     fuzz(
@@ -138,7 +164,15 @@ ENTRIES += [
             0.05,
             case().agreement,
         ),  # fmt: skip
-        accepts={"time": RESULT, "measured": RESULT, "predicted": RESULT, "scale": RESULT},
+        accepts={
+            "peak_speed": "tiny",
+            "lag_speed": "tiny",
+            "model_lag_speed": "tiny",
+            "time": RESULT,
+            "measured": RESULT,
+            "predicted": RESULT,
+            "scale": RESULT,
+        },
         limit=20.0,
     ),
     fuzz("raildyn.validation.measured.LerelvaCase.plot", lambda: on(case(), None), limit=20.0),

@@ -45,12 +45,12 @@ ENTRIES = [
     fuzz(
         "raildyn.validation.metrics.sprague_geers",
         lambda: call(MEASURED, PREDICTED, 0.01),
-        accepts={"measured": "negative huge", "predicted": "negative huge", "time": "huge none"},
+        accepts={"measured": "negative huge", "predicted": "negative huge", "time": "huge none big tiny mm"},
     ),
     fuzz(
         "raildyn.validation.metrics.SpragueGeers",
         lambda: call(0.1, 0.2, 0.22),
-        accepts={"magnitude": "zero negative huge", "phase": "zero", "combined": "zero huge"},
+        accepts={"magnitude": "zero negative huge big mm", "phase": "zero", "combined": "zero huge big mm"},
     ),
     fuzz(
         "raildyn.validation.metrics.compare",
@@ -64,12 +64,12 @@ ENTRIES = [
             "time": "none",  # records without a time base
             "measured": VALID_RECORD,
             "predicted": VALID_RECORD,
-            "nrmse": "zero huge",
+            "nrmse": "zero huge big mm",
             "correlation": "zero negative",
             "theil_u": "zero",
-            "magnitude": "zero negative huge",
+            "magnitude": "zero negative huge big mm",
             "phase": "zero",
-            "combined": "zero huge",
+            "combined": "zero huge big mm",
         },
     ),
     fuzz("raildyn.validation.metrics.Agreement.plot", lambda: on(compare(MEASURED, PREDICTED, 0.01))),
@@ -80,8 +80,8 @@ ENTRIES = [
             "record": VALID_RECORD,
             "dt": "huge",  # a slow sampling only moves the bands down
             "nperseg": "none",
-            "f_min": "none",
-            "f_max": "huge none",  # no upper limit: every band below the Nyquist frequency
+            "f_min": "none tiny",
+            "f_max": "huge none big mm",  # no upper limit: every band below the Nyquist frequency
         },
     ),
     fuzz(
@@ -99,7 +99,7 @@ ENTRIES = [
         accepts={
             "excitation": "negative huge",
             "response": VALID_RECORD,
-            "dt": "huge",
+            "dt": "huge big tiny mm",
             "nperseg": "none",
         },
     ),
@@ -125,7 +125,7 @@ ENTRIES = [
     fuzz(
         "raildyn.validation.acceptance.SlidingRMS",
         lambda: call([0.5, 1.5, 2.5], [0.1, 0.2, 0.0], 1.0),
-        accepts={"rms": "zero huge", "window": "huge", "position": "zero"},
+        accepts={"rms": "zero huge", "window": "huge big tiny mm", "position": "zero"},
     ),
     fuzz("raildyn.validation.acceptance.SlidingRMS.plot", lambda: on(sliding_rms(RECORD, 0.5, 100.0))),
     fuzz(
@@ -140,7 +140,7 @@ ENTRIES = [
             "start": "zero",
             "lower": "zero negative",
             "upper": "zero",
-            "length": "huge",
+            "length": "huge big tiny mm",
             "percent": "zero",
         },
     ),

@@ -52,10 +52,11 @@ ENTRIES = [
         "raildyn.vehicles.Bogie",
         lambda: call(),
         accepts={
-            "secondary_lateral_stiffness": "zero",
-            "secondary_lateral_damping": "zero",
-            "secondary_yaw_stiffness": "zero",
-            "secondary_yaw_damping": "zero",
+            "frame_yaw_inertia": "mm",
+            "secondary_lateral_stiffness": "zero big mm",
+            "secondary_lateral_damping": "zero big mm",
+            "secondary_yaw_stiffness": "zero big mm",
+            "secondary_yaw_damping": "zero big",
         },
     ),
     fuzz(
@@ -68,7 +69,12 @@ ENTRIES = [
     fuzz(
         "raildyn.vehicles.Car",
         lambda: call(),
-        accepts={"body_height": "zero", "roll_damping": "zero"},
+        accepts={
+            "body_roll_inertia": "mm",
+            "roll_stiffness": "big mm",
+            "body_height": "zero",
+            "roll_damping": "zero big mm",
+        },
     ),
     fuzz("raildyn.vehicles.Car.linear_system", lambda: on(veh.Car())),
     fuzz("raildyn.vehicles.Car.replace", lambda: on(veh.Car(), body_mass=30000.0)),
@@ -77,14 +83,24 @@ ENTRIES = [
     fuzz(
         "raildyn.vehicles.VerticalCar",
         lambda: call(),
-        accepts={"primary_damping": "zero", "secondary_damping": "zero"},
+        accepts={
+            "bogie_pitch_inertia": "mm",
+            "primary_stiffness": "big tiny mm",
+            "secondary_stiffness": "big tiny mm",
+            "primary_damping": "zero big mm",
+            "secondary_damping": "zero big mm",
+        },
     ),
     fuzz("raildyn.vehicles.VerticalCar.linear_system", lambda: on(veh.VerticalCar())),
     fuzz("raildyn.vehicles.VerticalCar.body_frequencies", lambda: on(veh.VerticalCar())),
     fuzz(
         "raildyn.vehicles.BodyFrequencies",
         lambda: call(1.0, 2.0, 0.5),
-        accepts={"bounce_hz": "zero", "pitch_hz": "zero", "roll_hz": "zero none"},  # None: no roll coordinate
+        accepts={
+            "bounce_hz": "zero big mm",
+            "pitch_hz": "zero big mm",
+            "roll_hz": "zero none big mm",
+        },  # None: no roll coordinate
     ),
     fuzz(
         "raildyn.vehicles.vertical.body_on_two_trucks",
@@ -102,19 +118,37 @@ ENTRIES = [
             4.0e4,
             np.array([0.0, 2.56, 19.0, 21.56]),
         ),  # fmt: skip
-        accepts={"primary_damping": "zero", "secondary_damping": "zero"},
+        accepts={
+            "truck_pitch_inertia": "mm",
+            "primary_stiffness": "big tiny mm",
+            "secondary_stiffness": "big tiny mm",
+            "primary_damping": "zero big mm",
+            "secondary_damping": "zero big mm",
+        },
     ),
     fuzz(
         "raildyn.vehicles.Locomotive",
         lambda: call(),
-        accepts={"primary_damping": "zero", "secondary_damping": "zero"},
+        accepts={
+            "truck_pitch_inertia": "mm",
+            "primary_stiffness": "big tiny mm",
+            "secondary_stiffness": "big tiny mm",
+            "primary_damping": "zero big mm",
+            "secondary_damping": "zero big mm",
+        },
     ),
     fuzz("raildyn.vehicles.Locomotive.linear_system", lambda: on(veh.Locomotive())),
     # ------------------------------------------------------------------ freight car
     fuzz(
         "raildyn.vehicles.FreightCar",
         lambda: call(),
-        accepts={"cg_height": "zero", "wedge_friction": "zero", "equivalent_damping": "zero"},
+        accepts={
+            "body_roll_inertia": "mm",
+            "nest_stiffness": "big mm",
+            "cg_height": "zero",
+            "wedge_friction": "zero big mm",
+            "equivalent_damping": "zero big",
+        },
     ),
     fuzz("raildyn.vehicles.FreightCar.linear_system", lambda: on(veh.FreightCar())),
     fuzz("raildyn.vehicles.FreightCar.natural_frequencies", lambda: on(veh.FreightCar())),
@@ -130,23 +164,28 @@ ENTRIES = [
     fuzz(
         "raildyn.vehicles.RockAndRoll",
         lambda: call(np.array([25.0, 30.0]), np.array([0.01, 0.02]), 20.0, T, np.zeros((2, T.size))),
-        accepts={"roll_amplitude": "zero", "roll": "zero negative"},
+        accepts={"resonance_speed": "tiny", "roll_amplitude": "zero", "roll": "zero negative"},
     ),
     fuzz("raildyn.vehicles.RockAndRoll.plot", lambda: on(rocking())),
     fuzz(
         "raildyn.vehicles.wedge_energy_per_cycle",
         lambda: call(6000.0, 0.01, 2.0, velocity_scale=0.002),
-        accepts={"friction_force": "zero", "velocity_scale": "none"},  # None: the ideal Coulomb law
+        accepts={
+            "amplitude": "big tiny mm",
+            "frequency": "big tiny mm",
+            "friction_force": "zero big mm",
+            "velocity_scale": "none",
+        },  # None: the ideal Coulomb law
     ),
     fuzz(
         "raildyn.vehicles.wedge_friction_force",
         lambda: call(16000.0, 0.65, 0.1),
-        accepts={"spring_force": "zero", "friction_coefficient": "zero"},
+        accepts={"spring_force": "zero big mm", "friction_coefficient": "zero"},
     ),
     fuzz(
         "raildyn.vehicles.WedgeFriction",
         lambda: call(4900.0, 3800.0),
-        accepts={"bolster_down": "zero", "bolster_up": "zero"},
+        accepts={"bolster_down": "zero big mm", "bolster_up": "zero big mm"},
     ),
     # ------------------------------------------------------------------ response to the track
     fuzz(
@@ -170,7 +209,7 @@ ENTRIES = [
     fuzz(
         "raildyn.vehicles.ResponseSpectrum",
         lambda: call(OMEGA, np.full(OMEGA.size, 1e-3), 0.05, 30.0),
-        accepts={"psd": "zero", "rms": "zero"},
+        accepts={"psd": "zero", "rms": "zero big mm"},
     ),
     fuzz("raildyn.vehicles.ResponseSpectrum.plot", lambda: on(spectrum())),
     fuzz(
@@ -187,11 +226,15 @@ ENTRIES = [
         lambda: call(T, np.zeros(T.size), np.zeros((T.size, 4))),
         accepts={"y": "zero negative", "inputs": "zero negative"},
     ),
-    fuzz("raildyn.vehicles.periodic_profile", lambda: call(Z, 0.5), accepts={"height": "zero negative"}),
+    fuzz(
+        "raildyn.vehicles.periodic_profile",
+        lambda: call(Z, 0.5),
+        accepts={"dx": "big tiny mm", "height": "zero negative"},
+    ),
     fuzz(
         "raildyn.vehicles.PeriodicProfile",
         lambda: call(Z, 0.5),
-        accepts={"heights": "zero negative"},
+        accepts={"dx": "big tiny mm", "heights": "zero negative"},
     ),
     fuzz(
         "raildyn.vehicles.PeriodicProfile.height",

@@ -23,7 +23,7 @@ S5 = np.array([0.5, 1.0, 1.0, 0.5, 0.25])
 RECORD = np.sin(0.7 * np.arange(64)) + 0.1 * np.cos(2.3 * np.arange(64))
 
 #: Changes valid for a result dataclass: its fields hold whatever the model computes.
-RESULT = "zero negative"
+RESULT = "zero negative mm big"
 
 
 def sdof():
@@ -59,38 +59,42 @@ def locus():
 
 ENTRIES = [
     # ------------------------------------------------------------------ SDOF
-    fuzz("raildyn.vibration.SDOF", lambda: call(1.0, 0.4, 100.0), accepts={"damping": "zero"}),
+    fuzz(
+        "raildyn.vibration.SDOF",
+        lambda: call(1.0, 0.4, 100.0),
+        accepts={"mass": "big mm", "stiffness": "big tiny mm", "damping": "zero big mm"},
+    ),
     fuzz(
         "raildyn.vibration.SDOF.from_modal",
         lambda: call(10.0, 0.05, mass=2.0),
-        accepts={"damping_ratio": "zero"},
+        accepts={"natural_frequency": "big mm", "mass": "big tiny mm", "damping_ratio": "zero big mm"},
     ),
     fuzz("raildyn.vibration.SDOF.roots", lambda: on(sdof())),
     fuzz(
         "raildyn.vibration.SDOF.free_response",
         lambda: on(sdof(), T, 0.01, 0.0),
-        accepts={"x0": "zero negative", "v0": "zero negative", "t": "zero shape"},
+        accepts={"x0": "zero negative big mm", "v0": "zero negative big", "t": "zero shape"},
     ),
     fuzz(
         "raildyn.vibration.SDOF.free_velocity",
         lambda: on(sdof(), T, 0.01, 0.1),
-        accepts={"x0": "zero negative", "v0": "zero negative", "t": "zero shape"},
+        accepts={"x0": "zero negative big mm", "v0": "zero negative big mm", "t": "zero shape"},
     ),
     fuzz("raildyn.vibration.SDOF.impulse_response", lambda: on(sdof(), T), accepts={"t": "zero shape"}),
     fuzz(
         "raildyn.vibration.SDOF.envelope",
         lambda: on(sdof(), T, 0.01, 0.1),
-        accepts={"x0": "zero negative", "v0": "zero negative", "t": "zero shape"},
+        accepts={"x0": "zero negative big mm", "v0": "zero negative big mm", "t": "zero shape"},
     ),
     fuzz(
         "raildyn.vibration.SDOF.decay_peaks",
         lambda: on(sdof(), 0.01, 0.1, count=3),
-        accepts={"x0": "zero negative", "v0": "zero negative"},
+        accepts={"x0": "zero negative big mm", "v0": "zero negative big mm"},
     ),
     fuzz(
         "raildyn.vibration.SDOF.free_vibration",
         lambda: on(sdof(), T, 0.01, 0.1, peaks=2),
-        accepts={"x0": "zero negative", "v0": "zero negative"},
+        accepts={"x0": "zero negative big mm", "v0": "zero negative big mm"},
     ),
     fuzz("raildyn.vibration.SDOF.receptance", lambda: on(sdof(), OMEGA), accepts={"omega": "zero shape"}),
     fuzz("raildyn.vibration.SDOF.base_frf", lambda: on(sdof(), OMEGA), accepts={"omega": "zero shape"}),
@@ -100,7 +104,7 @@ ENTRIES = [
     fuzz(
         "raildyn.vibration.SDOF.forced_response",
         lambda: on(sdof(), T, np.sin(T), 0.01, 0.1),
-        accepts={"force": "zero negative", "x0": "zero negative", "v0": "zero negative"},
+        accepts={"force": "zero negative", "x0": "zero negative big mm", "v0": "zero negative big mm"},
     ),
     fuzz(
         "raildyn.vibration.SDOF.duhamel_response",
@@ -126,7 +130,11 @@ ENTRIES = [
     fuzz(
         "raildyn.vibration.RootLocus",
         lambda: call(10.0, np.array([0.0, 1.0]), [[10j, -10j], [-10.0, -10.0]]),
-        accepts={"damping_ratios": "zero", "roots": RESULT},  # a result: what root_locus computes
+        accepts={
+            "natural_frequency": "big tiny mm",
+            "damping_ratios": "zero",
+            "roots": RESULT,
+        },  # a result: what root_locus computes
     ),
     fuzz(
         "raildyn.vibration.RootLocus.plot",
@@ -136,7 +144,7 @@ ENTRIES = [
     fuzz(
         "raildyn.vibration.root_locus",
         lambda: call(10.0, np.array([0.0, 0.5, 1.0, 2.0])),
-        accepts={"damping_ratios": "zero"},
+        accepts={"natural_frequency": "big mm", "damping_ratios": "zero"},
     ),
     fuzz(
         "raildyn.vibration.log_decrement",
@@ -148,21 +156,25 @@ ENTRIES = [
         lambda: call(np.array([0.3, 1.0])),
         accepts={"delta": "zero shape"},
     ),
-    fuzz("raildyn.vibration.decrement_from_peaks", lambda: call(12.0, 3.0, cycles=5)),
+    fuzz(
+        "raildyn.vibration.decrement_from_peaks",
+        lambda: call(12.0, 3.0, cycles=5),
+        accepts={"first": "big tiny mm", "later": "big tiny mm"},
+    ),
     fuzz(
         "raildyn.vibration.magnification_factor",
         lambda: call(np.array([0.0, 0.5, 2.0]), 0.25),
-        accepts={"frequency_ratio": "zero shape", "damping_ratio": "zero"},
+        accepts={"frequency_ratio": "zero shape", "damping_ratio": "zero big mm"},
     ),
     fuzz(
         "raildyn.vibration.phase_angle",
         lambda: call(np.array([0.0, 0.5, 2.0]), 0.25),
-        accepts={"frequency_ratio": "zero shape", "damping_ratio": "zero"},
+        accepts={"frequency_ratio": "zero shape", "damping_ratio": "zero big mm"},
     ),
     fuzz(
         "raildyn.vibration.transmissibility_ratio",
         lambda: call(np.array([0.0, 0.5, 2.0]), 0.25),
-        accepts={"frequency_ratio": "zero shape", "damping_ratio": "zero"},
+        accepts={"frequency_ratio": "zero shape", "damping_ratio": "zero big mm"},
     ),
     # ------------------------------------------------------------------ several degrees of freedom
     fuzz(
@@ -187,8 +199,8 @@ ENTRIES = [
         ),  # fmt: skip
         # a result: what complex_modes computes (a negative damping ratio is an unstable mode)
         accepts={
-            "eigenvalues": RESULT,
-            "mode_shapes": RESULT,
+            "eigenvalues": RESULT + " complex",  # complex: the eigenvalues' and shapes' own domain
+            "mode_shapes": RESULT + " complex",
             "natural_frequencies": "zero",
             "damping_ratios": RESULT,
         },
@@ -200,7 +212,9 @@ ENTRIES = [
     ),
     fuzz("raildyn.vibration.ChainMatrices", lambda: call(M2, C2, K2), accepts={"*": RESULT}),  # a result
     fuzz(
-        "raildyn.vibration.RayleighCoefficients", lambda: call(0.075, 0.025), accepts={"*": RESULT}
+        "raildyn.vibration.RayleighCoefficients",
+        lambda: call(0.075, 0.025),
+        accepts={"alpha": "big mm", "beta": "big mm", "*": RESULT},
     ),  # a result
     fuzz(
         "raildyn.vibration.RayleighCoefficients.damping_ratio",
@@ -228,16 +242,25 @@ ENTRIES = [
         lambda: call([2.0, 1.0], [200.0, 100.0], dampings=[2.0, 1.0], grounded=True),
         accepts={"dampings": "zero none"},
     ),
-    fuzz("raildyn.vibration.uniform_chain_frequencies", lambda: call(3, 1.0, 100.0)),
+    fuzz(
+        "raildyn.vibration.uniform_chain_frequencies",
+        lambda: call(3, 1.0, 100.0),
+        accepts={"mass": "big tiny mm", "stiffness": "big tiny mm"},
+    ),
     fuzz(
         "raildyn.vibration.rayleigh_coefficients",
         lambda: call(1.0, 3.0, 0.05, 0.02),
-        accepts={"xi1": "zero", "xi2": "zero"},
+        accepts={
+            "omega1": "big tiny mm",
+            "omega2": "big tiny mm",
+            "xi1": "zero big mm",
+            "xi2": "zero big mm",
+        },
     ),
     fuzz(
         "raildyn.vibration.rayleigh_damping",
         lambda: call(M2, K2, 0.5, 0.01),
-        accepts={"K": "zero", "alpha": "zero negative", "beta": "zero negative"},
+        accepts={"K": "zero", "alpha": "zero negative big mm", "beta": "zero negative big mm"},
     ),
     fuzz("raildyn.vibration.modal_analysis", lambda: call(M2, K2), accepts={"K": "zero"}),
     fuzz("raildyn.vibration.modal_damping_ratios", lambda: call(M2, C2, K2), accepts={"C": "zero"}),
@@ -283,9 +306,13 @@ ENTRIES = [
     fuzz(
         "raildyn.random_vibration.SpectralLines",
         lambda: call(np.array([1.0, 2.0, 3.0]), np.array([0.01, 0.01, 0.02]), 1.0),
-        accepts={"psd": "zero"},
+        accepts={"d_omega": "big tiny mm", "psd": "zero"},
     ),
-    fuzz("raildyn.random_vibration.cancellation_frequencies", lambda: call(0.1, 3)),
+    fuzz(
+        "raildyn.random_vibration.cancellation_frequencies",
+        lambda: call(0.1, 3),
+        accepts={"delay": "big tiny mm"},
+    ),
     fuzz(
         "raildyn.random_vibration.convert_psd",
         lambda: call(S5, from_sided="two", from_unit="Hz", to_sided="one", to_unit="rad/s"),
@@ -294,7 +321,7 @@ ENTRIES = [
     fuzz(
         "raildyn.random_vibration.response_psd",
         lambda: call(np.array([1.0, 0.5, -0.2, 0.1, 0.0]), S5),
-        accepts={"frf": "zero negative", "input_psd": "zero"},
+        accepts={"frf": "zero negative complex", "input_psd": "zero complex"},
     ),
     fuzz(
         "raildyn.random_vibration.delayed_input_csd",
@@ -319,7 +346,12 @@ ENTRIES = [
     fuzz(
         "raildyn.random_vibration.sdof_white_noise_mean_square",
         lambda: call(1.0, 2.0, 4.0, 5.0, sided="two"),
-        accepts={"psd_level": "zero"},
+        accepts={
+            "mass": "big tiny mm",
+            "damping": "big tiny mm",
+            "stiffness": "big tiny mm",
+            "psd_level": "zero big mm",
+        },
     ),
     fuzz(
         "raildyn.random_vibration.synthesis_lines",
@@ -334,7 +366,7 @@ ENTRIES = [
     fuzz(
         "raildyn.random_vibration.welch_psd",
         lambda: call(RECORD, 0.01, nperseg=32),
-        accepts={"x": "zero negative shape", "nperseg": "none"},
+        accepts={"dt": "big tiny mm", "x": "zero negative shape", "nperseg": "none"},
     ),
     # ------------------------------------------------------------------ plot helpers
     fuzz("raildyn.plots.axes_or_new", lambda: call(axes()), accepts={"ax": "none"}),
@@ -353,11 +385,25 @@ ENTRIES = [
         lambda: call(OMEGA, np.array([1.0, 0.1, 0.01]), ax=axes()),
         accepts={"psd": "zero", "ax": "none"},
     ),
+    # ------------------------------------------------------------------ the plausible ranges
+    fuzz(
+        "raildyn.constants.PlausibleRange",
+        lambda: call("a wheel's rolling radius", 0.1, 1.5, "m", "from the smallest wheels to the largest"),
+        # any text describes a quantity; a range may start at 0 or below (a signed quantity), and a
+        # wider one (×1000, 1e9 or 1e300 at the top) is still a range
+        accepts={
+            "what": "unknown",
+            "unit": "unknown",
+            "reason": "unknown",
+            "low": "zero negative",
+            "high": "mm big huge",
+        },  # fmt: skip
+    ),
     # ------------------------------------------------------------------ the failure policy
     fuzz(
         "raildyn.errors.SolverError",
         lambda: call("the state became non-finite", step=12, time=0.06),
-        accepts={"step": "zero none", "time": "zero negative none", "reason": "unknown"},
+        accepts={"step": "zero none", "time": "zero negative none big mm", "reason": "unknown"},
         skip={"partial": "holds whatever the failed run computed (NaN included): any object is valid"},
     ),
 ]
