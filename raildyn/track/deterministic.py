@@ -42,7 +42,6 @@ __all__ = [
 
 RAIL_LENGTH = 11.9  # m; the 39-ft rail of North American jointed track (Garg & Dukkipati 1984, ch. 3)
 # m/s: the speed a rate in time may be asked at: the package's one speed limit.
-_MAX_SPEED = MAXIMUM_SPEED
 _ARRANGEMENTS = ("staggered", "in_phase")
 
 

@@ -34,14 +34,14 @@ from scipy.optimize import brentq
 
 from raildyn import _checks
 from raildyn._progress import progress_bar
-from raildyn.constants import GRAVITY
+from raildyn.constants import GRAVITY, MAXIMUM_SPEED
 from raildyn.errors import SolverError
 from raildyn.integrators import _dopri
 from raildyn.train import _kernel
 from raildyn.train import forces as train_forces
 from raildyn.train.couplers import _MAX_EXTENSION, DraftGear, _extension
 from raildyn.train.forces import NOTCHES, AirBrake, dynamic_brake_force
-from raildyn.train.resistance import _MAX_SPEED, CURVE_RESISTANCE, Route, davis_resistance
+from raildyn.train.resistance import CURVE_RESISTANCE, Route, davis_resistance
 from raildyn.train.results import QuasiStatic, TrainRun
 from raildyn.train.vehicles import _MAX_VEHICLES, Consist, make_consist
 
@@ -253,7 +253,7 @@ class TrainModel:
         ndarray, shape (2n,)
             The state: m, m, m/s.
         """
-        speed = _checks.scalar("speed", speed, low=-_MAX_SPEED, high=_MAX_SPEED)
+        speed = _checks.scalar("speed", speed, low=-MAXIMUM_SPEED, high=MAXIMUM_SPEED)
         extension = _checks.scalar("extension", extension, low=-_MAX_EXTENSION, high=_MAX_EXTENSION)
         x0 = self.front_start - self._pre["offset"][0]
         return np.r_[x0, np.full(self.size - 1, extension), np.full(self.size, speed)]
@@ -342,8 +342,8 @@ class TrainModel:
         """
         t = _checks.scalar("t", t)
         v = self._vehicle_array("v", v)
-        if np.abs(v).max() > _MAX_SPEED:
-            raise ValueError(f"v must be within ±{_MAX_SPEED} m/s, got {v.flat[np.argmax(np.abs(v))]!r}")
+        if np.abs(v).max() > MAXIMUM_SPEED:
+            raise ValueError(f"v must be within ±{MAXIMUM_SPEED} m/s, got {v.flat[np.argmax(np.abs(v))]!r}")
         if x is not None or not self.route.is_level:
             x = self._vehicle_array("x", x)
             if x.shape != v.shape:
@@ -523,7 +523,7 @@ class TrainModel:
         >>> bool(qs.coupler_force[1] > 0), round(qs.acceleration, 3)  # the locomotives pull
         (True, 0.038)
         """
-        speed = _checks.scalar("speed", speed, low=0.0, high=_MAX_SPEED)
+        speed = _checks.scalar("speed", speed, low=0.0, high=MAXIMUM_SPEED)
         front = (
             self.front_start if front_position is None else _checks.scalar("front_position", front_position)
         )
@@ -578,8 +578,8 @@ class TrainModel:
         >>> round(3.6 * climb.balancing_speed(), 1)  # km/h on a 1 % climb
         14.7
         """
-        low = _checks.scalar("low", low, low=0.0, high=_MAX_SPEED)
-        high = _checks.scalar("high", high, low=0.0, high=_MAX_SPEED)
+        low = _checks.scalar("low", low, low=0.0, high=MAXIMUM_SPEED)
+        high = _checks.scalar("high", high, low=0.0, high=MAXIMUM_SPEED)
         if not low < high:
             raise ValueError(f"low must be < high, got low = {low!r} m/s and high = {high!r} m/s")
 
@@ -678,7 +678,7 @@ def simulate(
     """
     _checks.instance("model", model, TrainModel)
     duration = _checks.scalar("duration", duration, low=0.0, high=_MAX_DURATION, low_open=True)
-    initial_speed = _checks.scalar("initial_speed", initial_speed, low=-_MAX_SPEED, high=_MAX_SPEED)
+    initial_speed = _checks.scalar("initial_speed", initial_speed, low=-MAXIMUM_SPEED, high=MAXIMUM_SPEED)
     initial_extension = _checks.scalar(
         "initial_extension", initial_extension, low=-_MAX_EXTENSION, high=_MAX_EXTENSION
     )

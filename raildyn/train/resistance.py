@@ -52,9 +52,6 @@ _MAX_GRADE = 0.15
 # than any railway curve (tram curves go down to about 15 m); the AREA formula and the coupler
 # geometry are meant for curves far gentler than this.
 _MAX_CURVATURE = 0.1
-# Fastest speed the resistance and traction formulas take, m/s: the package's one limit (720 km/h),
-# above the wheel-rail speed record; Davis's formula was fitted far below it.
-_MAX_SPEED = MAXIMUM_SPEED
 
 
 def _bounded(name, value, limit, unit):
@@ -131,7 +128,9 @@ def davis_resistance(
     _checks.choice("form", form, ("original", "modified"))
     _checks.choice("units", units, ("SI", "US"))
     _checks.choice("kind", kind, _DAVIS_ORIGINAL)
-    v = np.abs(_bounded("speed", speed, _MAX_SPEED if units == "SI" else _MAX_SPEED / MPH, _UNITS[units]))
+    v = np.abs(
+        _bounded("speed", speed, MAXIMUM_SPEED if units == "SI" else MAXIMUM_SPEED / MPH, _UNITS[units])
+    )
     m = _checks.array("mass", mass, low=0.0, low_open=True, allow_empty=False)
     n = _checks.array("axles", axles, low=1.0, allow_empty=False)
     if np.any(n != np.round(n)):
