@@ -117,6 +117,16 @@ def orbit():
     return st.PeriodicOrbit(60.0, period, state, 0.0103, np.array([1.0, 0.1, 0.0, 0.0]), 1e-7)
 
 
+# The ramp's options: a step or tolerance a thousand times coarser is still an option; zero refinement
+# keeps the grid; the first displacement may start either side and small.
+BIFURCATION_ACCEPTS = {
+    "max_step": "big mm",
+    "rtol": "mm",
+    "threshold": "tiny",
+    "initial_displacement": "negative tiny",
+    "refine": "zero",
+}
+
 ENTRIES = [
     # ---------------------------------------------------------------- raildyn.linear_model
     fuzz(
@@ -502,13 +512,7 @@ ENTRIES = [
     fuzz(
         "raildyn.stability.bifurcation_diagram",
         lambda: call(NW, [70.0, 40.0], duration=0.8, max_step=1e-2, refine=1, progress=False, rtol=1e-6),
-        accepts={
-            "max_step": "big mm",
-            "rtol": "mm",
-            "threshold": "tiny",
-            "initial_displacement": "negative tiny",
-            "refine": "zero",
-        },
+        accepts=BIFURCATION_ACCEPTS,
         infinite=("nonlinear_critical_speed",),  # inf: no limit cycle on the grid (a start too small)
     ),
     fuzz(
@@ -516,13 +520,7 @@ ENTRIES = [
         lambda: call(
             [NW, NW], [70.0, 40.0], duration=0.8, max_step=1e-2, refine=1, progress=False, rtol=1e-6
         ),  # fmt: skip
-        accepts={
-            "max_step": "big mm",
-            "rtol": "mm",
-            "threshold": "tiny",
-            "initial_displacement": "negative tiny",
-            "refine": "zero",
-        },
+        accepts=BIFURCATION_ACCEPTS,
         infinite=("nonlinear_critical_speed",),  # inf: no limit cycle on the grid (a start too small)
     ),
     fuzz(

@@ -46,6 +46,17 @@ def rocking():
 
 # Result dataclasses hold what a model computes: their own domains (a frequency ≥ 0, a PSD ≥ 0, a
 # response of either sign) are stated in their docstrings and declared here field by field.
+
+# A body on two trucks (the vertical car's and the locomotive's): a truck's pitch inertia a thousand
+# times larger is still an inertia; springs and dampers have no plausible bound.
+BODY_ON_TRUCKS = {
+    "truck_pitch_inertia": "mm",
+    "primary_stiffness": "big tiny mm",
+    "secondary_stiffness": "big tiny mm",
+    "primary_damping": "zero big mm",
+    "secondary_damping": "zero big mm",
+}
+
 ENTRIES = [
     # ------------------------------------------------------------------ lateral models
     fuzz(
@@ -118,24 +129,12 @@ ENTRIES = [
             4.0e4,
             np.array([0.0, 2.56, 19.0, 21.56]),
         ),  # fmt: skip
-        accepts={
-            "truck_pitch_inertia": "mm",
-            "primary_stiffness": "big tiny mm",
-            "secondary_stiffness": "big tiny mm",
-            "primary_damping": "zero big mm",
-            "secondary_damping": "zero big mm",
-        },
+        accepts=BODY_ON_TRUCKS,
     ),
     fuzz(
         "raildyn.vehicles.Locomotive",
         lambda: call(),
-        accepts={
-            "truck_pitch_inertia": "mm",
-            "primary_stiffness": "big tiny mm",
-            "secondary_stiffness": "big tiny mm",
-            "primary_damping": "zero big mm",
-            "secondary_damping": "zero big mm",
-        },
+        accepts=BODY_ON_TRUCKS,
     ),
     fuzz("raildyn.vehicles.Locomotive.linear_system", lambda: on(veh.Locomotive())),
     # ------------------------------------------------------------------ freight car
