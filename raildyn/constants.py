@@ -11,6 +11,8 @@
 * :data:`STEEL_SHEAR_MODULUS` — G = E/(2(1 + ν)) = 80.8 GPa, the shear modulus
   that goes with them, so that Hertz's patch and Kalker's coefficients describe
   the same steel.
+* :data:`STANDARD_RAIL_SPACING` — 2a_r = 1.5 m, the distance between the rails' centres of
+  standard-gauge track: the base of the cant and of the cross-level alike.
 * :data:`MPH` — one mile per hour in m/s, 1609.344/3600 (the international mile of
   1959, exact), for sources in US units: the FRA's track-class speed limits, Davis's
   resistance formula.
@@ -33,6 +35,7 @@ __all__ = [
     "MAXIMUM_SPEED",
     "MPH",
     "PLAUSIBLE_RANGES",
+    "STANDARD_RAIL_SPACING",
     "STEEL_POISSON_RATIO",
     "STEEL_SHEAR_MODULUS",
     "STEEL_YOUNGS_MODULUS",
@@ -44,6 +47,12 @@ STEEL_YOUNGS_MODULUS = 2.1e11  # Pa (Johnson 1985)
 STEEL_POISSON_RATIO = 0.3  # (Johnson 1985)
 STEEL_SHEAR_MODULUS = STEEL_YOUNGS_MODULUS / (2.0 * (1.0 + STEEL_POISSON_RATIO))  # Pa, isotropic elasticity
 MPH = 1609.344 / 3600  # m/s per mile per hour (international mile, 1959: exact)
+
+STANDARD_RAIL_SPACING = 1.5
+"""2a_r, m: the lateral distance between the two rails' centres (their running-band centres)
+of standard-gauge (1435 mm) track, the base on which cant and cross-level are measured and
+stated: the 1500 mm of EN 13803 (whence its 11.8 V²/R) and of UIC practice. A cross-level Δz
+rolls the plane of the rails by Δz/(2a_r), as a cant h_t does by h_t/(2a_r)."""
 
 MAXIMUM_SPEED = 200.0
 """The largest speed any raildyn function accepts, m/s (720 km/h).

@@ -35,7 +35,13 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import nonnegative, positive, scalar
-from raildyn.constants import GRAVITY, STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS, STEEL_YOUNGS_MODULUS
+from raildyn.constants import (
+    GRAVITY,
+    STANDARD_RAIL_SPACING,
+    STEEL_POISSON_RATIO,
+    STEEL_SHEAR_MODULUS,
+    STEEL_YOUNGS_MODULUS,
+)
 from raildyn.contact.creep import creep_coefficients, saturation_factor, wheelset_creepages
 from raildyn.contact.hertz import hertz_contact
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
@@ -508,8 +514,10 @@ def add_wheelset(asm: Assembler, y: str, psi: str, ws: Wheelset, *, alignment=No
     Alignment y_a enters the terms that depend on the wheelset's displacement
     relative to the rails — the rolling-radius difference λ(y − y_a)/r₀ and the
     gravitational stiffness — while the creepages ẏ/V − ψ and aψ̇/V stay
-    absolute. Cross-level c tilts the rails by c/(2a), and the rail reactions
-    push the wheelset sideways by −W c/(2a).
+    absolute. A cross-level Δz (left rail height less the right, measured over the rails as a
+    cant is) rolls the plane of the rails by Δz/(2a_r), 2a_r the rail spacing
+    (:data:`raildyn.constants.STANDARD_RAIL_SPACING`), and the rail reactions push the wheelset
+    sideways by −W Δz/(2a_r).
 
     Parameters
     ----------
@@ -549,7 +557,7 @@ def add_wheelset(asm: Assembler, y: str, psi: str, ws: Wheelset, *, alignment=No
         asm.track_force(y, inputs["alignment"], stiffness[0, 0])
         asm.track_force(psi, inputs["alignment"], stiffness[1, 0])
     if "cross_level" in inputs:
-        asm.track_force(y, inputs["cross_level"], -ws.axle_load / (2 * ws.half_gauge))
+        asm.track_force(y, inputs["cross_level"], -ws.axle_load / STANDARD_RAIL_SPACING)
 
 
 def wickens_critical_speed(params: Wheelset) -> float:

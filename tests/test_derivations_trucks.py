@@ -172,8 +172,9 @@ def test_freight_car_roll_by_hand():
     # Roll: two trucks' nests in roll, less the weight h above them, plus the nests' shear at h (each truck).
     expected = 2 * s["k_phi"] - s["m"] * s["g"] * s["h"] + 2 * s["k_n"] * s["h"] ** 2
     assert sympy.simplify(_entry(d, "K", "phi", "phi") - expected) == 0
-    # The nests tilt with the mean cross-level of their truck: k_φ/(4a) per metre at each of its wheelsets.
-    assert sympy.simplify(_entry(d, "GK", "phi", r"\Delta{}z_11") - s["k_phi"] / (4 * s["a"])) == 0
+    # The nests tilt with the mean cross-level of their truck, over the rail spacing 2a_r: k_φ/(4a_r) per
+    # metre at each of its wheelsets.
+    assert sympy.simplify(_entry(d, "GK", "phi", r"\Delta{}z_11") - s["k_phi"] / (4 * s["a_r"])) == 0
     assert float(d.numeric(LOADED_FREIGHT_CAR, 20.0)[2][2, 2]) == pytest.approx(
         2 * LOADED_FREIGHT_CAR.roll_stiffness
         - LOADED_FREIGHT_CAR.body_mass * GRAVITY * LOADED_FREIGHT_CAR.body_height
@@ -217,9 +218,9 @@ def test_locomotive_matches_the_model(changes, share):
 def test_locomotive_by_hand():
     d = lateral_locomotive()
     s = _symbols(d)
-    # The frames tilt with the mean cross-level of their three wheelsets: k_φ/(6a) per metre at each.
-    assert sympy.simplify(_entry(d, "GK", "phi", r"\Delta{}z_11") - s["k_phi"] / (6 * s["a"])) == 0
-    assert sympy.simplify(_entry(d, "GC", "phi", r"\Delta{}z_23") - s["c_phi"] / (6 * s["a"])) == 0
+    # The frames tilt with the mean cross-level of their three wheelsets: k_φ/(6a_r) per metre at each.
+    assert sympy.simplify(_entry(d, "GK", "phi", r"\Delta{}z_11") - s["k_phi"] / (6 * s["a_r"])) == 0
+    assert sympy.simplify(_entry(d, "GC", "phi", r"\Delta{}z_23") - s["c_phi"] / (6 * s["a_r"])) == 0
     # Body yaw: the two trucks' secondary lateral springs at ±l and yaw springs.
     expected = 2 * s["k_sy"] * s["l"] ** 2 + 2 * s[r"k_s\psi"]
     assert sympy.simplify(_entry(d, "K", "psi", "psi") - expected) == 0

@@ -43,8 +43,8 @@ def test_tangent_wheelset_matches_the_package(changes):
 def test_tangent_wheelset_closed_forms():
     # By hand (Garg & Dukkipati 1984, ch. 5; Wickens 2003, ch. 2): the lateral creep force on the yaw,
     # −2f₂₂ψ, puts −2f₂₂ in K[0, 1]; the yaw row holds the spin stiffness 2f₂₃, the suspension and the
-    # destabilising gravitational −Waϑ₀; the cross-level's roll z_c/(2a) tilts the normal forces by
-    # −W z_c/(2a); the longitudinal creep damping is 2a²f₁₁/V.
+    # destabilising gravitational −Waϑ₀; the cross-level's roll z_c/(2a_r) (2a_r the rail spacing) tilts
+    # the normal forces by −W z_c/(2a_r); the longitudinal creep damping is 2a²f₁₁/V.
     d = tangent_wheelset()
     f11, f22, f23, f33, W, a, th0, k_psi, c_psi = (
         _symbol(d, n) for n in ("f_11", "f_22", "f_23", "f_33", "W", "a", "vartheta_0", "k_psi", "c_psi")
@@ -52,7 +52,7 @@ def test_tangent_wheelset_closed_forms():
     V = d.speed
     assert sympy.simplify(d.K[0, 1] + 2 * f22) == 0
     assert sympy.simplify(d.K[1, 1] - (k_psi + 2 * f23 - W * a * th0)) == 0
-    assert sympy.simplify(d.GK[0, 1] + W / (2 * a)) == 0
+    assert sympy.simplify(d.GK[0, 1] + W / (2 * _symbol(d, "a_r"))) == 0
     assert sympy.simplify(d.C[1, 1] - (c_psi + (2 * a**2 * f11 + 2 * f33) / V)) == 0
     assert d.GC == sympy.zeros(2, 2)
 

@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from raildyn import track
-from raildyn.constants import GRAVITY
+from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.vehicles import MANCHESTER_CAR
 from raildyn.vehicles import response as resp
 from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, VerticalCar
@@ -270,7 +270,7 @@ def test_lateral_car_follows_long_alignment():
 def test_lateral_car_static_cross_level_balances_the_rail_forces():
     """A constant cross-level c: K q = G_K c. The suspension forces are internal, so the lateral
     wheel–rail forces on the four wheelsets must add to zero:
-    Σ [−(Wε/a − 2f₂₃ε/(a r₀)) y + 2f₂₂ψ − W c/(2a)] = 0, the gravitational stiffness less the spin of the
+    Σ [−(Wε/a − 2f₂₃ε/(a r₀)) y + 2f₂₂ψ − W c/(2a_r)] = 0, the gravitational stiffness less the spin of the
     contact-angle difference."""
     from raildyn.vehicles import MANCHESTER_CAR
 
@@ -278,7 +278,7 @@ def test_lateral_car_static_cross_level_balances_the_rail_forces():
     c = 0.01
     q = np.linalg.solve(v.K, v.GK[:, 4:] @ np.full(4, c))
     ws = MANCHESTER_CAR.wheelset
-    push = -ws.axle_load * c / (2 * ws.half_gauge)
+    push = -ws.axle_load * c / STANDARD_RAIL_SPACING  # the rails rolled by Δz/(2a_r)
     total = 0.0
     for b in "12":
         for k in "12":

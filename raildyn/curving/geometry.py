@@ -51,10 +51,9 @@ __all__ = [
     "unbalanced_acceleration",
 ]
 
-STANDARD_RAIL_SPACING = 1.5
-"""2a_r, m: the lateral distance between the two rails' centres (their running-band centres)
-of standard-gauge (1435 mm) track, the base on which cant is measured and stated: the
-1500 mm of EN 13803 (whence its 11.8 V²/R) and of UIC practice."""
+STANDARD_RAIL_SPACING = constants.STANDARD_RAIL_SPACING
+"""2a_r = 1.5 m (:data:`raildyn.constants.STANDARD_RAIL_SPACING`), named here too for the curving
+functions that state the cant over it."""
 
 MINIMUM_RADIUS = 50.0
 """The smallest radius accepted, m. Main lines curve far more gently (a few hundred metres

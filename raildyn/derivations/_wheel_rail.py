@@ -14,6 +14,7 @@ from dataclasses import dataclass, fields
 
 import sympy
 
+from raildyn.constants import STANDARD_RAIL_SPACING
 from raildyn.derivations._core import coordinates, generalized_forces, time
 
 
@@ -59,6 +60,19 @@ _FIELDS = {
     "cpsi": ("c_psi", "yaw_damping"),
 }
 assert set(_FIELDS) == {f.name for f in fields(WheelsetSymbols)}
+
+
+RAIL_HALF_SPACING = sympy.Symbol("a_r")
+"""a_r, half the rail spacing (m): a cross-level Δz rolls the plane of the rails by Δz/(2a_r)."""
+
+
+def _rail_half_spacing(model) -> float:
+    return STANDARD_RAIL_SPACING / 2
+
+
+RAIL_PAIR = (RAIL_HALF_SPACING, _rail_half_spacing)
+"""The parameter pair of :data:`RAIL_HALF_SPACING`, for a derivation's ``parameters``: the value is
+half :data:`raildyn.constants.STANDARD_RAIL_SPACING`, whatever the model."""
 
 
 def symbol_table(fields: dict, path: str) -> tuple:
@@ -127,8 +141,9 @@ def _wheel_rail_of(w: WheelsetSymbols, V) -> tuple:
     * Kalker's linear law per wheel: F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ, M_z = f₂₃γ_y − f₃₃φ;
     * the rail's normal force, W/2 on each wheel, tilted by the contact angle, pushes the wheel
       laterally by −s (W/2) ϑ;
-    * on a cross-level Δz the track rolls by Δz/(2a), and the weight's component in its plane pushes the
-      wheelset toward the low rail by −W Δz/(2a).
+    * on a cross-level Δz the track rolls by Δz/(2a_r) (2a_r the rail spacing, over which a cross-level is
+      measured as a cant is), and the weight's component in its plane pushes the wheelset toward the low
+      rail by −W Δz/(2a_r).
 
     The forces work through the displacements of the contact point, the point (0, s a) of the wheelset:
     x = −s a sin ψ and y + s a (cos ψ − 1) in the track's axes, where the normal force acts; the creep
@@ -159,7 +174,7 @@ def _wheel_rail_of(w: WheelsetSymbols, V) -> tuple:
         ]
         if s == 1:
             kinematics = {"gx": gx, "gy": gy, "spin": spin, "angle": angle}
-    pairs.append((-w.W * c / (2 * w.a), y))
+    pairs.append((-w.W * c / (2 * RAIL_HALF_SPACING), y))
     Q = generalized_forces(pairs, [y, psi])
     variables = [y, psi, ya, c]
     return {y: linear(Q[0], variables), psi: linear(Q[1], variables)}, kinematics

@@ -24,6 +24,8 @@ import sympy
 from raildyn.constants import GRAVITY
 from raildyn.derivations._core import Derivation, Step, coordinates, lagrange, time
 from raildyn.derivations._wheel_rail import (
+    RAIL_HALF_SPACING,
+    RAIL_PAIR,
     WheelsetSymbols,
     linear,
     symbol_table,
@@ -224,7 +226,7 @@ def bogie() -> Derivation:
         K=K,
         GK=GK,
         GC=GC,
-        parameters=wheelset_pairs + bogie_pairs,
+        parameters=wheelset_pairs + bogie_pairs + (RAIL_PAIR,),
         speed=V,
         steps=(
             Step("kinetic energy", sympy.Eq(sympy.Symbol("T"), T)),
@@ -305,8 +307,8 @@ def lateral_car() -> Derivation:
         seat = yc + x * psic + h * phic  # the seat, x along and h below the centre, moves by this
         Tb, Ub, Db, pb, _ = _bogie_pieces(str(k + 1), frame, wheelsets, track, seat, psic, w, s, V)
         # Roll: the secondary vertical springs (and anti-roll bar) between the body and a frame that
-        # tilts by the mean cross-level of its two wheelsets over the contact spacing 2a.
-        u_roll = phic - (track[0][1] + track[1][1]) / (4 * w.a)
+        # tilts by the mean cross-level of its two wheelsets over the rail spacing 2a_r.
+        u_roll = phic - (track[0][1] + track[1][1]) / (4 * RAIL_HALF_SPACING)
         Ub += kphi * u_roll**2 / 2
         Db += cphi * _rate(u_roll) ** 2 / 2
         T += Tb
@@ -326,7 +328,7 @@ def lateral_car() -> Derivation:
         K=K,
         GK=GK,
         GC=GC,
-        parameters=wheelset_pairs + bogie_pairs + body_pairs,
+        parameters=wheelset_pairs + bogie_pairs + body_pairs + (RAIL_PAIR,),
         speed=V,
         steps=(
             Step("kinetic energy", sympy.Eq(sympy.Symbol("T"), T)),

@@ -36,7 +36,14 @@ from sympy.core.function import AppliedUndef
 
 from raildyn.constants import GRAVITY
 from raildyn.derivations._core import Derivation, Step, coordinates, lagrange, time
-from raildyn.derivations._wheel_rail import WheelsetSymbols, linear, wheel_rail, wheelset_symbols
+from raildyn.derivations._wheel_rail import (
+    RAIL_HALF_SPACING,
+    RAIL_PAIR,
+    WheelsetSymbols,
+    linear,
+    wheel_rail,
+    wheelset_symbols,
+)
 
 __all__ = ["lateral_freight_car", "lateral_locomotive", "three_axle_truck", "three_piece_truck"]
 
@@ -273,7 +280,7 @@ def _derive(title, coords, inputs, parts, p: _Parameters, V, steps) -> Derivatio
         K=K,
         GK=GK,
         GC=GC,
-        parameters=tuple(p.pairs),
+        parameters=(*p.pairs, RAIL_PAIR),
         speed=V,
         steps=tuple(steps),
     )
@@ -395,8 +402,8 @@ def _body_symbols(p: _Parameters) -> _BodySymbols:
 def _body(B: _BodySymbols, trucks, a) -> tuple:
     """The body's coordinates and parts: its inertia, its weight h above the seats, the roll springs.
 
-    Each truck's seats tilt with the mean cross-level Δz̄ of its wheelsets, by Δz̄/(2a) (a of the wheelset),
-    so the roll spring and damper of a truck act on φ − Δz̄/(2a).
+    Each truck's seats tilt with the mean cross-level Δz̄ of its wheelsets, by Δz̄/(2a_r) (2a_r the rail
+    spacing), so the roll spring and damper of a truck act on φ − Δz̄/(2a_r).
     """
     y, psi, phi = coordinates("y psi phi")
     parts = [
@@ -410,7 +417,7 @@ def _body(B: _BodySymbols, trucks, a) -> tuple:
     ]
     for truck in trucks:
         mean = sum(truck.cross_level) / len(truck.cross_level)
-        parts.append(_element(B.kphi, B.cphi, phi - mean / (2 * a)))
+        parts.append(_element(B.kphi, B.cphi, phi - mean / (2 * RAIL_HALF_SPACING)))
     return (y, psi, phi), parts
 
 
@@ -449,7 +456,7 @@ def lateral_freight_car() -> Derivation:
     :func:`three_piece_truck`, its centre plate at x = ±l moving with the body's point h below its centre
     of gravity, y_c = y ± l ψ + h φ, and turning with ψ; the body's weight h above the nests, U = m g h cos φ
     (so −m g h in the roll stiffness); the nests' roll stiffness k_φ and the wedges' vertical friction c_φ
-    per truck on φ − Δz̄/(2a), Δz̄ the mean cross-level under the truck.
+    per truck on φ − Δz̄/(2a_r), Δz̄ the mean cross-level under the truck.
 
     Returns
     -------
@@ -580,7 +587,7 @@ def lateral_locomotive() -> Derivation:
     As :class:`raildyn.vehicles.locomotive_lateral.LateralLocomotive`: each truck as in
     :func:`three_axle_truck`, its secondary seat at x = ±l moving with the body's point h below its centre
     of gravity, y ± l ψ + h φ, and its yaw spring on ψ_T − ψ; the body's weight h above the seats,
-    U = m g h cos φ; the secondary roll stiffness k_φ and damping c_φ per truck on φ − Δz̄/(2a), Δz̄ the mean
+    U = m g h cos φ; the secondary roll stiffness k_φ and damping c_φ per truck on φ − Δz̄/(2a_r), Δz̄ the mean
     cross-level under the truck's three wheelsets.
 
     Returns

@@ -22,6 +22,7 @@ import sympy
 from raildyn.constants import GRAVITY
 from raildyn.curving.geometry import STANDARD_RAIL_SPACING
 from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
+from raildyn.derivations._wheel_rail import RAIL_HALF_SPACING, RAIL_PAIR
 
 __all__ = ["critical_speed_limit", "curved_wheelset", "tangent_wheelset"]
 
@@ -169,8 +170,9 @@ def tangent_wheelset() -> Derivation:
     φ = ψ̇ cos ϑ/V ∓ sin ϑ/r₀ ≈ ψ̇/V ∓ ϑ/r₀ (small contact angles, as in the normal forces);
     Kalker's linear law gives each wheel F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ, M_z = f₂₃γ_y − f₃₃φ
     (Kalker 1967); the normal forces W/2, tilted by ϑ and
-    by the cross-level's roll Δz/(2a), give the lateral gravitational stiffness Wε/a, the yaw one
-    −Waϑ₀ and the load −W Δz/(2a) (Wickens 1965; Garg & Dukkipati 1984, ch. 5). The spin of the
+    by the cross-level's roll Δz/(2a_r) (2a_r the rail spacing), give the lateral gravitational
+    stiffness Wε/a, the yaw one −Waϑ₀ and the load −W Δz/(2a_r) (Wickens 1965; Garg & Dukkipati 1984,
+    ch. 5). The spin of the
     contact-angle difference, ∓ε(y − y_t)/(a r₀) on the two wheels, adds the lateral force
     2f₂₃ε(y − y_t)/(a r₀) and the yaw moment 2f₃₃ε(y − y_t)/(a r₀) (shown in a step). Lagrange's
     equations with T = ½mẏ² + ½I_zψ̇², the suspension's U and D, and the contact forces by virtual
@@ -199,7 +201,7 @@ def tangent_wheelset() -> Derivation:
     y, psi = coordinates("y psi")
     y_t, z_c = coordinates(r"y_t \Delta{}z")  # the cross-level Δz
     yd, psid = y.diff(time), psi.diff(time)
-    contact = _contact(s, y, psi, yd, psid, V, y - y_t, 0, 0, z_c / (2 * a))
+    contact = _contact(s, y, psi, yd, psid, V, y - y_t, 0, 0, z_c / (2 * RAIL_HALF_SPACING))
     Q = _forces(contact, y, psi, a, 0)
     T = m * yd**2 / 2 + I_z * psid**2 / 2
     U = k_y * y**2 / 2 + k_psi * psi**2 / 2
@@ -223,7 +225,7 @@ def tangent_wheelset() -> Derivation:
         K=K,
         GK=GK,
         GC=GC,
-        parameters=_parameters(s, lambda field: field),
+        parameters=(*_parameters(s, lambda field: field), RAIL_PAIR),
         speed=V,
         steps=(
             *contact["steps"],

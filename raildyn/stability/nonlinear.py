@@ -128,7 +128,8 @@ def simulate(
     model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
         ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and ``lateral_index``.
     speed : float
-        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
+        V, m/s, in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`] (below walking pace the creep damping
+        2f/V makes the equations too stiff to run; hunting sets in at tens of m/s).
     initial_state : array_like, (state_size,)
         In the units of the model's state (finite).
     duration : float
@@ -170,7 +171,7 @@ def simulate(
     >>> run.states.shape[0], float(run.t[-1])
     (4, 0.5)
     """
-    V = _checks.speed("speed", speed)
+    V = _checks.speed("speed", speed, low=_MIN_RUN_SPEED, low_open=False)
     T = _duration("duration", duration)
     h = positive("max_step", max_step)
     r = _checks.tolerance("rtol", rtol)
@@ -264,6 +265,11 @@ def _runs(
     return list(sampled), list(ends)
 
 
+# The slowest speed a nonlinear run takes, m/s: the creep damping 2f/V of a loaded wheel grows without
+# bound as V falls (some 2 × 10⁷ N·s/m at 1 m/s), so below walking pace the equations turn so stiff that
+# a run spends its whole budget of evaluations on the first fraction of a second; hunting, the
+# business of these runs, sets in at tens of metres a second.
+_MIN_RUN_SPEED = 1.0
 _MIN_DURATION = 1.0e-3  # s, the shortest run (and period) asked for
 _MAX_DURATION = 120.0  # s, the longest run (and period) asked for: hunting settles within seconds
 _MAX_EVALUATIONS = 1_000_000  # of a right-hand side in one integration: the bound on a run's work
@@ -496,7 +502,8 @@ def limit_cycle_amplitude(
         The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
         ``lateral_index``.
     speed : float
-        Speed V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
+        Speed V, m/s, in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`] (below walking pace the creep
+        damping 2f/V makes the equations too stiff to run).
     initial_displacement : float
         Starting lateral displacement of the first wheelset, m, either side, 0 < |y₀| ≤
         0.05 m: the centred state never moves, and no wheelset on the rails is further off
@@ -538,7 +545,7 @@ def limit_cycle_amplitude(
     >>> cycle.hunting(), round(1e3 * cycle.amplitude, 1), round(cycle.frequency_hz, 1)
     (True, 10.3, 5.7)
     """
-    V = _checks.speed("speed", speed)
+    V = _checks.speed("speed", speed, low=_MIN_RUN_SPEED, low_open=False)
     T = _duration("duration", duration)
     h = positive("max_step", max_step)
     r = _checks.tolerance("rtol", rtol)
@@ -733,7 +740,8 @@ def bifurcation_diagram(
     model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
         The nonlinear model, as for :func:`limit_cycle_amplitude`.
     speeds : array_like, shape (n_speeds,)
-        Speeds of the ramp, m/s (> 0), in any order: they are run from the highest down.
+        Speeds of the ramp, m/s, each in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`], in any order:
+        they are run from the highest down.
     initial_displacement : float
         Starting lateral displacement of the first wheelset at the highest speed (and after
         a speed where the motion died away), m, either side, 0 < |y₀| ≤ 0.05 m (as for
@@ -826,7 +834,7 @@ def bifurcation_diagrams(
     SolverError
         If an integration fails.
     """
-    V = np.sort(_checks.speeds("speeds", speeds))[::-1]
+    V = np.sort(_checks.speeds("speeds", speeds, low=_MIN_RUN_SPEED, low_open=False))[::-1]
     y_start = _displacement(initial_displacement)
     T = _duration("duration", duration)
     h = positive("max_step", max_step)
@@ -961,7 +969,8 @@ def periodic_orbit(
         The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
         ``lateral_index``.
     speed : float
-        Speed V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
+        Speed V, m/s, in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`] (below walking pace the creep
+        damping 2f/V makes the equations too stiff to run).
     state : array_like, shape (state_size,)
         Guess of a point on the orbit (for instance the ``state`` at the end of a
         :func:`limit_cycle_amplitude` run), in the units of the model's state: finite, not
@@ -994,7 +1003,7 @@ def periodic_orbit(
     The centred state is a trivial solution of the same equations: a guess
     far from any cycle may converge to it (amplitude 0).
     """
-    V = _checks.speed("speed", speed)
+    V = _checks.speed("speed", speed, low=_MIN_RUN_SPEED, low_open=False)
     T = _duration("period", period)
     positive("tol", tol)
     iterations = integer("max_iter", max_iter, low=1, high=100)

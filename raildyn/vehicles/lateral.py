@@ -27,7 +27,7 @@ import numpy as np
 
 from raildyn import _checks, contact
 from raildyn._checks import nonnegative, positive
-from raildyn.constants import GRAVITY
+from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.wheelset import NonlinearLateral, WheelRailContact, Wheelset, add_wheelset
 
@@ -338,7 +338,7 @@ class Car(_OnTheRails):
         cross-level Δz (m) there, coupled to each wheelset by
         :func:`~raildyn.wheelset.add_wheelset`. The bogie frames, which the model
         keeps upright on the track, tilt with the mean of their two wheelsets, so
-        the secondary roll springs act on φ − Δz̄/(2a), Δz̄ the mean of the two.
+        the secondary roll springs act on φ − Δz̄/(2a_r), Δz̄ the mean of the two and 2a_r the rail spacing.
 
         Returns
         -------
@@ -353,7 +353,7 @@ class Car(_OnTheRails):
         asm.mass("body ψ", self.body_yaw_inertia)
         asm.mass("body φ", self.body_roll_inertia)
         h, s = self.body_height, self.semi_bogie_spacing
-        tilt = 0.5 / (2 * self.wheelset.half_gauge)  # frame roll per metre of cross-level at each wheelset
+        tilt = 0.5 / STANDARD_RAIL_SPACING  # frame roll per metre of cross-level at each wheelset
         for first, (tag, x) in zip((0, 2), (("1", s), ("2", -s)), strict=True):
             # The secondary seat is h below the body's centre: it moves y + xψ + hφ.
             self.bogie.assemble(asm, tag, {"body y": 1.0, "body ψ": x, "body φ": h}, "body ψ", first)

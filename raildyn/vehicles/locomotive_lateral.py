@@ -50,7 +50,7 @@ import numpy as np
 
 from raildyn import _checks, contact
 from raildyn._checks import nonnegative, positive
-from raildyn.constants import GRAVITY
+from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.suspension import clearance_force
 from raildyn.vehicles.lateral import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
@@ -551,7 +551,7 @@ class LateralLocomotive(LinearModelBase):
         cross-level Δz (m) there, coupled to each wheelset by
         :func:`~raildyn.wheelset.add_wheelset`. The truck frames, kept upright on the
         track, tilt with the mean of their three wheelsets' cross-level, so the
-        secondary roll springs act on φ − Δz̄/(2a), Δz̄ that mean.
+        secondary roll springs act on φ − Δz̄/(2a_r), Δz̄ that mean and 2a_r the rail spacing.
 
         Returns
         -------
@@ -566,9 +566,7 @@ class LateralLocomotive(LinearModelBase):
         asm.mass("body ψ", self.body_yaw_inertia)
         asm.mass("body φ", self.body_roll_inertia)
         h, s = self.body_height, self.semi_truck_spacing
-        tilt = (1.0 / 3.0) / (
-            2 * self.wheelset.half_gauge
-        )  # frame roll per metre of cross-level at a wheelset
+        tilt = (1.0 / 3.0) / STANDARD_RAIL_SPACING  # frame roll per metre of cross-level at a wheelset
         for first, (tag, x) in zip((0, 3), (("1", s), ("2", -s)), strict=True):
             # The secondary seat is h below the body's centre: it moves y + xψ + hφ.
             self.truck.assemble(asm, tag, {"body y": 1.0, "body ψ": x, "body φ": h}, "body ψ", first)

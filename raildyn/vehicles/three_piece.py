@@ -61,7 +61,13 @@ import numpy as np
 
 from raildyn import _checks, contact
 from raildyn._checks import nonnegative, positive
-from raildyn.constants import GRAVITY, STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS, STEEL_YOUNGS_MODULUS
+from raildyn.constants import (
+    GRAVITY,
+    STANDARD_RAIL_SPACING,
+    STEEL_POISSON_RATIO,
+    STEEL_SHEAR_MODULUS,
+    STEEL_YOUNGS_MODULUS,
+)
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.vehicles.freight import wedge_energy_per_cycle, wedge_friction_force
 from raildyn.vehicles.lateral import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
@@ -554,7 +560,7 @@ class LateralFreightCar(LinearModelBase):
         asm.mass("body y", self.body_mass)
         asm.mass("body ψ", self.body_yaw_inertia)
         asm.mass("body φ", self.body_roll_inertia)
-        tilt = 0.5 / (2 * self.wheelset.half_gauge)  # nest roll per metre of cross-level at each wheelset
+        tilt = 0.5 / STANDARD_RAIL_SPACING  # nest roll per metre of cross-level at each wheelset
         for tag, body, first in self._trucks():
             self.truck.assemble(asm, tag, body, "body ψ", first)
             inputs = {4 + first: tilt, 5 + first: tilt}
