@@ -58,8 +58,13 @@ lab: $(STAMP)
 	$(VENV)/bin/jupyter lab notebooks
 
 ## app: the notebooks as a web app (widgets only, code hidden) for a lecture room
+# The page template is the project's (app/nbconvert/templates/raildyn: a citation or an equation link
+# reads as text instead of leaving the page and stopping its widgets; nothing is fetched from another
+# host); Voilà finds it on JUPYTER_PATH. tests/test_browser.py serves the app with these settings.
+APP_TEMPLATES := app
+APP_OPTIONS := --template=raildyn --no-browser --Voila.ip=127.0.0.1
 app: $(STAMP)
-	$(VENV)/bin/voila notebooks --no-browser --Voila.ip=127.0.0.1 --port=8866
+	JUPYTER_PATH=$(CURDIR)/$(APP_TEMPLATES)$${JUPYTER_PATH:+:$$JUPYTER_PATH} $(VENV)/bin/voila notebooks $(APP_OPTIONS) --port=8866
 
 ## bench: widget and model timings against their baselines, same run
 # One BLAS thread: on a shared 2-core machine, thread scheduling otherwise swings the
