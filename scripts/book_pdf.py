@@ -3,9 +3,9 @@
 Each page of the table of contents is opened in Debian's headless chromium (driven by Playwright, as
 the browser tests do), served from the built HTML on 127.0.0.1 so that nothing leaves the machine.
 The script waits until MathJax has typeset the page's mathematics, prepares the page for paper
-(``book_print.css`` beside this script; every folded answer unfolded), then prints it; pypdf merges
-the pages, with one bookmark per page. The course comes first; the API reference follows it as an
-appendix (``APPENDIX``).
+(``book_print.css`` beside this script; every folded answer unfolded; a formula or table wider than the
+column shrunk to fit), then prints it; pypdf merges the pages, with one bookmark per page and, under it,
+one per section. The course comes first; the API reference follows it as an appendix (``APPENDIX``).
 
 On paper, then:
 
@@ -108,6 +108,13 @@ _FIT = """() => {
     }
     return [shrunk, past];
 }"""
+
+# The page's sections (its second-level headings) for the PDF's bookmarks: [[element id, title]].
+_SECTIONS = """() => [...document.querySelectorAll('.bd-article section > h2')].map((h) => [
+    h.parentElement.id,
+    [...h.childNodes].filter((n) => !(n.classList && n.classList.contains('headerlink')))
+        .map((n) => n.textContent).join('').trim(),
+])"""
 
 # One blank sheet per page of the book with its number at the foot, laid over the printed sheets.
 _NUMBERS = """<!DOCTYPE html><meta charset="utf-8"><style>
@@ -227,6 +234,7 @@ def print_book(html: Path, out: Path) -> int:
     """Print every page of the built book under ``html`` into ``out``; returns the number of PDF pages."""
     from playwright.sync_api import sync_playwright
     from pypdf import PdfReader, PdfWriter
+    from pypdf.generic import Fit
 
     pages = toc_pages()
     missing = [p for p in pages if not (html / p).exists()]
@@ -263,7 +271,11 @@ def print_book(html: Path, out: Path) -> int:
                 owners += [path] * len(reader.pages)
                 destinations.update(_destinations(reader, path, start))
                 appendix = "Appendix: " if path in appendix_pages() else ""
-                writer.add_outline_item(appendix + title, start)
+                chapter = writer.add_outline_item(appendix + title, start, is_open=False)
+                for anchor, heading in page.evaluate(_SECTIONS):
+                    if (path, anchor) in destinations:
+                        sheet, left, top = destinations[(path, anchor)]
+                        writer.add_outline_item(heading, sheet, parent=chapter, fit=Fit.xyz(left, top))
                 note = f", {unfolded} answers unfolded" if unfolded else ""
                 note += f", {shrunk} formulas or tables shrunk to fit" if shrunk else ""
                 note += f", {past} elements wider than the page's column" if past else ""

@@ -67,6 +67,11 @@ class Printed:
         return source[source.index("<article") : source.index("</article>")]
 
 
+def _chapters(reader) -> list:
+    """The PDF's top-level bookmarks (pypdf lists a bookmark's children, as a list, after it)."""
+    return [item for item in reader.outline if not isinstance(item, list)]
+
+
 def flat(text: str) -> str:
     return re.sub(r"\s+", "", unicodedata.normalize("NFKC", text))
 
@@ -84,8 +89,9 @@ def book(printed_book, built_book) -> Printed:
     assert proc.returncode == 0, log[-4000:]
     reader = PdfReader(out)
     pages = book_pdf.toc_pages()
-    # One bookmark per HTML page, in the PDF's order: the bookmarks give each page's range of sheets.
-    starts = [reader.get_destination_page_number(item) for item in reader.outline]
+    # One bookmark per HTML page, in the PDF's order (its sections' bookmarks under it, as a list): the
+    # bookmarks give each page's range of sheets.
+    starts = [reader.get_destination_page_number(item) for item in _chapters(reader)]
     assert len(starts) == len(pages) and starts == sorted(starts), starts
     ends = starts[1:] + [len(reader.pages)]
     runs = []
@@ -110,7 +116,7 @@ def test_the_book_prints_to_one_pdf_with_its_mathematics_typeset(book):
     reader, pages = book.reader, book_pdf.toc_pages()
     # Every page of the table of contents prints to at least one sheet, each with its bookmark.
     assert f"({len(reader.pages)} pages)" in book.log and len(reader.pages) >= len(pages)
-    assert len(reader.outline) == len(pages)
+    assert len(_chapters(reader)) == len(pages)
     text = "\n".join("".join(run[0] for run in page) for page in book.runs)
     # MathJax typeset the mathematics: no TeX source left, and chapter 1's equation of motion is there
     # in typeset glyphs (the dots over x are combining accents in the PDF's text).
@@ -361,8 +367,24 @@ def test_the_mathematics_is_text_in_reading_order(book):
     assert checked > 100 and not missing, f"{len(missing)} of {checked} paragraphs, e.g. {missing[:3]}"
 
 
+def test_each_section_has_its_bookmark_at_its_heading(book):
+    outline, checked = book.reader.outline, 0
+    tops = [i for i, item in enumerate(outline) if not isinstance(item, list)]
+    for path, at in zip(book.pages, tops, strict=True):
+        children = outline[at + 1] if at + 1 < len(outline) and isinstance(outline[at + 1], list) else []
+        headings = re.findall(r"<h2>(.*?)</h2>", book.article(path), re.S)
+        assert len(children) == len(headings), (path, len(children), len(headings))
+        for child, heading in zip(children, headings, strict=True):
+            title = plain(heading).removesuffix("#").strip()
+            page = book.reader.get_destination_page_number(child)
+            assert child.title == title and page in book.ranges[path], (path, child.title, title)
+            assert flat(title) in flat(_below(book, page, float(child.top), 100)), (path, title)
+            checked += 1
+    assert checked > 50, checked
+
+
 def test_the_course_comes_first_and_the_api_reference_is_its_appendix(book):
-    titles = [item.title for item in book.reader.outline]
+    titles = [item.title for item in _chapters(book.reader)]
     appendix = book_pdf.appendix_pages()
     assert book.pages[-len(appendix) :] == appendix and all(
         t.startswith("Appendix") for t in titles[-len(appendix) :]
