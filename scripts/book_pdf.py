@@ -14,11 +14,14 @@ On paper, then:
   destination only for an element that a link of the same page points at, so each page gets one hidden
   link per element id before printing; the links between pages, which Chromium writes as addresses on
   the print server, are rewritten to those destinations. A link that finds no destination stops the
-  script. External links (a DOI, a launch button) stay as they are;
-* the worked answers the book folds away ("hide-cell" cells) are printed unfolded, each under the label
-  "Answer";
-* code wraps at the edge of its box; mathematics is MathJax's CommonHTML output with its own fonts,
-  laid out in the line it belongs to, so that its characters are text in reading order;
+  script. External links (a DOI, a repository) stay as they are;
+* the worked answers the book folds away (the notebooks' cells tagged hide-cell) are printed unfolded,
+  each under the label "Answer";
+* code wraps at the edge of its box, and a formula or table too wide for the column is shrunk to fit
+  it: nothing is cut at the sheet's edge;
+* mathematics is MathJax's CommonHTML output with its own fonts (a Type 3 font in the PDF, each glyph
+  mapped to its character), kept in the flow of its line, so that its characters are text in reading
+  order: a search finds "ω", and a sentence copied keeps its formulas;
 * every sheet carries its page number (printed by chromium onto a blank page and laid over the sheet).
 
 A kernel-free widget prints its default frame, which is the frame its page shows on opening.
