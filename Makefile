@@ -27,7 +27,8 @@ book: $(STAMP)
 	RAILDYN_PROGRESS=0 $(VENV)/bin/jupyter-book build . --config book/_config.yml --toc book/_toc.yml --path-output book
 	@echo "The book is at $(abspath $(BOOK_HTML))/index.html"
 
-## pdf: the whole book as one PDF (book/_build/raildyn.pdf), printed offline by headless chromium
+## pdf: the whole book as one PDF (book/_build/raildyn.pdf), printed offline by headless chromium: the
+## course with its worked answers, then the API reference as its appendix; page numbers, links inside the PDF
 pdf: book chromium
 	$(PY) scripts/book_pdf.py $(BOOK_HTML) book/_build/raildyn.pdf
 
