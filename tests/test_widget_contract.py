@@ -165,7 +165,7 @@ def test_static_copy_opens_where_the_live_widget_does(name):
     defaults = recipe.defaults()
     for control, values in recipe.static.items():
         assert defaults[control] in list(values), (
-            f"{name}: the static grid of {control} {list(values)} lacks its starting value {defaults[control]}"
+            f"{name}: the grid of {control} {list(values)} lacks its starting value {defaults[control]}"
         )
 
 
