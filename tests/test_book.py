@@ -271,6 +271,10 @@ def test_pages_fit_a_1280_pixel_window(built_book):
         def log_message(self, *args):
             pass
 
+    def visit(page, url):
+        page.goto(url, timeout=60_000, wait_until="load")
+        page.wait_for_load_state("networkidle", timeout=60_000)  # every request answered before moving on
+
     server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(Quiet, directory=html))
     threading.Thread(target=server.serve_forever, daemon=True).start()
     base = f"http://127.0.0.1:{server.server_address[1]}/"
@@ -280,7 +284,7 @@ def test_pages_fit_a_1280_pixel_window(built_book):
             page = browser.new_page(viewport={"width": 1280, "height": 900})
             page.route("**/*", lambda r: r.continue_() if r.request.url.startswith(base) else r.abort())
             for path in NOTEBOOKS:
-                page.goto(f"{base}notebooks/{path.stem}.html", timeout=60_000)
+                visit(page, f"{base}notebooks/{path.stem}.html")
                 wide = page.evaluate(
                     """() => { document.querySelectorAll('details.hide').forEach(d => d.open = true);
                     return Array.from(document.querySelectorAll('.cell.tag_hide-cell pre'))
@@ -288,7 +292,7 @@ def test_pages_fit_a_1280_pixel_window(built_book):
                     }"""
                 )
                 assert not wide, f"{path.stem}: answers that scroll sideways: {wide[:3]}"
-            page.goto(f"{base}book/notation.html", timeout=60_000)
+            visit(page, f"{base}book/notation.html")
             page.wait_for_function(
                 "() => document.querySelectorAll('mjx-container').length > 100", timeout=60_000
             )
@@ -297,7 +301,7 @@ def test_pages_fit_a_1280_pixel_window(built_book):
                     .map(t => t.scrollWidth - t.parentElement.clientWidth).filter(d => d > 1)"""
             )
             assert not over, f"notation tables wider than their column by {over} px"
-            page.goto(f"{base}book/validation.html", timeout=60_000)
+            visit(page, f"{base}book/validation.html")
             split = page.evaluate(
                 """() => Array.from(document.querySelectorAll('.raildyn-number'))
                     .filter(e => e.getClientRects().length > 1).map(e => e.textContent)"""
@@ -306,3 +310,4 @@ def test_pages_fit_a_1280_pixel_window(built_book):
             browser.close()
     finally:
         server.shutdown()
+        server.server_close()
