@@ -1,18 +1,21 @@
 """Build an environment from the Binder configuration alone and run notebook 01 in it.
 
-A fresh virtual environment stands in for repo2docker's default one (Python with Jupyter's kernel and
-nbclient), ``binder/postBuild`` installs raildyn into it, and notebook 01 runs there from
-``notebooks/``, in a clone of the repository, so that nothing of this checkout's own environment leaks
-in. ``tests/conftest.py`` starts this script in the background as soon as the session has collected
-``tests/test_binder.py`` (the installation takes a minute or two, mostly waiting on the disk), and the
-test reads what it printed.
+A fresh virtual environment stands in for repo2docker's (the Python that ``binder/runtime.txt`` asks
+for, with Jupyter's kernel and nbclient), ``binder/postBuild`` installs raildyn into it, and notebook
+01 runs there from ``notebooks/``, in a clone of the repository, so that nothing of this checkout's own
+environment leaks in. ``tests/conftest.py`` starts this script in the background as soon as the session
+has collected the slow test of ``tests/test_binder.py`` (the installation takes a minute or two, mostly
+waiting on the disk), and the test reads what it printed.
 
-Usage: ``python tests/binder_env.py WORKDIR`` → prints ``notebook ran`` and ``raildyn from <path>``.
+Usage: ``python tests/binder_env.py WORKDIR`` → prints ``notebook ran``, ``raildyn from <path>`` and
+``python X.Y``.
 """
 
 from __future__ import annotations
 
 import os
+import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -32,10 +35,24 @@ print("notebook ran:", sum(c.cell_type == "code" for c in nb.cells), "code cells
 BASE = ["ipykernel>=6.29,<8", "nbclient>=0.10,<0.11", "nbformat>=5.10,<6"]
 
 
+def _runtime_python() -> str:
+    """The interpreter of the version binder/runtime.txt names ("python-3.11" → python3.11)."""
+    runtime = (ROOT / "binder" / "runtime.txt").read_text(encoding="utf-8").strip()
+    version = re.fullmatch(r"python-(\d+\.\d+)", runtime)
+    if not version:
+        sys.exit(f"binder/runtime.txt must be one line 'python-X.Y', got {runtime!r}")
+    if f"{sys.version_info.major}.{sys.version_info.minor}" == version.group(1):
+        return sys.executable
+    found = shutil.which(f"python{version.group(1)}")
+    if not found:
+        sys.exit(f"binder/runtime.txt asks for Python {version.group(1)}, which this machine does not have")
+    return found
+
+
 def main(work: Path) -> None:
     repo, venv = work / "repo", work / "venv"
     subprocess.run(["git", "clone", "-q", str(ROOT), str(repo)], check=True)
-    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    subprocess.run([_runtime_python(), "-m", "venv", str(venv)], check=True)
     bin_ = venv / "bin"
     env = {k: v for k, v in os.environ.items() if k not in ("VIRTUAL_ENV", "PYTHONPATH", "MPLCONFIGDIR")}
     env["PATH"] = f"{bin_}{os.pathsep}{env['PATH']}"
@@ -45,7 +62,8 @@ def main(work: Path) -> None:
     subprocess.run(["bash", "binder/postBuild"], cwd=repo, check=True, env=env, stdout=subprocess.DEVNULL)
     subprocess.run([bin_ / "python", "-c", RUN], cwd=repo / "notebooks", env=env, check=True)
     subprocess.run(
-        [bin_ / "python", "-c", "import raildyn; print('raildyn from', raildyn.__file__)"],
+        [bin_ / "python", "-c", "import sys, raildyn; print('raildyn from', raildyn.__file__); "
+         "print(f'python {sys.version_info.major}.{sys.version_info.minor}')"],
         cwd=work, env=env, check=True,
     )  # fmt: skip
 

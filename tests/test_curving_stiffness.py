@@ -135,7 +135,7 @@ def test_steady_curving_of_the_bogie_reproduces_the_closed_form(k_psi, k_y, refe
     gap = np.abs(state.angle_of_attack / closed.angle_of_attack - 1).max()
     reference(
         8,
-        f"bogie's angle of attack, k_ψ = {k_psi:.2g}, k_y = {k_y:.2g}",
+        f"bogie's angle of attack, k_ψ = {k_psi / 1e6:.3g} MN·m/rad, k_y = {k_y / 1e6:.3g} MN/m",
         "two wheelsets in bending and shear (Wickens 2003)",
         "closed form",
         gap,

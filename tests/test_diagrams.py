@@ -312,3 +312,73 @@ def test_bad_input_is_refused_by_name(case):
     call, error, name = BAD[case]
     with pytest.raises(error, match=rf"\b{name}\b"):
         call()
+
+
+# The figure sizes the chapters draw each schematic at (a label is set in points, the drawing in metres,
+# so whether a label clears the drawing depends on the size).
+NOTEBOOK_SIZES = {
+    "oscillator": (4.0, 3.4),
+    "rigid body": (4.5, 3.6),
+    "rigid body, planar": (4.5, 3.6),
+    "wheelset section": (5.0, 3.8),
+    "wheelset plan": (5.0, 3.8),
+    "bogie plan": (7.0, 4.0),
+    "car side": (9.0, 3.4),
+    "car plan": (10.0, 3.2),
+    "three-piece truck": (7.0, 4.6),
+    "coupler chain": (9.0, 2.2),
+    "beam, force": (7.0, 2.2),
+    "beam, sprung mass": (7.0, 2.2),
+}
+
+
+def _label_clashes(ax) -> list[str]:
+    """Labels that sit on the drawing: a label whose box crosses the outline of a body (a filled polygon)
+    without lying wholly inside a body drawn above it (a name written on its body, "bolster", is fine),
+    and labels that overlap each other."""
+    from matplotlib.patches import Polygon
+
+    ax.figure.canvas.draw()
+    renderer = ax.figure.canvas.get_renderer()
+    bodies = [p for p in ax.patches if isinstance(p, Polygon) and p.get_visible() and p.get_fill()]
+    texts = [t for t in ax.texts if t.get_visible() and t.get_text().strip()]
+    boxes = [t.get_window_extent(renderer) for t in texts]
+    clashes = []
+    for text, box in zip(texts, boxes, strict=True):
+        crossed, holders = [], []
+        for body in bodies:
+            outline = body.get_path().transformed(body.get_transform())
+            if all(outline.contains_point(corner) for corner in box.corners()):
+                holders.append(body.get_zorder())
+            elif outline.intersects_bbox(box, filled=True):
+                crossed.append(body.get_zorder())
+        if crossed and not (holders and max(holders) > max(crossed)):
+            clashes.append(f"{text.get_text()!r} on a body's outline")
+    for i in range(len(texts)):
+        for j in range(i + 1, len(texts)):
+            if boxes[i].overlaps(boxes[j]):
+                clashes.append(f"{texts[i].get_text()!r} on {texts[j].get_text()!r}")
+    return clashes
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_labels_stand_clear_of_the_drawing_at_the_chapters_size(name):
+    # Chapter 6's truck had "side frame" and "wedge" written across its wheels.
+    assert set(NOTEBOOK_SIZES) == set(CASES)
+    fig, ax = plt.subplots(figsize=NOTEBOOK_SIZES[name])
+    try:
+        CASES[name][0](ax)
+        assert not _label_clashes(ax), _label_clashes(ax)
+    finally:
+        plt.close(fig)
+
+
+def test_chapter_six_truck_labels_stand_clear():
+    from raildyn.vehicles import LOADED_FREIGHT_CAR
+
+    fig, ax = plt.subplots(figsize=NOTEBOOK_SIZES["three-piece truck"])
+    try:
+        truck_schematic(LOADED_FREIGHT_CAR.truck, ax=ax)
+        assert not _label_clashes(ax), _label_clashes(ax)
+    finally:
+        plt.close(fig)

@@ -172,3 +172,35 @@ def test_nadal_limit_figure_puts_the_cars_quotients_under_nadals_curves():
     assert markers[-1].get_ydata()[0] == pytest.approx(state.derailment_quotient[0, 1], rel=1e-12)
     # every marker below the lowest limit (μ = 0.5) at 70°
     assert max(m.get_ydata()[0] for m in markers) < climb.nadal_limit(np.radians(70.0), 0.5)
+
+
+def test_a_caption_names_what_the_figure_shows_with_its_number_not_its_id():
+    # "Figure fig7.root_locus." read as a file name; a caption reads "Figure 7.1. <what it shows>".
+    import re
+
+    for fid, spec in figures.REGISTRY.items():
+        same = [s.id for s in figures.REGISTRY.values() if s.chapter == spec.chapter]
+        html = figures.FigureView(spec, figures.new_figure())._repr_mimebundle_()["text/html"]
+        caption = re.search(r"<figcaption>(.*)</figcaption>", html).group(1)
+        assert caption.startswith(f"Figure {spec.chapter}.{same.index(fid) + 1}"), caption[:40]
+        assert fid not in caption and not re.search(r"\bfig\d+\.\w", caption), caption[:60]
+        assert spec.caption.split(" (")[0][:20] in caption.replace("&#x27;", "'")
+
+
+def test_each_notebook_shows_its_chapters_figures_in_their_numbered_order():
+    # A chapter's figures are numbered in the order they are registered; the notebook shows them in
+    # that order, from the first, so that Figure 7.2 follows Figure 7.1 on the page.
+    import re
+    from pathlib import Path
+
+    import nbformat
+
+    shown_anywhere = set()
+    for path in sorted((Path(__file__).resolve().parents[1] / "notebooks").glob("*.ipynb")):
+        chapter = int(path.name[:2])
+        code = "\n".join(c.source for c in nbformat.read(path, as_version=4).cells if c.cell_type == "code")
+        shown = re.findall(r'(?:figures\.show\(|REGISTRY\[)"(fig[^"]+)"', code)
+        registered = [s.id for s in figures.REGISTRY.values() if s.chapter == chapter]
+        assert shown == registered[: len(shown)], f"{path.name} shows {shown}, numbered {registered}"
+        shown_anywhere.update(shown)
+    assert len(shown_anywhere) >= 27

@@ -146,9 +146,10 @@ def test_band_variance_closed_form_against_quadrature(spectrum, grade, component
     # adaptive quadrature to 1e-12 against partial fractions; allow 1e-10 for the nearly equal poles of
     # FRA class 5 (Ω_s = 0.8209 vs Ω_c = 0.8245), where the partial fractions lose ~3 digits.
     got = band_variance(spectrum, component, grade, FRA_BAND)
+    track = f"FRA class {grade}" if spectrum == "fra" else f"German {grade}-disturbance"
     reference(
         3,
-        f"band variance, {spectrum} {component} spectrum, grade {grade}",
+        f"band variance of the {component.replace('_', '-')} spectrum, {track} track",
         "adaptive quadrature (scipy)",
         "scipy",
         abs(got / numeric - 1),

@@ -20,21 +20,22 @@ LOCO = train.VEHICLES["SD40-2"]
 
 
 def test_davis_original_worked_example_7200_ton_train(reference):
-    # 1970 Car & Locomotive Cyclopedia p. 842 form of the original Davis formula (A = 88 ft², so
-    # C·A = 0.044), worked for a 7,200-ton train of 286,000 lb four-axle cars at 50 mph, level
-    # tangent track {trains_forum_resistance}: terms 9,360 + 5,840.6 + 16,200 + 5,538 lbf.
-    # The printed terms are rounded to the pound (the last to 1 lbf), so the total is held to 1 lbf.
+    # Davis's original formula {davis1926}, R = 1.3 + 29/w + 0.045 V + 0.0005 A V²/(w n) lb/ton, worked by
+    # hand for a 7,200-ton train of 143-ton four-axle cars (A = 88 ft², so 0.0005 A = 0.044) at 50 mph on
+    # level tangent track, term by term over the whole train: 1.3 lb per ton, 29 lb per axle, 0.045 V lb
+    # per ton and 0.044 V² lb per car (9,360 + 5,840.6 + 16,200 + 5,538.5 lbf). The code converts per ton
+    # and per axle through w = 143/4; the two agree to the round-off of a few products (1e-12).
     cars = 7200 / 143
     per_car = train.davis_resistance(50.0, 143.0, 4, 88.0, units="US")
-    printed = 9360 + 5840.6 + 16200 + 5538
+    by_hand = 1.3 * 7200 + 29 * 4 * cars + 0.045 * 50 * 7200 + 0.044 * 50**2 * cars
+    assert 9360 + 5840.6 + 16200 + 5538 == pytest.approx(by_hand, abs=1.0)  # the terms as rounded above
     reference(
         9,
         "Davis resistance of a 7,200-ton train at 50 mph",
-        "Car & Locomotive Cyclopedia 1970, p. 842",
-        "published",
-        abs(per_car * cars - printed),
-        1.0,
-        "lbf",
+        "Davis's formula (1926) worked by hand, term by term",
+        "closed form",
+        abs(per_car * cars / by_hand - 1),
+        1e-12,
     )
 
 

@@ -661,7 +661,7 @@ def test_frequency_response_from_python_control(reference):
     reference(
         1,
         "FRF matrix of a damped 3-DOF chain",
-        "python-control frequency_response",
+        "python-control's frequency response",
         "python-control",
         np.abs(fresp - ours).max() / np.abs(ours).max(),
         1e-10,

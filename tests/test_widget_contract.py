@@ -155,3 +155,22 @@ def test_static_copy_has_one_distinct_frame_per_grid_value(name):
         assert re.search(rf'value="{start}" data-control="{control}"', page), (
             "the static slider starts at the default"
         )
+
+
+@pytest.mark.parametrize("name", list(RECIPES))
+def test_static_copy_opens_where_the_live_widget_does(name):
+    # The page without a kernel first shows the frame of the live widget's starting values, not the
+    # nearest grid value (chapter 10's explorer opened at 240 km/h against the live 250).
+    recipe = RECIPES[name]
+    defaults = recipe.defaults()
+    for control, values in recipe.static.items():
+        assert defaults[control] in list(values), (
+            f"{name}: the grid of {control} {list(values)} lacks its starting value {defaults[control]}"
+        )
+
+
+def test_a_static_grid_without_the_starting_value_is_refused():
+    recipe = RECIPES["chapter10.MOVING_LOAD_EXPLORER"]
+    off = Recipe(recipe.controls, recipe.setup, recipe.figure, static={"speed_kmh": [60.0, 240.0, 300.0]})
+    with pytest.raises(ValueError, match=r"static\['speed_kmh'\] must hold the control's starting value 250"):
+        off.static_html()

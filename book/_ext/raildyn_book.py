@@ -14,10 +14,19 @@
   (where a ``{cite}`` role would show its raw markup); as the book reads a notebook they
   become the ``{cite}`` and ``{eq}`` roles, so the book keeps its numbered equations and its
   bibliography. :func:`cite_text` writes the link text from the bibliography.
+* The chapters are numbered by the table of contents, and so are their equations, (7.12); a
+  notebook's title keeps its own number for JupyterLab ("# 7 Lateral stability"), which the book
+  drops. A code cell (an answer's comment) cites an equation by its label, "(eq-cd-limit)", which
+  JupyterLab shows beside the equation; the book prints the equation's number there instead.
+* The notation page writes its symbols in plain text ("ω_n", "f₁₁"); the book typesets that
+  column as the chapters do (:func:`symbol_tex`).
 * The ``validation-table`` directive writes the validation page's tables from the
   checks the test suite recorded (``book/_generated/validation.json``, see
   ``tests/conftest.py``); when there is no record yet it runs those checks first
-  (``pytest -m reference``), so ``make book`` alone still gets a complete page.
+  (``pytest -m reference``), so ``make book`` alone still gets a complete page. Its numbers
+  are written as a reader writes them (2.5 × 10⁻¹⁵) and kept on one line.
+* The book's own style sheet, ``static/raildyn-book.css``: numbers on one line, answers that
+  wrap instead of scrolling sideways, tables that fit their column.
 """
 
 import json
@@ -28,7 +37,11 @@ from collections import defaultdict
 from pathlib import Path
 
 from docutils import nodes
+from docutils.nodes import make_id
+from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
+
+logger = logging.getLogger(__name__)
 
 _ROOT = Path(__file__).resolve().parents[2]
 _RECORD = _ROOT / "book" / "_generated" / "validation.json"
@@ -88,17 +101,138 @@ def cite_text(keys: str, bib: dict) -> str:
     return "; ".join(out)
 
 
+_CHAPTER_TITLE = re.compile(r"\A(#\s+)\d+\s+")
+
+
 def book_roles(app, docname, source):
-    """A notebook's citation and equation links become the book's {cite} and {eq} roles."""
+    """A notebook's citation and equation links become the book's {cite} and {eq} roles, and its title
+    ("# 7 Lateral stability") loses the number the book's numbered table of contents puts before it."""
     if not docname.startswith("notebooks/"):
         return
     notebook = json.loads(source[0])
+    titled = False
     for cell in notebook["cells"]:
         if cell["cell_type"] == "markdown":
             text = "".join(cell["source"])
+            if not titled:
+                text, titled = _CHAPTER_TITLE.sub(r"\1", text), True
             text = _CITE_LINK.sub(lambda m: "{cite}`" + m.group(1) + "`", text)
             cell["source"] = _EQ_LINK.sub(lambda m: "{eq}`" + m.group(1) + "`", text)
     source[0] = json.dumps(notebook, ensure_ascii=False)
+
+
+_GREEK = {
+    "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "varepsilon", "ζ": "zeta", "η": "eta",
+    "θ": "theta", "ϑ": "vartheta", "κ": "kappa", "λ": "lambda", "μ": "mu", "ν": "nu", "ξ": "xi", "π": "pi",
+    "ρ": "rho", "σ": "sigma", "τ": "tau", "ϕ": "phi", "φ": "varphi", "χ": "chi", "ψ": "psi", "ω": "omega",
+    "Γ": "Gamma", "Δ": "Delta", "Θ": "Theta", "Λ": "Lambda", "Ξ": "Xi", "Σ": "Sigma", "Φ": "Phi",
+    "Ψ": "Psi", "Ω": "Omega", "ℓ": "ell", "·": "cdot", "⟨": "langle", "⟩": "rangle",
+}  # fmt: skip
+_SUBSCRIPTS = dict(zip("₀₁₂₃₄₅₆₇₈₉", "0123456789", strict=True))
+_SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789", strict=True))
+_ACCENT_TEX = {"\u0302": "hat", "\u0304": "bar"}
+_SCRIPT_CHAR = re.compile(r"[A-Za-z0-9]|[α-ωΑ-Ωϑϕℓ]")
+
+
+def _tex_run(text: str) -> str:
+    """Letters, digits and Greek as TeX: "sψ" → "s\\psi"."""
+    return "".join(rf"\{_GREEK[c]} " if c in _GREEK else c for c in text).strip()
+
+
+def symbol_tex(symbol: str) -> str:
+    """TeX for a symbol as the notation page writes it in plain text: "ω_n" → "\\omega_n", "f₁₁" →
+    "f_{11}", "**G**_K" → "\\mathbf{G}_K", "F^tr" → "F^{\\text{tr}}", "m̄" → "\\bar{m}", "σ_Y²" →
+    "\\sigma_Y^2"."""
+    out, i = [], 0
+    while i < len(symbol):
+        c = symbol[i]
+        if symbol.startswith("**", i):
+            end = symbol.index("**", i + 2)
+            out.append(rf"\mathbf{{{_tex_run(symbol[i + 2 : end])}}}")
+            i = end + 2
+        elif c in "_^":
+            j = i + 1
+            while j < len(symbol) and _SCRIPT_CHAR.fullmatch(symbol[j]):
+                j += 1
+            run = symbol[i + 1 : j]
+            if not run:
+                raise ValueError(f"{c} without a script in the symbol {symbol!r}")
+            word = c == "^" and len(run) > 1 and run.isalpha()  # F^tr: a label, upright
+            script = rf"\text{{{run}}}" if word else _tex_run(run)
+            out.append(f"{c}{{{script}}}" if len(run) > 1 or word else f"{c}{script}")
+            i = j
+        elif c in _SUBSCRIPTS or c in _SUPERSCRIPTS:
+            table, mark = (_SUBSCRIPTS, "_") if c in _SUBSCRIPTS else (_SUPERSCRIPTS, "^")
+            j = i
+            while j < len(symbol) and symbol[j] in table:
+                j += 1
+            digits = "".join(table[d] for d in symbol[i:j])
+            out.append(f"{mark}{{{digits}}}" if len(digits) > 1 else f"{mark}{digits}")
+            i = j
+        elif i + 1 < len(symbol) and symbol[i + 1] in _ACCENT_TEX:
+            out.append(rf"\{_ACCENT_TEX[symbol[i + 1]]}{{{_tex_run(c)}}}")
+            i += 2
+        else:
+            out.append(rf"\{_GREEK[c]} " if c in _GREEK else c)
+            i += 1
+    return re.sub(r" (?=[_^(),\s]|$)", "", "".join(out)).strip()
+
+
+def _symbols_as_math(cell: str) -> str:
+    """The symbol column's "s₁, s₂, s_r" as "$s_1$, $s_2$, $s_r$" (a comma inside parentheses stays)."""
+    parts, depth, start = [], 0, 0
+    for k, c in enumerate(cell):
+        depth += (c in "(⟨") - (c in ")⟩")
+        if c == "," and depth == 0:
+            parts.append(cell[start:k])
+            start = k + 1
+    parts.append(cell[start:])
+    return ", ".join(f"${symbol_tex(p.strip())}$" for p in parts if p.strip())
+
+
+def notation_math(app, docname, source):
+    """The notation page writes its symbols in plain text (tests/test_notation.py reads them so); the
+    book typesets the symbol column as the chapters do: "ω_n" becomes $\\omega_n$."""
+    if docname != "book/notation":
+        return
+    lines = source[0].split("\n")
+    for n, line in enumerate(lines):
+        if line.startswith("| ") and not line.startswith("| symbol |"):
+            first, bar, rest = line[2:].partition(" | ")
+            lines[n] = f"| {_symbols_as_math(first)}{bar}{rest}"
+    source[0] = "\n".join(lines)
+
+
+_EQ_LABEL_IN_CODE = re.compile(r"\((eq-[\w-]+)\)")
+
+
+def equation_numbers_in_code(app, doctree, docname):
+    """A code cell (an answer's comment) cites an equation by its label, "(eq-cd-limit)", which is what
+    JupyterLab shows beside the equation; the book shows the equation's number there, "(2.5)"."""
+    if not docname.startswith("notebooks/"):
+        return
+    env = app.env
+    equations = env.get_domain("math").equations
+
+    def number(match):
+        label = match.group(1)
+        where = equations.get(label)
+        numbers = ()
+        if where:
+            numbered = env.toc_fignumbers.get(where[0], {}).get("displaymath", {})
+            numbers = numbered.get(make_id(f"equation-{label}"), ())
+        if not numbers:
+            logger.warning(f"a code cell cites {match.group(0)}, which no equation numbers", location=docname)
+            return match.group(0)
+        return "(" + ".".join(map(str, numbers)) + ")"
+
+    for block in doctree.findall(nodes.literal_block):
+        text = block.astext()
+        cited = _EQ_LABEL_IN_CODE.sub(number, text)
+        if cited != text:
+            block.rawsource = cited
+            block.children = []
+            block += nodes.Text(cited)
 
 
 def _escape(line: str) -> str:
@@ -144,29 +278,71 @@ def _record() -> dict:
     return json.loads(_RECORD.read_text()) if _RECORD.exists() else {}
 
 
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def number(value: float) -> str:
+    """A measured number as a reader writes it, to two significant digits: 0.0037, 2.5 × 10⁻¹⁵, 1.2 × 10⁴."""
+    if value == 0:
+        return "0"
+    mantissa, exponent = f"{value:.1e}".split("e")
+    exponent = int(exponent)
+    if -3 <= exponent <= 3:
+        text = f"{float(mantissa) * 10.0**exponent:.6g}"
+    else:
+        mantissa = mantissa.rstrip("0").rstrip(".")
+        power = "10" + str(exponent).translate(_SUPERSCRIPT)
+        text = power if mantissa in ("1", "-1") else f"{mantissa}\u00a0\u00d7\u00a0{power}"
+        text = "-" + power if mantissa == "-1" else text
+    return text.replace("-", "\u2212")
+
+
+class _OneLine(str):
+    """A cell's text kept on one line (a kind of reference: "python-control")."""
+
+
+def _cell(cell) -> nodes.entry:
+    """A table cell: text, text kept on one line, or (number, unit) whose number is kept on one line."""
+    entry, paragraph = nodes.entry(), nodes.paragraph()
+    if isinstance(cell, tuple):
+        value, unit = cell
+        paragraph += nodes.inline(text=number(value), classes=["raildyn-number"])
+        if unit:
+            paragraph += nodes.Text(f" {unit}")
+    elif isinstance(cell, _OneLine):
+        paragraph += nodes.inline(text=str(cell), classes=["raildyn-number"])
+    else:
+        paragraph += nodes.Text(str(cell))
+    entry += paragraph
+    return entry
+
+
 def _table(rows) -> nodes.table:
-    """A docutils table with a header row."""
+    """A docutils table with a header row; a (number, unit) cell keeps its number on one line."""
     header = ("model", "reference", "kind", "error", "tolerance", "within")
     table = nodes.table(classes=["validation"])
     group = nodes.tgroup(cols=len(header))
     table += group
-    group.extend(nodes.colspec(colwidth=w) for w in (30, 34, 12, 8, 8, 6))
+    group.extend(nodes.colspec(colwidth=w) for w in (30, 30, 12, 10, 10, 6))
     head, body = nodes.thead(), nodes.tbody()
     group += head
     group += body
     for target, cells in ((head, header), *((body, r) for r in rows)):
         row = nodes.row()
         for cell in cells:
-            entry = nodes.entry()
-            entry += nodes.paragraph(text=str(cell))
-            row += entry
+            row += _cell(cell)
         target += row
     return table
 
 
 def _unit(check) -> str:
     """A check's unit after its numbers; none for a relative error."""
-    return f" {check['unit']}" if check.get("unit", "rel.") != "rel." else ""
+    return check["unit"] if check.get("unit", "rel.") != "rel." else ""
+
+
+def _count(n: int, noun: str) -> str:
+    """The count and its noun: 1 check, 3 checks."""
+    return f"{n} {noun}" + ("" if n == 1 else "s")
 
 
 class ValidationTable(SphinxDirective):
@@ -182,25 +358,34 @@ class ValidationTable(SphinxDirective):
         within = sum(c["within"] for c in record.values())
         out = [
             nodes.paragraph(
-                text=f"{len(record)} checks in {len(by_chapter)} chapters; {within} of them "
-                f"({100 * within / len(record):.0f} %) within their tolerance."
+                text=f"{_count(len(record), 'check')} in {_count(len(by_chapter), 'chapter')}; {within} of "
+                f"them ({100 * within / len(record):.0f} %) within their tolerance."
             )
         ]
         for chapter, checks in sorted(by_chapter.items()):
-            section = nodes.rubric(text=f"Chapter {chapter} ({len(checks)} checks)")
+            section = nodes.rubric(text=f"Chapter {chapter} ({_count(len(checks), 'check')})")
             rows = [
-                (c["model"], c["reference"], c["kind"], f"{c['error']:.2g}{_unit(c)}",
-                 f"{c['tolerance']:.2g}{_unit(c)}", "yes" if c["within"] else "NO")
+                (c["model"], c["reference"], _OneLine(c["kind"]), (c["error"], _unit(c)),
+                 (c["tolerance"], _unit(c)), "yes" if c["within"] else "NO")
                 for c in checks
             ]  # fmt: skip
             out += [section, _table(rows)]
         return out
 
 
+def add_static(app, config):
+    """The book's own style sheet (book/_ext/static/raildyn-book.css) is copied with the theme's."""
+    config.html_static_path.append(str(Path(__file__).with_name("static")))
+
+
 def setup(app):
+    app.connect("config-inited", add_static)
+    app.add_css_file("raildyn-book.css")
     app.add_directive("validation-table", ValidationTable)
     app.connect("autodoc-process-docstring", escape_bars)
     app.connect("source-read", book_roles)
+    app.connect("source-read", notation_math)
+    app.connect("doctree-resolved", equation_numbers_in_code)
     # Before myst-nb (priority 500) adds the page's scripts.
     app.connect("html-page-context", drop_widget_state, priority=400)
     app.connect("html-page-context", drop_repeated_scripts, priority=900)

@@ -211,6 +211,17 @@ def label(ax, xy, text: str, *, color: str = "black", size: float = 9, **kw):
     return ax.text(xy[0], xy[1], text, color=color, fontsize=size, zorder=6, **kw)
 
 
+def note(ax, xy, text: str, *, points: float, size: float = 7):
+    """A small grey note centred under ``xy`` (data coordinates), its top ``points`` below it.
+
+    Set in points, not in data units, so that it clears the labels above it at any figure size.
+    """
+    return ax.annotate(
+        text, xy, xytext=(0.0, -points), textcoords="offset points", ha="center", va="top",
+        color=DIMENSION, fontsize=size, zorder=6,
+    )  # fmt: skip
+
+
 def wheel_xy(centre, radius: float, n: int = 60) -> np.ndarray:
     """A wheel seen from the side: a circle (n, 2)."""
     return arc_xy(centre, radius, 0.0, 2 * np.pi, n)

@@ -163,12 +163,8 @@ def wheelset_section(ws: Wheelset, y: float = 0.0, *, exaggerate: float = 1.0, a
         ax.plot([tread[0] - 0.11, tread[0]], [tread[1] - 0.065, tread[1]], color=d.DIMENSION, lw=0.5)
         texts.append(d.label(ax, (-a - 0.12, r0 + 0.2), "L", size=8, color=d.DIMENSION))
         texts.append(d.label(ax, (a + 0.12, r0 + 0.2), "R", size=8, color=d.DIMENSION))
-        if exaggerate != 1.0:
-            texts.append(
-                d.label(
-                    ax, (0.0, -0.55), f"$y$ and $\\lambda$ drawn × {exaggerate:g}", size=7, color=d.DIMENSION
-                )
-            )
+        if exaggerate != 1.0:  # below the dimension labels of a, whatever the figure's size
+            texts.append(d.note(ax, (0.0, -0.4), f"$y$ and $\\lambda$ drawn × {exaggerate:g}", points=16))
         art["texts"] = texts
         d.finish(ax)
     return art

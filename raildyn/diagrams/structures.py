@@ -96,10 +96,11 @@ def coupler_chain(consist: Consist, gear: DraftGear | None = None, *, vehicles: 
             texts.append(
                 d.label(
                     ax,
-                    (centre - 0.3, floor + height + 0.3),
+                    (centre - 0.3, floor + height + 0.12),
                     f"$x_{_subscript(i)}$",
                     color=d.COORDINATE,
                     ha="right",
+                    va="bottom",
                 )
             )
             name = consist.vehicles[i].name
@@ -124,16 +125,9 @@ def coupler_chain(consist: Consist, gear: DraftGear | None = None, *, vehicles: 
         ax.plot([front + gap - 2.0, 2.0], [0.0, 0.0], color="black", lw=1.0)
         d.arrow(ax, (0.5, floor + height + 0.3), (4.0, floor + height + 0.3), color=d.FORCE)
         texts.append(d.label(ax, (4.3, floor + height + 0.3), "$V$", color=d.FORCE, ha="left"))
-        if n >= 2:
-            texts.append(
-                d.label(
-                    ax,
-                    (front / 2, -1.6),
-                    f"slack $e$ = {1e3 * gear.slack:.3g} mm, drawn × {_SLACK_SCALE:g}",
-                    size=7,
-                    color=d.DIMENSION,
-                )
-            )
+        if n >= 2:  # below the Δx labels, whatever the figure's size: 14 points under their top
+            note = f"slack $e$ = {1e3 * gear.slack:.3g} mm, drawn × {_SLACK_SCALE:g}"
+            texts.append(d.note(ax, (front / 2, -0.35), note, points=14))
         art["texts"] = texts
         d.finish(ax)
     return art

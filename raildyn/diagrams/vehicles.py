@@ -104,9 +104,10 @@ def bogie_plan(bogie: Bogie, *, ax=None) -> dict:
                     d.spring(ax, (x - np.sign(x) * 0.1, s * box), (bracket, s * box), 0.1, coils=3)
                 )
         art["lateral_springs"], art["longitudinal_springs"] = lateral, longitudinal
+        gap = (box + 0.08 + side - 0.07) / 2  # between the axle box and the frame's side member
         texts = [
-            d.label(ax, (b + 0.14, side - 0.12), "$k_y$", ha="left", size=7),
-            d.label(ax, (b - 0.33, box + 0.13), r"$k_\psi$", size=7),
+            d.label(ax, (b + 0.14, gap), "$k_y$", ha="left", size=7),
+            d.label(ax, (b - 0.33, gap), r"$k_\psi$", size=7),
         ]
         _, t = d.dimension(ax, (0.0, -side - 0.35), (b, -side - 0.35), "$b$", side=-1.0)
         texts.append(t)
@@ -189,7 +190,11 @@ def car_side(car: VerticalCar, *, ax=None) -> dict:
         ]
         centre = np.array([0.0, body_z + body_h / 2])
         d.arrow(ax, centre, centre + (0.0, 1.6))
-        texts.append(d.label(ax, centre + (0.35, 1.45), "$z_c$", color=d.COORDINATE, ha="left"))
+        texts.append(
+            d.label(
+                ax, centre + (0.3, body_h / 2 + 0.15), "$z_c$", color=d.COORDINATE, ha="left", va="bottom"
+            )
+        )
         d.rotation(ax, centre, 0.8, np.radians(110), np.radians(130))  # θ_c > 0 raises the front
         texts.append(d.label(ax, centre + (-1.1, 0.75), r"$\theta_c$", color=d.COORDINATE, ha="right"))
         ax.plot(*centre, "o", color=d.COORDINATE, ms=3, zorder=6)
@@ -368,17 +373,15 @@ def truck_schematic(truck: ThreePieceTruck, *, ax=None) -> dict:
             tri = np.array([(x0, bolster_low), (x0, bolster_low + 0.22), (x0 - s * 0.09, bolster_low + 0.22)])
             wedges.append(d.block(ax, tri, fill="0.6", z=2.5))
         art["wedges"] = wedges
-        ax.plot(
-            [window - 0.03, window + 0.2],
-            [bolster_low + 0.18, top + 0.07],
-            color=d.DIMENSION,
-            lw=0.5,
-            zorder=4,
-        )
+        # The labels stand above the wheels and the frame, each with a leader to what it names.
+        above = max(top, 2 * r0) + 0.14
+        for start, end in (((window - 0.03, bolster_low + 0.18), (window + 0.25, above - 0.04)),
+                           ((-b / 2, top), (-b / 2, above - 0.04))):  # fmt: skip
+            ax.plot(*zip(start, end, strict=True), color=d.DIMENSION, lw=0.5, zorder=4)
         texts += [
-            d.label(ax, (-b, top + 0.12), "side frame", size=7, color=d.DIMENSION),
+            d.label(ax, (-b / 2, above), "side frame", size=7, color=d.DIMENSION, va="bottom"),
             d.label(ax, (0.0, bolster_low + 0.12), "bolster", size=6),
-            d.label(ax, (window + 0.25, top + 0.12), "wedge", size=7, color=d.DIMENSION),
+            d.label(ax, (window + 0.25, above), "wedge", size=7, color=d.DIMENSION, va="bottom"),
         ]
         _, t = d.dimension(ax, (0.0, -0.15), (b, -0.15), "$b$", side=-1.0)
         texts.append(t)

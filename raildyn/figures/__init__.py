@@ -2,7 +2,8 @@
 
 Each chapter registers its figures in ``raildyn/figures/chNN.py`` with the
 :func:`register` decorator; every such module is imported below, so adding a
-chapter's figures needs no edit here.
+chapter's figures needs no edit here. A chapter's figures are numbered in the order
+they are registered (Figure 7.1, 7.2, ...), which is the order its notebook shows them.
 
 ``python -m raildyn figures --out DIR`` writes every registered figure; a
 notebook shows the same figure, captioned, with ``raildyn.figures.show(id)``. A figure
@@ -199,14 +200,24 @@ class FigureView:
 
     def _repr_mimebundle_(self, include=None, exclude=None):
         png = base64.b64encode(self._png()).decode("ascii")
-        book = f" (book Fig. {self.spec.book_figure})" if self.spec.book_figure else ""
-        caption = f"Figure {self.spec.id}{book}. {self.spec.caption}"
+        caption = _caption(self.spec)
         html_text = (
-            f'<figure class="raildyn-figure"><img src="data:image/png;base64,{png}" '
-            f'alt="{html.escape(caption)}" style="max-width:100%">'
+            f'<figure class="raildyn-figure" id="{html.escape(self.spec.id)}">'
+            f'<img src="data:image/png;base64,{png}" alt="{html.escape(self.spec.caption)}" '
+            'style="max-width:100%">'
             f"<figcaption>{html.escape(caption)}</figcaption></figure>"
         )
         return {"text/html": html_text, "image/png": png, "text/plain": caption}
+
+
+def _caption(spec: FigureSpec) -> str:
+    """The caption a reader sees: "Figure 7.1. <what it shows>", numbered within its chapter in the order
+    of registration, with the book's figure it mirrors; the id (a file name) stays out of it."""
+    book = f" (book Fig. {spec.book_figure})" if spec.book_figure else ""
+    if REGISTRY.get(spec.id) is not spec:  # a figure made outside the registry has no number
+        return f"{spec.caption}{book}"
+    same = [s.id for s in REGISTRY.values() if s.chapter == spec.chapter]
+    return f"Figure {spec.chapter}.{same.index(spec.id) + 1}{book}. {spec.caption}"
 
 
 def show(id: str) -> FigureView:

@@ -8,6 +8,29 @@ from matplotlib.figure import Figure
 from raildyn import plots, track
 from raildyn.figures import new_figure, register
 
+
+@register(
+    "fig3.jointed_rail",
+    "Jointed rail (rail length 11.9 m) with cusp-shaped dipped joints, depth 8 mm and half-width 2 m: "
+    "joints staggered by half a rail length give a cross-level (roll) input alternating in sign at each "
+    "joint; joints in phase give a pure bounce input and no cross-level.",
+    chapter=3,
+)
+def jointed_rail() -> Figure:
+    fig = new_figure(figsize=(8.0, 4.4))
+    axes = fig.subplots(2, 1, sharex=True)
+    L = track.RAIL_LENGTH
+    x = np.linspace(0.0, 3 * L, 1500)
+    for ax, arrangement in zip(axes, ("staggered", "in_phase"), strict=True):
+        track.jointed_track(x, 0.008, 2.0, arrangement=arrangement).plot(ax)
+        ax.set_title(f"joints {arrangement.replace('_', ' ')}")
+        ax.set_ylim(-10, 10)
+    axes[0].legend(loc="lower right", ncols=3)
+    axes[0].set_xlabel("")
+    axes[1].set_xlim(0, x[-1])
+    return fig
+
+
 __all__: list[str] = []  # registry plug-ins: reached through raildyn.figures.make/show, not by name
 
 
@@ -49,26 +72,4 @@ def track_spectra() -> Figure:
     axes[0].set_ylabel(r"$S(\Omega)$ (m$^2$/(rad/m))")
     axes[0].set_ylim(1e-14, 10.0)
     axes[1].legend(loc="lower left", ncols=2)
-    return fig
-
-
-@register(
-    "fig3.jointed_rail",
-    "Jointed rail (rail length 11.9 m) with cusp-shaped dipped joints, depth 8 mm and half-width 2 m: "
-    "joints staggered by half a rail length give a cross-level (roll) input alternating in sign at each "
-    "joint; joints in phase give a pure bounce input and no cross-level.",
-    chapter=3,
-)
-def jointed_rail() -> Figure:
-    fig = new_figure(figsize=(8.0, 4.4))
-    axes = fig.subplots(2, 1, sharex=True)
-    L = track.RAIL_LENGTH
-    x = np.linspace(0.0, 3 * L, 1500)
-    for ax, arrangement in zip(axes, ("staggered", "in_phase"), strict=True):
-        track.jointed_track(x, 0.008, 2.0, arrangement=arrangement).plot(ax)
-        ax.set_title(f"joints {arrangement.replace('_', ' ')}")
-        ax.set_ylim(-10, 10)
-    axes[0].legend(loc="lower right", ncols=3)
-    axes[0].set_xlabel("")
-    axes[1].set_xlim(0, x[-1])
     return fig

@@ -1,4 +1,5 @@
-"""Chapter 7 figures: the car's roots against speed, a critical-speed map and a bifurcation diagram.
+"""Chapter 7 figures: a critical-speed map, a bifurcation diagram and the car's roots against speed (the
+notebook shows the roots with the widget that draws the same picture, so that one comes last).
 
 Each chart is drawn by the method of its result in :mod:`raildyn.stability`
 (:meth:`~raildyn.stability.linear.ModeSweep.plot`, :meth:`~raildyn.stability.linear.CriticalSpeedMap.plot`,
@@ -13,23 +14,6 @@ from matplotlib.figure import Figure
 from raildyn import stability
 from raildyn.figures import new_figure, register
 from raildyn.vehicles import Car
-
-
-@register(
-    "fig7.root_locus",
-    "Manchester benchmark car on a cone (λ = 0.15): the roots of its 15 coordinates from 18 to 540 km/h "
-    "(left, coloured by speed) and the damping factor of every mode against speed (right); the hunting "
-    "mode crosses zero at the linear critical speed.",
-    chapter=7,
-)
-def car_roots() -> Figure:
-    system = Car().linear_system()
-    speeds = np.linspace(5.0, 150.0, 200)
-    sweep = stability.mode_sweep(system, speeds)
-    cs = stability.critical_speed(system, (5.0, 150.0))
-    fig = new_figure(figsize=(10.0, 3.8))
-    sweep.plot(fig.subplots(1, 2), critical=cs)
-    return fig
 
 
 @register(
@@ -75,4 +59,21 @@ def bifurcation() -> Figure:
     linear = stability.critical_speed(car, (5.0, 150.0))
     fig = new_figure(figsize=(6.5, 3.6))
     diagram.plot(fig.subplots(), linear_critical_speed=linear.speed)
+    return fig
+
+
+@register(
+    "fig7.root_locus",
+    "Manchester benchmark car on a cone (λ = 0.15): the roots of its 15 coordinates from 18 to 540 km/h "
+    "(left, coloured by speed) and the damping factor of every mode against speed (right); the hunting "
+    "mode crosses zero at the linear critical speed.",
+    chapter=7,
+)
+def car_roots() -> Figure:
+    system = Car().linear_system()
+    speeds = np.linspace(5.0, 150.0, 200)
+    sweep = stability.mode_sweep(system, speeds)
+    cs = stability.critical_speed(system, (5.0, 150.0))
+    fig = new_figure(figsize=(10.0, 3.8))
+    sweep.plot(fig.subplots(1, 2), critical=cs)
     return fig

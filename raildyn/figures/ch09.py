@@ -45,6 +45,29 @@ def traction_and_resistance() -> Figure:
 
 
 @register(
+    "fig9.draft_gear_loop",
+    "Force–deflection loop of a friction draft gear beyond its slack: the loading branch, the drop to the "
+    "unloading branch at the largest deflection, and the energy absorbed (the shaded area, (k_l − k_u)U²/2).",
+    chapter=9,
+)
+def draft_gear_loop() -> Figure:
+    gear = train.DraftGear()
+    fig = new_figure(figsize=(5.5, 3.6))
+    ax = fig.subplots()
+    loop = gear.static_loop(0.06)
+    loop.plot(ax)
+    d = np.linspace(-0.1, 0.1, 801)
+    ax.plot(
+        1e3 * gear.deflection(d),
+        np.abs(gear.force(d, np.sign(d))) / 1e3,
+        color="0.6",
+        lw=0.8,
+    )
+    ax.set_title(f"energy absorbed {loop.energy / 1e3:.1f} kJ per cycle to 60 mm")
+    return fig
+
+
+@register(
     "fig9.coupler_forces",
     "Quasi-static coupler forces along 2 SD40-2 + 100 loaded hoppers (1.66 km) at 30 km/h and notch 8 with "
     "the front 800 m past a change of grade: on level track, over a crest (+0.5 % then −0.5 %) and through a "
@@ -68,27 +91,4 @@ def quasi_static_forces() -> Figure:
     ax.axhline(0, color="0.4", lw=0.8)
     ax.axvline(800.0, color="0.6", ls=":", lw=1)
     ax.legend(loc="upper right")
-    return fig
-
-
-@register(
-    "fig9.draft_gear_loop",
-    "Force–deflection loop of a friction draft gear beyond its slack: the loading branch, the drop to the "
-    "unloading branch at the largest deflection, and the energy absorbed (the shaded area, (k_l − k_u)U²/2).",
-    chapter=9,
-)
-def draft_gear_loop() -> Figure:
-    gear = train.DraftGear()
-    fig = new_figure(figsize=(5.5, 3.6))
-    ax = fig.subplots()
-    loop = gear.static_loop(0.06)
-    loop.plot(ax)
-    d = np.linspace(-0.1, 0.1, 801)
-    ax.plot(
-        1e3 * gear.deflection(d),
-        np.abs(gear.force(d, np.sign(d))) / 1e3,
-        color="0.6",
-        lw=0.8,
-    )
-    ax.set_title(f"energy absorbed {loop.energy / 1e3:.1f} kJ per cycle to 60 mm")
     return fig

@@ -1,6 +1,6 @@
-"""Chapter 11 figures: the strain measured on Lerelva bridge against the chapter-10 prediction, a free
-decay identified by least squares beside the logarithmic decrement, and the Sobol' indices of the
-chapter-7 car's critical speed.
+"""Chapter 11 figures, in the order the notebook shows them: a free decay identified by least squares
+beside the logarithmic decrement, the strain measured on Lerelva bridge against the chapter-10
+prediction, and the Sobol' indices of the chapter-7 car's critical speed.
 
 The models are :mod:`raildyn.validation` (:func:`raildyn.validation.measured.lerelva_case`,
 :func:`raildyn.validation.identification.free_decay`,
@@ -23,38 +23,6 @@ from raildyn.validation.identification import free_decay
 from raildyn.validation.measured import lerelva_case
 from raildyn.validation.uncertainty import sobol_indices
 from raildyn.vehicles import Car
-
-
-@register(
-    "fig11.lerelva_prediction",
-    "Strain at the three gauges on the first stringer panel (4.17 m) of Lerelva bridge as a two-car NSB "
-    "class 92 unit crossed at 75.5 km/h (thin: measured by Slettebak 2016, decimated to 256 Hz), and the "
-    "chapter-10 prediction (dashed): the unit's eight nominal axle loads crossing the panel as a simply "
-    "supported span, at the speed and arrival identified by weigh-in-motion, scaled to strain by one "
-    "fitted factor. The humps of the four bogies agree in time and height (correlation 0.89 to 0.97); "
-    "the measured humps are wider and dip below zero between them, because the real stringer is "
-    "continuous over the cross-girders and the rails spread each axle's load, which a simple span "
-    "loaded at points cannot show.",
-    chapter=11,
-)
-def lerelva_figure() -> Figure:
-    case = lerelva_case()
-    fig = new_figure(figsize=(12.0, 3.8))
-    axes = fig.subplots(1, 3, sharey=True)
-    for i, (ax, name, agreement) in enumerate(zip(axes, case.record.channels, case.agreement, strict=True)):
-        ax.plot(case.time, 1e6 * case.measured[i], color="0.35", lw=0.8, label="measured")
-        ax.plot(case.time, 1e6 * case.predicted[i], color=plots.COLORS[1], lw=1.6, ls="--", label="predicted")
-        ax.axhline(0.0, color="0.6", lw=0.6)
-        ax.set_title(
-            f"{name}\nr = {agreement.correlation:.2f}, NRMSE {agreement.nrmse:.3f}, "
-            f"C = {agreement.combined:.2f}",
-            fontsize="medium",
-        )
-        ax.set_xlabel("time (s)")
-    axes[0].set_ylabel("strain (µε)")
-    axes[0].legend(loc="upper left", fontsize=8)
-    return fig
-
 
 # A free decay of the kind a bridge or a car body gives after an impulse: 2.5 Hz, 2 % damping, 4 s at
 # 200 Hz, with white measurement noise of 5 % of the first amplitude.
@@ -114,6 +82,37 @@ def free_decay_figure() -> Figure:
     right.axhline(100 * _DECAY_ZETA, color="k", ls="--", lw=1, label="true ξ")
     right.set(xlabel="record (noise seed)", ylabel="damping ratio ξ (%)")
     right.legend(fontsize=8, loc="upper right")
+    return fig
+
+
+@register(
+    "fig11.lerelva_prediction",
+    "Strain at the three gauges on the first stringer panel (4.17 m) of Lerelva bridge as a two-car NSB "
+    "class 92 unit crossed at 75.5 km/h (thin: measured by Slettebak 2016, decimated to 256 Hz), and the "
+    "chapter-10 prediction (dashed): the unit's eight nominal axle loads crossing the panel as a simply "
+    "supported span, at the speed and arrival identified by weigh-in-motion, scaled to strain by one "
+    "fitted factor. The humps of the four bogies agree in time and height (correlation 0.89 to 0.97); "
+    "the measured humps are wider and dip below zero between them, because the real stringer is "
+    "continuous over the cross-girders and the rails spread each axle's load, which a simple span "
+    "loaded at points cannot show.",
+    chapter=11,
+)
+def lerelva_figure() -> Figure:
+    case = lerelva_case()
+    fig = new_figure(figsize=(12.0, 3.8))
+    axes = fig.subplots(1, 3, sharey=True)
+    for i, (ax, name, agreement) in enumerate(zip(axes, case.record.channels, case.agreement, strict=True)):
+        ax.plot(case.time, 1e6 * case.measured[i], color="0.35", lw=0.8, label="measured")
+        ax.plot(case.time, 1e6 * case.predicted[i], color=plots.COLORS[1], lw=1.6, ls="--", label="predicted")
+        ax.axhline(0.0, color="0.6", lw=0.6)
+        ax.set_title(
+            f"{name}\nr = {agreement.correlation:.2f}, NRMSE {agreement.nrmse:.3f}, "
+            f"C = {agreement.combined:.2f}",
+            fontsize="medium",
+        )
+        ax.set_xlabel("time (s)")
+    axes[0].set_ylabel("strain (µε)")
+    axes[0].legend(loc="upper left", fontsize=8)
     return fig
 
 

@@ -135,7 +135,7 @@ VEHICLES: dict[str, Vehicle] = {
         max_dynamic_brake=360e3,
         brake_force=_BRAKE_FRACTION * 368_000 * LB * GRAVITY,
     ),
-    # Loaded 4-axle coal hopper at the AAR 286,000 lb gross rail load {railroadnet_286k}; length over the
+    # Loaded 4-axle coal hopper at the AAR 286,000 lb gross rail load {aar_s286}; length over the
     # pulling faces 53 ft and truck centres 40 ft 8 in are assumed typical values; frontal area
     # 90 ft², Davis's figure for freight cars {davis1926}.
     "loaded hopper": Vehicle(

@@ -424,10 +424,20 @@ class Recipe:
         return container, update
 
     def static_html(self) -> str:
-        """The kernel-free counterpart: frames over :attr:`static` behind HTML range inputs."""
+        """The kernel-free counterpart: frames over :attr:`static` behind HTML range inputs.
+
+        The copy opens on the live widget's starting values, so every grid of :attr:`static` must
+        hold its control's starting value; a grid that does not raises ``ValueError``.
+        """
         from raildyn.widgets._static import frames_html
 
         controls = self._controls()
+        for name, values in self.static.items():
+            if controls[name].value not in list(values):
+                raise ValueError(
+                    f"static[{name!r}] must hold the control's starting value {controls[name].value!r}, so "
+                    f"that the page without a kernel opens where the live widget does; got {list(values)}"
+                )
         labels = {name: controls[name].description for name in self.static}
         start = {name: _nearest(values, controls[name].value) for name, values in self.static.items()}
         live = LiveFigure(**self.figure)

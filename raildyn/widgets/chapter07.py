@@ -178,7 +178,7 @@ CRITICAL_CURVE = Recipe(
     },
     _critical_curve_setup,
     {"nrows": 1, "ncols": 1, "figsize": (7.0, 3.6)},
-    static={"yaw_stiffness": [2.0, 5.0, 10.0, 20.0, 40.0, 63.0, 90.0, 120.0]},
+    static={"yaw_stiffness": [2.0, 5.0, 10.0, 20.0, 40.0, _K_PSI, 90.0, 120.0]},
     title="Critical speed of the car and of its bogie against conicity",
 )
 

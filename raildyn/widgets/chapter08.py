@@ -235,7 +235,7 @@ NADAL_CHART = Recipe(
     _nadal_controls,
     _nadal_setup,
     {"nrows": 1, "ncols": 1, "figsize": (8.0, 4.0)},
-    static={"flange_angle": [60.0, 65.0, 70.0, 75.0], "friction": [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]},
+    static={"flange_angle": [60.0, 65.0, 70.0, 75.0], "friction": [0.1, 0.2, 0.3, 0.36, 0.4, 0.5, 0.6]},
     title="Nadal's limit against flange angle for a chosen friction, with the car's leading outer wheel Y/Q",
 )
 

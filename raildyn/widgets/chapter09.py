@@ -19,7 +19,7 @@ from raildyn.widgets._core import Recipe, slider
 __all__ = ["braking_run", "braking_run_widget", "string_lining"]
 
 DURATION = 40.0  # s of the braking run shown: the application, the run-in and the settling
-SLACK_GRID = [0, 10, 20, 30, 40, 50, 60, 75]  # mm, precomputed for the page without a kernel
+SLACK_GRID = [0, 10, 20, 25, 30, 40, 50, 60, 75]  # mm, precomputed for the page without a kernel
 # The domain of braking_run (its docstring gives the reasons).
 _MAX_CARS = 200
 _MAX_SLACK_MM = 200.0

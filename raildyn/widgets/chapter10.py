@@ -159,7 +159,7 @@ MOVING_LOAD_EXPLORER = Recipe(
     _explorer_controls,
     _explorer_setup,
     {"nrows": 1, "ncols": 2, "figsize": (11.0, 3.8)},
-    static={"speed_kmh": [60.0, 120.0, 180.0, 240.0, 300.0, 345.0, 400.0, 460.0, 520.0, 600.0, 700.0]},
+    static={"speed_kmh": [60.0, 120.0, 180.0, 250.0, 300.0, 345.0, 400.0, 460.0, 520.0, 600.0, 700.0]},
     title="A 100 kN force crossing a 20 m beam: the deflected beam and the dynamic amplification against α",
 )
 
@@ -424,7 +424,7 @@ LOAD_MODELS = Recipe(
     _models_controls,
     _models_setup,
     {"nrows": 1, "ncols": 3, "figsize": (13.0, 3.8)},
-    static={"speed_kmh": [60.0, 100.0, 140.0, 180.0, 220.0, 250.0, 270.0, 290.0, 320.0, 350.0]},
+    static={"speed_kmh": [60.0, 100.0, 140.0, 180.0, 200.0, 220.0, 250.0, 270.0, 290.0, 320.0, 350.0]},
     title="One car crossing a 20 m span as moving forces, moving masses, sprung masses and the full car",
 )
 

@@ -48,7 +48,10 @@ def _setup(live, status):
 
 
 def _recipe():
-    return Recipe(_controls, _setup, {"figsize": (2.0, 1.5), "dpi": 40}, static={"a": [0.0, 1.0]}, title="t")
+    # the static grid holds the control's starting value 0.5, as Recipe.static_html requires
+    return Recipe(
+        _controls, _setup, {"figsize": (2.0, 1.5), "dpi": 40}, static={"a": [0.0, 0.5, 1.0]}, title="t"
+    )
 
 
 def _redraw(values):
@@ -99,7 +102,7 @@ ENTRIES = [
     fuzz("raildyn.widgets.LiveFigure.refresh", lambda: on(_live())),
     fuzz(
         "raildyn.widgets.Recipe",
-        lambda: call(_controls, _setup, {"figsize": (2.0, 1.5), "dpi": 40}, static={"a": [0.0, 1.0]}),
+        lambda: call(_controls, _setup, {"figsize": (2.0, 1.5), "dpi": 40}, static={"a": [0.0, 0.5, 1.0]}),
         # controls and setup are stored, and called by build, static_html and defaults, which check
         # what they return
         accepts={"controls": _STORED, "setup": _STORED},
