@@ -62,8 +62,11 @@ lab: $(STAMP)
 # The page template is the project's (app/nbconvert/templates/raildyn: a citation or an equation link
 # reads as text instead of leaving the page and stopping its widgets; nothing is fetched from another
 # host); Voilà finds it on JUPYTER_PATH. tests/test_browser.py serves the app with these settings.
+# A closed tab leaves its kernel running (the page's shutdown request is refused, voila#1458), so
+# kernels no page has been connected to for ten minutes are shut down; an open page's never are.
 APP_TEMPLATES := app
-APP_OPTIONS := --template=raildyn --no-browser --Voila.ip=127.0.0.1
+APP_OPTIONS := --template=raildyn --no-browser --Voila.ip=127.0.0.1 \
+  --MappingKernelManager.cull_idle_timeout=600 --MappingKernelManager.cull_interval=60
 app: $(STAMP)
 	JUPYTER_PATH=$(CURDIR)/$(APP_TEMPLATES)$${JUPYTER_PATH:+:$$JUPYTER_PATH} $(VENV)/bin/voila notebooks $(APP_OPTIONS) --port=8866
 

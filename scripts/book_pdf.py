@@ -134,8 +134,19 @@ def toc_pages() -> list[str]:
     appendix, then the appendix (``APPENDIX``)."""
     import yaml
 
+    def files_in(entries) -> list[str]:
+        """The files of a list of entries, each followed by its sections, in reading order (a part
+        holds chapters; a chapter may hold sections)."""
+        found = []
+        for entry in entries:
+            found += [entry["file"]] if "file" in entry else []
+            for key in ("parts", "chapters", "sections"):
+                found += files_in(entry.get(key, []))
+        return found
+
     toc = yaml.safe_load((ROOT / "book" / "_toc.yml").read_text(encoding="utf-8"))
-    files = [toc["root"]] + [entry["file"] for entry in toc.get("chapters", [])]
+    top = {"file": toc["root"], "parts": toc.get("parts", []), "chapters": toc.get("chapters", [])}
+    files = files_in([top])
     course = [f for f in files if f not in APPENDIX]
     appendix = [f for f in APPENDIX if f in files]
     return [f"{f}.html" for f in course + appendix]
@@ -279,10 +290,10 @@ def print_book(html: Path, out: Path) -> int:
                     if (path, anchor) in destinations:
                         sheet, left, top = destinations[(path, anchor)]
                         writer.add_outline_item(heading, sheet, parent=chapter, fit=Fit.xyz(left, top))
-                note = f", {unfolded} answers unfolded" if unfolded else ""
-                note += f", {shrunk} formulas or tables shrunk to fit" if shrunk else ""
-                note += f", {past} elements wider than the page's column" if past else ""
-                print(f"[{i}/{len(pages)}] {path}: {len(reader.pages)} pages{note}", flush=True)
+                note = f", answers unfolded: {unfolded}" if unfolded else ""
+                note += f", formulas or tables shrunk to fit: {shrunk}" if shrunk else ""
+                note += f", elements wider than the page's column: {past}" if past else ""
+                print(f"[{i}/{len(pages)}] {path}: pages: {len(reader.pages)}{note}", flush=True)
             # The page numbers, printed on blank sheets and laid over the book's.
             sheets = "".join(f"<div><span>{n}</span></div>" for n in range(1, len(writer.pages) + 1))
             page.set_content(_NUMBERS.format(sheets=sheets))

@@ -118,8 +118,10 @@ class PageLog:
 
 
 def app_setting(name: str) -> list[str]:
-    """A setting of `make app`, read from the Makefile, so that the tests serve the app as it does."""
-    match = re.search(rf"^{name}\s*:=(.*)$", (ROOT / "Makefile").read_text(), flags=re.M)
+    """A setting of `make app`, read from the Makefile (its continued lines joined, as make joins them),
+    so that the tests serve the app as it does."""
+    makefile = (ROOT / "Makefile").read_text().replace("\\\n", " ")
+    match = re.search(rf"^{name}\s*:=(.*)$", makefile, flags=re.M)
     assert match, f"the Makefile sets no {name}"
     return match.group(1).split()
 
