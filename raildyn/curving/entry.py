@@ -16,8 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.curving.geometry import Curve
 from raildyn.stability.nonlinear import simulate
+from raildyn.track import Curve
 from raildyn.wheelset import NonlinearLateral, wheel_forces
 
 __all__ = ["CurveEntry", "curve_entry"]

@@ -33,15 +33,9 @@ from scipy.optimize import root
 
 from raildyn import _checks
 from raildyn.constants import GRAVITY
-from raildyn.curving.geometry import (
-    MAXIMUM_CANT,
-    MINIMUM_RADIUS,
-    Curve,
-    balance_speed,
-    unbalanced_acceleration,
-)
 from raildyn.curving.steady import SteadyCurving, steady_curving
 from raildyn.errors import SolverError
+from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, Curve, balance_speed, unbalanced_acceleration
 from raildyn.wheelset import (
     NonlinearLateral,
     contact_forces,

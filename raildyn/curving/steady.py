@@ -24,8 +24,8 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.contact.creep import wheelset_creepages
-from raildyn.curving.geometry import MAXIMUM_CANT, MINIMUM_RADIUS, unbalanced_acceleration
 from raildyn.linear_model import as_linear_system
+from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, unbalanced_acceleration
 from raildyn.wheelset import curve_loads, track_on_arc
 
 __all__ = ["SteadyCurving", "steady_curving"]

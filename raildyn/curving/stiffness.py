@@ -40,10 +40,10 @@ from functools import lru_cache
 import numpy as np
 
 from raildyn import _checks
-from raildyn.curving.geometry import MINIMUM_RADIUS
 from raildyn.curving.steady import steady_curving
 from raildyn.linear_model import _AffineFamily, as_linear_system
 from raildyn.stability.linear import _MAX_SCAN, _STATUSES, _crossings, _StateMatrices
+from raildyn.track import MINIMUM_RADIUS
 from raildyn.vehicles import Bogie
 
 __all__ = [

@@ -19,8 +19,7 @@ import functools
 
 import sympy
 
-from raildyn.constants import GRAVITY
-from raildyn.curving.geometry import STANDARD_RAIL_SPACING
+from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
 from raildyn.derivations._wheel_rail import RAIL_HALF_SPACING, RAIL_PAIR
 

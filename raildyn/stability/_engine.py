@@ -50,24 +50,28 @@ class NotCompiled(Exception):
 
 def _table(contact, name):
     """(x, f) of a contact table, or None for the cone; NotCompiled for any other function."""
-    from raildyn.wheelset import _Table
+    from raildyn.wheelset import ContactTable
 
     fn = getattr(contact, name)
     if fn is None:
         return None
-    if type(fn) is not _Table:
+    if type(fn) is not ContactTable:
         raise NotCompiled(f"contact {name} is a Python function, not a profile table")
     return fn.x, fn.f
 
 
 def _tread_tables(contact):
     """The (x, f) tables of ϑ_L and ϑ_R, or (None, None) without tread angles; NotCompiled for a function."""
-    from raildyn.wheelset import _Table, _Tables
+    from raildyn.wheelset import ContactTable, ContactTables
 
     fn = contact.tread_angles
     if fn is None:
         return None, None
-    if type(fn) is not _Tables or len(fn.tables) != 2 or any(type(t) is not _Table for t in fn.tables):
+    if (
+        type(fn) is not ContactTables
+        or len(fn.tables) != 2
+        or any(type(t) is not ContactTable for t in fn.tables)
+    ):
         raise NotCompiled("contact tread_angles is a Python function, not two profile tables")
     return tuple((t.x, t.f) for t in fn.tables)
 
@@ -167,7 +171,7 @@ def batch(rows) -> np.ndarray:
 
 @numba.njit(cache=True, error_model="numpy")
 def _interp(row, offset, size, y):
-    """A contact table at y: linear between its points, along its end slopes beyond (as ``_Table``)."""
+    """A contact table at y: linear between its points, along its end slopes beyond (as ``ContactTable``)."""
     o = int(offset)
     m = int(size)
     x0, x1 = row[o], row[o + m - 1]
