@@ -2,7 +2,8 @@
 
 The cant quantities and the limits of curve geometry live in :mod:`raildyn.track.cant`, the curve
 with transitions in :mod:`raildyn.track.curve`, below the wheelset and the curving models that
-run on them. Import them from there; this old path goes after one issue.
+run on them. Import them from there (``from raildyn.track import Curve``): this older path is
+deprecated and will be removed.
 """
 
 # The old import path, kept for one issue: raildyn.track.cant and raildyn.track.curve are the homes.

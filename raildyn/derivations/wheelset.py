@@ -282,7 +282,7 @@ def curved_wheelset() -> Derivation:
     Derivation
         Parameters read from a :class:`raildyn.wheelset.Wheelset` (the wheelset at x = 0) or a
         pair (Wheelset, x); g and 2a_r from :mod:`raildyn.constants` and
-        :data:`raildyn.curving.geometry.STANDARD_RAIL_SPACING`; ``speed`` V (m/s).
+        :data:`raildyn.constants.STANDARD_RAIL_SPACING`; ``speed`` V (m/s).
 
     Examples
     --------

@@ -2,7 +2,7 @@
 
 :class:`raildyn.wheelset.NonlinearWheelset` and :class:`raildyn.wheelset.NonlinearLateral` (the
 bogie, the car and the vehicles of chapter 8 on tangent track or on a
-:class:`raildyn.curving.geometry.Curve`) evaluate their right-hand side with numpy, some 30–60 µs a
+:class:`raildyn.track.curve.Curve`) evaluate their right-hand side with numpy, some 30–60 µs a
 call, most of it numpy's per-call cost on arrays of four wheelsets. Here the same equations are
 compiled: :func:`pack` writes a model at one speed into one row of floats, and :func:`lateral_rhs`
 evaluates M q̈ = −C_s q̇ − K_s q + Σ F_contact (− m a_q on a curve) from that row in about a
@@ -249,8 +249,8 @@ def _ramp(row, s):
     """The share of the arc's curvature and cant at s along the packed curve, in [0, 1].
 
     0 on the straights, rising linearly along the entry transition, 1 on the arc and falling along
-    the exit: κ = share/R (:meth:`raildyn.curving.geometry.Curve.curvature`) and h_t = share·h_t of
-    the arc (:meth:`raildyn.curving.geometry.Curve.cant_at`).
+    the exit: κ = share/R (:meth:`raildyn.track.curve.Curve.curvature`) and h_t = share·h_t of
+    the arc (:meth:`raildyn.track.curve.Curve.cant_at`).
     """
     s0, s1, s2, s3, L = row[_CURVE], row[_CURVE + 1], row[_CURVE + 2], row[_CURVE + 3], row[_CURVE + 5]
     if s <= s0 or s > s3:

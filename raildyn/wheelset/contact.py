@@ -1,13 +1,15 @@
 """The nonlinear wheel–rail contact of one wheelset (book chapters 4, 5 and 8).
 
-* :class:`WheelRailContact`: the geometry Δr(y), Δϑ(y) and the tread angles (a cone by
-  default), the saturation of the creep forces at the friction limit, and the flange as a stiff
-  spring beyond the flangeway clearance;
-* :func:`profile_contact`: that contact for a real wheel and rail profile pair, its geometry in
-  tables (:class:`ContactTable`, :class:`ContactTables`) that the compiled engine of
+* :class:`~raildyn.wheelset.WheelRailContact`: the geometry Δr(y), Δϑ(y) and the tread angles
+  (a cone by default), the saturation of the creep forces at the friction limit, and the flange
+  as a stiff spring beyond the flangeway clearance;
+* :func:`~raildyn.wheelset.profile_contact`: that contact for a real wheel and rail profile
+  pair, its geometry in tables (:class:`~raildyn.wheelset.ContactTable`,
+  :class:`~raildyn.wheelset.ContactTables`) that the compiled engine of
   :mod:`raildyn.stability` reads too;
-* the rails' forces: on the wheelset (:func:`contact_forces`), on each wheel
-  (:func:`wheel_forces`), and the tread contact angles (:func:`tread_contact_angles`).
+* the rails' forces: on the wheelset (:func:`~raildyn.wheelset.contact_forces`), on each wheel
+  (:func:`~raildyn.wheelset.wheel_forces`), and the tread contact angles
+  (:func:`~raildyn.wheelset.tread_contact_angles`).
 
 Coordinates: y to the left, ψ turning to the left. SI units throughout.
 """

@@ -1,8 +1,9 @@
 """A wheelset on a curve (book chapters 5 and 8): the pure-rolling offset and the loads of an arc.
 
-The offset at which a free coned wheelset rolls round a curve (:func:`pure_rolling_offset`),
-where an arc puts the track under a wheelset (:func:`track_on_arc`, the one place this geometry is
-written) and the loads that a curve puts on a linear wheelset (:func:`curve_loads`), from which
+The offset at which a free coned wheelset rolls round a curve
+(:func:`~raildyn.wheelset.pure_rolling_offset`), where an arc puts the track under a wheelset
+(:func:`~raildyn.wheelset.track_on_arc`, the one place this geometry is written) and the loads
+that a curve puts on a linear wheelset (:func:`~raildyn.wheelset.curve_loads`), from which
 :func:`raildyn.curving.steady.steady_curving` finds the steady state of any vehicle. The
 sharpest curve accepted is :data:`raildyn.track.cant.MINIMUM_RADIUS`. SI units throughout.
 """
@@ -66,7 +67,7 @@ def track_on_arc(position, curvature) -> tuple[np.ndarray, np.ndarray]:
     position : float or array_like
         x, m, each within ±100 m (a wheelset's place along its vehicle); not empty.
     curvature : float or array_like
-        κ, 1/m, each within ±1/50 m (the sharpest curve of :mod:`raildyn.curving.geometry`),
+        κ, 1/m, each within ±1/50 m (the sharpest curve of :mod:`raildyn.track.cant`),
         broadcasting with ``position``; not empty.
 
     Returns
@@ -111,7 +112,7 @@ def curve_loads(ws: Wheelset, radius, position=0.0) -> np.ndarray:
     ----------
     ws : Wheelset
     radius : float
-        R, m, at least 50 (:data:`raildyn.curving.geometry.MINIMUM_RADIUS`; the curve turns to
+        R, m, at least 50 (:data:`raildyn.track.cant.MINIMUM_RADIUS`; the curve turns to
         the left, +y).
     position : float
         x, the wheelset's distance ahead of the axes' origin, m, in [−100, 100] (negative

@@ -1,9 +1,10 @@
 """Klingel's kinematic oscillation of a free coned wheelset and of a rigid two-axle bogie (book chapter 5).
 
-The wavelength of a coned wheelset rolling without slip (:func:`kinematic_wavelength`), of two
-wheelsets held parallel in a rigid bogie (:func:`rigid_bogie_wavelength`), and both paths along
-the track (:func:`kinematic_oscillation`). Also the one bound on a conicity and a centred contact
-angle that the rest of :mod:`raildyn.wheelset` checks against. SI units: m, rad.
+The wavelength of a coned wheelset rolling without slip
+(:func:`~raildyn.wheelset.kinematic_wavelength`), of two wheelsets held parallel in a rigid bogie
+(:func:`~raildyn.wheelset.rigid_bogie_wavelength`), and both paths along the track
+(:func:`~raildyn.wheelset.kinematic_oscillation`). Also the one bound on a conicity and a
+centred contact angle that the rest of :mod:`raildyn.wheelset` checks against. SI units: m, rad.
 """
 
 from __future__ import annotations

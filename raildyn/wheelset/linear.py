@@ -1,12 +1,13 @@
 """The linear wheelset of chapter 5 on tangent track: its parameters and Kalker's linear wheel–rail terms.
 
-* :class:`Wheelset`, a parameter set and a linear model of the one protocol
+* :class:`~raildyn.wheelset.Wheelset`, a parameter set and a linear model of the one protocol
   (:class:`raildyn.linear_model.LinearModel`: ``Wheelset().matrices(V)``, ``state_space(V)``):
   lateral displacement and yaw on a primary suspension to a frame running straight at V;
 * its wheel–rail terms, creep damping, creep stiffness and gravitational stiffness
-  (:func:`creep_terms`), which :func:`add_wheelset` adds to any assembled model (the bogies and
-  cars of :mod:`raildyn.vehicles` too);
-* Wickens' critical speed of a wheelset on a yaw spring (:func:`wickens_critical_speed`).
+  (:func:`~raildyn.wheelset.creep_terms`), which :func:`~raildyn.wheelset.add_wheelset` adds
+  to any assembled model (the bogies and cars of :mod:`raildyn.vehicles` too);
+* Wickens' critical speed of a wheelset on a yaw spring
+  (:func:`~raildyn.wheelset.wickens_critical_speed`).
 
 Coordinates: y to the left, ψ turning to the left. SI units throughout.
 """

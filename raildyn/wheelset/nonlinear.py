@@ -1,10 +1,10 @@
 """The nonlinear wheelset and the nonlinear lateral vehicle (book chapters 5, 7 and 8), as ``rhs(t, state)``.
 
-* :class:`NonlinearWheelset`: the suspended wheelset of :mod:`raildyn.wheelset.linear` with
+* :class:`~raildyn.wheelset.NonlinearWheelset`: the suspended wheelset of :mod:`raildyn.wheelset.linear` with
   the nonlinear contact of :mod:`raildyn.wheelset.contact`;
-* :class:`NonlinearLateral`: any lateral linear system with its wheelsets' linear wheel–rail
+* :class:`~raildyn.wheelset.NonlinearLateral`: any lateral linear system with its wheelsets' linear wheel–rail
   terms replaced by the nonlinear contact forces, optional nonlinear suspension elements
-  (:class:`SuspensionElement`) and an optional curve (:class:`raildyn.track.curve.Curve`)
+  (:class:`~raildyn.wheelset.SuspensionElement`) and an optional curve (:class:`raildyn.track.curve.Curve`)
   to run through.
 
 The compiled engine of :mod:`raildyn.stability` runs both where it can. SI units throughout.
@@ -179,7 +179,7 @@ class NonlinearLateral:
     forces are those of :func:`contact_forces` at y − y_t, with the yaw ψ − x κ(s_c) that the
     axes' own turning gives its path, and the yaw rate ψ̇ + V κ(s_c). Every lateral
     coordinate (label ending in " y") carries −m a_q, a_q = V²κ(s_c) − g D(s_c)/G
-    (:meth:`raildyn.curving.geometry.Curve.unbalanced_acceleration`). The
+    (:meth:`raildyn.track.curve.Curve.unbalanced_acceleration`). The
     Coriolis and Euler forces of the turning axes (of order m V κ ẏ) are left out.
 
     Attributes
@@ -191,7 +191,7 @@ class NonlinearLateral:
         V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     elements : tuple of SuspensionElement
         Nonlinear suspension elements, each naming coordinates of ``system``; empty by default.
-    curve : raildyn.curving.geometry.Curve or None
+    curve : raildyn.track.curve.Curve or None
         The track's curve (turning left); None: tangent track.
     start : float
         s_c at t = 0, the distance of the vehicle's centre along ``curve``, m (finite).

@@ -1,4 +1,4 @@
-"""Fuzz registry: chapter 8, curve geometry (raildyn.track.cant, .curve) and wheel climb (raildyn.curving.climb).
+"""Fuzz registry: chapter 8, curve geometry (raildyn.track.cant, .curve) and wheel climb (curving.climb).
 
 The cant functions and Nadal's and Weinstock's limits take single numbers here, and are
 vectorised: a list of two numbers is valid for each of their arguments (declared ``list``). The
