@@ -233,7 +233,7 @@ class ContactTable:
 
 
 class ContactTables:
-    """Tables side by side, [f₀(y), f₁(y), …]: an array of shape (k, *y.shape).
+    """Tables side by side, [f₀(y), f₁(y), …]: an array of shape ``(k, *y.shape)``.
 
     How :func:`profile_contact` holds the two tread angles [ϑ_L(y), ϑ_R(y)] (rad), in a form the
     compiled engine of :mod:`raildyn.stability` reads.
