@@ -22,8 +22,8 @@ from scipy.optimize import fsolve
 
 from benchmarks.common import Case, timed, widget_case
 from raildyn.curving import curving_map
-from raildyn.curving.geometry import unbalanced_acceleration
 from raildyn.stability import _engine
+from raildyn.track import unbalanced_acceleration
 from raildyn.vehicles import Bogie
 
 RADII = np.geomspace(150.0, 3000.0, 40)  # m

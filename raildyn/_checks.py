@@ -1,5 +1,9 @@
 """Input checks shared by every raildyn model.
 
+The ground floor of the package, with :mod:`raildyn._numbers` (the one number check,
+:func:`scalar`, which :mod:`raildyn.constants` needs too) below it and the table of plausible
+ranges of :mod:`raildyn.constants` beside it: _numbers ← constants ← _checks, no loop.
+
 Each check either returns the cleaned value or raises a ``ValueError`` whose
 message names the parameter, the value received and what is allowed, so that a
 bad number never travels on to become a silent NaN.
@@ -12,6 +16,9 @@ import numbers
 
 import numpy as np
 
+from raildyn._numbers import interval_words, scalar
+from raildyn.constants import PLAUSIBLE_RANGES
+
 
 def _show(value) -> str:
     """Short text for a value inside an error message."""
@@ -20,36 +27,6 @@ def _show(value) -> str:
         return repr(value)
     text = np.array2string(arr, threshold=6, precision=4)
     return f"{text} (shape {arr.shape})"
-
-
-def scalar(name: str, value, *, low=None, high=None, low_open=False, high_open=False) -> float:
-    """Return ``value`` as a finite float within ``[low, high]``.
-
-    ``low_open`` / ``high_open`` make the matching bound strict.
-    """
-    # The common case first and cheaply (this runs inside right-hand sides): a plain float or int.
-    # A bool is no number (True is not 1.0 m), and a complex number is not cast to its real part.
-    if type(value) is not float and (
-        isinstance(value, bool) or not isinstance(value, (numbers.Real, np.floating, np.integer))
-    ):
-        if not (isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf"):
-            raise TypeError(f"{name} must be a real number, got {value!r} of type {type(value).__name__}")
-    x = float(value)
-    if not math.isfinite(x):
-        raise ValueError(f"{name} must be a finite number in {_interval(low, high, low_open, high_open)}, "
-                         f"got {value!r}")  # fmt: skip
-    if (low is not None and (x < low or (low_open and x == low))) or (
-        high is not None and (x > high or (high_open and x == high))
-    ):
-        raise ValueError(f"{name} must be in {_interval(low, high, low_open, high_open)}, got {value!r}")
-    return x
-
-
-def _interval(low, high, low_open, high_open) -> str:
-    """The allowed interval in words, for an error message."""
-    lo = "(" if low_open else "["
-    hi = ")" if high_open else "]"
-    return f"{lo}{'-inf' if low is None else low}, {'inf' if high is None else high}{hi}"
 
 
 def positive(name: str, value) -> float:
@@ -434,8 +411,6 @@ def broadcast(**arrays) -> tuple:
 
 def _hint(value: float, quantity: str) -> str:
     """A likely slip behind an implausible value, for the message (empty if none fits)."""
-    from raildyn.constants import PLAUSIBLE_RANGES
-
     r = PLAUSIBLE_RANGES[quantity]
     x = abs(value)
     # A slip multiplies by 3.6, 100 or 1000: a value just outside the range suggests none.
@@ -451,11 +426,9 @@ def _hint(value: float, quantity: str) -> str:
 
 
 def _implausible(name, value, quantity, low, low_open, high, signed=False) -> str:
-    from raildyn.constants import PLAUSIBLE_RANGES
-
     r = PLAUSIBLE_RANGES[quantity]
     unit = f" {r.unit}" if r.unit else ""
-    where = f"±{high}" if signed else _interval(low, high, low_open, False)
+    where = f"±{high}" if signed else interval_words(low, high, low_open, False)
     hint = _hint(float(value), quantity) if np.isfinite(value) else ""
     return (
         f"{name} must be {'within ' if signed else 'in '}{where}{unit} (the plausible range of {r.what}: "
@@ -473,8 +446,6 @@ def plausible(name: str, value, quantity: str, *, low=None, low_open=False, high
     of the range); ``signed`` accepts ``-high <= value <= high`` (a velocity that may run
     backwards).
     """
-    from raildyn.constants import PLAUSIBLE_RANGES
-
     r = PLAUSIBLE_RANGES[quantity]
     hi = r.high if high is None else min(high, r.high)
     lo = -hi if signed else (r.low if low is None else low)
@@ -489,8 +460,6 @@ def plausible_array(
 ) -> np.ndarray:
     """:func:`array` (with its ``options``: ``ndim``, ``shape``, ``allow_empty``) whose every entry
     is in the plausible range of ``quantity``, as :func:`plausible`."""
-    from raildyn.constants import PLAUSIBLE_RANGES
-
     r = PLAUSIBLE_RANGES[quantity]
     arr = array(name, value, **options)
     if arr.size:

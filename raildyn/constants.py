@@ -30,6 +30,8 @@ import dataclasses
 import math
 import types
 
+from raildyn._numbers import scalar  # below this module; raildyn._checks, above it, reads the table here
+
 __all__ = [
     "GRAVITY",
     "MAXIMUM_SPEED",
@@ -92,14 +94,12 @@ class PlausibleRange:
     reason: str
 
     def __post_init__(self):
-        from raildyn import _checks  # here, not at the top: _checks reads this module's table
-
         for name in ("what", "unit", "reason"):
             if not isinstance(getattr(self, name), str):
                 raise TypeError(f"{name} must be a string, got {getattr(self, name)!r:.80}")
         if not self.what or not self.reason:
             raise ValueError("what and reason must not be empty: a range states the quantity and why")
-        low, high = _checks.scalar("low", self.low), _checks.scalar("high", self.high)
+        low, high = scalar("low", self.low), scalar("high", self.high)
         if not low < high:
             raise ValueError(f"low must be below high, got low = {low!r} and high = {high!r}")
 

@@ -43,6 +43,7 @@ __all__ = [
     "LinearModel",
     "LinearModelBase",
     "LinearSystem",
+    "RailWheelset",
     "SystemMatrices",
     "as_linear_system",
 ]
@@ -149,7 +150,7 @@ class LinearSystem:
         Generalized weight of the sprung masses, N (down is negative); None: zeros.
     wheelsets : tuple of (int, int, Wheelset)
         Indices of the [y, ψ] coordinates of each wheelset in contact with the
-        rails and its parameters, for the nonlinear counterpart
+        rails and its parameters (a :class:`RailWheelset`), for the nonlinear counterpart
         (:class:`raildyn.wheelset.NonlinearLateral`).
     input_stiffness, input_damping : ndarray, (q, q) or None
         The inputs' own block of the suspension's stiffness and damping, N/m and N·s/m
@@ -501,16 +502,56 @@ class LinearSystem:
         return (1j * w[:, None]) ** d * np.einsum("i,kij->kj", o, X)
 
 
+@runtime_checkable
+class RailWheelset(Protocol):
+    """What a :class:`LinearSystem` holds of each wheelset in contact with the rails.
+
+    The parameters that the nonlinear and curving models read from a system's ``wheelsets``;
+    :class:`raildyn.wheelset.Wheelset` has them all. Named here so that this module need not
+    import the wheelset, which builds on it.
+
+    Attributes
+    ----------
+    mass : float
+        m, kg.
+    yaw_inertia : float
+        I_z, kg·m².
+    rolling_radius, half_gauge : float
+        r₀ and a, m.
+    conicity : float
+        λ.
+    axle_load : float
+        W, N.
+    f11, f22, f23, f33 : float
+        Kalker's coefficients of one wheel: N, N, N·m, N·m².
+    contact_angle : float
+        ϑ₀, rad.
+    contact_angle_parameter : float
+        ε.
+    """
+
+    mass: float
+    yaw_inertia: float
+    rolling_radius: float
+    half_gauge: float
+    conicity: float
+    axle_load: float
+    f11: float
+    f22: float
+    f23: float
+    f33: float
+    contact_angle: float
+    contact_angle_parameter: float
+
+
 def _wheelsets(value, labels) -> tuple:
     """The wheelsets of a system: (index of y, index of ψ, Wheelset) each, indices in range."""
     if isinstance(value, str) or not isinstance(value, (tuple, list)):
         raise TypeError(f"wheelsets must be a tuple of (int, int, Wheelset), got {value!r:.80}")
     if value:
-        from raildyn.wheelset import Wheelset  # raildyn.wheelset builds on this module
-
         n = len(labels)
         for i, item in enumerate(value):
-            if not (isinstance(item, (tuple, list)) and len(item) == 3 and isinstance(item[2], Wheelset)):
+            if not (isinstance(item, (tuple, list)) and len(item) == 3 and isinstance(item[2], RailWheelset)):
                 raise TypeError(f"wheelsets[{i}] must be (int, int, Wheelset), got {item!r:.80}")
             for k in (0, 1):
                 _checks.integer(f"wheelsets[{i}][{k}]", item[k], low=0, high=n - 1)

@@ -9,12 +9,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from matplotlib.figure import Figure
 
-from raildyn.constants import GRAVITY
-from raildyn.curving.geometry import (
+from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
+from raildyn.track import (
     CANT_GRADIENT_LIMIT,
     MAXIMUM_CANT,
     MINIMUM_RADIUS,
-    STANDARD_RAIL_SPACING,
     Curve,
     balance_speed,
     cant_deficiency,

@@ -12,8 +12,8 @@ from raildyn.constants import GRAVITY
 from raildyn.contact.profiles import conical_wheel, contact_geometry, s1002_wheel, uic60_rail
 from raildyn.curving import curve_entry, curving_map, quasi_static_curving, steady_curving
 from raildyn.curving.climb import nadal_limit
-from raildyn.curving.geometry import Curve, balance_speed
 from raildyn.errors import SolverError
+from raildyn.track import Curve, balance_speed
 from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Bogie, Car
 from raildyn.wheelset import WheelRailContact, Wheelset, contact_forces, profile_contact, wheel_forces
 

@@ -9,7 +9,6 @@ import sympy as sp  # solves the equilibrium symbolically (requirements.txt: the
 from matplotlib.figure import Figure
 
 from raildyn.curving import steady_curving
-from raildyn.curving.geometry import balance_speed
 from raildyn.curving.stiffness import (
     BendingShear,
     SelfSteeringCurving,
@@ -19,6 +18,7 @@ from raildyn.curving.stiffness import (
     stability_and_curving,
 )
 from raildyn.stability import critical_speed
+from raildyn.track import balance_speed
 from raildyn.vehicles import Bogie, Car
 from raildyn.wheelset import Wheelset, pure_rolling_offset
 

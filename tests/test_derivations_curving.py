@@ -14,9 +14,9 @@ from derivation_helpers import assert_derived, factors, scaled
 from hypothesis import given, settings
 
 from raildyn.curving import bending_shear_stiffness, self_steering_curving, steady_curving
-from raildyn.curving.geometry import balance_speed
 from raildyn.derivations.curving import bending_shear, bogie_curving, wheelset_curving
 from raildyn.linear_model import as_linear_system
+from raildyn.track import balance_speed
 from raildyn.vehicles import Bogie
 from raildyn.wheelset import Wheelset, curve_loads
 

@@ -15,9 +15,10 @@ from derivation_helpers import assert_derived, factors, scaled, system_matrices
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from raildyn.constants import GRAVITY
-from raildyn.curving import geometry, steady_curving
+from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
+from raildyn.curving import steady_curving
 from raildyn.derivations.wheelset import critical_speed_limit, curved_wheelset, tangent_wheelset
+from raildyn.track import speed_for_deficiency
 from raildyn.wheelset import Wheelset, curve_loads, pure_rolling_offset, wickens_critical_speed
 
 FIELDS = (
@@ -96,7 +97,7 @@ def test_curved_wheelset_matches_curve_loads(changes, radius, position, speed, c
     assert_derived(d, system_matrices(ws, speed)[:3], (ws, position), speed)
     # The curve's loads: curve_loads plus the unbalanced inertia force −m a_q, a_q = V²/R − g D/G.
     loads = GK @ [1.0 / radius, cant]
-    a_q = speed**2 / radius - GRAVITY * cant / geometry.STANDARD_RAIL_SPACING
+    a_q = speed**2 / radius - GRAVITY * cant / STANDARD_RAIL_SPACING
     expected = curve_loads(ws, radius, position) + [-ws.mass * a_q, 0.0]
     scale = max(np.abs(curve_loads(ws, radius, position)).max(), ws.mass * abs(a_q), 1e-300)
     np.testing.assert_allclose(loads, expected, rtol=0.0, atol=1e-12 * scale)
@@ -112,7 +113,7 @@ def test_curved_wheelset_steady_state_is_steady_curving(changes, radius, deficie
     # K q = G_K w for the lone wheelset (x = 0) is the equilibrium that steady_curving solves.
     ws = scaled(Wheelset(), changes)
     cant = 0.1
-    V = geometry.speed_for_deficiency(radius, cant, max(deficiency, -cant + 0.01))
+    V = speed_for_deficiency(radius, cant, max(deficiency, -cant + 0.01))
     _, _, K, GK, _ = curved_wheelset().numeric(ws, V)
     q = np.linalg.solve(K, GK @ [1.0 / radius, cant])
     state = steady_curving(ws, V, radius, cant=cant)

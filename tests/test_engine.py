@@ -17,9 +17,9 @@ import pytest
 
 from raildyn import stability
 from raildyn.contact.profiles import s1002_wheel, uic60_rail
-from raildyn.curving.geometry import Curve
 from raildyn.errors import SolverError
 from raildyn.stability import _engine
+from raildyn.track import Curve
 from raildyn.vehicles import Bogie, Car
 from raildyn.wheelset import NonlinearLateral, NonlinearWheelset, SuspensionElement, Wheelset, profile_contact
 

@@ -158,7 +158,8 @@ def test_chapter_eight_figures_are_registered_without_book_numbers():
 
 
 def test_nadal_limit_figure_puts_the_cars_quotients_under_nadals_curves():
-    from raildyn.curving import climb, geometry, quasi_static_curving
+    from raildyn.curving import climb, quasi_static_curving
+    from raildyn.track import speed_for_deficiency
     from raildyn.vehicles import Car
 
     ax = figures.make("fig8.nadal_limit").axes[0]
@@ -166,7 +167,7 @@ def test_nadal_limit_figure_puts_the_cars_quotients_under_nadals_curves():
     for line, mu in zip(curves, (0.1, 0.3, 0.5), strict=True):
         delta = np.radians(line.get_xdata())
         np.testing.assert_allclose(line.get_ydata(), climb.nadal_limit(delta, mu), rtol=1e-12)
-    speed = geometry.speed_for_deficiency(300.0, 0.1, 0.1)
+    speed = speed_for_deficiency(300.0, 0.1, 0.1)
     state = quasi_static_curving(Car().nonlinear(), speed, 300.0, 0.1, flange_angle=np.radians(70.0))
     assert markers[-1].get_xdata()[0] == 70.0
     assert markers[-1].get_ydata()[0] == pytest.approx(state.derailment_quotient[0, 1], rel=1e-12)

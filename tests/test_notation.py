@@ -193,13 +193,14 @@ def _math(text: str) -> list[str]:
 
 
 def test_the_cant_is_stated_over_the_rail_spacing_2a_r_everywhere():
-    """One symbol for the base of the cant: 2a_r, the rail spacing of raildyn.curving (chapter 8 wrote
+    """One symbol for the base of the cant: 2a_r, the rail spacing of raildyn.track.cant (chapter 8 wrote
     2a, chapter 5 2a_r); 2a stays the contact spacing."""
     for path in NOTEBOOKS:
         bad = [m for m in _math(_markdown(path)) if "h_t" in m and re.search(r"2a(?![_\w])", m)]
         assert not bad, f"{path.name}: a cant over 2a, not 2a_r: {bad[:3]}"
-    docs = (ROOT / "raildyn" / "curving" / "geometry.py").read_text(encoding="utf-8")
-    assert not re.search(r"2a(?![_\w])", docs), "raildyn.curving.geometry states the rail spacing as 2a"
+    for module in ("cant", "curve"):
+        docs = (ROOT / "raildyn" / "track" / f"{module}.py").read_text(encoding="utf-8")
+        assert not re.search(r"2a(?![_\w])", docs), f"raildyn.track.{module} states the rail spacing as 2a"
 
 
 # --------------------------------------------------------------------------- FRA classes at speeds they allow

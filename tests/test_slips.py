@@ -20,12 +20,11 @@ import pytest
 from raildyn import _checks, constants, contact, curving, stability, train, vehicles
 from raildyn.bridge import SimplySupportedBeam, moving_force
 from raildyn.constants import MAXIMUM_SPEED, PLAUSIBLE_RANGES
-from raildyn.curving.geometry import Curve
 from raildyn.errors import SolverError
 from raildyn.linear_model import Assembler, SystemMatrices
 from raildyn.ride import sperling_harmonic
 from raildyn.suspension import clearance_force
-from raildyn.track import axle_delays
+from raildyn.track import Curve, axle_delays
 from raildyn.validation.identification import coast_down
 from raildyn.validation.measured import StrainRecord
 from raildyn.vehicles import Car, FreightCar, VerticalCar, rock_and_roll, track_frf
@@ -40,9 +39,9 @@ def test_one_speed_limit_for_the_whole_package():
     assert PLAUSIBLE_RANGES["speed"].high == MAXIMUM_SPEED
     from pathlib import Path
 
-    from raildyn.curving import geometry
+    from raildyn.track import cant
 
-    assert geometry.MAXIMUM_SPEED is MAXIMUM_SPEED  # re-exported, not defined again
+    assert cant.MAXIMUM_SPEED is MAXIMUM_SPEED  # re-exported, not defined again
     # no module defines a speed limit of its own (the track's was 1000 m/s, the train's a copy)
     package = Path(constants.__file__).parent
     for path in package.rglob("*.py"):

@@ -7,7 +7,8 @@ import pytest
 from widget_helpers import status_line
 
 from raildyn import figures, stability, wheelset
-from raildyn.curving import geometry, steady_curving
+from raildyn.curving import steady_curving
+from raildyn.track import speed_for_deficiency
 from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, MANCHESTER_CAR, Car
 from raildyn.widgets import chapter05, chapter07
 
@@ -39,7 +40,7 @@ def test_curved_wheelset_shows_the_steady_state_of_the_suspended_wheelset():
     container, update = chapter05.curved_wheelset()
     update(radius=800.0, deficiency_mm=100.0, yaw_stiffness=10.0, lateral_stiffness=5.0)
     ws = wheelset.Wheelset(yaw_stiffness=10.0e6, lateral_stiffness=5.0e6)
-    speed = geometry.speed_for_deficiency(800.0, 0.1, 0.1)  # the widget's curves all have 100 mm of cant
+    speed = speed_for_deficiency(800.0, 0.1, 0.1)  # the widget's curves all have 100 mm of cant
     state = steady_curving(ws, speed, 800.0, cant=0.1)
     status = status_line(container)
     assert f"{3.6 * state.speed:.0f} km/h" in status
@@ -62,7 +63,7 @@ def test_curved_wheelset_shows_the_steady_state_of_the_suspended_wheelset():
         assert marker.get_xdata()[0] == 800.0
         assert marker.get_ydata()[0] == pytest.approx(value, rel=1e-12)
     radii = offset.get_xdata()
-    far = steady_curving(ws, geometry.speed_for_deficiency(radii[-1], 0.1, 0.1), radii[-1], cant=0.1)
+    far = steady_curving(ws, speed_for_deficiency(radii[-1], 0.1, 0.1), radii[-1], cant=0.1)
     assert offset.get_ydata()[-1] == pytest.approx(1e3 * far.offset[0], rel=1e-12)
     assert attack.get_ydata()[-1] == pytest.approx(1e3 * far.angle_of_attack[0], rel=1e-12)
     assert longitudinal.get_ydata()[-1] == pytest.approx(-1e-3 * far.longitudinal_creep_force[0], rel=1e-12)

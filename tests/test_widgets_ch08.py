@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 from widget_helpers import median_update_ms, status_line
 
-from raildyn.curving import climb, curve_entry, geometry, quasi_static_curving
+from raildyn.curving import climb, curve_entry, quasi_static_curving
+from raildyn.track import balance_speed, cant_deficiency
 from raildyn.vehicles import Bogie, Car
 from raildyn.widgets import chapter08
 
@@ -23,7 +24,7 @@ def test_curving_plan_shows_the_cars_quasi_static_equilibrium():
     update(radius=800.0, speed_kmh=90.0, cant_mm=50.0)
     state = quasi_static_curving(Car().nonlinear(), 90.0 / 3.6, 800.0, 0.05)
     status = status_line(container)
-    deficiency = 1e3 * geometry.cant_deficiency(90.0 / 3.6, 800.0, 0.05)
+    deficiency = 1e3 * cant_deficiency(90.0 / 3.6, 800.0, 0.05)
     assert f"cant deficiency {deficiency:.0f} mm" in status
     assert f"leading outer wheel Y/Q = {state.derailment_quotient[0, 1]:.3f}" in status
     for k, (alpha, y, flange) in enumerate(
@@ -194,7 +195,7 @@ def test_stiffness_tradeoff_draws_the_models_critical_speeds_and_angles_of_attac
     container, update = chapter08.stiffness_tradeoff()
     update(conicity=0.25, radius=900.0)
     ks = chapter08._TRADEOFF_STIFFNESSES
-    speed = geometry.balance_speed(900.0, 0.1)  # the widget's curves all have 100 mm of cant
+    speed = balance_speed(900.0, 0.1)  # the widget's curves all have 100 mm of cant
     expected = stability_and_curving(
         Car().replace(conicity=0.25), ks, speed, 900.0, 0.1, speed_range=(1.0, 150.0), tol=0.25, scan=8
     )

@@ -1,6 +1,9 @@
-"""Curving (book chapter 8): curve geometry, steady-state curving, wheel climb.
+"""Curving (book chapter 8): steady-state curving, the nonlinear equilibrium and entry, wheel climb.
 
-* :mod:`raildyn.curving.geometry` — cant, cant deficiency, balance speed, curves with transitions;
+The curve itself (cant, cant deficiency, balance speed, curves with transitions) lives in
+:mod:`raildyn.track` (:mod:`raildyn.track.cant`, :mod:`raildyn.track.curve`), below the models
+that run on it.
+
 * :mod:`raildyn.curving.steady` — the linear steady state of any lateral model in a curve
   (:func:`~raildyn.curving.steady.steady_curving`);
 * :mod:`raildyn.curving.quasi_static` — the nonlinear equilibrium in a curve, flanges included
@@ -14,6 +17,7 @@
 * :mod:`raildyn.curving.climb` — wheel climb: Nadal's limit and Weinstock's axle sum.
 """
 
+from raildyn.curving import geometry  # noqa: F401  (the old path of raildyn.track.cant and .curve; goes after one issue)
 from raildyn.curving.entry import CurveEntry, curve_entry
 from raildyn.curving.quasi_static import CurvingMap, QuasiStaticCurving, curving_map, quasi_static_curving
 from raildyn.curving.steady import SteadyCurving, steady_curving
@@ -25,9 +29,11 @@ from raildyn.curving.stiffness import (
     self_steering_curving,
     stability_and_curving,
 )
+from raildyn.track.curve import Curve  # re-exported from its old home; goes after one issue
 
 __all__ = [
     "BendingShear",
+    "Curve",
     "CurveEntry",
     "CurvingMap",
     "QuasiStaticCurving",

@@ -1,5 +1,5 @@
 """Dynamic curve entry (book chapter 8): a nonlinear vehicle run from straight track through a
-transition onto the arc of a :class:`~raildyn.curving.geometry.Curve`.
+transition onto the arc of a :class:`~raildyn.track.curve.Curve`.
 
 The run is the nonlinear model on the curve (:class:`raildyn.wheelset.NonlinearLateral` with
 ``curve``), integrated by :func:`raildyn.stability.nonlinear.simulate` from the centred state
@@ -16,8 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.curving.geometry import Curve
 from raildyn.stability.nonlinear import simulate
+from raildyn.track import Curve
 from raildyn.wheelset import NonlinearLateral, wheel_forces
 
 __all__ = ["CurveEntry", "curve_entry"]
@@ -125,7 +125,7 @@ def curve_entry(model, speed, curve, *, max_step: float = 0.01, rtol: float = 1e
         The vehicle with nonlinear contact (e.g. ``Car().nonlinear()``); its speed, curve
         and start are replaced.
     speed : float
-        V, m/s, in (0, :data:`~raildyn.curving.geometry.MAXIMUM_SPEED`].
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     curve : Curve
         Its run, from the start to the arc's end, must take at most 120 s; its arc must be
         longer than the vehicle.

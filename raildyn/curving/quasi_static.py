@@ -33,15 +33,9 @@ from scipy.optimize import root
 
 from raildyn import _checks
 from raildyn.constants import GRAVITY
-from raildyn.curving.geometry import (
-    MAXIMUM_CANT,
-    MINIMUM_RADIUS,
-    Curve,
-    balance_speed,
-    unbalanced_acceleration,
-)
 from raildyn.curving.steady import SteadyCurving, steady_curving
 from raildyn.errors import SolverError
+from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, Curve, balance_speed, unbalanced_acceleration
 from raildyn.wheelset import (
     NonlinearLateral,
     contact_forces,
@@ -358,11 +352,11 @@ def quasi_static_curving(
         The vehicle with nonlinear contact (e.g. ``Car().nonlinear()``); its speed, curve
         and start are replaced.
     speed : float
-        V, m/s, in (0, :data:`~raildyn.curving.geometry.MAXIMUM_SPEED`].
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     radius : float
-        R, m (≥ :data:`~raildyn.curving.geometry.MINIMUM_RADIUS`, 50 m).
+        R, m (≥ :data:`~raildyn.track.cant.MINIMUM_RADIUS`, 50 m).
     cant : float
-        h_t, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`] (0.2 m).
+        h_t, m, in [0, :data:`~raildyn.track.cant.MAXIMUM_CANT`] (0.2 m).
     cg_height : float
         h, height of the vehicle's centre of gravity above the rails, m, in (0, 4]: the
         unbalanced acceleration moves ΔQ = (W/2)(h/a)(a_q/g) of each axle's load W to the
@@ -391,7 +385,7 @@ def quasi_static_curving(
     The Manchester car in a 600 m curve at its balance speed for 100 mm of cant: the
     leading wheelsets run on their flanges at about 3.8 mrad.
 
-    >>> from raildyn.curving.geometry import balance_speed
+    >>> from raildyn.track import balance_speed
     >>> from raildyn.vehicles import Car
     >>> state = quasi_static_curving(Car().nonlinear(), balance_speed(600.0, 0.1), 600.0, 0.1)
     >>> state.flange_contact.tolist(), round(1e3 * float(state.angle_of_attack[0]), 1)
@@ -520,11 +514,11 @@ def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=_
     model : NonlinearLateral
         As for :func:`quasi_static_curving`.
     speeds : array_like, (s,)
-        V, m/s, each in (0, :data:`~raildyn.curving.geometry.MAXIMUM_SPEED`].
+        V, m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     radii : array_like, (r,)
-        R, m, each ≥ :data:`~raildyn.curving.geometry.MINIMUM_RADIUS`.
+        R, m, each ≥ :data:`~raildyn.track.cant.MINIMUM_RADIUS`.
     cant : float
-        h_t, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`].
+        h_t, m, in [0, :data:`~raildyn.track.cant.MAXIMUM_CANT`].
     cg_height, flange_angle : float
         As for :func:`quasi_static_curving`.
 

@@ -9,7 +9,7 @@ element keeps its tangent-track law; the curve enters in two places only:
   is displaced by x²/(2R) and turned by x/R, the outer rail is longer by a/R per
   metre, and the wheelset turns at V/R;
 * on every mass, through the unbalanced lateral acceleration a_q of the cant
-  deficiency (:func:`raildyn.curving.geometry.unbalanced_acceleration`).
+  deficiency (:func:`raildyn.track.cant.unbalanced_acceleration`).
 
 So the steady state of any linear model of the one protocol — a wheelset, a bogie,
 a car, the three-piece freight car, the locomotive — is one linear solve,
@@ -24,8 +24,8 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.contact.creep import wheelset_creepages
-from raildyn.curving.geometry import MAXIMUM_CANT, MINIMUM_RADIUS, unbalanced_acceleration
 from raildyn.linear_model import as_linear_system
+from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, unbalanced_acceleration
 from raildyn.wheelset import curve_loads, track_on_arc
 
 __all__ = ["SteadyCurving", "steady_curving"]
@@ -185,11 +185,11 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
         :class:`~raildyn.vehicles.Bogie`, :class:`~raildyn.vehicles.Car`, the freight car,
         the locomotive), each wheelset with its alignment input.
     speed : float
-        V, m/s, in (0, :data:`~raildyn.curving.geometry.MAXIMUM_SPEED`].
+        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     radius : float
-        R, m (≥ :data:`~raildyn.curving.geometry.MINIMUM_RADIUS`, 50 m).
+        R, m (≥ :data:`~raildyn.track.cant.MINIMUM_RADIUS`, 50 m).
     cant : float
-        h_t, m, in [0, :data:`~raildyn.curving.geometry.MAXIMUM_CANT`] (0.2 m).
+        h_t, m, in [0, :data:`~raildyn.track.cant.MAXIMUM_CANT`] (0.2 m).
 
     Returns
     -------
@@ -200,7 +200,7 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
     A free wheelset with neither spin nor gravitational stiffness, at the balance
     speed, rolls at the pure-rolling offset r₀a/(λR) and square to the rails:
 
-    >>> from raildyn.curving.geometry import balance_speed
+    >>> from raildyn.track import balance_speed
     >>> from raildyn.wheelset import Wheelset
     >>> ws = Wheelset(f23=0.0, f33=0.0, contact_angle=0.0, contact_angle_parameter=0.0).free()
     >>> state = steady_curving(ws, balance_speed(600.0, 0.1), 600.0, cant=0.1)

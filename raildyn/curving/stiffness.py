@@ -40,10 +40,10 @@ from functools import lru_cache
 import numpy as np
 
 from raildyn import _checks
-from raildyn.curving.geometry import MINIMUM_RADIUS
 from raildyn.curving.steady import steady_curving
 from raildyn.linear_model import _AffineFamily, as_linear_system
 from raildyn.stability.linear import _MAX_SCAN, _STATUSES, _crossings, _StateMatrices
+from raildyn.track import MINIMUM_RADIUS
 from raildyn.vehicles import Bogie
 
 __all__ = [
@@ -170,7 +170,7 @@ def self_steering_curving(bogie: Bogie, radius) -> SelfSteeringCurving:
         Its wheelset's r₀, a, λ (> 0), f₁₁ and f₂₂ (> 0), its primary stiffnesses and b.
         The wheelset's spin and gravitational terms are ignored here.
     radius : float
-        R, m, at least :data:`~raildyn.curving.geometry.MINIMUM_RADIUS` (50 m).
+        R, m, at least :data:`~raildyn.track.cant.MINIMUM_RADIUS` (50 m).
 
     Returns
     -------
@@ -429,7 +429,7 @@ def stability_and_curving(
     --------
     The Manchester car at its balance speed in a 600 m curve with 100 mm cant:
 
-    >>> from raildyn.curving.geometry import balance_speed
+    >>> from raildyn.track import balance_speed
     >>> from raildyn.vehicles import Car
     >>> r = stability_and_curving(Car(), [5e6, 60e6], balance_speed(600.0, 0.1), 600.0, 0.1)
     >>> [round(3.6 * v) for v in r.critical_speed], [round(1e3 * float(a), 2) for a in r.angle_of_attack]

@@ -19,8 +19,7 @@ import functools
 
 import sympy
 
-from raildyn.constants import GRAVITY
-from raildyn.curving.geometry import STANDARD_RAIL_SPACING
+from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.derivations._core import Derivation, Step, coordinates, generalized_forces, lagrange, time
 from raildyn.derivations._wheel_rail import RAIL_HALF_SPACING, RAIL_PAIR
 
@@ -283,7 +282,7 @@ def curved_wheelset() -> Derivation:
     Derivation
         Parameters read from a :class:`raildyn.wheelset.Wheelset` (the wheelset at x = 0) or a
         pair (Wheelset, x); g and 2a_r from :mod:`raildyn.constants` and
-        :data:`raildyn.curving.geometry.STANDARD_RAIL_SPACING`; ``speed`` V (m/s).
+        :data:`raildyn.constants.STANDARD_RAIL_SPACING`; ``speed`` V (m/s).
 
     Examples
     --------

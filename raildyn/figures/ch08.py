@@ -13,8 +13,9 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from raildyn import plots
-from raildyn.curving import climb, curve_entry, geometry, quasi_static_curving
+from raildyn.curving import climb, curve_entry, quasi_static_curving
 from raildyn.figures import new_figure, register
+from raildyn.track import Curve, balance_speed, cant_deficiency, speed_for_deficiency
 from raildyn.vehicles import Bogie, Car
 
 _RADIUS = 600.0  # m
@@ -34,8 +35,8 @@ _DEFICIENCY = 0.1  # m
 def curving_plan() -> Figure:
     car = Car().nonlinear()
     speeds = (
-        geometry.balance_speed(_RADIUS, _CANT),
-        geometry.speed_for_deficiency(_RADIUS, _CANT, _DEFICIENCY),
+        balance_speed(_RADIUS, _CANT),
+        speed_for_deficiency(_RADIUS, _CANT, _DEFICIENCY),
     )
     fig = new_figure(figsize=(10.0, 6.4))
     for ax, speed in zip(fig.subplots(2, 1, sharex=True), speeds, strict=True):
@@ -43,7 +44,7 @@ def curving_plan() -> Figure:
         chart = state.plot(ax)
         for axle, flanging in zip(chart["axles"], state.flange_contact, strict=True):
             axle.set_color(plots.COLORS[1] if flanging else plots.COLORS[0])
-        deficiency = 1e3 * geometry.cant_deficiency(speed, _RADIUS, _CANT)
+        deficiency = 1e3 * cant_deficiency(speed, _RADIUS, _CANT)
         ax.set_title(
             f"{3.6 * speed:.0f} km/h, cant deficiency {abs(deficiency):.0f} mm: "
             f"leading outer wheel Y/Q = {state.derailment_quotient[0, 1]:.2f}",
@@ -67,14 +68,14 @@ def nadal_limit() -> Figure:
     climb.plot_nadal_limit(ax, friction=(0.1, 0.3, 0.5))
     delta = 70.0  # deg, quasi_static_curving's default flange angle
     cases = (
-        (_RADIUS, geometry.balance_speed(_RADIUS, _CANT), "600 m, balance speed", "o"),
+        (_RADIUS, balance_speed(_RADIUS, _CANT), "600 m, balance speed", "o"),
         (
             _RADIUS,
-            geometry.speed_for_deficiency(_RADIUS, _CANT, _DEFICIENCY),
+            speed_for_deficiency(_RADIUS, _CANT, _DEFICIENCY),
             "600 m, 100 mm deficiency",
             "s",
         ),
-        (300.0, geometry.speed_for_deficiency(300.0, _CANT, _DEFICIENCY), "300 m, 100 mm deficiency", "D"),
+        (300.0, speed_for_deficiency(300.0, _CANT, _DEFICIENCY), "300 m, 100 mm deficiency", "D"),
     )
     for radius, speed, label, marker in cases:
         state = quasi_static_curving(car, speed, radius, _CANT, flange_angle=np.radians(delta))
@@ -104,7 +105,7 @@ def nadal_limit() -> Figure:
 )
 def curve_entry_figure() -> Figure:
     bogie = Bogie().nonlinear()
-    curve = geometry.Curve(radius=_RADIUS, cant=_CANT, transition_length=50.0, arc_length=30.0, straight=0.0)
+    curve = Curve(radius=_RADIUS, cant=_CANT, transition_length=50.0, arc_length=30.0, straight=0.0)
     speed = 100.0 / 3.6
     run = curve_entry(bogie, speed, curve)
     state = quasi_static_curving(bogie, speed, _RADIUS, _CANT)

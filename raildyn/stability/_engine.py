@@ -2,7 +2,7 @@
 
 :class:`raildyn.wheelset.NonlinearWheelset` and :class:`raildyn.wheelset.NonlinearLateral` (the
 bogie, the car and the vehicles of chapter 8 on tangent track or on a
-:class:`raildyn.curving.geometry.Curve`) evaluate their right-hand side with numpy, some 30–60 µs a
+:class:`raildyn.track.curve.Curve`) evaluate their right-hand side with numpy, some 30–60 µs a
 call, most of it numpy's per-call cost on arrays of four wheelsets. Here the same equations are
 compiled: :func:`pack` writes a model at one speed into one row of floats, and :func:`lateral_rhs`
 evaluates M q̈ = −C_s q̇ − K_s q + Σ F_contact (− m a_q on a curve) from that row in about a
@@ -50,24 +50,28 @@ class NotCompiled(Exception):
 
 def _table(contact, name):
     """(x, f) of a contact table, or None for the cone; NotCompiled for any other function."""
-    from raildyn.wheelset import _Table
+    from raildyn.wheelset import ContactTable
 
     fn = getattr(contact, name)
     if fn is None:
         return None
-    if type(fn) is not _Table:
+    if type(fn) is not ContactTable:
         raise NotCompiled(f"contact {name} is a Python function, not a profile table")
     return fn.x, fn.f
 
 
 def _tread_tables(contact):
     """The (x, f) tables of ϑ_L and ϑ_R, or (None, None) without tread angles; NotCompiled for a function."""
-    from raildyn.wheelset import _Table, _Tables
+    from raildyn.wheelset import ContactTable, ContactTables
 
     fn = contact.tread_angles
     if fn is None:
         return None, None
-    if type(fn) is not _Tables or len(fn.tables) != 2 or any(type(t) is not _Table for t in fn.tables):
+    if (
+        type(fn) is not ContactTables
+        or len(fn.tables) != 2
+        or any(type(t) is not ContactTable for t in fn.tables)
+    ):
         raise NotCompiled("contact tread_angles is a Python function, not two profile tables")
     return tuple((t.x, t.f) for t in fn.tables)
 
@@ -167,7 +171,7 @@ def batch(rows) -> np.ndarray:
 
 @numba.njit(cache=True, error_model="numpy")
 def _interp(row, offset, size, y):
-    """A contact table at y: linear between its points, along its end slopes beyond (as ``_Table``)."""
+    """A contact table at y: linear between its points, along its end slopes beyond (as ``ContactTable``)."""
     o = int(offset)
     m = int(size)
     x0, x1 = row[o], row[o + m - 1]
@@ -245,8 +249,8 @@ def _ramp(row, s):
     """The share of the arc's curvature and cant at s along the packed curve, in [0, 1].
 
     0 on the straights, rising linearly along the entry transition, 1 on the arc and falling along
-    the exit: κ = share/R (:meth:`raildyn.curving.geometry.Curve.curvature`) and h_t = share·h_t of
-    the arc (:meth:`raildyn.curving.geometry.Curve.cant_at`).
+    the exit: κ = share/R (:meth:`raildyn.track.curve.Curve.curvature`) and h_t = share·h_t of
+    the arc (:meth:`raildyn.track.curve.Curve.cant_at`).
     """
     s0, s1, s2, s3, L = row[_CURVE], row[_CURVE + 1], row[_CURVE + 2], row[_CURVE + 3], row[_CURVE + 5]
     if s <= s0 or s > s3:

@@ -1,4 +1,4 @@
-"""Track irregularities (chapter 3): deterministic inputs, random spectra, samples and the view in time.
+"""The track: its irregularities (chapter 3) and the geometry of its curves (chapter 8).
 
 * :mod:`raildyn.track.deterministic` — jointed rail with cusp-shaped dipped
   joints (staggered or in phase), an isolated bump, sinusoids; with derivatives.
@@ -8,11 +8,28 @@
   (:class:`~raildyn.track.spectra.TrackSpectrum`); the speed each FRA class allows.
 * :mod:`raildyn.track.synthesis` — seeded samples along distance, a consistent
   two-rail sample, and the spectrum in time at speed V with the delays between axles.
+* :mod:`raildyn.track.cant` — the cant of a curve: equilibrium cant, cant deficiency, unbalanced
+  acceleration, balance speed, and the limits of curve geometry (the smallest radius, the
+  largest cant), each defined once.
+* :mod:`raildyn.track.curve` — a curve with clothoid transitions and cant ramps
+  (:class:`~raildyn.track.curve.Curve`): curvature, cant, twist and plan along it.
 
 Every spectrum follows the package convention (:mod:`raildyn.random_vibration`):
 one-sided, per rad/m in space and per rad/s in time, variance = ∫₀^∞ S dΩ.
 """
 
+from raildyn.track.cant import (
+    CANT_GRADIENT_LIMIT,
+    MAXIMUM_CANT,
+    MINIMUM_RADIUS,
+    TWIST_BASE,
+    balance_speed,
+    cant_deficiency,
+    equilibrium_cant,
+    speed_for_deficiency,
+    unbalanced_acceleration,
+)
+from raildyn.track.curve import Curve
 from raildyn.track.deterministic import (
     RAIL_LENGTH,
     JointedTrack,
@@ -85,4 +102,14 @@ __all__ = [
     "synthesize_irregularity",
     "synthesize_track",
     "temporal_psd",
+    "CANT_GRADIENT_LIMIT",
+    "MAXIMUM_CANT",
+    "MINIMUM_RADIUS",
+    "TWIST_BASE",
+    "Curve",
+    "balance_speed",
+    "cant_deficiency",
+    "equilibrium_cant",
+    "speed_for_deficiency",
+    "unbalanced_acceleration",
 ]

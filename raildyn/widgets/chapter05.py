@@ -14,7 +14,8 @@ from functools import lru_cache
 import numpy as np
 
 from raildyn import diagrams, plots, stability, wheelset
-from raildyn.curving import geometry, steady_curving
+from raildyn.curving import steady_curving
+from raildyn.track import speed_for_deficiency
 from raildyn.widgets._core import Recipe, slider
 
 __all__ = ["curved_wheelset", "hunting_wheelset", "klingel", "wheelset_roots"]
@@ -306,7 +307,7 @@ def _curve_system(yaw_stiffness: float, lateral_stiffness: float):
 
 def _curve_states(system, radii, deficiency: float):
     """SteadyCurving of ``system`` on each radius (m), at the speed of the cant deficiency I (m)."""
-    speeds = np.atleast_1d(geometry.speed_for_deficiency(radii, _CURVE_CANT, deficiency))
+    speeds = np.atleast_1d(speed_for_deficiency(radii, _CURVE_CANT, deficiency))
     return [steady_curving(system, V, R, cant=_CURVE_CANT) for V, R in zip(speeds, radii, strict=True)]
 
 

@@ -17,9 +17,10 @@ import ipywidgets as widgets
 import numpy as np
 
 from raildyn import plots
-from raildyn.curving import climb, curve_entry, geometry, quasi_static_curving
+from raildyn.curving import climb, curve_entry, quasi_static_curving
 from raildyn.curving.stiffness import stability_and_curving
 from raildyn.errors import SolverError
+from raildyn.track import Curve, balance_speed, cant_deficiency
 from raildyn.vehicles import Bogie, Car
 from raildyn.widgets._core import Recipe, slider
 
@@ -88,7 +89,7 @@ def _plan_setup(live, status):
 
     def redraw(v):
         R, V, D = float(v["radius"]), float(v["speed_kmh"]) / 3.6, 1e-3 * float(v["cant_mm"])
-        deficiency = 1e3 * geometry.cant_deficiency(V, R, D)
+        deficiency = 1e3 * cant_deficiency(V, R, D)
         head = (
             f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h, h_t = {1e3 * D:.0f} mm: "
             f"cant deficiency {deficiency:.0f} mm"
@@ -201,7 +202,7 @@ def _nadal_setup(live, status):
         limit.set_ydata(climb.nadal_limit(np.radians(_FLANGE_ANGLES), mu))
         nadal = climb.nadal_limit(np.radians(delta), mu)
         at_angle.set_data([delta], [nadal])
-        deficiency = 1e3 * geometry.cant_deficiency(V, R, _NADAL_CANT)
+        deficiency = 1e3 * cant_deficiency(V, R, _NADAL_CANT)
         head = (
             f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h, {1e3 * _NADAL_CANT:.0f} mm cant "
             f"(deficiency {deficiency:.0f} mm)"
@@ -267,7 +268,7 @@ def nadal_chart():
 
 # A 600 m curve with 100 mm of cant, entered by a 50 m clothoid (a ramp of 2 mm/m) straight from
 # the start, and a 30 m arc: the bogie settles on it within a few metres.
-ENTRY_CURVE = geometry.Curve(radius=600.0, cant=0.1, transition_length=50.0, arc_length=30.0, straight=0.0)
+ENTRY_CURVE = Curve(radius=600.0, cant=0.1, transition_length=50.0, arc_length=30.0, straight=0.0)
 ENTRY_SPEEDS = (60.0, 80.0, 100.0, 120.0)  # km/h: each run takes about a second, so a few, made once
 _BOGIE = Bogie().nonlinear()  # a bogie's run costs about half the car's
 _QUANTITIES = {"flange force": "flange_force", "offset": "offset", "angle of attack": "angle_of_attack"}
@@ -348,7 +349,7 @@ def _entry_setup(live, status):
             line.set_ydata([value, value])
         values = scale * getattr(run, quantity)[0]
         peak = int(np.argmax(np.abs(values)))
-        deficiency = 1e3 * geometry.cant_deficiency(kmh / 3.6, ENTRY_CURVE.radius, ENTRY_CURVE.cant)
+        deficiency = 1e3 * cant_deficiency(kmh / 3.6, ENTRY_CURVE.radius, ENTRY_CURVE.cant)
         status.value = (
             f"V = {kmh:.0f} km/h (cant deficiency {deficiency:.0f} mm) · leading wheelset's "
             f"{quantity.replace('_', ' ')}: largest {values[peak]:.2f} {unit} "
@@ -404,7 +405,7 @@ _TRADEOFF_RADII = (300.0, 2000.0)  # m: the radius slider's range
 def _tradeoff(conicity: float, radius: float):
     """The car's trade-off at a conicity in a curve of ``radius`` m (100 mm of cant, at balance speed)."""
     model = Car().replace(conicity=conicity)
-    speed = geometry.balance_speed(radius, _TRADEOFF_CANT)
+    speed = balance_speed(radius, _TRADEOFF_CANT)
     # 8 speeds a scan and 0.25 m/s (0.9 km/h) on each critical speed: finer than the plot shows
     return stability_and_curving(
         model,

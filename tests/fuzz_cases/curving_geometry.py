@@ -1,4 +1,4 @@
-"""Fuzz registry: chapter 8, curve geometry (raildyn.curving.geometry) and wheel climb (.climb).
+"""Fuzz registry: chapter 8, curve geometry (raildyn.track.cant, .curve) and wheel climb (curving.climb).
 
 The cant functions and Nadal's and Weinstock's limits take single numbers here, and are
 vectorised: a list of two numbers is valid for each of their arguments (declared ``list``). The
@@ -12,7 +12,8 @@ from __future__ import annotations
 import numpy as np
 from fuzzing import call, fuzz, on
 
-from raildyn.curving import climb, geometry
+from raildyn.curving import climb
+from raildyn.track import Curve
 
 S = np.linspace(0.0, 400.0, 9)  # m, across every segment of the default curve
 DISTANCES = {"s": "zero negative shape"}
@@ -37,34 +38,34 @@ def _climb_fields():
 ENTRIES = [
     # ------------------------------------------------------------------ cant and speed
     fuzz(
-        "raildyn.curving.geometry.equilibrium_cant",
+        "raildyn.track.cant.equilibrium_cant",
         lambda: call(30.0, 600.0),
         accepts={"speed": "zero list", "radius": V},
     ),
     fuzz(
-        "raildyn.curving.geometry.cant_deficiency",
+        "raildyn.track.cant.cant_deficiency",
         lambda: call(30.0, 600.0, 0.1),
         accepts={"speed": "zero list", "radius": V, "cant": "zero list"},
     ),
     fuzz(
-        "raildyn.curving.geometry.unbalanced_acceleration",
+        "raildyn.track.cant.unbalanced_acceleration",
         lambda: call(30.0, 600.0, 0.1, exact=True),
         accepts={"speed": "zero list", "radius": V, "cant": "zero list"},
     ),
     fuzz(
-        "raildyn.curving.geometry.balance_speed",
+        "raildyn.track.cant.balance_speed",
         lambda: call(600.0, 0.1),
         accepts={"radius": V, "cant": "zero list"},
     ),
     fuzz(
-        "raildyn.curving.geometry.speed_for_deficiency",
+        "raildyn.track.cant.speed_for_deficiency",
         lambda: call(600.0, 0.1, 0.15),
         # no cant with a deficiency, no deficiency (the balance speed), or a cant excess equal to the cant
         accepts={"radius": V, "cant": "zero list", "deficiency": "zero negative list big mm"},
     ),
     # ------------------------------------------------------------------ the curve
     fuzz(
-        "raildyn.curving.geometry.Curve",
+        "raildyn.track.curve.Curve",
         lambda: call(600.0, 0.1, 60.0, 200.0, 50.0),
         accepts={
             "radius": "big mm",
@@ -74,24 +75,24 @@ ENTRIES = [
             "straight": "zero big mm",
         },
     ),
-    fuzz("raildyn.curving.geometry.Curve.replace", lambda: on(geometry.Curve(), radius=800.0)),
-    fuzz("raildyn.curving.geometry.Curve.curvature", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
-    fuzz("raildyn.curving.geometry.Curve.cant_at", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.track.curve.Curve.replace", lambda: on(Curve(), radius=800.0)),
+    fuzz("raildyn.track.curve.Curve.curvature", lambda: on(Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.track.curve.Curve.cant_at", lambda: on(Curve(), S), accepts=DISTANCES),
     fuzz(
-        "raildyn.curving.geometry.Curve.unbalanced_acceleration",
-        lambda: on(geometry.Curve(), S, 30.0),
+        "raildyn.track.curve.Curve.unbalanced_acceleration",
+        lambda: on(Curve(), S, 30.0),
         accepts=DISTANCES | {"speed": "zero"},
     ),
-    fuzz("raildyn.curving.geometry.Curve.cant_gradient", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.track.curve.Curve.cant_gradient", lambda: on(Curve(), S), accepts=DISTANCES),
     fuzz(
-        "raildyn.curving.geometry.Curve.twist",
-        lambda: on(geometry.Curve(), S, 2.5),
+        "raildyn.track.curve.Curve.twist",
+        lambda: on(Curve(), S, 2.5),
         accepts={**DISTANCES, "base": "mm big tiny"},  # a twist over any base length
     ),
-    fuzz("raildyn.curving.geometry.Curve.heading", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
-    fuzz("raildyn.curving.geometry.Curve.x", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
-    fuzz("raildyn.curving.geometry.Curve.y", lambda: on(geometry.Curve(), S), accepts=DISTANCES),
-    fuzz("raildyn.curving.geometry.Curve.plot", lambda: on(geometry.Curve(), view="curvature")),
+    fuzz("raildyn.track.curve.Curve.heading", lambda: on(Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.track.curve.Curve.x", lambda: on(Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.track.curve.Curve.y", lambda: on(Curve(), S), accepts=DISTANCES),
+    fuzz("raildyn.track.curve.Curve.plot", lambda: on(Curve(), view="curvature")),
     # ------------------------------------------------------------------ wheel climb
     fuzz(
         "raildyn.curving.climb.nadal_limit",

@@ -15,9 +15,9 @@ from raildyn.curving import (
     quasi_static_curving,
     steady_curving,
 )
-from raildyn.curving.geometry import Curve
+from raildyn.track import Curve
 from raildyn.vehicles import Bogie
-from raildyn.wheelset import WheelRailContact, Wheelset
+from raildyn.wheelset import ContactTable, WheelRailContact, Wheelset
 
 
 def state() -> SteadyCurving:
@@ -47,6 +47,8 @@ def grid():
 
 
 RESULT = {"*": "zero negative mm big", "radius": "", "speed": "", "cant": "zero"}
+
+TABLE = ContactTable(np.array([-2e-3, 0.0, 2e-3]), np.array([0.04, 0.05, 0.06]))  # rad: a tread angle
 
 
 ENTRIES = [
@@ -189,6 +191,17 @@ ENTRIES = [
         "raildyn.wheelset.profile_contact",
         lambda: call(s1002_wheel(), uic60_rail(1 / 40), friction=0.3, flange_stiffness=1.0e7),
         accepts={"friction": "tiny", "flange_stiffness": "zero big mm"},
+    ),
+    fuzz(
+        "raildyn.wheelset.ContactTable",
+        lambda: call(np.array([-2e-3, 0.0, 2e-3]), np.array([-1e-4, 0.0, 1e-4])),
+        # the values are any finite numbers of either sign (a difference in m or an angle in rad);
+        # the shifts must rise strictly, so a zeroed, negated or overflowing entry is refused
+        accepts={"f": "zero negative huge"},
+    ),
+    fuzz(
+        "raildyn.wheelset.ContactTables",
+        lambda: call(TABLE, TABLE),
     ),
     fuzz(
         "raildyn.wheelset.wheel_forces",
