@@ -87,6 +87,7 @@ class EvaluationBudget:
     --------
     >>> budget = EvaluationBudget(1000)
     >>> budget.spend(400)
+    600
     >>> budget.used, budget.left
     (400, 600)
     """
@@ -103,15 +104,21 @@ class EvaluationBudget:
         """The evaluations still allowed, >= 0."""
         return max(self.limit - self.used, 0)
 
-    def spend(self, count: int) -> None:
+    def spend(self, count: int) -> int:
         """Count ``count`` evaluations made (they may take ``used`` past ``limit``: a run found so).
 
         Parameters
         ----------
         count : int
             Evaluations made, >= 0.
+
+        Returns
+        -------
+        int
+            The evaluations still allowed (:attr:`left`), >= 0.
         """
         self.used += _checks.integer("count", count, low=0)
+        return self.left
 
 
 def _budget(value) -> EvaluationBudget:

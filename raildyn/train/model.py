@@ -384,7 +384,7 @@ class TrainModel:
         Notes
         -----
         The checks cost more than the compiled loop itself (about 10 µs against
-        4–6 µs for 152 vehicles). :func:`simulate` calls the loop without them, from
+        4–6 µs for 152 vehicles). :func:`~raildyn.train.longitudinal.simulate` calls the loop without them, from
         its compiled integrator, as its states have the shape of a checked initial
         state, and checks each derivative for finiteness instead.
 

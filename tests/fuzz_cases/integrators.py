@@ -158,32 +158,32 @@ ENTRIES = [
     ),
     # --- the linear steps and their recursion matrices
     fuzz(
-        "raildyn.integrators.linear.newmark_step",
+        "raildyn.integrators.recursions.newmark_step",
         lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05, 0.5, 0.25),
         accepts={**STEP, "beta": "zero", "alpha": "zero"},  # β in [0, 1], α in [−⅓, 0]
     ),
     fuzz(
-        "raildyn.integrators.linear.wilson_step",
+        "raildyn.integrators.recursions.wilson_step",
         lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05, 1.4),
         accepts=STEP,
     ),
     fuzz(
-        "raildyn.integrators.linear.central_difference_step",
+        "raildyn.integrators.recursions.central_difference_step",
         lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05),
         accepts=STEP,
     ),
     fuzz(
-        "raildyn.integrators.linear.houbolt_step",
+        "raildyn.integrators.recursions.houbolt_step",
         lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05),
         accepts=STEP,
     ),
     fuzz(
-        "raildyn.integrators.linear.recursion_matrices",
+        "raildyn.integrators.recursions.recursion_matrices",
         lambda: call(ig.linear.central_difference_step(np.eye(1), np.zeros((1, 1)), np.eye(1), 0.1), 2, 1),
         accepts={"step": "returns-negative"},  # a step is any linear map: its entries take any sign
     ),
     fuzz(
-        "raildyn.integrators.linear.RecursionMatrices",
+        "raildyn.integrators.recursions.RecursionMatrices",
         lambda: call(np.eye(2), np.ones((2, 1)), np.ones((2, 1))),
         accepts={"*": "zero negative"},
     ),  # a result: its entries take any value
