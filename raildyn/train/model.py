@@ -384,12 +384,13 @@ class TrainModel:
         Notes
         -----
         The checks cost more than the compiled loop itself (about 10 µs against
-        4–6 µs for 152 vehicles). :func:`~raildyn.train.longitudinal.simulate` calls the loop without them, from
-        its compiled integrator, as its states have the shape of a checked initial
-        state, and checks each derivative for finiteness instead.
+        4–6 µs for 152 vehicles). :func:`~raildyn.train.longitudinal.simulate` calls the loop
+        without them, from its compiled integrator, as its states have the shape of a checked
+        initial state, and checks each derivative for finiteness instead.
 
         Examples
         --------
+        >>> from raildyn.train import braking_model
         >>> model = braking_model(10, 1)
         >>> dydt = model.rhs(1.0, model.initial_state(20.0))
         >>> dydt.shape, bool(dydt[model.size:].max() < 0)  # every vehicle slows down
