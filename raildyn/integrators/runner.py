@@ -550,7 +550,8 @@ def solve_ivp(
         if not reject and not math.isfinite(y.sum()):
             raise _failure("non-finite", label, time=t)
         if state["calls"] == 1:  # at the caller's start: what fun returns there is the caller's input
-            out = _checks.returned("fun", fun(t, y), shape=y.shape, at=f"the start (t = {t:.6g} s)")
+            where = f"the start of {label} (t = {t:.6g} s)"
+            out = _checks.returned("fun", fun(t, y), shape=y.shape, at=where)
         else:
             out = np.asarray(fun(t, y), dtype=float)
         if not math.isfinite(out.sum()):
