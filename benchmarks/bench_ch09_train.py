@@ -5,7 +5,7 @@ right-hand side alone, and its factor over real time.
   one state per call; the baseline is ``solve_ivp`` with the right-hand side written the
   straightforward way, one vehicle and one coupler at a time in Python; raildyn
   (``train.simulate``) runs its compiled right-hand side (``raildyn.train._kernel``) in the
-  compiled Dormand–Prince integrator (``raildyn.integrators._dopri``), which takes the steps
+  compiled Dormand–Prince integrator (``raildyn.integrators.runner.dormand_prince``), which takes the steps
   of ``solve_ivp``'s RK45. A 600 s run with the loop takes minutes, so both are timed over the
   same shorter span (``SPAN``), which covers the brake application, the run-in and most of the stop.
 * The run against its right-hand side (issue 22): the same run, against the evaluations it
@@ -29,7 +29,7 @@ from scipy.integrate import solve_ivp
 
 from benchmarks.common import Case, timed, widget_case
 from raildyn import train
-from raildyn.integrators import _dopri
+from raildyn.integrators.runner import RHS_SIGNATURE
 from raildyn.train import _kernel
 from raildyn.train.resistance import CURVE_RESISTANCE
 from raildyn.widgets import chapter09
@@ -107,7 +107,7 @@ def _simulate(model, span):
 
 
 @numba.njit(
-    types.void(types.FunctionType(_dopri.RHS_SIGNATURE), types.float64[::1], types.float64[:, ::1],
+    types.void(types.FunctionType(RHS_SIGNATURE), types.float64[::1], types.float64[:, ::1],
                types.float64[:, ::1], types.float64[::1], types.int64),
 )  # fmt: skip
 def _evaluate(rhs, t, y, data, out, rounds):

@@ -101,3 +101,71 @@ def test_failures_are_reported_not_hidden():
         assert status == expected
         assert t < 1.0 + 1e-3  # the blow-up time (the last steps overshoot it in floating point)
         assert counts[0] <= budget
+
+
+# ------------------------------------------------------------- the public runner over the kernel
+
+
+def test_the_runner_takes_scipys_steps_and_counts_them():
+    from raildyn.integrators import runner
+
+    ref = _scipy(MUS[1])
+    budget = runner.EvaluationBudget(10**6)
+    run = runner.dormand_prince(
+        van_der_pol,
+        MUS[:, None],
+        [2.0, 0.0],
+        T_OUT,
+        rtol=1e-7,
+        atol=ATOL,
+        max_step=0.05,
+        member=1,
+        budget=budget,
+    )
+    assert run.evaluations == ref.nfev == budget.used
+    assert np.abs(run.y - ref.y).max() < 1e-11 * np.abs(ref.y).max()  # as the kernel's own test
+    batch = runner.dormand_prince_batch(
+        van_der_pol, MUS[:, None], np.tile([2.0, 0.0], (3, 1)), T_OUT, rtol=1e-7, atol=ATOL, max_step=0.05
+    )
+    assert batch[1].evaluations == ref.nfev
+    np.testing.assert_array_equal(batch[1].y, run.y)
+    np.testing.assert_array_equal(batch[1].end, run.end)
+
+
+def test_the_runners_two_engines_fail_by_one_rule():
+    # y' = y², y(0) = 1 blows up at t = 1: both engines stop there, and say so with SolverError.
+    from raildyn.errors import SolverError
+    from raildyn.integrators import runner
+
+    with pytest.raises(SolverError, match="step size is less than spacing") as compiled:
+        runner.dormand_prince(blows_up, [[0.0]], [1.0], [0.0, 0.5, 2.0], label="the blow-up")
+    assert compiled.value.time < 1.0 + 1e-3 and compiled.value.step > 0
+    assert compiled.value.partial.t.tolist() == [0.0, 0.5]  # the output times it passed
+    assert compiled.value.partial.y[0, 1] == pytest.approx(2.0, rel=1e-5)  # 1/(1 - t)
+    with pytest.raises(SolverError, match="the blow-up needed more than 50 evaluations") as over:
+        runner.dormand_prince(blows_up, [[0.0]], [1.0], [0.0, 2.0], budget=50, label="the blow-up")
+    assert over.value.time < 1.0
+    # scipy's engine, under the same budget: the same words.
+    with pytest.raises(SolverError, match="needed more than 50 evaluations"):
+        runner.solve_ivp(lambda t, y: y * y, (0.0, 2.0), [1.0], budget=50)
+    with pytest.raises(SolverError, match="non-finite|spacing|failed"):
+        runner.solve_ivp(lambda t, y: y * y, (0.0, 2.0), [1.0])
+    # A budget shared by a task: what one run spends, the next cannot.
+    shared = runner.EvaluationBudget(100)
+    runner.solve_ivp(lambda t, y: -y, (0.0, 1.0), [1.0], budget=shared)
+    assert 0 < shared.used < 100
+    with pytest.raises(SolverError, match=f"more than {shared.left} evaluations"):
+        runner.solve_ivp(lambda t, y: -y, (0.0, 50.0), [1.0], budget=shared, rtol=1e-10, atol=1e-12)
+
+
+def test_the_runner_refuses_what_it_cannot_run():
+    from raildyn.integrators import runner
+
+    with pytest.raises(TypeError, match="rhs must be a numba function"):
+        runner.dormand_prince(lambda t, y, m, d, o: None, [[0.0]], [1.0], [0.0, 1.0])
+    with pytest.raises(ValueError, match="t_eval must hold at least two increasing times"):
+        runner.dormand_prince(blows_up, [[0.0]], [1.0], [1.0, 0.0])
+    with pytest.raises(ValueError, match="fun returned a non-finite value at the start"):
+        runner.solve_ivp(lambda t, y: y * np.nan, (0.0, 1.0), [1.0])
+    with pytest.raises(ValueError, match="budget must be"):
+        runner.solve_ivp(lambda t, y: -y, (0.0, 1.0), [1.0], budget=0)

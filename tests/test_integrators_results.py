@@ -305,9 +305,12 @@ def test_force_jacobian_and_pair_give_the_same_run():
 
 MODULES = [
     "raildyn.integrators",
+    "raildyn.integrators.amplification",
     "raildyn.integrators.analysis",
     "raildyn.integrators.linear",
     "raildyn.integrators.nonlinear",
+    "raildyn.integrators.recursions",
+    "raildyn.integrators.runner",
     "raildyn.integrators.schemes",
     "raildyn.suspension",
 ]

@@ -568,7 +568,9 @@ def test_a_run_starting_at_an_overflow_fails_as_solve_ivp_does(monkeypatch):
     model = _overflowing(
         dataclasses.replace(model, front_start=model.front_start + ahead), segment_curvature=1e308
     )
-    with pytest.raises(SolverError, match="more than 3000 right-hand-side calls.*not finite") as compiled:
+    with pytest.raises(
+        SolverError, match="more than 3000 evaluations of the right-hand side.*not finite"
+    ) as compiled:
         train.simulate(model, 2.0, 20.0)
     n = model.size
     atol = np.r_[1e-3, np.full(n - 1, 1e-6), np.full(n, 1e-5)]
@@ -801,7 +803,7 @@ def test_simulate_is_bounded_by_its_evaluation_budget(monkeypatch):
     from raildyn.train import longitudinal
 
     monkeypatch.setattr(longitudinal, "_MAX_EVALUATIONS", 50)
-    with pytest.raises(SolverError, match="more than 50 right-hand-side calls") as info:
+    with pytest.raises(SolverError, match="more than 50 evaluations of the right-hand side") as info:
         train.simulate(train.braking_model(3, 1), 2.0, 15.0, max_step=1e-3)
     assert 0.0 < info.value.time < 2.0
 

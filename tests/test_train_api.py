@@ -89,9 +89,9 @@ def test_numpydoc_parameters_and_returns(path):
     [
         "raildyn.train.longitudinal.braking_model",
         "raildyn.train.longitudinal.simulate",
-        "raildyn.train.longitudinal.TrainModel.rhs",
-        "raildyn.train.longitudinal.TrainModel.quasi_static",
-        "raildyn.train.longitudinal.TrainModel.balancing_speed",
+        "raildyn.train.model.TrainModel.rhs",
+        "raildyn.train.model.TrainModel.quasi_static",
+        "raildyn.train.model.TrainModel.balancing_speed",
         "raildyn.train.vehicles.make_consist",
         "raildyn.train.resistance.davis_resistance",
         "raildyn.train.lateral.coupler_effects",

@@ -6,7 +6,7 @@ coupler has closed and each gear is being loaded further, the coupler is a linea
 loading stiffness k_l, and the train moves as a chain of masses and springs, damped by the part of
 its running resistance that grows with speed. :func:`coupler_chain` derives that chain by
 Lagrange's equations (:func:`raildyn.derivations.lagrange`); :func:`loaded_train_matrices` gives the
-numbers it is held to, the Jacobian of :meth:`raildyn.train.longitudinal.TrainModel.rhs` at a
+numbers it is held to, the Jacobian of :meth:`raildyn.train.model.TrainModel.rhs` at a
 state where every coupler is loaded beyond its slack.
 """
 
@@ -133,7 +133,7 @@ def _coupler_chain(n: int) -> Derivation:
 def loaded_train_matrices(model, speed: float, deflection=0.01, signs=1.0) -> tuple:
     """M, C, K of a train model linearised numerically, where :func:`coupler_chain` holds.
 
-    Central differences of :meth:`raildyn.train.longitudinal.TrainModel.rhs` (its accelerations times the
+    Central differences of :meth:`raildyn.train.model.TrainModel.rhs` (its accelerations times the
     masses), at the two states where the chain is the exact linearisation:
 
     * K, at a state where every coupler is ``deflection`` beyond its slack (in draft where

@@ -14,7 +14,18 @@ Chapter 2 of the companion (numerical methods). Three families, one result type
   on the force's tangent, a :class:`ForceJacobian`) and :func:`stiff` (scipy's BDF
   or Radau).
 
-:func:`integrate` runs any scheme named in ``METHODS``.
+:func:`integrate` runs any scheme named in ``METHODS``. The nonlinear models of the later
+chapters (the hunting of chapter 7, the train of chapter 9) run on :mod:`raildyn.integrators.runner`:
+compiled Dormand–Prince and scipy's ``solve_ivp``, both bounded by one budget of evaluations and
+failing by one rule (imported on its own, as it loads numba).
+
+The modules read bottom-up: ``_common`` (the catalogue of schemes, the results, the checks) and
+:mod:`~raildyn.integrators.recursions` (each linear scheme's step) import nothing of the package;
+:mod:`~raildyn.integrators.amplification` (the test oscillator) builds on the steps; ``_divergence``
+(why a run blew up) on the amplification; :mod:`~raildyn.integrators.linear` and
+:mod:`~raildyn.integrators.nonlinear` (the runs) on those; :mod:`~raildyn.integrators.schemes`
+(:func:`integrate`) on the runs; :mod:`~raildyn.integrators.analysis` (charts, a model's step
+limit, convergence) on all of them.
 
 Failure policy: every failure (a run that blows up, a Newton iteration that does
 not converge, scipy giving up) raises :class:`raildyn.errors.SolverError` with the

@@ -1,4 +1,4 @@
-"""What every integrator shares: the result type, the failure, the input checks.
+"""What every integrator shares: the catalogue of schemes, the result type, the input checks.
 
 The problem is ``M x'' + C x' + K x = f`` with n degrees of freedom. ``M`` must be
 symmetric positive definite; ``C`` and ``K`` may be non-symmetric (creep forces
@@ -32,6 +32,37 @@ __all__ = ["Deviation", "ForceJacobian", "IntegrationResult", "Maxima"]
 # initial conditions and the load: far beyond any response a stable linear system can give, yet
 # reached by a geometric blow-up within a few dozen steps, long before the numbers overflow.
 DIVERGENCE_FACTOR = 1.0e8
+
+# Every scheme the analysis knows, by name; the same names select the integrators.
+METHODS = (
+    "central_difference",
+    "houbolt",
+    "wilson",
+    "newmark",
+    "average_acceleration",
+    "linear_acceleration",
+    "hht_alpha",
+    "forward_euler",
+    "rk4",
+    "abm",
+)
+
+# The parameters each scheme accepts, with their defaults.
+PARAMETERS = {
+    "central_difference": {},
+    "houbolt": {},
+    "wilson": {"theta": 1.4},
+    "newmark": {"gamma": 0.5, "beta": 0.25},
+    "average_acceleration": {},
+    "linear_acceleration": {},
+    "hht_alpha": {"alpha": -0.05},
+    "forward_euler": {},
+    "rk4": {},
+    "abm": {},
+}
+
+# Schemes of the first-order form y = (x, x'): their force is f(t, x, v), not f(t).
+FIRST_ORDER = ("forward_euler", "rk4", "abm")
 
 _QUANTITIES = {"x": ("displacement", "x"), "v": ("velocity", r"\dot x"), "a": ("acceleration", r"\ddot x")}
 
@@ -512,80 +543,3 @@ def partial_result(name: str, t, x, v, a, iterations: int = 0) -> IntegrationRes
     if not finite.all():
         done = int(np.argmin(finite))
     return IntegrationResult(t[:done], x[:done].T, v[:done].T, a[:done].T, name, max(done - 1, 0), iterations)
-
-
-def diverged(
-    name: str, p: Problem, step: int, x, v, a, params, *, iterations=0, analysed_as=None
-) -> SolverError:
-    """The failure of a run that blew up at ``step``: the reason names the stability limit of the scheme.
-
-    ``x``, ``v``, ``a`` hold the rows (m, n) computed before ``step``; the completed part
-    becomes the error's ``partial`` result.
-    """
-    done = min(len(x), len(v), len(a), step)
-    partial = partial_result(name, p.t[:done], x, v, a, iterations)
-    time = float(p.t[0] + step * p.h)
-    return SolverError(divergence_reason(name, p, params, analysed_as), step=step, time=time, partial=partial)
-
-
-def divergence_reason(method: str, p: Problem, params, analysed_as: str | None = None) -> str:
-    """Why a run of ``method`` blew up, naming its stability limit on this system."""
-    from raildyn.integrators.analysis import stability_limit
-
-    h = p.h
-    name = method.replace("_", " ")
-    head = f"{name} diverged with dt = {h:.6g} s"
-    if method in ("forward_euler", "rk4", "abm"):
-        return _first_order_reason(method, p, head)
-    wmax = highest_frequency(p.M, p.K)
-    if wmax == 0.0:
-        return f"{head}; the system has no stiffness, so the growth is its own"
-    t_min = 2 * np.pi / wmax
-    ratio = stability_limit(analysed_as or method, **(params or {}))
-    if np.isfinite(ratio) and ratio > 0:
-        bound = ratio * t_min
-        rule = f"dt <= {ratio:.4g} T_min" if method != "central_difference" else "dt <= T_min/pi"
-        if h > bound:
-            return (
-                f"{head}: {name} is stable only for {rule} = {bound:.6g} s "
-                f"(T_min = {t_min:.6g} s, the period of the highest undamped mode); reduce dt"
-            )
-        return (
-            f"{head}, inside its stability limit {rule} = {bound:.6g} s (T_min = {t_min:.6g} s): "
-            "the equations themselves have a growing solution, or the force is too stiff for this step"
-        )
-    if ratio == 0:
-        return (
-            f"{head}: {name} amplifies every undamped oscillation whatever the step "
-            f"(T_min = {t_min:.6g} s); use a stable scheme"
-        )
-    return (
-        f"{head}: {name} is unconditionally stable for linear systems, so the "
-        "equations themselves have a growing solution (an unstable system) or the force is too stiff"
-    )
-
-
-def _first_order_reason(method, p: Problem, head) -> str:
-    """The reason for a first-order scheme: its limit is set by the eigenvalues of the first-order system."""
-    from raildyn.integrators.analysis import first_order_step_limit
-
-    lam = np.linalg.eigvals(first_order_matrix(p.M, p.C, p.K))
-    decaying = lam[(lam.real <= 1e-12 * np.abs(lam).max()) & (lam != 0)]
-    if decaying.size == 0:
-        return f"{head}: every mode of the system grows; the growth is its own"
-    limits = np.array([first_order_step_limit(method, z) for z in decaying])
-    worst = int(np.argmin(limits))
-    bound, z = limits[worst], decaying[worst]
-    name = method.replace("_", " ")
-    where = f"the eigenvalue {z.real:.6g}{z.imag:+.6g}j 1/s of the first-order system"
-    if bound == 0.0:
-        return f"{head}: {name} amplifies {where} at any step; use another scheme"
-    if p.h > bound:
-        return (
-            f"{head}: {name} is stable only for dt <= {bound:.6g} s here, set by {where} "
-            f"(dt |lambda| <= {bound * abs(z):.4g}); reduce dt"
-        )
-    return (
-        f"{head}, inside its stability limit dt <= {bound:.6g} s: the equations themselves have a "
-        "growing solution, or the force is too stiff for this step"
-    )

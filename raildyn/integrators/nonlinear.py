@@ -24,7 +24,6 @@ from raildyn.errors import SolverError
 from raildyn.integrators._common import (
     IntegrationResult,
     completed,
-    diverged,
     force_tangent,
     general_force,
     initial_state,
@@ -33,6 +32,7 @@ from raildyn.integrators._common import (
     sampled_load,
     scale,
 )
+from raildyn.integrators._divergence import diverged
 from raildyn.vibration import first_order_matrix
 
 # Newton iterations a step may be allowed: the iteration converges quadratically near the

@@ -2,47 +2,18 @@
 
 ``METHODS`` names every scheme that both runs (:func:`~raildyn.integrators.integrate`) and is analysed
 on the test oscillator (:mod:`raildyn.integrators.analysis`); ``PARAMETERS`` gives
-the parameters each one accepts, with their defaults.
+the parameters each one accepts, with their defaults. Both are defined in the package's
+ground floor (``_common``), which the runs and the analysis share; ``integrate`` sits above the
+runs it dispatches to.
 """
 
 from __future__ import annotations
 
 from raildyn import _checks
 from raildyn.integrators import linear, nonlinear
-from raildyn.integrators._common import IntegrationResult
+from raildyn.integrators._common import FIRST_ORDER, METHODS, PARAMETERS, IntegrationResult
 
 __all__ = ["METHODS", "PARAMETERS", "integrate"]
-
-# Every scheme the analysis knows, by name; the same names select the integrators.
-METHODS = (
-    "central_difference",
-    "houbolt",
-    "wilson",
-    "newmark",
-    "average_acceleration",
-    "linear_acceleration",
-    "hht_alpha",
-    "forward_euler",
-    "rk4",
-    "abm",
-)
-
-# The parameters each scheme accepts, with their defaults.
-PARAMETERS = {
-    "central_difference": {},
-    "houbolt": {},
-    "wilson": {"theta": 1.4},
-    "newmark": {"gamma": 0.5, "beta": 0.25},
-    "average_acceleration": {},
-    "linear_acceleration": {},
-    "hht_alpha": {"alpha": -0.05},
-    "forward_euler": {},
-    "rk4": {},
-    "abm": {},
-}
-
-# Schemes of the first-order form y = (x, x'): their force is f(t, x, v), not f(t).
-FIRST_ORDER = ("forward_euler", "rk4", "abm")
 
 
 def integrate(method: str, M, C, K, t, x0, v0, force=None, **params) -> IntegrationResult:

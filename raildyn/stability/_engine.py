@@ -6,8 +6,9 @@ bogie, the car and the vehicles of chapter 8 on tangent track or on a
 call, most of it numpy's per-call cost on arrays of four wheelsets. Here the same equations are
 compiled: :func:`pack` writes a model at one speed into one row of floats, and :func:`lateral_rhs`
 evaluates M q̈ = −C_s q̇ − K_s q + Σ F_contact (− m a_q on a curve) from that row in about a
-microsecond. It is the right-hand side of the one compiled integrator,
-:mod:`raildyn.integrators._dopri`, which advances many rows (speeds, parameter sets) at once.
+microsecond. It is the right-hand side that :mod:`raildyn.stability.nonlinear` hands the compiled
+runner, :func:`raildyn.integrators.runner.dormand_prince_batch`, which advances many rows (speeds,
+parameter sets) at once.
 
 The wheel–rail forces are those of :func:`raildyn.wheelset.contact_forces`, term for term: each
 wheel's creepages of :func:`raildyn.contact.creep.wheelset_creepages` with r = r₀ ± Δr(y)/2 and its
@@ -28,7 +29,7 @@ import numba
 import numpy as np
 
 from raildyn.constants import GRAVITY
-from raildyn.integrators import _dopri
+from raildyn.integrators.runner import RHS_SIGNATURE
 
 # The row of one model at one speed: a header of fixed places, then the arrays at the offsets it gives.
 _N, _NW, _SPEED, _CURVED, _START = 0, 1, 2, 3, 4
@@ -262,7 +263,7 @@ def _ramp(row, s):
     return (s3 - s) / L
 
 
-@numba.njit(_dopri.RHS_SIGNATURE, cache=True, error_model="numpy")
+@numba.njit(RHS_SIGNATURE, cache=True, error_model="numpy")
 def lateral_rhs(t, state, member, data, out):
     """d/dt [q; q̇] of the packed model in row ``member`` of ``data`` (the equations of ``rhs``)."""
     row = data[member]
@@ -440,27 +441,3 @@ def arc_newton(row, q, V, kappa, a_q, tolerance, steps, done):
         for i in range(n):
             q[i, p] = x[i]
         done[p] = _max_abs(r) <= tolerance
-
-
-# ---------------------------------------------------------------------------
-# Runs
-
-
-def run_batch(rows, states, duration, *, max_step, rtol, atol, samples, output_rows, budget):
-    """Integrate every row of ``rows`` from its state in ``states`` (k, 2n) for ``duration`` seconds.
-
-    Returns the states at the end (k, 2n), the sampled rows (k, len(output_rows), samples.size),
-    the statuses and times reached (k,) and the evaluation counts (k,).
-    """
-    data = batch(rows)
-    states = np.ascontiguousarray(states, dtype=float).copy()
-    k = states.shape[0]
-    out = np.zeros((k, len(output_rows), samples.size))
-    counts = np.zeros((k, 5), np.int64)
-    counts[:, 1] = budget
-    status, reached = np.zeros(k, np.int64), np.zeros(k)
-    _dopri.advance_batch(
-        lateral_rhs, data, float(duration), states, float(rtol), np.full(states.shape[1], float(atol)),
-        float(max_step), samples, np.asarray(output_rows, np.int64), out, counts, status, reached,
-    )  # fmt: skip
-    return states, out, status, reached, counts[:, 0]

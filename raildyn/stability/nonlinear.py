@@ -4,14 +4,14 @@ The nonlinear models (:class:`raildyn.wheelset.NonlinearWheelset`,
 :class:`raildyn.wheelset.NonlinearLateral`) expose ``rhs(t, state)``; these
 functions integrate them and measure the steady hunting. RK45 runs on a compiled
 engine (``raildyn.stability._engine``: the same equations in numba, many speeds or
-vehicles at once, on the Dormand–Prince integrator of ``raildyn.integrators._dopri``)
-wherever it holds the model, and on ``scipy.integrate.solve_ivp`` otherwise or when
-asked (``engine="scipy"``, the reference the tests hold the engine to).
+vehicles at once, on the compiled Dormand–Prince of :mod:`raildyn.integrators.runner`)
+wherever it holds the model, and on ``scipy.integrate.solve_ivp`` (through the same runner,
+bounded alike) otherwise or when asked (``engine="scipy"``, the reference the tests hold the
+engine to). Every run is bounded by the runner's one budget rule and fails by its one rule.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -221,7 +221,7 @@ def _runs(
     one batch where it can (see :func:`simulate`'s ``engine``); scipy runs them one by one.
     Returns one array (rows, samples) per model and the states at ``duration``.
     """
-    from raildyn.integrators import _dopri  # here: numba loads only when a run needs it
+    from raildyn.integrators import runner  # here: numba loads only when a run needs it
     from raildyn.stability import _engine
 
     kept = models[0].state_size if rows is None else len(rows)
@@ -244,25 +244,16 @@ def _runs(
             out.append(sol.y if rows is None else sol.y[rows])
             ends.append(sol.y[:, -1].copy())
         return out, ends
-    keep = np.arange(models[0].state_size) if rows is None else np.asarray(rows)
-    ends, sampled, status, reached, _ = _engine.run_batch(
-        packed, np.array(starts), duration, max_step=max_step, rtol=rtol, atol=1e-9, samples=t,
-        output_rows=keep, budget=_MAX_EVALUATIONS,
+    runs = runner.dormand_prince_batch(
+        _engine.lateral_rhs, _engine.batch(packed), np.array(starts), t, rtol=rtol, atol=1e-9,
+        max_step=max_step, rows=rows, budget=_MAX_EVALUATIONS, labels=[_label(v) for v in speeds],
     )  # fmt: skip
-    for v, code, when in zip(speeds, status, reached, strict=True):
-        if code == _dopri.OVER_BUDGET:
-            raise SolverError(
-                f"the integration at V = {v:.6g} m/s took more than {_MAX_EVALUATIONS} evaluations "
-                "of the right-hand side (a stiff motion or a tiny max_step)",
-                time=float(when),
-            )
-        if code != _dopri.DONE:
-            raise SolverError(
-                f"integration failed at V = {v:.6g} m/s: {_dopri.STATUS_TEXT[code]} (the state "
-                "running away to non-finite values)",
-                time=float(when),
-            )
-    return list(sampled), list(ends)
+    return [run.y for run in runs], [run.end for run in runs]
+
+
+def _label(speed: float) -> str:
+    """What a run is, for the runner's failure message."""
+    return f"the integration at V = {speed:.6g} m/s"
 
 
 # The slowest speed a nonlinear run takes, m/s: the creep damping 2f/V of a loaded wheel grows without
@@ -302,46 +293,15 @@ def _at_speed(model, speed: float):
     return m
 
 
-def _integrate(
-    rhs, duration: float, y0, method: str, rtol: float, atol: float, speed: float, budget=None, **options
-):
-    """``scipy.integrate.solve_ivp`` over (0, duration) with the failure policy: a bounded run.
+def _integrate(rhs, duration: float, y0, method: str, rtol: float, atol: float, speed: float, **options):
+    """``rhs`` over (0, duration) through :func:`raildyn.integrators.runner.solve_ivp`: bounded by
+    ``budget`` (default :data:`_MAX_EVALUATIONS`), failing with :class:`SolverError`."""
+    from raildyn.integrators import runner
 
-    At most :data:`_MAX_EVALUATIONS` evaluations of ``rhs`` (and, with ``budget``, a one-item list
-    of the evaluations a whole task has left, at most that many: it is decremented); a non-finite
-    state or a failed run raises :class:`SolverError`.
-    """
-    import scipy.integrate
-
-    count = 0
-    limit = _MAX_EVALUATIONS if budget is None else min(_MAX_EVALUATIONS, budget[0])
-
-    def bounded(t, y):
-        nonlocal count
-        count += 1
-        if budget is not None:
-            budget[0] -= 1
-        if count > limit:
-            raise SolverError(
-                f"the integration at V = {speed:.6g} m/s took more than {limit} evaluations "
-                "of the right-hand side (a stiff motion, a tiny max_step, or a task's whole budget)",
-                time=float(t),
-            )
-        if not math.isfinite(y.sum()):
-            raise SolverError(f"the state became non-finite at V = {speed:.6g} m/s", time=float(t))
-        return rhs(t, y)
-
-    # An overflow inside the solver's step control is no warning to the user: the state it
-    # leads to is caught above, and the run ends in a SolverError.
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        sol = scipy.integrate.solve_ivp(
-            bounded, (0.0, duration), y0, method=method, rtol=rtol, atol=atol, **options
-        )
-    if not sol.success:
-        raise SolverError(f"integration failed at V = {speed:.6g} m/s: {sol.message}", time=float(sol.t[-1]))
-    if not np.isfinite(sol.y).all():
-        raise SolverError(f"the state became non-finite at V = {speed:.6g} m/s", time=float(sol.t[-1]))
-    return sol
+    options.setdefault("budget", _MAX_EVALUATIONS)
+    return runner.solve_ivp(
+        rhs, (0.0, duration), y0, method=method, rtol=rtol, atol=atol, label=_label(speed), **options
+    )
 
 
 # The band of hunting frequencies, Hz. Hunting is the kinematic oscillation of the wheelsets and trucks,
@@ -1022,7 +982,9 @@ def periodic_orbit(
 
     section.direction = -1.0  # a maximum of the lateral displacement
     # Move the guess along its own trajectory to the section ẏ = 0, so that it meets the phase condition.
-    budget = [_SHOOTING_EVALUATIONS]  # the whole shooting's work, shared by every integration below
+    from raildyn.integrators.runner import EvaluationBudget
+
+    budget = EvaluationBudget(_SHOOTING_EVALUATIONS)  # the whole shooting's work, shared by each run below
     sol = _integrate(m.rhs, 2.0 * T, x, "DOP853", rtol, 1e-12, V, budget=budget, events=section)
     if sol.t_events[0].size:
         x = sol.y_events[0][0].copy()

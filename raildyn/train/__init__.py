@@ -4,7 +4,8 @@
 * :mod:`~raildyn.train.resistance` — ``davis_resistance`` (original and modified), grade, curve, routes;
 * :mod:`~raildyn.train.couplers` — slack and friction draft gear with loading/unloading branches;
 * :mod:`~raildyn.train.forces` — tractive effort by notch, dynamic brake, travelling air-brake signal;
-* :mod:`~raildyn.train.longitudinal` — the whole-train equations, ``simulate`` and quasi-static forces;
+* :mod:`~raildyn.train.model` — the whole-train equations (``TrainModel``) and quasi-static forces;
+* :mod:`~raildyn.train.longitudinal` — ``simulate`` (its run) and ``braking_model`` (the chapter's case);
 * ``raildyn.train.results`` — what the analyses return: ``TrainRun``, ``CouplerPeak``, ``QuasiStatic``;
 * :mod:`~raildyn.train.lateral` — lateral and vertical components of coupler forces: L/V, wheel unloading.
 
@@ -33,7 +34,8 @@ from raildyn.train.forces import (
     tractive_effort,
 )
 from raildyn.train.lateral import CouplerEffects, coupler_angles, coupler_effects, limiting_coupler_force
-from raildyn.train.longitudinal import TrainModel, braking_model, simulate
+from raildyn.train.longitudinal import braking_model, simulate
+from raildyn.train.model import TrainModel
 from raildyn.train.resistance import (
     MODIFIED_DAVIS_K,
     Route,

@@ -11,8 +11,8 @@ Everything the loop needs is packed into three float arrays (so a call unboxes
 few arguments): ``table`` has one column per vehicle and the rows named by the
 ``ROW_*`` constants; ``scalars`` holds the coupler law, the brake, the driver's
 settings and flags (``S_*``); ``route`` is ``[positions, grade, curvature]``.
-For the compiled integrator (``raildyn.integrators._dopri``), :func:`pack` puts the three into
-one row of floats and :func:`rhs_dopri` unpacks them (views, no copies) and writes the
+For the compiled integrator (:func:`raildyn.integrators.runner.dormand_prince`), :func:`pack`
+puts the three into one row of floats and :func:`rhs_dopri` unpacks them (views, no copies) and writes the
 derivative in place, compiled to the integrator's one signature.
 The dynamic brake's corner speeds come in ``scalars`` too, from
 :data:`raildyn.train.forces.DYNAMIC_BRAKE_PEAK_SPEED` and ``..._FADE_SPEED`` (their one
@@ -29,7 +29,7 @@ import math
 import numba
 import numpy as np
 
-from raildyn.integrators import _dopri
+from raildyn.integrators.runner import RHS_SIGNATURE
 
 __all__ = ["ROWS", "SCALARS", "all_finite", "coupler_force", "pack", "rhs", "rhs_dopri"]
 
@@ -135,7 +135,7 @@ def _rhs_into(t, y, table, scalars, route, out):
 
 
 # The layout of a model packed into one row of floats for the compiled integrator
-# (raildyn.integrators._dopri): a header, then ``table`` (ROWS x n), ``scalars`` and ``route`` (3 x m),
+# (raildyn.integrators.runner): a header, then ``table`` (ROWS x n), ``scalars`` and ``route`` (3 x m),
 # each flattened in C order. The header holds n and m, and two entries that the right-hand side
 # itself writes: how many of its evaluations gave a non-finite derivative, and the time of the last.
 H_VEHICLES, H_SEGMENTS, H_NON_FINITE, H_LAST_NON_FINITE, HEADER = range(5)
@@ -147,7 +147,7 @@ def pack(table, scalars, route):
     return np.concatenate([[n, m, 0.0, 0.0], table.ravel(), scalars, route.ravel()])[None, :].copy()
 
 
-@numba.njit(_dopri.RHS_SIGNATURE, cache=True)
+@numba.njit(RHS_SIGNATURE, cache=True)
 def rhs_dopri(t, y, member, data, out):
     """:func:`rhs` for the compiled integrator, the model unpacked from row ``member`` of ``data``.
 

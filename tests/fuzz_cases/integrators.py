@@ -7,6 +7,7 @@ from fuzzing import call, fuzz, on
 
 from raildyn import integrators as ig
 from raildyn import suspension as sus
+from raildyn.integrators import runner
 
 W2 = (2 * np.pi) ** 2  # the stiffness of a 1 kg oscillator of period 1 s
 T = np.linspace(0.0, 0.5, 11)  # 10 steps of 0.05 s: inside every scheme's stability limit
@@ -42,6 +43,28 @@ def chart():
 
 def damper():
     return sus.FrictionDamper(friction_force=100.0, velocity_scale=1e-3)
+
+
+def decay_rhs():
+    """y' = −data[member, 0] y, compiled to the runner's signature (compiled once, on first use)."""
+    global _DECAY
+    if _DECAY is None:
+        import numba
+
+        @numba.njit(runner.RHS_SIGNATURE, cache=True)
+        def decay(t, y, member, data, out):
+            out[0] = -data[member, 0] * y[0]
+
+        _DECAY = decay
+    return _DECAY
+
+
+_DECAY = None
+
+
+def decay(t, y):
+    """y' = −2 y, for scipy's engine."""
+    return -2.0 * y
 
 
 # M, C, K of a linear run; C and K may be zero or negative (the equations of a system that is
@@ -135,32 +158,32 @@ ENTRIES = [
     ),
     # --- the linear steps and their recursion matrices
     fuzz(
-        "raildyn.integrators.linear.newmark_step",
+        "raildyn.integrators.recursions.newmark_step",
         lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05, 0.5, 0.25),
         accepts={**STEP, "beta": "zero", "alpha": "zero"},  # β in [0, 1], α in [−⅓, 0]
     ),
     fuzz(
-        "raildyn.integrators.linear.wilson_step",
+        "raildyn.integrators.recursions.wilson_step",
         lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05, 1.4),
         accepts=STEP,
     ),
     fuzz(
-        "raildyn.integrators.linear.central_difference_step",
+        "raildyn.integrators.recursions.central_difference_step",
         lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05),
         accepts=STEP,
     ),
     fuzz(
-        "raildyn.integrators.linear.houbolt_step",
+        "raildyn.integrators.recursions.houbolt_step",
         lambda: call(np.eye(1), np.zeros((1, 1)), W2 * np.eye(1), 0.05),
         accepts=STEP,
     ),
     fuzz(
-        "raildyn.integrators.linear.recursion_matrices",
+        "raildyn.integrators.recursions.recursion_matrices",
         lambda: call(ig.linear.central_difference_step(np.eye(1), np.zeros((1, 1)), np.eye(1), 0.1), 2, 1),
         accepts={"step": "returns-negative"},  # a step is any linear map: its entries take any sign
     ),
     fuzz(
-        "raildyn.integrators.linear.RecursionMatrices",
+        "raildyn.integrators.recursions.RecursionMatrices",
         lambda: call(np.eye(2), np.ones((2, 1)), np.ones((2, 1))),
         accepts={"*": "zero negative"},
     ),  # a result: its entries take any value
@@ -338,5 +361,69 @@ ENTRIES = [
         "raildyn.suspension.FrictionDamper.jacobian",
         lambda: on(damper(), 0.1, np.zeros(1), np.array([0.01])),
         accepts={"t": "zero negative big mm", "x": "zero negative", "v": "zero negative"},
+    ),
+    # --- the integration runner
+    fuzz("raildyn.integrators.runner.EvaluationBudget", lambda: call(1000), accepts={"limit": "big"}),
+    fuzz(
+        "raildyn.integrators.runner.EvaluationBudget.spend",
+        lambda: on(runner.EvaluationBudget(1000), 10),
+        accepts={"count": "zero huge"},  # a run may overspend; the next one then has nothing left
+    ),
+    fuzz(
+        "raildyn.integrators.runner.Trajectory",
+        lambda: call(np.array([0.0, 0.5]), np.array([[1.0, 0.5]]), np.array([0.4]), 12, 2),
+        accepts={"*": "zero negative", "t": "zero"},  # a result: its entries take any value
+    ),
+    fuzz(
+        "raildyn.integrators.runner.dormand_prince",
+        lambda: call(
+            decay_rhs(),
+            [[2.0]],
+            np.array([1.0]),
+            np.array([0.0, 0.5, 1.0]),
+            rtol=1e-6,
+            atol=1e-9,
+            max_step=0.5,
+            chunk=100,
+        ),  # fmt: skip
+        accepts={
+            "data": "zero negative huge",
+            "y0": "zero negative",
+            "rtol": "mm",
+            "atol": "mm",
+            "max_step": "inf big mm none",  # None: unlimited, the default
+            "member": "zero",
+            "chunk": "huge",
+        },  # any rate of decay or growth, any start; a longer chunk only moves progress less often
+    ),
+    fuzz(
+        "raildyn.integrators.runner.dormand_prince_batch",
+        lambda: call(
+            decay_rhs(),
+            np.array([[2.0], [1.0]]),
+            np.array([[1.0], [2.0]]),
+            np.array([0.0, 0.5, 1.0]),
+            rtol=1e-6,
+            atol=1e-9,
+            max_step=0.5,
+        ),  # fmt: skip
+        accepts={
+            "data": "zero negative huge",
+            "states": "zero negative",
+            "rtol": "mm",
+            "atol": "mm",
+            "max_step": "inf big mm none",
+        },
+    ),
+    fuzz(
+        "raildyn.integrators.runner.solve_ivp",
+        lambda: call(decay, (0.0, 1.0), np.array([1.0]), rtol=1e-6, atol=1e-9, budget=10_000),
+        accepts={
+            "y0": "zero negative",
+            "fun": "returns-negative",
+            "rtol": "mm",
+            "atol": "mm",
+            "budget": "big",
+        },
     ),
 ]
