@@ -70,33 +70,35 @@ class AffineFamily:
         if np.any(far == self.origin):
             raise ValueError(f"far must differ from origin in every parameter, got {far} and {self.origin}")
         self.assembled = {}
-        base = self._assemble(self.origin)
+        base = self._assemble(self.origin, "origin")
         self.base = {n: getattr(base, n) for n in _NAMES}
         self.slopes = []
         for i in range(self.origin.size):
             p = self.origin.copy()
             p[i] = far[i]
-            moved = self._assemble(p)
+            moved = self._assemble(p, f"origin with parameter {i} moved to far")
             self.slopes.append({n: (getattr(moved, n) - self.base[n]) / (far[i] - self.origin[i]) for n in _NAMES})
         middle = 0.5 * (self.origin + far)
-        check = self._assemble(middle)
+        check = self._assemble(middle, "halfway between origin and far")
         guess = self._plane(middle[None])
         self.affine = all(
             np.abs(guess[n][0] - getattr(check, n)).max() <= 1e-12 * np.abs(getattr(check, n)).max()
             for n in _NAMES
         )
 
-    def _assemble(self, p: np.ndarray):
-        """The system of ``make(*p)``, kept in :attr:`assembled`; a failure names the point."""
+    def _assemble(self, p: np.ndarray, where: str):
+        """The system of ``make(*p)``, kept in :attr:`assembled`; a failure names the point (``where``)."""
         key = tuple(p.tolist())
         if key not in self.assembled:
             try:
                 system = as_linear_system(self.make(*p))
             except (ValueError, TypeError) as err:
                 kind = ValueError if isinstance(err, ValueError) else TypeError
-                raise kind(f"make failed at {key}: {err}") from err
+                raise kind(f"make failed at {where}, {key}: {err}") from err
             if self.assembled and system.size != next(iter(self.assembled.values())).size:
-                raise ValueError(f"make must return models of one size, got {system.size} coordinates at {key}")
+                raise ValueError(
+                    f"make must return models of one size, got {system.size} coordinates at {where}, {key}"
+                )
             self.assembled[key] = system
         return self.assembled[key]
 
@@ -150,4 +152,4 @@ class AffineFamily:
             return as_linear_system(self.make(*p))
         except (ValueError, TypeError) as err:
             kind = ValueError if isinstance(err, ValueError) else TypeError
-            raise kind(f"make failed at {tuple(p.tolist())}: {err}") from err
+            raise kind(f"make failed at points row {tuple(p.tolist())}: {err}") from err

@@ -160,6 +160,7 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
     return CriticalSpeed(float(speed), frequency, complex(lam[j]), status, shape, system.labels)
 
 
+@dataclass(frozen=True)
 class CriticalSpeedMap:
     """Critical speed over a grid of two parameters.
 

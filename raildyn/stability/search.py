@@ -134,9 +134,11 @@ class StateMatrices:
             if self.count != 1:
                 raise ValueError(f"which must name a system for each speed: this stack holds {self.count}")
             return np.zeros(size, dtype=int)
-        arr = _checks.array("which", np.atleast_1d(which), shape=(size,), low=0, high=self.count - 1)
-        if np.any(arr != np.round(arr)):
-            raise ValueError(f"which must hold whole numbers (indices into the stack), got {which!r:.80}")
+        arr = _checks.array("which", np.atleast_1d(which), shape=(size,), low=0)
+        if np.any(arr != np.round(arr)) or np.any(arr > self.count - 1):
+            raise ValueError(
+                f"which must hold whole numbers in [0, {self.count - 1}] (indices into the stack), got {which!r:.80}"
+            )
         return arr.astype(int)
 
     def _at(self, speeds: np.ndarray, which: np.ndarray) -> np.ndarray:
