@@ -44,7 +44,9 @@ def test_an_affine_familys_stack_gives_the_critical_speeds_of_its_assembled_memb
     found = critical_speeds(StateMatrices(**family.stacks(points)), (1.0, 200.0), tol=0.01)
     for p, v in zip(points, found.speeds, strict=True):
         # the plane reproduces each member's matrices to 1e-12: the same bracket, within 2 tol
-        assert v == pytest.approx(stability.critical_speed(_wheelset(*p), (1.0, 200.0), tol=0.01).speed, abs=0.02)
+        assert v == pytest.approx(
+            stability.critical_speed(_wheelset(*p), (1.0, 200.0), tol=0.01).speed, abs=0.02
+        )
 
 
 def test_stable_and_unstable_systems_get_their_status():
@@ -60,7 +62,11 @@ def test_stable_and_unstable_systems_get_their_status():
     ("call", "error", "match"),
     [
         (lambda s: s.state_matrices([20.0]), ValueError, "which must name a system"),
-        (lambda s: s.state_matrices([20.0], which=[2]), ValueError, r"which must hold whole numbers in \[0, 1\]"),
+        (
+            lambda s: s.state_matrices([20.0], which=[2]),
+            ValueError,
+            r"which must hold whole numbers in \[0, 1\]",
+        ),
         (lambda s: s.largest_real_part([20.0, 30.0], which=[0]), ValueError, "which must have shape"),
         (lambda s: critical_speeds(s, (1.0, 200.0), scan=4), ValueError, "scan"),
         (lambda s: critical_speeds("car"), TypeError, "systems must be"),

@@ -256,7 +256,8 @@ class StabilityCurving:
             raise ValueError(f"critical_speed must have shape ({m},), got {v.shape}")
         if np.any(np.isposinf(v) != stable):
             raise ValueError(
-                f"critical_speed must be inf exactly where the status is {CRITICAL_SPEED_STATUSES[1]!r}, got {v!r:.80}"
+                f"critical_speed must be inf exactly where the status is {CRITICAL_SPEED_STATUSES[1]!r}, "
+                f"got {v!r:.80}"
             )
         _checks.plausible_array("critical_speed", np.where(stable, 1.0, v), "speed", low_open=True)
         _checks.array("angle_of_attack", self.angle_of_attack, shape=(m,))
@@ -370,7 +371,9 @@ def _kept_critical_speeds(model, ks: tuple, low: float, high: float, tol: float,
 
 def _search(system, Ks, low: float, high: float, tol: float, scan: int) -> tuple[tuple, tuple]:
     """The status and critical speed at each k_ψ: chapter 7's batched search (M, C₀ and C₁ shared)."""
-    found = critical_speeds(StateMatrices(system.M, Ks, system.C0, system.C1), (low, high), tol=tol, scan=scan)
+    found = critical_speeds(
+        StateMatrices(system.M, Ks, system.C0, system.C1), (low, high), tol=tol, scan=scan
+    )
     return found.status, tuple(found.speeds)
 
 

@@ -56,9 +56,9 @@ class AffineFamily:
     Examples
     --------
     >>> from raildyn.wheelset import Wheelset
-    >>> family = AffineFamily(
-    ...     lambda lam, k: Wheelset(conicity=lam, yaw_stiffness=k, lateral_stiffness=1e6), (0.05, 1e6), (0.4, 5e6)
-    ... )
+    >>> def wheelset(lam, k):
+    ...     return Wheelset(conicity=lam, yaw_stiffness=k, lateral_stiffness=1e6)
+    >>> family = AffineFamily(wheelset, (0.05, 1e6), (0.4, 5e6))
     >>> family.affine, family.constant("M"), family.stacks([(0.1, 2e6), (0.2, 3e6)])["K"].shape
     (True, True, (2, 2, 2))
     """
@@ -77,7 +77,9 @@ class AffineFamily:
             p = self.origin.copy()
             p[i] = far[i]
             moved = self._assemble(p, f"origin with parameter {i} moved to far")
-            self.slopes.append({n: (getattr(moved, n) - self.base[n]) / (far[i] - self.origin[i]) for n in _NAMES})
+            self.slopes.append(
+                {n: (getattr(moved, n) - self.base[n]) / (far[i] - self.origin[i]) for n in _NAMES}
+            )
         middle = 0.5 * (self.origin + far)
         check = self._assemble(middle, "halfway between origin and far")
         guess = self._plane(middle[None])

@@ -31,8 +31,6 @@ from raildyn.stability.search import (
 __all__ = ["CriticalSpeed", "CriticalSpeedMap", "critical_speed", "critical_speed_map"]
 
 
-
-
 @dataclass(frozen=True)
 class CriticalSpeed:
     """The linear critical speed of a model within a range of speeds.

@@ -37,12 +37,14 @@ def _range(speed_range) -> tuple[float, float]:
 
 
 def _blocks(M, K, C0, C1):
-    """The four matrices checked: each (n, n) or a stack (m, n, n) of one n and one m, finite; M positive definite."""
+    """The four matrices checked: each (n, n) or a stack (m, n, n), one n and one m; M positive definite."""
     mats = {}
     for name, value in (("M", M), ("K", K), ("C0", C0), ("C1", C1)):
         arr = _checks.array(name, value)
         if arr.ndim not in (2, 3) or arr.shape[-1] != arr.shape[-2] or arr.shape[-1] == 0:
-            raise ValueError(f"{name} must be a square matrix (n, n) or a stack of them (m, n, n), got shape {arr.shape}")
+            raise ValueError(
+                f"{name} must be a square matrix (n, n) or a stack of them (m, n, n), got shape {arr.shape}"
+            )
         mats[name] = arr
     n = mats["M"].shape[-1]
     counts = {a.shape[0] for a in mats.values() if a.ndim == 3}
@@ -50,7 +52,9 @@ def _blocks(M, K, C0, C1):
         if arr.shape[-1] != n:
             raise ValueError(f"{name} must be {n} × {n} as M is, got shape {arr.shape}")
     if len(counts) > 1:
-        raise ValueError(f"the stacks of M, K, C0 and C1 must hold as many systems each, got {sorted(counts)}")
+        raise ValueError(
+            f"the stacks of M, K, C0 and C1 must hold as many systems each, got {sorted(counts)}"
+        )
     if 0 in counts:
         raise ValueError("the stacks of M, K, C0 and C1 must hold one system at least, got an empty stack")
     M = mats["M"]
@@ -137,7 +141,8 @@ class StateMatrices:
         arr = _checks.array("which", np.atleast_1d(which), shape=(size,), low=0)
         if np.any(arr != np.round(arr)) or np.any(arr > self.count - 1):
             raise ValueError(
-                f"which must hold whole numbers in [0, {self.count - 1}] (indices into the stack), got {which!r:.80}"
+                f"which must hold whole numbers in [0, {self.count - 1}] (indices into the stack), "
+                f"got {which!r:.80}"
             )
         return arr.astype(int)
 
@@ -274,7 +279,6 @@ def _crossings(state: StateMatrices, low: float, high: float, tol: float, scan: 
     return status, speed
 
 
-
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity
 class CriticalSpeeds:
     """The linear critical speed of each system of a stack, from one batched search.
@@ -297,11 +301,14 @@ class CriticalSpeeds:
             _checks.choice("status", s, CRITICAL_SPEED_STATUSES)
         v = _checks._numbers("speeds", self.speeds)
         if v.shape != (len(statuses),) or not statuses:
-            raise ValueError(f"speeds must have shape ({len(statuses)},), one per status (at least one), got {v.shape}")
+            raise ValueError(
+                f"speeds must have shape ({len(statuses)},), one per status (at least one), got {v.shape}"
+            )
         stable = np.array([s == CRITICAL_SPEED_STATUSES[1] for s in statuses])
         if np.any(np.isposinf(v) != stable):
             raise ValueError(
-                f"speeds must be inf exactly where the status is {CRITICAL_SPEED_STATUSES[1]!r}, got {v!r:.80}"
+                f"speeds must be inf exactly where the status is {CRITICAL_SPEED_STATUSES[1]!r}, "
+                f"got {v!r:.80}"
             )
         _checks.plausible_array("speeds", np.where(stable, 1.0, v), "speed", low_open=True)
 
@@ -337,7 +344,9 @@ def _stacks(systems) -> list[tuple[np.ndarray, StateMatrices]]:
     return groups
 
 
-def critical_speeds(systems, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: int = 64) -> CriticalSpeeds:
+def critical_speeds(
+    systems, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: int = 64
+) -> CriticalSpeeds:
     """The linear critical speed of many systems at once: one eigenvalue call per step for all of them.
 
     The definition of :func:`raildyn.stability.critical_speed` (the lowest speed where the
@@ -371,7 +380,8 @@ def critical_speeds(systems, speed_range=(1.0, 150.0), *, tol: float = 0.01, sca
     Examples
     --------
     >>> from raildyn.wheelset import Wheelset
-    >>> found = critical_speeds([Wheelset(yaw_stiffness=k, lateral_stiffness=1.0e6) for k in (1e6, 2e6)], (1.0, 200.0))
+    >>> wheelsets = [Wheelset(yaw_stiffness=k, lateral_stiffness=1.0e6) for k in (1e6, 2e6)]
+    >>> found = critical_speeds(wheelsets, (1.0, 200.0))
     >>> found.status, found.speeds.round(1)
     (('crossing', 'crossing'), array([42.5, 54.5]))
     """

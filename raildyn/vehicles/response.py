@@ -89,11 +89,12 @@ def _weights(system: LinearSystem, component: str) -> np.ndarray:
 
 
 def _omega(omega, *, positive: bool) -> np.ndarray:
-    """A non-empty 1-D grid of circular frequencies in [0, MAXIMUM_FREQUENCY] rad/s (> 0 with ``positive``)."""
+    """A non-empty 1-D grid of circular frequencies in [0, MAXIMUM_FREQUENCY] rad/s, > 0 if ``positive``."""
     w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=positive, allow_empty=False)
     if w.max() > MAXIMUM_FREQUENCY:
         raise ValueError(
-            f"omega must be at most {MAXIMUM_FREQUENCY:g} rad/s (rigid-body models of motions below some 100 Hz), "
+            f"omega must be at most {MAXIMUM_FREQUENCY:g} rad/s (rigid-body models of motions below some "
+            "100 Hz), "
             f"got {w.max()!r}"
         )
     return w

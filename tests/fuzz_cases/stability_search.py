@@ -7,7 +7,7 @@ import numpy as np
 from fuzzing import call, fuzz, on
 
 from raildyn.linear_model import AffineFamily
-from raildyn.stability import CriticalSpeeds, StateMatrices
+from raildyn.stability import StateMatrices
 from raildyn.wheelset import Wheelset
 
 
@@ -34,7 +34,12 @@ ENTRIES = [
         lambda: call(*_matrices()),
         # K, C₀ and C₁ hold creep, damper and gravity terms of either sign; an extra axis makes a stack
         # of one system, as documented
-        accepts={"M": "shape", "K": "zero negative shape", "C0": "zero negative shape", "C1": "zero negative shape"},
+        accepts={
+            "M": "shape",
+            "K": "zero negative shape",
+            "C0": "zero negative shape",
+            "C1": "zero negative shape",
+        },
     ),
     fuzz("raildyn.stability.StateMatrices.of", lambda: call(_wheelset(0.1, 2.0e6))),
     fuzz(
