@@ -151,7 +151,7 @@ class BridgeCrossing:
         """Draw the deflection at the output point, or the body's acceleration, against the leading axle.
 
         The deflection in mm, downwards drawn down, beside the slow crossing (dashed, drawn
-        first); or the body's vertical acceleration (:attr:`body_acceleration`), m/s². The one
+        first); or the body's vertical acceleration (``body_acceleration``), m/s². The one
         drawing of chapter 10's crossings, for its figures and its widgets.
 
         Parameters

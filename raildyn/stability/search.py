@@ -1,7 +1,7 @@
 """The batched critical-speed search (book chapter 7): many linear systems, one eigenvalue call a step.
 
-:func:`critical_speeds` is the search behind :func:`raildyn.stability.critical_speed`,
-:func:`raildyn.stability.critical_speed_map` and the stability–curving trade-off of
+:func:`critical_speeds` is the search behind :func:`raildyn.stability.linear.critical_speed`,
+:func:`raildyn.stability.linear.critical_speed_map` and the stability–curving trade-off of
 :mod:`raildyn.curving.stiffness`, open to any caller with a stack of systems: a coarse
 batched scan of g(V) = max Re s_r(V) brackets each system's first upward zero, and a
 bracketed refinement narrows every bracket at once. :class:`StateMatrices` holds the
@@ -349,7 +349,7 @@ def critical_speeds(
 ) -> CriticalSpeeds:
     """The linear critical speed of many systems at once: one eigenvalue call per step for all of them.
 
-    The definition of :func:`raildyn.stability.critical_speed` (the lowest speed where the
+    The definition of :func:`raildyn.stability.linear.critical_speed` (the lowest speed where the
     largest real part of the eigenvalues crosses zero upwards), for a stack of systems: a coarse
     scan of ``scan`` speeds brackets each system's first upward zero of g(V) = max Re s_r(V),
     then a bracketed refinement (regula falsi, Illinois variant, with bisection where two steps

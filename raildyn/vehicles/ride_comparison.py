@@ -85,9 +85,9 @@ def ride_run(
     ----------
     vehicle : LinearModel or LinearSystem
         A vehicle of :mod:`raildyn.vehicles` with vertical rail inputs (such as
-        :data:`~raildyn.vehicles.MANCHESTER_VERTICAL`).
+        ``raildyn.vehicles.MANCHESTER_VERTICAL``).
     psd : TrackSpectrum
-        The track's vertical spectrum (:func:`raildyn.track.track_psd`), one-sided per rad/m.
+        The track's vertical spectrum (:func:`raildyn.track.spectra.track_psd`), one-sided per rad/m.
     speed : float
         V, m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     profile : PeriodicProfile
