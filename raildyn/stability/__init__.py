@@ -10,8 +10,9 @@ eigenvalues come from one batched ``numpy.linalg`` call.
 * :func:`~raildyn.stability.linear.mode_sweep` — eigenvalues, frequencies and damping ratios with each
   mode followed across speed by its modal assurance criterion (MAC), so
   that crossing branches keep their labels;
-* :func:`~raildyn.stability.linear.critical_speed` (in :mod:`raildyn.stability.critical`) — the lowest speed at which the largest real part
-  becomes positive, by a batched coarse scan and a bracketed regula falsi;
+* :func:`~raildyn.stability.linear.critical_speed` (defined in :mod:`raildyn.stability.critical`) —
+  the lowest speed at which the largest real part becomes positive, by a batched coarse scan and a
+  bracketed regula falsi;
 * :func:`~raildyn.stability.linear.critical_speed_map` — the critical speed over a grid of two parameters;
 * :func:`~raildyn.stability.search.critical_speeds` — the search itself, for many systems at once (a
   stack of :class:`~raildyn.stability.search.StateMatrices`, which a family of models affine in its

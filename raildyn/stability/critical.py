@@ -1,9 +1,9 @@
 """The linear critical speed (book chapter 7): of one model, and over a grid of two parameters.
 
-:func:`~raildyn.stability.linear.critical_speed` finds the lowest speed where the largest real part of a model's
-eigenvalues crosses zero and the mode that loses stability there; :func:`~raildyn.stability.linear.critical_speed_map`
-does so over a grid of two parameters, up to 64 models in one search. Both run the batched
-search of :mod:`raildyn.stability.search`.
+:func:`~raildyn.stability.linear.critical_speed` finds the lowest speed where the largest real
+part of a model's eigenvalues crosses zero and the mode that loses stability there;
+:func:`~raildyn.stability.linear.critical_speed_map` does so over a grid of two parameters, up
+to 64 models in one search. Both run the batched search of :mod:`raildyn.stability.search`.
 
 Their names are documented, and imported, through :mod:`raildyn.stability.linear` too.
 """

@@ -62,7 +62,7 @@ def _track_sample(track_label: str, seed: int):
 
 
 def ride_run(track_label: str, speed_kmh: float, seed: int) -> RideRun:
-    """The widget's values turned into :func:`raildyn.vehicles.ride_comparison.ride_run`: the spectrum beside a seeded run.
+    """The widget's values turned into :func:`raildyn.vehicles.ride_comparison.ride_run`: spectrum and run.
 
     The car is ``raildyn.vehicles.MANCHESTER_VERTICAL`` (body centre, vertical); the spectrum is
     taken on 0.05–30 Hz, and the run follows a 1.5 km track synthesized from the same spectrum
