@@ -36,7 +36,12 @@ The package's modules, each imported through this one: ``_system`` (:class:`Line
 from raildyn.linear_model._assembler import Assembler
 from raildyn.linear_model._family import AffineFamily
 from raildyn.linear_model._protocol import LinearModel, LinearModelBase, as_linear_system
-from raildyn.linear_model._system import INPUT_KINDS, LinearSystem, SystemMatrices
+from raildyn.linear_model._system import INPUT_KINDS as _INPUT_KINDS
+from raildyn.linear_model._system import LinearSystem, SystemMatrices
+
+INPUT_KINDS = _INPUT_KINDS
+"""What a track input can be: a rail height (on the rail given by ``input_rails``), the alignment
+(lateral position of the track centreline) or the cross-level (left rail height − right rail height), m."""
 
 __all__ = [
     "INPUT_KINDS",

@@ -26,7 +26,7 @@ class AffineFamily:
     moved to ``far`` in that parameter alone: a sweep over many points assembles the model
     2 + len(p) times. The point halfway between ``origin`` and ``far`` checks the plane to
     round-off (1e-12 of each matrix): it sees both a curve along one parameter and a product
-    of two. Where the check fails, :attr:`affine` is False and every point is assembled.
+    of two. Where the check fails, ``affine`` is False and every point is assembled.
 
     Parameters
     ----------

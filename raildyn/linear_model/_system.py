@@ -16,9 +16,8 @@ from raildyn.vibration import first_order_matrix
 
 __all__ = ["INPUT_KINDS", "LinearSystem", "SystemMatrices"]
 
+# What a track input can be (documented where the package exports it, raildyn.linear_model.INPUT_KINDS)
 INPUT_KINDS = ("vertical", "alignment", "cross_level")
-"""What a track input can be: a rail height (on the rail given by ``input_rails``), the alignment
-(lateral position of the track centreline) or the cross-level (left rail height − right rail height), m."""
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
@@ -92,7 +91,7 @@ class LinearSystem:
 
     Input j is the track met at distance ``input_positions[j]`` behind the
     leading axle, so that at speed V it arrives τ_j = d_j/V later; its kind is
-    ``input_kinds[j]`` (one of :data:`INPUT_KINDS`) and, for a rail height, its
+    ``input_kinds[j]`` (one of :data:`raildyn.linear_model.INPUT_KINDS`) and, for a rail height, its
     rail ``input_rails[j]`` (+1 left, −1 right, 0 both).
 
     Attributes
