@@ -34,7 +34,7 @@ import numpy as np
 from scipy import stats
 
 from benchmarks.common import Case, timed, widget_case
-from raildyn.stability.linear import critical_speed
+from raildyn.stability import critical_speed
 from raildyn.validation.uncertainty import monte_carlo
 from raildyn.vehicles import Car
 

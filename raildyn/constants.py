@@ -34,6 +34,7 @@ from raildyn._numbers import scalar  # below this module; raildyn._checks, above
 
 __all__ = [
     "GRAVITY",
+    "MAXIMUM_FREQUENCY",
     "MAXIMUM_SPEED",
     "MPH",
     "PLAUSIBLE_RANGES",
@@ -63,6 +64,15 @@ It lies above the speed record of a train on wheels and rails, 574.8 km/h = 159.
 TGV V150 trainset of SNCF and Alstom, 3 April 2007, on the LGV Est), so every real train
 passes, and a speed typed in km/h where m/s is meant is caught whenever it exceeds 200 (a
 300 km/h train typed as 300)."""
+
+MAXIMUM_FREQUENCY = 1.0e6
+"""The highest circular frequency of a vehicle's frequency response, rad/s (about 160 kHz).
+
+The vehicle models are rigid bodies on springs, meant for motions below some 100 Hz (a
+car body's modes lie near 1 Hz, a wheelset on the track's stiffness near 50-100 Hz); the
+bound lies four orders above, and keeps ω²M, and ω² times a response, finite. One bound for
+:meth:`raildyn.linear_model.LinearSystem.axle_frf` and every response of
+:mod:`raildyn.vehicles.response`."""
 
 
 @dataclasses.dataclass(frozen=True)

@@ -198,7 +198,7 @@ def test_a_system_with_a_direct_input_force_does_not_know_its_reaction():
 
 
 # ---------------------------------------------------------------------------
-# The affine family (raildyn.linear_model._AffineFamily), and chapter 7's curve widget's families
+# The affine family (raildyn.linear_model.AffineFamily), and chapter 7's curve widget's families
 
 
 def _wheelset_family(lam, k):
@@ -221,13 +221,13 @@ _CURVE_POINTS = [
 
 def _families():
     """(family, make, points): a wheelset's, and the car's and bogie's of chapter 7's curve widget."""
-    from raildyn.linear_model import _AffineFamily
+    from raildyn.linear_model import AffineFamily
     from raildyn.widgets import chapter07
 
     car, bogie = chapter07._curve_families()
     return [
         # inside, and beyond ``origin`` and ``far``
-        (_AffineFamily(_wheelset_family, (0.03, 1.0e6), (0.5, 5.0e6)), _wheelset_family,
+        (AffineFamily(_wheelset_family, (0.03, 1.0e6), (0.5, 5.0e6)), _wheelset_family,
          [(0.1, 2.0e6), (0.45, 4.5e6), (0.02, 8.0e6)]),
         (car, _car_family, _CURVE_POINTS),
         (bogie, lambda *p: _car_family(*p).bogie, _CURVE_POINTS),
@@ -247,9 +247,9 @@ def test_an_affine_family_gives_the_assembled_matrices(case):
 
 
 def test_an_affine_family_knows_what_stays_put_and_what_it_assembled():
-    from raildyn.linear_model import _AffineFamily
+    from raildyn.linear_model import AffineFamily
 
-    family = _AffineFamily(_wheelset_family, (0.03, 1.0e6), (0.5, 5.0e6))
+    family = AffineFamily(_wheelset_family, (0.03, 1.0e6), (0.5, 5.0e6))
     assert family.constant("M") and not family.constant("K")
     # the systems it assembled: the origin, each parameter moved alone, and the halfway check
     assert sorted(family.assembled) == [(0.03, 1.0e6), (0.03, 5.0e6), (0.265, 3.0e6), (0.5, 1.0e6)]
@@ -267,9 +267,9 @@ def test_an_affine_family_knows_what_stays_put_and_what_it_assembled():
     ids=["curve", "product"],
 )
 def test_a_family_off_the_plane_is_assembled_at_every_point(make):
-    from raildyn.linear_model import _AffineFamily
+    from raildyn.linear_model import AffineFamily
 
-    family = _AffineFamily(make, (0.03, 1.0e6), (0.5, 5.0e6))
+    family = AffineFamily(make, (0.03, 1.0e6), (0.5, 5.0e6))
     assert not family.affine and not family.constant("M")
     points = [(0.1, 2.0e6), (0.3, 4.0e6)]
     stacks = family.stacks(points)

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from widget_helpers import median_update_ms, status_line
 
-from raildyn.stability.linear import critical_speed
+from raildyn.stability import critical_speed
 from raildyn.validation.measured import LERELVA_PANEL, NSB92_LOADS, NSB92_SPACINGS
 from raildyn.validation.metrics import compare
 from raildyn.widgets import chapter11

@@ -9,7 +9,13 @@
 * :mod:`raildyn.bridge.codes` — what practice checks: impact factors, resonance, acceleration limits.
 """
 
-from raildyn.bridge.beam import MovingForceResponse, SimplySupportedBeam, fryba_deflection, moving_force
+from raildyn.bridge.beam import (
+    MovingForceResponse,
+    SimplySupportedBeam,
+    fryba_deflection,
+    moving_force,
+    plot_amplification,
+)
 from raildyn.bridge.codes import (
     arema_impact_factor,
     cancellation_spans,
@@ -54,6 +60,7 @@ __all__ = [
     "moving_force",
     "moving_forces",
     "moving_mass",
+    "plot_amplification",
     "regular_train",
     "resonance_speeds",
     "sprung_mass",

@@ -21,7 +21,13 @@ import scipy.optimize
 from raildyn import _checks
 from raildyn.bridge import _kernel
 
-__all__ = ["MovingForceResponse", "SimplySupportedBeam", "fryba_deflection", "moving_force"]
+__all__ = [
+    "MovingForceResponse",
+    "SimplySupportedBeam",
+    "fryba_deflection",
+    "moving_force",
+    "plot_amplification",
+]
 
 _MAX_MODES = 200  # a simply supported beam's response converges as 1/j⁴: far more than enough
 
@@ -170,6 +176,92 @@ class MovingForceResponse:
     def amplification(self) -> np.ndarray:
         """The dynamic amplification factor of each speed: max |w| over the crossing and after, / |static|."""
         return np.abs(self.deflection).max(axis=1) / abs(self.static)
+
+    def plot(self, ax=None, *, alpha_speed=None, artists: dict | None = None, **style) -> dict:
+        """Draw the dynamic amplification against speed (km/h), or against α (see :func:`plot_amplification`).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Where to draw; new axes by default. Ignored when ``artists`` is given.
+        alpha_speed : float, optional
+            2f₁L, m/s (> 0): the speed at α = 1, to draw against α = v/(2f₁L); None: against km/h.
+        artists : dict, optional
+            What an earlier call returned: the line is moved in place, nothing is drawn anew.
+        **style
+            Passed to ``Axes.plot`` (``color``, ``lw``, ``label``...).
+
+        Returns
+        -------
+        dict
+            ``{"line": Line2D}``.
+        """
+        return plot_amplification(
+            self.speeds, self.amplification, ax, alpha_speed=alpha_speed, artists=artists, **style
+        )
+
+
+def plot_amplification(speeds, amplification, ax=None, *, alpha_speed=None, artists=None, **style) -> dict:
+    """Draw a dynamic amplification against speed (km/h) or against α = v/(2f₁L): chapter 10's curves.
+
+    One function for every amplification curve of chapter 10, in its figures and its widgets
+    (:meth:`MovingForceResponse.plot` calls it; a curve pieced together from several responses
+    is drawn by it directly). A fresh drawing labels the axes.
+
+    Parameters
+    ----------
+    speeds : array_like, (s,)
+        v, m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
+    amplification : array_like, (s,)
+        The largest deflection over the static one at each speed (finite, ≥ 0).
+    ax : matplotlib Axes, optional
+        Where to draw; new axes by default. Ignored when ``artists`` is given.
+    alpha_speed : float, optional
+        2f₁L, m/s (> 0): the speed at α = 1, to draw against α = v/(2f₁L); None: against km/h.
+    artists : dict, optional
+        What an earlier call returned: the line is moved in place (``set_data``), nothing is
+        drawn anew.
+    **style
+        Passed to ``Axes.plot`` (``color``, ``lw``, ``label``...).
+
+    Returns
+    -------
+    dict
+        ``{"line": Line2D}``.
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=3)
+    >>> drawn = moving_force(beam, [20.0, 40.0], 1.0e5).plot(Figure().subplots())
+    >>> drawn["line"].get_xdata().tolist()
+    [72.0, 144.0]
+    """
+    import matplotlib
+    import matplotlib.lines
+
+    from raildyn import plots
+
+    v = _checks.speeds("speeds", speeds)
+    daf = _checks.array("amplification", amplification, shape=v.shape, low=0.0)
+    scale = None if alpha_speed is None else _checks.positive("alpha_speed", alpha_speed)
+    x = 3.6 * v if scale is None else v / scale
+    try:  # a keyword that is no line property is refused before anything is drawn
+        matplotlib.lines.Line2D([], [], **style)
+    except AttributeError as err:
+        raise TypeError(f"style: {err} (keywords must be properties of matplotlib's Line2D)") from None
+    if artists is not None:
+        _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
+        if "line" not in artists:
+            raise ValueError("artists must come from plot_amplification, got one without 'line'")
+        artists["line"].set_data(x, daf)
+        return artists
+    ax = plots.axes_or_new(ax)
+    with matplotlib.rc_context(plots.STYLE):
+        (line,) = ax.plot(x, daf, **style)
+        ax.set_xlabel("V (km/h)" if scale is None else "α = V/(2f₁L)")
+        ax.set_ylabel("dynamic amplification")
+    return {"line": line}
 
 
 def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None, samples: int = 400):

@@ -128,26 +128,87 @@ class BridgeCrossing:
         i = self.vehicle_labels.index(_checks.choice("label", label, self.vehicle_labels))
         return self.vehicle[:, 2, i]
 
-    def plot(self, ax=None):
-        """The deflection at the output point against the leading axle's position, beside the slow crossing.
+    @property
+    def body_acceleration(self) -> np.ndarray:
+        """The car body's vertical acceleration over the run, m/s², (k,): the mean over every coordinate
+        whose label ends in "body z" (one car's body, or the bodies of a train of sprung masses).
+
+        Raises
+        ------
+        ValueError
+            If the crossing has no sprung vehicle, or none of its coordinates is a body's bounce.
+        """
+        bodies = [label for label in self.vehicle_labels if label.endswith("body z")]
+        if self.vehicle is None or not bodies:
+            raise ValueError(
+                f"this crossing has no body to accelerate (vehicle coordinates {self.vehicle_labels!r:.80})"
+            )
+        return np.mean([self.vehicle[:, 2, self.vehicle_labels.index(label)] for label in bodies], axis=0)
+
+    def plot(
+        self, ax=None, *, quantity: str = "deflection", static: bool = True, artists=None, **style
+    ) -> dict:
+        """Draw the deflection at the output point, or the body's acceleration, against the leading axle.
+
+        The deflection in mm, downwards drawn down, beside the slow crossing (dashed, drawn
+        first); or the body's vertical acceleration (``body_acceleration``), m/s². The one
+        drawing of chapter 10's crossings, for its figures and its widgets.
 
         Parameters
         ----------
         ax : matplotlib Axes, optional
+            Where to draw; new axes by default. Ignored when ``artists`` is given.
+        quantity : {"deflection", "body acceleration"}
+            What to draw.
+        static : bool
+            Draw the slow crossing too (deflection only).
+        artists : dict, optional
+            What an earlier call returned: its lines are moved to this crossing in place
+            (``set_data``), nothing is drawn anew.
+        **style
+            Passed to ``Axes.plot`` for the crossing's line (``color``, ``lw``, ``label``...;
+            the label defaults to the speed in km/h).
 
         Returns
         -------
-        list of Line2D
-            The dynamic and the static line.
+        dict
+            ``line`` (the crossing's Line2D) and ``static`` (the slow crossing's, or None).
         """
-        ax = axes_or_new(ax)
+        import matplotlib
+        import matplotlib.lines
+
+        from raildyn import plots
+
+        _checks.choice("quantity", quantity, ("deflection", "body acceleration"))
+        static = _checks.flag("static", static) and quantity == "deflection"
+        try:  # a keyword that is no line property is refused before anything is drawn
+            matplotlib.lines.Line2D([], [], **style)
+        except AttributeError as err:
+            raise TypeError(f"style: {err} (keywords must be properties of matplotlib's Line2D)") from None
         x = self.speed * self.time
-        lines = ax.plot(x, 1e3 * self.deflection, label=f"{self.speed * 3.6:.0f} km/h")
-        lines += ax.plot(x, 1e3 * self.static_deflection, "k--", lw=1, label="static")
-        ax.set(xlabel="leading axle's position (m)", ylabel=f"deflection at x = {self.at:g} m (mm)")
-        ax.invert_yaxis()  # downwards is down
-        ax.legend()
-        return lines
+        y = 1e3 * self.deflection if quantity == "deflection" else self.body_acceleration
+        if artists is not None:
+            _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
+            if "line" not in artists:
+                raise ValueError("artists must come from BridgeCrossing.plot, got one without 'line'")
+            artists["line"].set_data(x, y)
+            if artists.get("static") is not None:
+                artists["static"].set_data(x, 1e3 * self.static_deflection)
+            return artists
+        ax = axes_or_new(ax)
+        with matplotlib.rc_context(plots.STYLE):
+            slow = None
+            if static:
+                (slow,) = ax.plot(x, 1e3 * self.static_deflection, "k--", lw=1, label="slow crossing")
+            (line,) = ax.plot(x, y, **({"label": f"{self.speed * 3.6:.0f} km/h"} | style))
+            ax.set_xlabel("leading axle's position (m)")
+            if quantity == "deflection":
+                ax.set_ylabel(f"deflection at x = {self.at:g} m (mm)")
+                if not ax.yaxis_inverted():
+                    ax.invert_yaxis()  # downwards is down
+            else:
+                ax.set_ylabel("body acceleration (m/s²)")
+        return {"line": line, "static": slow}
 
 
 def _rail(irregularity, load: MovingLoad, length: float, x: np.ndarray) -> np.ndarray:

@@ -41,8 +41,8 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.curving.steady import steady_curving
-from raildyn.linear_model import _AffineFamily, as_linear_system
-from raildyn.stability.linear import _MAX_SCAN, _STATUSES, _crossings, _StateMatrices
+from raildyn.linear_model import AffineFamily, as_linear_system
+from raildyn.stability import CRITICAL_SPEED_STATUSES, MAX_SCAN_SPEEDS, StateMatrices, critical_speeds
 from raildyn.track import MINIMUM_RADIUS
 from raildyn.vehicles import Bogie
 
@@ -249,14 +249,15 @@ class StabilityCurving:
         m = k.size
         statuses = _checks.strings("status", self.status, m)
         for s in statuses:
-            _checks.choice("status", s, _STATUSES)
+            _checks.choice("status", s, CRITICAL_SPEED_STATUSES)
         v = _checks._numbers("critical_speed", self.critical_speed)
-        stable = np.array([s == _STATUSES[1] for s in statuses])
+        stable = np.array([s == CRITICAL_SPEED_STATUSES[1] for s in statuses])
         if v.shape != (m,):
             raise ValueError(f"critical_speed must have shape ({m},), got {v.shape}")
         if np.any(np.isposinf(v) != stable):
             raise ValueError(
-                f"critical_speed must be inf exactly where the status is {_STATUSES[1]!r}, got {v!r:.80}"
+                f"critical_speed must be inf exactly where the status is {CRITICAL_SPEED_STATUSES[1]!r}, "
+                f"got {v!r:.80}"
             )
         _checks.plausible_array("critical_speed", np.where(stable, 1.0, v), "speed", low_open=True)
         _checks.array("angle_of_attack", self.angle_of_attack, shape=(m,))
@@ -327,7 +328,7 @@ def _stiffness_matrices(model, ks: np.ndarray):
     """The model's system at the largest k_ψ and one K per k_ψ (M, C₀ and C₁ do not change).
 
     K is affine in k_ψ when ``replace(yaw_stiffness=...)`` changes only the primary yaw springs:
-    the model as an affine family in k_ψ (``raildyn.linear_model._AffineFamily``, three
+    the model as an affine family in k_ψ (:class:`raildyn.linear_model.AffineFamily`, three
     assemblies, checked at k_top/2) gives every K; where the check fails, every K is built.
     """
     top = float(ks[-1]) if ks[-1] > 0 else 1.0
@@ -338,7 +339,7 @@ def _stiffness_matrices(model, ks: np.ndarray):
         except TypeError as err:
             raise TypeError(f"model: replace(yaw_stiffness=...) failed: {err}") from None
 
-    family = _AffineFamily(make, (0.0,), (top,))
+    family = AffineFamily(make, (0.0,), (top,))
     s1 = family.assembled[(top,)]
     if family.affine and all(family.constant(n) for n in ("M", "C0", "C1")):
         return s1, family.stacks(ks[:, None])["K"]
@@ -365,8 +366,15 @@ def _kept_matrices(model, ks: tuple):
 @lru_cache(maxsize=_KEPT)
 def _kept_critical_speeds(model, ks: tuple, low: float, high: float, tol: float, scan: int):
     system, Ks = _kept_matrices(model, ks)
-    status, speeds = _crossings(_StateMatrices(system.M, Ks, system.C0, system.C1), low, high, tol, scan)
-    return tuple(status), tuple(speeds)
+    return _search(system, Ks, low, high, tol, scan)
+
+
+def _search(system, Ks, low: float, high: float, tol: float, scan: int) -> tuple[tuple, tuple]:
+    """The status and critical speed at each k_ψ: chapter 7's batched search (M, C₀ and C₁ shared)."""
+    found = critical_speeds(
+        StateMatrices(system.M, Ks, system.C0, system.C1), (low, high), tol=tol, scan=scan
+    )
+    return found.status, tuple(found.speeds)
 
 
 def _hashable(model) -> bool:
@@ -441,7 +449,7 @@ def stability_and_curving(
     ks = _checks.increasing("yaw_stiffnesses", yaw_stiffnesses, low=0.0)
     low, high = _range(speed_range)
     tol = _checks.positive("tol", tol)
-    scan = _checks.integer("scan", scan, low=8, high=_MAX_SCAN)
+    scan = _checks.integer("scan", scan, low=8, high=MAX_SCAN_SPEEDS)
     kept = _hashable(model)
     key = (model, tuple(ks.tolist()))
     # system: the model at the largest k_ψ
@@ -467,7 +475,7 @@ def stability_and_curving(
     if kept:
         status, speeds = _kept_critical_speeds(*key, low, high, tol, scan)
     else:
-        status, speeds = _crossings(_StateMatrices(system.M, Ks, system.C0, system.C1), low, high, tol, scan)
+        status, speeds = _search(system, Ks, low, high, tol, scan)
     return StabilityCurving(
         ks, np.array(speeds), tuple(status), alpha, state.speed, state.radius, state.cant, (low, high)
     )

@@ -2,8 +2,9 @@
 resonance and its cancellation, and four models of one car crossing the same span.
 
 The amplification comes from the closed form of :func:`raildyn.bridge.beam.moving_force`, the
-coupled crossings from :func:`raildyn.bridge.coupled.crossing`. None of them mirrors a numbered
-figure of the book.
+coupled crossings from :func:`raildyn.bridge.coupled.crossing`; the curves are drawn by
+:meth:`~raildyn.bridge.beam.MovingForceResponse.plot` and :meth:`~raildyn.bridge.coupled.BridgeCrossing.plot`,
+which the chapter's widgets call too. None of them mirrors a numbered figure of the book.
 """
 
 from __future__ import annotations
@@ -54,9 +55,10 @@ def daf_single_force() -> Figure:
         # The amplification depends on α and ζ alone (Frýba 1972): a span twice as long of the same
         # section meets α = 2 at 157 m/s, within raildyn.constants.MAXIMUM_SPEED (20 m: 314 m/s).
         beam = SimplySupportedBeam(2 * _SPAN, _EI, _MASS, damping_ratio=zeta, modes=10)
-        speeds = alphas * 2 * beam.frequencies_hz[0] * beam.span
-        daf = moving_force(beam, speeds, 1.0e5).amplification
-        ax.plot(alphas, daf, color=plots.COLORS[k], label=f"ζ = {100 * zeta:g} %")
+        alpha_speed = 2 * beam.frequencies_hz[0] * beam.span
+        response = moving_force(beam, alphas * alpha_speed, 1.0e5)
+        response.plot(ax, alpha_speed=alpha_speed, color=plots.COLORS[k], label=f"ζ = {100 * zeta:g} %")
+        daf = response.amplification
         if zeta == 0.0:
             i = int(np.argmax(daf))
             ax.plot([alphas[i]], [daf[i]], "o", color=plots.COLORS[k], mfc="white")
@@ -68,7 +70,7 @@ def daf_single_force() -> Figure:
                 fontsize=8,
             )
     ax.axhline(1.0, color="0.6", lw=0.8)
-    ax.set(xlim=(0.0, 2.0), ylim=(0.8, 1.85), xlabel="α = v/(2f₁L)", ylabel="dynamic amplification")
+    ax.set(xlim=(0.0, 2.0), ylim=(0.8, 1.85))
     ax.legend(loc="upper right", fontsize=8)
     return fig
 
@@ -90,16 +92,15 @@ def train_resonance_figure() -> Figure:
     ax = fig.subplots()
     for k, span in enumerate((20.0, 1.5 * spacing)):
         beam = _tuned(span, f1, 0.01, 3)
-        daf = moving_force(beam, speeds, axles, samples=3000).amplification
-        ax.plot(
-            3.6 * speeds, daf, color=plots.COLORS[k], label=f"L = {span:g} m (L/d = {span / spacing:.2f})"
+        moving_force(beam, speeds, axles, samples=3000).plot(
+            ax, color=plots.COLORS[k], label=f"L = {span:g} m (L/d = {span / spacing:.2f})"
         )
     for i, v in enumerate(codes.resonance_speeds(f1, spacing, 4), start=1):
         ax.axvline(3.6 * v, color="0.5", ls=":", lw=1)
         ax.text(3.6 * v, 0.98, f" f₁d/{i}", transform=ax.get_xaxis_transform(), fontsize=8, va="top")
     ax.set_yscale("log")
     ax.set_yticks([1, 2, 5, 10], ["1", "2", "5", "10"])
-    ax.set(xlim=(60.0, 420.0), xlabel="v (km/h)", ylabel="largest midspan deflection / static")
+    ax.set(xlim=(60.0, 420.0), ylabel="largest midspan deflection / static")
     ax.legend(loc="center right", fontsize=8)
     return fig
 
@@ -137,21 +138,15 @@ def load_models_figure() -> Figure:
     left, right = fig.subplots(1, 2)
     for k, (name, load) in enumerate(models.items()):
         run = crossing(beam, load, speed, free_time=10.0 / speed)
-        x = speed * run.time
-        left.plot(x, 1e3 * run.deflection, color=plots.COLORS[k], label=f"{name}: {run.amplification:.3f}")
-        if k == 0:
-            left.plot(x, 1e3 * run.static_deflection, "k--", lw=1, label="slow crossing")
+        run.plot(left, static=k == 0, color=plots.COLORS[k], label=f"{name}: {run.amplification:.3f}")
         if run.vehicle is not None:
-            bodies = [label for label in run.vehicle_labels if label.endswith("body z")]
-            a = np.mean([run.vehicle_acceleration(label) for label in bodies], axis=0)
-            right.plot(x, a, color=plots.COLORS[k], label=name)
-    left.invert_yaxis()
-    left.set(xlabel="leading axle's position (m)", ylabel="midspan deflection (mm)")
+            run.plot(right, quantity="body acceleration", color=plots.COLORS[k], label=name)
+    left.set(ylabel="midspan deflection (mm)")
     left.legend(fontsize=8, title="amplification", title_fontsize=8)
     limit = codes.comfort_acceleration_limit("very good")
     for sign in (1, -1):
         right.axhline(sign * limit, color="0.4", ls="--", lw=1)
     right.text(1.0, limit, " EN 1990 b_v, very good comfort", va="bottom", fontsize=8)
-    right.set(xlabel="leading axle's position (m)", ylabel="body acceleration (m/s²)", ylim=(-1.2, 1.4))
+    right.set(ylim=(-1.2, 1.4))
     right.legend(fontsize=8, loc="lower right")
     return fig

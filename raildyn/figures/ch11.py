@@ -18,7 +18,7 @@ from scipy import stats
 
 from raildyn import plots
 from raildyn.figures import new_figure, register
-from raildyn.stability.linear import critical_speed
+from raildyn.stability import critical_speed
 from raildyn.validation.identification import free_decay
 from raildyn.validation.measured import lerelva_case
 from raildyn.validation.uncertainty import sobol_indices

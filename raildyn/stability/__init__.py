@@ -10,9 +10,13 @@ eigenvalues come from one batched ``numpy.linalg`` call.
 * :func:`~raildyn.stability.linear.mode_sweep` — eigenvalues, frequencies and damping ratios with each
   mode followed across speed by its modal assurance criterion (MAC), so
   that crossing branches keep their labels;
-* :func:`~raildyn.stability.linear.critical_speed` — the lowest speed at which the largest real part
-  becomes positive, by a batched coarse scan and a bracketed regula falsi (one system or many at once);
+* :func:`~raildyn.stability.linear.critical_speed` (defined in :mod:`raildyn.stability.critical`) —
+  the lowest speed at which the largest real part becomes positive, by a batched coarse scan and a
+  bracketed regula falsi;
 * :func:`~raildyn.stability.linear.critical_speed_map` — the critical speed over a grid of two parameters;
+* :func:`~raildyn.stability.search.critical_speeds` — the search itself, for many systems at once (a
+  stack of :class:`~raildyn.stability.search.StateMatrices`, which a family of models affine in its
+  parameters, :class:`raildyn.linear_model.AffineFamily`, gives without assembling each member);
 * :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`,
   :func:`~raildyn.stability.nonlinear.bifurcation_diagram` — nonlinear hunting: the
   amplitude of the limit cycle against speed and the nonlinear critical speed;
@@ -21,13 +25,10 @@ eigenvalues come from one batched ``numpy.linalg`` call.
   steps a few hundred times faster; ``engine="scipy"`` runs the reference it is tested against.
 """
 
+from raildyn.stability.critical import CriticalSpeed, CriticalSpeedMap, critical_speed, critical_speed_map
 from raildyn.stability.linear import (
-    CriticalSpeed,
-    CriticalSpeedMap,
     ModeSweep,
     TrackedModes,
-    critical_speed,
-    critical_speed_map,
     eigenvalues_against_speed,
     largest_real_part,
     mac,
@@ -45,20 +46,32 @@ from raildyn.stability.nonlinear import (
     periodic_orbit,
     simulate,
 )
+from raildyn.stability.search import (
+    CRITICAL_SPEED_STATUSES,
+    MAX_SCAN_SPEEDS,
+    CriticalSpeeds,
+    StateMatrices,
+    critical_speeds,
+)
 
 __all__ = [
+    "CRITICAL_SPEED_STATUSES",
+    "MAX_SCAN_SPEEDS",
     "BifurcationDiagram",
     "CriticalSpeed",
     "CriticalSpeedMap",
+    "CriticalSpeeds",
     "LimitCycle",
     "ModeSweep",
     "NonlinearRun",
     "PeriodicOrbit",
+    "StateMatrices",
     "TrackedModes",
     "bifurcation_diagram",
     "bifurcation_diagrams",
     "critical_speed",
     "critical_speed_map",
+    "critical_speeds",
     "eigenvalues_against_speed",
     "largest_real_part",
     "limit_cycle_amplitude",

@@ -31,6 +31,7 @@ from raildyn.vehicles.response import (
     time_response,
     track_frf,
 )
+from raildyn.vehicles.ride_comparison import RideRun, ride_run
 from raildyn.vehicles.three_piece import (
     EMPTY_FREIGHT_CAR,
     LOADED_FREIGHT_CAR,
@@ -58,6 +59,7 @@ __all__ = [
     "MANCHESTER_VERTICAL",
     "PeriodicProfile",
     "ResponseSpectrum",
+    "RideRun",
     "RockAndRoll",
     "ThreePieceTruck",
     "TimeResponse",
@@ -69,6 +71,7 @@ __all__ = [
     "gdu_ore_car",
     "periodic_profile",
     "response_spectrum",
+    "ride_run",
     "rigid_truck_wavelength",
     "rms_over_speeds",
     "rock_and_roll",

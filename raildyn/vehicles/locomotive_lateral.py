@@ -61,7 +61,7 @@ from raildyn.wheelset import (
     WheelRailContact,
     Wheelset,
     add_wheelset,
-    kinematic_wavelength,
+    rigid_bogie_wavelength,
 )
 
 __all__ = ["LATERAL_LOCOMOTIVE", "LateralLocomotive", "ThreeAxleTruck", "rigid_truck_wavelength"]
@@ -189,8 +189,9 @@ def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -
     rolling_radius, half_gauge, conicity : float
         r₀ (m, > 0), a (m, > 0) and λ (> 0), as for :func:`raildyn.wheelset.kinematic_wavelength`.
     axle_spacing : float
-        d, between neighbouring axles, m, in [0.01, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
-        "vehicle_length").
+        d, between neighbouring axles, m, in [0.0123, 100] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "vehicle_length"; the lower end gives the least semi-wheelbase √(2/3) d that
+        :func:`~raildyn.wheelset.rigid_bogie_wavelength` takes).
 
     Returns
     -------
@@ -202,11 +203,14 @@ def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -
     >>> round(rigid_truck_wavelength(0.508, 0.75, 0.05, 2.07), 2)
     42.76
     """
-    d = _checks.plausible("axle_spacing", axle_spacing, "vehicle_length")
-    a = _checks.plausible("half_gauge", half_gauge, "half_gauge")
-    free = kinematic_wavelength(rolling_radius, half_gauge, conicity)
-    # √(1 + (2/3)(d/a)²) as a hypotenuse, finite for any finite d/a
-    return free * float(np.hypot(1.0, np.sqrt(2.0 / 3.0) * d / a))
+    # the rigid bogie's semi-wheelbase b = 0.01 m, the least plausible, at d = b √(3/2)
+    d = _checks.plausible("axle_spacing", axle_spacing, "vehicle_length", low=_LEAST_AXLE_SPACING)
+    # Three axles at −d, 0, +d steer as two at ±b with b² = Σx_i²/n = 2d²/3 (the derivation above):
+    # the rigid bogie's formula, written once in raildyn.wheelset, at that b.
+    return rigid_bogie_wavelength(rolling_radius, half_gauge, conicity, np.sqrt(2.0 / 3.0) * d)
+
+
+_LEAST_AXLE_SPACING = 0.01 * np.sqrt(1.5)  # m
 
 
 @dataclass(frozen=True)

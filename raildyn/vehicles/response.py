@@ -38,6 +38,7 @@ import scipy.linalg
 from raildyn import _checks, plots
 from raildyn import random_vibration as rv
 from raildyn import track as _track
+from raildyn.constants import MAXIMUM_FREQUENCY
 from raildyn.errors import SolverError
 from raildyn.linear_model import INPUT_KINDS, LinearSystem, as_linear_system
 
@@ -87,17 +88,13 @@ def _weights(system: LinearSystem, component: str) -> np.ndarray:
     return weights
 
 
-#: Highest circular frequency of a response grid, rad/s (about 160 kHz). The models are rigid bodies on
-#: springs, meant for motions below some 100 Hz; the bound keeps ω²M, and ω² times a response, finite.
-_OMEGA_MAX = 1.0e6
-
-
 def _omega(omega, *, positive: bool) -> np.ndarray:
-    """A non-empty 1-D grid of circular frequencies in [0, _OMEGA_MAX] rad/s (> 0 with ``positive``)."""
+    """A non-empty 1-D grid of circular frequencies in [0, MAXIMUM_FREQUENCY] rad/s, > 0 if ``positive``."""
     w = _checks.array("omega", omega, ndim=1, low=0.0, low_open=positive, allow_empty=False)
-    if w.max() > _OMEGA_MAX:
+    if w.max() > MAXIMUM_FREQUENCY:
         raise ValueError(
-            f"omega must be at most {_OMEGA_MAX:g} rad/s (rigid-body models of motions below some 100 Hz), "
+            f"omega must be at most {MAXIMUM_FREQUENCY:g} rad/s (rigid-body models of motions below some "
+            "100 Hz), "
             f"got {w.max()!r}"
         )
     return w

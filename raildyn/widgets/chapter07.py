@@ -18,10 +18,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from raildyn import plots, stability
-from raildyn.linear_model import _AffineFamily
-
-# the search of critical_speed_map on stacked matrices: the widget's systems are never objects
-from raildyn.stability.linear import _crossings, _StateMatrices
+from raildyn.linear_model import AffineFamily
 from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Car
 from raildyn.widgets._core import Recipe, slider
 
@@ -107,23 +104,23 @@ _CURVE_ORIGIN, _CURVE_FAR = (0.03, 2.0e6, 0.0), (0.5, 120.0e6, 2.0e6)
 
 
 @lru_cache(maxsize=1)
-def _curve_families() -> tuple[_AffineFamily, _AffineFamily]:
+def _curve_families() -> tuple[AffineFamily, AffineFamily]:
     """The car and its bogie as affine families in (λ, k_ψ, k_sψ): a slider move assembles nothing."""
 
     def car(lam, k, ks):
         return _CAR.replace(conicity=lam, yaw_stiffness=k, secondary_yaw_stiffness=ks)
 
     return (
-        _AffineFamily(car, _CURVE_ORIGIN, _CURVE_FAR),
-        _AffineFamily(lambda *p: car(*p).bogie, _CURVE_ORIGIN, _CURVE_FAR),
+        AffineFamily(car, _CURVE_ORIGIN, _CURVE_FAR),
+        AffineFamily(lambda *p: car(*p).bogie, _CURVE_ORIGIN, _CURVE_FAR),
     )
 
 
 def _critical_curves(yaw_stiffness: float, secondary_yaw_stiffness: float):
     """Critical-speed maps of the car and of its bogie against conicity (stiffnesses in MN·m/rad).
 
-    :func:`raildyn.stability.critical_speed_map`'s search (scan 16, tol 0.1 m/s over 1–200 m/s),
-    run on the families' matrices directly: every conicity of each vehicle in one batched search.
+    :func:`raildyn.stability.critical_speeds` (scan 16, tol 0.1 m/s over 1–200 m/s) on the families'
+    stacks of matrices: every conicity of each vehicle in one batched search.
     """
     points = np.column_stack(
         [
@@ -134,11 +131,10 @@ def _critical_curves(yaw_stiffness: float, secondary_yaw_stiffness: float):
     )
 
     def curve(family):
-        m = family.stacks(points)
-        state = _StateMatrices(m["M"], m["K"], m["C0"], m["C1"])
-        _, speeds = _crossings(state, 1.0, 200.0, 0.1, 16)
+        stack = stability.StateMatrices(**family.stacks(points))
+        found = stability.critical_speeds(stack, (1.0, 200.0), tol=0.1, scan=16)
         return stability.CriticalSpeedMap(
-            _CONICITIES, np.array([yaw_stiffness]), speeds[None], "conicity λ", "primary k_ψ (MN·m/rad)"
+            _CONICITIES, np.array([yaw_stiffness]), found.speeds[None], "conicity λ", "primary k_ψ (MN·m/rad)"
         )
 
     return tuple(curve(family) for family in _curve_families())

@@ -4,8 +4,11 @@ resonances against speed, and four models of one car crossing the same bridge.
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The models are
 :mod:`raildyn.bridge`: :func:`raildyn.bridge.beam.moving_force` (the closed form, for the
 amplification curves) and :func:`raildyn.bridge.coupled.crossing` (the modal march, for the
-deflected beam and the coupled vehicles); the design rules are :mod:`raildyn.bridge.codes`. This
-module only turns control values into model calls and moves artists.
+deflected beam and the coupled vehicles); the design rules are :mod:`raildyn.bridge.codes`. The
+curves are drawn, and moved in place, by :func:`raildyn.bridge.beam.plot_amplification` (through
+:meth:`~raildyn.bridge.beam.MovingForceResponse.plot`) and :meth:`raildyn.bridge.coupled.BridgeCrossing.plot`,
+which the chapter's figures call too. This module only turns control values into model calls and
+moves artists.
 """
 
 from __future__ import annotations
@@ -23,6 +26,7 @@ from raildyn.bridge import (
     crossing,
     moving_force,
     moving_mass,
+    plot_amplification,
     sprung_mass,
     train,
     vehicle,
@@ -70,10 +74,15 @@ _SHAPE_MODES = 3  # the drawn beam: the deflection converges as 1/j⁴, and the 
 
 
 @lru_cache(maxsize=len(_DAMPING))
-def _daf_curve(damping_ratio: float) -> np.ndarray:
-    """The amplification of one force against ``_ALPHAS``, by the closed form (about 60 ms, kept)."""
+def _daf_response(damping_ratio: float):
+    """One force's crossing at every speed of ``_ALPHAS``, by the closed form (about 60 ms, kept)."""
     beam = _beam(_CURVE_MODES, damping_ratio, span=_CURVE_SPAN)
-    return moving_force(beam, _ALPHAS * _alpha_speed(beam), _FORCE).amplification
+    return moving_force(beam, _ALPHAS * _alpha_speed(beam), _FORCE)
+
+
+def _daf_curve(damping_ratio: float) -> np.ndarray:
+    """The amplification of one force against ``_ALPHAS``."""
+    return _daf_response(damping_ratio).amplification
 
 
 @lru_cache(maxsize=64)
@@ -116,9 +125,13 @@ def _explorer_setup(live, status):
     left.set(xlabel="x (m)", ylabel="deflection, downwards drawn down (mm)")
     left.set_title(f"{_SPAN:.0f} m beam, f₁ = {_beam(1).frequencies_hz[0]:.2f} Hz, 100 kN", fontsize="medium")
     # the amplification curves: all four dampings faint, the chosen one bold
+    alpha_speed = _alpha_speed(_beam(1, span=_CURVE_SPAN))
     for value in _DAMPING.values():
-        right.plot(_ALPHAS, _daf_curve(value), color="0.8", lw=1)
-    (curve,) = right.plot(_ALPHAS, _daf_curve(0.0), color=plots.COLORS[0], lw=2, label="chosen damping")
+        _daf_response(value).plot(right, alpha_speed=alpha_speed, color="0.8", lw=1)
+    chosen = _daf_response(0.0).plot(
+        right, alpha_speed=alpha_speed, color=plots.COLORS[0], lw=2, label="chosen damping"
+    )
+    curve = chosen["line"]
     (mark,) = right.plot([0.0], [1.0], "o", color=plots.COLORS[1], ms=8, label="chosen speed")
     right.axhline(1.0, color="0.6", lw=0.8)
     right.set(xlim=(0.0, 1.5), ylim=(0.9, 1.85), xlabel="α = V/(2f₁L)", ylabel="dynamic amplification")
@@ -138,7 +151,7 @@ def _explorer_setup(live, status):
         x = speed * run.time[k]
         on = x <= _SPAN
         force.set_data([x], [-1e3 * np.interp(x, _SHAPE_X, w) if on else 0.0])
-        curve.set_ydata(_daf_curve(zeta))
+        _daf_response(zeta).plot(alpha_speed=alpha_speed, artists=chosen)
         closed = moving_force(_beam(_CURVE_MODES, zeta), speed, _FORCE)
         daf = float(closed.amplification[0])
         mark.set_data([alpha], [daf])
@@ -235,7 +248,10 @@ def _resonance_setup(live, status):
         ax.axvline(kmh[0], color=plots.COLORS[1], lw=1.2, ls=(0, (4, 2 * i)), label=f"V = f₁d/{i}")
         for i in range(1, _ORDERS + 1)
     ]
-    (line,) = ax.plot(kmh, _envelope(18.0, 20.0, 4.0), color=plots.COLORS[0], lw=2, label="amplification")
+    drawn = plot_amplification(
+        _TRAIN_SPEEDS, _envelope(18.0, 20.0, 4.0), ax, color=plots.COLORS[0], lw=2, label="amplification"
+    )
+    line = drawn["line"]
     ax.axhline(1.0, color="0.6", lw=0.8)
     ax.set(xlim=_TRAIN_KMH, xlabel="V (km/h)", ylabel="largest midspan deflection / static")
     ax.set_yscale("log")
@@ -252,7 +268,7 @@ def _resonance_setup(live, status):
     def redraw(v):
         d, L, f1 = float(v["coach_length"]), float(v["span"]), float(v["frequency_hz"])
         daf = _envelope(d, L, f1)
-        line.set_ydata(daf)
+        plot_amplification(_TRAIN_SPEEDS, daf, artists=drawn)
         resonances = codes.resonance_speeds(f1, d, _ORDERS)
         for mark, speed in zip(marks, resonances, strict=True):
             mark.set_xdata([3.6 * speed, 3.6 * speed])
@@ -343,12 +359,6 @@ def _model_runs(speed: float) -> dict:
     }
 
 
-def _body_acceleration(run) -> np.ndarray:
-    """The car body's vertical acceleration, m/s²: the car's own, or the mean of the four sprung masses."""
-    labels = [label for label in run.vehicle_labels if label.endswith("body z")]
-    return np.mean([run.vehicle_acceleration(label) for label in labels], axis=0)
-
-
 def _models_controls():
     return {"speed_kmh": slider("speed V (km/h)", 200.0, 40.0, 350.0, 5.0, fmt=".0f")}
 
@@ -356,15 +366,16 @@ def _models_controls():
 def _models_setup(live, status):
     histories, bars, comfort = live.axes[0]
     length = _car_models()["vertical car"].length
-    static = _model_runs(200.0 / 3.6)["moving forces"]
+    first = _model_runs(200.0 / 3.6)
     xs = _SPAN + length + _RUN_ON
-    histories.plot(
-        static.speed * static.time, 1e3 * static.static_deflection, "k--", lw=1, label="slow crossing"
-    )
-    lines = [
-        histories.plot([], [], color=plots.COLORS[i], lw=1.6, label=name)[0]
+    # each model's deflection, the slow crossing (dashed) drawn once with the first
+    charts = [
+        first[name].plot(histories, static=i == 0, color=plots.COLORS[i], lw=1.6, label=name)
         for i, name in enumerate(_MODEL_NAMES)
     ]
+    # the slow crossing is the same at every speed: drawn once, not moved (it is no animated artist)
+    charts = [{"line": chart["line"]} for chart in charts]
+    lines = [chart["line"] for chart in charts]
     histories.set(xlim=(0.0, xs), ylim=(11.0, -10.0), xlabel="leading axle's position (m)")
     histories.set_ylabel("midspan deflection (mm)")
     histories.legend(loc="upper left", fontsize=7, ncol=2)  # above the line: upward, where little goes
@@ -383,7 +394,13 @@ def _models_setup(live, status):
     for (name, value), style in zip(levels.items(), (":", "--", "-"), strict=True):
         comfort.axhline(value, color="0.4", ls=style, lw=1)
         comfort.text(xs, value, f"{name} ", fontsize=7, va="bottom", ha="right", color="0.3")
-    body = [comfort.plot([], [], color=plots.COLORS[i], lw=1.4, label=_MODEL_NAMES[i])[0] for i in (2, 3)]
+    body_charts = [
+        first[_MODEL_NAMES[i]].plot(
+            comfort, quantity="body acceleration", color=plots.COLORS[i], lw=1.4, label=_MODEL_NAMES[i]
+        )
+        for i in (2, 3)
+    ]
+    body = [chart["line"] for chart in body_charts]
     comfort.set(xlim=(0.0, xs), ylim=(-0.6, 2.2), xlabel="leading axle's position (m)")
     comfort.set_ylabel("body acceleration (m/s²)")
     comfort.legend(loc="center right", fontsize=7)
@@ -396,19 +413,17 @@ def _models_setup(live, status):
         speed = kmh / 3.6
         runs = _model_runs(speed)
         dafs = []
-        for line, rect, name in zip(lines, rects, _MODEL_NAMES, strict=True):
+        for chart, rect, name in zip(charts, rects, _MODEL_NAMES, strict=True):
             run = runs[name]
-            line.set_data(speed * run.time, 1e3 * run.deflection)
+            run.plot(artists=chart)
             rect.set_height(run.amplification)
             dafs.append(run.amplification)
         factor = codes.en1991_real_train_factor(speed, _SPAN, f1)
         annex.set_ydata([factor, factor])
         peaks = []
-        for line, name in zip(body, ("sprung masses", "vertical car"), strict=True):
-            run = runs[name]
-            a = _body_acceleration(run)
-            line.set_data(speed * run.time, a)
-            peaks.append(float(np.abs(a).max()))
+        for chart, name in zip(body_charts, ("sprung masses", "vertical car"), strict=True):
+            runs[name].plot(quantity="body acceleration", artists=chart)
+            peaks.append(float(np.abs(runs[name].body_acceleration).max()))
         status.value = (
             f"V = {kmh:.0f} km/h (α = {speed / (2 * f1 * _SPAN):.3f}; the bogies' resonance f₁·19 m at "
             f"{3.6 * f1 * 2 * _CAR.semi_bogie_spacing:.0f} km/h) · amplification: "

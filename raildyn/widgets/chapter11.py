@@ -21,7 +21,7 @@ from scipy import stats
 
 from raildyn import plots
 from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force
-from raildyn.stability.linear import critical_speed
+from raildyn.stability import critical_speed
 from raildyn.validation.measured import LERELVA_PANEL, NSB92_LOADS, NSB92_SPACINGS, lerelva_case
 from raildyn.validation.metrics import compare
 from raildyn.validation.uncertainty import sobol_indices

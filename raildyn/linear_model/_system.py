@@ -1,33 +1,10 @@
-"""One protocol for every linear model of raildyn, and the one system every model assembles into.
+"""The assembled equations of a linear model: :class:`LinearSystem`, and its matrices at one speed.
 
-Every linear model — the wheelset of chapter 5, the bogie and the lateral car of
-chapter 7, the vertical passenger car, the freight car and the locomotive of
-chapter 6, and each model the later chapters add — follows
-:class:`LinearModel`:
-
-* ``linear_system()`` → :class:`LinearSystem`, the assembled equations
-  M q̈ + (C₀ + C₁/V) q̇ + K q = G_K w(t) + G_C ẇ(t), with w the track
-  irregularities met by the wheels (rail heights, alignment, cross-level);
-* ``matrices(speed)`` → :class:`SystemMatrices`: M, C(V), K and the input
-  matrices G_K, G_C at one speed;
-* ``state_space(speed, outputs=..., derivative=...)`` → a
-  ``control.StateSpace`` from the track inputs to the outputs, so that root
-  loci, Bode plots and frequency responses come from python-control;
-* ``replace(**changes)`` → a validated copy with some parameters changed.
-
-The speed V is given in exactly one place: the call that evaluates the model.
-Linear creep forces are proportional to creepages, which are velocities divided
-by V, so the wheel–rail damping is C₁/V; models without creep (the vertical
-cars) have C₁ = 0 and give the same matrices at every speed.
-
-:class:`Assembler` builds a :class:`LinearSystem` spring by spring: every
-spring k (damper c) acts on a relative displacement d = g·q − h·w, so it adds
-k g gᵀ to K and k g hᵀ to G_K (c to C₀ and G_C).
+Part of :mod:`raildyn.linear_model` (see its docstring for the protocol); import the names from there.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 from dataclasses import replace as _dataclass_replace
 from typing import Protocol, runtime_checkable
@@ -35,22 +12,13 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 
 from raildyn import _checks
+from raildyn.constants import MAXIMUM_FREQUENCY
 from raildyn.vibration import first_order_matrix
 
-__all__ = [
-    "INPUT_KINDS",
-    "Assembler",
-    "LinearModel",
-    "LinearModelBase",
-    "LinearSystem",
-    "RailWheelset",
-    "SystemMatrices",
-    "as_linear_system",
-]
+__all__ = ["INPUT_KINDS", "LinearSystem", "RailWheelset", "SystemMatrices"]
 
+# What a track input can be (documented where the package exports it, raildyn.linear_model.INPUT_KINDS)
 INPUT_KINDS = ("vertical", "alignment", "cross_level")
-"""What a track input can be: a rail height (on the rail given by ``input_rails``), the alignment
-(lateral position of the track centreline) or the cross-level (left rail height − right rail height), m."""
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
@@ -118,16 +86,13 @@ def _mass_matrix(name: str, value) -> np.ndarray:
     return M
 
 
-_OMEGA_MAX = 1.0e7  # rad/s, the highest frequency of a frequency response (1.6 MHz)
-
-
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
 class LinearSystem:
     """A linear model: M q̈ + (C₀ + C₁/V) q̇ + K q = G_K w(t) + G_C ẇ(t).
 
     Input j is the track met at distance ``input_positions[j]`` behind the
     leading axle, so that at speed V it arrives τ_j = d_j/V later; its kind is
-    ``input_kinds[j]`` (one of :data:`INPUT_KINDS`) and, for a rail height, its
+    ``input_kinds[j]`` (one of :data:`raildyn.linear_model.INPUT_KINDS`) and, for a rail height, its
     rail ``input_rails[j]`` (+1 left, −1 right, 0 both).
 
     Attributes
@@ -479,8 +444,8 @@ class LinearSystem:
         Parameters
         ----------
         omega : array_like, (n_ω,)
-            rad/s, at least one, each in [0, 1e7]: far above any mode of a vehicle, and low
-            enough that ω²M cannot overflow.
+            rad/s, at least one, each in [0, :data:`~raildyn.constants.MAXIMUM_FREQUENCY`] (10⁶):
+            far above any mode of a vehicle, and low enough that ω²M cannot overflow.
         speed : float
             V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`] (the creep damping depends on it).
         output : see :meth:`output_vector`
@@ -492,8 +457,8 @@ class LinearSystem:
         ndarray, complex, (n_ω, q)
         """
         w = _checks.array("omega", omega, ndim=1, low=0.0, allow_empty=False)
-        if w.max() > _OMEGA_MAX:
-            raise ValueError(f"omega must be at most {_OMEGA_MAX:g} rad/s, got {w.max()!r}")
+        if w.max() > MAXIMUM_FREQUENCY:
+            raise ValueError(f"omega must be at most {MAXIMUM_FREQUENCY:g} rad/s, got {w.max()!r}")
         d = _checks.integer("derivative", derivative, low=0, high=2)
         o = self.output_vector(output)
         mats = self.matrices(speed)
@@ -556,406 +521,3 @@ def _wheelsets(value, labels) -> tuple:
             for k in (0, 1):
                 _checks.integer(f"wheelsets[{i}][{k}]", item[k], low=0, high=n - 1)
     return tuple(tuple(item) for item in value)
-
-
-@runtime_checkable
-class LinearModel(Protocol):
-    """What every linear model of raildyn offers (see the module docstring).
-
-    A parameter set (a frozen dataclass) becomes a linear model by defining
-    ``linear_system()`` and inheriting :class:`LinearModelBase`, which supplies
-    the rest from it.
-    """
-
-    def linear_system(self) -> LinearSystem:
-        """The assembled equations of motion with their track inputs."""
-        ...
-
-    def matrices(self, speed) -> SystemMatrices:
-        """M, C(V), K, G_K, G_C at speed V.
-
-        Parameters
-        ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
-
-        Returns
-        -------
-        SystemMatrices
-        """
-        ...
-
-    def state_space(self, speed, outputs=None, derivative: int = 0):
-        """A ``control.StateSpace`` from the track inputs to the outputs at speed V.
-
-        Parameters
-        ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
-        outputs : sequence, optional
-            Output specifications (coordinate labels by default).
-        derivative : {0, 1, 2}
-            Displacement, velocity or acceleration outputs.
-
-        Returns
-        -------
-        control.StateSpace
-        """
-        ...
-
-    def replace(self, **changes) -> LinearModel:
-        """A validated copy with some parameters changed.
-
-        Parameters
-        ----------
-        **changes
-            Parameter names and their new values.
-
-        Returns
-        -------
-        LinearModel
-        """
-        ...
-
-
-class LinearModelBase:
-    """The protocol's methods for a frozen-dataclass parameter set that defines ``linear_system()``."""
-
-    def __init__(self):
-        # Only the base itself: every model is a dataclass whose generated __init__ replaces this one,
-        # so that a stray argument is refused by name.
-        pass
-
-    def linear_system(self) -> LinearSystem:  # pragma: no cover - every subclass defines it
-        """The assembled equations; defined by each model.
-
-        Returns
-        -------
-        LinearSystem
-        """
-        raise NotImplementedError
-
-    def matrices(self, speed) -> SystemMatrices:
-        """M, C(V), K, G_K, G_C at the speed V.
-
-        Parameters
-        ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
-
-        Returns
-        -------
-        SystemMatrices
-        """
-        return self.linear_system().matrices(speed)
-
-    def state_space(self, speed, outputs=None, derivative: int = 0):
-        """The model at speed V as a ``control.StateSpace`` (see :meth:`LinearSystem.state_space`).
-
-        Parameters
-        ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
-        outputs : sequence, optional
-            Output specifications (coordinate labels by default).
-        derivative : {0, 1, 2}
-            Displacement, velocity or acceleration outputs.
-
-        Returns
-        -------
-        control.StateSpace
-        """
-        return self.linear_system().state_space(speed, outputs, derivative)
-
-    def replace(self, **changes):
-        """A copy with some fields changed, validated again by the dataclass.
-
-        Parameters
-        ----------
-        **changes
-            Field names and their new values.
-
-        Returns
-        -------
-        The same type as the model.
-        """
-        return _dataclass_replace(self, **changes)
-
-
-def as_linear_system(model) -> LinearSystem:
-    """The :class:`LinearSystem` of a linear model, or the system itself.
-
-    Parameters
-    ----------
-    model : LinearModel or LinearSystem
-
-    Returns
-    -------
-    LinearSystem
-
-    Raises
-    ------
-    TypeError
-        If ``model`` does not follow :class:`LinearModel`.
-    """
-    if isinstance(model, LinearSystem):
-        return model
-    _checks.not_a_class("model", model, "a linear model")
-    if isinstance(model, LinearModel):
-        system = model.linear_system()
-        if isinstance(system, LinearSystem):
-            return system
-        raise TypeError(
-            f"model.linear_system() must return a LinearSystem, got {type(system).__name__} "
-            f"(model of type {type(model).__name__})"
-        )
-    raise TypeError(f"model must be a raildyn linear model (LinearModel), got {type(model).__name__}")
-
-
-class _AffineFamily:
-    """The matrices M, C₀, C₁ and K of ``make(*p)`` for many parameter vectors p at once.
-
-    A model's matrices are often affine in the parameters a study moves: in the conicity (the creep
-    stiffness 2af₁₁λ/r₀, and the gravitational stiffnesses Wε/a and −Waϑ₀ whose ε and ϑ₀ follow λ:
-    :func:`raildyn.wheelset.creep_terms`) and in each spring, with no product of two of them. Then
-    A(p) = A(p₀) + Σᵢ (pᵢ − p₀ᵢ) ∂A/∂pᵢ, each slope from one assembly at ``origin`` moved to ``far``
-    in that parameter alone: a sweep over many points assembles the model 2 + len(p) times. The
-    point halfway between ``origin`` and ``far`` checks the plane to round-off (1e-12 of each
-    matrix): it sees both a curve along one parameter and a product of two. Where the check fails,
-    :attr:`affine` is False and every point is assembled.
-
-    ``make(*p)`` returns a linear model or its system. :attr:`assembled` maps each point assembled
-    here (a tuple) to its :class:`LinearSystem`.
-    """
-
-    _NAMES = ("M", "C0", "C1", "K")
-
-    def __init__(self, make, origin, far):
-        self.make = make
-        self.origin = np.asarray(origin, dtype=float)
-        far = np.asarray(far, dtype=float)
-        self.assembled = {tuple(self.origin.tolist()): as_linear_system(make(*self.origin))}
-        base = self.assembled[tuple(self.origin.tolist())]
-        self.base = {n: getattr(base, n) for n in self._NAMES}
-        self.slopes = []
-        for i in range(self.origin.size):
-            p = self.origin.copy()
-            p[i] = far[i]
-            moved = self.assembled.setdefault(tuple(p.tolist()), as_linear_system(make(*p)))
-            self.slopes.append(
-                {n: (getattr(moved, n) - self.base[n]) / (far[i] - self.origin[i]) for n in self._NAMES}
-            )
-        middle = 0.5 * (self.origin + far)
-        check = self.assembled.setdefault(tuple(middle.tolist()), as_linear_system(make(*middle)))
-        guess = self._plane(middle[None])
-        self.affine = all(
-            np.abs(guess[n][0] - getattr(check, n)).max() <= 1e-12 * np.abs(getattr(check, n)).max()
-            for n in self._NAMES
-        )
-
-    def _plane(self, points: np.ndarray) -> dict:
-        step = points - self.origin
-        return {
-            n: self.base[n] + sum(step[:, i, None, None] * slope[n] for i, slope in enumerate(self.slopes))
-            for n in self._NAMES
-        }
-
-    def constant(self, name: str) -> bool:
-        """Whether matrix ``name`` ("M", "C0", "C1", "K") stays put as every parameter moves (affine only)."""
-        return self.affine and not any(np.any(slope[name]) for slope in self.slopes)
-
-    def stacks(self, points) -> dict:
-        """{"M", "C0", "C1", "K"}: each (m, n, n), the model's matrices at each row of ``points``."""
-        points = np.atleast_2d(np.asarray(points, dtype=float))
-        if self.affine:
-            return self._plane(points)
-        systems = [as_linear_system(self.make(*p)) for p in points]
-        return {n: np.stack([getattr(s, n) for s in systems]) for n in self._NAMES}
-
-
-_MAX_INPUTS = 10_000
-
-
-class Assembler:
-    """Builds a :class:`LinearSystem` element by element.
-
-    Parameters
-    ----------
-    labels : sequence of str
-        Names of the coordinates (at least one, each once, none empty).
-    n_inputs : int
-        Number of track inputs q, in [0, 10 000] (one per wheel of a long train is far fewer).
-
-    Examples
-    --------
-    Two masses on springs, the lower one on the track:
-
-    >>> asm = Assembler(["body z", "wheel z"], n_inputs=1)
-    >>> asm.mass("body z", 1000.0); asm.mass("wheel z", 100.0)
-    >>> asm.element({"body z": 1.0, "wheel z": -1.0}, 1e5, 2e3)
-    >>> asm.element({"wheel z": 1.0}, 1e7, inputs={0: 1.0})
-    >>> asm.system().GK[:, 0]
-    array([       0., 10000000.])
-    """
-
-    def __init__(self, labels: Sequence[str], n_inputs: int = 0):
-        self.labels = list(_checks.strings("labels", labels, unique=True))
-        n = len(self.labels)
-        if n == 0:
-            raise ValueError("labels must name at least one coordinate, got an empty sequence")
-        q = _checks.integer("n_inputs", n_inputs, low=0, high=_MAX_INPUTS)
-        self.M = np.zeros((n, n))
-        self.C0 = np.zeros((n, n))
-        self.C1 = np.zeros((n, n))
-        self.K = np.zeros((n, n))
-        self.GK = np.zeros((n, q))
-        self.GC = np.zeros((n, q))
-        self.KW = np.zeros((q, q))  # the inputs' own block, known while every input enters by an element
-        self.CW = np.zeros((q, q))
-        self.input_block_known = True
-        self.wheelsets: list = []
-
-    def index(self, label: str) -> int:
-        """Position of a coordinate.
-
-        Parameters
-        ----------
-        label : str
-            One of the labels.
-
-        Returns
-        -------
-        int
-        """
-        return self.labels.index(_checks.choice("label", label, self.labels))
-
-    def vector(self, terms: dict) -> np.ndarray:
-        """g with g·q = Σ coefficient · coordinate.
-
-        Parameters
-        ----------
-        terms : dict of str to float
-            Label → finite coefficient.
-
-        Returns
-        -------
-        ndarray, (n,)
-        """
-        return self._vector(terms, "terms")
-
-    def _vector(self, terms, name: str) -> np.ndarray:
-        """:meth:`vector`, its messages naming ``name`` (the caller's parameter)."""
-        _checks.instance(name, terms, dict, "dict of label to coefficient")
-        g = np.zeros(len(self.labels))
-        for label, value in terms.items():
-            i = self.labels.index(_checks.choice(f"{name} key", label, self.labels))
-            g[i] += _checks.scalar(f"{name}[{label!r}]", value)
-        return g
-
-    def mass(self, label: str, value: float) -> None:
-        """Add a mass (kg) or inertia (kg·m²) on one coordinate.
-
-        Parameters
-        ----------
-        label : str
-            One of the labels.
-        value : float
-            > 0.
-        """
-        i = self.index(label)
-        self.M[i, i] += _checks.positive("value", value)
-
-    def element(self, body: dict, stiffness, damping=0.0, inputs: dict | None = None) -> None:
-        """A spring and damper on d = Σ body coefficients · q − Σ input coefficients · w.
-
-        Parameters
-        ----------
-        body : dict of str to float
-            Coefficients of the coordinates in the deflection.
-        stiffness, damping : float
-            N/m and N·s/m (per radian for rotations), each ≥ 0 (a negative stiffness, such
-            as gravity's, enters through :meth:`block`).
-        inputs : dict of int to float, optional
-            Coefficients of the track inputs in the deflection (input index in [0, q − 1]).
-        """
-        g = self._vector(body, "body")
-        k = _checks.nonnegative("stiffness", stiffness)
-        c = _checks.nonnegative("damping", damping)
-        h = np.zeros(self.GK.shape[1])
-        if inputs is not None:
-            _checks.instance("inputs", inputs, dict, "dict of input index to coefficient or None")
-            for j, value in inputs.items():
-                h[self._input("inputs key", j)] += _checks.scalar(f"inputs[{j!r}]", value)
-        self.K += k * np.outer(g, g)
-        self.C0 += c * np.outer(g, g)
-        self.GK += k * np.outer(g, h)
-        self.GC += c * np.outer(g, h)
-        self.KW += k * np.outer(h, h)
-        self.CW += c * np.outer(h, h)
-
-    def _input(self, name: str, j) -> int:
-        """A track input index in [0, q − 1]."""
-        q = self.GK.shape[1]
-        if q == 0:
-            raise ValueError(f"{name}: this assembly has no track inputs (n_inputs = 0), got {j!r}")
-        return _checks.integer(name, j, low=0, high=q - 1)
-
-    def block(self, labels: Sequence[str], *, C1=None, K=None) -> None:
-        """Add a block of creep damping C₁ (N) and stiffness (N/m) on some coordinates.
-
-        Parameters
-        ----------
-        labels : sequence of str
-            The coordinates of the block's rows and columns, each once.
-        C1, K : array_like, (k, k), optional
-            Finite, of either sign (creep and gravity terms).
-        """
-        rows = [
-            self.labels.index(_checks.choice("labels", s, self.labels))
-            for s in _checks.strings("labels", labels, unique=True)
-        ]
-        k = len(rows)
-        C1 = None if C1 is None else _checks.array("C1", C1, shape=(k, k))
-        K = None if K is None else _checks.array("K", K, shape=(k, k))
-        idx = np.ix_(rows, rows)
-        if C1 is not None:
-            self.C1[idx] += C1
-        if K is not None:
-            self.K[idx] += K
-
-    def track_force(self, label: str, j: int, stiffness: float, damping: float = 0.0) -> None:
-        """Add G_K[label, j] (N/m) and G_C[label, j] (N·s/m): a force on one coordinate per unit of input j.
-
-        Parameters
-        ----------
-        label : str
-            One of the labels.
-        j : int
-            Index of the track input, in [0, q − 1].
-        stiffness, damping : float
-            N/m and N·s/m per unit input, finite, of either sign.
-        """
-        i = self.index(label)
-        j = self._input("j", j)
-        self.GK[i, j] += _checks.scalar("stiffness", stiffness)
-        self.GC[i, j] += _checks.scalar("damping", damping)
-        self.input_block_known = False  # a force with no element: the reaction on the input is not known
-
-    def system(self, **inputs) -> LinearSystem:
-        """The assembled :class:`LinearSystem`.
-
-        Parameters
-        ----------
-        **inputs
-            ``input_positions``, ``input_kinds``, ``input_rails``, ``gravity_load``.
-
-        Returns
-        -------
-        LinearSystem
-        """
-        known = self.input_block_known
-        return LinearSystem(
-            self.M, self.C0, self.C1, self.K, self.GK, self.GC, tuple(self.labels),
-            wheelsets=tuple(self.wheelsets), input_stiffness=self.KW if known else None,
-            input_damping=self.CW if known else None, **inputs,
-        )  # fmt: skip
