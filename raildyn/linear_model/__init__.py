@@ -28,9 +28,9 @@ k g gᵀ to K and k g hᵀ to G_K (c to C₀ and G_C).
 parameters (conicity, spring stiffnesses) from a few assemblies.
 
 The package's modules, each imported through this one: ``_system`` (:class:`LinearSystem`,
-:class:`SystemMatrices`, :class:`RailWheelset`), ``_protocol`` (:class:`LinearModel`, :class:`LinearModelBase`,
-:func:`as_linear_system`), ``_assembler`` (:class:`Assembler`) and ``_family``
-(:class:`AffineFamily`).
+:class:`SystemMatrices`, :class:`RailWheelset`), ``_protocol`` (:class:`LinearModel`,
+:class:`LinearModelBase`, :func:`as_linear_system`), ``_assembler`` (:class:`Assembler`) and
+``_family`` (:class:`AffineFamily`).
 """
 
 from raildyn.linear_model._assembler import Assembler
