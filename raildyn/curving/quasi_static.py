@@ -28,13 +28,13 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from scipy.integrate import solve_ivp
 from scipy.optimize import root
 
 from raildyn import _checks
 from raildyn.constants import GRAVITY
 from raildyn.curving.steady import SteadyCurving, steady_curving
 from raildyn.errors import SolverError
+from raildyn.integrators.runner import solve_ivp
 from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, Curve, balance_speed, unbalanced_acceleration
 from raildyn.wheelset import (
     NonlinearLateral,
@@ -195,7 +195,8 @@ def _rescue(model: NonlinearLateral, start: np.ndarray, V: float, R: float, D: f
         if k == len(trials):  # the dynamics on the arc, from the best guess so far, then Powell once more
             arc = Curve(radius=R, cant=D, transition_length=0.0, arc_length=2 * _HALF_ARC, straight=0.0)
             on_arc = dataclasses.replace(model, speed=V, curve=arc, start=_HALF_ARC)
-            run = solve_ivp(on_arc.rhs, (0.0, _SETTLE), np.concatenate([best, rest]), rtol=1e-6, atol=1e-9)
+            run = solve_ivp(on_arc.rhs, (0.0, _SETTLE), np.concatenate([best, rest]), rtol=1e-6, atol=1e-9,
+                            label=f"the settling run at V = {V:g} m/s in R = {R:g} m")  # fmt: skip
             trials.append(("hybr", run.y[:n, -1]))
         method, guess = trials[k]
         found = root(residual, guess, method=method, tol=1e-12)

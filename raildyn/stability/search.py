@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn.errors import SolverError
 from raildyn.linear_model import LinearSystem, as_linear_system
 
 __all__ = ["CRITICAL_SPEED_STATUSES", "MAX_SCAN_SPEEDS", "CriticalSpeeds", "StateMatrices", "critical_speeds"]
@@ -274,7 +275,7 @@ def _crossings(state: StateMatrices, low: float, high: float, tol: float, scan: 
         bisect[i] = b[i] - a[i] > 0.5 * before[i]
         before[i] = width
     else:  # pragma: no cover - every three steps at least halve each bracket
-        raise RuntimeError("the critical-speed refinement did not converge")
+        raise SolverError("the critical-speed refinement did not converge")
     speed[todo], status[todo] = 0.5 * (a + b), CRITICAL_SPEED_STATUSES[0]
     return status, speed
 
