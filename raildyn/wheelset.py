@@ -250,7 +250,7 @@ def _hertz_kalker(wheel_load, rolling_radius):
 
     The patch is Hertz's (:func:`raildyn.contact.hertz.hertz_contact`, curvature 1/r₀ along
     and across the track: a circle) and the coefficients are Kalker's
-    (:func:`raildyn.contact.creep.creep_coefficients`), both for the steel of
+    (:func:`raildyn.contact.kalker.creep_coefficients`), both for the steel of
     :mod:`raildyn.constants`.
     """
     patch = hertz_contact(
@@ -282,7 +282,7 @@ class Wheelset(LinearModelBase):
     1998) on a cone; the conicity (0.15) and contact half-spacing (0.75 m, the
     usual value for standard gauge) are our choice, not the benchmark's, which
     specifies real profiles. Creep coefficients are per contact patch: Kalker's
-    (:func:`raildyn.contact.creep.creep_coefficients`) on Hertz's patch under half the
+    (:func:`raildyn.contact.kalker.creep_coefficients`) on Hertz's patch under half the
     axle load, wheel radius 0.46 m on a rail crowned with the same radius.
 
     Attributes
@@ -462,7 +462,7 @@ def creep_terms(ws: Wheelset) -> CreepTerms:
 
     From Kalker's linear law summed over the two wheels (Garg & Dukkipati 1984,
     ch. 5; Wickens 2003, ch. 2), with the creepages of
-    :func:`raildyn.contact.creep.wheelset_creepages` to first order:
+    :func:`raildyn.contact.creepages.wheelset_creepages` to first order:
 
     * lateral:  F_y = −2f₂₂(ẏ/V − ψ) − 2f₂₃(ψ̇/V − εy/(a r₀)) − (Wε/a) y
     * yaw:      M_z = −2af₁₁(aψ̇/V + λy/r₀) + 2f₂₃(ẏ/V − ψ) − 2f₃₃(ψ̇/V − εy/(a r₀)) + W a ϑ₀ ψ
@@ -895,14 +895,14 @@ class _Table:
 def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
     """Lateral force (N) and yaw moment (N·m) of the rails on a wheelset, nonlinear; arrays broadcast.
 
-    Each wheel has the creepages of :func:`raildyn.contact.creep.wheelset_creepages` with
+    Each wheel has the creepages of :func:`raildyn.contact.creepages.wheelset_creepages` with
     r_L,R = r₀ ± Δr(y)/2 and its own tread contact angle ϑ_L(y), ϑ_R(y)
     (:func:`tread_contact_angles`): γ_x = ∓(aψ̇/V + Δr/(2r₀)), γ_y = ẏ/V − ψ and the spin
     φ = ψ̇ cos ϑ/V ∓ sin ϑ/r₀ on the left/right wheel. Kalker's linear forces of each wheel,
     F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ and M_z = f₂₃γ_y − f₃₃φ, are scaled together by the
-    saturation of Shen, Hedrick and Elkins (:func:`raildyn.contact.creep.saturation_factor`)
+    saturation of Shen, Hedrick and Elkins (:func:`raildyn.contact.saturation.saturation_factor`)
     of that wheel's resultant √(F_x² + F_y²) at μ W/2, as
-    :func:`raildyn.contact.creep.shen_hedrick_elkins` scales them. Gravity acts through the
+    :func:`raildyn.contact.saturation.shen_hedrick_elkins` scales them. Gravity acts through the
     contact-angle difference, and the flange as a spring beyond the clearance.
 
     One simplification: the spins ∓ sin ϑ_c/r₀ of the centred wheelset (ϑ_c its tread angles at

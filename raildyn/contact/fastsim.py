@@ -38,7 +38,7 @@ import numpy as np
 from raildyn import _checks
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
 from raildyn.contact import _fastsim_kernel
-from raildyn.contact.creep import _ratio, kalker_coefficients
+from raildyn.contact.kalker import _ratio, kalker_coefficients
 
 __all__ = ["FastsimResult", "Flexibilities", "fastsim", "fastsim_reference", "flexibilities"]
 
@@ -55,7 +55,7 @@ class FastsimResult:
     Attributes
     ----------
     fx, fy : float or ndarray
-        Creep forces on the wheel (N), sign convention of :mod:`raildyn.contact.creep`.
+        Creep forces on the wheel (N), sign convention of :mod:`raildyn.contact.kalker`.
     mz : float or ndarray
         Spin moment about the contact normal (N m).
     x, y : ndarray or None

@@ -452,7 +452,7 @@ def cooperrider_car() -> Car:
       vehicle's weight over four axles. The contact patch is Hertz's under
       half the axle load with curvature 1/r₀ along and across the track (a
       circle, as the Manchester default assumes), and Kalker's coefficients
-      come from :func:`raildyn.contact.creep.creep_coefficients` with
+      come from :func:`raildyn.contact.kalker.creep_coefficients` with
       G = E/(2(1 + ν)) = 82.7 GPa (E = 210 GPa, ν = 0.27).
 
     Left out, having no counterpart in the 15 coordinates of :class:`Car`:
