@@ -794,7 +794,7 @@ def profile_contact(
 ) -> WheelRailContact:
     """The nonlinear contact of a wheel and rail profile pair: tread tables and the flange.
 
-    The rigid contact of chapter 4 (:func:`raildyn.contact.profiles.contact_geometry`, with
+    The rigid contact of chapter 4 (:func:`raildyn.contact.geometry.contact_geometry`, with
     the wheelset's roll) is followed outwards from the centre in steps of 0.25 mm until a
     contact angle passes 40°: there the contact jumps from the tread to the flange, and that
     shift is the flangeway clearance e. Inside it, the rolling-radius and contact-angle
@@ -813,7 +813,7 @@ def profile_contact(
     flange_stiffness : float
         k_f, the lateral stiffness of the rail under flange contact, N/m (≥ 0).
     gauge, tape_distance : float
-        m, as for :func:`raildyn.contact.profiles.contact_geometry`.
+        m, as for :func:`raildyn.contact.geometry.contact_geometry`.
 
     Returns
     -------

@@ -8,8 +8,9 @@
 * :mod:`~raildyn.contact.polach` — Polach's law and its slip-speed-dependent friction.
 * :mod:`~raildyn.contact.creepages` — the creepages of a wheelset's two wheels.
 * :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states.
-* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles; contact points, Δr(y),
-  contact angles and the equivalent conicity of a profile pair.
+* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles.
+* :mod:`~raildyn.contact.geometry` — contact points, Δr(y), contact angles and the equivalent
+  conicity of a profile pair.
 * :mod:`~raildyn.contact.conicity` — equivalent conicity of a tabulated Δr(y): EN 15302's kinematic
   method and the first harmonic.
 * :mod:`~raildyn.contact.comparison` — every creep law on one sweep of lateral creepage, side by side.
@@ -21,6 +22,13 @@ from raildyn.contact.comparison import CREEP_LAWS, LateralCreepCurves, lateral_c
 from raildyn.contact.conicity import harmonic_conicity, kinematic_conicity
 from raildyn.contact.creepages import WheelsetCreepages, wheelset_creepages
 from raildyn.contact.fastsim import FastsimResult, Flexibilities, fastsim, fastsim_reference, flexibilities
+from raildyn.contact.geometry import (
+    ContactGeometry,
+    contact_angles,
+    contact_geometry,
+    equivalent_conicity,
+    rolling_radius_difference,
+)
 from raildyn.contact.hertz import HertzCoefficients, HertzContact, hertz_coefficients, hertz_contact
 from raildyn.contact.johnson_vermeulen import (
     JohnsonVermeulenCoefficients,
@@ -37,18 +45,7 @@ from raildyn.contact.kalker import (
     kalker_linear,
 )
 from raildyn.contact.polach import POLACH_DRY, POLACH_WET, PolachAdhesion, polach, polach_adhesion
-from raildyn.contact.profiles import (
-    ContactGeometry,
-    RailProfile,
-    WheelProfile,
-    conical_wheel,
-    contact_angles,
-    contact_geometry,
-    equivalent_conicity,
-    rolling_radius_difference,
-    s1002_wheel,
-    uic60_rail,
-)
+from raildyn.contact.profiles import RailProfile, WheelProfile, conical_wheel, s1002_wheel, uic60_rail
 from raildyn.contact.saturation import carter, carter_coefficient, saturation_factor, shen_hedrick_elkins
 
 __all__ = [
