@@ -7,7 +7,8 @@
 * :mod:`~raildyn.contact.johnson_vermeulen` — Johnson and Vermeulen's law, with its own coefficients.
 * :mod:`~raildyn.contact.polach` — Polach's law and its slip-speed-dependent friction.
 * :mod:`~raildyn.contact.creepages` — the creepages of a wheelset's two wheels.
-* :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states.
+* :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states;
+  :mod:`~raildyn.contact.fastsim_python` — the same in numpy and plain Python, for the tests.
 * :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles.
 * :mod:`~raildyn.contact.geometry` — contact points, Δr(y), contact angles and the equivalent
   conicity of a profile pair.
@@ -21,7 +22,8 @@ The elastic constants default to the steel of :mod:`raildyn.constants` everywher
 from raildyn.contact.comparison import CREEP_LAWS, LateralCreepCurves, lateral_creep_curves
 from raildyn.contact.conicity import harmonic_conicity, kinematic_conicity
 from raildyn.contact.creepages import WheelsetCreepages, wheelset_creepages
-from raildyn.contact.fastsim import FastsimResult, Flexibilities, fastsim, fastsim_reference, flexibilities
+from raildyn.contact.fastsim import FastsimResult, Flexibilities, fastsim, flexibilities
+from raildyn.contact.fastsim_python import fastsim_reference
 from raildyn.contact.geometry import (
     ContactGeometry,
     contact_angles,
