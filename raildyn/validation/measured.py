@@ -26,7 +26,7 @@ from scipy import signal
 from raildyn import _checks
 from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force
 from raildyn.constants import GRAVITY
-from raildyn.validation.identification import WeighInMotionFit, weigh_in_motion
+from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion
 from raildyn.validation.metrics import Agreement, compare
 
 __all__ = [
