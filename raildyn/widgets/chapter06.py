@@ -101,7 +101,7 @@ def ride_run(track_label: str, speed_kmh: float, seed: int) -> RideRun:
 
     The car is ``raildyn.vehicles.MANCHESTER_VERTICAL``. The spectrum comes from
     :func:`raildyn.vehicles.response.response_spectrum` and :func:`raildyn.ride.ride_quality`;
-    the run from :func:`raildyn.vehicles.response.time_response` along a 1.5 km track
+    the run from :func:`raildyn.vehicles.time_domain.time_response` along a 1.5 km track
     synthesized from the same spectrum (wavelengths 1–300 m, 0.25 m samples), repeated
     periodically, and :func:`raildyn.ride.ride_quality_history`.
 
