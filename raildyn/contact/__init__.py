@@ -10,8 +10,8 @@
 * :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states;
   :mod:`~raildyn.contact.fastsim_python` — the same in numpy and plain Python, for the tests.
 * :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles.
-* :mod:`~raildyn.contact.geometry` — contact points, Δr(y), contact angles and the equivalent
-  conicity of a profile pair.
+* :mod:`~raildyn.contact.geometry` — wheel and rail profiles as data, and a pair's contact points,
+  Δr(y), contact angles and equivalent conicity.
 * :mod:`~raildyn.contact.conicity` — equivalent conicity of a tabulated Δr(y): EN 15302's kinematic
   method and the first harmonic.
 * :mod:`~raildyn.contact.comparison` — every creep law on one sweep of lateral creepage, side by side.
@@ -26,6 +26,8 @@ from raildyn.contact.fastsim import FastsimResult, Flexibilities, fastsim, flexi
 from raildyn.contact.fastsim_python import fastsim_reference
 from raildyn.contact.geometry import (
     ContactGeometry,
+    RailProfile,
+    WheelProfile,
     contact_angles,
     contact_geometry,
     equivalent_conicity,
@@ -47,7 +49,7 @@ from raildyn.contact.kalker import (
     kalker_linear,
 )
 from raildyn.contact.polach import POLACH_DRY, POLACH_WET, PolachAdhesion, polach, polach_adhesion
-from raildyn.contact.profiles import RailProfile, WheelProfile, conical_wheel, s1002_wheel, uic60_rail
+from raildyn.contact.profiles import conical_wheel, s1002_wheel, uic60_rail
 from raildyn.contact.saturation import carter, carter_coefficient, saturation_factor, shen_hedrick_elkins
 
 __all__ = [

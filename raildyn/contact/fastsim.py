@@ -471,14 +471,3 @@ def _result(state: _State, fx, fy, mz, **fields) -> FastsimResult:
         fields["y"] = np.broadcast_to((state.b[e] * state.eta_y)[..., None], grid).copy()
         fields["pz"] = state.p0[e][e] * state.shape
     return FastsimResult(scalar_or(fx), scalar_or(fy), scalar_or(mz), **result, **fields)
-
-
-def __getattr__(name: str):
-    # fastsim_reference moved to raildyn.contact.fastsim_python (issue 33); it is still reached here,
-    # raildyn.contact.fastsim.fastsim_reference, for one issue, then this goes. Looked up on use, not
-    # imported, because raildyn.contact.fastsim_python imports this module.
-    if name == "fastsim_reference":
-        from raildyn.contact import fastsim_python
-
-        return fastsim_python.fastsim_reference
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

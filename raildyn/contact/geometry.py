@@ -1,5 +1,13 @@
 """The rigid contact geometry of a wheelset on straight track: contact points, Δr(y), contact angles.
 
+Coordinates (SI, m) in the plane of the wheelset axle, one profile per side:
+``u`` runs across the rail and is positive towards the track centre (the
+flange side of the wheel, the gauge side of the rail). A wheel profile
+(:class:`WheelProfile`) gives its rolling radius r(u) (the tape circle is u = 0,
+radius r₀); a rail profile (:class:`RailProfile`) gives the height z(u) of the head
+(the crown at u = 0, z = 0), already tilted by the rail inclination. The named
+profiles (conical, S1002, 60E1) are in :mod:`raildyn.contact.profiles`.
+
 For a lateral shift y of the wheelset (positive to the left) the left wheel's
 point u_w sits above the left rail's point u_r = u_w − y − d, where d is the
 offset of the tape circle from the rail centre line in the centred position.
@@ -10,8 +18,7 @@ considered (no contact-point lead or lag): the geometry is that of a wheelset
 square to the track.
 
 :func:`contact_geometry` returns :class:`ContactGeometry`; :func:`rolling_radius_difference`,
-:func:`contact_angles` and :func:`equivalent_conicity` are its parts a chapter needs alone. The
-profiles and their coordinates are in :mod:`raildyn.contact.profiles`.
+:func:`contact_angles` and :func:`equivalent_conicity` are its parts a chapter needs alone.
 """
 
 from __future__ import annotations
@@ -22,18 +29,138 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.contact.conicity import kinematic_conicity
-from raildyn.contact.profiles import (
-    RailProfile,
-    WheelProfile,
-)
 
 __all__ = [
     "ContactGeometry",
+    "RailProfile",
+    "WheelProfile",
     "contact_angles",
     "contact_geometry",
     "equivalent_conicity",
     "rolling_radius_difference",
 ]
+
+
+_RADIUS_MAX = 2.0  # m; the largest railway wheels (steam locomotives' drivers) have a radius of ~1.1 m
+_CANT_MAX = 0.1  # rail inclination (slope); in track 1:20 to 1:40, or upright
+
+
+def _grid(name: str, value, *, uniform: bool = False) -> np.ndarray:
+    """A 1-D finite array of at least two strictly increasing positions (m); ``uniform``: equally spaced."""
+    u = _checks.increasing(name, value)
+    if u.size < 2:
+        raise ValueError(f"{name} must hold at least two positions, got {u.size}")
+    steps = np.diff(u)
+    if uniform and np.ptp(steps) > 1e-6 * steps.mean():
+        raise ValueError(
+            f"{name} must be uniformly spaced (the contact search steps along it), "
+            f"got steps from {steps.min():.6g} to {steps.max():.6g} m"
+        )
+    return u
+
+
+@dataclass(frozen=True)
+class WheelProfile:
+    """A wheel profile sampled on a fine lateral grid.
+
+    Attributes
+    ----------
+    name : str
+        What the profile is, for labels.
+    lateral : ndarray
+        u (m), strictly increasing (at least two samples), positive towards the flange.
+    radius : ndarray
+        Rolling radius r(u) (m), one per ``lateral``, each in (0, 2] m (the largest railway
+        wheels have a radius of about 1.1 m).
+    nominal_radius : float
+        r₀ = r(0) (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "wheel_radius").
+    """
+
+    name: str
+    lateral: np.ndarray
+    radius: np.ndarray
+    nominal_radius: float
+
+    def __post_init__(self):
+        _checks.instance("name", self.name, str)
+        u = _grid("lateral", self.lateral)
+        r = _checks.array("radius", self.radius, shape=(u.size,), low=0.0, low_open=True)
+        if r.max() > _RADIUS_MAX:
+            raise ValueError(f"radius must be <= {_RADIUS_MAX} m (a railway wheel), got {r.max()!r}")
+        r0 = _checks.plausible("nominal_radius", self.nominal_radius, "wheel_radius")
+        object.__setattr__(self, "lateral", u)
+        object.__setattr__(self, "radius", r)
+        object.__setattr__(self, "nominal_radius", r0)
+
+    def radius_at(self, u):
+        """Rolling radius r(u) by linear interpolation.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Lateral position on the wheel, m, positive towards the flange, within the
+            profile (``lateral[0]`` to ``lateral[-1]``).
+
+        Returns
+        -------
+        float or ndarray
+            r, m.
+
+        Examples
+        --------
+        >>> from raildyn.contact.profiles import conical_wheel
+        >>> round(float(conical_wheel(1 / 20).radius_at(3e-3)), 6)  # r₀ + λu
+        0.46015
+        """
+        u = _checks.array("u", u)
+        if u.size and (u.min() < self.lateral[0] or u.max() > self.lateral[-1]):
+            raise ValueError(
+                f"u must lie within the profile, [{self.lateral[0]:.6g}, {self.lateral[-1]:.6g}] m, "
+                f"got {u.min() if u.min() < self.lateral[0] else u.max()!r}"
+            )
+        return np.interp(u, self.lateral, self.radius)
+
+
+@dataclass(frozen=True)
+class RailProfile:
+    """A rail head profile, tilted by its inclination, sampled on a fine lateral grid.
+
+    Attributes
+    ----------
+    name : str
+        What the profile is, for labels.
+    lateral : ndarray
+        u (m), strictly increasing and uniformly spaced (the contact search steps along it),
+        positive towards the track centre (gauge side).
+    height : ndarray
+        z(u) (m), one per ``lateral``, 0 at the crown (the highest point; all zeros is a flat head).
+    inclination : float
+        Rail cant (rad), e.g. atan(1/40), in [0, atan(1/10)] (in track 1:20 to 1:40, or upright).
+    gauge_face : float
+        u of the gauge face 14 mm below the top (m), used to place the rails: on the gauge
+        side of the profile, 0 < u ≤ ``lateral[-1]``.
+    """
+
+    name: str
+    lateral: np.ndarray
+    height: np.ndarray
+    inclination: float
+    gauge_face: float
+
+    def __post_init__(self):
+        _checks.instance("name", self.name, str)
+        u = _grid("lateral", self.lateral, uniform=True)
+        z = _checks.array("height", self.height, shape=(u.size,))
+        if abs(z.max()) > 1e-6:
+            raise ValueError(
+                f"height must be 0 at the crown (its highest point), got a maximum of {z.max()!r} m"
+            )
+        cant = _checks.scalar("inclination", self.inclination, low=0.0, high=float(np.arctan(_CANT_MAX)))
+        face = _checks.scalar("gauge_face", self.gauge_face, low=0.0, high=float(u[-1]), low_open=True)
+        object.__setattr__(self, "lateral", u)
+        object.__setattr__(self, "height", z)
+        object.__setattr__(self, "inclination", cant)
+        object.__setattr__(self, "gauge_face", face)
 
 
 @dataclass(frozen=True)
