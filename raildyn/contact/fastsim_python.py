@@ -38,7 +38,8 @@ def _fastsim_numpy(
     n_y: int = 20,
     fields: bool = True,
 ) -> FastsimResult:
-    """:func:`fastsim` with the march in numpy: the version before the compiled kernel, kept as reference.
+    """:func:`~raildyn.contact.fastsim.fastsim` with the march in numpy: the version before the compiled
+    kernel, kept as reference.
 
     All strips of all states step together, a Python loop over the n_x cells of a strip.
     The tests hold the kernel to it and the chapter 4 benchmark times the kernel against it.
@@ -120,11 +121,12 @@ def _fastsim_numpy(
 def fastsim_reference(
     longitudinal, lateral, spin, normal_load, friction, a, b, l1, l2, l3, n_x=20, n_y=20
 ) -> FastsimResult:
-    """The same algorithm as :func:`fastsim` written cell by cell in plain Python, for one state.
+    """The same algorithm as :func:`~raildyn.contact.fastsim.fastsim` written cell by cell in plain Python,
+    for one state.
 
     It exists as the independent, straightforward implementation that the tests
     and the chapter 4 benchmark compare the compiled one with; it takes the
-    flexibilities directly. Its input is checked as that of :func:`fastsim`, and huge
+    flexibilities directly. Its input is checked as that of :func:`~raildyn.contact.fastsim.fastsim`, and huge
     creepages are scaled down in the same way.
 
     Parameters
@@ -138,9 +140,9 @@ def fastsim_reference(
     friction : float
         μ, in (0, 1] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "friction").
     a, b : float
-        Semi-axes (m), > 0, with 0.1 ≤ a/b ≤ 10 as for :func:`fastsim`.
+        Semi-axes (m), > 0, with 0.1 ≤ a/b ≤ 10 as for :func:`~raildyn.contact.fastsim.fastsim`.
     l1, l2, l3 : float
-        Flexibilities (m/Pa), > 0, e.g. from :func:`flexibilities`.
+        Flexibilities (m/Pa), > 0, e.g. from :func:`~raildyn.contact.fastsim.flexibilities`.
     n_x, n_y : int
         Cells per strip and strips, 2 to 1000.
 

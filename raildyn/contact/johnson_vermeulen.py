@@ -164,8 +164,8 @@ def johnson_vermeulen(
     −f₂₂γ_y with these coefficients, 15–23 % above Kalker's for a circle.
 
     The cubic in χ is, with F̂ = 3χ, Shen, Hedrick and Elkins's F̂ − F̂²/3 + F̂³/27: their law
-    (:func:`shen_hedrick_elkins`) applies this saturation to Kalker's linear forces, spin
-    included, so the two differ at zero spin only through the creep coefficients.
+    (:func:`~raildyn.contact.saturation.shen_hedrick_elkins`) applies this saturation to Kalker's
+    linear forces, spin included, so the two differ at zero spin only through the creep coefficients.
 
     Parameters
     ----------

@@ -300,7 +300,3 @@ def kalker_linear(longitudinal, lateral, spin, coefficients: CreepCoefficients) 
         fy=_out(-f.f22 * eta - f.f23 * phi + 0.0 * xi),
         mz=_out(f.f23 * eta - f.f33 * phi + 0.0 * xi),
     )
-
-
-"""Dry rail (Polach 2005, Table 2)."""
-"""Wet rail (Polach 2005, Table 2)."""

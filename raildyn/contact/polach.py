@@ -204,9 +204,11 @@ class PolachAdhesion:
 # on wet rail (values as transcribed in the RailBreak repository, tools/eval/plant_ref.py, and
 # reproduced by the parameter formulas of Open Rails' Axle.cs at μ₀ = 0.55 and 0.30).
 POLACH_DRY = PolachAdhesion(k_a=1.0, k_s=0.4, static_friction=0.55, limit_ratio=0.4, decay_rate=0.6)
+"""Dry rail (Polach 2005, Table 2)."""
 
 
 POLACH_WET = PolachAdhesion(k_a=0.3, k_s=0.1, static_friction=0.30, limit_ratio=0.4, decay_rate=0.2)
+"""Wet rail (Polach 2005, Table 2)."""
 
 
 def polach_adhesion(

@@ -111,8 +111,9 @@ def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
     limit : float
         μN, N (> 0).
     check : bool
-        Check the input (default); False for a caller that has (as :func:`wheelset_creepages`):
-        then nothing is checked and bad input gives bad numbers.
+        Check the input (default); False for a caller that has (as
+        :func:`~raildyn.contact.creepages.wheelset_creepages`): then nothing is checked and bad input
+        gives bad numbers.
 
     Returns
     -------
@@ -142,7 +143,8 @@ def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coef
     The linear forces include spin (Fy = −f₂₂γ_y − f₂₃φ). With F̂ = |F_lin|/(μN), the resultant
     √(Fx² + Fy²) becomes μN(F̂ − F̂²/3 + F̂³/27) for F̂ ≤ 3 and μN beyond; Fx, Fy and Mz are all
     scaled by the same factor. The cubic is Vermeulen and Johnson's 1 − (1 − F̂/3)³
-    (:func:`johnson_vermeulen`), applied to Kalker's coefficients instead of theirs.
+    (:func:`~raildyn.contact.johnson_vermeulen.johnson_vermeulen`), applied to Kalker's coefficients
+    instead of theirs.
 
     Parameters
     ----------

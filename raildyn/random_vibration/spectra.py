@@ -2,7 +2,8 @@
 and RMS, spectral moments, zero-upcrossing and peak rates, and the irregularity factor.
 
 Every PSD is one-sided per rad/s (per rad/m in space), the convention the package docstring of
-:mod:`raildyn.random_vibration` sets out; :func:`convert_psd` brings other forms to it.
+:mod:`raildyn.random_vibration` sets out; :func:`~raildyn.random_vibration.convert_psd` brings other
+forms to it.
 """
 
 from __future__ import annotations

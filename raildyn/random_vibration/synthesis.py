@@ -1,8 +1,10 @@
 """Sample functions from a PSD and the PSD back from a record.
 
-:func:`synthesis_lines` and :func:`synthesize` build stationary records for time-domain simulation
-as sums of harmonics with random phases; :func:`welch_psd` estimates the PSD of a record
-(:class:`Spectrum`), one-sided per rad/s as everywhere in :mod:`raildyn.random_vibration`.
+:func:`~raildyn.random_vibration.synthesis_lines` and :func:`~raildyn.random_vibration.synthesize`
+build stationary records for time-domain simulation as sums of harmonics with random phases;
+:func:`~raildyn.random_vibration.welch_psd` estimates the PSD of a record
+(:class:`~raildyn.random_vibration.Spectrum`), one-sided per rad/s as everywhere in
+:mod:`raildyn.random_vibration`.
 """
 
 from __future__ import annotations

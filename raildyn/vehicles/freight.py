@@ -520,7 +520,7 @@ def gdu_ore_car() -> FreightCar:
       under load, so the spring plane is 0.505 m above the rail and the centre
       of gravity 1.647 m above it.
     * Two wedges per nest on a 37.5° slope, spring 344 kN/m compressed from
-      0.1857 to 0.1381 m (16.4 kN), μ = 0.10: by :func:`wedge_friction_force`,
+      0.1857 to 0.1381 m (16.4 kN), μ = 0.10: by :func:`~raildyn.vehicles.wedges.wedge_friction_force`,
       4.91 kN per nest with the bolster going down and 3.78 kN going up;
       raildyn's symmetric law takes their mean, 4.34 kN.
 
