@@ -1,11 +1,13 @@
-"""The creepages and creep-force laws of chapter 4 in one import (kept for one issue, then it goes).
+"""The creepages and creep-force laws of chapter 4 in one import, under their former home.
 
-The code moved (issue 33) to :mod:`~raildyn.contact.kalker` (sign convention, creep coefficients,
-Kalker's linear theory), :mod:`~raildyn.contact.saturation` (Carter, Shen–Hedrick–Elkins),
+The code lives in :mod:`~raildyn.contact.kalker` (sign convention, creep coefficients, Kalker's
+linear theory), :mod:`~raildyn.contact.saturation` (Carter, Shen–Hedrick–Elkins),
 :mod:`~raildyn.contact.johnson_vermeulen`, :mod:`~raildyn.contact.polach` and
-:mod:`~raildyn.contact.creepages`. This module re-exports every public name it had, so that
-``raildyn.contact.creep.X`` keeps working for one issue; import from :mod:`raildyn.contact` instead.
+:mod:`~raildyn.contact.creepages`. This module imports every public name it used to define, so that
+``raildyn.contact.creep.X`` keeps working; import from :mod:`raildyn.contact` instead.
 """
+
+# This module is the old home of the creep laws, kept for one issue (issue 33) and then deleted.
 
 from raildyn.contact.creepages import WheelsetCreepages, wheelset_creepages
 from raildyn.contact.johnson_vermeulen import (
