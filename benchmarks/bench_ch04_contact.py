@@ -23,7 +23,7 @@ from benchmarks.common import Case, timed, widget_case
 from raildyn.contact import fastsim, fastsim_reference, flexibilities
 from raildyn.widgets import chapter04
 
-_fastsim_numpy = importlib.import_module("raildyn.contact.fastsim")._fastsim_numpy  # the function shadows it
+_fastsim_numpy = importlib.import_module("raildyn.contact.fastsim_python")._fastsim_numpy
 
 STATES = 10_000
 SUBSET = 200  # states timed with the per-cell loop, scaled by STATES / SUBSET

@@ -79,7 +79,7 @@ MAIN_ENTRY_POINTS = [
     # chapters 5–7: the one protocol of every linear model
     "raildyn.linear_model.Assembler",
     # chapter 6 (vehicle response, ride comfort)
-    "raildyn.vehicles.response.periodic_profile",
+    "raildyn.vehicles.time_domain.periodic_profile",
     "raildyn.ride.ride_quality",
     # chapter 7
     "raildyn.stability.mode_sweep",

@@ -17,7 +17,7 @@ from raildyn.contact import (
     kalker_coefficients,
     shen_hedrick_elkins,
 )
-from raildyn.contact.creep import _elliptic_bcd
+from raildyn.contact.johnson_vermeulen import _elliptic_bcd
 
 
 @pytest.mark.parametrize("m", [0.0, 1e-6, 0.05, 0.0999, 0.1001, 0.5, 0.9, 0.99])

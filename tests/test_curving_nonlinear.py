@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 from raildyn.constants import GRAVITY
-from raildyn.contact.profiles import conical_wheel, contact_geometry, s1002_wheel, uic60_rail
+from raildyn.contact.geometry import contact_geometry
+from raildyn.contact.profiles import conical_wheel, s1002_wheel, uic60_rail
 from raildyn.curving import curve_entry, curving_map, quasi_static_curving, steady_curving
 from raildyn.curving.climb import nadal_limit
 from raildyn.errors import SolverError

@@ -3,7 +3,7 @@
 Each derivation is held to its model's ``matrices(V)`` over random parameter sets (hypothesis: every
 parameter scaled by a factor in [0.3, 3]) at three speeds, to round-off (tests/derivation_helpers.py says
 why 1e-12 of each matrix's largest entry). These tests found one bug: the friction dampers
-c = 4F/(π ω X) came from :func:`raildyn.vehicles.freight.wedge_energy_per_cycle`, which integrated the
+c = 4F/(π ω X) came from :func:`raildyn.vehicles.wedges.wedge_energy_per_cycle`, which integrated the
 ideal law by the midpoint rule, and the kinks of F |cos φ| left an error of 4.1e-9 of the energy; it now
 returns the closed form 4 F X, and the trucks with friction agree to round-off like the others.
 """

@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 
 from raildyn.contact import fastsim
 
-module = importlib.import_module("raildyn.contact.fastsim")  # the function shadows the module
+module = importlib.import_module("raildyn.contact.fastsim_python")  # where _fastsim_numpy lives
 TOL = 1e-12
 # Plus this much absolute: results in the subnormal range (from creepages like 5e-324, which
 # hypothesis finds) have lost their relative precision; no physical force or field is this small.

@@ -20,11 +20,9 @@ from raildyn.vehicles.freight import (
     LABELS,
     FreightCar,
     RockAndRoll,
-    WedgeFriction,
     rock_and_roll,
-    wedge_energy_per_cycle,
-    wedge_friction_force,
 )
+from raildyn.vehicles.wedges import WedgeFriction, wedge_energy_per_cycle, wedge_friction_force
 from raildyn.vibration import modal_analysis
 
 CAR = FreightCar()

@@ -10,14 +10,13 @@ from scipy import integrate, stats
 
 from raildyn.bridge import SimplySupportedBeam
 from raildyn.train import davis_resistance
+from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion
 from raildyn.validation.identification import (
     CoastDownFit,
     FreeDecayFit,
-    WeighInMotionFit,
     bridge_free_vibration,
     coast_down,
     free_decay,
-    weigh_in_motion,
 )
 
 # Coverage: of N independent 95 % intervals, the number holding the truth is Binomial(N, 0.95). The

@@ -1,11 +1,17 @@
 """Chapter 4: wheel–rail rolling contact.
 
 * :mod:`~raildyn.contact.hertz` — Hertz's normal contact: ellipse, m and n, pressure, approach, stiffness.
-* :mod:`~raildyn.contact.creep` — creepages of a wheelset, Kalker's coefficients and linear theory,
-  Carter, Johnson–Vermeulen (with its own creep coefficients), Shen–Hedrick–Elkins and Polach.
-* :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states.
-* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles; contact points, Δr(y),
-  contact angles and the equivalent conicity of a profile pair.
+* :mod:`~raildyn.contact.kalker` — Kalker's creep coefficients and linear theory, the sign convention
+  and the creep forces every law returns.
+* :mod:`~raildyn.contact.saturation` — Carter's 2-D law and Shen–Hedrick–Elkins's saturation.
+* :mod:`~raildyn.contact.johnson_vermeulen` — Johnson and Vermeulen's law, with its own coefficients.
+* :mod:`~raildyn.contact.polach` — Polach's law and its slip-speed-dependent friction.
+* :mod:`~raildyn.contact.creepages` — the creepages of a wheelset's two wheels.
+* :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states;
+  :mod:`~raildyn.contact.fastsim_python` — the same in numpy and plain Python, for the tests.
+* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles.
+* :mod:`~raildyn.contact.geometry` — wheel and rail profiles as data, and a pair's contact points,
+  Δr(y), contact angles and equivalent conicity.
 * :mod:`~raildyn.contact.conicity` — equivalent conicity of a tabulated Δr(y): EN 15302's kinematic
   method and the first harmonic.
 * :mod:`~raildyn.contact.comparison` — every creep law on one sweep of lateral creepage, side by side.
@@ -15,43 +21,36 @@ The elastic constants default to the steel of :mod:`raildyn.constants` everywher
 
 from raildyn.contact.comparison import CREEP_LAWS, LateralCreepCurves, lateral_creep_curves
 from raildyn.contact.conicity import harmonic_conicity, kinematic_conicity
-from raildyn.contact.creep import (
-    KALKER_NU,
-    POLACH_DRY,
-    POLACH_WET,
-    CreepCoefficients,
-    CreepForces,
-    JohnsonVermeulenCoefficients,
-    KalkerCoefficients,
-    PolachAdhesion,
-    WheelsetCreepages,
-    carter,
-    carter_coefficient,
-    creep_coefficients,
-    johnson_vermeulen,
-    johnson_vermeulen_coefficients,
-    kalker_coefficients,
-    kalker_linear,
-    polach,
-    polach_adhesion,
-    saturation_factor,
-    shen_hedrick_elkins,
-    wheelset_creepages,
-)
-from raildyn.contact.fastsim import FastsimResult, Flexibilities, fastsim, fastsim_reference, flexibilities
-from raildyn.contact.hertz import HertzCoefficients, HertzContact, hertz_coefficients, hertz_contact
-from raildyn.contact.profiles import (
+from raildyn.contact.creepages import WheelsetCreepages, wheelset_creepages
+from raildyn.contact.fastsim import FastsimResult, Flexibilities, fastsim, flexibilities
+from raildyn.contact.fastsim_python import fastsim_reference
+from raildyn.contact.geometry import (
     ContactGeometry,
     RailProfile,
     WheelProfile,
-    conical_wheel,
     contact_angles,
     contact_geometry,
     equivalent_conicity,
     rolling_radius_difference,
-    s1002_wheel,
-    uic60_rail,
 )
+from raildyn.contact.hertz import HertzCoefficients, HertzContact, hertz_coefficients, hertz_contact
+from raildyn.contact.johnson_vermeulen import (
+    JohnsonVermeulenCoefficients,
+    johnson_vermeulen,
+    johnson_vermeulen_coefficients,
+)
+from raildyn.contact.kalker import (
+    KALKER_NU,
+    CreepCoefficients,
+    CreepForces,
+    KalkerCoefficients,
+    creep_coefficients,
+    kalker_coefficients,
+    kalker_linear,
+)
+from raildyn.contact.polach import POLACH_DRY, POLACH_WET, PolachAdhesion, polach, polach_adhesion
+from raildyn.contact.profiles import conical_wheel, s1002_wheel, uic60_rail
+from raildyn.contact.saturation import carter, carter_coefficient, saturation_factor, shen_hedrick_elkins
 
 __all__ = [
     "CREEP_LAWS",

@@ -16,16 +16,11 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
-from raildyn.contact.creep import (
-    CreepCoefficients,
-    carter,
-    creep_coefficients,
-    johnson_vermeulen,
-    kalker_linear,
-    polach,
-    shen_hedrick_elkins,
-)
 from raildyn.contact.fastsim import fastsim
+from raildyn.contact.johnson_vermeulen import johnson_vermeulen
+from raildyn.contact.kalker import CreepCoefficients, creep_coefficients, kalker_linear
+from raildyn.contact.polach import polach
+from raildyn.contact.saturation import carter, shen_hedrick_elkins
 
 __all__ = ["CREEP_LAWS", "LateralCreepCurves", "lateral_creep_curves"]
 
@@ -168,7 +163,7 @@ def lateral_creep_curves(
 
     Carter's law takes Kalker's f₂₂ as its initial slope, so it, SHE, Polach and
     FASTSIM start on the linear theory; Vermeulen and Johnson start on their own,
-    steeper slope G a b C₂₂ (:func:`~raildyn.contact.creep.johnson_vermeulen_coefficients`),
+    steeper slope G a b C₂₂ (:func:`~raildyn.contact.johnson_vermeulen.johnson_vermeulen_coefficients`),
     and at zero spin that is all that parts them from SHE, whose saturation is their
     cubic. All saturate at μN except the linear theory.
 

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.contact.creep import wheelset_creepages
+from raildyn.contact.creepages import wheelset_creepages
 from raildyn.linear_model import as_linear_system
 from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, unbalanced_acceleration
 from raildyn.wheelset import curve_loads, track_on_arc

@@ -5,7 +5,7 @@ its axle at Ω = V/r₀. The velocity of the wheel's material at each contact po
 divided by V, is the creepage there (the rail is at rest): its component along the wheel's rolling
 direction is γ_x, across it γ_y, and the angular velocity along the contact normal, tilted by the
 contact angle ϑ, gives the spin φ (Kalker 1967; Garg & Dukkipati 1984, ch. 4). Linearised in the
-small quantities, these are the creepages of :func:`raildyn.contact.creep.wheelset_creepages`; the tests
+small quantities, these are the creepages of :func:`raildyn.contact.creepages.wheelset_creepages`; the tests
 hold the two together.
 """
 
@@ -46,7 +46,7 @@ class CreepageDerivation:
         γ_x, γ_y (dimensionless) and φ (1/m) at the left and the right contact.
     symbols : tuple of sympy.Symbol
         V, ẏ, ψ, ψ̇, r_L, r_R, r₀, a, ϑ_L, ϑ_R: the arguments of
-        :func:`raildyn.contact.creep.wheelset_creepages`, in its order (m/s, m/s, rad, rad/s, m, m, m, m,
+        :func:`raildyn.contact.creepages.wheelset_creepages`, in its order (m/s, m/s, rad, rad/s, m, m, m, m,
         rad, rad). Every free symbol of the three matrices is among them.
     steps : tuple of Step
         The derivation, step by step, for a notebook to show.
@@ -159,7 +159,7 @@ def creepages() -> CreepageDerivation:
         γ_x,L = (r₀ − r_L)/r₀ − aψ̇/V,  γ_x,R = (r₀ − r_R)/r₀ + aψ̇/V,  γ_y = ẏ/V − ψ,
         φ_L = ψ̇/V − ϑ_L/r₀,  φ_R = ψ̇/V + ϑ_R/r₀.
 
-    :func:`raildyn.contact.creep.wheelset_creepages` writes the spin's second term as sin ϑ/r (the
+    :func:`raildyn.contact.creepages.wheelset_creepages` writes the spin's second term as sin ϑ/r (the
     book's form), which differs from ϑ/r₀ only in terms of second order.
 
     Returns

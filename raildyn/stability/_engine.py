@@ -11,8 +11,8 @@ runner, :func:`raildyn.integrators.runner.dormand_prince_batch`, which advances 
 parameter sets) at once.
 
 The wheel–rail forces are those of :func:`raildyn.wheelset.contact_forces`, term for term: each
-wheel's creepages of :func:`raildyn.contact.creep.wheelset_creepages` with r = r₀ ± Δr(y)/2 and its
-tread angle ϑ(y), Kalker's linear forces scaled by :func:`raildyn.contact.creep.saturation_factor`,
+wheel's creepages of :func:`raildyn.contact.creepages.wheelset_creepages` with r = r₀ ± Δr(y)/2 and its
+tread angle ϑ(y), Kalker's linear forces scaled by :func:`raildyn.contact.saturation.saturation_factor`,
 gravity through Δϑ(y), and the flange spring beyond the clearance; Δr, Δϑ and the tread angles
 from the cone or from the tables of :func:`raildyn.wheelset.profile_contact`. A model this engine
 cannot hold (nonlinear suspension elements, whose force laws are Python functions, or contact

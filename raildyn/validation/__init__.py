@@ -7,7 +7,8 @@ parameters from records, and spreading uncertain parameters into the answer.
 * :mod:`raildyn.validation.acceptance` — the statistics of acceptance tests: percentiles, sliding RMS,
   maxima per section.
 * :mod:`raildyn.validation.identification` — parameters from records by least squares, with confidence
-  intervals: a free decay, a bridge's free vibration, weigh-in-motion, a coast-down.
+  intervals: a free decay, a bridge's free vibration, a coast-down; :mod:`raildyn.validation.bridge_wim`
+  — bridge weigh-in-motion; :mod:`raildyn.validation.fits` — the fit result they all return.
 * :mod:`raildyn.validation.measured` — a measured case: strain at midspan of a railway bridge near
   Trondheim under an NSB class 92 train, and the chapter-10 prediction beside it.
 * :mod:`raildyn.validation.uncertainty` — Monte Carlo prediction bands and Sobol' indices, run on
@@ -15,15 +16,14 @@ parameters from records, and spreading uncertain parameters into the answer.
 """
 
 from raildyn.validation.acceptance import SectionMaxima, SlidingRMS, percentiles, section_maxima, sliding_rms
+from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion
+from raildyn.validation.fits import ParameterFit
 from raildyn.validation.identification import (
     CoastDownFit,
     FreeDecayFit,
-    ParameterFit,
-    WeighInMotionFit,
     bridge_free_vibration,
     coast_down,
     free_decay,
-    weigh_in_motion,
 )
 from raildyn.validation.measured import (
     LERELVA_PANEL,

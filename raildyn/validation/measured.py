@@ -8,7 +8,7 @@ span the 4.17 m between its cross-girders (25 m in six panels). The train is a t
 class 92 diesel multiple unit running towards Heimdal (train 3 of the thesis).
 
 :func:`lerelva_strain` loads the record; :func:`lerelva_case` runs the case study end to end:
-bridge weigh-in-motion (:func:`raildyn.validation.identification.weigh_in_motion`) for the
+bridge weigh-in-motion (:func:`raildyn.validation.bridge_wim.weigh_in_motion`) for the
 speed, the axle pattern and the axle loads; two independent speed estimates; the chapter-10
 prediction (:func:`raildyn.bridge.beam.moving_force` of the NSB 92's axles on the stringer as a
 simply supported span); and its agreement with the measurement
@@ -26,7 +26,7 @@ from scipy import signal
 from raildyn import _checks
 from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force
 from raildyn.constants import GRAVITY
-from raildyn.validation.identification import WeighInMotionFit, weigh_in_motion
+from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion
 from raildyn.validation.metrics import Agreement, compare
 
 __all__ = [
@@ -347,7 +347,7 @@ def lerelva_case(
 ) -> LerelvaCase:
     """The Lerelva case study end to end: identify the train, predict the strain, compare.
 
-    1. Bridge weigh-in-motion (:func:`raildyn.validation.identification.weigh_in_motion`) on the
+    1. Bridge weigh-in-motion (:func:`raildyn.validation.bridge_wim.weigh_in_motion`) on the
        three gauges over the passage, the stringer panel taken as a simply supported span of
        :data:`LERELVA_PANEL`: once with the NSB 92's spacings given (speed, arrival, axle loads),
        once with the spacings free too (the axle pattern).

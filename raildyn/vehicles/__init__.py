@@ -7,11 +7,8 @@ from raildyn.vehicles.freight import (
     GDU_ORE_CAR,
     FreightCar,
     RockAndRoll,
-    WedgeFriction,
     gdu_ore_car,
     rock_and_roll,
-    wedge_energy_per_cycle,
-    wedge_friction_force,
 )
 from raildyn.vehicles.lateral import COOPERRIDER_CAR, MANCHESTER_CAR, Bogie, Car, cooperrider_car
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
@@ -21,16 +18,7 @@ from raildyn.vehicles.locomotive_lateral import (
     ThreeAxleTruck,
     rigid_truck_wavelength,
 )
-from raildyn.vehicles.response import (
-    PeriodicProfile,
-    ResponseSpectrum,
-    TimeResponse,
-    periodic_profile,
-    response_spectrum,
-    rms_over_speeds,
-    time_response,
-    track_frf,
-)
+from raildyn.vehicles.response import ResponseSpectrum, response_spectrum, rms_over_speeds, track_frf
 from raildyn.vehicles.ride_comparison import RideRun, ride_run
 from raildyn.vehicles.three_piece import (
     EMPTY_FREIGHT_CAR,
@@ -39,7 +27,9 @@ from raildyn.vehicles.three_piece import (
     ThreePieceTruck,
     freight_car,
 )
+from raildyn.vehicles.time_domain import PeriodicProfile, TimeResponse, periodic_profile, time_response
 from raildyn.vehicles.vertical import MANCHESTER_VERTICAL, BodyFrequencies, VerticalCar
+from raildyn.vehicles.wedges import WedgeFriction, wedge_energy_per_cycle, wedge_friction_force
 
 __all__ = [
     "COOPERRIDER_CAR",

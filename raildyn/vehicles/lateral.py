@@ -21,7 +21,7 @@ springs, which stand on frames that stay upright.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -29,6 +29,7 @@ from raildyn import _checks, contact
 from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
+from raildyn.vehicles._shared import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
 from raildyn.wheelset import NonlinearLateral, WheelRailContact, Wheelset, add_wheelset
 
 __all__ = ["COOPERRIDER_CAR", "MANCHESTER_CAR", "Bogie", "Car", "cooperrider_car"]
@@ -63,75 +64,6 @@ class _OnTheRails(LinearModelBase):
             WheelRailContact() if contact is None else _checks.instance("contact", contact, WheelRailContact)
         )
         return NonlinearLateral(self.linear_system(), contact, speed)
-
-
-def _replace_through(model, changes: dict, inner: str):
-    """``dataclasses.replace(model, ...)`` where a change that is not the model's own field goes to its
-    field ``inner`` (a truck's wheelset, a car's truck), whose own ``replace`` passes it on again."""
-    own_fields = set(type(model).__dataclass_fields__)
-    own = {k: v for k, v in changes.items() if k in own_fields}
-    rest = {k: v for k, v in changes.items() if k not in own_fields}
-    if rest:
-        own[inner] = (own.get(inner) or getattr(model, inner)).replace(**rest)
-    return replace(model, **own)
-
-
-def _check_body_on_two_trucks(car, spacing: str, truck_half: str, truck_half_length: float) -> None:
-    """The checks every car body on two trucks shares, each naming the field at fault.
-
-    Masses, inertias and the semi-spacing of the trucks in their plausible ranges
-    (:data:`raildyn.constants.PLAUSIBLE_RANGES`); height and roll terms ≥ 0; the semi-spacing of the trucks
-    (field ``spacing``) beyond the truck's half length (its field ``truck_half``), so that
-    the wheelsets of the two trucks do not cross; and the two trucks' roll stiffness 2 k_φ
-    above m g h, the roll moment of the body's weight h above the springs, else it topples.
-    """
-    for name in ("body_mass", "body_yaw_inertia", "body_roll_inertia", spacing):
-        positive(name, getattr(car, name))
-    for name in ("body_height", "roll_stiffness", "roll_damping"):
-        nonnegative(name, getattr(car, name))
-    _checks.plausible("body_mass", car.body_mass, "mass")
-    _checks.plausible_fields(car, "inertia", ("body_yaw_inertia", "body_roll_inertia"))
-    _checks.plausible(spacing, getattr(car, spacing), "vehicle_length")
-    _checks.plausible("body_height", car.body_height, "vehicle_length", low=0.0)
-    if getattr(car, spacing) <= truck_half_length:
-        raise ValueError(
-            f"{spacing} must exceed the truck's {truck_half} ({truck_half_length!r} m) so that the "
-            f"wheelsets of the two trucks do not cross, got {getattr(car, spacing)!r}"
-        )
-    toppling = car.body_mass * GRAVITY * car.body_height
-    if 2 * car.roll_stiffness <= toppling:
-        raise ValueError(
-            f"roll_stiffness {car.roll_stiffness!r} N·m/rad per truck is too soft for body_mass "
-            f"{car.body_mass!r} kg at body_height {car.body_height!r} m: the two trucks' 2 k_φ must "
-            f"exceed m g h = {toppling:.4g} N·m/rad, else the body topples"
-        )
-
-
-def _check_truck_assembly(asm, tag, body, body_yaw, first_input, *, parts=("frame",), axles: int = 2) -> int:
-    """The checks of a truck's ``assemble`` arguments (see :meth:`Bogie.assemble`), each naming its argument.
-
-    ``asm`` must hold the truck's coordinates: "frame{tag} y", "frame{tag} ψ", the yaw
-    "{part}{tag} ψ" of each further part (a bolster) and "wheelset{tag}{k} y/ψ" of its
-    ``axles`` wheelsets, whose alignment inputs start at ``first_input``. Returns ``q/2``,
-    the index of the first cross-level input of the assembly.
-    """
-    _checks.instance("asm", asm, Assembler)
-    _checks.instance("tag", tag, str, "str")
-    labels = [f"frame{tag} y"] + [f"{part}{tag} ψ" for part in parts]
-    labels += [f"wheelset{tag}{k} {q}" for k in range(1, axles + 1) for q in "yψ"]
-    missing = [label for label in labels if label not in asm.labels]
-    if missing:
-        raise ValueError(f"tag {tag!r} names no truck of asm: {missing} are not among its labels")
-    _checks.instance("body", body, dict, "dict of body label to coefficient")
-    for label, coefficient in body.items():
-        if label not in asm.labels:
-            raise ValueError(f"body must name coordinates of asm {asm.labels}, got the key {label!r}")
-        _checks.scalar(f"body[{label!r}]", coefficient)
-    if body_yaw is not None and body_yaw not in asm.labels:
-        raise ValueError(f"body_yaw must be None or a coordinate of asm {asm.labels}, got {body_yaw!r}")
-    half = asm.GK.shape[1] // 2
-    _checks.integer("first_input", first_input, low=0, high=half - axles)
-    return half
 
 
 @dataclass(frozen=True)
@@ -452,7 +384,7 @@ def cooperrider_car() -> Car:
       vehicle's weight over four axles. The contact patch is Hertz's under
       half the axle load with curvature 1/r₀ along and across the track (a
       circle, as the Manchester default assumes), and Kalker's coefficients
-      come from :func:`raildyn.contact.creep.creep_coefficients` with
+      come from :func:`raildyn.contact.kalker.creep_coefficients` with
       G = E/(2(1 + ν)) = 82.7 GPa (E = 210 GPa, ν = 0.27).
 
     Left out, having no counterpart in the 15 coordinates of :class:`Car`:

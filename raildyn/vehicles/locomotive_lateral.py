@@ -53,7 +53,7 @@ from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.suspension import clearance_force
-from raildyn.vehicles.lateral import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
+from raildyn.vehicles._shared import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE
 from raildyn.wheelset import (
     NonlinearLateral,

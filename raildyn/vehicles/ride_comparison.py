@@ -14,12 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks, ride
-from raildyn.vehicles.response import (
-    PeriodicProfile,
-    ResponseSpectrum,
-    response_spectrum,
-    time_response,
-)
+from raildyn.vehicles.response import ResponseSpectrum, response_spectrum
+from raildyn.vehicles.time_domain import PeriodicProfile, time_response
 
 __all__ = ["RideRun", "ride_run"]
 

@@ -1,96 +1,62 @@
 """The single-degree-of-freedom oscillator m x'' + c x' + k x = F(t) (book eq. 1.3).
 
-Free response in every damping regime, the characteristic roots and their locus
-(Fig. 1.4), the logarithmic decrement (eq. 1.17), harmonic and base-excited
-response, and the exact response to a sampled force. SI units: m, kg, s, N, rad/s.
+Free response in every damping regime, the characteristic roots, the logarithmic decrement
+(eq. 1.17), harmonic and base-excited response, and the exact response to a sampled force, as the
+methods of one class, :class:`SDOF`. SI units: m, kg, s, N, rad/s.
 
-Results come as frozen dataclasses: :class:`DecayPeaks`, :class:`FreeVibration`
-(with ``.plot``) and :class:`RootLocus` (with ``.plot``, book Fig. 1.4).
+Its results (:class:`DecayPeaks`, :class:`FreeVibration`, :class:`RootLocus`) are in
+:mod:`raildyn.vibration.sdof_results`; the curves as functions of ξ and r (root locus, decrement,
+magnification, phase, transmissibility) in :mod:`raildyn.vibration.sdof_curves`.
+
+Why this module is longer than 600 lines: it is the one class :class:`SDOF` and the closed form
+its free response is built on; a reader looking up what an oscillator can answer finds every
+method here, and splitting the class across files would hide half of them.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 import scipy.linalg
 import scipy.signal
 
-from raildyn import _checks
 from raildyn._checks import array, integer, nonnegative, positive, scalar, time_grid
+from raildyn.vibration._domain import (
+    _MAX_COUNT,
+    _MAX_PHASE,
+    _RATE,
+    _check_rates,
+    _one_minus_square,
+    _reciprocal,
+    _roots,
+)
+from raildyn.vibration.damped import StateSpaceMatrices, state_space, to_control
+from raildyn.vibration.sdof_curves import (  # noqa: F401  (all but log_decrement: re-exports, see below)
+    RootLocus,
+    damping_ratio_from_decrement,
+    decrement_from_peaks,
+    log_decrement,
+    magnification_factor,
+    phase_angle,
+    root_locus,
+    transmissibility_ratio,
+)
+from raildyn.vibration.sdof_results import DecayPeaks, FreeVibration
 
-if TYPE_CHECKING:  # mdof imports this module, so its classes are named here for the annotations only
-    from raildyn.vibration.mdof import StateSpaceMatrices
+# The results and curves above moved to raildyn.vibration.sdof_results and
+# raildyn.vibration.sdof_curves (issue 33); the ones this module does not use are imported only so
+# that the old paths (raildyn.vibration.sdof.X) keep working for one issue, then they go.
 
-__all__ = [
-    "SDOF",
-    "DecayPeaks",
-    "FreeVibration",
-    "RootLocus",
-    "damping_ratio_from_decrement",
-    "decrement_from_peaks",
-    "log_decrement",
-    "magnification_factor",
-    "phase_angle",
-    "root_locus",
-    "transmissibility_ratio",
-]
+__all__ = ["SDOF"]
 
 # |ξ − 1| at or below this counts as critical damping in SDOF.regime.
 CRITICAL_TOLERANCE = 1e-9
 
-# The domain of an SDOF: k/m (= ω_n², (rad/s)²) within [1/_RATE, _RATE] and c/m (= 2ξω_n, 1/s) at
-# most _RATE. Then ω_n, ξω_n and both roots stay below 1e300, inside floating point with room to
-# spare, and the free response stays finite for every ξ (ξ = 1e200 included).
-_RATE = 1e300
-
-# At most this many maxima, peaks or frequencies in one call: a bound on the memory asked for.
-_MAX_COUNT = 1_000_000
-
-# The largest phase ω_n h (rad) of one time step in forced_response: beyond it the rounding of h
-# alone (1e-16 of it) moves the phase by more than 1e-4 rad, and near 1e16 the one-step matrix
-# exponential stops being finite.
-_MAX_PHASE = 1e12
-
-
-def _check_rates(stiffness_rate: float, damping_rate: float, stiffness_names: str, damping_names: str):
-    """Refuse an SDOF outside its domain (see ``_RATE``), naming the parameters that set each rate."""
-    if not (1.0 / _RATE <= stiffness_rate <= _RATE):
-        raise ValueError(
-            f"{stiffness_names} give omega_n^2 = k/m = {stiffness_rate:.4g} (rad/s)^2; raildyn takes "
-            f"k/m in [1e-300, 1e300] (omega_n from 1e-150 to 1e150 rad/s) so that omega_n^2 and the "
-            "roots stay inside floating point"
-        )
-    if not damping_rate <= _RATE:
-        raise ValueError(
-            f"{damping_names} give c/m = 2 xi omega_n = {damping_rate:.4g} 1/s; raildyn takes c/m "
-            "<= 1e300 1/s so that the roots -xi omega_n ± ... stay inside floating point"
-        )
-
 
 # ---------------------------------------------------------------------------
 # Closed forms shared by the SDOF class and the module-level functions
-
-
-def _one_minus_square(xi):
-    """1 − ξ², written as (1 − ξ)(1 + ξ) so that it keeps its relative accuracy near ξ = 1."""
-    return (1.0 - xi) * (1.0 + xi)
-
-
-def _roots(natural_frequency: float, xi: np.ndarray) -> np.ndarray:
-    """Roots s₁, s₂ = (−ξ ± √(ξ² − 1)) ω_n (eq. 1.9) for an array of ξ; shape (n, 2)."""
-    wn = natural_frequency
-    over = xi > 1.0
-    wd = wn * np.sqrt(np.maximum(_one_minus_square(np.minimum(xi, 1.0)), 0.0))
-    re = 0.0 - xi * wn  # +0.0, not −0.0, for an undamped system
-    # Overdamped: s₂ = −ω_n g and s₁ = −ω_n/g with g = ξ + √(ξ − 1)√(ξ + 1) >= 1 (s₁ s₂ = ω_n²):
-    # no cancellation in s₁ for large ξ, and no ξ² to overflow.
-    g = np.where(over, xi + np.sqrt(np.maximum(xi - 1.0, 0.0)) * np.sqrt(xi + 1.0), 1.0)
-    s1 = np.where(over, -wn / g, re + 1j * wd)
-    s2 = np.where(over, -wn * g, re - 1j * wd)
-    return np.stack([s1, s2], axis=-1)
 
 
 def _decay_pair(wn: float, xi: float, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -115,198 +81,6 @@ def _decay_pair(wn: float, xi: float, t: np.ndarray) -> tuple[np.ndarray, np.nda
     slow = np.exp((-wn / (xi + root)) * t)
     z = 2.0 * b * t
     return slow * 0.5 * (1.0 + np.exp(-z)), slow * (-np.expm1(-z) / (2.0 * b))
-
-
-def _reciprocal(numerator, denominator):
-    """numerator/denominator, with a complex infinity where the denominator is exactly zero.
-
-    Only an undamped system driven exactly at resonance meets a zero, and there
-    the steady amplitude really is unbounded; returning inf avoids a NaN.
-    """
-    num = np.broadcast_to(np.asarray(numerator, dtype=complex), np.shape(denominator))
-    out = np.full(np.shape(denominator), complex(np.inf, 0.0))
-    np.divide(num, denominator, out=out, where=denominator != 0)
-    return out
-
-
-# ---------------------------------------------------------------------------
-# Results
-
-
-@dataclass(frozen=True)
-class DecayPeaks:
-    """Successive maxima of an underdamped free response (book Fig. 1.5).
-
-    Attributes
-    ----------
-    times : ndarray, shape (count,)
-        Times of the maxima, s, one damped period T_d apart.
-    values : ndarray, shape (count,)
-        Displacements there, m (or the unit of x0).
-    """
-
-    times: np.ndarray
-    values: np.ndarray
-
-    def __post_init__(self):
-        times = array("times", self.times, ndim=1, low=0.0)
-        values = array("values", self.values)
-        if values.shape != times.shape:
-            raise ValueError(
-                f"times and values must have the same shape, got {times.shape} and {values.shape}"
-            )
-        object.__setattr__(self, "times", times)
-        object.__setattr__(self, "values", values)
-
-    @property
-    def log_decrement(self) -> float:
-        """δ = ln(x₁/x_{j+1})/j measured over the j periods between the first and the last peak (eq. 1.17).
-
-        Needs at least two peaks; equal to :attr:`~raildyn.vibration.SDOF.log_decrement` to rounding.
-        """
-        return decrement_from_peaks(self.values[0], self.values[-1], cycles=self.values.size - 1)
-
-
-@dataclass(frozen=True)
-class FreeVibration:
-    """The free response of an SDOF system on a time grid, with its envelope and its maxima.
-
-    Built by :meth:`SDOF.free_vibration`; :meth:`plot` draws it as book Fig. 1.5.
-
-    Attributes
-    ----------
-    time : ndarray, shape (n,)
-        t, s.
-    displacement : ndarray, shape (n,)
-        x(t), in the unit of x0 (m).
-    envelope : ndarray, shape (n,)
-        A e^(−ξω_n t) when the system oscillates, else |x(t)|; same unit.
-    peaks : DecayPeaks
-        The first maxima (empty arrays when ξ >= 1: no oscillation, no peaks).
-    """
-
-    time: np.ndarray
-    displacement: np.ndarray
-    envelope: np.ndarray
-    peaks: DecayPeaks
-
-    def __post_init__(self):
-        time = array("time", time_grid("time", self.time), low=0.0)
-        object.__setattr__(self, "time", time)
-        object.__setattr__(self, "displacement", array("displacement", self.displacement, shape=time.shape))
-        object.__setattr__(self, "envelope", array("envelope", self.envelope, shape=time.shape, low=0.0))
-        _checks.instance("peaks", self.peaks, DecayPeaks)
-
-    def plot(self, ax=None, *, artists=None) -> dict:
-        """Draw x(t), the envelope ±A e^(−ξω_n t) and the maxima; or move artists drawn before.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes, optional
-            Where to draw; new axes on a new pyplot figure if None.
-        artists : dict, optional
-            The dict a previous call returned: its lines are moved to this
-            response (``set_data``) instead of drawing new ones, as a widget does.
-
-        Returns
-        -------
-        dict
-            The artists: ``line``, ``upper``, ``lower`` (the envelope) and ``peaks``.
-        """
-        if artists is not None:
-            _checks.instance("artists", artists, dict, "dict returned by an earlier plot")
-            missing = {"line", "upper", "lower", "peaks"} - set(artists)
-            if missing:
-                raise ValueError(
-                    f"artists must be the dict an earlier plot returned; it lacks {sorted(missing)}"
-                )
-            artists["line"].set_data(self.time, self.displacement)
-            artists["upper"].set_data(self.time, self.envelope)
-            artists["lower"].set_data(self.time, -self.envelope)
-            artists["peaks"].set_data(self.peaks.times, self.peaks.values)
-            return artists
-        import matplotlib
-
-        from raildyn import plots
-
-        drawn = plots.time_history(self.time, self.displacement, ax=ax, envelope=self.envelope)
-        ax = drawn["line"].axes
-        with matplotlib.rc_context(plots.STYLE):
-            (drawn["peaks"],) = ax.plot(
-                self.peaks.times, self.peaks.values, "s", color=plots.COLORS[1], ms=6, label="maxima"
-            )
-        return drawn
-
-
-@dataclass(frozen=True)
-class RootLocus:
-    """Characteristic roots s₁, s₂ of an SDOF system over a sweep of damping factors (book Fig. 1.4).
-
-    Attributes
-    ----------
-    natural_frequency : float
-        ω_n, rad/s.
-    damping_ratios : ndarray, shape (n,)
-        ξ values swept.
-    roots : complex ndarray, shape (n, 2)
-        s₁ (+ sign in eq. 1.9) and s₂ for each ξ, rad/s.
-    """
-
-    natural_frequency: float
-    damping_ratios: np.ndarray
-    roots: np.ndarray
-
-    def __post_init__(self):
-        object.__setattr__(self, "natural_frequency", positive("natural_frequency", self.natural_frequency))
-        xi = array("damping_ratios", self.damping_ratios, ndim=1, low=0.0, allow_empty=False)
-        object.__setattr__(self, "damping_ratios", xi)
-        object.__setattr__(self, "roots", array("roots", self.roots, dtype=complex, shape=(xi.size, 2)))
-
-    def plot(self, ax=None, *, mark=None, normalised: bool = False) -> dict:
-        """Draw both branches of the locus, the circle |s| = ω_n and, optionally, marked roots.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes, optional
-            Where to draw; new axes on a new pyplot figure if None.
-        mark : complex array_like, shape (2,), optional
-            Roots to mark, rad/s, finite (scaled like the locus when ``normalised``); the
-            marker is drawn hidden when None, for a widget to move and show later.
-        normalised : bool
-            Draw s/ω_n instead of s in rad/s.
-
-        Returns
-        -------
-        dict
-            The artists: ``branch1``, ``branch2``, ``roots`` (the marker) and ``circle``.
-        """
-        import matplotlib
-
-        from raildyn import plots
-
-        if mark is not None:
-            mark = array("mark", mark, dtype=complex, shape=(2,))
-        normalised = _checks.flag("normalised", normalised)
-        ax = plots.axes_or_new(ax)
-        scale = 1.0 / self.natural_frequency if normalised else 1.0
-        locus = self.roots * scale
-        radius = self.natural_frequency * scale
-        with matplotlib.rc_context(plots.STYLE):
-            phi = np.linspace(np.pi / 2, 3 * np.pi / 2, 91)
-            (circle,) = ax.plot(radius * np.cos(phi), radius * np.sin(phi), ls=":", color="0.6", lw=1)
-            (b1,) = ax.plot(locus[:, 0].real, locus[:, 0].imag, color=plots.COLORS[0], label="$s_1$")
-            (b2,) = ax.plot(locus[:, 1].real, locus[:, 1].imag, color=plots.COLORS[1], label="$s_2$")
-            marks = np.zeros(2, complex) if mark is None else scale * mark
-            (pts,) = ax.plot(marks.real, marks.imag, "o", color="k", ms=7, mfc="w", mew=2, zorder=5)
-            pts.set_visible(mark is not None)
-            ax.axhline(0, color="0.4", lw=0.8)
-            ax.axvline(0, color="0.4", lw=0.8)
-            ax.set_aspect("equal", adjustable="box")
-            unit = r"$s/\omega_n$" if normalised else "$s$ (rad/s)"
-            ax.set_xlabel(f"Re {unit}")
-            ax.set_ylabel(f"Im {unit}")
-            ax.legend(loc="upper left")
-        return {"branch1": b1, "branch2": b2, "roots": pts, "circle": circle}
 
 
 # ---------------------------------------------------------------------------
@@ -901,8 +675,6 @@ class SDOF:
         array([[ 0. ,  1. ],
                [-4. , -0.2]])
         """
-        from raildyn.vibration.mdof import state_space  # mdof builds on SDOF, so import late
-
         return state_space([[self.mass]], [[self.damping]], [[self.stiffness]], [[1.0]])
 
     def to_control(self):
@@ -918,217 +690,4 @@ class SDOF:
         >>> np.round(control.poles(SDOF.from_modal(2.0, 1.0).to_control()), 6)
         array([-2.+0.j, -2.+0.j])
         """
-        from raildyn.vibration.mdof import to_control  # mdof builds on SDOF, so import late
-
         return to_control([[self.mass]], [[self.damping]], [[self.stiffness]], [[1.0]])
-
-
-# ---------------------------------------------------------------------------
-# SDOF curves as functions of ξ and r
-
-
-def root_locus(natural_frequency: float, damping_ratios) -> RootLocus:
-    """Characteristic roots s₁, s₂ (rad/s) for each damping factor in a sweep (Fig. 1.4).
-
-    Parameters
-    ----------
-    natural_frequency : float
-        ω_n in rad/s, in (0, 1e150] (the domain of :class:`~raildyn.vibration.SDOF`).
-    damping_ratios : array_like, shape (n,)
-        ξ values, >= 0, with 2ξω_n <= 1e300 1/s (the domain of :class:`~raildyn.vibration.SDOF`); not empty.
-
-    Returns
-    -------
-    RootLocus
-        ``roots`` has shape (n, 2): columns s₁ (+ sign in eq. 1.9) and s₂;
-        ``.plot(ax)`` draws Fig. 1.4.
-
-    Examples
-    --------
-    >>> root_locus(1.0, [0.0, 1.0]).roots
-    array([[ 0.+1.j,  0.-1.j],
-           [-1.+0.j, -1.+0.j]])
-    """
-    wn = scalar("natural_frequency", natural_frequency, low=0.0, low_open=True, high=math.sqrt(_RATE))
-    xi = array("damping_ratios", damping_ratios, ndim=1, low=0.0, allow_empty=False)
-    _check_rates(wn * wn, 2.0 * xi.max() * wn, "natural_frequency", "damping_ratios and natural_frequency")
-    return RootLocus(wn, xi, _roots(wn, xi))
-
-
-def log_decrement(damping_ratio):
-    """Logarithmic decrement δ = ln(x₁/x₂) = 2πξ/√(1 − ξ²) (eq. 1.17).
-
-    Parameters
-    ----------
-    damping_ratio : array_like
-        ξ, 0 <= ξ < 1 (a system with ξ >= 1 does not oscillate, so it has no decrement;
-        :attr:`~raildyn.vibration.SDOF.log_decrement` reports ``math.inf`` for it); any shape, not empty.
-
-    Returns
-    -------
-    ndarray or float
-        δ, dimensionless, shape of ``damping_ratio``.
-
-    Examples
-    --------
-    >>> round(float(log_decrement(0.1)), 4)
-    0.6315
-    """
-    xi = array("damping_ratio", damping_ratio, low=0.0, allow_empty=False)
-    if np.any(xi >= 1.0):
-        raise ValueError(
-            f"damping_ratio must be < 1 (a system with xi >= 1 does not oscillate, so it has no "
-            f"decrement), got {xi[xi >= 1.0].flat[0]!r}"
-        )
-    return (2.0 * np.pi * xi / np.sqrt(_one_minus_square(xi)))[()]
-
-
-def damping_ratio_from_decrement(delta):
-    """Damping factor from a measured decrement, ξ = δ/√(4π² + δ²) (eq. 1.17 inverted).
-
-    Parameters
-    ----------
-    delta : array_like
-        δ >= 0 (finite: a system with ξ >= 1 has no decrement to measure); any shape, not empty.
-
-    Returns
-    -------
-    ndarray or float
-        ξ, shape of ``delta``.
-
-    Examples
-    --------
-    >>> round(float(damping_ratio_from_decrement(log_decrement(0.3))), 12)
-    0.3
-    """
-    d = array("delta", delta, low=0.0, allow_empty=False)
-    return (d / np.hypot(2.0 * np.pi, d))[()]
-
-
-def decrement_from_peaks(first, later, cycles: int = 1) -> float:
-    """Logarithmic decrement measured from two maxima ``cycles`` periods apart: δ = ln(x₀/x_j)/j.
-
-    Successive maxima of a free decay shrink by e^δ each period (eqs. 1.15-1.17),
-    so j periods apart they shrink by e^(jδ); averaging over several periods is
-    how a decrement is read off a record.
-
-    Parameters
-    ----------
-    first : float
-        The earlier maximum x₀, > 0 (any unit).
-    later : float
-        The maximum x_j, j periods later, > 0 (same unit).
-    cycles : int
-        j >= 1.
-
-    Returns
-    -------
-    float
-        δ, dimensionless.
-
-    Examples
-    --------
-    >>> delta = decrement_from_peaks(12.0, 3.0, cycles=5)
-    >>> round(delta, 4), round(float(damping_ratio_from_decrement(delta)), 4)
-    (0.2773, 0.0441)
-    """
-    x0 = positive("first", first)
-    xj = positive("later", later)
-    j = integer("cycles", cycles, low=1)
-    return math.log(x0 / xj) / j
-
-
-def _scaled_terms(frequency_ratio, damping_ratio):
-    """Checked r and ξ, and the terms (1 − r², 2ξr) and 1 of the SDOF curves, each divided by s².
-
-    s = max(r, 1): dividing through by s² keeps every term finite for any finite r and ξ (1e300
-    included) and changes nothing for r <= 1. Returns (1 − r²)/s², 2ξr/s² and 1/s².
-    """
-    r = array("frequency_ratio", frequency_ratio, low=0.0, allow_empty=False)
-    xi = array("damping_ratio", damping_ratio, low=0.0, allow_empty=False)
-    _checks.broadcast(frequency_ratio=r, damping_ratio=xi)
-    inv = 1.0 / np.maximum(r, 1.0)
-    u = r * inv
-    return (inv - u) * (inv + u), 2.0 * xi * u * inv, inv * inv
-
-
-def magnification_factor(frequency_ratio, damping_ratio):
-    """Dynamic magnification |X| k/F₀ = 1/√((1 − r²)² + (2ξr)²) of a harmonically forced SDOF system.
-
-    Parameters
-    ----------
-    frequency_ratio : array_like
-        r = ω/ω_n >= 0, any shape (not empty).
-    damping_ratio : array_like
-        ξ >= 0; broadcast against ``frequency_ratio``.
-
-    Returns
-    -------
-    ndarray
-        Dimensionless; inf for ξ = 0 at r = 1.
-
-    Examples
-    --------
-    >>> magnification_factor([0.0, 1.0], 0.25)
-    array([1., 2.])
-    """
-    q, y, inv2 = _scaled_terms(frequency_ratio, damping_ratio)
-    den = np.hypot(q, y)
-    num = np.broadcast_to(inv2, den.shape)
-    return np.divide(num, den, out=np.full(den.shape, np.inf), where=den > 0)[()]
-
-
-def phase_angle(frequency_ratio, damping_ratio):
-    """Phase lag φ = atan2(2ξr, 1 − r²) of the displacement behind the force, rad, in [0, π].
-
-    For ξ = 0 the lag jumps from 0 to π at r = 1, where π/2 (the limit as
-    ξ → 0) is returned.
-
-    Parameters
-    ----------
-    frequency_ratio : array_like
-        r = ω/ω_n >= 0, any shape (not empty).
-    damping_ratio : array_like
-        ξ >= 0; broadcast against ``frequency_ratio``.
-
-    Returns
-    -------
-    ndarray
-        φ, rad.
-
-    Examples
-    --------
-    >>> np.round(phase_angle([0.0, 1.0], 0.1) / np.pi, 12)
-    array([0. , 0.5])
-    """
-    q, y, _ = _scaled_terms(frequency_ratio, damping_ratio)  # the angle does not change with the scale
-    # atan2(0, 0) would give 0 for the undamped system at resonance; the limit ξ → 0 there is π/2.
-    return np.where((q == 0.0) & (y == 0.0), np.pi / 2, np.arctan2(y, q))[()]
-
-
-def transmissibility_ratio(frequency_ratio, damping_ratio):
-    """Transmissibility √(1 + (2ξr)²)/√((1 − r²)² + (2ξr)²), for force to ground or base motion to mass.
-
-    Equal to 1 at r = √2 whatever ξ; isolation (< 1) needs r > √2.
-
-    Parameters
-    ----------
-    frequency_ratio : array_like
-        r = ω/ω_n >= 0, any shape (not empty).
-    damping_ratio : array_like
-        ξ >= 0; broadcast against ``frequency_ratio``.
-
-    Returns
-    -------
-    ndarray
-        Dimensionless; inf for ξ = 0 at r = 1.
-
-    Examples
-    --------
-    >>> round(float(transmissibility_ratio(3.0, 0.0)), 12)
-    0.125
-    """
-    q, y, inv2 = _scaled_terms(frequency_ratio, damping_ratio)
-    num = np.hypot(inv2, y)
-    den = np.hypot(q, y)
-    return np.divide(num, den, out=np.full(den.shape, np.inf), where=den > 0)[()]

@@ -23,7 +23,8 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
-from raildyn.contact.creep import saturation_factor, wheelset_creepages
+from raildyn.contact.creepages import wheelset_creepages
+from raildyn.contact.saturation import saturation_factor
 from raildyn.wheelset.linear import Wheelset
 
 __all__ = [
@@ -114,7 +115,7 @@ def profile_contact(
 ) -> WheelRailContact:
     """The nonlinear contact of a wheel and rail profile pair: tread tables and the flange.
 
-    The rigid contact of chapter 4 (:func:`raildyn.contact.profiles.contact_geometry`, with
+    The rigid contact of chapter 4 (:func:`raildyn.contact.geometry.contact_geometry`, with
     the wheelset's roll) is followed outwards from the centre in steps of 0.25 mm until a
     contact angle passes 40°: there the contact jumps from the tread to the flange, and that
     shift is the flangeway clearance e. Inside it, the rolling-radius and contact-angle
@@ -133,7 +134,7 @@ def profile_contact(
     flange_stiffness : float
         k_f, the lateral stiffness of the rail under flange contact, N/m (≥ 0).
     gauge, tape_distance : float
-        m, as for :func:`raildyn.contact.profiles.contact_geometry`.
+        m, as for :func:`raildyn.contact.geometry.contact_geometry`.
 
     Returns
     -------
@@ -154,7 +155,7 @@ def profile_contact(
     >>> round(1e3 * contact.flange_clearance, 2)
     6.5
     """
-    from raildyn.contact.profiles import contact_geometry
+    from raildyn.contact.geometry import contact_geometry
 
     y = np.arange(0.0, 0.02 + _PROFILE_STEP / 2, _PROFILE_STEP)
     left = contact_geometry(wheel, rail, y, gauge=gauge, tape_distance=tape_distance)
@@ -269,14 +270,14 @@ class ContactTables:
 def contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
     """Lateral force (N) and yaw moment (N·m) of the rails on a wheelset, nonlinear; arrays broadcast.
 
-    Each wheel has the creepages of :func:`raildyn.contact.creep.wheelset_creepages` with
+    Each wheel has the creepages of :func:`raildyn.contact.creepages.wheelset_creepages` with
     r_L,R = r₀ ± Δr(y)/2 and its own tread contact angle ϑ_L(y), ϑ_R(y)
     (:func:`tread_contact_angles`): γ_x = ∓(aψ̇/V + Δr/(2r₀)), γ_y = ẏ/V − ψ and the spin
     φ = ψ̇ cos ϑ/V ∓ sin ϑ/r₀ on the left/right wheel. Kalker's linear forces of each wheel,
     F_x = −f₁₁γ_x, F_y = −f₂₂γ_y − f₂₃φ and M_z = f₂₃γ_y − f₃₃φ, are scaled together by the
-    saturation of Shen, Hedrick and Elkins (:func:`raildyn.contact.creep.saturation_factor`)
+    saturation of Shen, Hedrick and Elkins (:func:`raildyn.contact.saturation.saturation_factor`)
     of that wheel's resultant √(F_x² + F_y²) at μ W/2, as
-    :func:`raildyn.contact.creep.shen_hedrick_elkins` scales them. Gravity acts through the
+    :func:`raildyn.contact.saturation.shen_hedrick_elkins` scales them. Gravity acts through the
     contact-angle difference, and the flange as a spring beyond the clearance.
 
     One simplification: the spins ∓ sin ϑ_c/r₀ of the centred wheelset (ϑ_c its tread angles at

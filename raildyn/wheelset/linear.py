@@ -27,8 +27,8 @@ from raildyn.constants import (
     STEEL_SHEAR_MODULUS,
     STEEL_YOUNGS_MODULUS,
 )
-from raildyn.contact.creep import creep_coefficients
 from raildyn.contact.hertz import hertz_contact
+from raildyn.contact.kalker import creep_coefficients
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.wheelset.kinematics import _MAX_ANGLE
 
@@ -40,7 +40,7 @@ def _hertz_kalker(wheel_load, rolling_radius):
 
     The patch is Hertz's (:func:`raildyn.contact.hertz.hertz_contact`, curvature 1/r₀ along
     and across the track: a circle) and the coefficients are Kalker's
-    (:func:`raildyn.contact.creep.creep_coefficients`), both for the steel of
+    (:func:`raildyn.contact.kalker.creep_coefficients`), both for the steel of
     :mod:`raildyn.constants`.
     """
     patch = hertz_contact(
@@ -69,7 +69,7 @@ class Wheelset(LinearModelBase):
     1998) on a cone; the conicity (0.15) and contact half-spacing (0.75 m, the
     usual value for standard gauge) are our choice, not the benchmark's, which
     specifies real profiles. Creep coefficients are per contact patch: Kalker's
-    (:func:`raildyn.contact.creep.creep_coefficients`) on Hertz's patch under half the
+    (:func:`raildyn.contact.kalker.creep_coefficients`) on Hertz's patch under half the
     axle load, wheel radius 0.46 m on a rail crowned with the same radius.
 
     Attributes
@@ -245,7 +245,7 @@ def creep_terms(ws: Wheelset) -> CreepTerms:
 
     From Kalker's linear law summed over the two wheels (Garg & Dukkipati 1984,
     ch. 5; Wickens 2003, ch. 2), with the creepages of
-    :func:`raildyn.contact.creep.wheelset_creepages` to first order:
+    :func:`raildyn.contact.creepages.wheelset_creepages` to first order:
 
     * lateral:  F_y = −2f₂₂(ẏ/V − ψ) − 2f₂₃(ψ̇/V − εy/(a r₀)) − (Wε/a) y
     * yaw:      M_z = −2af₁₁(aψ̇/V + λy/r₀) + 2f₂₃(ẏ/V − ψ) − 2f₃₃(ψ̇/V − εy/(a r₀)) + W a ϑ₀ ψ
