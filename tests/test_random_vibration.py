@@ -1,6 +1,6 @@
 """Tests for raildyn.random_vibration: PSD conventions, response spectra, mean squares, synthesis.
 
-Tiers (DESIGN.md, "Tests"): closed forms (white-noise oscillator, band-limited
+Tiers (ARCHITECTURE.md, "Tests"): closed forms (white-noise oscillator, band-limited
 spectra, delayed inputs), an independent solver (the Lyapunov equation), a
 property test (Parseval for synthesized samples) and Monte Carlo checks whose
 tolerances are derived from the estimators' sampling statistics.

@@ -1,6 +1,6 @@
 """Tests for raildyn.track: deterministic inputs, the FRA and German spectra, synthesis, the view in time.
 
-Tiers (DESIGN.md, "Tests"): closed forms (the spectra's formulas and asymptotes,
+Tiers (ARCHITECTURE.md, "Tests"): closed forms (the spectra's formulas and asymptotes,
 band variances against adaptive quadrature, V-scaling), the published parameter
 tables (FRA classes, German levels; sources in raildyn/track/spectra.py),
 Monte Carlo checks with tolerances from the estimators' statistics, hypothesis

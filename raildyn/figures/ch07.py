@@ -3,7 +3,7 @@ notebook shows the roots with the widget that draws the same picture, so that on
 
 Each chart is drawn by the method of its result in :mod:`raildyn.stability`
 (:meth:`~raildyn.stability.linear.ModeSweep.plot`, :meth:`~raildyn.stability.linear.CriticalSpeedMap.plot`,
-:meth:`~raildyn.stability.nonlinear.BifurcationDiagram.plot`), which the chapter's widgets call too.
+:meth:`~raildyn.stability.bifurcation.BifurcationDiagram.plot`), which the chapter's widgets call too.
 """
 
 from __future__ import annotations

@@ -18,13 +18,20 @@ eigenvalues come from one batched ``numpy.linalg`` call.
   stack of :class:`~raildyn.stability.search.StateMatrices`, which a family of models affine in its
   parameters, :class:`raildyn.linear_model.AffineFamily`, gives without assembling each member);
 * :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`,
-  :func:`~raildyn.stability.nonlinear.bifurcation_diagram` — nonlinear hunting: the
+  :func:`~raildyn.stability.bifurcation.bifurcation_diagram` — nonlinear hunting: the
   amplitude of the limit cycle against speed and the nonlinear critical speed;
-  :func:`~raildyn.stability.nonlinear.bifurcation_diagrams` runs a family of vehicles side by side.
+  :func:`~raildyn.stability.bifurcation.bifurcation_diagrams` runs a family of vehicles side by side.
   The nonlinear models are integrated by a compiled engine (numba) that takes scipy RK45's
   steps a few hundred times faster; ``engine="scipy"`` runs the reference it is tested against.
 """
 
+from raildyn.stability.bifurcation import (
+    BifurcationDiagram,
+    PeriodicOrbit,
+    bifurcation_diagram,
+    bifurcation_diagrams,
+    periodic_orbit,
+)
 from raildyn.stability.critical import CriticalSpeed, CriticalSpeedMap, critical_speed, critical_speed_map
 from raildyn.stability.linear import (
     ModeSweep,
@@ -35,17 +42,7 @@ from raildyn.stability.linear import (
     mode_sweep,
     track_modes,
 )
-from raildyn.stability.nonlinear import (
-    BifurcationDiagram,
-    LimitCycle,
-    NonlinearRun,
-    PeriodicOrbit,
-    bifurcation_diagram,
-    bifurcation_diagrams,
-    limit_cycle_amplitude,
-    periodic_orbit,
-    simulate,
-)
+from raildyn.stability.nonlinear import LimitCycle, NonlinearRun, limit_cycle_amplitude, simulate
 from raildyn.stability.search import (
     CRITICAL_SPEED_STATUSES,
     MAX_SCAN_SPEEDS,

@@ -535,7 +535,7 @@ def freight_car(loaded: bool = True) -> LateralFreightCar:
     0.25 1/s) that ends at 67.5 m/s. The load-proportional centre-plate friction and
     pendulum stiffness make the difference (``tests/test_freight_lateral.py``). With its
     friction sliding, the empty car hunts from 12.5 m/s (a cycle of about 9 mm at 0.7 Hz,
-    :func:`~raildyn.stability.nonlinear.bifurcation_diagram` with ``method="BDF"``), below
+    :func:`~raildyn.stability.bifurcation.bifurcation_diagram` with ``method="BDF"``), below
     its linear critical speed; the loaded car's large motions grow without bound from
     about 20 m/s, with nothing (no gib stop) to limit them.
 

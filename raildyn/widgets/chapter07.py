@@ -7,7 +7,7 @@ module only turns control values into model calls. The charts are drawn, and
 moved in place, by the methods of the results that the chapter's figures call
 too: :meth:`raildyn.stability.linear.ModeSweep.plot`,
 :meth:`raildyn.stability.linear.CriticalSpeedMap.plot_curves` and
-:meth:`raildyn.stability.nonlinear.BifurcationDiagram.plot`.
+:meth:`raildyn.stability.bifurcation.BifurcationDiagram.plot`.
 """
 
 from __future__ import annotations
@@ -418,7 +418,7 @@ def bifurcation():
     """The Manchester car's bifurcation diagram, redrawn as the conicity or the primary yaw stiffness moves.
 
     The amplitude of the leading wheelset's limit cycle along a ramp-down of speed from 504 to 72
-    km/h (:func:`raildyn.stability.nonlinear.bifurcation_diagram` on the compiled engine: 13
+    km/h (:func:`raildyn.stability.bifurcation.bifurcation_diagram` on the compiled engine: 13
     speeds of 4 s and three bisections, a third of a second), with the nonlinear and the linear
     critical speeds marked. Controls: conicity λ and the primary yaw stiffness of each wheelset
     k_ψ (MN·m/rad). The kernel-free copy shows the 15 diagrams of a grid of both, run as one batch.
