@@ -232,8 +232,9 @@ def test_median_update(label, recipe, control, values):
     _, update = recipe.build()
     median = median_update_ms(update, control, values)
     print(f"{label}: median update {median:.1f} ms")
-    # The widget goal lives in benchmarks/README.md (measured 15–48 ms here, uncached, under a load average of 4 on 2 cores);
-    # a test on a shared machine under load only guards against a widget that recomputes far too much.
+    # The widget goal lives in benchmarks/README.md (measured 15–48 ms here, uncached, under a load
+    # average of 4 on 2 cores); a test on a shared machine under load only guards against a widget that
+    # recomputes far too much.
     assert median < 250.0
 
 
