@@ -568,3 +568,22 @@ def test_results_refuse_what_no_spectrum_holds():
         rv.SpectralLines(np.array([1.0, 2.0]), np.ones(2), 0.0)
     with pytest.raises(TypeError, match="from_unit"):
         rv.convert_psd(1.0, from_sided="one", from_unit=2.0)
+
+
+def test_an_output_that_cancels_has_a_response_psd_of_zero_not_rounding_below_it():
+    # Two inputs that are one process (no delay between them) and an output that is their difference:
+    # the response PSD is exactly 0, and the sum of q² terms leaves rounding on either side of it. It is
+    # returned as 0 (at most rounding above), one output or several; a cross-spectral matrix that is not
+    # positive semi-definite still gives its negative value, which is no rounding.
+    rng = np.random.default_rng(7)
+    omega = np.linspace(0.1, 10.0, 200)
+    S = rv.delayed_input_csd(rng.uniform(0.5, 2.0, omega.size), omega, [0.0, 0.0])
+    h = rng.normal(size=omega.size) + 1j * rng.normal(size=omega.size)
+    H = np.stack([h, -h], axis=1) * np.exp(1j * rng.uniform(0, 2 * np.pi, (omega.size, 1)))
+    scale = 4 * np.abs(h) ** 2 * np.abs(S[:, 0, 0])
+    single = rv.response_psd(H, S)
+    assert np.all(single >= 0.0) and np.all(single <= 16 * np.finfo(float).eps * scale)
+    several = rv.response_psd(np.stack([H, 2 * H], axis=1), S)
+    assert np.all(np.diagonal(several, axis1=1, axis2=2).real >= 0.0)
+    indefinite = np.broadcast_to(np.array([[1.0, 2.0], [2.0, 1.0]]), (omega.size, 2, 2))
+    assert np.allclose(rv.response_psd(np.ones((omega.size, 2)) * [1.0, -1.0], indefinite), -2.0)

@@ -182,3 +182,15 @@ def test_a_wavenumber_so_small_that_the_fra_spectrum_overflows_is_refused():
     assert np.isfinite(track.fra_psd("alignment", 4, [1e-100])).all()
     # the German spectra stay bounded (flat below Ω_r; the cross-level and gauge vanish) as Ω → 0
     assert np.isfinite(track.german_psd("gauge", "low", [1e-300])).all()
+
+
+@pytest.mark.parametrize(("speed", "output"), [(20.0, "body z"), (30.0, "body θ")])
+def test_a_response_that_cancels_at_a_wheelbase_node_is_not_refused_for_its_rounding(speed, output):
+    # FRA class 4 under the Manchester car, 0.05–30 Hz: at these speeds a bogie's or the car's wheelbase
+    # filter has a node on the grid, where the response PSD is zero but for rounding (it was refused as a
+    # PSD below zero, -4e-23 and -5e-26). At the node the response is within rounding of zero; elsewhere
+    # it is positive.
+    omega = 2 * np.pi * np.geomspace(0.05, 30.0, 400)
+    psd = track.track_psd("fra", "vertical", 4)
+    result = response_spectrum(MANCHESTER_VERTICAL, psd, speed, omega, output=output)
+    assert np.all(result.psd >= 0.0) and np.count_nonzero(result.psd) >= len(omega) - 2

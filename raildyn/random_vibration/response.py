@@ -80,10 +80,28 @@ def response_psd(frf, input_psd) -> np.ndarray:
         if H.ndim == 2:
             # single output: y = Σ_j H_j x_j, so S_y = Σ_jk H_j S_jk conj(H_k), real by Hermitian symmetry
             Sy = np.einsum("ij,ijk,ik->i", H, S, np.conj(H)).real
+            Sy = _without_cancellation_noise(Sy, np.einsum("ij,ijk,ik->i", abs(H), abs(S), abs(H)), q)
         else:
             Sy = H @ S @ np.conj(np.swapaxes(H, -1, -2))
             Sy = 0.5 * (Sy + np.conj(np.swapaxes(Sy, -1, -2)))
+            scale = np.einsum("ipj,ijk,ipk->ip", abs(H), abs(S), abs(H))
+            p = np.arange(H.shape[1])
+            Sy[:, p, p] = _without_cancellation_noise(Sy[:, p, p].real, scale, q)  # the auto-spectra
     return _finite(Sy, "frf and input_psd", "a response PSD")
+
+
+def _without_cancellation_noise(auto, scale, q: int):
+    """An auto-spectrum with its rounding below zero set to zero.
+
+    Inputs that are one process met with delays (:func:`delayed_input_csd`) make a rank-one
+    cross-spectral matrix, and where the delays cancel (a wheelbase filter's node) the sum
+    Σ_jk H_j S_jk conj(H_k) of terms of size ``scale`` is zero but for rounding, which can fall on either
+    side of it. The sum of q² products errs by at most about 2q² ε·scale (each product and addition one
+    rounding), so a negative value within 4q² ε·scale is that rounding and is set to zero; a larger
+    negative value (a cross-spectral matrix that is not positive semi-definite) stays as it is.
+    """
+    noise = (auto < 0) & (auto >= -4 * q * q * np.finfo(float).eps * scale)
+    return np.where(noise, 0.0, auto)
 
 
 def delayed_input_csd(psd, omega, delays) -> np.ndarray:
