@@ -59,7 +59,8 @@ class BifurcationDiagram:
     frequencies_hz : ndarray
         Frequency of the motion at each speed, Hz (≥ 0; 0 where there is no oscillation).
     hunting : ndarray of bool
-        Whether the motion at each speed is a sustained oscillation (:meth:`LimitCycle.hunting`).
+        Whether the motion at each speed is a sustained oscillation
+        (:meth:`~raildyn.stability.nonlinear.LimitCycle.hunting`).
     nonlinear_critical_speed : float
         Lowest speed at which a limit cycle persists, m/s, refined by bisection between the
         grid speeds, so within their range (inf if there is none on the grid).
@@ -192,7 +193,7 @@ def bifurcation_diagram(
     Parameters
     ----------
     model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
-        The nonlinear model, as for :func:`limit_cycle_amplitude`.
+        The nonlinear model, as for :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`.
     speeds : array_like, shape (n_speeds,)
         Speeds of the ramp, m/s, each in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`], in any order:
         they are run from the highest down.
@@ -202,7 +203,8 @@ def bifurcation_diagram(
         :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`).
     duration : float
         Simulated time at each speed, s, in [0.001, 120]: at least four periods of the hunting,
-        so that each quarter of the run compared holds one (:meth:`LimitCycle.hunting`).
+        so that each quarter of the run compared holds one
+        (:meth:`~raildyn.stability.nonlinear.LimitCycle.hunting`).
     max_step : float
         Largest solver step, s (> 0).
     threshold : float
@@ -427,8 +429,8 @@ def periodic_orbit(
         damping 2f/V makes the equations too stiff to run).
     state : array_like, shape (state_size,)
         Guess of a point on the orbit (for instance the ``state`` at the end of a
-        :func:`limit_cycle_amplitude` run), in the units of the model's state: finite, not
-        all zero (the centred state is the trivial solution).
+        :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude` run), in the units of the model's
+        state: finite, not all zero (the centred state is the trivial solution).
     period : float
         Guess of T, s, in [0.001, 120] (1 / ``frequency_hz`` of the settled motion).
     tol : float

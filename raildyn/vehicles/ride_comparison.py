@@ -2,7 +2,7 @@
 
 :func:`ride_run` gives the output's response spectrum at speed V and its ride measures
 (:func:`raildyn.ride.ride_quality`) beside a time run along a periodic sample of the same track
-(:func:`raildyn.vehicles.response.time_response`) and the measures of that history
+(:func:`raildyn.vehicles.time_domain.time_response`) and the measures of that history
 (:func:`raildyn.ride.ride_quality_history`), so that a reader sees the two agree (book
 chapter 6). The run starts from rest and drops its first ``settle`` seconds.
 """
@@ -72,7 +72,7 @@ def ride_run(
 
     The spectrum is :func:`~raildyn.vehicles.response.response_spectrum` (acceleration) on the
     grid ω = 2π ``frequencies_hz``, measured by :func:`raildyn.ride.ride_quality`; the run is
-    :func:`~raildyn.vehicles.response.time_response` along ``profile`` (one period repeated)
+    :func:`~raildyn.vehicles.time_domain.time_response` along ``profile`` (one period repeated)
     from rest for ``settle`` s plus one period's time, with the first ``settle`` s dropped,
     measured by :func:`raildyn.ride.ride_quality_history`. When ``profile`` is a sample of
     the track ``psd`` describes, the two sets of measures agree within the sample's scatter.
@@ -87,7 +87,7 @@ def ride_run(
     speed : float
         V, m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     profile : PeriodicProfile
-        The track sample the run follows (:func:`~raildyn.vehicles.response.periodic_profile`).
+        The track sample the run follows (:func:`~raildyn.vehicles.time_domain.periodic_profile`).
     frequencies_hz : array_like, (k,)
         The spectrum's grid, Hz: strictly increasing, > 0, at least two.
     output : str, (str, float) or array_like
