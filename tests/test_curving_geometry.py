@@ -181,7 +181,7 @@ def test_the_arc_keeps_its_distance_from_its_centre():
 
 def _integrated_plan(c: Curve, s: np.ndarray):
     """x, y by quadrature of cos θ and sin θ, with the segment ends as break points."""
-    ends = [e for e in c._ends() if e > 0]
+    ends = [e for e in c.ends() if e > 0]
     out = []
     for t in s:
         if t <= 0:
@@ -219,7 +219,7 @@ def test_heading_is_the_integral_of_the_curvature():
     # the rounding of θ (1e-16) over 2h = 2e-3 m.
     c = Curve()
     s = np.linspace(1.0, 369.0, 200)
-    s = s[np.min(np.abs(s[:, None] - np.array(c._ends())[None, :]), axis=1) > 1e-2]
+    s = s[np.min(np.abs(s[:, None] - np.array(c.ends())[None, :]), axis=1) > 1e-2]
     h = 1e-3
     derivative = (c.heading(s + h) - c.heading(s - h)) / (2 * h)
     assert np.allclose(derivative, c.curvature(s), rtol=0, atol=1e-9)

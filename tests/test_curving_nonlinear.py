@@ -148,17 +148,15 @@ def test_arc_jacobian_is_the_forces_derivative():
 
 def test_arc_forces_are_the_right_hand_side_on_an_arc():
     # On a long arc the model's right-hand side at rest is M⁻¹ times arc_forces, to rounding.
-    model = Car().nonlinear(25.0)
+    model = Car().nonlinear()
     R, D = 600.0, 0.1
-    on_arc = dataclasses.replace(
-        model,
-        curve=Curve(radius=R, cant=D, transition_length=0.0, arc_length=400.0, straight=0.0),
-        start=200.0,
+    on_arc = model.replace(
+        curve=Curve(radius=R, cant=D, transition_length=0.0, arc_length=400.0, straight=0.0), start=200.0
     )
     n = model.system.size
     q = np.random.default_rng(0).normal(scale=5e-3, size=n)
     forces = model.arc_forces(q, 25.0, 1.0 / R, 25.0**2 / R - GRAVITY * D / 1.5)
-    np.testing.assert_allclose(model.system.M @ on_arc.rhs(0.0, np.concatenate([q, 0 * q]))[n:], forces,
+    np.testing.assert_allclose(model.system.M @ on_arc.rhs(0.0, np.concatenate([q, 0 * q]), 25.0)[n:], forces,
                                rtol=1e-12, atol=1e-6)  # fmt: skip
     # A batch is its columns.
     batch = model.arc_forces(np.stack([q, 2 * q], axis=1), [25.0, 30.0], 1.0 / R, [0.1, 0.2])
@@ -188,10 +186,12 @@ def test_the_curve_entry_settles_to_the_quasi_static_equilibrium():
 
 def test_the_curve_model_on_tangent_track_is_the_tangent_model():
     # A curve whose straight reaches past the whole run leaves the right-hand side that of tangent track.
-    model = Bogie().nonlinear(30.0)
-    on_curve = dataclasses.replace(model, curve=Curve(straight=1000.0), start=0.0)
+    model = Bogie().nonlinear()
+    on_curve = model.replace(curve=Curve(straight=1000.0), start=0.0)
     state = np.random.default_rng(1).normal(scale=1e-3, size=model.state_size)
-    np.testing.assert_allclose(on_curve.rhs(0.5, state), model.rhs(0.5, state), rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(
+        on_curve.rhs(0.5, state, 30.0), model.rhs(0.5, state, 30.0), rtol=1e-12, atol=1e-9
+    )
 
 
 def test_the_profile_contact_holds_chapter_4s_geometry_and_finds_the_flange():

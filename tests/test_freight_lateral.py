@@ -52,10 +52,12 @@ def test_an_element_with_the_linear_law_changes_nothing():
     system = Bogie().linear_system()
     k, c = 2 * 160.0e3, 2 * 32.0e3
     element = SuspensionElement({"frame y": 1.0}, lambda d, v: k * d + c * v, stiffness=k, damping=c)
-    plain = NonlinearLateral(system, WheelRailContact(), 40.0)
-    with_element = NonlinearLateral(system, WheelRailContact(), 40.0, (element,))
+    plain = NonlinearLateral(system, WheelRailContact())
+    with_element = NonlinearLateral(system, WheelRailContact(), (element,))
     for x in _random_states(system.size, 10):
-        np.testing.assert_allclose(with_element.rhs(0.0, x), plain.rhs(0.0, x), rtol=1e-12, atol=1e-9)
+        np.testing.assert_allclose(
+            with_element.rhs(0.0, x, 40.0), plain.rhs(0.0, x, 40.0), rtol=1e-12, atol=1e-9
+        )
 
 
 def test_an_element_adds_its_force_along_its_deflection():
@@ -67,15 +69,15 @@ def test_an_element_adds_its_force_along_its_deflection():
     g[[0, 2]] = 1.0, -1.0
     law = lambda d, v: coulomb_friction(v, 5.0e3, velocity_scale=0.01)  # noqa: E731
     element = SuspensionElement({"frame y": 1.0, "wheelset1 y": -1.0}, law)
-    plain = NonlinearLateral(system, WheelRailContact(), 40.0)
-    model = NonlinearLateral(system, WheelRailContact(), 30.0, (element,))
-    assert model.at_speed(40.0).elements == (element,)
+    plain = NonlinearLateral(system, WheelRailContact())
+    model = NonlinearLateral(system, WheelRailContact(), (element,))
+    assert model.replace(contact=WheelRailContact()).elements == (element,)
     X = _random_states(system.size, 6).T
     n = system.size
-    expected = plain.at_speed(30.0).rhs(0.0, X)
+    expected = plain.rhs(0.0, X, 30.0)
     ddot = g @ X[n:]
     expected[n:] -= np.linalg.solve(system.M, np.outer(g, 5.0e3 * np.tanh(ddot / 0.01)))
-    np.testing.assert_allclose(model.rhs(0.0, X), expected, rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(model.rhs(0.0, X, 30.0), expected, rtol=1e-12, atol=1e-9)
 
 
 def test_a_clearance_element_acts_only_beyond_its_play():
@@ -85,13 +87,13 @@ def test_a_clearance_element_acts_only_beyond_its_play():
     element = SuspensionElement(
         {"wheelset1 y": 1.0, "frame y": -1.0}, lambda d, v: clearance_force(d, 5e-3, 1e7)
     )
-    plain = NonlinearLateral(system, WheelRailContact(), 40.0)
-    model = NonlinearLateral(system, WheelRailContact(), 40.0, [element])
+    plain = NonlinearLateral(system, WheelRailContact())
+    model = NonlinearLateral(system, WheelRailContact(), [element])
     x = np.zeros(2 * system.size)
     x[2] = 4e-3
-    np.testing.assert_array_equal(model.rhs(0.0, x), plain.rhs(0.0, x))
+    np.testing.assert_array_equal(model.rhs(0.0, x, 40.0), plain.rhs(0.0, x, 40.0))
     x[2] = 6e-3  # 1 mm beyond: the stop pushes the wheelset back with 10 kN
-    change = model.rhs(0.0, x) - plain.rhs(0.0, x)
+    change = model.rhs(0.0, x, 40.0) - plain.rhs(0.0, x, 40.0)
     g = np.zeros(system.size)
     g[[2, 0]] = 1.0, -1.0
     np.testing.assert_allclose(change[system.size :], -np.linalg.solve(system.M, g * 1e4), rtol=1e-9)
@@ -242,7 +244,7 @@ def test_the_nonlinear_car_linearises_to_the_linear_one():
     # differences, h = 1e-9) is the linear model's state matrix, friction, contact and all. The contact's
     # saturation slope is 1 − O(h) and the flange is idle: 1e-5 of the matrix's largest entry.
     for car in (EMPTY_FREIGHT_CAR, LOADED_FREIGHT_CAR):
-        model = car.nonlinear(25.0)
+        model = car.nonlinear()
         assert len(model.elements) == 6  # lateral, warp and centre-plate friction of each truck
         n = model.state_size
         J = np.empty((n, n))
@@ -250,9 +252,9 @@ def test_the_nonlinear_car_linearises_to_the_linear_one():
         for j in range(n):
             dx = np.zeros(n)
             dx[j] = h
-            J[:, j] = (model.rhs(0.0, dx) - model.rhs(0.0, -dx)) / (2 * h)
+            J[:, j] = (model.rhs(0.0, dx, 25.0) - model.rhs(0.0, -dx, 25.0)) / (2 * h)
         A = car.linear_system().state_matrices([25.0])[0]
-        np.testing.assert_allclose(model.rhs(0.0, np.zeros(n)), 0.0, atol=1e-12)
+        np.testing.assert_allclose(model.rhs(0.0, np.zeros(n), 25.0), 0.0, atol=1e-12)
         np.testing.assert_allclose(J, A, rtol=1e-5, atol=1e-5 * np.abs(A).max())
 
 
@@ -305,9 +307,10 @@ def test_bad_input_is_refused_by_name():
     with pytest.raises(TypeError, match="loaded"):
         freight_car(loaded="yes")
     with pytest.raises(TypeError, match="contact"):
-        LOADED_FREIGHT_CAR.nonlinear(20.0, contact="cone")
+        LOADED_FREIGHT_CAR.nonlinear(contact="cone")
+    model = LOADED_FREIGHT_CAR.nonlinear()
     with pytest.raises(ValueError, match="speed"):
-        LOADED_FREIGHT_CAR.nonlinear(0.0)
+        model.rhs(0.0, np.zeros(model.state_size), 0.0)
 
 
 # ---------------------------------------------------------------------------
@@ -317,19 +320,19 @@ def test_bad_input_is_refused_by_name():
 class _Motion:
     """A stand-in for a nonlinear model whose lateral motion y (state 0) is known in closed form.
 
-    ``rhs(t, [y, u])`` with u̇ = −ω² (y − c t − y_held): a harmonic oscillation of ω rad/s about an offset
+    ``rhs(t, [y, u], V)`` with u̇ = −ω² (y − c t − y_held): a harmonic oscillation of ω rad/s about an offset
     y_held and a drift c t, and u = ẏ − c; ω = 0 leaves only the offset and the drift.
     """
 
-    state_size, lateral_index = 2, 0
+    state_size, lateral_index, compiled_reason = 2, 0, "a stand-in written in Python"
 
     def __init__(self, omega=0.0, drift=0.0, held=0.0):
         self.omega, self.drift, self.held = omega, drift, held
 
-    def at_speed(self, speed):
+    def replace(self, **changes):
         return self
 
-    def rhs(self, t, z):
+    def rhs(self, t, z, speed):
         return np.array([z[1] + self.drift, -(self.omega**2) * (z[0] - self.drift * t - self.held)])
 
 

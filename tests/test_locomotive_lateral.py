@@ -272,19 +272,19 @@ def test_play_element_is_the_clearance_law_and_replaces_the_linear_spring():
     # Within the play the law is the linear spring it replaces (its slope there): the locomotive with
     # the two play elements moves as the same system with its linear springs kept (no elements), to
     # round-off, at any state whose middle axles stay within the play (here within 10 mm).
-    model = LATERAL_LOCOMOTIVE.nonlinear(50.0)
+    model = LATERAL_LOCOMOTIVE.nonlinear()
     assert len(model.elements) == 2
-    kept = NonlinearLateral(model.system, model.contact, 50.0)
+    kept = NonlinearLateral(model.system, model.contact)
     state = 5e-3 * np.random.default_rng(1).uniform(-1.0, 1.0, model.state_size)
-    reference = kept.rhs(0.0, state)
-    np.testing.assert_allclose(model.rhs(0.0, state), reference, atol=1e-9 * np.abs(reference).max())
+    reference = kept.rhs(0.0, state, 50.0)
+    np.testing.assert_allclose(model.rhs(0.0, state, 50.0), reference, atol=1e-9 * np.abs(reference).max())
     # Beyond the play the stop acts: against the same truck with a wider play (never reached), only
     # the middle wheelset's and the frame's accelerations change, by ∓k_y (|u| − g)/m each.
-    wide = LATERAL_LOCOMOTIVE.replace(middle_lateral_play=0.05).nonlinear(50.0)
+    wide = LATERAL_LOCOMOTIVE.replace(middle_lateral_play=0.05).nonlinear()
     i, f = model.system.labels.index("wheelset12 y"), model.system.labels.index("frame1 y")
     state = np.zeros(model.state_size)
     state[i] = 0.03
-    change = model.rhs(0.0, state) - wide.rhs(0.0, state)
+    change = model.rhs(0.0, state, 50.0) - wide.rhs(0.0, state, 50.0)
     n, stop = model.system.size, ky * (0.03 - g)
     expected = np.zeros(model.state_size)
     expected[n + i] = -stop / model.system.M[i, i]
@@ -344,7 +344,7 @@ def test_bad_input_is_refused_by_name():
     with pytest.raises(ValueError, match="conicity"):
         LATERAL_LOCOMOTIVE.replace(conicity=-0.1)
     with pytest.raises(ValueError, match="speed"):
-        LATERAL_LOCOMOTIVE.nonlinear(speed=0.0)
+        LATERAL_LOCOMOTIVE.nonlinear().rhs(0.0, np.zeros(LATERAL_LOCOMOTIVE.nonlinear().state_size), 0.0)
     for tag in (1, "3"):
         with pytest.raises((TypeError, ValueError), match="tag"):
             LATERAL_LOCOMOTIVE.truck.play_element(tag)

@@ -225,8 +225,8 @@ def test_nonlinear_wheelset_linearises_to_the_linear_model(centred_angle):
     # cos ϑ₀ (ψ̇/V ∓ εy/(a r₀)), where the linear model takes cos ϑ₀ = 1: exact at ϑ₀ = 0, and at
     # ϑ₀ = 0.15 the spin's entries (f₂₃ in ÿ, f₃₃ in ψ̈) differ by 1 − cos ϑ₀ = 1.1 % of themselves.
     ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6, contact_angle=centred_angle)
-    model = NonlinearWheelset(ws, WheelRailContact(), 40.0)
-    J, f0 = _jacobian(model.rhs, np.zeros(4))
+    model = NonlinearWheelset(ws, WheelRailContact())
+    J, f0 = _jacobian(lambda t, x: model.rhs(t, x, 40.0), np.zeros(4))
     A = ws.linear_system().state_matrices([40.0])[0]
     np.testing.assert_allclose(f0, 0.0, atol=1e-12)
     if centred_angle == 0.0:
@@ -244,12 +244,12 @@ def test_generic_nonlinear_model_equals_the_wheelset_one():
     # NonlinearLateral over the suspended wheelset is the same model as NonlinearWheelset.
     ws = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)
     contact = WheelRailContact()
-    a = NonlinearWheelset(ws, contact, 55.0)
-    b = NonlinearLateral(ws.linear_system(), contact, 55.0)
+    a = NonlinearWheelset(ws, contact)
+    b = NonlinearLateral(ws.linear_system(), contact)
     rng = np.random.default_rng(3)
     for _ in range(20):
         x = rng.normal(size=4) * np.array([8e-3, 5e-3, 0.3, 0.2])
-        np.testing.assert_allclose(b.rhs(0.0, x), a.rhs(0.0, x), rtol=1e-12, atol=1e-9)
+        np.testing.assert_allclose(b.rhs(0.0, x, 55.0), a.rhs(0.0, x, 55.0), rtol=1e-12, atol=1e-9)
 
 
 @settings(deadline=None, max_examples=50)
@@ -309,7 +309,7 @@ def test_bad_input():
     with pytest.raises(TypeError, match="rolling_radius_difference"):
         WheelRailContact(rolling_radius_difference=0.3)
     with pytest.raises(ValueError, match="speed"):
-        NonlinearWheelset(speed=0.0)
+        NonlinearWheelset().rhs(0.0, np.zeros(4), 0.0)
     with pytest.raises(TypeError, match="LinearModel"):
         as_linear_system("wheelset")
 
@@ -336,11 +336,11 @@ def test_conicity_beyond_its_range_is_blamed_on_the_conicity():
 def test_the_right_hand_side_refuses_a_wrong_state():
     model = NonlinearWheelset()
     with pytest.raises(ValueError, match=r"state must have shape \(4,\)"):
-        model.rhs(0.0, np.zeros(3))
+        model.rhs(0.0, np.zeros(3), 30.0)
     with pytest.raises(ValueError, match="state"):
-        model.rhs(0.0, [np.nan, 0.0, 0.0, 0.0])
+        model.rhs(0.0, [np.nan, 0.0, 0.0, 0.0], 30.0)
     with pytest.raises(ValueError, match="state"):
-        NonlinearLateral(Wheelset().linear_system()).rhs(0.0, np.zeros((2, 4)))
+        NonlinearLateral(Wheelset().linear_system()).rhs(0.0, np.zeros((2, 4)), 30.0)
 
 
 def test_contact_checks_its_callbacks_once():

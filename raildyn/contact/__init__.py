@@ -21,7 +21,7 @@ The elastic constants default to the steel of :mod:`raildyn.constants` everywher
 
 from raildyn.contact.comparison import CREEP_LAWS, LateralCreepCurves, lateral_creep_curves
 from raildyn.contact.conicity import harmonic_conicity, kinematic_conicity
-from raildyn.contact.creepages import WheelsetCreepages, wheelset_creepages
+from raildyn.contact.creepages import WheelsetCreepages, creepage_terms, wheelset_creepages
 from raildyn.contact.fastsim import FastsimResult, Flexibilities, fastsim, flexibilities
 from raildyn.contact.fastsim_python import fastsim_reference
 from raildyn.contact.geometry import (
@@ -50,7 +50,13 @@ from raildyn.contact.kalker import (
 )
 from raildyn.contact.polach import POLACH_DRY, POLACH_WET, PolachAdhesion, polach, polach_adhesion
 from raildyn.contact.profiles import conical_wheel, s1002_wheel, uic60_rail
-from raildyn.contact.saturation import carter, carter_coefficient, saturation_factor, shen_hedrick_elkins
+from raildyn.contact.saturation import (
+    carter,
+    carter_coefficient,
+    saturation_factor,
+    saturation_scale,
+    shen_hedrick_elkins,
+)
 
 __all__ = [
     "CREEP_LAWS",
@@ -95,7 +101,9 @@ __all__ = [
     "rolling_radius_difference",
     "s1002_wheel",
     "saturation_factor",
+    "saturation_scale",
     "shen_hedrick_elkins",
     "uic60_rail",
+    "creepage_terms",
     "wheelset_creepages",
 ]

@@ -11,9 +11,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._compiled import compiled_as
 
 __all__ = [
     "WheelsetCreepages",
+    "creepage_terms",
     "wheelset_creepages",
 ]
 
@@ -155,16 +157,60 @@ def wheelset_creepages(
     return WheelsetCreepages(*_wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r))
 
 
+def _terms(
+    speed, lateral_velocity, yaw_angle, yaw_rate, rolling_radius_left, rolling_radius_right, nominal_radius,
+    half_gauge, contact_angle_left, contact_angle_right,
+):  # fmt: skip
+    r0 = nominal_radius
+    yaw, spin = half_gauge * yaw_rate / speed, yaw_rate / speed
+    return (
+        (r0 - rolling_radius_left) / r0 - yaw,
+        (r0 - rolling_radius_right) / r0 + yaw,
+        lateral_velocity / speed - yaw_angle,
+        spin * np.cos(contact_angle_left) - np.sin(contact_angle_left) / r0,
+        spin * np.cos(contact_angle_right) + np.sin(contact_angle_right) / r0,
+    )
+
+
+@compiled_as(_terms)
+def creepage_terms(
+    speed, lateral_velocity, yaw_angle, yaw_rate, rolling_radius_left, rolling_radius_right, nominal_radius,
+    half_gauge, contact_angle_left, contact_angle_right,
+):  # fmt: skip
+    """The five creepages of :func:`wheelset_creepages` as a tuple of numbers, for a force law to combine.
+
+    The same formulas, in the form that numpy evaluates on arrays and numba compiles for floats:
+    the nonlinear contact of :mod:`raildyn.wheelset` (its numpy path and its compiled engine)
+    builds its creep forces on them (see ``raildyn._compiled``).
+
+    Parameters
+    ----------
+    speed, lateral_velocity, yaw_angle, yaw_rate, rolling_radius_left, rolling_radius_right
+        As for :func:`wheelset_creepages` (m/s, m/s, rad, rad/s, m, m); arrays broadcast.
+    nominal_radius, half_gauge, contact_angle_left, contact_angle_right
+        As for :func:`wheelset_creepages` (m, m, rad, rad).
+
+    Returns
+    -------
+    tuple of float or ndarray
+        γ_x,L, γ_x,R, γ_y, φ_L, φ_R (φ in 1/m).
+
+    Examples
+    --------
+    >>> [round(float(g) * 1e4, 4) for g in creepage_terms(40.0, 0.0, 0.0, 0.0, 0.46015, 0.45985, 0.46,
+    ...                                                   0.75, 0.0, 0.0)[:2]]
+    [-3.2609, 3.2609]
+    """
+    c = wheelset_creepages(
+        speed, lateral_velocity, yaw_angle, yaw_rate, rolling_radius_left, rolling_radius_right,
+        nominal_radius, half_gauge, contact_angle_left, contact_angle_right,
+    )  # fmt: skip
+    return c.longitudinal[0], c.longitudinal[1], c.lateral[0], c.spin[0], c.spin[1]
+
+
 def _wheelset_creepages(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r):
     """γ_x, γ_y, φ of :func:`wheelset_creepages`, each of shape (2, ...), from checked arrays."""
-    yaw, spin = l_half * psi_dot / v, psi_dot / v
-    parts = (
-        (r0 - r_l) / r0 - yaw,
-        (r0 - r_r) / r0 + yaw,
-        y_dot / v - psi,
-        spin * np.cos(d_l) - np.sin(d_l) / r0,
-        spin * np.cos(d_r) + np.sin(d_r) / r0,
-    )
+    parts = _terms(v, y_dot, psi, psi_dot, r_l, r_r, r0, l_half, d_l, d_r)
     # Broadcast only when the shapes differ: the nonlinear wheelset calls this at every evaluation
     # of its right-hand side, with arrays of one shape.
     if len({np.shape(p) for p in parts}) > 1:

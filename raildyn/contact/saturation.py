@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from raildyn import _checks
+from raildyn._compiled import compiled_as
 from raildyn.contact.kalker import (
     CreepCoefficients,
     CreepForces,
@@ -23,6 +24,7 @@ __all__ = [
     "carter",
     "carter_coefficient",
     "saturation_factor",
+    "saturation_scale",
     "shen_hedrick_elkins",
 ]
 
@@ -131,10 +133,40 @@ def saturation_factor(force, limit, *, check: bool = True) -> np.ndarray:
             _checks.array("force", force, low=0.0, allow_empty=False),
             _checks.positive("limit", limit),
         )
-    u = np.abs(force) / limit
-    v = np.minimum(u, 3.0)  # u ≥ 3: saturated, v − v²/3 + v³/27 = 1 (and no overflow for a huge u)
-    sat = v - v**2 / 3.0 + v**3 / 27.0
-    return np.divide(sat, u, out=np.ones_like(u), where=u > 0)
+    return _scale(np.abs(force) / limit)
+
+
+def _scale(u):
+    # (3 − v + v²/9)/max(u, 3) with v = min(u, 3) is 1 − u/3 + u²/27 up to u = 3 and exactly 1/u beyond
+    # (no overflow for a huge u), 1 at u = 0: F_sat/F everywhere, with no division by zero.
+    v = np.minimum(u, 3.0)
+    return (3.0 - v + v * v / 9.0) / np.maximum(u, 3.0)
+
+
+@compiled_as(_scale)
+def saturation_scale(u):
+    """F_sat/F of :func:`saturation_factor` at the normalised force F̂ = u = |F|/(μN).
+
+    The law in the form that numpy evaluates on arrays and numba compiles for floats: the
+    compiled wheel–rail engine (:mod:`raildyn.wheelset`) calls this function, and compiles it
+    without its check (see ``raildyn._compiled``).
+
+    Parameters
+    ----------
+    u : float or array_like
+        F̂ = |F|/(μN), ≥ 0 (dimensionless).
+
+    Returns
+    -------
+    float or ndarray
+        F_sat/F, in (0, 1]: 1 − u/3 + u²/27 up to u = 3, 1/u beyond.
+
+    Examples
+    --------
+    >>> float(saturation_scale(6.0))  # twice the force that saturates: half of it is carried
+    0.16666666666666666
+    """
+    return _scale(_checks.array("u", u, low=0.0, allow_empty=False))
 
 
 def shen_hedrick_elkins(longitudinal, lateral, spin, normal_load, friction, coefficients: CreepCoefficients):

@@ -10,7 +10,6 @@ equilibrium of :func:`raildyn.curving.quasi_static.quasi_static_curving`.
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -155,7 +154,7 @@ def curve_entry(model, speed, curve, *, max_step: float = 0.01, rtol: float = 1e
     x = model.system.wheelset_positions
     start = -x.max() - _LEAD_IN
     end = curve.straight + curve.transition_length + curve.arc_length - x.max()  # all on the arc
-    on_curve = dataclasses.replace(model, speed=V, curve=curve, start=start)
+    on_curve = model.replace(curve=curve, start=start)
     if end <= curve.straight + curve.transition_length - x.min():
         raise ValueError(
             f"curve must have an arc longer than the vehicle ({np.ptp(x):.4g} m), got {curve.arc_length!r} m"
@@ -169,7 +168,7 @@ def curve_entry(model, speed, curve, *, max_step: float = 0.01, rtol: float = 1e
     offset = np.empty((len(x), run.t.size))
     yaw = np.empty_like(offset)
     for j, t in enumerate(run.t):
-        offset[:, j], yaw[:, j] = on_curve.relative_to_track(t, run.states[:, j])
+        offset[:, j], yaw[:, j] = on_curve.relative_to_track(t, run.states[:, j], V)
     flange = np.empty_like(offset)
     for i, (_, _, ws) in enumerate(on_curve.system.wheelsets):
         forces = wheel_forces(ws, model.contact, offset[i], 0.0, 0.0, 0.0, V)

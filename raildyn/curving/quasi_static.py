@@ -23,9 +23,8 @@ elsewhere.
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import lru_cache, partial
 
 import numpy as np
 from scipy.optimize import root
@@ -131,51 +130,48 @@ def _weight(model: NonlinearLateral) -> float:
 def _newton(model, q, V, kappa, a_q) -> tuple[np.ndarray, np.ndarray]:
     """Newton's method on the columns of q (n, P) together; the converged columns' flags (P,).
 
-    Compiled (:func:`raildyn.stability._engine.arc_newton`, the same steps column by column) for a
-    model the engine holds; in numpy, every column at once, for one with nonlinear elements.
+    Each step solves J Δq = −r for every column still above the tolerance, and halves its step until
+    the sum of its squared residuals falls (at most eleven times); a column stops where no step
+    improves it or its Jacobian is singular, and the other searches take it over. The forces and
+    their Jacobian are the model's (:meth:`~raildyn.wheelset.NonlinearLateral.arc_forces`), compiled
+    where the engine holds the model and in numpy where it holds a Python force law.
     """
-    from raildyn.stability import _engine
-
     tolerance = _TOLERANCE * _weight(model)
-    n, P = q.shape
-    q = np.array(q, dtype=float, order="C", copy=True)
-    try:
-        row = _engine.pack(model)
-    except _engine.NotCompiled:
-        pass
-    else:
-        done = np.zeros(P, dtype=bool)
-        V, kappa, a_q = (np.ascontiguousarray(np.broadcast_to(v, (P,)), dtype=float) for v in (V, kappa, a_q))
-        _engine.arc_newton(row, q, V, kappa, a_q, tolerance, _NEWTON_STEPS, done)
-        return q, done
+    P = q.shape[1]
+    q = np.array(q, dtype=float, copy=True)
+    V, kappa, a_q = (np.broadcast_to(np.asarray(v, dtype=float), (P,)) for v in (V, kappa, a_q))
     r = model.arc_forces(q, V, kappa, a_q)
+    active = np.abs(r).max(axis=0) > tolerance  # a NaN residual is not above: its column stops
     for _ in range(_NEWTON_STEPS):
-        error = np.abs(r).max(axis=0)
-        active = error > tolerance
         if not active.any():
             break
-        J = model.arc_jacobian(q, V, kappa, a_q)
+        cols = np.flatnonzero(active)
+        on = (V[cols], kappa[cols], a_q[cols])
+        J = model.arc_jacobian(q[:, cols], *on).reshape(cols.size, q.shape[0], q.shape[0])
         with np.errstate(all="ignore"):
             try:
-                step = np.linalg.solve(J, -r.T[:, :, None])[:, :, 0].T
+                step = np.linalg.solve(J, -r[:, cols].T[:, :, None])[:, :, 0].T
             except np.linalg.LinAlgError:  # a singular Jacobian somewhere: the other searches take over
                 break
-        step[:, ~np.all(np.isfinite(step), axis=0)] = 0.0
-        # Halve each column's step until the sum of its squared residuals falls (at most twelve times).
-        merit = (r * r).sum(axis=0)
-        alpha = np.ones(P)
+        finite = np.all(np.isfinite(step), axis=0)
+        step[:, ~finite] = 0.0  # such a column is not moved: it stops below
+        merit = (r[:, cols] ** 2).sum(axis=0)
+        alpha = 1.0
+        trying = np.flatnonzero(finite)  # the columns (of cols) whose step has not yet improved them
+        improved = np.zeros(cols.size, dtype=bool)
         for _ in range(12):
-            trial = q + alpha * step
-            r_trial = model.arc_forces(trial, V, kappa, a_q)
-            better = (r_trial * r_trial).sum(axis=0) < merit
-            if better[active].all():
+            if trying.size == 0:
                 break
-            alpha = np.where(better, alpha, 0.5 * alpha)
-        keep = better & active
-        q[:, keep] = trial[:, keep]
-        r[:, keep] = r_trial[:, keep]
-        if not keep.any():
-            break
+            at = cols[trying]
+            trial = q[:, at] + alpha * step[:, trying]
+            r_trial = model.arc_forces(trial, V[at], kappa[at], a_q[at])
+            better = (r_trial**2).sum(axis=0) < merit[trying]
+            q[:, at[better]], r[:, at[better]] = trial[:, better], r_trial[:, better]
+            improved[trying[better]] = True
+            trying = trying[~better]
+            alpha *= 0.5
+        active[cols[~improved]] = False
+        active[cols] &= np.abs(r[:, cols]).max(axis=0) > tolerance
     return q, np.abs(r).max(axis=0) <= tolerance
 
 
@@ -194,9 +190,12 @@ def _rescue(model: NonlinearLateral, start: np.ndarray, V: float, R: float, D: f
     for k in range(len(trials) + 1):
         if k == len(trials):  # the dynamics on the arc, from the best guess so far, then Powell once more
             arc = Curve(radius=R, cant=D, transition_length=0.0, arc_length=2 * _HALF_ARC, straight=0.0)
-            on_arc = dataclasses.replace(model, speed=V, curve=arc, start=_HALF_ARC)
-            run = solve_ivp(on_arc.rhs, (0.0, _SETTLE), np.concatenate([best, rest]), rtol=1e-6, atol=1e-9,
-                            label=f"the settling run at V = {V:g} m/s in R = {R:g} m")  # fmt: skip
+            on_arc = model.replace(curve=arc, start=_HALF_ARC)
+            label = f"the settling run at V = {V:g} m/s in R = {R:g} m"
+            start = np.concatenate([best, rest])
+            run = solve_ivp(
+                partial(on_arc.rhs, speed=V), (0.0, _SETTLE), start, rtol=1e-6, atol=1e-9, label=label
+            )
             trials.append(("hybr", run.y[:n, -1]))
         method, guess = trials[k]
         found = root(residual, guess, method=method, tol=1e-12)

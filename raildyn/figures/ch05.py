@@ -68,7 +68,7 @@ def wheelset_damping() -> Figure:
     chapter=5,
 )
 def nonlinear_limit_cycle() -> Figure:
-    model = wheelset.NonlinearWheelset(_SOFT, wheelset.WheelRailContact(), 60.0)
+    model = wheelset.NonlinearWheelset(_SOFT, wheelset.WheelRailContact())
     run = stability.simulate(model, 60.0, [1e-3, 0.0, 0.0, 0.0], 4.0)
     fig = new_figure(figsize=(7.0, 3.0))
     run.plot(fig.subplots(), flange_clearance=model.contact.flange_clearance)

@@ -10,6 +10,7 @@ its Floquet multipliers. SI units throughout.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -21,7 +22,6 @@ from raildyn.stability.nonlinear import (
     _MAX_DISPLACEMENT,
     _MAX_DURATION,
     _MIN_RUN_SPEED,
-    _at_speed,
     _cycles,
     _displaced,
     _displacement,
@@ -29,6 +29,7 @@ from raildyn.stability.nonlinear import (
     _engine_choice,
     _integrate,
     _method,
+    _model,
 )
 
 __all__ = [
@@ -192,7 +193,7 @@ def bifurcation_diagram(
 
     Parameters
     ----------
-    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
+    model : NonlinearModel
         The nonlinear model, as for :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`.
     speeds : array_like, shape (n_speeds,)
         Speeds of the ramp, m/s, each in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`], in any order:
@@ -275,7 +276,7 @@ def bifurcation_diagrams(
 
     Parameters
     ----------
-    models : sequence of NonlinearWheelset, NonlinearLateral or models with ``at_speed(V)``
+    models : sequence of NonlinearModel
         At least one; all with the same ``state_size`` and ``lateral_index``.
     speeds, initial_displacement, duration, max_step, threshold, refine, progress, rtol, method, engine
         As for :func:`~raildyn.stability.bifurcation.bifurcation_diagram`, the same for every model.
@@ -300,7 +301,7 @@ def bifurcation_diagrams(
     method, engine = _method(method), _engine_choice(engine)
     if isinstance(models, (str, bytes)) or not isinstance(models, (list, tuple)) or not models:
         raise TypeError(f"models must be a non-empty list of nonlinear models, got {models!r:.80}")
-    first = [_at_speed(m, float(V[0])) for m in models]
+    first = [_model(m) for m in models]
     for i, m in enumerate(first[1:], start=1):
         if (m.state_size, m.lateral_index) != (first[0].state_size, first[0].lateral_index):
             raise ValueError(
@@ -314,8 +315,7 @@ def bifurcation_diagrams(
     cycles = [[] for _ in range(k)]
     states = [_displaced(first[0], y_start) for _ in range(k)]
     for v in items:
-        at_v = [m.at_speed(v) for m in models]
-        for i, cycle in enumerate(_cycles(at_v, [v] * k, states, T, h, r, method, engine)):
+        for i, cycle in enumerate(_cycles(first, [v] * k, states, T, h, r, method, engine)):
             cycles[i].append(cycle)
             # Continue the branch from the cycle; after a decay, start again displaced.
             states[i] = cycle.state if cycle.hunting(threshold) else _displaced(first[0], y_start)
@@ -333,7 +333,7 @@ def bifurcation_diagrams(
         order = sorted(brackets)
         mids = [0.5 * (brackets[i][0] + brackets[i][1]) for i in order]
         trials = _cycles(
-            [models[i].at_speed(mid) for i, mid in zip(order, mids, strict=True)],
+            [first[i] for i in order],
             mids, [brackets[i][2] for i in order], T, h, r, method, engine,
         )  # fmt: skip
         for i, mid, trial in zip(order, mids, trials, strict=True):
@@ -421,9 +421,9 @@ def periodic_orbit(
 
     Parameters
     ----------
-    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
-        The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
-        ``lateral_index``.
+    model : NonlinearModel
+        A nonlinear model (:class:`~raildyn.wheelset.NonlinearLateral`,
+        :class:`~raildyn.wheelset.NonlinearWheelset`).
     speed : float
         Speed V, m/s, in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`] (below walking pace the creep
         damping 2f/V makes the equations too stiff to run).
@@ -464,7 +464,8 @@ def periodic_orbit(
     positive("tol", tol)
     iterations = integer("max_iter", max_iter, low=1, high=100)
     rtol = _checks.tolerance("rtol", rtol)
-    m = _at_speed(model, V)
+    m = _model(model)
+    rhs = partial(m.rhs, speed=V)
     n = m.state_size
     x = array("state", state, shape=(n,)).copy()
     if not x.any():
@@ -481,7 +482,7 @@ def periodic_orbit(
     from raildyn.integrators.runner import EvaluationBudget
 
     budget = EvaluationBudget(_SHOOTING_EVALUATIONS)  # the whole shooting's work, shared by each run below
-    sol = _integrate(m.rhs, 2.0 * T, x, "DOP853", rtol, 1e-12, V, budget=budget, events=section)
+    sol = _integrate(rhs, 2.0 * T, x, "DOP853", rtol, 1e-12, V, budget=budget, events=section)
     if sol.t_events[0].size:
         x = sol.y_events[0][0].copy()
     x[iv] = 0.0
@@ -496,7 +497,7 @@ def periodic_orbit(
         k = starts.shape[1]
 
         def rhs(t, z):
-            return m.rhs(t, z.reshape(n, k)).reshape(-1)
+            return m.rhs(t, z.reshape(n, k), V).reshape(-1)
 
         sol = _integrate(rhs, t_end, starts.reshape(-1), "DOP853", rtol, 1e-12, V, budget=budget)
         return sol.y[:, -1].reshape(n, k)
@@ -511,7 +512,7 @@ def periodic_orbit(
         end, residual = ends[:, 0], ends[:, 0] - x
         J = np.empty((n, n))
         J[:, :-1] = (ends[:, 1:] - starts[:, 1:] - residual[:, None]) / h[free]
-        J[:, -1] = m.rhs(T, end)  # d/dT of φ_T(x₀)
+        J[:, -1] = rhs(T, end)  # d/dT of φ_T(x₀)
         try:
             step = np.linalg.solve(J, -residual)
         except np.linalg.LinAlgError:
@@ -531,7 +532,7 @@ def periodic_orbit(
     monodromy = (ends[:, :n] - ends[:, n : 2 * n]) / (2 * h)
     end = ends[:, -1]
     # One period, read at 400 points from the solver's dense output (DOP853's own interpolant).
-    sol = _integrate(m.rhs, T, x, "DOP853", rtol, 1e-12, V, dense_output=True)
+    sol = _integrate(rhs, T, x, "DOP853", rtol, 1e-12, V, dense_output=True)
     lateral = sol.sol(np.linspace(0.0, T, 401))[iy]
     return PeriodicOrbit(
         V,

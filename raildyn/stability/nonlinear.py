@@ -1,24 +1,27 @@
 """Nonlinear hunting (book chapter 7): time runs and limit cycles (the bifurcation diagram and periodic
 orbits built on them are in :mod:`raildyn.stability.bifurcation`).
 
-The nonlinear models (:class:`raildyn.wheelset.NonlinearWheelset`,
-:class:`raildyn.wheelset.NonlinearLateral`) expose ``rhs(t, state)``; these
-functions integrate them and measure the steady hunting. RK45 runs on a compiled
-engine (``raildyn.stability._engine``: the same equations in numba, many speeds or
-vehicles at once, on the compiled Dormand–Prince of :mod:`raildyn.integrators.runner`)
-wherever it holds the model, and on ``scipy.integrate.solve_ivp`` (through the same runner,
-bounded alike) otherwise or when asked (``engine="scipy"``, the reference the tests hold the
-engine to). Every run is bounded by the runner's one budget rule and fails by its one rule.
+The nonlinear models follow :class:`raildyn.wheelset.NonlinearModel` (``rhs(t, state, speed)``;
+:class:`raildyn.wheelset.NonlinearLateral` and :class:`raildyn.wheelset.NonlinearWheelset`); these
+functions integrate them at the speeds they are given and measure the steady hunting. RK45 runs
+on the compiled engine (the model's :meth:`~raildyn.wheelset.NonlinearLateral.compiled_rhs`: the same
+equations in numba, many speeds or vehicles at once, on the compiled Dormand–Prince of
+:mod:`raildyn.integrators.runner`) wherever the model says the engine holds it (its
+``compiled_reason`` is None), and on ``scipy.integrate.solve_ivp`` (through the same runner, bounded
+alike) otherwise or when asked (``engine="scipy"``, the reference the tests hold the engine to).
+Every run is bounded by the runner's one budget rule and fails by its one rule.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import array, integer, positive, scalar
+from raildyn.wheelset import NonlinearModel
 
 __all__ = [
     "LimitCycle",
@@ -119,8 +122,9 @@ def simulate(
 
     Parameters
     ----------
-    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
-        ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and ``lateral_index``.
+    model : NonlinearModel
+        A nonlinear model (:class:`~raildyn.wheelset.NonlinearLateral`,
+        :class:`~raildyn.wheelset.NonlinearWheelset`).
     speed : float
         V, m/s, in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`] (below walking pace the creep damping
         2f/V makes the equations too stiff to run; hunting sets in at tens of m/s).
@@ -140,7 +144,7 @@ def simulate(
         accuracy asked for, needs about a tenth of the evaluations (give it a ``max_step`` of a
         fraction of the period, not the explicit methods' 2 ms).
     engine : str
-        Who runs RK45: ``"compiled"``, the numba engine (``raildyn.stability._engine``, the
+        Who runs RK45: ``"compiled"``, the numba engine (the model's ``compiled_rhs``, the
         same steps as scipy's RK45 at some hundred times the speed); ``"scipy"``,
         ``scipy.integrate.solve_ivp`` on the model's ``rhs`` (the reference the engine is tested
         against); ``"auto"`` (default), the engine wherever it holds the model (not nonlinear
@@ -170,7 +174,7 @@ def simulate(
     h = positive("max_step", max_step)
     r = _checks.tolerance("rtol", rtol)
     method, engine = _method(method), _engine_choice(engine)
-    m = _at_speed(model, V)
+    m = _model(model)
     y0 = array("initial_state", initial_state, shape=(m.state_size,))
     t = _samples(T, h, m.state_size)
     (states,), _ = _runs([m], [V], [y0], T, h, r, method, engine, rows=None)
@@ -215,31 +219,32 @@ def _runs(
     one batch where it can (see :func:`simulate`'s ``engine``); scipy runs them one by one.
     Returns one array (rows, samples) per model and the states at ``duration``.
     """
-    from raildyn.integrators import runner  # here: numba loads only when a run needs it
-    from raildyn.stability import _engine
+    from raildyn.integrators import runner
 
     kept = models[0].state_size if rows is None else len(rows)
     t = _samples(duration, max_step, kept * len(models))
     packed = None
     if engine != "scipy" and method == "RK45":
-        try:
-            packed = [_engine.pack(m) for m in models]
-        except _engine.NotCompiled as why:
-            if engine == "compiled":
-                raise ValueError(
-                    f"engine 'compiled' cannot run this model: {why}; use engine='scipy'"
-                ) from None
+        why = next((m.compiled_reason for m in models if m.compiled_reason is not None), None)
+        if why is None:
+            packed = [m.compiled_rhs(v) for m, v in zip(models, speeds, strict=True)]
+        elif engine == "compiled":
+            raise ValueError(f"engine 'compiled' cannot run this model: {why}; use engine='scipy'")
     elif engine == "compiled":
         raise ValueError(f"engine 'compiled' runs method 'RK45' only, got method {method!r}")
     if packed is None:
         out, ends = [], []
         for m, v, y0 in zip(models, speeds, starts, strict=True):
-            sol = _integrate(m.rhs, duration, y0, method, rtol, 1e-9, v, max_step=max_step, t_eval=t)
+            sol = _integrate(partial(m.rhs, speed=v), duration, y0, method, rtol, 1e-9, v, max_step=max_step,
+                             t_eval=t)  # fmt: skip
             out.append(sol.y if rows is None else sol.y[rows])
             ends.append(sol.y[:, -1].copy())
         return out, ends
+    data = np.zeros((len(packed), max(p.row.size for p in packed)))  # rows padded to the longest
+    for i, p in enumerate(packed):
+        data[i, : p.row.size] = p.row
     runs = runner.dormand_prince_batch(
-        _engine.lateral_rhs, _engine.batch(packed), np.array(starts), t, rtol=rtol, atol=1e-9,
+        packed[0].kernel, data, np.array(starts), t, rtol=rtol, atol=1e-9,
         max_step=max_step, rows=rows, budget=_MAX_EVALUATIONS, labels=[_label(v) for v in speeds],
     )  # fmt: skip
     return [run.y for run in runs], [run.end for run in runs]
@@ -266,20 +271,18 @@ def _duration(name: str, value) -> float:
     return scalar(name, value, low=_MIN_DURATION, high=_MAX_DURATION)
 
 
-def _at_speed(model, speed: float):
-    """``model.at_speed(speed)``, checked to offer ``rhs``, ``state_size`` and ``lateral_index``."""
+def _model(model):
+    """``model``, checked to follow the nonlinear protocol, its ``state_size`` and ``lateral_index`` sound."""
     _checks.not_a_class("model", model, "a nonlinear model")
-    if not callable(getattr(model, "at_speed", None)):
+    if not isinstance(model, NonlinearModel):
         raise TypeError(
-            "model must be a nonlinear model with at_speed(V) (NonlinearWheelset, NonlinearLateral), "
+            "model must be a nonlinear model (raildyn.wheelset.NonlinearModel: rhs(t, state, speed), "
+            "replace, state_size, lateral_index, compiled_reason; NonlinearLateral, NonlinearWheelset), "
             f"got {model!r:.80} of type {type(model).__name__}"
         )
-    m = model.at_speed(speed)
-    if not callable(getattr(m, "rhs", None)):
-        raise TypeError(f"model.at_speed(V) must give a model with rhs(t, state), got {type(m).__name__}")
-    integer("model state_size", m.state_size, low=1)
-    integer("model lateral_index", m.lateral_index, low=0, high=m.state_size - 1)
-    return m
+    integer("model state_size", model.state_size, low=1)
+    integer("model lateral_index", model.lateral_index, low=0, high=model.state_size - 1)
+    return model
 
 
 def _integrate(rhs, duration: float, y0, method: str, rtol: float, atol: float, speed: float, **options):
@@ -447,9 +450,9 @@ def limit_cycle_amplitude(
 
     Parameters
     ----------
-    model : NonlinearWheelset, NonlinearLateral or any object with ``at_speed(V)``
-        The nonlinear model; ``at_speed(V)`` gives one with ``rhs``, ``state_size`` and
-        ``lateral_index``.
+    model : NonlinearModel
+        A nonlinear model (:class:`~raildyn.wheelset.NonlinearLateral`,
+        :class:`~raildyn.wheelset.NonlinearWheelset`).
     speed : float
         Speed V, m/s, in [1, :data:`~raildyn.constants.MAXIMUM_SPEED`] (below walking pace the creep
         damping 2f/V makes the equations too stiff to run).
@@ -500,7 +503,7 @@ def limit_cycle_amplitude(
     r = _checks.tolerance("rtol", rtol)
     method, engine = _method(method), _engine_choice(engine)
     y_start = _displacement(initial_displacement)
-    m = _at_speed(model, V)
+    m = _model(model)
     if initial_state is None:
         y0 = _displaced(m, y_start)
     else:

@@ -20,6 +20,7 @@ from scipy.special import fresnel
 
 from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
+from raildyn._compiled import compiled_as
 from raildyn.constants import GRAVITY
 from raildyn.track.cant import (
     MAXIMUM_CANT,
@@ -29,7 +30,54 @@ from raildyn.track.cant import (
     _rail_spacing,
 )
 
-__all__ = ["Curve"]
+__all__ = ["Curve", "ramp"]
+
+# The shortest transition the ramp divides by, m: a curve without transitions (L = 0) steps from the
+# straight to the arc within a picometre, and no division by zero is made.
+_SHORTEST_RAMP = 1.0e-12
+
+
+def _ramp(s, start, end, transition):
+    rise = np.minimum(s - start, end - s) / np.maximum(transition, _SHORTEST_RAMP)
+    return np.maximum(np.minimum(rise, 1.0), 0.0)
+
+
+@compiled_as(_ramp)
+def ramp(s, start, end, transition):
+    """The share of a curve's arc that its curvature and cant reach at distance s, in [0, 1].
+
+    0 on the straights, rising linearly along the entry transition, 1 on the arc, falling
+    along the exit: κ(s) = ramp/R and h_t(s) = ramp·h_t of :class:`Curve`. In the form that
+    numpy evaluates on arrays and numba compiles for floats: the compiled engine of
+    :mod:`raildyn.wheelset` calls it too (see ``raildyn._compiled``).
+
+    Parameters
+    ----------
+    s : float or array_like
+        Distance along the centre line, m, finite.
+    start, end : float
+        s at the start of the entry transition and at the end of the exit transition, m
+        (finite, ``start`` ≤ ``end``; :meth:`Curve.ends`).
+    transition : float
+        L, the length of each transition, m, in [0, (end − start)/2].
+
+    Returns
+    -------
+    float or ndarray
+        The share, shaped like ``s``.
+
+    Examples
+    --------
+    >>> [float(ramp(s, 50.0, 370.0, 60.0)) for s in (40.0, 80.0, 200.0, 340.0)]
+    [0.0, 0.5, 1.0, 0.5]
+    """
+    s = _checks.array("s", s, allow_empty=False)
+    start, end = scalar("start", start), scalar("end", end)
+    if end < start:
+        raise ValueError(f"start must not lie beyond end, got start = {start!r} m and end = {end!r} m")
+    transition = scalar("transition", transition, low=0.0, high=0.5 * (end - start))
+    out = _ramp(s, start, end, transition)
+    return float(out) if out.ndim == 0 else out
 
 
 @dataclass(frozen=True)
@@ -107,19 +155,31 @@ class Curve:
     @property
     def length(self) -> float:
         """The distance from s = 0 to the end of the exit transition, m."""
-        return self._ends()[3]
+        return self.ends()[3]
 
-    def _ends(self) -> tuple[float, float, float, float]:
-        """s at the starts of the entry transition, the arc and the exit transition, and at the end, m."""
+    def ends(self) -> tuple[float, float, float, float]:
+        """The ends of the curve's pieces along the centre line.
+
+        Returns
+        -------
+        tuple of float
+            s₀, s₁, s₂, s₃, m: the starts of the entry transition, the arc and the exit
+            transition, and the end of the exit transition.
+        """
         s0 = self.straight
         s1 = s0 + self.transition_length
         s2 = s1 + self.arc_length
         return s0, s1, s2, s2 + self.transition_length
 
+    def _share(self, s) -> np.ndarray:
+        """:func:`ramp` along this curve at the distances s (checked), as an array."""
+        s0, _, _, s3 = self.ends()
+        return _ramp(_checks.array("s", s, allow_empty=False), s0, s3, self.transition_length)
+
     def _pieces(self, s):
         """The distances as an array, and the masks of the straight, entry, arc, exit and the track beyond."""
         s = _checks.array("s", s, allow_empty=False)
-        s0, s1, s2, s3 = self._ends()
+        s0, s1, s2, s3 = self.ends()
         entry = (s > s0) & (s <= s1)
         arc = (s > s1) & (s <= s2)
         exit_ = (s > s2) & (s <= s3)
@@ -147,14 +207,7 @@ class Curve:
         float or ndarray
             κ(s), 1/m, shaped like ``s``.
         """
-        s, _, entry, arc, exit_, _ = self._pieces(s)
-        s0, _, _, s3 = self._ends()
-        R, L = self.radius, self.transition_length
-        k = np.zeros_like(s)
-        k[entry] = (s[entry] - s0) / (R * L)
-        k[arc] = 1.0 / R
-        k[exit_] = (s3 - s[exit_]) / (R * L)
-        return self._out(k, s)
+        return self._out(self._share(s) / self.radius, s)
 
     def cant_at(self, s):
         """The cant h_t(s) at distance s, m (``cant`` itself is the arc's cant, a field).
@@ -172,14 +225,7 @@ class Curve:
         float or ndarray
             h_t(s), m, shaped like ``s``.
         """
-        s, _, entry, arc, exit_, _ = self._pieces(s)
-        s0, _, _, s3 = self._ends()
-        D, L = self.cant, self.transition_length
-        out = np.zeros_like(s)
-        out[entry] = D * (s[entry] - s0) / L
-        out[arc] = D
-        out[exit_] = D * (s3 - s[exit_]) / L
-        return self._out(out, s)
+        return self._out(self.cant * self._share(s), s)
 
     def unbalanced_acceleration(self, s, speed):
         """The unbalanced lateral acceleration a_q(s) = V² κ(s) − g h_t(s)/(2a_r) at distance s, m/s².
@@ -283,7 +329,7 @@ class Curve:
             θ(s), rad, shaped like ``s``.
         """
         s, _, entry, arc, exit_, beyond = self._pieces(s)
-        s0, s1, _, s3 = self._ends()
+        s0, s1, _, s3 = self.ends()
         R, L = self.radius, self.transition_length
         total = (L + self.arc_length) / R
         theta = np.zeros_like(s)
@@ -308,7 +354,7 @@ class Curve:
 
     def _plan(self, s) -> tuple[np.ndarray, np.ndarray]:
         s, before, entry, arc, exit_, beyond = self._pieces(s)
-        s0, s1, s2, s3 = self._ends()
+        s0, s1, s2, s3 = self.ends()
         R, L = self.radius, self.transition_length
         x, y = np.empty_like(s), np.empty_like(s)
         # the first straight
@@ -399,7 +445,7 @@ class Curve:
 
         view = _checks.choice("view", view, ("plan", "curvature", "cant"))
         ax = plots.axes_or_new(ax)
-        ends = np.array(self._ends())
+        ends = np.array(self.ends())
         margin = max(0.1 * self.length, 10.0)
         s = np.unique(np.concatenate([np.linspace(-margin, self.length + margin, 801), ends]))
         with matplotlib.rc_context(plots.STYLE):

@@ -1,7 +1,8 @@
 """The private helpers several modules of :mod:`raildyn.vehicles` share.
 
 The checks of a car body on two trucks and of a truck's ``assemble`` arguments, ``replace``
-passing a change on to an inner model (lateral, three-piece and locomotive models), and the
+passing a change on to an inner model (lateral, three-piece and locomotive models), the body of every
+lateral vehicle's ``nonlinear()``, and the
 checks of a ``vehicle`` argument, of its speed and of an earlier plot's artists (the response
 functions and the freight car's plots). Kept apart so that those modules import each other's
 helpers from here, not from one another.
@@ -17,6 +18,7 @@ from raildyn import _checks
 from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY
 from raildyn.linear_model import Assembler, LinearSystem, as_linear_system
+from raildyn.wheelset import NonlinearLateral, WheelRailContact
 
 
 def _replace_through(model, changes: dict, inner: str):
@@ -28,6 +30,15 @@ def _replace_through(model, changes: dict, inner: str):
     if rest:
         own[inner] = (own.get(inner) or getattr(model, inner)).replace(**rest)
     return replace(model, **own)
+
+
+def _nonlinear(model, contact, elements=()) -> NonlinearLateral:
+    """The body of every lateral vehicle's ``nonlinear(contact=None)``: its linear system with ``contact``
+    (default :class:`~raildyn.wheelset.WheelRailContact`) and the nonlinear ``elements`` it holds."""
+    contact = (
+        WheelRailContact() if contact is None else _checks.instance("contact", contact, WheelRailContact)
+    )
+    return NonlinearLateral(model.linear_system(), contact, elements)
 
 
 def _check_body_on_two_trucks(car, spacing: str, truck_half: str, truck_half_length: float) -> None:

@@ -9,7 +9,7 @@
 Both are linear models of the one protocol (:class:`raildyn.linear_model.LinearModel`:
 ``linear_system()``, ``matrices(V)``, ``state_space(V)``, ``replace(...)``), driven
 by the alignment and cross-level under each wheelset, for :mod:`raildyn.stability`
-and :mod:`raildyn.vehicles.response`; ``nonlinear(speed)`` gives the nonlinear counterpart.
+and :mod:`raildyn.vehicles.response`; ``nonlinear()`` gives the nonlinear counterpart.
 The default parameters are those of the Manchester benchmark vehicle
 (Iwnicki 1998), cited beside each value; the wheel–rail contact is the cone of
 :class:`~raildyn.wheelset.Wheelset`. A second parameter set,
@@ -29,7 +29,12 @@ from raildyn import _checks, contact
 from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
-from raildyn.vehicles._shared import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
+from raildyn.vehicles._shared import (
+    _check_body_on_two_trucks,
+    _check_truck_assembly,
+    _nonlinear,
+    _replace_through,
+)
 from raildyn.wheelset import NonlinearLateral, WheelRailContact, Wheelset, add_wheelset
 
 __all__ = ["COOPERRIDER_CAR", "MANCHESTER_CAR", "Bogie", "Car", "cooperrider_car"]
@@ -46,13 +51,11 @@ _B2 = 1.0
 class _OnTheRails(LinearModelBase):
     """A lateral vehicle whose wheelsets run on the rails: the linear protocol and its nonlinear twin."""
 
-    def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The vehicle with nonlinear wheel–rail contact at ``speed``.
+    def nonlinear(self, contact: WheelRailContact | None = None) -> NonlinearLateral:
+        """The vehicle with nonlinear wheel–rail contact (its speed is given to each run).
 
         Parameters
         ----------
-        speed : float
-            V, m/s.
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 
@@ -60,10 +63,7 @@ class _OnTheRails(LinearModelBase):
         -------
         NonlinearLateral
         """
-        contact = (
-            WheelRailContact() if contact is None else _checks.instance("contact", contact, WheelRailContact)
-        )
-        return NonlinearLateral(self.linear_system(), contact, speed)
+        return _nonlinear(self, contact)
 
 
 @dataclass(frozen=True)

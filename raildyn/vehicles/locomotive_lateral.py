@@ -9,7 +9,7 @@
 
 Both follow the one linear protocol (:class:`raildyn.linear_model.LinearModel`), so
 :mod:`raildyn.stability` and :mod:`raildyn.vehicles.response` take them unchanged,
-and ``nonlinear(speed)`` gives the nonlinear counterpart
+and ``nonlinear()`` gives the nonlinear counterpart
 (:class:`~raildyn.wheelset.NonlinearLateral`: nonlinear wheel–rail contact, and the
 middle axles' play as a clearance).
 
@@ -53,7 +53,12 @@ from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
 from raildyn.suspension import clearance_force
-from raildyn.vehicles._shared import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
+from raildyn.vehicles._shared import (
+    _check_body_on_two_trucks,
+    _check_truck_assembly,
+    _nonlinear,
+    _replace_through,
+)
 from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE
 from raildyn.wheelset import (
     NonlinearLateral,
@@ -155,14 +160,6 @@ def _locomotive_wheelset() -> Wheelset:
         lateral_damping=_PRIMARY_LATERAL_DAMPING,
         yaw_damping=_PRIMARY_YAW_DAMPING,
     )
-
-
-def _nonlinear(model, speed, contact, elements) -> NonlinearLateral:
-    """The nonlinear counterpart of a truck or locomotive: :class:`~raildyn.wheelset.NonlinearLateral`."""
-    contact = (
-        WheelRailContact() if contact is None else _checks.instance("contact", contact, WheelRailContact)
-    )
-    return NonlinearLateral(model.linear_system(), contact, speed, elements)
 
 
 def rigid_truck_wavelength(rolling_radius, half_gauge, conicity, axle_spacing) -> float:
@@ -363,13 +360,12 @@ class ThreeAxleTruck(LinearModelBase):
             stiffness=centring,
         )
 
-    def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The truck with nonlinear wheel–rail contact and its middle axle's play, at ``speed``.
+    def nonlinear(self, contact: WheelRailContact | None = None) -> NonlinearLateral:
+        """The truck with nonlinear wheel–rail contact and its middle axle's play (its speed is given to
+        each run).
 
         Parameters
         ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 
@@ -378,7 +374,7 @@ class ThreeAxleTruck(LinearModelBase):
         NonlinearLateral
         """
         play = self.play_element()
-        return _nonlinear(self, speed, contact, () if play is None else (play,))
+        return _nonlinear(self, contact, () if play is None else (play,))
 
     def assemble(
         self, asm: Assembler, tag: str, body: dict[str, float], body_yaw: str | None, first_input: int
@@ -514,13 +510,12 @@ class LateralLocomotive(LinearModelBase):
         """
         return replace(self, truck=self.truck.without_play())
 
-    def nonlinear(self, speed: float = 30.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The locomotive with nonlinear wheel–rail contact and its middle axles' play, at ``speed``.
+    def nonlinear(self, contact: WheelRailContact | None = None) -> NonlinearLateral:
+        """The locomotive with nonlinear wheel–rail contact and its middle axles' play (its speed is given to
+        each run).
 
         Parameters
         ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 
@@ -529,7 +524,7 @@ class LateralLocomotive(LinearModelBase):
         NonlinearLateral
         """
         plays = [self.truck.play_element(tag) for tag in ("1", "2")]
-        return _nonlinear(self, speed, contact, tuple(p for p in plays if p is not None))
+        return _nonlinear(self, contact, tuple(p for p in plays if p is not None))
 
     @property
     def wheelset(self) -> Wheelset:

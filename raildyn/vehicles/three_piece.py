@@ -68,7 +68,12 @@ from raildyn.constants import (
     STANDARD_RAIL_SPACING,
 )
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
-from raildyn.vehicles._shared import _check_body_on_two_trucks, _check_truck_assembly, _replace_through
+from raildyn.vehicles._shared import (
+    _check_body_on_two_trucks,
+    _check_truck_assembly,
+    _nonlinear,
+    _replace_through,
+)
 from raildyn.vehicles._three_piece_parameters import (
     _BODY_HEIGHT,
     _BODY_LENGTH,
@@ -325,13 +330,12 @@ class ThreePieceTruck(LinearModelBase):
         kinds = ("alignment",) * 2 + ("cross_level",) * 2
         return asm.system(input_positions=np.tile([0.0, 2 * self.semi_wheelbase], 2), input_kinds=kinds)
 
-    def nonlinear(self, speed: float = 20.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The truck with nonlinear wheel–rail contact and its friction as friction, at ``speed``.
+    def nonlinear(self, contact: WheelRailContact | None = None) -> NonlinearLateral:
+        """The truck with nonlinear wheel–rail contact and its friction as friction (its speed is given to
+        each run).
 
         Parameters
         ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 
@@ -339,7 +343,7 @@ class ThreePieceTruck(LinearModelBase):
         -------
         NonlinearLateral
         """
-        return _nonlinear(self.linear_system(), contact, speed, self._friction_elements("", {}, None))
+        return _nonlinear(self, contact, self._friction_elements("", {}, None))
 
 
 def _friction_law(friction: float, velocity_scale: float):
@@ -353,13 +357,6 @@ def _friction_law(friction: float, velocity_scale: float):
         return friction * np.tanh(v / velocity_scale)
 
     return law
-
-
-def _nonlinear(system, contact, speed, elements) -> NonlinearLateral:
-    contact = (
-        WheelRailContact() if contact is None else _checks.instance("contact", contact, WheelRailContact)
-    )
-    return NonlinearLateral(system, contact, speed, elements)
 
 
 def _roll_damping() -> float:
@@ -483,8 +480,9 @@ class LateralFreightCar(LinearModelBase):
         kinds = ("alignment",) * 4 + ("cross_level",) * 4
         return asm.system(input_positions=np.tile(self.axle_positions, 2), input_kinds=kinds)
 
-    def nonlinear(self, speed: float = 20.0, contact: WheelRailContact | None = None) -> NonlinearLateral:
-        """The car with nonlinear wheel–rail contact and the trucks' friction as friction, at ``speed``.
+    def nonlinear(self, contact: WheelRailContact | None = None) -> NonlinearLateral:
+        """The car with nonlinear wheel–rail contact and the trucks' friction as friction (its speed is
+        given to each run).
 
         The lateral wedges, the warp wedges and the centre plates become nonlinear elements
         (:class:`~raildyn.wheelset.SuspensionElement`) with the smooth Coulomb law
@@ -492,8 +490,6 @@ class LateralFreightCar(LinearModelBase):
 
         Parameters
         ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
         contact : WheelRailContact, optional
             The nonlinear contact; default :class:`~raildyn.wheelset.WheelRailContact`.
 
@@ -504,7 +500,7 @@ class LateralFreightCar(LinearModelBase):
         elements = sum(
             (self.truck._friction_elements(tag, body, "body ψ") for tag, body, _ in self._trucks()), ()
         )
-        return _nonlinear(self.linear_system(), contact, speed, elements)
+        return _nonlinear(self, contact, elements)
 
 
 def freight_car(loaded: bool = True) -> LateralFreightCar:

@@ -17,8 +17,12 @@ dynamics.
   rolling-radius difference Δr(y), saturating creep forces and a flange modelled as a stiff
   spring beyond the flangeway clearance, on a cone or from a profile pair
   (:func:`profile_contact`);
-* :mod:`raildyn.wheelset.nonlinear` — the nonlinear wheelset and lateral vehicle
-  (:class:`NonlinearWheelset`, :class:`NonlinearLateral`), as ``rhs(t, y)``.
+* :mod:`raildyn.wheelset.protocol` — the nonlinear protocol (:class:`NonlinearModel`:
+  ``rhs(t, state, speed)``, ``replace``, ``compiled_reason``);
+* :mod:`raildyn.wheelset.nonlinear` — its models, the nonlinear lateral vehicle and the nonlinear
+  wheelset (:class:`NonlinearLateral`, :class:`NonlinearWheelset`), which
+  a compiled engine (the package's ``_engine``, on the one wheel–rail law of ``_law``) runs where it
+  holds them.
 
 The contact geometry (Δr(y), contact-angle difference) enters as callables so
 that the profiles of chapter 4 can be plugged in; the default is a cone of
@@ -46,13 +50,16 @@ from raildyn.wheelset.kinematics import (
 )
 from raildyn.wheelset.linear import CreepTerms, Wheelset, add_wheelset, creep_terms, wickens_critical_speed
 from raildyn.wheelset.nonlinear import NonlinearLateral, NonlinearWheelset, SuspensionElement
+from raildyn.wheelset.protocol import CompiledRHS, NonlinearModel
 
 __all__ = [
+    "CompiledRHS",
     "ContactTable",
     "ContactTables",
     "CreepTerms",
     "KinematicOscillation",
     "NonlinearLateral",
+    "NonlinearModel",
     "NonlinearWheelset",
     "SuspensionElement",
     "WheelForces",

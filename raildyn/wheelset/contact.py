@@ -23,8 +23,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
-from raildyn.contact.creepages import wheelset_creepages
-from raildyn.contact.saturation import saturation_factor
+from raildyn.wheelset import _law
 from raildyn.wheelset.linear import Wheelset
 
 __all__ = [
@@ -37,13 +36,6 @@ __all__ = [
     "tread_contact_angles",
     "wheel_forces",
 ]
-
-
-def _cone(conicity: float) -> Callable[[np.ndarray], np.ndarray]:
-    def rolling_radius_difference(y):
-        return 2.0 * conicity * np.asarray(y, dtype=float)
-
-    return rolling_radius_difference
 
 
 @dataclass(frozen=True)
@@ -228,9 +220,7 @@ class ContactTable:
 
     def __call__(self, y):
         y = np.asarray(y, dtype=float)
-        out = np.interp(y, self.x, self.f)
-        out = np.where(y < self.x[0], self.f[0] + self.slopes[0] * (y - self.x[0]), out)
-        return np.where(y > self.x[-1], self.f[-1] + self.slopes[1] * (y - self.x[-1]), out)
+        return _law.table_many(self.x, self.f, np.ravel(y)).reshape(y.shape)  # the engine's table, compiled
 
 
 class ContactTables:
@@ -355,65 +345,64 @@ def tread_contact_angles(ws: Wheelset, contact: WheelRailContact, y) -> np.ndarr
 
 def _angles(ws: Wheelset, contact: WheelRailContact, y):
     """ϑ_L(y), ϑ_R(y) and Δϑ(y) of :func:`tread_contact_angles`, unchecked."""
-    if contact.contact_angle_difference is None:
-        dd = 2.0 * ws.contact_angle_parameter * np.asarray(y, dtype=float) / ws.half_gauge
-    else:
-        dd = contact.contact_angle_difference(y)
+    p = _law.parameters(ws)
+    y = np.asarray(y, dtype=float)
+    dd = (
+        _law.cone(p, 0, y)[1]
+        if contact.contact_angle_difference is None
+        else contact.contact_angle_difference(y)
+    )
     if contact.tread_angles is None:
-        return ws.contact_angle + dd / 2.0, ws.contact_angle - dd / 2.0, dd
+        return (*_law.tread(p, 0, dd), dd)
     left, right = contact.tread_angles(y)
     return left, right, dd
 
 
-def _creep(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
-    """Each wheel's creepages, Kalker's linear forces and their saturation factor; Δϑ(y).
-
-    Returns γ_x, γ_y, φ, F_x, F_y, M_z and the factor, each of shape (2, ...) (left, right),
-    and Δϑ.
-    """
-    r0 = ws.rolling_radius
-    dr = (contact.rolling_radius_difference or _cone(ws.conicity))(y)
+def _geometry(ws: Wheelset, contact: WheelRailContact, y):
+    """The law's parameters and geometry at y: p, Δr, Δϑ, ϑ_L, ϑ_R and the centred ϑ_c,L, ϑ_c,R."""
+    p = _law.parameters(ws)
+    dr = (
+        _law.cone(p, 0, np.asarray(y, dtype=float))[0]
+        if contact.rolling_radius_difference is None
+        else contact.rolling_radius_difference(y)
+    )
     theta_l, theta_r, dd = _angles(ws, contact, y)
-    creep = wheelset_creepages(
-        speed,
-        ydot,
-        psi,
-        psidot,
-        r0 + dr / 2.0,
-        r0 - dr / 2.0,
-        r0,
-        ws.half_gauge,
-        theta_l,
-        theta_r,
-        check=False,
-    )
-    xi_x, xi_y = creep.longitudinal, creep.lateral
-    # Less the centred wheelset's spins ∓ sin ϑ_c/r₀, whose forces cancel (contact_forces says why).
-    centred_l, centred_r = _angles(ws, contact, 0.0)[:2]
-    spin = (
-        creep.spin
-        + np.array([np.sin(centred_l), -np.sin(centred_r)]).reshape((2,) + (1,) * (creep.spin.ndim - 1)) / r0
-    )
-    fx = -ws.f11 * xi_x
-    fy = -ws.f22 * xi_y - ws.f23 * spin
-    mz = ws.f23 * xi_y - ws.f33 * spin
-    scale = saturation_factor(np.hypot(fx, fy), contact.friction * ws.axle_load / 2.0, check=False)
-    return xi_x, xi_y, spin, fx, fy, mz, scale, dd
+    centred_l, centred_r = (float(v) for v in _angles(ws, contact, 0.0)[:2])
+    return p, dr, dd, theta_l, theta_r, centred_l, centred_r
 
 
-def _flange(contact: WheelRailContact, y):
-    """The flange's lateral force on the wheelset, N: a spring beyond the clearance, pushing back."""
-    excess = np.abs(y) - contact.flange_clearance
-    return -contact.flange_stiffness * np.sign(y) * np.maximum(excess, 0.0)
+def _flat(*arrays):
+    """The arrays broadcast together, each as a contiguous 1-D float array, and their common shape."""
+    shape = np.broadcast_shapes(*(np.shape(a) for a in arrays))
+    return [
+        np.array(np.broadcast_to(a, shape), dtype=float).ravel() for a in arrays
+    ], shape  # writable copies
 
 
 def _contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
     """:func:`contact_forces` without the checks, for the right-hand sides (called at every step)."""
-    a, W = ws.half_gauge, ws.axle_load
-    _, _, _, fx, fy, mz, scale, dd = _creep(ws, contact, y, psi, ydot, psidot, speed)
-    lateral = scale[0] * fy[0] + scale[1] * fy[1] - W / 2.0 * dd + _flange(contact, y)
-    yaw = a * (scale[1] * fx[1] - scale[0] * fx[0]) + scale[0] * mz[0] + scale[1] * mz[1]
-    return lateral, yaw + W * a * ws.contact_angle * psi
+    p, dr, dd, theta_l, theta_r, centred_l, centred_r = _geometry(ws, contact, y)
+    (dr, dd, theta_l, theta_r, y, psi, ydot, psidot, speed), shape = _flat(
+        dr, dd, theta_l, theta_r, y, psi, ydot, psidot, speed
+    )
+    lateral, yaw = _law.wheelset_many(
+        p,
+        contact.friction,
+        contact.flange_clearance,
+        contact.flange_stiffness,
+        dr,
+        dd,
+        theta_l,
+        theta_r,
+        centred_l,
+        centred_r,
+        y,
+        psi,
+        ydot,
+        psidot,
+        speed,
+    )
+    return lateral.reshape(shape), yaw.reshape(shape)
 
 
 @dataclass(frozen=True)
@@ -476,12 +465,18 @@ def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, 
     (-42.3, 0.0)
     """
     y, psi, ydot, psidot, speed = _motion(ws, contact, y, psi, ydot, psidot, speed)
-    xi_x, xi_y, _, fx, fy, _, scale, _ = _creep(ws, contact, y, psi, ydot, psidot, speed)
-    tx, ty = scale * fx, scale * fy
-    flange = _flange(contact, y)
+    p, dr, _, theta_l, theta_r, centred_l, centred_r = _geometry(ws, contact, y)
+    (dr, theta_l, theta_r, psi, ydot, psidot, speed), shape = _flat(
+        dr, theta_l, theta_r, psi, ydot, psidot, speed
+    )
+    xi_l, xi_r, xi_y, fx_l, fy_l, fx_r, fy_r = _law.wheels_many(
+        p, contact.friction, dr, theta_l, theta_r, centred_l, centred_r, psi, ydot, psidot, speed
+    ).reshape((7, *shape))
+    tx, ty = np.stack([fx_l, fx_r]), np.stack([fy_l, fy_r])
+    flange = _law.flange(y, contact.flange_clearance, contact.flange_stiffness)
     return WheelForces(
         tx,
         ty,
         np.stack([np.where(y > 0, flange, 0.0), np.where(y < 0, flange, 0.0)]),
-        np.abs(tx * xi_x) + np.abs(ty * xi_y),
+        np.abs(tx * np.stack([xi_l, xi_r])) + np.abs(ty * xi_y),
     )

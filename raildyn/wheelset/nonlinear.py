@@ -1,13 +1,14 @@
-"""The nonlinear wheelset and the nonlinear lateral vehicle (book chapters 5, 7 and 8), as ``rhs(t, state)``.
+"""The nonlinear lateral models (book chapters 5, 7 and 8), cases of the protocol of
+:mod:`raildyn.wheelset.protocol`.
 
-* :class:`~raildyn.wheelset.NonlinearWheelset`: the suspended wheelset of :mod:`raildyn.wheelset.linear` with
-  the nonlinear contact of :mod:`raildyn.wheelset.contact`;
-* :class:`~raildyn.wheelset.NonlinearLateral`: any lateral linear system with its wheelsets' linear wheel–rail
-  terms replaced by the nonlinear contact forces, optional nonlinear suspension elements
-  (:class:`~raildyn.wheelset.SuspensionElement`) and an optional curve (:class:`raildyn.track.curve.Curve`)
-  to run through.
+* :class:`~raildyn.wheelset.NonlinearLateral`: any lateral linear system with its wheelsets' linear
+  wheel–rail terms replaced by the nonlinear contact forces of :mod:`raildyn.wheelset.contact`,
+  optional nonlinear suspension elements (:class:`~raildyn.wheelset.SuspensionElement`) and an
+  optional curve (:class:`raildyn.track.curve.Curve`) to run through;
+* :class:`~raildyn.wheelset.NonlinearWheelset`: the suspended wheelset of
+  :mod:`raildyn.wheelset.linear` as such a model.
 
-The compiled engine of :mod:`raildyn.stability` runs both where it can. SI units throughout.
+SI units throughout.
 """
 
 from __future__ import annotations
@@ -22,9 +23,11 @@ from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
 from raildyn.linear_model import LinearSystem
 from raildyn.track.curve import Curve
-from raildyn.wheelset.contact import WheelRailContact, _contact_forces
+from raildyn.wheelset import _engine
+from raildyn.wheelset.contact import ContactTable, ContactTables, WheelRailContact, _contact_forces
 from raildyn.wheelset.curved import track_on_arc
 from raildyn.wheelset.linear import Wheelset, creep_terms
+from raildyn.wheelset.protocol import CompiledRHS
 
 __all__ = ["NonlinearLateral", "NonlinearWheelset", "SuspensionElement"]
 
@@ -41,63 +44,6 @@ def _state(state, n: int) -> np.ndarray:
     if not math.isfinite(x.sum()):  # one sum at every step; the full check only to word the message
         _checks.array("state", x)
     return x
-
-
-@dataclass(frozen=True)
-class NonlinearWheelset:
-    """The suspended wheelset with nonlinear contact, as ``rhs(t, state)`` for solve_ivp.
-
-    State [y, ψ, ẏ, ψ̇] (m, rad, m/s, rad/s); the frame runs straight at ``speed``.
-    """
-
-    wheelset: Wheelset = field(default_factory=Wheelset)
-    contact: WheelRailContact = field(default_factory=WheelRailContact)
-    speed: float = 30.0
-
-    def __post_init__(self):
-        _checks.instance("wheelset", self.wheelset, Wheelset)
-        _checks.instance("contact", self.contact, WheelRailContact)
-        _speed(self.speed)
-
-    state_size = 4
-    lateral_index = 0  # the state entry of the lateral displacement followed in hunting studies
-
-    def at_speed(self, speed) -> NonlinearWheelset:
-        """The same wheelset at another speed.
-
-        Parameters
-        ----------
-        speed : float
-            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
-
-        Returns
-        -------
-        NonlinearWheelset
-        """
-        return NonlinearWheelset(self.wheelset, self.contact, speed)
-
-    def rhs(self, t, state):
-        """Time derivative of the state (vectorised over trailing columns).
-
-        Parameters
-        ----------
-        t : float
-            s, finite (the model is autonomous: unused).
-        state : ndarray, (4,) or (4, k)
-            [y, ψ, ẏ, ψ̇], finite.
-
-        Returns
-        -------
-        ndarray, like ``state``
-            [ẏ, ψ̇, ÿ, ψ̈].
-        """
-        scalar("t", t)
-        ws = self.wheelset
-        y, psi, ydot, psidot = _state(state, 4)
-        fy, mz = _contact_forces(ws, self.contact, y, psi, ydot, psidot, self.speed)
-        yddot = (fy - ws.lateral_stiffness * y - ws.lateral_damping * ydot) / ws.mass
-        psiddot = (mz - ws.yaw_stiffness * psi - ws.yaw_damping * psidot) / ws.yaw_inertia
-        return np.array([ydot, psidot, yddot, psiddot])
 
 
 _ELEMENT_PROBE = (np.array([-1.0e-3, 0.0, 1.0e-3]), np.array([-0.01, 0.0, 0.01]))  # m (rad), m/s (rad/s)
@@ -167,8 +113,8 @@ class NonlinearLateral:
     M q̈ = −C_s q̇ − K_s q + Σ F_contact − Σ_e F_e c_e, where K_s is K without the creep and
     gravitational terms of each wheelset and without each element's linear spring, C_s is C₀
     without each element's linear damper, and F_e = f_e(c_e·q, c_e·q̇) is the force of
-    :class:`SuspensionElement` e on its deflection c_e·q. State [q; q̇]; ``rhs(t, state)``
-    for solve_ivp.
+    :class:`SuspensionElement` e on its deflection c_e·q. State [q; q̇]; ``rhs(t, state, speed)``
+    (the :class:`NonlinearModel` protocol).
 
     On a ``curve`` the coordinates are taken in axes that follow the vehicle: their origin
     runs along the track's centre line at V, at s_c = ``start`` + V t, turning with the
@@ -187,19 +133,18 @@ class NonlinearLateral:
     system : LinearSystem
         With at least one wheelset on the rails.
     contact : WheelRailContact
-    speed : float
-        V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     elements : tuple of SuspensionElement
         Nonlinear suspension elements, each naming coordinates of ``system``; empty by default.
     curve : raildyn.track.curve.Curve or None
         The track's curve (turning left); None: tangent track.
     start : float
         s_c at t = 0, the distance of the vehicle's centre along ``curve``, m (finite).
+    compiled_reason : str or None
+        Derived: None where the compiled engine runs the model; otherwise why it does not.
     """
 
     system: LinearSystem
     contact: WheelRailContact = field(default_factory=WheelRailContact)
-    speed: float = 30.0
     elements: tuple = ()
     curve: object = None
     start: float = 0.0
@@ -213,9 +158,10 @@ class NonlinearLateral:
     _laws: tuple = field(init=False, repr=False, compare=False)
     _lateral_mass: np.ndarray = field(init=False, repr=False, compare=False)
     _positions: np.ndarray | None = field(init=False, repr=False, compare=False)
+    compiled_reason: str | None = field(init=False, repr=False, compare=False)
+    _row: np.ndarray | None = field(init=False, repr=False, compare=False)  # packed for the engine, no speed
 
     def __post_init__(self):
-        _speed(self.speed)
         if self.curve is not None:
             _checks.instance("curve", self.curve, Curve)
         scalar("start", self.start)
@@ -273,6 +219,8 @@ class NonlinearLateral:
         object.__setattr__(self, "_lateral_mass", self.system.M @ lateral)
         object.__setattr__(self, "_G", G if self.elements else None)  # None: no elements
         object.__setattr__(self, "_laws", tuple(e.force for e in self.elements))
+        object.__setattr__(self, "compiled_reason", _compiled_reason(self))
+        object.__setattr__(self, "_row", None if self.compiled_reason else _engine.pack(self))
 
     @property
     def state_size(self) -> int:
@@ -283,8 +231,23 @@ class NonlinearLateral:
         """State entry of the first wheelset's lateral displacement (followed in hunting studies)."""
         return self.system.wheelsets[0][0]
 
-    def at_speed(self, speed) -> NonlinearLateral:
-        """The same model at another speed.
+    def replace(self, **changes) -> NonlinearLateral:
+        """A validated copy with some fields changed (``system``, ``contact``, ``elements``, ``curve``,
+        ``start``).
+
+        Parameters
+        ----------
+        **changes
+            Field names and their new values.
+
+        Returns
+        -------
+        NonlinearLateral
+        """
+        return _replace(self, changes, ("system", "contact", "elements", "curve", "start"))
+
+    def compiled_rhs(self, speed) -> CompiledRHS:
+        """The model at speed V as the compiled runner takes it.
 
         Parameters
         ----------
@@ -293,19 +256,29 @@ class NonlinearLateral:
 
         Returns
         -------
-        NonlinearLateral
-        """
-        return NonlinearLateral(self.system, self.contact, speed, self.elements, self.curve, self.start)
+        CompiledRHS
 
-    def rhs(self, t, state):
-        """Time derivative of [q; q̇].
+        Raises
+        ------
+        ValueError
+            If the compiled engine does not run the model (``compiled_reason`` says why).
+        """
+        V = _speed(speed)
+        if self.compiled_reason is not None:
+            raise ValueError(f"the compiled engine cannot run this model: {self.compiled_reason}")
+        return CompiledRHS(_engine.lateral_rhs, _engine.pack(self, V))
+
+    def rhs(self, t, state, speed):
+        """Time derivative of [q; q̇] at speed V.
 
         Parameters
         ----------
         t : float
-            s, finite (the model is autonomous: unused).
+            s, finite (on tangent track the model is autonomous: unused).
         state : ndarray, (2n,) or (2n, k)
             [q; q̇], finite.
+        speed : float
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
 
         Returns
         -------
@@ -313,6 +286,7 @@ class NonlinearLateral:
             [q̇; q̈].
         """
         scalar("t", t)
+        V = _speed(speed)
         n = self.system.size
         state = _state(state, 2 * n)
         q, qdot = state[:n], state[n:]
@@ -320,18 +294,18 @@ class NonlinearLateral:
         force = np.array(force, dtype=float, copy=True)
         if self.curve is None:
             for ws, iy, ipsi, _ in self._groups:
-                fy, mz = _contact_forces(ws, self.contact, q[iy], q[ipsi], qdot[iy], qdot[ipsi], self.speed)
+                fy, mz = _contact_forces(ws, self.contact, q[iy], q[ipsi], qdot[iy], qdot[ipsi], V)
                 force[iy] += fy
                 force[ipsi] += mz
         else:
-            self._curve_forces(t, q, qdot, force)
+            self._curve_forces(t, q, qdot, V, force)
         if self._laws:
             d, v = self._G @ q, self._G @ qdot
             pull = np.array([law(d[i], v[i]) for i, law in enumerate(self._laws)], dtype=float)
             force -= self._G.T @ pull
         return np.concatenate([qdot, self._M_inv @ force])
 
-    def relative_to_track(self, t, state) -> tuple[np.ndarray, np.ndarray]:
+    def relative_to_track(self, t, state, speed) -> tuple[np.ndarray, np.ndarray]:
         """Each wheelset's lateral displacement and yaw relative to the track where it runs.
 
         On tangent track these are its coordinates; on a ``curve``, y − y_t and ψ − ψ_t with
@@ -344,6 +318,9 @@ class NonlinearLateral:
             s, finite.
         state : ndarray, (2n,) or (2n, k)
             [q; q̇], finite.
+        speed : float
+            V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]: the vehicle's centre is at
+            s_c = ``start`` + V t.
 
         Returns
         -------
@@ -353,6 +330,7 @@ class NonlinearLateral:
             rad, anticlockwise.
         """
         t = scalar("t", t)
+        V = _speed(speed)
         n = self.system.size
         q = _state(state, 2 * n)[:n]
         iy = np.array([w[0] for w in self.system.wheelsets])
@@ -360,7 +338,7 @@ class NonlinearLateral:
         if self.curve is None:
             return q[iy].copy(), q[ipsi].copy()
         x = self.system.wheelset_positions
-        s_c = self.start + self.speed * t
+        s_c = self.start + V * t
         column = (slice(None),) + (None,) * (q.ndim - 1)
         y_t = (0.5 * x * x * self.curve.curvature(s_c + x / 3.0))[column]
         psi_t = (x * self.curve.curvature(s_c + x / 2.0))[column]
@@ -372,8 +350,8 @@ class NonlinearLateral:
         In the axes that follow the vehicle round an arc of curvature κ at the speed V (the
         class docstring, with κ the same under every wheelset: y_t = ½x²κ, the path's yaw x κ,
         the yaw rate V κ) and with q̇ = 0. Their zero is the quasi-static equilibrium of
-        :func:`raildyn.curving.quasi_static.quasi_static_curving`. The model's own ``speed``, ``curve`` and
-        ``start`` are not used.
+        :func:`raildyn.curving.quasi_static.quasi_static_curving`. The model's own ``curve`` and ``start``
+        are not used. The compiled engine evaluates them where it runs the model, numpy otherwise.
 
         Parameters
         ----------
@@ -408,6 +386,10 @@ class NonlinearLateral:
                 raise ValueError(
                     f"{name} must be a float or have the shape {batch} of q's batch, got {value.shape}"
                 )
+        if self._row is not None:
+            track_on_arc(0.0, kappa)  # its check of the curvature, which the numpy path meets there
+            shape = (n, q.size // n)
+            return self._compiled_on_arcs(_engine.arc_forces, q, (V, kappa, a_q), shape).reshape(q.shape)
         column = (slice(None),) + (None,) * (q.ndim - 1)
         force = -self._K_suspension @ q
         self._add_curved_contact(
@@ -442,8 +424,12 @@ class NonlinearLateral:
         self.arc_forces(q, speed, curvature, unbalanced_acceleration)  # the checks, and a finite answer
         q = np.asarray(q, dtype=float)
         V, kappa = np.asarray(speed, dtype=float), np.asarray(curvature, dtype=float)
-        column = (slice(None),) + (None,) * (q.ndim - 1)
         n, h = self.system.size, 1.0e-7
+        if self._row is not None:
+            arcs = (V, kappa, np.asarray(unbalanced_acceleration, dtype=float))
+            J = self._compiled_on_arcs(_engine.arc_jacobian, q, arcs, (q.size // n, n, n))
+            return J[0] if q.ndim == 1 else J
+        column = (slice(None),) + (None,) * (q.ndim - 1)
         J = np.broadcast_to(-self._K_suspension, (*q.shape[1:], n, n)).copy()
         for ws, iy, ipsi, x in self._groups:
             y_t, psi_t = track_on_arc(x[column], kappa)
@@ -468,6 +454,16 @@ class NonlinearLateral:
             J -= np.einsum("ei,e...,ej->...ij", self._G, slope, self._G)
         return J
 
+    def _compiled_on_arcs(self, kernel, q, arcs, shape) -> np.ndarray:
+        """The engine's ``kernel`` (forces or Jacobian on arcs) on q's columns, as an array of ``shape``."""
+        n = self.system.size
+        columns = np.ascontiguousarray(q.reshape(n, -1), dtype=float)
+        P = columns.shape[1]
+        V, kappa, a_q = (np.ascontiguousarray(np.broadcast_to(v, (P,)), dtype=float) for v in arcs)
+        out = np.empty(shape)
+        kernel(self._row, columns, V, kappa, a_q, out)
+        return out
+
     def _add_curved_contact(self, q, qdot, V, kappa, track, force) -> None:
         """Add the wheel–rail forces in the axes that follow a curve to ``force``: each wheelset at y − y_t
         with y_t = ``track``(x), the yaw ψ − x κ of its path and the yaw rate ψ̇ + V κ."""
@@ -480,9 +476,9 @@ class NonlinearLateral:
             force[iy] += fy
             force[ipsi] += mz
 
-    def _curve_forces(self, t: float, q, qdot, force) -> None:
+    def _curve_forces(self, t: float, q, qdot, V: float, force) -> None:
         """Add the contact forces on the curve and the unbalanced weight to ``force`` (see the class)."""
-        V, curve = self.speed, self.curve
+        curve = self.curve
         s_c = self.start + V * t
         kappa = float(curve.curvature(s_c))
         a_q = float(curve.unbalanced_acceleration(s_c, V))
@@ -491,3 +487,75 @@ class NonlinearLateral:
             q, qdot, V, kappa, lambda x: (0.5 * x * x * curve.curvature(s_c + x / 3.0))[column], force
         )
         force -= self._lateral_mass[column] * a_q
+
+
+def _compiled_reason(model: NonlinearLateral) -> str | None:
+    """None where the compiled engine holds ``model``; otherwise what it holds that the engine cannot."""
+    if model.elements:
+        return "its nonlinear suspension elements have force laws in Python"
+    contact = model.contact
+    for name in ("rolling_radius_difference", "contact_angle_difference"):
+        fn = getattr(contact, name)
+        if fn is not None and type(fn) is not ContactTable:
+            return f"its contact's {name} is a Python function, not a profile table"
+    angles = contact.tread_angles
+    if angles is not None and not (
+        type(angles) is ContactTables
+        and len(angles.tables) == 2
+        and all(type(t) is ContactTable for t in angles.tables)
+    ):
+        return "its contact's tread_angles is a Python function, not two profile tables"
+    return None
+
+
+def _replace(model, changes: dict, fields: tuple[str, ...]):
+    """``model`` with ``changes`` to its ``fields``, built and validated afresh."""
+    for name in changes:
+        if name not in fields:
+            raise TypeError(f"{type(model).__name__}.replace() takes the fields {fields}, got {name!r}")
+    return type(model)(**{name: changes.get(name, getattr(model, name)) for name in fields})
+
+
+class NonlinearWheelset(NonlinearLateral):
+    """The suspended wheelset of chapter 5 with nonlinear contact: a :class:`NonlinearLateral`.
+
+    The system is the wheelset's own :meth:`~raildyn.wheelset.Wheelset.linear_system`: state
+    [y, ψ, ẏ, ψ̇] (m, rad, m/s, rad/s), its frame running straight.
+
+    Parameters
+    ----------
+    wheelset : Wheelset, optional
+        Default :class:`~raildyn.wheelset.Wheelset`.
+    contact : WheelRailContact, optional
+        Default :class:`~raildyn.wheelset.WheelRailContact`.
+
+    Attributes
+    ----------
+    wheelset : Wheelset
+    contact : WheelRailContact
+    """
+
+    def __init__(self, wheelset: Wheelset | None = None, contact: WheelRailContact | None = None):
+        wheelset = Wheelset() if wheelset is None else _checks.instance("wheelset", wheelset, Wheelset)
+        contact = (
+            WheelRailContact() if contact is None else _checks.instance("contact", contact, WheelRailContact)
+        )
+        object.__setattr__(self, "wheelset", wheelset)
+        super().__init__(wheelset.linear_system(), contact)
+
+    def replace(self, **changes) -> NonlinearWheelset:
+        """A validated copy with ``wheelset`` or ``contact`` changed.
+
+        Parameters
+        ----------
+        **changes
+            ``wheelset`` or ``contact`` and its new value.
+
+        Returns
+        -------
+        NonlinearWheelset
+        """
+        return _replace(self, changes, ("wheelset", "contact"))
+
+    def __repr__(self) -> str:
+        return f"NonlinearWheelset(wheelset={self.wheelset!r}, contact={self.contact!r})"

@@ -197,6 +197,7 @@ ENTRIES = [
         lambda: call(3e4, 1e4),
         accepts={"limit": "big tiny mm", "force": "zero list big mm"},
     ),
+    fuzz("raildyn.contact.saturation_scale", lambda: call(1.5), accepts={"u": "zero list big mm"}),
     fuzz(
         "raildyn.contact.shen_hedrick_elkins",
         lambda: call(1e-3, 2e-3, 0.1, 1e5, 0.3, coefficients()),
@@ -246,6 +247,20 @@ ENTRIES = [
     ),
     fuzz(
         "raildyn.contact.wheelset_creepages",
+        lambda: call(40.0, 0.01, 1e-3, 0.02, 0.46015, 0.45985, 0.46, 0.75, 0.05, -0.05),
+        accepts={
+            "speed": "tiny",
+            "rolling_radius_left": "list",
+            "rolling_radius_right": "list",
+            "lateral_velocity": SIGNED,
+            "yaw_angle": SIGNED,
+            "yaw_rate": SIGNED,
+            "contact_angle_left": SIGNED,
+            "contact_angle_right": SIGNED,
+        },
+    ),
+    fuzz(
+        "raildyn.contact.creepage_terms",
         lambda: call(40.0, 0.01, 1e-3, 0.02, 0.46015, 0.45985, 0.46, 0.75, 0.05, -0.05),
         accepts={
             "speed": "tiny",

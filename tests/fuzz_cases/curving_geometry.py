@@ -76,6 +76,13 @@ ENTRIES = [
         },
     ),
     fuzz("raildyn.track.curve.Curve.replace", lambda: on(Curve(), radius=800.0)),
+    fuzz("raildyn.track.curve.Curve.ends", lambda: on(Curve())),
+    fuzz(
+        "raildyn.track.curve.ramp",
+        lambda: call(S, 50.0, 370.0, 60.0),
+        # any distances and ends of either sign; a curve without transitions (L = 0) steps
+        accepts={**DISTANCES, "start": "zero negative", "end": "big mm", "transition": "zero tiny"},
+    ),
     fuzz("raildyn.track.curve.Curve.curvature", lambda: on(Curve(), S), accepts=DISTANCES),
     fuzz("raildyn.track.curve.Curve.cant_at", lambda: on(Curve(), S), accepts=DISTANCES),
     fuzz(

@@ -9,6 +9,7 @@ from fuzzing import call, fuzz, on
 from raildyn import vehicles as veh
 from raildyn.linear_model import Assembler
 from raildyn.suspension import coulomb_friction
+from raildyn.wheelset import WheelRailContact
 
 
 def wedge(d, v):
@@ -56,8 +57,8 @@ ENTRIES = [
     fuzz("raildyn.vehicles.ThreePieceTruck.linear_system", lambda: on(veh.ThreePieceTruck())),
     fuzz(
         "raildyn.vehicles.ThreePieceTruck.nonlinear",
-        lambda: on(veh.ThreePieceTruck(), 20.0),
-        accepts={"speed": "tiny"},
+        lambda: on(veh.ThreePieceTruck(), WheelRailContact(friction=0.25)),
+        accepts={"contact": "none"},  # the default contact
     ),
     fuzz("raildyn.vehicles.ThreePieceTruck.replace", lambda: on(veh.ThreePieceTruck(), warp_stiffness=1.0e6)),
     fuzz(
@@ -73,8 +74,8 @@ ENTRIES = [
     fuzz("raildyn.vehicles.LateralFreightCar.linear_system", lambda: on(veh.LateralFreightCar())),
     fuzz(
         "raildyn.vehicles.LateralFreightCar.nonlinear",
-        lambda: on(veh.LateralFreightCar(), 20.0),
-        accepts={"speed": "tiny"},
+        lambda: on(veh.LateralFreightCar(), WheelRailContact(friction=0.25)),
+        accepts={"contact": "none"},  # the default contact
     ),
     fuzz(
         "raildyn.vehicles.LateralFreightCar.replace",

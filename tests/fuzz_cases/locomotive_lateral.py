@@ -7,6 +7,7 @@ from fuzzing import call, fuzz, on
 
 from raildyn import vehicles as veh
 from raildyn.linear_model import Assembler
+from raildyn.wheelset import WheelRailContact
 
 
 def truck_assembler():
@@ -42,13 +43,13 @@ ENTRIES = [
     fuzz("raildyn.vehicles.ThreeAxleTruck.play_element", lambda: on(veh.ThreeAxleTruck(), "1")),
     fuzz(
         "raildyn.vehicles.ThreeAxleTruck.nonlinear",
-        lambda: on(veh.ThreeAxleTruck(), 40.0),
-        accepts={"speed": "tiny"},
+        lambda: on(veh.ThreeAxleTruck(), WheelRailContact(friction=0.25)),
+        accepts={"contact": "none"},  # the default contact
     ),
     fuzz(
         "raildyn.vehicles.LateralLocomotive.nonlinear",
-        lambda: on(veh.LateralLocomotive(), 40.0),
-        accepts={"speed": "tiny"},
+        lambda: on(veh.LateralLocomotive(), WheelRailContact(friction=0.25)),
+        accepts={"contact": "none"},  # the default contact
     ),
     fuzz(
         "raildyn.vehicles.LateralLocomotive",

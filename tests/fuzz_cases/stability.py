@@ -20,7 +20,7 @@ from raildyn.linear_model import Assembler, LinearSystem
 from raildyn.vehicles import VerticalCar
 
 SOFT = wh.Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # linear critical speed 54.6 m/s
-NW = wh.NonlinearWheelset(SOFT, speed=60.0)
+NW = wh.NonlinearWheelset(SOFT)
 STATE = np.array([1e-3, 0.0, 0.0, 0.0])
 SPEEDS = [20.0, 60.0]
 RUN = {"duration": 0.2, "max_step": 5e-3}  # a few tenths of a second on coarse steps: cheap
@@ -317,32 +317,38 @@ ENTRIES = [
     ),
     fuzz(
         "raildyn.wheelset.NonlinearWheelset",
-        lambda: call(SOFT, wh.WheelRailContact(), 60.0),
-        accepts={"speed": "tiny"},
+        lambda: call(SOFT, wh.WheelRailContact()),
+        accepts={"wheelset": "none", "contact": "none"},  # the defaults
     ),
-    fuzz("raildyn.wheelset.NonlinearWheelset.at_speed", lambda: on(NW, 50.0), accepts={"speed": "tiny"}),
     fuzz(
-        "raildyn.wheelset.NonlinearWheelset.rhs",
-        lambda: on(NW, 0.0, STATE),
-        accepts={"t": "zero negative big", "state": "zero negative"},  # autonomous; any state near the centre
+        "raildyn.wheelset.NonlinearWheelset.replace",
+        lambda: on(NW, contact=wh.WheelRailContact(friction=0.2)),
     ),
     fuzz(
         "raildyn.wheelset.NonlinearLateral",
-        lambda: call(SOFT.linear_system(), wh.WheelRailContact(), 60.0),
-        accepts={
-            "speed": "tiny",
-            "start": "zero negative big",
-        },  # the vehicle's place along its curve, either side of s = 0
+        lambda: call(SOFT.linear_system(), wh.WheelRailContact()),
+        accepts={"start": "zero negative big"},  # the vehicle's place along its curve, either side of s = 0
     ),
     fuzz(
-        "raildyn.wheelset.NonlinearLateral.at_speed",
+        "raildyn.wheelset.NonlinearLateral.replace",
+        lambda: on(wh.NonlinearLateral(SOFT.linear_system()), start=5.0),
+        accepts={"start": "zero negative big"},
+    ),
+    fuzz(
+        "raildyn.wheelset.NonlinearLateral.compiled_rhs",
         lambda: on(wh.NonlinearLateral(SOFT.linear_system()), 50.0),
         accepts={"speed": "tiny"},
     ),
     fuzz(
+        "raildyn.wheelset.CompiledRHS",
+        lambda: call(NW.compiled_rhs(60.0).kernel, NW.compiled_rhs(60.0).row),
+        # a row is any floats of the engine's layout; its entries are the model's, of either sign
+        accepts={"row": "zero negative huge"},
+    ),
+    fuzz(
         "raildyn.wheelset.NonlinearLateral.rhs",
-        lambda: on(wh.NonlinearLateral(SOFT.linear_system()), 0.0, STATE),
-        accepts={"t": "zero negative big", "state": "zero negative"},
+        lambda: on(wh.NonlinearLateral(SOFT.linear_system()), 0.0, STATE, 60.0),
+        accepts={"t": "zero negative big", "state": "zero negative", "speed": "tiny"},
     ),
     # ---------------------------------------------------------------- raildyn.stability (linear)
     fuzz("raildyn.stability.eigenvalues_against_speed", lambda: call(SOFT, SPEEDS)),
