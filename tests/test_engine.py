@@ -20,7 +20,7 @@ from raildyn.contact.profiles import s1002_wheel, uic60_rail
 from raildyn.errors import SolverError
 from raildyn.stability import _engine
 from raildyn.track import Curve
-from raildyn.vehicles import Bogie, Car
+from raildyn.vehicles import Bogie, LateralCar
 from raildyn.wheelset import NonlinearLateral, NonlinearWheelset, SuspensionElement, Wheelset, profile_contact
 
 AGREEMENT = 1e-4  # relative, of a limit cycle's amplitude and frequency (module docstring)
@@ -31,7 +31,7 @@ def _wheelset():
 
 
 def _models():
-    car = Car().nonlinear()
+    car = LateralCar().nonlinear()
     curve = Curve(radius=600.0, cant=0.1, transition_length=60.0, arc_length=100.0, straight=20.0)
     return {
         "wheelset": _wheelset(),
@@ -83,7 +83,7 @@ def test_the_wheelsets_bifurcation_diagram_is_scipys():
 
 def test_the_cars_bifurcation_diagram_is_scipys():
     # Three speeds about the car's fold, 2 s runs: scipy takes some seconds, the engine a tenth of one.
-    car = Car().nonlinear()
+    car = LateralCar().nonlinear()
     kwargs = dict(duration=2.0, refine=1, progress=False)
     compiled = stability.bifurcation_diagram(car, [50.0, 70.0, 90.0], **kwargs)
     reference = stability.bifurcation_diagram(car, [50.0, 70.0, 90.0], engine="scipy", **kwargs)
