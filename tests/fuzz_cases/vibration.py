@@ -234,7 +234,7 @@ ENTRIES = [
             np.array([[1.0, 0.0]]),
             np.array([[0.0]]),
         ),  # fmt: skip
-        accepts={"*": RESULT},  # a result: what state_space computes
+        accepts={"*": RESULT},  # a result: what state_space_matrices computes
     ),
     fuzz("raildyn.vibration.StateSpaceMatrices.to_control", lambda: on(sdof().state_space_matrices())),
     fuzz(
