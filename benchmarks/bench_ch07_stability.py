@@ -14,7 +14,7 @@ import numpy as np
 
 from benchmarks.common import Case, critical_speed_case, fresh_frame, timed, widget_case
 from raildyn import stability
-from raildyn.vehicles import Car
+from raildyn.vehicles import LateralCar
 
 SPEED_RANGE = (1.0, 200.0)  # m/s
 
@@ -24,7 +24,7 @@ def _bifurcation_case(repeats: int) -> Case:
     # bisections on the nonlinear critical speed. raildyn's compiled engine against the same diagram
     # integrated by scipy's RK45 on the numpy right-hand side (engine="scipy", the path the engine
     # replaced); both take the same steps, and the diagrams must agree before the timing counts.
-    car = Car().nonlinear()
+    car = LateralCar().nonlinear()
     speeds = np.linspace(50.0, 100.0, 11)
 
     def diagram(engine):
@@ -69,7 +69,7 @@ def _bifurcation_widget_case(repeats: int) -> Case:
 def cases(repeats: int):
     from raildyn.widgets import chapter05, chapter07
 
-    result = [critical_speed_case("Manchester car (15 dof)", Car(), SPEED_RANGE, repeats)]
+    result = [critical_speed_case("Manchester car (15 dof)", LateralCar(), SPEED_RANGE, repeats)]
     for label, recipe, control_name, values in chapter05.BENCH_MOVES + chapter07.BENCH_MOVES:
         result.append(widget_case(label, recipe, control_name, values, repeats))
     result.append(_bifurcation_case(repeats))

@@ -1,7 +1,7 @@
 """Chapter 10: the amplification over 500 speeds, and a coupled crossing beside a finite-element engine.
 
-DAF spectrum. raildyn (:func:`raildyn.bridge.moving_force`) evaluates each mode's closed form for every
-speed in one compiled pass. The baseline is the straightforward time-stepping loop: for each speed, the
+DAF spectrum. raildyn (:func:`raildyn.bridge.moving_force_response`) evaluates each mode's closed form for
+every speed in one compiled pass. The baseline is the straightforward time-stepping loop: for each speed, the
 modal equations under the sampled modal loads integrated by chapter 2's average-acceleration Newmark
 (:func:`raildyn.integrators.average_acceleration`), twenty steps per period of the highest mode kept. The
 two spectra must agree to 5e-3 (the baseline's period error on the higher modes and both samplings of
@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from benchmarks.common import Case, timed, widget_case
-from raildyn.bridge import SimplySupportedBeam, crossing, moving_force, sprung_mass, vehicle
+from raildyn.bridge import SimplySupportedBeam, crossing, moving_force_response, sprung_mass, vehicle
 from raildyn.integrators import average_acceleration
 from raildyn.vehicles import VerticalCar
 
@@ -53,12 +53,12 @@ def _stepping_spectrum() -> np.ndarray:
 
 
 def _spectrum_case(repeats: int) -> Case:
-    ours = moving_force(BEAM, SPEEDS, FORCE, samples=SAMPLES).amplification
+    ours = moving_force_response(BEAM, SPEEDS, FORCE, samples=SAMPLES).amplification
     theirs = _stepping_spectrum()
     gap = np.abs(ours - theirs).max()
     if gap > 5e-3:
         raise AssertionError(f"DAF spectra disagree by {gap:.3g}")
-    fast = timed(lambda i: moving_force(BEAM, SPEEDS, FORCE, samples=SAMPLES), repeats)
+    fast = timed(lambda i: moving_force_response(BEAM, SPEEDS, FORCE, samples=SAMPLES), repeats)
     slow = timed(lambda i: _stepping_spectrum(), max(1, repeats // 5))
     return Case(
         f"DAF spectrum, one force, 500 speeds × 10 modes (agree to {gap:.1e})",

@@ -1,7 +1,7 @@
 """Chapter 11: 1,000 critical speeds of the chapter-7 car under parameter scatter, on a 2-worker
 ``LocalCluster`` (:func:`raildyn.validation.uncertainty.monte_carlo`) against a serial loop, in the same run.
 
-The car is :class:`raildyn.vehicles.Car` (the Manchester benchmark vehicle); the primary lateral and
+The car is :class:`raildyn.vehicles.LateralCar` (the Manchester benchmark vehicle); the primary lateral and
 yaw stiffnesses, the secondary lateral and yaw stiffnesses and the conicity each scatter uniformly
 by ±10 % about their defaults. Each evaluation is one :func:`raildyn.stability.linear.critical_speed`
 (a batched eigenvalue scan and a bracketed regula falsi, about 20 ms). The baseline is the plain loop over the
@@ -36,12 +36,12 @@ from scipy import stats
 from benchmarks.common import Case, timed, widget_case
 from raildyn.stability import critical_speed
 from raildyn.validation.uncertainty import monte_carlo
-from raildyn.vehicles import Car
+from raildyn.vehicles import LateralCar
 
 # The model below lives in this file, which the worker processes may not import by name.
 cloudpickle.register_pickle_by_value(sys.modules[__name__])
 
-CAR = Car()
+CAR = LateralCar()
 WORKERS = 2
 EVALUATIONS = 1000
 SPEED_RANGE = (1.0, 150.0)  # m/s: the default car's critical speed is 77.9 m/s

@@ -349,7 +349,7 @@ def linear_model(name: str, value):
     if not callable(getattr(value, "linear_system", None)):
         raise TypeError(
             f"{name} must be a linear model (an object with linear_system(), e.g. raildyn.wheelset."
-            f"Wheelset or raildyn.vehicles.Car), got {value!r:.80} of type {type(value).__name__}"
+            f"Wheelset or raildyn.vehicles.LateralCar), got {value!r:.80} of type {type(value).__name__}"
         )
     return value
 

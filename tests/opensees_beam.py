@@ -21,8 +21,8 @@ equivalent nodal forces and moments, f = P [N₁, N₂, N₃, N₄] at the eleme
 node's vertical force and moment histories are tabulated beforehand at the time steps and
 applied as ``Path`` time series, one per node and direction.
 
-Sign convention: deflection and loads positive downwards, as in :func:`raildyn.bridge.beam.moving_force`;
-the bending moment positive sagging.
+Sign convention: deflection and loads positive downwards, as in
+:func:`raildyn.bridge.beam.moving_force_response`; the bending moment positive sagging.
 """
 
 from __future__ import annotations

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from raildyn.bridge import SimplySupportedBeam, fryba_deflection, moving_force
+from raildyn.bridge import SimplySupportedBeam, fryba_deflection, moving_force_response
 
 BEAM = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=20)
 
@@ -22,7 +22,7 @@ def test_the_frequencies_are_the_beams():
 def test_the_modal_solution_is_frybas_series_while_the_force_is_on(speed, reference):
     # The same modes summed two ways, the closed-form oscillators against Frýba's series (eq. 1.30): the
     # same numbers but for rounding (1e-12 of the largest deflection).
-    response = moving_force(BEAM, speed, 1.0e5, samples=501)
+    response = moving_force_response(BEAM, speed, 1.0e5, samples=501)
     on = response.time[0] <= 20.0 / speed
     series = fryba_deflection(BEAM, speed, 1.0e5, response.time[0][on])
     gap = np.abs(response.deflection[0][on] - series).max() / np.abs(series).max()
@@ -39,7 +39,7 @@ def test_the_modal_solution_is_frybas_series_while_the_force_is_on(speed, refere
 def test_a_slow_force_bends_the_beam_as_a_static_load():
     # v → 0: the largest midspan deflection tends to PL³/48EI. At 0.1 m/s (α = 6e-4) the dynamic part is
     # of order α (measured 0.06 %), and 20 modes hold the static shape to (1/21)⁴ ≈ 5e-6: rel 2e-3.
-    response = moving_force(BEAM, 0.1, 1.0e5, samples=4001)
+    response = moving_force_response(BEAM, 0.1, 1.0e5, samples=4001)
     assert response.static == pytest.approx(1.0e5 * 20.0**3 / (48 * 1.0e10), rel=1e-14)
     assert response.amplification[0] == pytest.approx(1.0, rel=2e-3)
 
@@ -50,12 +50,14 @@ def test_the_amplification_peaks_near_alpha_0_6():
     # within 0.1 %), and falls beyond. Damping lowers it.
     f1 = BEAM.frequencies_hz[0]
     alpha = np.arange(0.3, 0.9, 0.005)
-    daf = moving_force(BEAM, alpha * 2 * f1 * 20.0, 1.0e5, samples=2000).amplification
+    daf = moving_force_response(BEAM, alpha * 2 * f1 * 20.0, 1.0e5, samples=2000).amplification
     k = int(np.argmax(daf))
     assert daf[k] == pytest.approx(1.73, abs=0.01)
     assert alpha[k] == pytest.approx(0.62, abs=0.02)
     damped = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, damping_ratio=0.05, modes=20)
-    assert moving_force(damped, alpha[k] * 2 * f1 * 20.0, 1.0e5, samples=2000).amplification[0] < daf[k]
+    assert (
+        moving_force_response(damped, alpha[k] * 2 * f1 * 20.0, 1.0e5, samples=2000).amplification[0] < daf[k]
+    )
 
 
 def test_bad_input_is_refused_by_name():
@@ -66,9 +68,9 @@ def test_bad_input_is_refused_by_name():
     with pytest.raises(ValueError, match="damping_ratio"):
         SimplySupportedBeam(damping_ratio=1.0)
     with pytest.raises(ValueError, match="speeds"):
-        moving_force(BEAM, -3.0)
+        moving_force_response(BEAM, -3.0)
     with pytest.raises(ValueError, match="position"):
-        moving_force(BEAM, 30.0, position=25.0)
+        moving_force_response(BEAM, 30.0, position=25.0)
     with pytest.raises(ValueError, match="damping_ratio"):
         fryba_deflection(SimplySupportedBeam(damping_ratio=0.02), 30.0, 1.0, [0.1])
     with pytest.raises(ValueError, match="time"):
@@ -84,7 +86,7 @@ def test_the_acceleration_is_the_deflections_second_derivative_and_the_coupled_m
 
     beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, damping_ratio=0.02, modes=5)
     coach = AxleSequence([0.0, 2.5, 17.5, 20.0], [1.0e5] * 4)
-    closed = moving_force(beam, 30.0, coach, samples=80001)
+    closed = moving_force_response(beam, 30.0, coach, samples=80001)
     t, w, a = closed.time[0], closed.deflection[0], closed.acceleration[0]
     second = (w[2:] - 2 * w[1:-1] + w[:-2]) / (t[1] - t[0]) ** 2
     peak = np.abs(a).max()
@@ -103,7 +105,9 @@ def test_an_undamped_resonance_has_its_finite_limit():
     # slope in α times 1e-7 is ~1e-7), and the deflection is finite everywhere.
     beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=5)
     v = 2 * beam.frequencies_hz[0] * beam.span  # α = 1
-    at, below, above = (moving_force(beam, v * f, 1.0e5, samples=2001) for f in (1.0, 1 - 1e-7, 1 + 1e-7))
+    at, below, above = (
+        moving_force_response(beam, v * f, 1.0e5, samples=2001) for f in (1.0, 1 - 1e-7, 1 + 1e-7)
+    )
     assert np.isfinite(at.deflection).all() and np.isfinite(at.acceleration).all()
     assert at.amplification[0] == pytest.approx(
         0.5 * (below.amplification[0] + above.amplification[0]), rel=1e-6
@@ -157,7 +161,7 @@ def test_a_train_is_the_sum_of_its_axles_closed_forms(speed, samples, damping, c
 
     beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=3, damping_ratio=damping)
     axles = regular_train(coaches, 18.0, 2.5, 1.7e5)
-    r = moving_force(beam, speed, axles, samples=samples)
+    r = moving_force_response(beam, speed, axles, samples=samples)
     deflection, acceleration = _force_by_force(beam, speed, axles, r.time[0], 10.0)
     for mine, theirs in ((r.deflection[0], deflection), (r.acceleration[0], acceleration)):
         np.testing.assert_allclose(mine, theirs, rtol=0, atol=1e-11 * np.abs(theirs).max())

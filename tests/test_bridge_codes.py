@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from raildyn.bridge import SimplySupportedBeam, moving_force
+from raildyn.bridge import SimplySupportedBeam, moving_force_response
 from raildyn.bridge.codes import (
     arema_impact_factor,
     cancellation_spans,
@@ -107,9 +107,10 @@ def test_cancellation_spans_formula():
 
 
 def residual(beam, alpha, samples=3001):
-    """Largest midspan deflection after one force has left the span, at α = v/(2 f₁ L), by moving_force."""
+    """Largest midspan deflection after one force has left the span, at α = v/(2 f₁ L), by
+    moving_force_response."""
     v = alpha * 2 * beam.frequencies_hz[0] * beam.span
-    r = moving_force(beam, v, 1.0e5, samples=samples)
+    r = moving_force_response(beam, v, 1.0e5, samples=samples)
     after = r.time[0] > beam.span / v
     return np.abs(r.deflection[0][after]).max()
 
@@ -135,9 +136,9 @@ def test_one_force_leaves_no_vibration_at_alpha_one_third():
 def train_response(L_over_d, axles=10):
     """Midspan deflection of a one-mode span under a regular train at its first resonance, by superposition.
 
-    moving_force gives one force's response over two crossing times T; at the first resonance the axle
-    interval d/v is one period of the mode, and the free vibration after the force has left (undamped, one
-    mode) repeats with that period, so the single response extends exactly to any later time.
+    moving_force_response gives one force's response over two crossing times T; at the first resonance the
+    axle interval d/v is one period of the mode, and the free vibration after the force has left (undamped,
+    one mode) repeats with that period, so the single response extends exactly to any later time.
     """
     beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=1)
     f1 = beam.frequencies_hz[0]
@@ -145,7 +146,7 @@ def train_response(L_over_d, axles=10):
     v = f1 * d  # first resonance
     per = 400  # samples a period
     n = int(round(2 * L_over_d * per)) + 1  # samples over 2T
-    single = moving_force(beam, v, 1.0e5, samples=n).deflection[0]
+    single = moving_force_response(beam, v, 1.0e5, samples=n).deflection[0]
     after_exit = int(round(L_over_d * per))  # index of T
 
     def extended(idx):
@@ -266,9 +267,9 @@ def test_bad_input_is_refused_by_name():
 
 @pytest.mark.parametrize("L_over_d", [1.0, 1.5])
 def test_the_superposition_is_moving_force_with_an_axle_sequence(L_over_d):
-    # The same train through moving_force's own axle sequence (each axle's closed form, delayed): on the same
-    # time grid (a sample every 1/400 of the period, from the first arrival until the last axle has been off
-    # for one crossing) the two agree to rounding, 1e-9 of the peak.
+    # The same train through moving_force_response's own axle sequence (each axle's closed form, delayed): on
+    # the same time grid (a sample every 1/400 of the period, from the first arrival until the last axle has
+    # been off for one crossing) the two agree to rounding, 1e-9 of the peak.
     from raildyn.bridge import AxleSequence
 
     axles, per = 10, 400
@@ -278,6 +279,8 @@ def test_the_superposition_is_moving_force_with_an_axle_sequence(L_over_d):
     train = AxleSequence(d * np.arange(axles), np.full(axles, 1.0e5), "regular")
     periods = (2 * 20.0 + (axles - 1) * d) / d  # the run's length in periods (d/v is one period)
     n = int(round(periods * per)) + 1
-    direct = moving_force(beam, v, train, samples=n).deflection[0] / (1.0e5 * 20.0**3 / (48 * 1.0e10))
+    direct = moving_force_response(beam, v, train, samples=n).deflection[0] / (
+        1.0e5 * 20.0**3 / (48 * 1.0e10)
+    )
     superposed = train_response(L_over_d, axles)[:n]
     np.testing.assert_allclose(direct, superposed, atol=1e-9 * np.abs(superposed).max())

@@ -9,9 +9,9 @@ import pytest
 import scipy.integrate
 from scipy.interpolate import CubicSpline
 
-from raildyn.bridge import SimplySupportedBeam, fryba_deflection, moving_force
+from raildyn.bridge import SimplySupportedBeam, fryba_deflection, moving_force_response
 from raildyn.bridge.coupled import crossing
-from raildyn.bridge.loads import AxleSequence, moving_forces, moving_mass, sprung_mass, train, vehicle
+from raildyn.bridge.loads import AxleSequence, moving_load, moving_mass, sprung_mass, train, vehicle
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
 from raildyn.vehicles import VerticalCar
@@ -42,7 +42,7 @@ def test_an_axle_sequence_is_the_sum_of_its_axles_in_either_solution():
     # march's error is of order (ω h)² ≈ 1e-4 of the peak at h = 1e-4 s on the fifth mode (measured 3e-5).
     beam = BEAM.__class__(20.0, 1.0e10, 1.0e4, damping_ratio=0.02, modes=5)
     coach = AxleSequence([0.0, 2.5, 17.5, 20.0], [1.0e5] * 4)
-    closed = moving_force(beam, 25.0, coach, samples=4001)
+    closed = moving_force_response(beam, 25.0, coach, samples=4001)
     run = crossing(beam, coach, 25.0, time_step=1e-4, free_time=0.0)
     expected = np.interp(run.time, closed.time[0], closed.deflection[0])
     assert np.abs(run.deflection - expected).max() < 1e-4 * np.abs(expected).max()
@@ -270,7 +270,7 @@ def test_a_diverging_run_raises_the_one_failure():
 
 
 def test_moving_forces_keep_the_sequence():
-    load = moving_forces(AxleSequence([0.0, 3.0], [1.0, 2.0], "pair"))
+    load = moving_load(AxleSequence([0.0, 3.0], [1.0, 2.0], "pair"))
     assert load.name == "pair" and load.system is None
     np.testing.assert_array_equal(load.axles.loads, [1.0, 2.0])
 

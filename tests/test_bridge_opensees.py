@@ -11,7 +11,7 @@ import pytest
 from opensees_beam import fe_moving_forces, fe_sprung_mass_crossing
 from scipy.integrate import solve_ivp
 
-from raildyn.bridge import AxleSequence, SimplySupportedBeam, crossing, moving_force, sprung_mass
+from raildyn.bridge import AxleSequence, SimplySupportedBeam, crossing, moving_force_response, sprung_mass
 
 pytestmark = pytest.mark.slow  # about 25 s of OpenSees and reference integrations in all
 
@@ -69,7 +69,7 @@ PEAK_RTOL = 1e-3
 def test_a_single_force_matches_the_modal_solution(alpha, zeta, damping_model, reference):
     v = _speed(alpha)
     fe = fe_moving_forces(L, EI, MASS, zeta, [0.0], [P], v, damping_model=damping_model)
-    modal = moving_force(_beam(zeta), v, P, samples=fe.time.size)
+    modal = moving_force_response(_beam(zeta), v, P, samples=fe.time.size)
     reference(
         10,
         f"moving force over a simple span, α = {alpha:g}, ζ = {zeta:g}",
@@ -91,7 +91,7 @@ def test_between_nodes_the_hermite_interpolation_reads_the_deflection():
     # static deflection there, |ΔDAF| 3e-4 relative: the midspan budget holds.
     v = _speed(0.4)
     fe = fe_moving_forces(L, EI, MASS, 0.0, [0.0], [P], v, at=7.3)
-    reference = moving_force(_beam(0.0), v, P, position=7.3, samples=fe.time.size)
+    reference = moving_force_response(_beam(0.0), v, P, position=7.3, samples=fe.time.size)
     assert _history_error(fe, reference) < HISTORY_TOL
     daf = np.abs(fe.deflection).max() / reference.static
     assert daf == pytest.approx(reference.amplification[0], rel=PEAK_RTOL)
@@ -110,7 +110,7 @@ def test_the_difference_falls_as_mesh_and_step_are_refined(alpha):
         fe = fe_moving_forces(
             L, EI, MASS, 0.0, [0.0], [P], v, elements=elements, time_step=1 / (F1 * per_period)
         )
-        errors.append(_history_error(fe, moving_force(reference_beam, v, P, samples=fe.time.size)))
+        errors.append(_history_error(fe, moving_force_response(reference_beam, v, P, samples=fe.time.size)))
     assert errors[1] < errors[0] / 1.5
     assert errors[2] < errors[1] / 1.5
     assert errors[2] < 1.5e-3
@@ -144,7 +144,7 @@ def test_a_coach_matches_the_modal_solution_of_its_axles(alpha, zeta):
     fe = fe_moving_forces(
         L, EI, MASS, zeta, coach.positions, coach.loads, v, elements=80, time_step=1 / (400 * F1)
     )
-    reference = moving_force(_beam(zeta), v, coach, samples=fe.time.size)
+    reference = moving_force_response(_beam(zeta), v, coach, samples=fe.time.size)
     assert _history_error(fe, reference) < HISTORY_TOL
     daf = np.abs(fe.deflection).max() / reference.static
     assert daf == pytest.approx(reference.amplification[0], rel=PEAK_RTOL)
@@ -239,7 +239,7 @@ def test_a_very_soft_spring_is_a_moving_force():
     fe = fe_sprung_mass_crossing(L, EI, MASS, 0.0, VEHICLE, k, v)
     on = v * fe.time <= L
     np.testing.assert_allclose(fe.contact_force[on], weight, rtol=1e-3)
-    reference = moving_force(_beam(0.0), v, weight, samples=fe.time.size)
+    reference = moving_force_response(_beam(0.0), v, weight, samples=fe.time.size)
     assert _history_error(fe, reference) < HISTORY_TOL
 
 
@@ -262,7 +262,7 @@ def test_a_stiffening_spring_tends_to_a_moving_mass():
     assert gaps[2] < gaps[1] / 3
     assert gaps[2] < 0.015
     # and the mass matters: the moving force of the same weight is far from the moving mass (74 %)
-    force_only = moving_force(_beam(0.0), v, VEHICLE * G, samples=fe.time.size).deflection[0]
+    force_only = moving_force_response(_beam(0.0), v, VEHICLE * G, samples=fe.time.size).deflection[0]
     assert np.abs(force_only - w).max() > 0.1 * static
 
 

@@ -5,20 +5,26 @@ import pytest
 from matplotlib.figure import Figure
 
 from raildyn import figures
-from raildyn.bridge import SimplySupportedBeam, crossing, moving_force, plot_amplification, sprung_mass
+from raildyn.bridge import (
+    SimplySupportedBeam,
+    crossing,
+    moving_force_response,
+    plot_amplification,
+    sprung_mass,
+)
 from raildyn.widgets import chapter10
 
 BEAM = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, damping_ratio=0.01, modes=3)
 
 
 def test_the_amplification_is_drawn_against_kmh_or_alpha_and_moved_in_place():
-    r = moving_force(BEAM, [20.0, 40.0, 60.0], 1.0e5)
+    r = moving_force_response(BEAM, [20.0, 40.0, 60.0], 1.0e5)
     ax = Figure().subplots()
     drawn = r.plot(ax)
     np.testing.assert_array_equal(drawn["line"].get_xdata(), 3.6 * r.speeds)
     np.testing.assert_array_equal(drawn["line"].get_ydata(), r.amplification)
     scale = 2 * BEAM.frequencies_hz[0] * BEAM.span
-    other = moving_force(BEAM, [30.0, 50.0, 70.0], 1.0e5)
+    other = moving_force_response(BEAM, [30.0, 50.0, 70.0], 1.0e5)
     assert other.plot(alpha_speed=scale, artists=drawn) is drawn
     np.testing.assert_allclose(drawn["line"].get_xdata(), other.speeds / scale, rtol=1e-15)
     assert len(ax.lines) == 1  # moved, not drawn anew

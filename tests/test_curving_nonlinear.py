@@ -15,10 +15,10 @@ from raildyn.curving import curve_entry, curving_map, quasi_static_curving, stea
 from raildyn.curving.climb import nadal_limit
 from raildyn.errors import SolverError
 from raildyn.track import Curve, balance_speed
-from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Bogie, Car
+from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Bogie, LateralCar
 from raildyn.wheelset import WheelRailContact, Wheelset, contact_forces, profile_contact, wheel_forces
 
-VEHICLES = [Car(), LOADED_FREIGHT_CAR, EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE]
+VEHICLES = [LateralCar(), LOADED_FREIGHT_CAR, EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE]
 
 
 @pytest.mark.parametrize("model", VEHICLES, ids=["car", "loaded", "empty", "locomotive"])
@@ -57,13 +57,13 @@ def test_the_manchester_car_flanges_with_its_leading_wheelsets_in_600_m():
     # At the balance speed for 100 mm of cant the leading wheelset of each bogie runs past the 9.1 mm
     # flangeway clearance, with an angle of attack above the geometric b/R = 2.1 mrad of a rigid bogie
     # (the flange forces it further round), and the trailing ones run off the flange near radial.
-    state = quasi_static_curving(Car().nonlinear(), balance_speed(600.0, 0.1), 600.0, 0.1)
+    state = quasi_static_curving(LateralCar().nonlinear(), balance_speed(600.0, 0.1), 600.0, 0.1)
     assert state.flange_contact.tolist() == [True, False, True, False]
     assert np.all(state.angle_of_attack[[0, 2]] > 1.28 / 600.0)
     assert np.all(np.abs(state.angle_of_attack[[1, 3]]) < 1e-3)
     assert np.all(state.offset[[0, 2]] > 9.1e-3)
     # The guiding forces of each wheelset are its contact forces there, by definition.
-    ws = Car().bogie.wheelset
+    ws = LateralCar().bogie.wheelset
     fy, _ = contact_forces(ws, WheelRailContact(), -state.offset[0], -state.angle_of_attack[0], 0.0,
                            state.speed / 600.0, state.speed)  # fmt: skip
     assert state.guiding_force[0] == pytest.approx(float(fy), rel=1e-12)
@@ -73,11 +73,11 @@ def test_the_wheel_loads_and_quotients():
     # Q: half the axle load each at the balance speed; above it the roll moment m a_q h moves
     # ΔQ = (W/2)(h/a)(a_q/g) to the outer wheel (rounding: rel 1e-12). Y/Q of the leading outer wheel stays
     # below Nadal's limit for a 70° flange and μ = 0.3 (1.38): the car does not climb in 600 m.
-    ws = Car().bogie.wheelset
+    ws = LateralCar().bogie.wheelset
     W, a = ws.axle_load, ws.half_gauge
-    at_balance = quasi_static_curving(Car().nonlinear(), balance_speed(600.0, 0.1), 600.0, 0.1)
+    at_balance = quasi_static_curving(LateralCar().nonlinear(), balance_speed(600.0, 0.1), 600.0, 0.1)
     np.testing.assert_allclose(at_balance.wheel_vertical, W / 2, rtol=1e-12)
-    fast = quasi_static_curving(Car().nonlinear(), 28.0, 600.0, 0.1, cg_height=1.5)
+    fast = quasi_static_curving(LateralCar().nonlinear(), 28.0, 600.0, 0.1, cg_height=1.5)
     transfer = 0.5 * W * 1.5 / a * fast.unbalanced_acceleration / GRAVITY
     np.testing.assert_allclose(
         fast.wheel_vertical[:, 1] - fast.wheel_vertical[:, 0], 2 * transfer, rtol=1e-12
@@ -111,7 +111,7 @@ def test_the_map_holds_the_single_points_and_the_forces_vanish():
 
 def test_a_start_near_the_answer_gives_the_same_answer():
     # A widget re-solves from the last equilibrium: the same point to the search's tolerance.
-    model = Car().nonlinear()
+    model = LateralCar().nonlinear()
     cold = quasi_static_curving(model, 25.0, 600.0, 0.1, flange_angle=np.radians(65.0))
     near = quasi_static_curving(model, 26.0, 620.0, 0.1)
     warm = quasi_static_curving(model, 25.0, 600.0, 0.1, flange_angle=np.radians(65.0), start=near)
@@ -123,7 +123,7 @@ def test_a_fast_car_in_a_gentle_curve_is_found_by_the_homotopy():
     # At 140 km/h in 1000 m with no cant (a_q = 1.5 m/s²) Newton from the linear state stalls at the
     # flange's edge and the neighbours' continuation has no neighbour; raising the curve's load from
     # nothing finds the equilibrium, off the flanges, with the forces balanced.
-    model = Car().nonlinear()
+    model = LateralCar().nonlinear()
     state = quasi_static_curving(model, 140 / 3.6, 1000.0)
     residual = model.arc_forces(state.displacement, 140 / 3.6, 1e-3, state.unbalanced_acceleration)
     assert np.abs(residual).max() < 1e-9 * GRAVITY * np.trace(model.system.M)
@@ -133,7 +133,7 @@ def test_a_fast_car_in_a_gentle_curve_is_found_by_the_homotopy():
 def test_arc_jacobian_is_the_forces_derivative():
     # Against forward differences of arc_forces in every coordinate (the step 1e-7 of both: they agree to
     # about 1e-11 of the largest entry, measured; 1e-7 leaves room for a state near a bend of the laws).
-    for model in (Car().nonlinear(), LOADED_FREIGHT_CAR.nonlinear()):
+    for model in (LateralCar().nonlinear(), LOADED_FREIGHT_CAR.nonlinear()):
         n = model.system.size
         q = np.random.default_rng(2).normal(scale=4e-3, size=(n, 2))
         args = (np.array([20.0, 30.0]), np.array([1 / 600, 1 / 400]), np.array([0.3, -0.1]))
@@ -148,7 +148,7 @@ def test_arc_jacobian_is_the_forces_derivative():
 
 def test_arc_forces_are_the_right_hand_side_on_an_arc():
     # On a long arc the model's right-hand side at rest is M⁻¹ times arc_forces, to rounding.
-    model = Car().nonlinear()
+    model = LateralCar().nonlinear()
     R, D = 600.0, 0.1
     on_arc = model.replace(
         curve=Curve(radius=R, cant=D, transition_length=0.0, arc_length=400.0, straight=0.0), start=200.0
@@ -170,8 +170,8 @@ def test_the_curve_entry_settles_to_the_quasi_static_equilibrium():
     # 1e-6 m, 1e-6 rad and 20 N (1e-6 m on the 14.6 MN/m flange spring is 15 N).
     speed = balance_speed(600.0, 0.1) + 5.0
     curve = Curve(radius=600.0, cant=0.1, transition_length=60.0, arc_length=150.0, straight=20.0)
-    run = curve_entry(Car().nonlinear(), speed, curve)
-    state = quasi_static_curving(Car().nonlinear(), speed, 600.0, 0.1)
+    run = curve_entry(LateralCar().nonlinear(), speed, curve)
+    state = quasi_static_curving(LateralCar().nonlinear(), speed, 600.0, 0.1)
     np.testing.assert_allclose(run.offset[:, -1], state.offset, atol=1e-6)
     np.testing.assert_allclose(run.angle_of_attack[:, -1], state.angle_of_attack, atol=1e-6)
     np.testing.assert_allclose(run.flange_force[:, -1], state.flange_force, atol=20.0)
@@ -217,7 +217,9 @@ def test_the_profile_contact_holds_chapter_4s_geometry_and_finds_the_flange():
         profile_contact(conical_wheel(1 / 20), rail)
     # The Manchester car on these profiles in 600 m: the leading wheelsets steer on the steep treads
     # near their flanges, at an angle of attack above the geometric b/R.
-    state = quasi_static_curving(Car().nonlinear(contact=contact), balance_speed(600.0, 0.1), 600.0, 0.1)
+    state = quasi_static_curving(
+        LateralCar().nonlinear(contact=contact), balance_speed(600.0, 0.1), 600.0, 0.1
+    )
     assert np.all(state.angle_of_attack[[0, 2]] > 1.28 / 600.0)
     assert np.all(np.abs(state.offset) < 7e-3)
 
@@ -254,7 +256,7 @@ def test_bad_input_is_refused_by_name():
     with pytest.raises(ValueError, match="curve"):
         curve_entry(model, 1.0, Curve(arc_length=500.0))  # 630 m at 1 m/s: over two minutes
     with pytest.raises(ValueError, match="curve"):
-        curve_entry(Car().nonlinear(), 20.0, Curve(arc_length=10.0))  # the car is 21.6 m long
+        curve_entry(LateralCar().nonlinear(), 20.0, Curve(arc_length=10.0))  # the car is 21.6 m long
     with pytest.raises(TypeError, match="curve"):
         dataclasses.replace(model, curve="600 m")
     with pytest.raises(ValueError, match="start"):
@@ -265,6 +267,6 @@ def test_a_vehicle_that_cannot_be_held_on_the_rails_is_refused():
     # With no flange the car cannot be held in a 50 m curve at 40 m/s (a_q = 32 m/s², over three times g):
     # the creep saturates at 0.3 of the weight and only the gravitational stiffness grows, metres off the
     # centre line, so the equilibrium found is refused by the package's failure policy, not returned.
-    soft = dataclasses.replace(Car().nonlinear(), contact=WheelRailContact(flange_stiffness=0.0))
+    soft = dataclasses.replace(LateralCar().nonlinear(), contact=WheelRailContact(flange_stiffness=0.0))
     with pytest.raises(SolverError, match="off the track"):
         quasi_static_curving(soft, 40.0, 50.0)

@@ -15,7 +15,7 @@ from raildyn.vehicles import (
     LATERAL_LOCOMOTIVE,
     LOADED_FREIGHT_CAR,
     Bogie,
-    Car,
+    LateralCar,
     VerticalCar,
 )
 from raildyn.wheelset import (
@@ -88,7 +88,7 @@ def test_a_stiff_primary_gives_the_rigid_bogie():
     np.testing.assert_allclose(state.positions, [b, -b])
 
 
-@pytest.mark.parametrize("model", [Wheelset(), Bogie(), Car(), LOADED_FREIGHT_CAR, LATERAL_LOCOMOTIVE])
+@pytest.mark.parametrize("model", [Wheelset(), Bogie(), LateralCar(), LOADED_FREIGHT_CAR, LATERAL_LOCOMOTIVE])
 def test_a_large_radius_tends_to_tangent_track(model):
     # With no cant every load is proportional to 1/R (a_q = V²/R), so R·q is the same at any radius, to
     # rounding, and q → 0 as R → ∞.
@@ -98,7 +98,7 @@ def test_a_large_radius_tends_to_tangent_track(model):
 
 
 @pytest.mark.parametrize(
-    "model", [Wheelset(), Bogie(), Car(), EMPTY_FREIGHT_CAR, LOADED_FREIGHT_CAR, LATERAL_LOCOMOTIVE]
+    "model", [Wheelset(), Bogie(), LateralCar(), EMPTY_FREIGHT_CAR, LOADED_FREIGHT_CAR, LATERAL_LOCOMOTIVE]
 )
 def test_the_rails_carry_the_unbalanced_force_of_every_vehicle(model):
     # Equilibrium of the whole vehicle, independent of how it is assembled: the rails' lateral forces on
@@ -123,7 +123,7 @@ def test_the_rails_carry_the_unbalanced_force_of_every_vehicle(model):
 def test_the_car_s_bogies_follow_the_track_under_the_body():
     # The secondary yaw springs turn by about ±l/R between body and bogie (each bogie close to the tangent
     # where it runs): within 5 % on the Manchester car in a 3000 m curve (measured 1.6 % and 2.1 %).
-    car = Car()
+    car = LateralCar()
     state = steady_curving(car, 30.0, 3000.0)
     l, b = car.semi_bogie_spacing, car.bogie.semi_wheelbase
     np.testing.assert_allclose(state.positions, [l + b, l - b, -l + b, -l - b], rtol=1e-12)
@@ -168,11 +168,11 @@ def test_the_curve_loads_are_the_nonlinear_contacts_in_the_small(position):
 
 
 def test_the_plot_draws_and_updates_the_wheelsets():
-    state = steady_curving(Car(), 30.0, 1200.0)
+    state = steady_curving(LateralCar(), 30.0, 1200.0)
     artists = state.plot()
     assert len(artists["axles"]) == 4
     before = artists["axles"][0].get_xydata().copy()
-    steady_curving(Car(), 30.0, 600.0).plot(artists=artists)
+    steady_curving(LateralCar(), 30.0, 600.0).plot(artists=artists)
     assert not np.allclose(artists["axles"][0].get_xydata(), before)
     assert artists["title"].get_text().startswith("R = 600 m")
 

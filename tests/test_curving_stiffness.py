@@ -19,7 +19,7 @@ from raildyn.curving.stiffness import (
 )
 from raildyn.stability import critical_speed
 from raildyn.track import balance_speed
-from raildyn.vehicles import Bogie, Car
+from raildyn.vehicles import Bogie, LateralCar
 from raildyn.wheelset import Wheelset, pure_rolling_offset
 
 # No spin, no gravitational stiffness: the assumptions of the closed form (Wickens 2003, ch. 7).
@@ -172,7 +172,7 @@ def test_the_angle_of_attack_grows_with_the_bending_stiffness():
 
 def test_self_steering_curving_refuses_bad_input():
     with pytest.raises(TypeError, match="bogie"):
-        self_steering_curving(Car(), 600.0)
+        self_steering_curving(LateralCar(), 600.0)
     with pytest.raises(ValueError, match="radius"):
         self_steering_curving(Bogie(), -1.0)
     with pytest.raises(ValueError, match="conicity"):
@@ -195,14 +195,14 @@ _KS = np.geomspace(2.0e6, 50.0e6, 8)  # N·m/rad per wheelset, below the car's o
 @pytest.fixture(scope="module")
 def tradeoff() -> StabilityCurving:
     # The Manchester car at its balance speed in a 600 m curve with 100 mm of cant.
-    return stability_and_curving(Car(), _KS, balance_speed(600.0, 0.1), 600.0, 0.1, tol=0.01)
+    return stability_and_curving(LateralCar(), _KS, balance_speed(600.0, 0.1), 600.0, 0.1, tol=0.01)
 
 
 def test_tradeoff_agrees_with_critical_speed_and_steady_curving_one_by_one(tradeoff):
     # The batched critical speeds against chapter 7's critical_speed (both to tol = 0.01 m/s, so they may
     # differ by 2 tol), and the batched steady states against steady_curving (one linear solve each:
     # round-off, rtol 1e-9).
-    car = Car()
+    car = LateralCar()
     for k, v, alpha in zip(_KS, tradeoff.critical_speed, tradeoff.angle_of_attack, strict=True):
         model = car.replace(yaw_stiffness=float(k))
         assert v == pytest.approx(critical_speed(model, (1.0, 150.0), tol=0.01).speed, abs=0.02)
@@ -218,7 +218,7 @@ def test_a_stiffer_yaw_raises_the_critical_speed_and_the_angle_of_attack(tradeof
     # critical speed levels off near its own 62.8 MN·m/rad, where the body's modes take over.
     assert np.all(np.diff(tradeoff.critical_speed) > 0)
     assert np.all(np.diff(tradeoff.angle_of_attack) > 0)
-    b, R = Car().bogie.semi_wheelbase, 600.0
+    b, R = LateralCar().bogie.semi_wheelbase, 600.0
     assert tradeoff.angle_of_attack[-1] < b / R
 
 
@@ -230,7 +230,7 @@ def test_a_bogie_under_a_still_body_shows_the_same_trade_off():
 
 
 def test_a_range_with_no_crossing_gives_inf_and_its_status():
-    r = stability_and_curving(Car(), [20e6, 40e6], 20.0, 600.0, 0.05, speed_range=(1.0, 10.0), scan=8)
+    r = stability_and_curving(LateralCar(), [20e6, 40e6], 20.0, 600.0, 0.05, speed_range=(1.0, 10.0), scan=8)
     assert np.all(np.isposinf(r.critical_speed))
     assert r.status == ("stable over the range",) * 2
 
@@ -238,14 +238,14 @@ def test_a_range_with_no_crossing_gives_inf_and_its_status():
 def test_the_plot_moves_in_place(tradeoff):
     ax = Figure().subplots()
     artists = tradeoff.plot(ax)
-    again = stability_and_curving(Car(), _KS, 25.0, 800.0, 0.05, scan=8)
+    again = stability_and_curving(LateralCar(), _KS, 25.0, 800.0, 0.05, scan=8)
     assert again.plot(artists=artists) is artists
     np.testing.assert_allclose(artists["attack"].get_ydata(), 1e3 * again.angle_of_attack)
     np.testing.assert_allclose(artists["critical"].get_ydata(), 3.6 * again.critical_speed)
     assert len(ax.figure.axes) == 2  # the twin axis was made once
 
 
-class _UnhashableCar(Car):
+class _UnhashableCar(LateralCar):
     """The car that cannot be hashed, so that nothing of it is kept."""
 
     __hash__ = None
@@ -258,7 +258,7 @@ def test_a_new_curve_reuses_the_critical_speeds_and_an_unhashable_model_gets_the
     searches = []
     search = stiffness.critical_speeds
     monkeypatch.setattr(stiffness, "critical_speeds", lambda *a, **k: searches.append(1) or search(*a, **k))
-    car = Car().replace(conicity=0.21)
+    car = LateralCar().replace(conicity=0.21)
     first = stability_and_curving(car, _KS, balance_speed(600.0, 0.1), 600.0, 0.1, scan=8)
     other = stability_and_curving(car, _KS, balance_speed(1500.0, 0.1), 1500.0, 0.1, scan=8)
     assert len(searches) == 1  # the critical speeds do not depend on the curve
@@ -275,7 +275,7 @@ def test_a_new_curve_reuses_the_critical_speeds_and_an_unhashable_model_gets_the
 
 
 def test_stability_and_curving_refuses_bad_input():
-    car = Car()
+    car = LateralCar()
     with pytest.raises(TypeError, match="model"):
         stability_and_curving(car.linear_system(), [1e6], 20.0, 600.0)
     with pytest.raises(ValueError, match="yaw_stiffnesses"):

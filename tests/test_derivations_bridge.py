@@ -21,7 +21,7 @@ from derivation_helpers import assert_derived
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from raildyn.bridge import AxleSequence, SimplySupportedBeam, _kernel, moving_forces, moving_mass
+from raildyn.bridge import AxleSequence, SimplySupportedBeam, _kernel, moving_load, moving_mass
 from raildyn.derivations.bridge import beam_modes, beam_under_moving_force, beam_under_moving_mass
 
 POINTS_PER_MODE = 200  # the table crossing() builds (raildyn.bridge.coupled._TABLE_POINTS_PER_MODE)
@@ -89,7 +89,7 @@ def test_moving_force_matches_the_assembled_march(data):
     force = data.draw(st.floats(1e3, 1e6))
     speed = data.draw(st.floats(1.0, 150.0))
     A, B, Z, f, place = assembled(
-        beam, moving_forces(AxleSequence([0.0], [force])), speed, data.draw(st.integers(1, 200 * n - 1))
+        beam, moving_load(AxleSequence([0.0], [force])), speed, data.draw(st.integers(1, 200 * n - 1))
     )
     model = SimpleNamespace(beam=beam, position=place)
     assert_derived(beam_under_moving_force(n), (A, B, Z, f[:, None] / force, np.zeros((n, 1))), model)
@@ -97,7 +97,7 @@ def test_moving_force_matches_the_assembled_march(data):
 
 def test_moving_force_closed_form():
     # The modal load of book ch. 10 / Frýba's eq. 1.12 per unit modal mass: 2P/(mL) sin(jπs/L),
-    # the factor beam.moving_force multiplies each mode by.
+    # the factor beam.moving_force_response multiplies each mode by.
     beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=3)
     M, _, _, GK, _ = beam_under_moving_force(3).numeric(SimpleNamespace(beam=beam, position=7.0))
     expected = 2 / (1.0e4 * 20.0) * np.sin(np.arange(1, 4) * np.pi * 7.0 / 20.0)

@@ -15,12 +15,12 @@ from hypothesis import strategies as st
 
 from raildyn.constants import GRAVITY
 from raildyn.derivations.lateral import bogie, lateral_car
-from raildyn.vehicles.lateral import COOPERRIDER_CAR, Bogie, Car
+from raildyn.vehicles.lateral import COOPERRIDER_CAR, Bogie, LateralCar
 
 SPEEDS = (2.0, 30.0, 140.0)  # m/s: the creep damping C₁/V spans a factor of 70
 
 # Factors on the defaults in [0.3, 3] (tests/derivation_helpers.factors): wheelset fields reached
-# through Bogie.replace / Car.replace, which pass them on to the wheelset.
+# through Bogie.replace / LateralCar.replace, which pass them on to the wheelset.
 WHEELSET = (
     "mass", "yaw_inertia", "rolling_radius", "half_gauge", "conicity", "axle_load", "f11", "f22", "f23",
     "f33", "lateral_stiffness", "yaw_stiffness", "lateral_damping", "yaw_damping",
@@ -76,7 +76,7 @@ def test_bogie_matches_the_bogie(ws, frame, angles):
     body=st.fixed_dictionaries({n: st.floats(lo, hi) for n, (lo, hi) in BODY.items()}),
 )
 def test_lateral_car_matches_the_car(ws, frame, angles, body):
-    base = Car().replace(secondary_yaw_damping=5.0e4)
+    base = LateralCar().replace(secondary_yaw_damping=5.0e4)
     changes = _bogie_changes(base.bogie, ws, frame, angles) | {
         n: getattr(base, n) * f for n, f in body.items()
     }
@@ -85,7 +85,7 @@ def test_lateral_car_matches_the_car(ws, frame, angles, body):
         assert_derived(lateral_car(), system_matrices(model, speed), model, speed)
 
 
-@pytest.mark.parametrize("model", [Car(), COOPERRIDER_CAR], ids=["Manchester", "Cooperrider"])
+@pytest.mark.parametrize("model", [LateralCar(), COOPERRIDER_CAR], ids=["Manchester", "Cooperrider"])
 def test_lateral_car_matches_the_published_cars(model):
     for speed in (10.0, 60.0):
         assert_derived(lateral_car(), system_matrices(model, speed), model, speed)
@@ -111,7 +111,7 @@ def test_lateral_car_roll_closed_form():
     # By hand: the body's roll stiffness is 2 k_ϕ from the two bogies' roll springs, plus 2 h² k_sy
     # from the secondary lateral springs at the seat h below the centre, less m g h of the weight;
     # a cross-level c under one wheelset tilts its frame by c/(4a), so G_K[ϕ, c] = k_ϕ/(4a).
-    model = Car()
+    model = LateralCar()
     mats = model.matrices(40.0)
     k_sy = model.bogie.secondary_lateral_stiffness
     h, kphi, a = model.body_height, model.roll_stiffness, model.wheelset.half_gauge

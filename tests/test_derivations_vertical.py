@@ -19,8 +19,8 @@ from raildyn.constants import GRAVITY
 from raildyn.derivations import time
 from raildyn.derivations.vertical import freight_rock_and_roll, vertical_car, vertical_locomotive
 from raildyn.vehicles import VerticalCar
-from raildyn.vehicles.freight import GDU_ORE_CAR, FreightCar
-from raildyn.vehicles.locomotive import Locomotive
+from raildyn.vehicles.freight import GDU_ORE_CAR, VerticalFreightCar
+from raildyn.vehicles.locomotive import VerticalLocomotive
 
 SPEEDS = st.lists(st.floats(1.0, 120.0), min_size=1, max_size=3)
 
@@ -83,9 +83,9 @@ def test_vertical_car_delays_are_the_models():
 
 
 @settings(max_examples=25, deadline=None)
-@given(changes=factors(_fields(Locomotive())), speeds=SPEEDS)
+@given(changes=factors(_fields(VerticalLocomotive())), speeds=SPEEDS)
 def test_vertical_locomotive_matches_the_model(changes, speeds):
-    base = Locomotive()
+    base = VerticalLocomotive()
     assume(
         base.axle_spacing * changes["axle_spacing"] < base.semi_truck_spacing * changes["semi_truck_spacing"]
     )
@@ -107,7 +107,7 @@ def test_vertical_locomotive_closed_forms():
 
 
 def test_vertical_locomotive_delays_are_the_models():
-    loco = Locomotive()
+    loco = VerticalLocomotive()
     np.testing.assert_allclose(
         _behind(vertical_locomotive(), loco), loco.linear_system().input_positions, rtol=1e-15
     )
@@ -118,12 +118,12 @@ def test_vertical_locomotive_delays_are_the_models():
 
 @settings(max_examples=25, deadline=None)
 @given(
-    changes=factors([f for f in _fields(FreightCar()) if f != "equivalent_damping"]),
+    changes=factors([f for f in _fields(VerticalFreightCar()) if f != "equivalent_damping"]),
     damping=st.floats(0.0, 2e5),
     speeds=SPEEDS,
 )
 def test_freight_rock_and_roll_matches_the_model(changes, damping, speeds):
-    base = FreightCar()
+    base = VerticalFreightCar()
     new = {n: getattr(base, n) * f for n, f in changes.items()}
     assume(new["semi_truck_wheelbase"] < new["semi_truck_spacing"])
     # the body must not topple: 4 k d² − m g h > 0
@@ -136,7 +136,9 @@ def test_freight_rock_and_roll_matches_the_model(changes, damping, speeds):
         assert_derived(freight_rock_and_roll(), system_matrices(car, V), car, V)
 
 
-@pytest.mark.parametrize("car", [FreightCar(equivalent_damping=3e4), GDU_ORE_CAR], ids=["hopper", "GDU"])
+@pytest.mark.parametrize(
+    "car", [VerticalFreightCar(equivalent_damping=3e4), GDU_ORE_CAR], ids=["hopper", "GDU"]
+)
 def test_freight_rock_and_roll_matches_both_cars(car):
     assert_derived(freight_rock_and_roll(), system_matrices(car, 15.0), car, 15.0)
 
@@ -151,12 +153,12 @@ def test_freight_rock_and_roll_closed_forms():
     assert sympy.simplify(d.K[2, 2] - (4 * k * d_**2 - m * g * h)) == 0
     assert sympy.simplify(d.M[2, 2] - (I_phi + m * h**2)) == 0
     assert list(d.GK[0, :]) == [k / 2] * 8
-    car = FreightCar()
+    car = VerticalFreightCar()
     assert car.matrices(10.0).K[2, 2] == pytest.approx(car.roll_stiffness, rel=1e-14)
 
 
 def test_freight_rock_and_roll_delays_are_the_models():
-    car = FreightCar()
+    car = VerticalFreightCar()
     np.testing.assert_allclose(
         _behind(freight_rock_and_roll(), car), car.linear_system().input_positions, rtol=1e-15
     )

@@ -32,7 +32,7 @@ from raildyn.diagrams import (
     wheelset_section,
 )
 from raildyn.train import DraftGear, make_consist
-from raildyn.vehicles import Bogie, Car, ThreePieceTruck, VerticalCar
+from raildyn.vehicles import Bogie, LateralCar, ThreePieceTruck, VerticalCar
 from raildyn.vibration import SDOF
 from raildyn.wheelset import Wheelset
 
@@ -60,7 +60,10 @@ CASES = {
         lambda ax: car_side(VerticalCar(), ax=ax),
         ["$l$", "$b$", "$z_c$", r"$\theta_c$", "$k_s$, $c_s$", "$k_p$, $c_p$"],
     ),
-    "car plan": (lambda ax: car_plan(Car(), 0.002, exaggerate=10.0, ax=ax), ["$l$", "$b$", r"$\psi$", "$V$"]),
+    "car plan": (
+        lambda ax: car_plan(LateralCar(), 0.002, exaggerate=10.0, ax=ax),
+        ["$l$", "$b$", r"$\psi$", "$V$"],
+    ),
     "three-piece truck": (
         lambda ax: truck_schematic(ThreePieceTruck(), ax=ax),
         ["$b$", "$d$", "$a$", "$r_0$", "$k_w$", r"$\psi_b$"],
@@ -198,7 +201,7 @@ def test_car_side_and_plan_scale_with_bogie_spacing():
         assert front[0] - rear[0] == pytest.approx(2 * factor * car.semi_bogie_spacing)
         wheels = sorted(_centre(w)[0] for w in art["wheels"])
         assert wheels[1] - wheels[0] == pytest.approx(2 * car.semi_wheelbase)
-    lateral = Car()
+    lateral = LateralCar()
     for factor in (1.0, 1.5):
         art = car_plan(lateral.replace(semi_bogie_spacing=factor * lateral.semi_bogie_spacing))
         front, rear = (_centre(b) for b in art["bogies"])
@@ -292,9 +295,9 @@ BAD = [
     (lambda: wheelset_plan(Wheelset(), 0.0, 0.0).update(0.0, np.inf), ValueError, "psi"),
     (lambda: wheelset_plan(Wheelset()).update("abc", 0.0), TypeError, "y"),
     (lambda: bogie_plan(Wheelset()), TypeError, "bogie"),
-    (lambda: car_side(Car()), TypeError, "car"),
+    (lambda: car_side(LateralCar()), TypeError, "car"),
     (lambda: car_plan(VerticalCar()), TypeError, "car"),
-    (lambda: car_plan(Car(), psi=0.5), ValueError, "psi"),
+    (lambda: car_plan(LateralCar(), psi=0.5), ValueError, "psi"),
     (lambda: truck_schematic(Bogie()), TypeError, "truck"),
     (lambda: coupler_chain(CONSIST, vehicles=0), ValueError, "vehicles"),
     (lambda: coupler_chain(CONSIST, vehicles=2.0), TypeError, "vehicles"),

@@ -18,7 +18,7 @@ from raildyn import stability
 from raildyn.contact.profiles import s1002_wheel, uic60_rail
 from raildyn.errors import SolverError
 from raildyn.track import Curve
-from raildyn.vehicles import Bogie, Car
+from raildyn.vehicles import Bogie, LateralCar
 from raildyn.wheelset import (
     NonlinearLateral,
     NonlinearWheelset,
@@ -39,7 +39,7 @@ def _wheelset():
 
 def _models():
     """Each model with the speed it is run at."""
-    car = Car().nonlinear()
+    car = LateralCar().nonlinear()
     curve = Curve(radius=600.0, cant=0.1, transition_length=60.0, arc_length=100.0, straight=20.0)
     return {
         "wheelset": (_wheelset(), 60.0),
@@ -93,7 +93,7 @@ def test_the_wheelsets_bifurcation_diagram_is_scipys():
 
 def test_the_cars_bifurcation_diagram_is_scipys():
     # Three speeds about the car's fold, 2 s runs: scipy takes some seconds, the engine a tenth of one.
-    car = Car().nonlinear()
+    car = LateralCar().nonlinear()
     kwargs = dict(duration=2.0, refine=1, progress=False)
     compiled = stability.bifurcation_diagram(car, [50.0, 70.0, 90.0], **kwargs)
     reference = stability.bifurcation_diagram(car, [50.0, 70.0, 90.0], engine="scipy", **kwargs)
@@ -212,7 +212,7 @@ def test_the_wheel_rail_law_is_one_function_for_the_engine_and_numpy(contact):
 def test_the_curves_ramp_is_one_function_for_the_engine_and_numpy():
     # Curve.curvature and cant_at (numpy) and the engine's curve (compiled) all take raildyn.track.curve.ramp.
     curve = Curve(radius=600.0, cant=0.1, transition_length=60.0, arc_length=100.0, straight=20.0)
-    row = Car().nonlinear().replace(curve=curve).compiled_rhs(30.0).row
+    row = LateralCar().nonlinear().replace(curve=curve).compiled_rhs(30.0).row
     s = np.linspace(-10.0, curve.length + 10.0, 401)
     compiled = np.array([_engine._share(row, v) for v in s])
     np.testing.assert_array_equal(compiled / curve.radius, curve.curvature(s))

@@ -160,7 +160,7 @@ def test_chapter_eight_figures_are_registered_without_book_numbers():
 def test_nadal_limit_figure_puts_the_cars_quotients_under_nadals_curves():
     from raildyn.curving import climb, quasi_static_curving
     from raildyn.track import speed_for_deficiency
-    from raildyn.vehicles import Car
+    from raildyn.vehicles import LateralCar
 
     ax = figures.make("fig8.nadal_limit").axes[0]
     curves, markers = ax.lines[:3], ax.lines[3:]
@@ -168,7 +168,7 @@ def test_nadal_limit_figure_puts_the_cars_quotients_under_nadals_curves():
         delta = np.radians(line.get_xdata())
         np.testing.assert_allclose(line.get_ydata(), climb.nadal_limit(delta, mu), rtol=1e-12)
     speed = speed_for_deficiency(300.0, 0.1, 0.1)
-    state = quasi_static_curving(Car().nonlinear(), speed, 300.0, 0.1, flange_angle=np.radians(70.0))
+    state = quasi_static_curving(LateralCar().nonlinear(), speed, 300.0, 0.1, flange_angle=np.radians(70.0))
     assert markers[-1].get_xdata()[0] == 70.0
     assert markers[-1].get_ydata()[0] == pytest.approx(state.derailment_quotient[0, 1], rel=1e-12)
     # every marker below the lowest limit (μ = 0.5) at 70°

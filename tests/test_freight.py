@@ -18,14 +18,14 @@ from raildyn.vehicles import response as resp
 from raildyn.vehicles.freight import (
     GDU_ORE_CAR,
     LABELS,
-    FreightCar,
     RockAndRoll,
+    VerticalFreightCar,
     rock_and_roll,
 )
 from raildyn.vehicles.wedges import WedgeFriction, wedge_energy_per_cycle, wedge_friction_force
 from raildyn.vibration import modal_analysis
 
-CAR = FreightCar()
+CAR = VerticalFreightCar()
 
 
 def test_static_deflection_is_quarter_weight_over_nest():
@@ -202,11 +202,11 @@ def test_property_wedge_friction_balances_the_wedge(P, alpha, mu, n):
 
 def test_bad_input():
     with pytest.raises(ValueError, match="body_mass"):
-        FreightCar(body_mass=0.0)
+        VerticalFreightCar(body_mass=0.0)
     with pytest.raises(ValueError, match="wedge_friction"):
-        FreightCar(wedge_friction=-1.0)
+        VerticalFreightCar(wedge_friction=-1.0)
     with pytest.raises(ValueError, match="roll stiffness"):
-        FreightCar(cg_height=20.0)
+        VerticalFreightCar(cg_height=20.0)
     with pytest.raises(ValueError, match="speeds"):
         rock_and_roll(CAR, [-1.0])
     with pytest.raises(ValueError, match="amplitude"):
@@ -226,7 +226,7 @@ def test_bad_input():
 
 
 def test_issue_15_bad_input_is_refused_by_name():
-    with pytest.raises(TypeError, match="car must be a FreightCar"):
+    with pytest.raises(TypeError, match="car must be a VerticalFreightCar"):
         rock_and_roll("loaded hopper", [25.0], cycles=4)
     with pytest.raises(ValueError, match="speeds must not be empty"):
         rock_and_roll(CAR, [], cycles=4)
@@ -240,15 +240,15 @@ def test_issue_15_bad_input_is_refused_by_name():
     # a roll stiffness that overflows, or a body so heavy that it topples, names every field involved
     # (the spacing and the mass within their plausible ranges: an overflowing 4 k d², a 1000 t body 3 m up)
     with pytest.raises(ValueError, match="semi_spring_spacing .* finite and > 0"):
-        FreightCar(nest_stiffness=1e308)
+        VerticalFreightCar(nest_stiffness=1e308)
     with pytest.raises(ValueError, match="body_mass .* finite and > 0"):
-        FreightCar(body_mass=1e6, cg_height=3.0)
+        VerticalFreightCar(body_mass=1e6, cg_height=3.0)
     with pytest.raises(ValueError, match="semi_spring_spacing must be in"):
-        FreightCar(semi_spring_spacing=1e300)
+        VerticalFreightCar(semi_spring_spacing=1e300)
     with pytest.raises(ValueError, match="body_mass must be in"):
-        FreightCar(body_mass=1e300)
+        VerticalFreightCar(body_mass=1e300)
     with pytest.raises(ValueError, match="semi_truck_wheelbase"):
-        FreightCar(semi_truck_wheelbase=10.0)
+        VerticalFreightCar(semi_truck_wheelbase=10.0)
     with pytest.raises(ValueError, match="n must be an integer in"):
         wedge_energy_per_cycle(1.0, 0.01, 1.0, n=10**12)
     with pytest.raises(ValueError, match="velocity_scale"):
@@ -272,7 +272,7 @@ def test_rock_and_roll_refuses_a_step_at_which_rk4_goes_unstable():
     against RK4's stability limit on the car with sticking wedges, before the run."""
     for dt in (0.5, 2.0):
         with pytest.raises(ValueError, match="dt must be at most"):
-            rock_and_roll(FreightCar(), [5.0], cycles=4, dt=dt)
+            rock_and_roll(VerticalFreightCar(), [5.0], cycles=4, dt=dt)
     # The limit is RK4's: the spectral radius of the step matrix P = Σ (hA)^k/k!, k ≤ 4, of the
     # linearised car crosses 1 there (computed here from the matrix, not from its eigenvalues).
     sticking = CAR.replace(equivalent_damping=CAR.wedge_friction / 0.002)

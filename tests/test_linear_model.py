@@ -23,8 +23,8 @@ from raildyn.vehicles import (
     MANCHESTER_CAR,
     MANCHESTER_VERTICAL,
     Bogie,
-    Car,
-    FreightCar,
+    LateralCar,
+    VerticalFreightCar,
 )
 from raildyn.wheelset import Wheelset
 
@@ -34,7 +34,7 @@ MODELS = {
     "manchester car": MANCHESTER_CAR,
     "cooperrider car": COOPERRIDER_CAR,
     "vertical car": MANCHESTER_VERTICAL,
-    "freight car": FreightCar(equivalent_damping=2.0e4),
+    "freight car": VerticalFreightCar(equivalent_damping=2.0e4),
     "gdu ore car": GDU_ORE_CAR.replace(equivalent_damping=2.0e4),
     "locomotive": DEFAULT_LOCOMOTIVE,
     "lateral locomotive": LATERAL_LOCOMOTIVE,
@@ -206,7 +206,7 @@ def _wheelset_family(lam, k):
 
 
 def _car_family(lam, k, ks):
-    return Car().replace(conicity=lam, yaw_stiffness=k, secondary_yaw_stiffness=ks)
+    return LateralCar().replace(conicity=lam, yaw_stiffness=k, secondary_yaw_stiffness=ks)
 
 
 # Chapter 7's critical-speed curve: every corner of its controls, the defaults, points off the grid.

@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 
 from raildyn.constants import GRAVITY
 from raildyn.vehicles import response as resp
-from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
+from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, VerticalLocomotive
 from raildyn.vibration import modal_analysis
 
 LOCO = DEFAULT_LOCOMOTIVE
@@ -68,11 +68,11 @@ def test_property_three_axle_filter_zeros(speed):
 
 def test_bad_input():
     with pytest.raises(ValueError, match="truck_mass"):
-        Locomotive(truck_mass=-3.0)
+        VerticalLocomotive(truck_mass=-3.0)
     with pytest.raises(ValueError, match="axle_spacing"):
-        Locomotive(axle_spacing=7.0)
+        VerticalLocomotive(axle_spacing=7.0)
     with pytest.raises(ValueError, match="secondary_damping"):
-        Locomotive(secondary_damping=-1.0)
+        VerticalLocomotive(secondary_damping=-1.0)
 
 
 def test_issue_15_body_on_two_trucks_refuses_an_inconsistent_layout():

@@ -210,8 +210,8 @@ CFR_213 = {1: (10, 15), 2: (25, 30), 3: (40, 60), 4: (60, 80), 5: (80, 90), 6: (
 
 #: Vehicles that run in freight service: a run of one of them is held to the freight limit.
 FREIGHT = {
-    "EMPTY_FREIGHT_CAR", "LOADED_FREIGHT_CAR", "LATERAL_LOCOMOTIVE", "DEFAULT_LOCOMOTIVE", "FreightCar",
-    "GDU_ORE_CAR", "LateralFreightCar", "Locomotive", "LateralLocomotive",
+    "EMPTY_FREIGHT_CAR", "LOADED_FREIGHT_CAR", "LATERAL_LOCOMOTIVE", "DEFAULT_LOCOMOTIVE",
+    "VerticalFreightCar", "GDU_ORE_CAR", "LateralFreightCar", "VerticalLocomotive", "LateralLocomotive",
 }  # fmt: skip
 
 

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from raildyn import _checks, constants, contact, curving, stability, train, vehicles
-from raildyn.bridge import SimplySupportedBeam, moving_force
+from raildyn.bridge import SimplySupportedBeam, moving_force_response
 from raildyn.constants import MAXIMUM_SPEED, PLAUSIBLE_RANGES
 from raildyn.errors import SolverError
 from raildyn.linear_model import Assembler, SystemMatrices
@@ -27,7 +27,7 @@ from raildyn.suspension import clearance_force
 from raildyn.track import Curve, axle_delays
 from raildyn.validation.identification import coast_down
 from raildyn.validation.measured import StrainRecord
-from raildyn.vehicles import Car, FreightCar, VerticalCar, rock_and_roll, track_frf
+from raildyn.vehicles import LateralCar, VerticalCar, VerticalFreightCar, rock_and_roll, track_frf
 from raildyn.wheelset import NonlinearWheelset, WheelRailContact, Wheelset, add_wheelset
 
 # --------------------------------------------------------------------------- one speed limit
@@ -58,13 +58,17 @@ def test_one_speed_limit_for_the_whole_package():
         pytest.param(
             lambda: stability.simulate(NonlinearWheelset(), 300.0, [1e-3, 0.0, 0.0, 0.0], 0.1), id="simulate"
         ),
-        pytest.param(lambda: moving_force(SimplySupportedBeam(), 300.0, 1e5), id="moving_force"),
+        pytest.param(
+            lambda: moving_force_response(SimplySupportedBeam(), 300.0, 1e5), id="moving_force_response"
+        ),
         pytest.param(lambda: axle_delays([0.0, 2.5], 300.0), id="axle_delays"),
         pytest.param(
             lambda: contact.wheelset_creepages(300.0, 0.0, 0.0, 0.0, 0.46, 0.46, 0.46, 0.75),
             id="wheelset_creepages",
         ),
-        pytest.param(lambda: rock_and_roll(FreightCar(), [25.0, 300.0], cycles=4), id="rock_and_roll"),
+        pytest.param(
+            lambda: rock_and_roll(VerticalFreightCar(), [25.0, 300.0], cycles=4), id="rock_and_roll"
+        ),
     ],
 )
 def test_a_speed_typed_in_kmh_is_refused(call):
@@ -77,9 +81,9 @@ def test_a_speed_typed_in_kmh_is_refused(call):
 
 def test_a_critical_speed_is_searched_within_the_speed_limit():
     with pytest.raises(ValueError, match=r"speed_range\[1\] must be in \(1.0, 200.0\] m/s"):
-        stability.critical_speed(Car(), (1.0, 300.0))
+        stability.critical_speed(LateralCar(), (1.0, 300.0))
     # a car stable up to the limit is reported so, as for any stable range
-    stable = stability.critical_speed(Car(), (1.0, 50.0))
+    stable = stability.critical_speed(LateralCar(), (1.0, 50.0))
     assert stable.status == "stable over the range" and stable.speed == np.inf
 
 
@@ -119,7 +123,7 @@ def test_a_mass_of_a_billion_kilograms_is_refused():
     with pytest.raises(ValueError, match=r"mass must be in \[10.0, 1000000.0\] kg"):
         Wheelset(mass=1e9)
     with pytest.raises(ValueError, match=r"body_mass must be in \[10.0, 1000000.0\] kg"):
-        Car(body_mass=1e9)
+        LateralCar(body_mass=1e9)
     with pytest.raises(ValueError, match=r"body_mass .* a mass in tonnes\? 3.2 t is 3200 kg"):
         VerticalCar(body_mass=3.2)
 
@@ -168,7 +172,7 @@ def test_a_step_that_would_fill_the_memory_is_refused_before_allocating():
 def test_a_hopeless_periodic_orbit_gives_up_within_seconds():
     # A car's orbit guessed at a period of 100 s: each integration used to run to its own bound of
     # 10⁶ evaluations (about 50 s here, 104 s in the issue); the shooting now shares 10⁵ in all.
-    model = Car().nonlinear()
+    model = LateralCar().nonlinear()
     state = np.zeros(model.state_size)
     state[model.lateral_index] = 0.01
     start = time.perf_counter()

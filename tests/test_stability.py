@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from raildyn import stability, vibration
 from raildyn.linear_model import LinearSystem, as_linear_system
-from raildyn.vehicles import Bogie, Car
+from raildyn.vehicles import Bogie, LateralCar
 from raildyn.wheelset import NonlinearWheelset, Wheelset
 
 SOFT = Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6)  # a wheelset that hunts below 60 m/s
@@ -25,7 +25,7 @@ def _negative_damping_oscillator(c0, c1, k=4.0):
 # Eigenvalues
 
 
-@pytest.mark.parametrize("model", [SOFT, Bogie(), Car()], ids=["wheelset", "bogie", "car"])
+@pytest.mark.parametrize("model", [SOFT, Bogie(), LateralCar()], ids=["wheelset", "bogie", "car"])
 def test_batched_eigenvalues_agree_with_python_control_poles(model, reference):
     # The same state space through python-control (to_control from raildyn.vibration): the sorted
     # poles agree to 1e-8 of the largest, the accuracy of a balanced nonsymmetric eigen-solver.
@@ -128,8 +128,8 @@ def test_critical_speed_of_negative_damping_oscillator(c0, v):
 
 
 def test_critical_speed_brackets_the_sign_change():
-    cs = stability.critical_speed(Car(), (1.0, 200.0))
-    g = stability.largest_real_part(Car(), [cs.speed - 0.05, cs.speed + 0.05])
+    cs = stability.critical_speed(LateralCar(), (1.0, 200.0))
+    g = stability.largest_real_part(LateralCar(), [cs.speed - 0.05, cs.speed + 0.05])
     assert g[0] < 0.0 < g[1]
 
 
@@ -221,7 +221,7 @@ def test_nonlinear_critical_speed_of_the_wheelset_not_above_the_linear_one():
 def test_nonlinear_critical_speed_of_the_default_car_not_above_the_linear_one():
     # The default car (Manchester vehicle, cone λ = 0.15, flange at 9.1 mm) hunts on its flanges
     # at 75 m/s, well below its linear critical speed of about 84 m/s (a subcritical bifurcation).
-    car = Car()
+    car = LateralCar()
     linear = stability.critical_speed(car, (1.0, 200.0)).speed
     cycle = stability.limit_cycle_amplitude(car.nonlinear(), 0.9 * linear)
     assert cycle.hunting()

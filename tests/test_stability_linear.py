@@ -13,7 +13,7 @@ import pytest
 import scipy.optimize
 
 from raildyn import stability
-from raildyn.vehicles import Car
+from raildyn.vehicles import LateralCar
 from raildyn.wheelset import Wheelset
 
 
@@ -35,10 +35,10 @@ MODELS = [
     (Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), (1.0, 200.0)),  # crossing near 55 m/s
     (Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), (60.0, 200.0)),  # unstable at the start
     (Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), (1.0, 40.0)),  # stable over the range
-    (Car(), (1.0, 200.0)),
-    (Car().replace(conicity=0.03), (1.0, 200.0)),  # a crossing high in the range
-    (Car().replace(conicity=0.5, yaw_stiffness=5.0e6), (1.0, 200.0)),
-    (Car().bogie, (1.0, 200.0)),
+    (LateralCar(), (1.0, 200.0)),
+    (LateralCar().replace(conicity=0.03), (1.0, 200.0)),  # a crossing high in the range
+    (LateralCar().replace(conicity=0.5, yaw_stiffness=5.0e6), (1.0, 200.0)),
+    (LateralCar().bogie, (1.0, 200.0)),
 ]
 
 
@@ -74,8 +74,8 @@ def _track_step_by_step(lam, vec):
 @pytest.mark.parametrize(
     ("model", "speeds"),
     [
-        (Car(), np.linspace(5.0, 150.0, 60)),
-        (Car().replace(conicity=0.4, yaw_stiffness=5.0e6), np.linspace(5.0, 150.0, 60)),
+        (LateralCar(), np.linspace(5.0, 150.0, 60)),
+        (LateralCar().replace(conicity=0.4, yaw_stiffness=5.0e6), np.linspace(5.0, 150.0, 60)),
         (Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6), np.linspace(1.0, 120.0, 240)),
         (Wheelset(yaw_stiffness=0.0, lateral_stiffness=0.0), np.linspace(1.0, 100.0, 100)),
     ],

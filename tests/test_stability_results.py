@@ -242,9 +242,9 @@ def test_critical_speed_carries_the_shape_of_the_mode_that_loses_stability():
     # state matrix at that speed (same normalisation: largest displacement entry 1): 1e-8.
     import scipy.linalg
 
-    from raildyn.vehicles import Car
+    from raildyn.vehicles import LateralCar
 
-    car = Car()
+    car = LateralCar()
     crit = stability.critical_speed(car, (1.0, 200.0))
     mats = car.matrices(crit.speed)
     lam, vec = scipy.linalg.eig(mats.state_matrix())

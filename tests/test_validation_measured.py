@@ -112,9 +112,9 @@ def test_the_motor_car_is_the_heavier_by_about_the_nominal_ratio(case):
 
 
 def test_the_chapter10_prediction_against_the_measurement(case):
-    # The prediction: moving_force of the NSB 92's nominal axle loads on the panel as a simple span, at the
-    # identified speed and arrival, turned into strain by one fitted factor. Measured agreement (midspan,
-    # towards Trondheim, towards Heimdal): correlation 0.97, 0.96, 0.89; NRMSE (range) 7.5 %, 5.7 %,
+    # The prediction: moving_force_response of the NSB 92's nominal axle loads on the panel as a simple span,
+    # at the identified speed and arrival, turned into strain by one fitted factor. Measured agreement
+    # (midspan, towards Trondheim, towards Heimdal): correlation 0.97, 0.96, 0.89; NRMSE (range) 7.5 %, 5.7 %,
     # 12.4 %; Sprague-Geers combined 0.16, 0.07, 0.25. The misfit is the model's: the stringer is
     # continuous over the cross-girders (the measurement turns negative, to -30 µε, as axles load the
     # next panels; a simple span cannot) and rails and sleepers spread each axle. What is asserted is what

@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 
 from raildyn import stability
 from raildyn.constants import GRAVITY
-from raildyn.vehicles import MANCHESTER_CAR, Bogie, Car
+from raildyn.vehicles import MANCHESTER_CAR, Bogie, LateralCar
 from raildyn.wheelset import Wheelset
 
 
@@ -22,7 +22,7 @@ def test_manchester_parameters_as_published():
 
 
 def test_car_has_fifteen_coordinates_and_symmetric_suspension():
-    system = Car().linear_system()
+    system = LateralCar().linear_system()
     assert system.size == 15
     # Springs and dampers are symmetric; only creep and gravity terms break the symmetry of K.
     np.testing.assert_allclose(system.C0, system.C0.T, atol=1e-9)
@@ -68,7 +68,7 @@ def test_car_without_body_mass_effects_matches_bogie():
     # A car body 10¹² heavier than usual stands still: each bogie then behaves as a bogie under a
     # straight-running body, so the car's critical speed equals the bogie's (to the 0.01 m/s tol).
     # The body's height is set to 0, or its enormous weight would overturn it in roll.
-    car = Car(body_height=0.0)
+    car = LateralCar(body_height=0.0)
     heavy = with_masses(car, {"body y": 1e12 * 32000, "body ψ": 1e12 * 1.97e6, "body φ": 1e12 * 5.68e4})
     v_car = stability.critical_speed(heavy, (1.0, 200.0)).speed
     v_bogie = stability.critical_speed(car.bogie, (1.0, 200.0)).speed
@@ -78,7 +78,7 @@ def test_car_without_body_mass_effects_matches_bogie():
 def test_body_roll_terms_by_hand():
     # Roll stiffness on the body: two bogies' springs and bars, less the weight's overturning
     # moment m g h, plus the lateral springs acting at h below the centre: 2 k_y2 h².
-    car = Car()
+    car = LateralCar()
     system = car.linear_system()
     i = system.labels.index("body φ")
     expected = (
@@ -117,7 +117,7 @@ def test_bogie_critical_speed_scales_as_inverse_root_conicity_in_the_high_creep_
 
 
 def test_with_reaches_every_level():
-    car = Car().replace(conicity=0.3, frame_mass=3000.0, body_mass=30000.0)
+    car = LateralCar().replace(conicity=0.3, frame_mass=3000.0, body_mass=30000.0)
     assert car.wheelset.conicity == 0.3 and car.wheelset.contact_angle == 0.3
     assert car.bogie.frame_mass == 3000.0 and car.body_mass == 30000.0
 
@@ -126,27 +126,27 @@ def test_bad_input():
     with pytest.raises(ValueError, match="frame_mass"):
         Bogie(frame_mass=-1.0)
     with pytest.raises(ValueError, match="body_mass"):
-        Car(body_mass=0.0)
+        LateralCar(body_mass=0.0)
     with pytest.raises(ValueError, match="conicity"):
-        Car().replace(conicity=-0.1)
+        LateralCar().replace(conicity=-0.1)
     with pytest.raises(TypeError, match="Wheelset"):
         Bogie(wheelset=3)
     with pytest.raises(ValueError, match="speed"):
-        Car().nonlinear().rhs(0.0, np.zeros(Car().nonlinear().state_size), 0.0)
+        LateralCar().nonlinear().rhs(0.0, np.zeros(LateralCar().nonlinear().state_size), 0.0)
 
 
 def test_issue_15_models_validate_their_fields():
     # a body whose weight, acting h above the secondary springs, outweighs 2 k_φ would topple
     with pytest.raises(ValueError, match="roll_stiffness .* body topples"):
-        Car(roll_stiffness=0.0)
+        LateralCar(roll_stiffness=0.0)
     with pytest.raises(ValueError, match="semi_bogie_spacing must exceed"):
-        Car(semi_bogie_spacing=1.0)
+        LateralCar(semi_bogie_spacing=1.0)
     with pytest.raises(TypeError, match="bogie must be a Bogie"):
-        Car(bogie=None)
+        LateralCar(bogie=None)
     with pytest.raises(TypeError, match="secondary_yaw_damping must be a real number"):
         Bogie(secondary_yaw_damping="0")
     # the threshold is where the car's roll diverges: just above it the car stands
-    stands = Car(roll_stiffness=0.51 * Car().body_mass * GRAVITY * Car().body_height)
+    stands = LateralCar(roll_stiffness=0.51 * LateralCar().body_mass * GRAVITY * LateralCar().body_height)
     assert np.linalg.eigvals(stands.matrices(20.0).state_matrix()).real.max() < 0
 
 

@@ -9,7 +9,7 @@ from raildyn import track
 from raildyn.vehicles import (
     MANCHESTER_CAR,
     MANCHESTER_VERTICAL,
-    FreightCar,
+    VerticalFreightCar,
     periodic_profile,
     response_spectrum,
     rms_over_speeds,
@@ -154,7 +154,7 @@ def test_track_frf_refuses_a_component_without_inputs():
     with pytest.raises(ValueError, match=r"^component 'cross_level' is not an input of this vehicle"):
         track_frf(MANCHESTER_VERTICAL, [1.0], 30.0, "body z", component="cross_level")
     # the freight car stands on two rails: its rail heights take a cross-level as ±c/2
-    assert abs(track_frf(FreightCar(), [5.0], 10.0, "body φ", component="cross_level")[0]) > 0
+    assert abs(track_frf(VerticalFreightCar(), [5.0], 10.0, "body φ", component="cross_level")[0]) > 0
 
 
 def test_track_spectrum_is_the_function_it_names():

@@ -419,7 +419,7 @@ def test_modal_superposition_against_direct_state_space():
     x0, v0 = np.array([0.01, 0.0, -0.02]), np.array([0.0, 0.1, 0.0])
     force = np.vstack([10 * np.sin(7.0 * t), np.zeros_like(t), 5.0 * (t > 1.0)])
     x = vib.modal_superposition(M, K, t, x0=x0, v0=v0, force=force, damping_ratios=xi)
-    matrices = vib.state_space(M, C, K, np.eye(3))
+    matrices = vib.state_space_matrices(M, C, K, np.eye(3))
     A, B = matrices.A, matrices.B
     reference = _foh_reference(A, B, np.r_[x0, v0], t, force)[:3]
     # Both are exact for the same piecewise-linear force; they differ by rounding accumulated over 800
@@ -438,7 +438,7 @@ def test_modal_superposition_of_a_free_free_chain_with_a_rigid_body_mode():
     force = np.vstack([np.where(t < 1.0, 4.0 * t, 0.0), np.zeros_like(t)])  # a ramp, then released
     x0, v0 = np.array([0.0, 0.01]), np.array([0.1, 0.0])
     x = vib.modal_superposition(M, K, t, x0=x0, v0=v0, force=force)
-    matrices = vib.state_space(M, np.zeros((2, 2)), K, np.eye(2))
+    matrices = vib.state_space_matrices(M, np.zeros((2, 2)), K, np.eye(2))
     A, B = matrices.A, matrices.B
     # Exact for the piecewise-linear force both ways; the rigid mode drifts, so allow rounding on the
     # growing displacement (~1 m): 1e-12.
@@ -495,7 +495,7 @@ def test_state_space_outputs():
     K = np.array([[300.0, -100.0], [-100.0, 100.0]])
     C = np.array([[3.0, -1.0], [-1.0, 1.0]])
     B = np.array([1.0, 0.0])  # one force on the first mass, given as a vector
-    matrices = vib.state_space(M, C, K, B)
+    matrices = vib.state_space_matrices(M, C, K, B)
     A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
     assert (A.shape, Bs.shape, Cs.shape, D.shape) == ((4, 4), (4, 1), (2, 4), (2, 1))
     np.testing.assert_allclose(A[2:], -np.linalg.solve(M, np.hstack([K, C])), rtol=EPS)
@@ -503,19 +503,19 @@ def test_state_space_outputs():
     H = vib.frf_matrix(M, C, K, w)[0] @ B
     # Each output's frequency response, C_s (iωI − A)⁻¹ B_s + D, must be iω or −ω² times the receptance.
     for output, factor in (("displacement", 1.0), ("velocity", 1j * w), ("acceleration", -(w**2))):
-        matrices = vib.state_space(M, C, K, B, output=output)
+        matrices = vib.state_space_matrices(M, C, K, B, output=output)
         A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
         g = Cs @ np.linalg.solve(1j * w * np.eye(4) - A, Bs) + D
         np.testing.assert_allclose(g[:, 0], factor * H, rtol=1e-13)
-    matrices = vib.state_space(M, C, K, B, output="acceleration")
+    matrices = vib.state_space_matrices(M, C, K, B, output="acceleration")
     A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
     np.testing.assert_allclose(D, np.linalg.solve(M, B[:, None]), rtol=EPS)
-    matrices = vib.state_space(M, C, K, B, output="state")
+    matrices = vib.state_space_matrices(M, C, K, B, output="state")
     A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
     np.testing.assert_array_equal(Cs, np.eye(4))
     # The SDOF view is the 1x1 case.
     s = SDOF(2.0, 0.4, 8.0)
-    matrices = s.state_space()
+    matrices = s.state_space_matrices()
     A, Bs, Cs, D = matrices.A, matrices.B, matrices.C, matrices.D
     np.testing.assert_allclose(A, [[0, 1], [-4.0, -0.2]], rtol=EPS)
     np.testing.assert_allclose(Bs, [[0], [0.5]], rtol=EPS)
@@ -717,8 +717,14 @@ BAD = {
     ),
     "modal uneven t": (lambda: vib.modal_superposition(M2, K2, T**2, force=np.zeros((2, 11))), "uniform"),
     "C shape": (lambda: vib.complex_modes(M2, np.eye(3), K2), "C must be 2x2"),
-    "B rows": (lambda: vib.state_space(M2, np.zeros((2, 2)), K2, np.ones((3, 1))), "B must have shape"),
-    "output name": (lambda: vib.state_space(M2, np.zeros((2, 2)), K2, np.ones(2), output="force"), "output"),
+    "B rows": (
+        lambda: vib.state_space_matrices(M2, np.zeros((2, 2)), K2, np.ones((3, 1))),
+        "B must have shape",
+    ),
+    "output name": (
+        lambda: vib.state_space_matrices(M2, np.zeros((2, 2)), K2, np.ones(2), output="force"),
+        "output",
+    ),
     "frf negative omega": (lambda: vib.frf_matrix(M2, np.zeros((2, 2)), K2, [-1.0]), "omega"),
     "frf at resonance": (lambda: vib.frf_matrix([[1.0]], [[0.0]], [[4.0]], [1.0, 2.0]), "singular at omega"),
     # issue 15: domains stated and refused by name, never an overflow, a MemoryError or a silent inf
@@ -795,7 +801,7 @@ def test_every_result_is_a_frozen_dataclass():
         vib.modal_analysis(chain.M, chain.K),
         vib.complex_modes(chain.M, chain.C, chain.K),
         vib.rayleigh_coefficients(2.0, 20.0, 0.02, 0.05),
-        vib.state_space(chain.M, chain.C, chain.K, np.eye(2)),
+        vib.state_space_matrices(chain.M, chain.C, chain.K, np.eye(2)),
         vib.root_locus(1.0, [0.0, 0.5]),
         s.decay_peaks(0.01, 0.0, count=2),
         s.free_vibration(T, 0.01, 0.0),

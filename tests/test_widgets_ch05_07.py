@@ -9,7 +9,13 @@ from widget_helpers import status_line
 from raildyn import figures, stability, wheelset
 from raildyn.curving import steady_curving
 from raildyn.track import speed_for_deficiency
-from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, MANCHESTER_CAR, Car
+from raildyn.vehicles import (
+    EMPTY_FREIGHT_CAR,
+    LATERAL_LOCOMOTIVE,
+    LOADED_FREIGHT_CAR,
+    MANCHESTER_CAR,
+    LateralCar,
+)
 from raildyn.widgets import chapter05, chapter07
 
 
@@ -94,7 +100,7 @@ def test_curved_wheelset_without_suspension_rolls_at_the_pure_rolling_offset():
 def test_car_roots_status_and_chart_give_the_critical_speed():
     container, update = chapter07.car_roots()
     update(conicity=0.2, yaw_stiffness=20.0)
-    car = Car().replace(conicity=0.2, yaw_stiffness=20.0e6)
+    car = LateralCar().replace(conicity=0.2, yaw_stiffness=20.0e6)
     # The widget's root is found to 0.05 m/s over its own speed range; the same call here.
     cs = stability.critical_speed(car, (5.0, 150.0), tol=0.05)
     shown = re.search(
@@ -123,7 +129,7 @@ def test_critical_curve_follows_the_critical_speed_map():
     container, update = chapter07.critical_curve()
     update(yaw_stiffness=20.0, secondary_yaw_stiffness=1.0)
     conicities = chapter07._CONICITIES
-    base = Car().replace(secondary_yaw_stiffness=1.0e6)
+    base = LateralCar().replace(secondary_yaw_stiffness=1.0e6)
     expected = stability.critical_speed_map(
         lambda lam, k: base.replace(conicity=lam, yaw_stiffness=k),
         conicities,

@@ -9,7 +9,7 @@ from widget_helpers import median_update_ms, status_line
 
 from raildyn.curving import climb, curve_entry, quasi_static_curving
 from raildyn.track import balance_speed, cant_deficiency
-from raildyn.vehicles import Bogie, Car
+from raildyn.vehicles import Bogie, LateralCar
 from raildyn.widgets import chapter08
 
 # ---------------------------------------------------------------------------
@@ -22,7 +22,7 @@ def test_curving_plan_shows_the_cars_quasi_static_equilibrium():
     axles = [line for line in ax.lines if line.get_marker() == "o"]
     before = [line.get_xydata().copy() for line in axles]
     update(radius=800.0, speed_kmh=90.0, cant_mm=50.0)
-    state = quasi_static_curving(Car().nonlinear(), 90.0 / 3.6, 800.0, 0.05)
+    state = quasi_static_curving(LateralCar().nonlinear(), 90.0 / 3.6, 800.0, 0.05)
     status = status_line(container)
     deficiency = 1e3 * cant_deficiency(90.0 / 3.6, 800.0, 0.05)
     assert f"cant deficiency {deficiency:.0f} mm" in status
@@ -90,7 +90,9 @@ def test_nadal_chart_draws_the_limit_and_the_cars_quotient():
     np.testing.assert_allclose(limit.get_ydata(), climb.nadal_limit(np.radians(angles), 0.2), rtol=1e-12)
     nadal = climb.nadal_limit(np.radians(65.0), 0.2)
     assert at_angle.get_xdata()[0] == 65.0 and at_angle.get_ydata()[0] == pytest.approx(nadal, rel=1e-12)
-    state = quasi_static_curving(Car().nonlinear(), 80.0 / 3.6, 400.0, 0.1, flange_angle=np.radians(65.0))
+    state = quasi_static_curving(
+        LateralCar().nonlinear(), 80.0 / 3.6, 400.0, 0.1, flange_angle=np.radians(65.0)
+    )
     quotient = state.derailment_quotient[0, 1]
     # the widget's equilibrium from its last one, this from the linear state: within the search's tolerance
     assert car.get_xdata()[0] == 65.0 and car.get_ydata()[0] == pytest.approx(quotient, rel=1e-6)
@@ -197,7 +199,7 @@ def test_stiffness_tradeoff_draws_the_models_critical_speeds_and_angles_of_attac
     ks = chapter08._TRADEOFF_STIFFNESSES
     speed = balance_speed(900.0, 0.1)  # the widget's curves all have 100 mm of cant
     expected = stability_and_curving(
-        Car().replace(conicity=0.25), ks, speed, 900.0, 0.1, speed_range=(1.0, 150.0), tol=0.25, scan=8
+        LateralCar().replace(conicity=0.25), ks, speed, 900.0, 0.1, speed_range=(1.0, 150.0), tol=0.25, scan=8
     )
     left, right = container.live.figure.axes
     # The same call as the widget's: equal to rounding.
@@ -205,11 +207,11 @@ def test_stiffness_tradeoff_draws_the_models_critical_speeds_and_angles_of_attac
     np.testing.assert_allclose(right.lines[0].get_ydata(), 1e3 * expected.angle_of_attack, rtol=1e-12)
     np.testing.assert_allclose(left.lines[0].get_xdata(), ks / 1e6)
     # The status line reads both at the grid's point nearest the car's own k_ψ (62.8 MN·m/rad).
-    i = int(np.argmin(np.abs(ks - Car().wheelset.yaw_stiffness)))
+    i = int(np.argmin(np.abs(ks - LateralCar().wheelset.yaw_stiffness)))
     status = status_line(container)
     assert f"critical speed {3.6 * expected.critical_speed[i]:.0f} km/h" in status
     assert f"angle of attack {1e3 * expected.angle_of_attack[i]:.2f} mrad" in status
     # The trade-off itself: both rise with k_ψ up to the car's own stiffness.
-    below = ks <= Car().wheelset.yaw_stiffness
+    below = ks <= LateralCar().wheelset.yaw_stiffness
     assert np.all(np.diff(expected.critical_speed[below]) > 0)
     assert np.all(np.diff(expected.angle_of_attack[below]) > 0)

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 from widget_helpers import median_update_ms, status_line
 
-from raildyn.bridge import SimplySupportedBeam, codes, fryba_deflection, moving_force
+from raildyn.bridge import SimplySupportedBeam, codes, fryba_deflection, moving_force_response
 from raildyn.bridge.trains import regular_train
 from raildyn.constants import MAXIMUM_SPEED
 from raildyn.widgets import chapter10
@@ -39,7 +39,7 @@ def test_explorer_draws_the_beam_as_frybas_series():
 def test_explorer_marks_the_closed_form_amplification_near_frybas_peak():
     container, update = chapter10.moving_load_explorer()
     # α = 0.619 at 350 km/h on the 3.93 Hz, 20 m beam: near the undamped peak (1.73 at α ≈ 0.62; the
-    # beam tests hold moving_force to Frýba's series there)
+    # beam tests hold moving_force_response to Frýba's series there)
     update(speed_kmh=350.0, damping=0.0)
     right = container.live.figure.axes[1]
     curve, mark = right.lines[4], right.lines[5]
@@ -51,7 +51,8 @@ def test_explorer_marks_the_closed_form_amplification_near_frybas_peak():
     # 4001 instants put the sampled peak within (π/4000)² / 2 ≈ 3e-7 of the true one of the slow term.
     t = np.linspace(0.0, 20.0 / speed, 4001)
     peak = np.abs(fryba_deflection(beam, speed, 1.0e5, t)).max() / beam.static_midspan_deflection(1.0e5)
-    # moving_force samples 400 instants over twice the crossing: its sampled peak is within 0.1 % here
+    # moving_force_response samples 400 instants over twice the crossing: its sampled peak is within 0.1 %
+    # here
     assert mark.get_ydata()[0] == pytest.approx(peak, rel=1e-3)
     assert peak == pytest.approx(1.73, abs=0.01)
     assert f"amplification {mark.get_ydata()[0]:.3f}" in status_line(container)
@@ -61,7 +62,9 @@ def test_explorer_marks_the_closed_form_amplification_near_frybas_peak():
     # raildyn.constants.MAXIMUM_SPEED; the 20 m beam would need 236 m/s)
     long = SimplySupportedBeam(40.0, 1.0e10, 1.0e4, damping_ratio=0.05, modes=10)
     speeds = chapter10._ALPHAS * 2 * long.frequencies_hz[0] * 40.0
-    np.testing.assert_allclose(curve.get_ydata(), moving_force(long, speeds, 1.0e5).amplification, rtol=1e-12)
+    np.testing.assert_allclose(
+        curve.get_ydata(), moving_force_response(long, speeds, 1.0e5).amplification, rtol=1e-12
+    )
     # ... which is the 20 m beam's curve, as the amplification depends on α alone: the same to rounding
     # (1e-9; measured below 1e-13) wherever the 20 m beam's speed is one raildyn accepts
     damped = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, damping_ratio=0.05, modes=10)
@@ -69,7 +72,9 @@ def test_explorer_marks_the_closed_form_amplification_near_frybas_peak():
     within = short <= MAXIMUM_SPEED
     assert within.sum() > 200
     np.testing.assert_allclose(
-        curve.get_ydata()[within], moving_force(damped, short[within], 1.0e5).amplification, rtol=1e-9
+        curve.get_ydata()[within],
+        moving_force_response(damped, short[within], 1.0e5).amplification,
+        rtol=1e-9,
     )
     undamped = chapter10._daf_curve(0.0)
     assert undamped.max() == pytest.approx(peak, rel=2e-3)  # the grid is 0.006 apart in α: flat at the top
@@ -111,7 +116,7 @@ def test_train_resonance_marks_n0_d_over_i_and_peaks_there():
     assert beam.frequencies_hz[0] == pytest.approx(4.0, rel=1e-12)
     axles = regular_train(10, 20.0, 2.5, 170e3)
     pick = [5, 40, int(np.argmax(line.get_ydata()))]
-    reference = moving_force(beam, kmh[pick] / 3.6, axles, samples=10_000).amplification
+    reference = moving_force_response(beam, kmh[pick] / 3.6, axles, samples=10_000).amplification
     np.testing.assert_allclose(line.get_ydata()[pick], reference, rtol=0.015)
 
 
@@ -157,16 +162,16 @@ def test_load_models_bars_are_the_crossings_and_forces_match_the_closed_form():
     runs = chapter10._model_runs(150.0 / 3.6)
     heights = [rect.get_height() for rect in bars.patches]
     np.testing.assert_allclose(heights, [runs[n].amplification for n in chapter10._MODEL_NAMES], rtol=1e-12)
-    # The moving forces by the march against the closed form of moving_force over the same three modes:
-    # two independent paths. The march keeps 20 steps a period of the third mode (period error < 1 %)
+    # The moving forces by the march against the closed form of moving_force_response over the same three
+    # modes: two independent paths. The march keeps 20 steps a period of the third mode (period error < 1 %)
     # and the closed form samples 4000 instants; their peaks agree within 1.5 %.
     car = chapter10._car_models()["moving forces"]
     beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, damping_ratio=0.01, modes=3)
-    closed = moving_force(beam, 150.0 / 3.6, car, samples=4000)
+    closed = moving_force_response(beam, 150.0 / 3.6, car, samples=4000)
     peak = np.abs(closed.deflection).max()
     assert np.abs(runs["moving forces"].deflection).max() == pytest.approx(peak, rel=0.015)
     # The slow crossing is drawn by the three modes' flexibility; the beam formula's static peak
-    # (moving_force's .static) differs from it by the modes left out: 1/5⁴ + 1/7⁴ … ≈ 0.2 %.
+    # (moving_force_response's .static) differs from it by the modes left out: 1/5⁴ + 1/7⁴ … ≈ 0.2 %.
     dashed = histories.lines[0]
     assert 1e-3 * np.max(dashed.get_ydata()) == pytest.approx(closed.static, rel=5e-3)
     # Annex C's line moves with the speed; AREMA's and Φ₂ stay

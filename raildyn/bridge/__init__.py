@@ -9,11 +9,12 @@
 * :mod:`raildyn.bridge.codes` — what practice checks: impact factors, resonance, acceleration limits.
 """
 
+from raildyn import _deprecated
 from raildyn.bridge.beam import (
     MovingForceResponse,
     SimplySupportedBeam,
     fryba_deflection,
-    moving_force,
+    moving_force_response,
     plot_amplification,
 )
 from raildyn.bridge.codes import (
@@ -30,7 +31,7 @@ from raildyn.bridge.coupled import BridgeCrossing, crossing
 from raildyn.bridge.loads import (
     AxleSequence,
     MovingLoad,
-    moving_forces,
+    moving_load,
     moving_mass,
     sprung_mass,
     train,
@@ -57,8 +58,8 @@ __all__ = [
     "en1991_real_train_factor",
     "fryba_deflection",
     "hslm",
-    "moving_force",
-    "moving_forces",
+    "moving_force_response",
+    "moving_load",
     "moving_mass",
     "plot_amplification",
     "regular_train",
@@ -67,3 +68,7 @@ __all__ = [
     "train",
     "vehicle",
 ]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())

@@ -18,16 +18,20 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.optimize
 
-from raildyn import _checks
+from raildyn import _checks, _deprecated
 from raildyn.bridge import _kernel
 
 __all__ = [
     "MovingForceResponse",
     "SimplySupportedBeam",
     "fryba_deflection",
-    "moving_force",
+    "moving_force_response",
     "plot_amplification",
 ]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())
 
 _MAX_MODES = 200  # a simply supported beam's response converges as 1/j⁴: far more than enough
 
@@ -233,7 +237,7 @@ def plot_amplification(speeds, amplification, ax=None, *, alpha_speed=None, arti
     --------
     >>> from matplotlib.figure import Figure
     >>> beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=3)
-    >>> drawn = moving_force(beam, [20.0, 40.0], 1.0e5).plot(Figure().subplots())
+    >>> drawn = moving_force_response(beam, [20.0, 40.0], 1.0e5).plot(Figure().subplots())
     >>> drawn["line"].get_xdata().tolist()
     [72.0, 144.0]
     """
@@ -264,7 +268,7 @@ def plot_amplification(speeds, amplification, ax=None, *, alpha_speed=None, arti
     return {"line": line}
 
 
-def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None, samples: int = 400):
+def moving_force_response(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None, samples: int = 400):
     """The deflection at a point of the beam as a constant force, or a train of them, crosses it.
 
     Each mode's response is the closed form of the module docstring; the deflection is their
@@ -294,7 +298,7 @@ def moving_force(beam: SimplySupportedBeam, speeds, force=1.0, *, position=None,
     Slowly, the force bends the beam as a static load does:
 
     >>> beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=20)
-    >>> r = moving_force(beam, 0.5, 1.0e5, samples=2001)
+    >>> r = moving_force_response(beam, 0.5, 1.0e5, samples=2001)
     >>> round(float(r.amplification[0]), 3)
     1.003
     """

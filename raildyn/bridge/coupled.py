@@ -29,7 +29,7 @@ from scipy.interpolate import CubicSpline
 
 from raildyn import _checks
 from raildyn.bridge import _kernel
-from raildyn.bridge.loads import AxleSequence, MovingLoad, moving_forces
+from raildyn.bridge.loads import AxleSequence, MovingLoad, moving_load
 from raildyn.errors import SolverError
 from raildyn.plots import axes_or_new
 
@@ -298,7 +298,7 @@ def crossing(
                 f"got {type(beam).__name__}"
             )
     if isinstance(load, AxleSequence):
-        load = moving_forces(load)
+        load = moving_load(load)
     _checks.instance("load", load, MovingLoad, "MovingLoad or AxleSequence")
     v = _checks.speed("speed", speed)
     L = float(beam.length)

@@ -7,7 +7,7 @@ sprung vehicle above it as a linear model whose track inputs are the rail height
 the axles. The factories build the classical cases on one shape, so one solver
 (:func:`raildyn.bridge.coupled.crossing`) takes them all:
 
-* :func:`moving_forces` — constant forces (the mass of the vehicle ignored);
+* :func:`moving_load` — constant forces (the mass of the vehicle ignored);
 * :func:`moving_mass` — a mass riding on the beam, its inertia felt by the beam;
 * :func:`sprung_mass` — Biggs's sprung mass: a body on a spring and damper above a wheel;
 * :func:`vehicle` — any vertical model of :mod:`raildyn.vehicles`, on its axles;
@@ -21,11 +21,15 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import block_diag
 
-from raildyn import _checks
+from raildyn import _checks, _deprecated
 from raildyn.constants import GRAVITY
 from raildyn.linear_model import Assembler, LinearSystem, as_linear_system
 
-__all__ = ["AxleSequence", "MovingLoad", "moving_forces", "moving_mass", "sprung_mass", "train", "vehicle"]
+__all__ = ["AxleSequence", "MovingLoad", "moving_load", "moving_mass", "sprung_mass", "train", "vehicle"]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())
 
 _MAX_AXLES = 10_000  # a 2 km freight train has about 600
 
@@ -147,7 +151,7 @@ def _sprung_system(system: LinearSystem, axles: int) -> None:
         raise ValueError("system must know its inputs' own stiffness (built by Assembler.element), got None")
 
 
-def moving_forces(axles: AxleSequence) -> MovingLoad:
+def moving_load(axles: AxleSequence) -> MovingLoad:
     """Constant forces at the axles, nothing riding on the rail: the moving-force model.
 
     Parameters
@@ -160,7 +164,7 @@ def moving_forces(axles: AxleSequence) -> MovingLoad:
 
     Examples
     --------
-    >>> load = moving_forces(AxleSequence([0.0], [1.0e5]))
+    >>> load = moving_load(AxleSequence([0.0], [1.0e5]))
     >>> load.unsprung_masses
     array([0.])
     """

@@ -121,7 +121,7 @@ def curve_entry(model, speed, curve, *, max_step: float = 0.01, rtol: float = 1e
     Parameters
     ----------
     model : NonlinearLateral
-        The vehicle with nonlinear contact (e.g. ``Car().nonlinear()``); its speed, curve
+        The vehicle with nonlinear contact (e.g. ``LateralCar().nonlinear()``); its speed, curve
         and start are replaced.
     speed : float
         V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].

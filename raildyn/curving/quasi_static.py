@@ -1,7 +1,7 @@
 """Nonlinear quasi-static curving (book chapter 8): a vehicle's equilibrium in a curve with
 saturating creep and flange contact, at one point or over a map of speeds and radii.
 
-The model is any :class:`raildyn.wheelset.NonlinearLateral` (``Car().nonlinear()``, the freight
+The model is any :class:`raildyn.wheelset.NonlinearLateral` (``LateralCar().nonlinear()``, the freight
 car's, the locomotive's) on a circular arc, in the axes that follow the vehicle (described there
 and in :mod:`raildyn.curving.steady`). At rest in those axes its velocities vanish, and the
 equilibrium is the zero of its forces (:meth:`~raildyn.wheelset.NonlinearLateral.arc_forces`).
@@ -349,7 +349,7 @@ def quasi_static_curving(
     Parameters
     ----------
     model : NonlinearLateral
-        The vehicle with nonlinear contact (e.g. ``Car().nonlinear()``); its speed, curve
+        The vehicle with nonlinear contact (e.g. ``LateralCar().nonlinear()``); its speed, curve
         and start are replaced.
     speed : float
         V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].
@@ -386,8 +386,8 @@ def quasi_static_curving(
     leading wheelsets run on their flanges at about 3.8 mrad.
 
     >>> from raildyn.track import balance_speed
-    >>> from raildyn.vehicles import Car
-    >>> state = quasi_static_curving(Car().nonlinear(), balance_speed(600.0, 0.1), 600.0, 0.1)
+    >>> from raildyn.vehicles import LateralCar
+    >>> state = quasi_static_curving(LateralCar().nonlinear(), balance_speed(600.0, 0.1), 600.0, 0.1)
     >>> state.flange_contact.tolist(), round(1e3 * float(state.angle_of_attack[0]), 1)
     ([True, False, True, False], 3.8)
     """

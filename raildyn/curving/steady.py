@@ -182,7 +182,7 @@ def steady_curving(model, speed, radius, cant=0.0) -> SteadyCurving:
     ----------
     model : LinearModel or LinearSystem
         A lateral model with wheelsets on the rails (:class:`~raildyn.wheelset.Wheelset`,
-        :class:`~raildyn.vehicles.Bogie`, :class:`~raildyn.vehicles.Car`, the freight car,
+        :class:`~raildyn.vehicles.Bogie`, :class:`~raildyn.vehicles.LateralCar`, the freight car,
         the locomotive), each wheelset with its alignment input.
     speed : float
         V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`].

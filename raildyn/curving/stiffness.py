@@ -411,7 +411,7 @@ def stability_and_curving(
     model : LinearModel
         A lateral model with wheelsets whose ``replace(yaw_stiffness=...)`` sets the primary
         yaw stiffness of every wheelset (:class:`~raildyn.wheelset.Wheelset`,
-        :class:`~raildyn.vehicles.Bogie`, :class:`~raildyn.vehicles.Car`, the freight car,
+        :class:`~raildyn.vehicles.Bogie`, :class:`~raildyn.vehicles.LateralCar`, the freight car,
         the locomotive).
     yaw_stiffnesses : array_like, (m,)
         k_ψ per wheelset, N·m/rad: at least one, ≥ 0, strictly increasing.
@@ -438,8 +438,8 @@ def stability_and_curving(
     The Manchester car at its balance speed in a 600 m curve with 100 mm cant:
 
     >>> from raildyn.track import balance_speed
-    >>> from raildyn.vehicles import Car
-    >>> r = stability_and_curving(Car(), [5e6, 60e6], balance_speed(600.0, 0.1), 600.0, 0.1)
+    >>> from raildyn.vehicles import LateralCar
+    >>> r = stability_and_curving(LateralCar(), [5e6, 60e6], balance_speed(600.0, 0.1), 600.0, 0.1)
     >>> [round(3.6 * v) for v in r.critical_speed], [round(1e3 * float(a), 2) for a in r.angle_of_attack]
     ([154, 280], [0.16, 1.72])
     """

@@ -7,7 +7,7 @@ in the coordinates, and the wheel–rail forces of every wheelset as generalized
 virtual work: Kalker's linear creep law on the creepages of each wheel (Kalker 1967; Garg &
 Dukkipati 1984, ch. 5) and the lateral and yaw components of the normal loads (the
 gravitational stiffness, Wickens 2003, ch. 2). The tests hold them to
-:class:`raildyn.vehicles.lateral.Bogie` and :class:`raildyn.vehicles.lateral.Car`.
+:class:`raildyn.vehicles.lateral.Bogie` and :class:`raildyn.vehicles.lateral.LateralCar`.
 
 Sign convention: x forward, y to the left, z up; ψ (yaw) turns x towards y, the roll ϕ turns y
 towards z. The track inputs are the alignment y_a (lateral position of the track centre line)
@@ -244,7 +244,7 @@ def bogie() -> Derivation:
 
 @functools.cache
 def lateral_car() -> Derivation:
-    """The 15-coordinate passenger car of :class:`raildyn.vehicles.lateral.Car`.
+    """The 15-coordinate passenger car of :class:`raildyn.vehicles.lateral.LateralCar`.
 
     Coordinates q = [y, ψ, ϕ; y_f1, ψ_f1, y₁₁, ψ₁₁, y₁₂, ψ₁₂; y_f2, ψ_f2, y₂₁, ψ₂₁, y₂₂, ψ₂₂]:
     the body's lateral displacement (m), yaw and roll (rad); each bogie frame's lateral
@@ -262,17 +262,17 @@ def lateral_car() -> Derivation:
     Returns
     -------
     Derivation
-        Parameters read from a :class:`~raildyn.vehicles.lateral.Car`; the damping holds the speed
+        Parameters read from a :class:`~raildyn.vehicles.lateral.LateralCar`; the damping holds the speed
         V (m/s).
 
     Examples
     --------
-    >>> from raildyn.vehicles.lateral import Car
+    >>> from raildyn.vehicles.lateral import LateralCar
     >>> d = lateral_car()
     >>> d.K[2, 2]  # roll: two bogies' roll springs, the lateral springs' arm h, less the weight's moment
     -g*h*m + 2*h**2*k_sy + 2*k_phi
-    >>> m = Car().matrices(40.0)
-    >>> d.difference((m.M, m.C, m.K, m.GK, m.GC), Car(), 40.0) < 1e-14
+    >>> m = LateralCar().matrices(40.0)
+    >>> d.difference((m.M, m.C, m.K, m.GK, m.GC), LateralCar(), 40.0) < 1e-14
     True
     """
     V = sympy.Symbol("V")

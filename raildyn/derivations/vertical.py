@@ -13,7 +13,8 @@ wheelsets follow the rails and carry no dynamics of their own), met s_j/V after 
 wheelset, s_j its distance behind it.
 
 The tests hold the derived matrices to :class:`raildyn.vehicles.VerticalCar`,
-:class:`raildyn.vehicles.freight.FreightCar` and :class:`raildyn.vehicles.locomotive.Locomotive`.
+:class:`raildyn.vehicles.freight.VerticalFreightCar` and
+:class:`raildyn.vehicles.locomotive.VerticalLocomotive`.
 """
 
 from __future__ import annotations
@@ -182,13 +183,13 @@ def vertical_locomotive() -> Derivation:
     Returns
     -------
     Derivation
-        Parameters read from a :class:`raildyn.vehicles.locomotive.Locomotive`.
+        Parameters read from a :class:`raildyn.vehicles.locomotive.VerticalLocomotive`.
 
     Examples
     --------
-    >>> from raildyn.vehicles.locomotive import Locomotive
-    >>> m = Locomotive().matrices(30.0)
-    >>> vertical_locomotive().difference((m.M, m.C, m.K, m.GK, m.GC), Locomotive()) < 1e-14
+    >>> from raildyn.vehicles.locomotive import VerticalLocomotive
+    >>> m = VerticalLocomotive().matrices(30.0)
+    >>> vertical_locomotive().difference((m.M, m.C, m.K, m.GK, m.GC), VerticalLocomotive()) < 1e-14
     True
     """
     return _body_on_two_trucks(
@@ -239,13 +240,13 @@ def freight_rock_and_roll() -> Derivation:
     Returns
     -------
     Derivation
-        Parameters read from a :class:`raildyn.vehicles.freight.FreightCar` (d is its
+        Parameters read from a :class:`raildyn.vehicles.freight.VerticalFreightCar` (d is its
         ``semi_spring_spacing``, l its ``semi_truck_spacing``, c its ``equivalent_damping``).
 
     Examples
     --------
-    >>> from raildyn.vehicles.freight import FreightCar
-    >>> car = FreightCar(equivalent_damping=2e4)
+    >>> from raildyn.vehicles.freight import VerticalFreightCar
+    >>> car = VerticalFreightCar(equivalent_damping=2e4)
     >>> m = car.matrices(20.0)
     >>> freight_rock_and_roll().difference((m.M, m.C, m.K, m.GK, m.GC), car) < 1e-14
     True

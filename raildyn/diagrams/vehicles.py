@@ -4,7 +4,7 @@
   frame, the primary springs (lateral k_y, longitudinal ones whose couple is k_ψ);
 * :func:`car_side` — a :class:`raildyn.vehicles.VerticalCar` from the side: body, two bogies 2l
   apart, secondary and primary springs and dampers, the coordinates z_c, θ_c;
-* :func:`car_plan` — a :class:`raildyn.vehicles.Car` from above: the body yawed by ψ on its two bogies;
+* :func:`car_plan` — a :class:`raildyn.vehicles.LateralCar` from above: the body yawed by ψ on its two bogies;
 * :func:`truck_schematic` — a :class:`raildyn.vehicles.ThreePieceTruck`: a side frame from the side
   (bolster on its spring nest between two friction wedges) and the truck from above (side frames,
   bolster, wheelsets: the parallelogram that warps).
@@ -19,7 +19,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.diagrams import _draw as d
-from raildyn.vehicles import Bogie, Car, ThreePieceTruck, VerticalCar
+from raildyn.vehicles import Bogie, LateralCar, ThreePieceTruck, VerticalCar
 
 __all__ = ["bogie_plan", "car_plan", "car_side", "truck_schematic"]
 
@@ -225,7 +225,7 @@ def car_side(car: VerticalCar, *, ax=None) -> dict:
     return art
 
 
-def car_plan(car: Car, psi: float = 0.0, *, exaggerate: float = 1.0, ax=None) -> dict:
+def car_plan(car: LateralCar, psi: float = 0.0, *, exaggerate: float = 1.0, ax=None) -> dict:
     """Draw a car from above: the body, yawed by ψ, on two bogies 2l apart, each with two wheelsets 2b apart.
 
     To scale: bogie centres at x = ±l (``car.semi_bogie_spacing``), wheelsets at ±b about them
@@ -235,7 +235,7 @@ def car_plan(car: Car, psi: float = 0.0, *, exaggerate: float = 1.0, ax=None) ->
 
     Parameters
     ----------
-    car : raildyn.vehicles.Car
+    car : raildyn.vehicles.LateralCar
         The car.
     psi : float
         The body's yaw angle, rad, positive turning to the left; drawn (times ``exaggerate``)
@@ -253,12 +253,12 @@ def car_plan(car: Car, psi: float = 0.0, *, exaggerate: float = 1.0, ax=None) ->
 
     Examples
     --------
-    >>> from raildyn.vehicles import Car
-    >>> art = car_plan(Car(), psi=0.01)
+    >>> from raildyn.vehicles import LateralCar
+    >>> art = car_plan(LateralCar(), psi=0.01)
     >>> len(art["wheelsets"])
     4
     """
-    _checks.instance("car", car, Car, "raildyn.vehicles.Car")
+    _checks.instance("car", car, LateralCar, "raildyn.vehicles.LateralCar")
     psi = _checks.scalar("psi", psi)
     exaggerate = _checks.scalar("exaggerate", exaggerate, low=1.0, high=1.0e4)
     yaw = psi * exaggerate

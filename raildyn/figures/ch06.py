@@ -7,7 +7,7 @@ from matplotlib.figure import Figure
 
 from raildyn import plots, ride, track
 from raildyn.figures import new_figure, register
-from raildyn.vehicles import MANCHESTER_VERTICAL, FreightCar, response_spectrum, rock_and_roll
+from raildyn.vehicles import MANCHESTER_VERTICAL, VerticalFreightCar, response_spectrum, rock_and_roll
 
 
 @register(
@@ -63,7 +63,7 @@ def rock_figure() -> Figure:
     ax = fig.subplots()
     speeds = np.linspace(20.0, 70.0, 16) / 3.6
     for i, friction in enumerate((2e3, 6e3, 15e3)):
-        r = rock_and_roll(FreightCar(wedge_friction=friction), speeds, cycles=12)
+        r = rock_and_roll(VerticalFreightCar(wedge_friction=friction), speeds, cycles=12)
         # the springs alone set the resonance, the same for every friction: marked once
         r.plot(ax, color=plots.COLORS[i], label=f"{friction / 1e3:.0f} kN per nest", resonance=i == 0)
     ax.legend()

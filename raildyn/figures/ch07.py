@@ -13,7 +13,7 @@ from matplotlib.figure import Figure
 
 from raildyn import stability
 from raildyn.figures import new_figure, register
-from raildyn.vehicles import Car
+from raildyn.vehicles import LateralCar
 
 
 @register(
@@ -23,7 +23,7 @@ from raildyn.vehicles import Car
     chapter=7,
 )
 def critical_speed_map() -> Figure:
-    car = Car()
+    car = LateralCar()
     conicity = np.linspace(0.05, 0.5, 8)
     stiffness = np.geomspace(2.0, 120.0, 8)  # MN·m/rad
     result = stability.critical_speed_map(
@@ -53,7 +53,7 @@ def critical_speed_map() -> Figure:
     chapter=7,
 )
 def bifurcation() -> Figure:
-    car = Car()
+    car = LateralCar()
     # The full ramp (11 speeds, 8 s each, 4 bisections): half a second on the compiled engine.
     diagram = stability.bifurcation_diagram(car.nonlinear(), np.linspace(50.0, 100.0, 11), progress=False)
     linear = stability.critical_speed(car, (5.0, 150.0))
@@ -70,7 +70,7 @@ def bifurcation() -> Figure:
     chapter=7,
 )
 def car_roots() -> Figure:
-    system = Car().linear_system()
+    system = LateralCar().linear_system()
     speeds = np.linspace(5.0, 150.0, 200)
     sweep = stability.mode_sweep(system, speeds)
     cs = stability.critical_speed(system, (5.0, 150.0))

@@ -16,7 +16,7 @@ from raildyn import plots
 from raildyn.curving import climb, curve_entry, quasi_static_curving
 from raildyn.figures import new_figure, register
 from raildyn.track import Curve, balance_speed, cant_deficiency, speed_for_deficiency
-from raildyn.vehicles import Bogie, Car
+from raildyn.vehicles import Bogie, LateralCar
 
 _RADIUS = 600.0  # m
 _CANT = 0.1  # m
@@ -33,7 +33,7 @@ _DEFICIENCY = 0.1  # m
     chapter=8,
 )
 def curving_plan() -> Figure:
-    car = Car().nonlinear()
+    car = LateralCar().nonlinear()
     speeds = (
         balance_speed(_RADIUS, _CANT),
         speed_for_deficiency(_RADIUS, _CANT, _DEFICIENCY),
@@ -62,7 +62,7 @@ def curving_plan() -> Figure:
     chapter=8,
 )
 def nadal_limit() -> Figure:
-    car = Car().nonlinear()
+    car = LateralCar().nonlinear()
     fig = new_figure(figsize=(6.5, 4.0))
     ax = fig.subplots()
     climb.plot_nadal_limit(ax, friction=(0.1, 0.3, 0.5))

@@ -1,7 +1,7 @@
 """Chapter 10 figures: the dynamic amplification of one moving force against α, a regular train's
 resonance and its cancellation, and four models of one car crossing the same span.
 
-The amplification comes from the closed form of :func:`raildyn.bridge.beam.moving_force`, the
+The amplification comes from the closed form of :func:`raildyn.bridge.beam.moving_force_response`, the
 coupled crossings from :func:`raildyn.bridge.coupled.crossing`; the curves are drawn by
 :meth:`~raildyn.bridge.beam.MovingForceResponse.plot` and :meth:`~raildyn.bridge.coupled.BridgeCrossing.plot`,
 which the chapter's widgets call too. None of them mirrors a numbered figure of the book.
@@ -18,7 +18,7 @@ from raildyn.bridge import (
     SimplySupportedBeam,
     codes,
     crossing,
-    moving_force,
+    moving_force_response,
     moving_mass,
     sprung_mass,
     train,
@@ -56,7 +56,7 @@ def daf_single_force() -> Figure:
         # section meets α = 2 at 157 m/s, within raildyn.constants.MAXIMUM_SPEED (20 m: 314 m/s).
         beam = SimplySupportedBeam(2 * _SPAN, _EI, _MASS, damping_ratio=zeta, modes=10)
         alpha_speed = 2 * beam.frequencies_hz[0] * beam.span
-        response = moving_force(beam, alphas * alpha_speed, 1.0e5)
+        response = moving_force_response(beam, alphas * alpha_speed, 1.0e5)
         response.plot(ax, alpha_speed=alpha_speed, color=plots.COLORS[k], label=f"ζ = {100 * zeta:g} %")
         daf = response.amplification
         if zeta == 0.0:
@@ -92,7 +92,7 @@ def train_resonance_figure() -> Figure:
     ax = fig.subplots()
     for k, span in enumerate((20.0, 1.5 * spacing)):
         beam = _tuned(span, f1, 0.01, 3)
-        moving_force(beam, speeds, axles, samples=3000).plot(
+        moving_force_response(beam, speeds, axles, samples=3000).plot(
             ax, color=plots.COLORS[k], label=f"L = {span:g} m (L/d = {span / spacing:.2f})"
         )
     for i, v in enumerate(codes.resonance_speeds(f1, spacing, 4), start=1):

@@ -22,7 +22,7 @@ from raildyn.stability import critical_speed
 from raildyn.validation.identification import free_decay
 from raildyn.validation.measured import lerelva_case
 from raildyn.validation.uncertainty import sobol_indices
-from raildyn.vehicles import Car
+from raildyn.vehicles import LateralCar
 
 # A free decay of the kind a bridge or a car body gives after an impulse: 2.5 Hz, 2 % damping, 4 s at
 # 200 Hz, with white measurement noise of 5 % of the first amplitude.
@@ -118,7 +118,7 @@ def lerelva_figure() -> Figure:
 
 # The chapter-7 car, ±10 % uniform scatter on four stiffnesses and the conicity (as the chapter's
 # widget and benchmark): N = 32 base samples, 224 critical speeds on an in-process dask client.
-_CAR = Car()
+_CAR = LateralCar()
 _SCATTERED = {
     "lateral_stiffness": "wheelset",
     "yaw_stiffness": "wheelset",

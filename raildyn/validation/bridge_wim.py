@@ -150,7 +150,7 @@ def weigh_in_motion(
 
     with d_k the distance of axle k behind the leading one, Λ(x, x_P) the moment at x under a unit
     force at x_P (statics of the simple beam, the static limit of chapter 10's
-    :func:`raildyn.bridge.beam.moving_force`; notebook 11 derives it) and ε₀ a zero offset per
+    :func:`raildyn.bridge.beam.moving_force_response`; notebook 11 derives it) and ε₀ a zero offset per
     sensor. Given V, t₀ and the spacings, the loads and offsets are linear: they come by linear
     least squares, as in Moses's algorithm. The speed, arrival and (with ``fit_spacings``) the
     spacings are found by nonlinear least squares over that projected problem (variable projection

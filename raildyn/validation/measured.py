@@ -10,7 +10,7 @@ class 92 diesel multiple unit running towards Heimdal (train 3 of the thesis).
 :func:`lerelva_strain` loads the record; :func:`lerelva_case` runs the case study end to end:
 bridge weigh-in-motion (:func:`raildyn.validation.bridge_wim.weigh_in_motion`) for the
 speed, the axle pattern and the axle loads; two independent speed estimates; the chapter-10
-prediction (:func:`raildyn.bridge.beam.moving_force` of the NSB 92's axles on the stringer as a
+prediction (:func:`raildyn.bridge.beam.moving_force_response` of the NSB 92's axles on the stringer as a
 simply supported span); and its agreement with the measurement
 (:func:`raildyn.validation.metrics.compare`).
 """
@@ -24,7 +24,7 @@ import numpy as np
 from scipy import signal
 
 from raildyn import _checks
-from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force
+from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force_response
 from raildyn.constants import GRAVITY
 from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion
 from raildyn.validation.metrics import Agreement, compare
@@ -230,7 +230,8 @@ class LerelvaCase:
     measured : ndarray, (3, n)
         The strain less its zero offsets.
     predicted : ndarray, (3, n)
-        The chapter-10 prediction: ``scale`` × the deflection of :func:`raildyn.bridge.beam.moving_force`.
+        The chapter-10 prediction: ``scale`` × the deflection of
+        :func:`raildyn.bridge.beam.moving_force_response`.
     scale : float
         The one factor fitted from deflection (m) to strain at the gauges, 1/m.
     agreement : tuple of Agreement
@@ -353,7 +354,7 @@ def lerelva_case(
        once with the spacings free too (the axle pattern).
     2. Two independent speeds: the drawing's bogie-centre distances over the times of the
        bogies' strain maxima, and the cross-correlation lag of the gauges 2 m apart.
-    3. The chapter-10 prediction: :func:`raildyn.bridge.beam.moving_force` of the NSB 92 as an
+    3. The chapter-10 prediction: :func:`raildyn.bridge.beam.moving_force_response` of the NSB 92 as an
        :class:`raildyn.bridge.AxleSequence` (the thesis's nominal loads) at the identified speed
        and arrival, at each gauge. The thesis gives no section for the stringer, so EI, m and c
        are not known: the deflection is turned into strain by one factor fitted by least squares
@@ -413,7 +414,7 @@ def lerelva_case(
     arrival = fit.value("arrival")
     deflection = []
     for x in rec.positions:
-        r = moving_force(beam, fit.speed, axles, position=float(x), samples=samples)
+        r = moving_force_response(beam, fit.speed, axles, position=float(x), samples=samples)
         deflection.append(np.interp(t - arrival, r.time[0], r.deflection[0], left=0.0, right=0.0))
     deflection = np.array(deflection)
     measured = eps[:, w]

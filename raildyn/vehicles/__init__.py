@@ -3,15 +3,16 @@
 Every public name is importable from ``raildyn.vehicles``.
 """
 
+from raildyn import _deprecated
 from raildyn.vehicles.freight import (
     GDU_ORE_CAR,
-    FreightCar,
     RockAndRoll,
+    VerticalFreightCar,
     gdu_ore_car,
     rock_and_roll,
 )
-from raildyn.vehicles.lateral import COOPERRIDER_CAR, MANCHESTER_CAR, Bogie, Car, cooperrider_car
-from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, Locomotive
+from raildyn.vehicles.lateral import COOPERRIDER_CAR, MANCHESTER_CAR, Bogie, LateralCar, cooperrider_car
+from raildyn.vehicles.locomotive import DEFAULT_LOCOMOTIVE, VerticalLocomotive
 from raildyn.vehicles.locomotive_lateral import (
     LATERAL_LOCOMOTIVE,
     LateralLocomotive,
@@ -36,16 +37,14 @@ __all__ = [
     "MANCHESTER_CAR",
     "BodyFrequencies",
     "Bogie",
-    "Car",
     "DEFAULT_LOCOMOTIVE",
     "EMPTY_FREIGHT_CAR",
-    "FreightCar",
     "GDU_ORE_CAR",
     "LOADED_FREIGHT_CAR",
+    "LateralCar",
     "LateralFreightCar",
     "LATERAL_LOCOMOTIVE",
     "LateralLocomotive",
-    "Locomotive",
     "MANCHESTER_VERTICAL",
     "PeriodicProfile",
     "ResponseSpectrum",
@@ -55,6 +54,8 @@ __all__ = [
     "TimeResponse",
     "ThreeAxleTruck",
     "VerticalCar",
+    "VerticalFreightCar",
+    "VerticalLocomotive",
     "WedgeFriction",
     "cooperrider_car",
     "freight_car",
@@ -70,3 +71,7 @@ __all__ = [
     "wedge_energy_per_cycle",
     "wedge_friction_force",
 ]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())

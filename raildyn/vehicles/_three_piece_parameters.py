@@ -21,7 +21,7 @@ from raildyn.vehicles.wedges import wedge_friction_force
 from raildyn.wheelset import Wheelset
 
 # Sources:
-# [FC]  raildyn.vehicles.freight.FreightCar, the loaded 100-ton hopper of chapter 6 (AAR 286 000 lb
+# [FC]  raildyn.vehicles.freight.VerticalFreightCar, the loaded 100-ton hopper of chapter 6 (AAR 286 000 lb
 #       gross rail load; its derivations are in that class's docstring);
 # [TV]  raildyn.train.vehicles, "empty hopper": 63 000 lb light weight (a typical value for the car);
 # [RC]  L. Baruffaldi's MBSim model of an AmstedMaxion Ride Control truck (doctoral thesis, UNICAMP),

@@ -10,7 +10,7 @@ of gravity h above it, so that its weight lowers the roll stiffness by m g h.
 Three coordinates: body z, θ (pitch, front up) and φ (roll, left side up).
 Eight inputs: the left and right rail under each of the four axles.
 
-* :meth:`FreightCar.linear_system` — the linear model (wedges replaced by an
+* :meth:`VerticalFreightCar.linear_system` — the linear model (wedges replaced by an
   equivalent viscous damper, optional) for FRFs and spectra;
 * :func:`rock_and_roll` — the nonlinear run over staggered jointed rail at many
   speeds at once: the steady roll amplitude against speed.
@@ -18,9 +18,9 @@ Eight inputs: the left and right rail under each of the four axles.
 
 Two parameter sets:
 
-* ``FreightCar()``: a loaded 100-ton hopper car (the AAR 286 000 lb gross rail
+* ``VerticalFreightCar()``: a loaded 100-ton hopper car (the AAR 286 000 lb gross rail
   load, 129.7 t); its body values are derived in the docstring of
-  :class:`FreightCar` from that load and a nest deflection, representative
+  :class:`VerticalFreightCar` from that load and a nest deflection, representative
   rather than taken from one published table;
 * :data:`GDU_ORE_CAR` (:func:`gdu_ore_car`): a loaded iron-ore gondola on
   AmstedMaxion Ride Control trucks, every value taken from the public model of
@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import matplotlib
 import numpy as np
 
-from raildyn import _checks, plots
+from raildyn import _checks, _deprecated, plots
 from raildyn import track as _track
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
@@ -51,11 +51,15 @@ from raildyn.vehicles.wedges import WedgeFriction, wedge_energy_per_cycle, wedge
 __all__ = [
     "GDU_ORE_CAR",
     "LABELS",
-    "FreightCar",
+    "VerticalFreightCar",
     "RockAndRoll",
     "gdu_ore_car",
     "rock_and_roll",
 ]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())
 
 LABELS = ("body z", "body θ", "body φ")
 
@@ -64,7 +68,7 @@ _MAX_STEP_SPEEDS = 5e5
 
 
 @dataclass(frozen=True)
-class FreightCar(LinearModelBase):
+class VerticalFreightCar(LinearModelBase):
     """A loaded hopper car on two three-piece trucks.
 
     Every field is finite; masses, inertias, lengths and the nest stiffness are > 0,
@@ -348,7 +352,7 @@ class RockAndRoll:
 
 
 def rock_and_roll(
-    car: FreightCar,
+    car: VerticalFreightCar,
     speeds,
     *,
     depth: float = 0.02,
@@ -379,7 +383,7 @@ def rock_and_roll(
 
     Parameters
     ----------
-    car : FreightCar
+    car : VerticalFreightCar
     speeds : array_like
         m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`], not empty.
     depth, half_width : float
@@ -403,7 +407,7 @@ def rock_and_roll(
     -------
     RockAndRoll
     """
-    _checks.instance("car", car, FreightCar)
+    _checks.instance("car", car, VerticalFreightCar)
     V = _checks.speeds("speeds", speeds)
     cycles = _checks.integer("cycles", cycles, low=4)
     eps = float(_checks.smoothing_speed("velocity_scale", velocity_scale).max())
@@ -503,8 +507,9 @@ _GDU_WEDGE_FRICTION = 0.10  # [in: FRICTION_COEFF]
 _GDU_WEDGES_PER_NEST = 2  # one ahead of and one behind the bolster on each side frame [truck: WRL, WFL]
 
 
-def gdu_ore_car() -> FreightCar:
-    """A loaded iron-ore gondola on Ride Control trucks, from a public thesis model, as a :class:`FreightCar`.
+def gdu_ore_car() -> VerticalFreightCar:
+    """A loaded iron-ore gondola on Ride Control trucks, from a public thesis model, as a
+    :class:`VerticalFreightCar`.
 
     The Vale GDU ore car (1.6 m gauge) on AmstedMaxion Ride Control
     (constant-damping) trucks, as L. Baruffaldi modelled it in MBSim for his
@@ -530,12 +535,12 @@ def gdu_ore_car() -> FreightCar:
 
     Returns
     -------
-    FreightCar
+    VerticalFreightCar
     """
     nest = _GDU_SPRINGS_PER_NEST * _GDU_SPRING_RATE
     preload = _GDU_WEDGE_SPRING * (_GDU_WEDGE_FREE - _GDU_WEDGE_DESIGN)
     wedges = wedge_friction_force(preload, _GDU_WEDGE_ANGLE, _GDU_WEDGE_FRICTION, wedges=_GDU_WEDGES_PER_NEST)
-    return FreightCar(
+    return VerticalFreightCar(
         body_mass=_GDU_BODY_MASS,
         body_pitch_inertia=_GDU_PITCH_INERTIA,
         body_roll_inertia=_GDU_ROLL_INERTIA,

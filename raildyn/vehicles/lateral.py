@@ -3,7 +3,7 @@
 * :class:`Bogie` — a bogie frame (lateral, yaw) on two wheelsets (lateral, yaw
   each), joined by the secondary suspension to a car body running straight:
   6 degrees of freedom;
-* :class:`Car` — a car body (lateral, yaw, roll) on two such bogies: 15 degrees
+* :class:`LateralCar` — a car body (lateral, yaw, roll) on two such bogies: 15 degrees
   of freedom.
 
 Both are linear models of the one protocol (:class:`raildyn.linear_model.LinearModel`:
@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from raildyn import _checks, contact
+from raildyn import _checks, _deprecated, contact
 from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
@@ -37,7 +37,11 @@ from raildyn.vehicles._shared import (
 )
 from raildyn.wheelset import NonlinearLateral, WheelRailContact, Wheelset, add_wheelset
 
-__all__ = ["COOPERRIDER_CAR", "MANCHESTER_CAR", "Bogie", "Car", "cooperrider_car"]
+__all__ = ["COOPERRIDER_CAR", "MANCHESTER_CAR", "Bogie", "LateralCar", "cooperrider_car"]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())
 
 # Manchester benchmark vehicle 1 (Iwnicki 1998): lateral primary springs 1.0 m either side of the
 # centre line (semi-spacing), secondary springs 1.0 m either side; semi-wheelbase 1.28 m; semi
@@ -191,7 +195,7 @@ class Bogie(_OnTheRails):
 
 
 @dataclass(frozen=True)
-class Car(_OnTheRails):
+class LateralCar(_OnTheRails):
     """A passenger car: body (lateral, yaw, roll) on two bogies; the Manchester benchmark vehicle.
 
     The equations of motion, derived from the energies of the springs, the body's weight and the
@@ -238,7 +242,7 @@ class Car(_OnTheRails):
         _checks.instance("bogie", self.bogie, Bogie)
         _check_body_on_two_trucks(self, "semi_bogie_spacing", "semi_wheelbase", self.bogie.semi_wheelbase)
 
-    def replace(self, **changes) -> Car:
+    def replace(self, **changes) -> LateralCar:
         """A copy with car, bogie or wheelset fields changed.
 
         Parameters
@@ -248,7 +252,7 @@ class Car(_OnTheRails):
 
         Returns
         -------
-        Car
+        LateralCar
         """
         return _replace_through(self, changes, "bogie")
 
@@ -297,7 +301,7 @@ class Car(_OnTheRails):
         return asm.system(input_positions=np.tile(self.axle_positions, 2), input_kinds=kinds)
 
 
-MANCHESTER_CAR = Car()
+MANCHESTER_CAR = LateralCar()
 """The Manchester benchmark vehicle with the default conical wheel–rail contact."""
 
 
@@ -354,8 +358,8 @@ _CR_POISSON = 0.27
 _CR_CONICITY = 1.0 / 40.0
 
 
-def cooperrider_car() -> Car:
-    """The car on two Cooperrider bogies of DTU's DYTSI code, as a :class:`Car`.
+def cooperrider_car() -> LateralCar:
+    """The car on two Cooperrider bogies of DTU's DYTSI code, as a :class:`LateralCar`.
 
     DYTSI (D. Bigoni, DTU Compute, 2011–2014) models a car body on two bogies
     of Cooperrider's design (Cooperrider 1972), as used by True and
@@ -387,14 +391,14 @@ def cooperrider_car() -> Car:
       come from :func:`raildyn.contact.kalker.creep_coefficients` with
       G = E/(2(1 + ν)) = 82.7 GPa (E = 210 GPa, ν = 0.27).
 
-    Left out, having no counterpart in the 15 coordinates of :class:`Car`:
+    Left out, having no counterpart in the 15 coordinates of :class:`LateralCar`:
 
     * the vertical, roll and pitch motion of wheelsets, frames and body, with
       the primary vertical springs (k₃ = 3646 kN/m per side) and dampers
       (D₄ = 0), and the heights h₁, v₁–v₄ and x₁ of the attachment points;
     * the frames' roll, so the secondary lateral springs, s₂ = 0.6584 m above
       the frame centre, act on frames that stay upright;
-    * the weight's roll moment: :class:`Car` takes it at the secondary lateral
+    * the weight's roll moment: :class:`LateralCar` takes it at the secondary lateral
       springs (0.9 m below the centre of gravity), DYTSI through the vertical
       springs, 0.3096 m below it; the difference moves the linear critical
       speed by less than 0.01 m/s;
@@ -409,7 +413,7 @@ def cooperrider_car() -> Car:
 
     Returns
     -------
-    Car
+    LateralCar
     """
     wheel_load = 0.5 * (_CR_BODY_MASS + 2 * _CR_FRAME_MASS + 4 * _CR_WHEELSET_MASS) * GRAVITY / 4.0
     shear = _CR_YOUNG / (2.0 * (1.0 + _CR_POISSON))
@@ -441,7 +445,7 @@ def cooperrider_car() -> Car:
         secondary_yaw_stiffness=2 * _CR_K6 * _CR_YAW_ARM**2,
         secondary_yaw_damping=2 * _CR_D6 * _CR_YAW_ARM**2,
     )
-    return Car(
+    return LateralCar(
         bogie=bogie,
         body_mass=_CR_BODY_MASS,
         body_yaw_inertia=_CR_BODY_YAW_INERTIA,

@@ -19,17 +19,21 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from raildyn import _checks
+from raildyn import _checks, _deprecated
 from raildyn.linear_model import LinearModelBase, LinearSystem
 from raildyn.vehicles.vertical import body_on_two_trucks
 
-__all__ = ["DEFAULT_LOCOMOTIVE", "LABELS", "Locomotive"]
+__all__ = ["DEFAULT_LOCOMOTIVE", "LABELS", "VerticalLocomotive"]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())
 
 LABELS = ("body z", "body θ", "truck1 z", "truck1 θ", "truck2 z", "truck2 θ")
 
 
 @dataclass(frozen=True)
-class Locomotive(LinearModelBase):
+class VerticalLocomotive(LinearModelBase):
     """A six-axle locomotive, vertical.
 
     Every mass, inertia, length and stiffness is finite and > 0, every damping finite and ≥ 0,
@@ -108,5 +112,5 @@ class Locomotive(LinearModelBase):
         )  # fmt: skip
 
 
-DEFAULT_LOCOMOTIVE = Locomotive()
+DEFAULT_LOCOMOTIVE = VerticalLocomotive()
 """The representative six-axle locomotive."""

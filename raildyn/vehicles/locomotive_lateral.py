@@ -5,7 +5,7 @@
   suspension (flexicoil springs, dampers) to a body running straight: 8 degrees of freedom;
 * :class:`~raildyn.vehicles.locomotive_lateral.LateralLocomotive` — a body (lateral, yaw,
   roll) on two such trucks: 19 degrees of freedom, driven by the alignment and the cross-level under each of
-  its six wheelsets (12 inputs, ordered as :class:`~raildyn.vehicles.lateral.Car`'s).
+  its six wheelsets (12 inputs, ordered as :class:`~raildyn.vehicles.lateral.LateralCar`'s).
 
 Both follow the one linear protocol (:class:`raildyn.linear_model.LinearModel`), so
 :mod:`raildyn.stability` and :mod:`raildyn.vehicles.response` take them unchanged,
@@ -36,8 +36,8 @@ inside the play (``middle_lateral_play``) and, beyond it, a stop as stiff as the
 axles' primary spring.
 
 The default values (:data:`~raildyn.vehicles.locomotive_lateral.LATERAL_LOCOMOTIVE`) are
-representative of an EMD SD40-2, as the vertical :class:`~raildyn.vehicles.locomotive.Locomotive` is, and
-use its masses and spacings so that the two models describe one locomotive; no
+representative of an EMD SD40-2, as the vertical :class:`~raildyn.vehicles.locomotive.VerticalLocomotive` is,
+and use its masses and spacings so that the two models describe one locomotive; no
 published lateral parameter set of a six-axle locomotive was found. Each value is
 given with its source or its reasoning beside the constant below.
 """
@@ -74,7 +74,7 @@ __all__ = ["LATERAL_LOCOMOTIVE", "LateralLocomotive", "ThreeAxleTruck", "rigid_t
 # ---------------------------------------------------------------------------
 # Representative values of an EMD SD40-2 (no published lateral parameter set was found).
 #
-# From the vertical model raildyn.vehicles.locomotive.Locomotive (one locomotive, two models):
+# From the vertical model raildyn.vehicles.locomotive.VerticalLocomotive (one locomotive, two models):
 # total mass 167 t (368 000 lb, Wikipedia "EMD SD40-2"), body 133 t, truck 6.5 t, unsprung 3.5 t per
 # axle; truck centres 13.26 m apart (43 ft 6 in, Wikipedia); 2.07 m between neighbouring axles;
 # secondary vertical stiffness 5.15 MN/m and damping 60 kN·s/m per truck.
@@ -452,7 +452,7 @@ class LateralLocomotive(LinearModelBase):
     truck : ThreeAxleTruck
     body_mass : float
         kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") (133 t, as the vertical
-        :class:`~raildyn.vehicles.locomotive.Locomotive`).
+        :class:`~raildyn.vehicles.locomotive.VerticalLocomotive`).
     body_yaw_inertia : float
         kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (m L²/12 for a 20 m body).
     body_roll_inertia : float

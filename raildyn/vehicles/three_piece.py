@@ -48,7 +48,7 @@ jaws and of the bolster gibs, and the body's bending.
 * :class:`ThreePieceTruck` — one truck under a body that runs straight;
 * :class:`LateralFreightCar` — the car body (lateral, yaw, roll) on two trucks, 17
   coordinates, driven by the alignment and cross-level at its four wheelsets like
-  :class:`~raildyn.vehicles.lateral.Car`;
+  :class:`~raildyn.vehicles.lateral.LateralCar`;
 * :data:`EMPTY_FREIGHT_CAR`, :data:`LOADED_FREIGHT_CAR` (:func:`freight_car`): a
   100-ton hopper on three-piece trucks, empty and loaded.
 
@@ -379,7 +379,7 @@ class LateralFreightCar(LinearModelBase):
 
     The body rolls on the spring nests, ``body_height`` below its centre of gravity, and
     the nests' lateral shear acts there too. Eight track inputs, as for
-    :class:`~raildyn.vehicles.lateral.Car`: the alignment at each of the four wheelsets,
+    :class:`~raildyn.vehicles.lateral.LateralCar`: the alignment at each of the four wheelsets,
     then the cross-level there; the side frames ride on the wheelsets, so the nests tilt
     with the mean cross-level of their truck. The defaults are the loaded car of
     :func:`freight_car`.
@@ -513,9 +513,9 @@ def freight_car(loaded: bool = True) -> LateralFreightCar:
       side frames and wedges (4.63 t) stay with the truck; the rest, bolsters included,
       moves laterally with the body: 120.5 t loaded, 19.3 t empty.
     * Body: centre of gravity 1.5 m above the nests loaded (as for
-      :class:`~raildyn.vehicles.freight.FreightCar`), 0.9 m empty (representative); yaw and
+      :class:`~raildyn.vehicles.freight.VerticalFreightCar`), 0.9 m empty (representative); yaw and
       roll inertias of a uniform body 15 m long, 3.2 m wide and 3.5 m tall (as for
-      ``FreightCar``), empty scaled by its mass (the same radii of gyration: representative).
+      ``VerticalFreightCar``), empty scaled by its mass (the same radii of gyration: representative).
     * Trucks: side frames, bolster and wedges of Baruffaldi's Ride Control truck model;
       36 in wheels on a 1:20 taper; Kalker's coefficients on Hertz's patch under the wheel
       load on a rail crowned with the wheel's radius, so that they grow with the load as

@@ -5,7 +5,7 @@ of a body's centre moves z + xθ (θ > 0 raises the front). The wheelsets follow
 the track (rigid contact): their masses are unsprung and carry no dynamics here.
 Primary springs and dampers join each wheelset to its bogie frame, secondary
 ones each bogie to the body. The defaults are the Manchester benchmark vehicle
-(Iwnicki 1998), the same car as :class:`raildyn.vehicles.Car`, whose lateral
+(Iwnicki 1998), the same car as :class:`raildyn.vehicles.LateralCar`, whose lateral
 model reuses them.
 """
 
@@ -19,11 +19,11 @@ from raildyn import _checks
 from raildyn._checks import nonnegative, positive
 from raildyn.constants import GRAVITY
 from raildyn.linear_model import Assembler, LinearModelBase, LinearSystem
-from raildyn.vehicles.lateral import Bogie, Car
+from raildyn.vehicles.lateral import Bogie, LateralCar
 
 __all__ = ["LABELS", "MANCHESTER_VERTICAL", "BodyFrequencies", "VerticalCar", "body_on_two_trucks"]
 
-_CAR, _BOGIE = Car(), Bogie()
+_CAR, _BOGIE = LateralCar(), Bogie()
 
 LABELS = ("body z", "body θ", "bogie1 z", "bogie1 θ", "bogie2 z", "bogie2 θ")
 
@@ -159,7 +159,7 @@ class VerticalCar(LinearModelBase):
     ----------
     body_mass : float
         kg, in [10, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "mass") (Iwnicki 1998: 32 000 kg; as
-        :class:`Car`).
+        :class:`LateralCar`).
     body_pitch_inertia : float
         kg·m², in [1, 5e8] (:data:`~raildyn.constants.PLAUSIBLE_RANGES` "inertia") (Iwnicki 1998: 1.97 ×
         10⁶ kg·m²).
@@ -184,7 +184,7 @@ class VerticalCar(LinearModelBase):
         4 kN·s/m per axlebox).
     secondary_stiffness, secondary_damping : float
         Per bogie (two sides), N/m and N·s/m (Iwnicki 1998: 430 kN/m and
-        20 kN·s/m per side; as the roll terms of :class:`Car`).
+        20 kN·s/m per side; as the roll terms of :class:`LateralCar`).
     """
 
     body_mass: float = _CAR.body_mass

@@ -17,6 +17,7 @@ plots, pole-zero maps) are reached through ``to_control`` rather than written
 again. SI units throughout: m, kg, s, N, rad/s.
 """
 
+from raildyn import _deprecated
 from raildyn.vibration.mdof import (
     ChainMatrices,
     ComplexModes,
@@ -32,7 +33,7 @@ from raildyn.vibration.mdof import (
     modal_superposition,
     rayleigh_coefficients,
     rayleigh_damping,
-    state_space,
+    state_space_matrices,
     to_control,
     uniform_chain_frequencies,
 )
@@ -75,8 +76,12 @@ __all__ = [
     "rayleigh_coefficients",
     "rayleigh_damping",
     "root_locus",
-    "state_space",
+    "state_space_matrices",
     "to_control",
     "transmissibility_ratio",
     "uniform_chain_frequencies",
 ]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
-from raildyn import _checks
+from raildyn import _checks, _deprecated
 from raildyn._checks import array, integer, square_matrix
 from raildyn.vibration._domain import _pivots
 
@@ -23,12 +23,16 @@ __all__ = [
     "complex_modes",
     "first_order_matrix",
     "frf_matrix",
-    "state_space",
+    "state_space_matrices",
     "to_control",
 ]
 
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())
 
-# The outputs that state_space can give.
+
+# The outputs that state_space_matrices can give.
 _OUTPUTS = ("displacement", "velocity", "acceleration", "state")
 
 
@@ -111,7 +115,7 @@ class ComplexModes:
 
 @dataclass(frozen=True)
 class StateSpaceMatrices:
-    """The matrices of z' = A z + B u, y = C z + D u (:func:`state_space`).
+    """The matrices of z' = A z + B u, y = C z + D u (:func:`state_space_matrices`).
 
     Attributes
     ----------
@@ -288,7 +292,7 @@ def complex_modes(M, C, K) -> ComplexModes:
     )
 
 
-def state_space(M, C, K, B, output: str = "displacement") -> StateSpaceMatrices:
+def state_space_matrices(M, C, K, B, output: str = "displacement") -> StateSpaceMatrices:
     """State-space matrices of ``M x'' + C x' + K x = B u`` with state z = [x; x'].
 
     z' = A z + B_s u, y = C_s z + D u, with A = [[0, I], [−M⁻¹K, −M⁻¹C]] and
@@ -314,7 +318,7 @@ def state_space(M, C, K, B, output: str = "displacement") -> StateSpaceMatrices:
 
     Examples
     --------
-    >>> state_space([[2.0]], [[0.0]], [[8.0]], [[1.0]]).A
+    >>> state_space_matrices([[2.0]], [[0.0]], [[8.0]], [[1.0]]).A
     array([[ 0.,  1.],
            [-4., -0.]])
     """
@@ -339,17 +343,17 @@ def state_space(M, C, K, B, output: str = "displacement") -> StateSpaceMatrices:
 
 
 def to_control(M, C, K, B, output: str = "displacement"):
-    """The system of :func:`state_space` as a ``control.StateSpace`` (python-control).
+    """The system of :func:`state_space_matrices` as a ``control.StateSpace`` (python-control).
 
     Parameters
     ----------
     M, C, K : array_like, shape (n, n)
         Mass (kg), damping (N·s/m) and stiffness (N/m) matrices, as for
-        :func:`~raildyn.vibration.state_space`.
+        :func:`~raildyn.vibration.state_space_matrices`.
     B : array_like, shape (n, m) or (n,)
-        How each input loads each coordinate, as for :func:`~raildyn.vibration.state_space`.
+        How each input loads each coordinate, as for :func:`~raildyn.vibration.state_space_matrices`.
     output : {"displacement", "velocity", "acceleration", "state"}
-        As for :func:`state_space`.
+        As for :func:`state_space_matrices`.
 
     Returns
     -------
@@ -362,7 +366,7 @@ def to_control(M, C, K, B, output: str = "displacement"):
     >>> np.round(np.sort_complex(control.poles(sys)), 6)
     array([-0.2-1.989975j, -0.2+1.989975j])
     """
-    return state_space(M, C, K, B, output).to_control()
+    return state_space_matrices(M, C, K, B, output).to_control()
 
 
 def frf_matrix(M, C, K, omega) -> np.ndarray:

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
-from raildyn import _checks
+from raildyn import _checks, _deprecated
 from raildyn._checks import array, integer, nonnegative, positive, scalar, square_matrix, time_grid
 from raildyn.vibration._domain import _MAX_COUNT, _MAX_PHASE, _RATE, _pivots
 
@@ -27,7 +27,7 @@ from raildyn.vibration.damped import (  # noqa: F401
     complex_modes,
     first_order_matrix,
     frf_matrix,
-    state_space,
+    state_space_matrices,
     to_control,
 )
 from raildyn.vibration.sdof import SDOF
@@ -44,6 +44,10 @@ __all__ = [
     "rayleigh_damping",
     "uniform_chain_frequencies",
 ]
+
+# The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;
+# they go after one issue.
+__getattr__ = _deprecated.module_getattr(__name__, globals())
 
 
 # ---------------------------------------------------------------------------

@@ -22,6 +22,7 @@ import numpy as np
 import scipy.linalg
 import scipy.signal
 
+from raildyn import _deprecated
 from raildyn._checks import array, integer, nonnegative, positive, scalar, time_grid
 from raildyn.vibration._domain import (
     _MAX_COUNT,
@@ -32,7 +33,7 @@ from raildyn.vibration._domain import (
     _reciprocal,
     _roots,
 )
-from raildyn.vibration.damped import StateSpaceMatrices, state_space, to_control
+from raildyn.vibration.damped import StateSpaceMatrices, state_space_matrices, to_control
 from raildyn.vibration.sdof_curves import (  # noqa: F401  (all but log_decrement: re-exports, see below)
     RootLocus,
     damping_ratio_from_decrement,
@@ -552,7 +553,7 @@ class SDOF:
         Systems*, 3rd ed., 1998, ch. 6).
         With z = [x, x'], the step is z₊ = Φ z + P F + Q F₊; returns (P, Q).
         """
-        matrices = self.state_space()
+        matrices = self.state_space_matrices()
         a, b = matrices.A, matrices.B
         aug = np.zeros((4, 4))
         aug[:2, :2], aug[:2, 2:3], aug[2, 3] = a, b, 1.0
@@ -659,7 +660,7 @@ class SDOF:
 
     # -- linear-system views ---------------------------------------------
 
-    def state_space(self) -> StateSpaceMatrices:
+    def state_space_matrices(self) -> StateSpaceMatrices:
         """State-space matrices for state [x, x'] (m, m/s), input F (N), output x (m).
 
         A = [[0, 1], [−k/m, −c/m]], B = [[0], [1/m]], C = [[1, 0]], D = [[0]].
@@ -671,11 +672,15 @@ class SDOF:
 
         Examples
         --------
-        >>> SDOF(2.0, 0.4, 8.0).state_space().A
+        >>> SDOF(2.0, 0.4, 8.0).state_space_matrices().A
         array([[ 0. ,  1. ],
                [-4. , -0.2]])
         """
-        return state_space([[self.mass]], [[self.damping]], [[self.stiffness]], [[1.0]])
+        return state_space_matrices([[self.mass]], [[self.damping]], [[self.stiffness]], [[1.0]])
+
+    # The method's name before issue 33, kept for one issue (raildyn._deprecated): calling it warns and
+    # calls state_space_matrices.
+    state_space = _deprecated.renamed_method("state_space_matrices")
 
     def to_control(self):
         """The oscillator as a ``control.StateSpace`` (input F in N, output x in m).

@@ -20,8 +20,8 @@ from raildyn import _checks, plots, ride, track, vehicles
 from raildyn.vehicles import (
     GDU_ORE_CAR,
     MANCHESTER_VERTICAL,
-    FreightCar,
     RideRun,
+    VerticalFreightCar,
     periodic_profile,
     rock_and_roll,
 )
@@ -164,7 +164,7 @@ def ride_quality():
 # --------------------------------------------------------------------------- freight car rock and roll
 
 _ROCK_SPEEDS_KMH = np.linspace(20.0, 70.0, 21)  # 2.5 km/h: the resonance peaks are narrow
-FREIGHT_CARS = {"286K hopper (derived)": FreightCar(), "GDU ore car (Baruffaldi)": GDU_ORE_CAR}
+FREIGHT_CARS = {"286K hopper (derived)": VerticalFreightCar(), "GDU ore car (Baruffaldi)": GDU_ORE_CAR}
 
 
 def _rock_controls():

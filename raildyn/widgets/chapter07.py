@@ -19,13 +19,13 @@ import numpy as np
 
 from raildyn import plots, stability
 from raildyn.linear_model import AffineFamily
-from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, Car
+from raildyn.vehicles import EMPTY_FREIGHT_CAR, LATERAL_LOCOMOTIVE, LOADED_FREIGHT_CAR, LateralCar
 from raildyn.widgets._core import Recipe, slider
 
 __all__ = ["bifurcation", "car_roots", "critical_curve", "vehicle_comparison"]
 
 _SPEEDS = np.linspace(5.0, 150.0, 60)  # m/s; enough points for smooth curves, few enough for 100 ms
-_CAR = Car()
+_CAR = LateralCar()
 _K_PSI = _CAR.wheelset.yaw_stiffness / 1e6  # MN·m/rad, the car's primary yaw stiffness per wheelset
 
 
@@ -345,7 +345,7 @@ _BIFURCATION_GRID = {
 }
 
 
-def _bifurcation_car(conicity: float, yaw_stiffness: float) -> Car:
+def _bifurcation_car(conicity: float, yaw_stiffness: float) -> LateralCar:
     return _CAR.replace(conicity=conicity, yaw_stiffness=1e6 * yaw_stiffness)
 
 

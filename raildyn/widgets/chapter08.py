@@ -21,12 +21,12 @@ from raildyn.curving import climb, curve_entry, quasi_static_curving
 from raildyn.curving.stiffness import stability_and_curving
 from raildyn.errors import SolverError
 from raildyn.track import Curve, balance_speed, cant_deficiency
-from raildyn.vehicles import Bogie, Car
+from raildyn.vehicles import Bogie, LateralCar
 from raildyn.widgets._core import Recipe, slider
 
 __all__ = ["curve_entry_speed", "curving_plan", "nadal_chart", "stiffness_tradeoff"]
 
-_CAR = Car().nonlinear()  # the Manchester benchmark car with saturating creep and flanges
+_CAR = LateralCar().nonlinear()  # the Manchester benchmark car with saturating creep and flanges
 _EXAGGERATION = 50.0  # on the offsets and angles of attack in the plan view, as SteadyCurving.plot's default
 _FLANGING = plots.COLORS[1]  # an axle on its flange
 _ROLLING = plots.COLORS[0]  # an axle on its treads
@@ -137,7 +137,7 @@ CURVING_PLAN = Recipe(
 def curving_plan():
     """The Manchester car's wheelsets in plan in a curve: offsets, angles of attack, flange contact.
 
-    The car with saturating creep and flanges (``Car().nonlinear()``) in its quasi-static
+    The car with saturating creep and flanges (``LateralCar().nonlinear()``) in its quasi-static
     equilibrium (:func:`raildyn.curving.quasi_static.quasi_static_curving`), drawn on the straightened
     track with its offsets and angles of attack exaggerated 50 times; an axle on its
     flange is drawn in red. The status line gives the cant deficiency, the leading outer
@@ -404,7 +404,7 @@ _TRADEOFF_RADII = (300.0, 2000.0)  # m: the radius slider's range
 @lru_cache(maxsize=256)
 def _tradeoff(conicity: float, radius: float):
     """The car's trade-off at a conicity in a curve of ``radius`` m (100 mm of cant, at balance speed)."""
-    model = Car().replace(conicity=conicity)
+    model = LateralCar().replace(conicity=conicity)
     speed = balance_speed(radius, _TRADEOFF_CANT)
     # 8 speeds a scan and 0.25 m/s (0.9 km/h) on each critical speed: finer than the plot shows
     return stability_and_curving(
@@ -430,8 +430,8 @@ def _tradeoff_setup(live, status):
     (ax,) = live.axes[0]
     result = _tradeoff(0.15, 600.0)
     chart = result.plot(ax)  # drawn once, then moved in place
-    own = Car().wheelset.yaw_stiffness / 1e6
-    b = Car().bogie.semi_wheelbase
+    own = LateralCar().wheelset.yaw_stiffness / 1e6
+    b = LateralCar().bogie.semi_wheelbase
     ax.axvline(own, color="0.6", lw=1, ls=":")
     ax.text(own, 0.02, " Manchester car", transform=ax.get_xaxis_transform(), fontsize=8, color="0.4")
     ax.set_title(

@@ -2,7 +2,7 @@
 resonances against speed, and four models of one car crossing the same bridge.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The models are
-:mod:`raildyn.bridge`: :func:`raildyn.bridge.beam.moving_force` (the closed form, for the
+:mod:`raildyn.bridge`: :func:`raildyn.bridge.beam.moving_force_response` (the closed form, for the
 amplification curves) and :func:`raildyn.bridge.coupled.crossing` (the modal march, for the
 deflected beam and the coupled vehicles); the design rules are :mod:`raildyn.bridge.codes`. The
 curves are drawn, and moved in place, by :func:`raildyn.bridge.beam.plot_amplification` (through
@@ -24,7 +24,7 @@ from raildyn.bridge import (
     SimplySupportedBeam,
     codes,
     crossing,
-    moving_force,
+    moving_force_response,
     moving_mass,
     plot_amplification,
     sprung_mass,
@@ -77,7 +77,7 @@ _SHAPE_MODES = 3  # the drawn beam: the deflection converges as 1/j⁴, and the 
 def _daf_response(damping_ratio: float):
     """One force's crossing at every speed of ``_ALPHAS``, by the closed form (about 60 ms, kept)."""
     beam = _beam(_CURVE_MODES, damping_ratio, span=_CURVE_SPAN)
-    return moving_force(beam, _ALPHAS * _alpha_speed(beam), _FORCE)
+    return moving_force_response(beam, _ALPHAS * _alpha_speed(beam), _FORCE)
 
 
 def _daf_curve(damping_ratio: float) -> np.ndarray:
@@ -152,7 +152,7 @@ def _explorer_setup(live, status):
         on = x <= _SPAN
         force.set_data([x], [-1e3 * np.interp(x, _SHAPE_X, w) if on else 0.0])
         _daf_response(zeta).plot(alpha_speed=alpha_speed, artists=chosen)
-        closed = moving_force(_beam(_CURVE_MODES, zeta), speed, _FORCE)
+        closed = moving_force_response(_beam(_CURVE_MODES, zeta), speed, _FORCE)
         daf = float(closed.amplification[0])
         mark.set_data([alpha], [daf])
         peak = int(np.argmax(np.abs(closed.deflection[0])))
@@ -186,7 +186,7 @@ def moving_load_explorer():
     freely), from the modal march of :func:`raildyn.bridge.coupled.crossing` with three modes;
     the static midspan deflection PL³/48EI is dashed. Right: the dynamic amplification (largest
     midspan deflection over the static one) against α = V/(2f₁L), by the closed form of
-    :func:`raildyn.bridge.beam.moving_force` with ten modes, for four damping ratios (the chosen
+    :func:`raildyn.bridge.beam.moving_force_response` with ten modes, for four damping ratios (the chosen
     one bold), with the chosen speed marked. Controls: speed V (km/h), the force's position x/L
     and the damping ratio ξ.
 
@@ -229,7 +229,7 @@ def _envelope(coach_length: float, span: float, frequency_hz: float) -> np.ndarr
     for speeds in np.array_split(_TRAIN_SPEEDS, _TRAIN_BANDS):
         samples = max(10 * frequency_hz * travel / speeds[0], 40 * travel / span)
         samples = int(np.clip(np.ceil(samples), 200, 2000))
-        parts.append(moving_force(beam, speeds, axles, samples=samples).amplification)
+        parts.append(moving_force_response(beam, speeds, axles, samples=samples).amplification)
     return np.concatenate(parts)
 
 
@@ -303,7 +303,7 @@ def train_resonance():
     bogie's axles, 170 kN an axle; :func:`raildyn.bridge.trains.regular_train`) cross a simply
     supported span L of 10 t/m whose EI gives the chosen f₁, with 1 % damping and three modes.
     The largest midspan deflection over the static one, for 80 speeds from 40 to 420 km/h, comes
-    from the closed form of :func:`raildyn.bridge.beam.moving_force`; the resonance speeds
+    from the closed form of :func:`raildyn.bridge.beam.moving_force_response`; the resonance speeds
     V = f₁d/i (:func:`raildyn.bridge.codes.resonance_speeds`) are marked, and the status line
     gives the spans at which the first resonance cancels
     (:func:`raildyn.bridge.codes.cancellation_spans`). Controls: coach length d (m), span L (m)

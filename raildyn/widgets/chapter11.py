@@ -5,7 +5,7 @@ Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The m
 :mod:`raildyn.validation` (:func:`raildyn.validation.measured.lerelva_case` for the measured
 case, :func:`raildyn.validation.metrics.compare` for the metrics,
 :func:`raildyn.validation.uncertainty.sobol_indices` for the indices),
-:func:`raildyn.bridge.beam.moving_force` for the prediction and
+:func:`raildyn.bridge.beam.moving_force_response` for the prediction and
 :func:`raildyn.stability.linear.critical_speed` for the car. This module only turns control
 values into model calls and moves artists.
 """
@@ -20,12 +20,12 @@ import numpy as np
 from scipy import stats
 
 from raildyn import plots
-from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force
+from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force_response
 from raildyn.stability import critical_speed
 from raildyn.validation.measured import LERELVA_PANEL, NSB92_LOADS, NSB92_SPACINGS, lerelva_case
 from raildyn.validation.metrics import compare
 from raildyn.validation.uncertainty import sobol_indices
-from raildyn.vehicles import Car
+from raildyn.vehicles import LateralCar
 from raildyn.widgets._core import Recipe, slider
 
 __all__ = ["metrics_explorer", "prediction_vs_measurement", "sensitivity_bars"]
@@ -83,7 +83,7 @@ def _agreement_text(a) -> str:
 
 _MASS = 1.0e3  # kg/m: lerelva_case's assumed stringer and track mass (its docstring)
 _MODES = 20  # as lerelva_case
-_OVERSAMPLE = 4  # moving_force samples per record sample, as lerelva_case
+_OVERSAMPLE = 4  # moving_force_response samples per record sample, as lerelva_case
 _AXLES = AxleSequence(np.concatenate([[0.0], np.cumsum(NSB92_SPACINGS)]), np.array(NSB92_LOADS), "NSB 92")
 
 
@@ -120,7 +120,7 @@ def _deflection(speed: float, frequency_hz: float, damping_ratio: float, gauge: 
     arrival = centre - (beam.span + _AXLES.length) / (2 * speed)
     samples = int(np.ceil((2 * beam.span + _AXLES.length) / speed * case.record.rate_hz * _OVERSAMPLE))
     position = float(case.record.positions[gauge])
-    r = moving_force(beam, speed, _AXLES, position=position, samples=samples)
+    r = moving_force_response(beam, speed, _AXLES, position=position, samples=samples)
     stiffer = beam.flexural_rigidity / _stringer(_default_frequency_hz(), damping_ratio).flexural_rigidity
     return stiffer * np.interp(case.time - arrival, r.time[0], r.deflection[0], left=0.0, right=0.0)
 
@@ -200,7 +200,7 @@ def prediction_vs_measurement():
     The strain measured at midspan of a 4.17 m stringer panel of Lerelva bridge and 1 m either
     side as an NSB class 92 unit crossed (:func:`raildyn.validation.measured.lerelva_case`:
     Slettebak 2016) beside the chapter-10 prediction: the unit's eight nominal axle loads crossing
-    the panel as a simply supported span (:func:`raildyn.bridge.beam.moving_force`, 20 modes,
+    the panel as a simply supported span (:func:`raildyn.bridge.beam.moving_force_response`, 20 modes,
     1 t/m), turned into strain by the one factor the case fitted, times the chosen scale. A
     speed other than the identified one (75.5 km/h) stretches the passage about the moment the
     unit's centre passes the panel's middle. Left: the two records at the chosen gauge. Right:
@@ -310,7 +310,7 @@ def metrics_explorer():
 # ---------------------------------------------------------------------------
 # Sobol' indices of the car's critical speed
 
-_CAR = Car()  # the Manchester benchmark car (Iwnicki 1998), chapter 7
+_CAR = LateralCar()  # the Manchester benchmark car (Iwnicki 1998), chapter 7
 # m/s: the default car's critical speed is 77.9 m/s, and ±10 % on the conicity moves it by about ±5 %;
 # a narrow bracket and a 16-speed scan cost 9 ms a call against 15 ms for (1, 150) m/s and 64.
 _SPEED_RANGE = (50.0, 110.0)
@@ -467,7 +467,7 @@ SENSITIVITY_BARS = Recipe(
 def sensitivity_bars():
     """Sobol' indices of the chapter-7 car's linear critical speed under ±10 % parameter scatter.
 
-    The Manchester car (:class:`raildyn.vehicles.lateral.Car`) with its primary lateral and yaw
+    The Manchester car (:class:`raildyn.vehicles.lateral.LateralCar`) with its primary lateral and yaw
     stiffnesses, its secondary lateral and yaw stiffnesses and the conicity each uniform within
     ±10 % of the default. :func:`raildyn.validation.uncertainty.sobol_indices` (N = 32, 224
     evaluations of :func:`raildyn.stability.linear.critical_speed`, about 3 s, on an in-process

@@ -10,7 +10,7 @@ from raildyn.bridge import (
     MovingForceResponse,
     SimplySupportedBeam,
     crossing,
-    moving_force,
+    moving_force_response,
     moving_mass,
     sprung_mass,
 )
@@ -20,7 +20,7 @@ BEAM = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=5)
 
 
 def response() -> MovingForceResponse:
-    return moving_force(BEAM, [20.0, 40.0], 1.0e5, samples=50)
+    return moving_force_response(BEAM, [20.0, 40.0], 1.0e5, samples=50)
 
 
 ENTRIES = [
@@ -45,7 +45,7 @@ ENTRIES = [
         accepts={"positions": "zero", "name": "empty"},  # one axle, or all at 0: a single point load
     ),
     fuzz(
-        "raildyn.bridge.moving_force",
+        "raildyn.bridge.moving_force_response",
         lambda: call(BEAM, [20.0, 40.0], 1.0e5, position=5.0, samples=50),
         accepts={"force": "zero negative big mm", "position": "zero none", "speeds": "list"},  # None: midspan
     ),
@@ -85,7 +85,7 @@ ENTRIES += [
         lambda: call([0.0, 3.0], [1.0e5, 1.0e5], [100.0, 100.0], None, "pair"),
         accepts={"positions": "zero", "unsprung_masses": "zero", "system": "none", "name": "empty"},
     ),
-    fuzz("raildyn.bridge.moving_forces", lambda: call(PAIR)),
+    fuzz("raildyn.bridge.moving_load", lambda: call(PAIR)),
     fuzz("raildyn.bridge.moving_mass", lambda: call(1000.0), accepts={"mass": "mm"}),
     fuzz(
         "raildyn.bridge.sprung_mass",

@@ -5,11 +5,13 @@ from __future__ import annotations
 import numpy as np
 from fuzzing import call, fuzz, on
 
-from raildyn.bridge import SimplySupportedBeam, moving_force
+from raildyn.bridge import SimplySupportedBeam, moving_force_response
 
 
 def _response():
-    return moving_force(SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=3), [20.0, 40.0], 1.0e5, samples=50)
+    return moving_force_response(
+        SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=3), [20.0, 40.0], 1.0e5, samples=50
+    )
 
 
 ENTRIES = [

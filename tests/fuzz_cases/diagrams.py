@@ -7,7 +7,7 @@ from fuzzing import call, fuzz, on
 from raildyn.bridge import SimplySupportedBeam
 from raildyn.diagrams import beam_load, wheelset_plan
 from raildyn.train import DraftGear, make_consist
-from raildyn.vehicles import Bogie, Car, ThreePieceTruck, VerticalCar
+from raildyn.vehicles import Bogie, LateralCar, ThreePieceTruck, VerticalCar
 from raildyn.vibration import SDOF
 from raildyn.wheelset import Wheelset
 
@@ -49,7 +49,11 @@ ENTRIES = [
     ),
     fuzz("raildyn.diagrams.bogie_plan", lambda: call(Bogie())),
     fuzz("raildyn.diagrams.car_side", lambda: call(VerticalCar())),
-    fuzz("raildyn.diagrams.car_plan", lambda: call(Car(), 0.002, exaggerate=10.0), accepts={"psi": SIGNED}),
+    fuzz(
+        "raildyn.diagrams.car_plan",
+        lambda: call(LateralCar(), 0.002, exaggerate=10.0),
+        accepts={"psi": SIGNED},
+    ),
     fuzz("raildyn.diagrams.truck_schematic", lambda: call(ThreePieceTruck())),
     # gear None is the default DraftGear()
     fuzz(

@@ -1,5 +1,5 @@
-"""Fuzz registry: chapter 6, vehicle models (lateral Bogie/Car, VerticalCar, Locomotive, FreightCar)
-and their response to the track (FRFs, spectra, time histories, rock and roll)."""
+"""Fuzz registry: chapter 6, vehicle models (lateral Bogie/LateralCar, VerticalCar, VerticalLocomotive,
+VerticalFreightCar) and their response to the track (FRFs, spectra, time histories, rock and roll)."""
 
 from __future__ import annotations
 
@@ -41,7 +41,7 @@ def spectrum():
 
 
 def rocking():
-    return veh.rock_and_roll(veh.FreightCar(), [25.0, 30.0], cycles=4)
+    return veh.rock_and_roll(veh.VerticalFreightCar(), [25.0, 30.0], cycles=4)
 
 
 # Result dataclasses hold what a model computes: their own domains (a frequency ≥ 0, a PSD ≥ 0, a
@@ -78,7 +78,7 @@ ENTRIES = [
     fuzz("raildyn.vehicles.Bogie.linear_system", lambda: on(veh.Bogie())),
     fuzz("raildyn.vehicles.Bogie.replace", lambda: on(veh.Bogie(), frame_mass=2000.0)),
     fuzz(
-        "raildyn.vehicles.Car",
+        "raildyn.vehicles.LateralCar",
         lambda: call(),
         accepts={
             "body_roll_inertia": "mm",
@@ -87,8 +87,8 @@ ENTRIES = [
             "roll_damping": "zero big mm",
         },
     ),
-    fuzz("raildyn.vehicles.Car.linear_system", lambda: on(veh.Car())),
-    fuzz("raildyn.vehicles.Car.replace", lambda: on(veh.Car(), body_mass=30000.0)),
+    fuzz("raildyn.vehicles.LateralCar.linear_system", lambda: on(veh.LateralCar())),
+    fuzz("raildyn.vehicles.LateralCar.replace", lambda: on(veh.LateralCar(), body_mass=30000.0)),
     fuzz("raildyn.vehicles.cooperrider_car", lambda: call()),
     # ------------------------------------------------------------------ vertical models
     fuzz(
@@ -132,14 +132,14 @@ ENTRIES = [
         accepts=BODY_ON_TRUCKS,
     ),
     fuzz(
-        "raildyn.vehicles.Locomotive",
+        "raildyn.vehicles.VerticalLocomotive",
         lambda: call(),
         accepts=BODY_ON_TRUCKS,
     ),
-    fuzz("raildyn.vehicles.Locomotive.linear_system", lambda: on(veh.Locomotive())),
+    fuzz("raildyn.vehicles.VerticalLocomotive.linear_system", lambda: on(veh.VerticalLocomotive())),
     # ------------------------------------------------------------------ freight car
     fuzz(
-        "raildyn.vehicles.FreightCar",
+        "raildyn.vehicles.VerticalFreightCar",
         lambda: call(),
         accepts={
             "body_roll_inertia": "mm",
@@ -149,15 +149,17 @@ ENTRIES = [
             "equivalent_damping": "zero big",
         },
     ),
-    fuzz("raildyn.vehicles.FreightCar.linear_system", lambda: on(veh.FreightCar())),
-    fuzz("raildyn.vehicles.FreightCar.natural_frequencies", lambda: on(veh.FreightCar())),
-    fuzz("raildyn.vehicles.FreightCar.nests", lambda: on(veh.FreightCar())),
-    fuzz("raildyn.vehicles.FreightCar.roll_input_factor", lambda: on(veh.FreightCar(), 11.9)),
-    fuzz("raildyn.vehicles.FreightCar.roll_resonance_speed", lambda: on(veh.FreightCar(), 11.9)),
+    fuzz("raildyn.vehicles.VerticalFreightCar.linear_system", lambda: on(veh.VerticalFreightCar())),
+    fuzz("raildyn.vehicles.VerticalFreightCar.natural_frequencies", lambda: on(veh.VerticalFreightCar())),
+    fuzz("raildyn.vehicles.VerticalFreightCar.nests", lambda: on(veh.VerticalFreightCar())),
+    fuzz("raildyn.vehicles.VerticalFreightCar.roll_input_factor", lambda: on(veh.VerticalFreightCar(), 11.9)),
+    fuzz(
+        "raildyn.vehicles.VerticalFreightCar.roll_resonance_speed", lambda: on(veh.VerticalFreightCar(), 11.9)
+    ),
     fuzz("raildyn.vehicles.gdu_ore_car", lambda: call()),
     fuzz(
         "raildyn.vehicles.rock_and_roll",
-        lambda: call(veh.FreightCar(), [25.0, 30.0], cycles=4),
+        lambda: call(veh.VerticalFreightCar(), [25.0, 30.0], cycles=4),
         accepts={"depth": "zero"},
     ),
     fuzz(

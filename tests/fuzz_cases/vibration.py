@@ -111,7 +111,7 @@ ENTRIES = [
         lambda: on(sdof(), T, np.sin(T)),
         accepts={"force": "zero negative"},
     ),
-    fuzz("raildyn.vibration.SDOF.state_space", lambda: on(sdof())),
+    fuzz("raildyn.vibration.SDOF.state_space_matrices", lambda: on(sdof())),
     fuzz("raildyn.vibration.SDOF.to_control", lambda: on(sdof())),
     # ------------------------------------------------------------------ SDOF results and curves
     fuzz(
@@ -234,9 +234,9 @@ ENTRIES = [
             np.array([[1.0, 0.0]]),
             np.array([[0.0]]),
         ),  # fmt: skip
-        accepts={"*": RESULT},  # a result: what state_space computes
+        accepts={"*": RESULT},  # a result: what state_space_matrices computes
     ),
-    fuzz("raildyn.vibration.StateSpaceMatrices.to_control", lambda: on(sdof().state_space())),
+    fuzz("raildyn.vibration.StateSpaceMatrices.to_control", lambda: on(sdof().state_space_matrices())),
     fuzz(
         "raildyn.vibration.chain_matrices",
         lambda: call([2.0, 1.0], [200.0, 100.0], dampings=[2.0, 1.0], grounded=True),
@@ -287,7 +287,7 @@ ENTRIES = [
         accepts={"C": "zero negative", "K": "zero negative"},
     ),
     fuzz(
-        "raildyn.vibration.state_space",
+        "raildyn.vibration.state_space_matrices",
         lambda: call(M2, C2, K2, B2, output="velocity"),
         accepts={"C": "zero negative", "K": "zero negative", "B": "zero negative"},
     ),
