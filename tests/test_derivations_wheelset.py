@@ -157,3 +157,13 @@ def test_critical_speed_limit_is_wickens(changes):
     np.testing.assert_allclose(
         np.sort_complex(roots), np.sort_complex(eig), rtol=0.0, atol=1e-6 * np.abs(eig).max()
     )
+
+
+def test_the_symbol_table_names_every_field_of_the_wheelset_symbols():
+    # raildyn.derivations._wheel_rail maps each WheelsetSymbols field to its symbol and Wheelset field; a
+    # field added to one and not the other would leave a symbol without a value.
+    from dataclasses import fields
+
+    from raildyn.derivations._wheel_rail import _FIELDS, WheelsetSymbols
+
+    assert set(_FIELDS) == {f.name for f in fields(WheelsetSymbols)}

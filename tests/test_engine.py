@@ -180,7 +180,7 @@ class _NumpyForces(NonlinearLateral):
 
 
 def test_the_arc_newton_gives_the_compiled_and_the_numpy_forces_one_map():
-    # One Newton (raildyn.curving.quasi_static), its forces and Jacobian from the engine or from numpy.
+    # One Newton (raildyn.wheelset.arc_newton), its forces and Jacobian from the engine or from numpy.
     from raildyn.curving import curving_map
 
     model = Bogie().nonlinear()

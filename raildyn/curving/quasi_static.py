@@ -6,9 +6,9 @@ car's, the locomotive's) on a circular arc, in the axes that follow the vehicle 
 and in :mod:`raildyn.curving.steady`). At rest in those axes its velocities vanish, and the
 equilibrium is the zero of its forces (:meth:`~raildyn.wheelset.NonlinearLateral.arc_forces`).
 
-The search: Newton's method on every point at once (the forces of a batch of states are one
-vectorised evaluation, and so is their Jacobian,
-:meth:`~raildyn.wheelset.NonlinearLateral.arc_jacobian`; steps halved until the residual
+The search: Newton's method on every point at once (:func:`raildyn.wheelset.arc_newton`: the forces
+of a batch of states are one evaluation, compiled where the engine holds the model, and so is their
+Jacobian, :meth:`~raildyn.wheelset.NonlinearLateral.arc_jacobian`; steps halved until the residual
 falls), started from the linear steady state of :func:`raildyn.curving.steady.steady_curving`. Points
 where the flange contact or the creep saturation stalls it are continued from their solved
 neighbours, then by a homotopy that raises the curve's load from nothing in adaptive steps; a
@@ -37,6 +37,7 @@ from raildyn.integrators.runner import solve_ivp
 from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, Curve, balance_speed, unbalanced_acceleration
 from raildyn.wheelset import (
     NonlinearLateral,
+    arc_newton,
     contact_forces,
     track_on_arc,
     tread_contact_angles,
@@ -128,51 +129,9 @@ def _weight(model: NonlinearLateral) -> float:
 
 
 def _newton(model, q, V, kappa, a_q) -> tuple[np.ndarray, np.ndarray]:
-    """Newton's method on the columns of q (n, P) together; the converged columns' flags (P,).
-
-    Each step solves J Δq = −r for every column still above the tolerance, and halves its step until
-    the sum of its squared residuals falls (at most eleven times); a column stops where no step
-    improves it or its Jacobian is singular, and the other searches take it over. The forces and
-    their Jacobian are the model's (:meth:`~raildyn.wheelset.NonlinearLateral.arc_forces`), compiled
-    where the engine holds the model and in numpy where it holds a Python force law.
-    """
-    tolerance = _TOLERANCE * _weight(model)
-    P = q.shape[1]
-    q = np.array(q, dtype=float, copy=True)
-    V, kappa, a_q = (np.broadcast_to(np.asarray(v, dtype=float), (P,)) for v in (V, kappa, a_q))
-    r = model.arc_forces(q, V, kappa, a_q)
-    active = np.abs(r).max(axis=0) > tolerance  # a NaN residual is not above: its column stops
-    for _ in range(_NEWTON_STEPS):
-        if not active.any():
-            break
-        cols = np.flatnonzero(active)
-        on = (V[cols], kappa[cols], a_q[cols])
-        J = model.arc_jacobian(q[:, cols], *on).reshape(cols.size, q.shape[0], q.shape[0])
-        with np.errstate(all="ignore"):
-            try:
-                step = np.linalg.solve(J, -r[:, cols].T[:, :, None])[:, :, 0].T
-            except np.linalg.LinAlgError:  # a singular Jacobian somewhere: the other searches take over
-                break
-        finite = np.all(np.isfinite(step), axis=0)
-        step[:, ~finite] = 0.0  # such a column is not moved: it stops below
-        merit = (r[:, cols] ** 2).sum(axis=0)
-        alpha = 1.0
-        trying = np.flatnonzero(finite)  # the columns (of cols) whose step has not yet improved them
-        improved = np.zeros(cols.size, dtype=bool)
-        for _ in range(12):
-            if trying.size == 0:
-                break
-            at = cols[trying]
-            trial = q[:, at] + alpha * step[:, trying]
-            r_trial = model.arc_forces(trial, V[at], kappa[at], a_q[at])
-            better = (r_trial**2).sum(axis=0) < merit[trying]
-            q[:, at[better]], r[:, at[better]] = trial[:, better], r_trial[:, better]
-            improved[trying[better]] = True
-            trying = trying[~better]
-            alpha *= 0.5
-        active[cols[~improved]] = False
-        active[cols] &= np.abs(r[:, cols]).max(axis=0) > tolerance
-    return q, np.abs(r).max(axis=0) <= tolerance
+    """Newton's method on the columns of q (n, P) together (:func:`raildyn.wheelset.arc_newton`, the one
+    Newton of every model); the converged columns' flags (P,)."""
+    return arc_newton(model, q, V, kappa, a_q, tolerance=_TOLERANCE * _weight(model), steps=_NEWTON_STEPS)
 
 
 def _rescue(model: NonlinearLateral, start: np.ndarray, V: float, R: float, D: float) -> np.ndarray:

@@ -33,6 +33,7 @@ from raildyn.integrators._common import (
     scale,
 )
 from raildyn.integrators._divergence import diverged
+from raildyn.integrators.runner import _failure
 from raildyn.vibration import first_order_matrix
 
 # Newton iterations a step may be allowed: the iteration converges quadratically near the
@@ -43,11 +44,12 @@ MAX_ITERATIONS = 1000
 # below, it means nothing physical and only keeps the solver stepping finely near zero crossings.
 MIN_ATOL = 1e-20
 
-# Steps the stiff solver may take (a few seconds of work with a Python force, about 0.2 ms a step):
-# a run that needs more is following fast oscillations one by one rather than stepping over a stiff
-# decay, which a fixed-step scheme does faster; it is reported as a failure rather than left to run
-# for minutes.
-MAX_STIFF_STEPS = 10_000
+# Evaluations of the right-hand side the stiff solver may make: the budget of the one rule of
+# raildyn.integrators.runner, here some 10 000 steps of Radau at three or four evaluations a step (a few
+# seconds of work with a Python force). A run that needs more is following fast oscillations one by one
+# rather than stepping over a stiff decay, which a fixed-step scheme does faster; it is reported as a
+# failure rather than left to run for minutes.
+MAX_STIFF_EVALUATIONS = 40_000
 
 __all__ = ["abm", "forward_euler", "newmark_newton", "rk4", "stiff"]
 
@@ -535,8 +537,8 @@ def stiff(
                 reason = message
             elif not np.isfinite(solver.y).all():
                 reason = "the state became non-finite"
-            elif steps >= MAX_STIFF_STEPS and solver.status == "running":
-                reason = f"the run needs more than {MAX_STIFF_STEPS} steps"
+            elif solver.nfev > MAX_STIFF_EVALUATIONS and solver.status == "running":
+                reason = "budget"
             else:
                 # The grid values come from each step's own interpolant, as solve_ivp's t_eval would give.
                 upto = int(np.searchsorted(p.t, solver.t, side="right"))
@@ -546,11 +548,12 @@ def stiff(
         x, v = Y[:filled, :n], Y[:filled, n:]
         a = _accelerations(acceleration, p.t, x, v)
     if reason is not None:
+        partial = partial_result(name, p.t, x, v, a, int(solver.nfev))
+        if reason == "budget":  # the runner's one budget rule and its one message
+            raise _failure("budget", f"scipy's {method}", time=float(solver.t), step=steps,
+                           limit=MAX_STIFF_EVALUATIONS, partial=partial)  # fmt: skip
         raise SolverError(
-            f"scipy's {method} failed: {reason}",
-            step=steps,
-            time=float(solver.t),
-            partial=partial_result(name, p.t, x, v, a, int(solver.nfev)),
+            f"scipy's {method} failed: {reason}", step=steps, time=float(solver.t), partial=partial
         )
     result = completed(name, p, x, v, a, int(solver.nfev))
     return IntegrationResult(result.t, result.x, result.v, result.a, name, steps, result.iterations)

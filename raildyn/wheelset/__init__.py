@@ -19,6 +19,8 @@ dynamics.
   (:func:`profile_contact`);
 * :mod:`raildyn.wheelset.protocol` — the nonlinear protocol (:class:`NonlinearModel`:
   ``rhs(t, state, speed)``, ``replace``, ``compiled_reason``);
+* :mod:`raildyn.wheelset.equilibrium` — the one Newton's method towards a nonlinear model's
+  equilibria on arcs (:func:`arc_newton`);
 * :mod:`raildyn.wheelset.nonlinear` — its models, the nonlinear lateral vehicle and the nonlinear
   wheelset (:class:`NonlinearLateral`, :class:`NonlinearWheelset`), which
   a compiled engine (the package's ``_engine``, on the one wheel–rail law of ``_law``) runs where it
@@ -42,6 +44,7 @@ from raildyn.wheelset.contact import (
     wheel_forces,
 )
 from raildyn.wheelset.curved import curve_loads, pure_rolling_offset, track_on_arc
+from raildyn.wheelset.equilibrium import arc_newton
 from raildyn.wheelset.kinematics import (
     KinematicOscillation,
     kinematic_oscillation,
@@ -66,6 +69,7 @@ __all__ = [
     "WheelRailContact",
     "Wheelset",
     "add_wheelset",
+    "arc_newton",
     "contact_forces",
     "creep_terms",
     "curve_loads",

@@ -13,6 +13,7 @@ SI units throughout.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -23,7 +24,6 @@ from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
 from raildyn.linear_model import LinearSystem
 from raildyn.track.curve import Curve
-from raildyn.wheelset import _engine
 from raildyn.wheelset.contact import ContactTable, ContactTables, WheelRailContact, _contact_forces
 from raildyn.wheelset.curved import track_on_arc
 from raildyn.wheelset.linear import Wheelset, creep_terms
@@ -159,7 +159,6 @@ class NonlinearLateral:
     _lateral_mass: np.ndarray = field(init=False, repr=False, compare=False)
     _positions: np.ndarray | None = field(init=False, repr=False, compare=False)
     compiled_reason: str | None = field(init=False, repr=False, compare=False)
-    _row: np.ndarray | None = field(init=False, repr=False, compare=False)  # packed for the engine, no speed
 
     def __post_init__(self):
         if self.curve is not None:
@@ -220,7 +219,18 @@ class NonlinearLateral:
         object.__setattr__(self, "_G", G if self.elements else None)  # None: no elements
         object.__setattr__(self, "_laws", tuple(e.force for e in self.elements))
         object.__setattr__(self, "compiled_reason", _compiled_reason(self))
-        object.__setattr__(self, "_row", None if self.compiled_reason else _engine.pack(self))
+
+    @functools.cached_property
+    def _row(self) -> np.ndarray | None:
+        """The model packed for the engine's forces on arcs (no speed); None where the engine cannot run it.
+
+        Packed at first use, so that numba's engine loads only when a model needs it.
+        """
+        if self.compiled_reason is not None:
+            return None
+        from raildyn.wheelset import _engine
+
+        return _engine.pack(self)
 
     @property
     def state_size(self) -> int:
@@ -266,6 +276,8 @@ class NonlinearLateral:
         V = _speed(speed)
         if self.compiled_reason is not None:
             raise ValueError(f"the compiled engine cannot run this model: {self.compiled_reason}")
+        from raildyn.wheelset import _engine
+
         return CompiledRHS(_engine.lateral_rhs, _engine.pack(self, V))
 
     def rhs(self, t, state, speed):
@@ -369,38 +381,7 @@ class NonlinearLateral:
         ndarray, like ``q``
             N and N·m on each coordinate.
         """
-        if self._positions is None:
-            raise ValueError(
-                "system cannot run on a curve: its wheelsets have no alignment inputs to place them"
-            )
-        n = self.system.size
-        q = _checks.array("q", q)
-        if not 1 <= q.ndim <= 2 or q.shape[0] != n:
-            raise ValueError(f"q must have shape ({n},) or ({n}, k), got shape {q.shape}")
-        batch = () if q.ndim == 1 else (q.shape[1],)
-        V = _checks.plausible_array("speed", speed, "speed", low_open=True)
-        kappa = _checks.array("curvature", curvature)
-        a_q = _checks.array("unbalanced_acceleration", unbalanced_acceleration)
-        for name, value in (("speed", V), ("curvature", kappa), ("unbalanced_acceleration", a_q)):
-            if value.shape not in ((), batch):
-                raise ValueError(
-                    f"{name} must be a float or have the shape {batch} of q's batch, got {value.shape}"
-                )
-        if self._row is not None:
-            track_on_arc(0.0, kappa)  # its check of the curvature, which the numpy path meets there
-            shape = (n, q.size // n)
-            return self._compiled_on_arcs(_engine.arc_forces, q, (V, kappa, a_q), shape).reshape(q.shape)
-        column = (slice(None),) + (None,) * (q.ndim - 1)
-        force = -self._K_suspension @ q
-        self._add_curved_contact(
-            q, np.zeros_like(q), V, kappa, lambda x: track_on_arc(x[column], kappa)[0], force
-        )
-        if self._laws:
-            d = self._G @ q
-            pull = np.array([law(d[i], np.zeros_like(d[i])) for i, law in enumerate(self._laws)], dtype=float)
-            force -= self._G.T @ pull
-        force -= self._lateral_mass[column] * a_q
-        return force
+        return self._forces_on_arcs(*self._on_arcs(q, speed, curvature, unbalanced_acceleration))
 
     def arc_jacobian(self, q, speed, curvature, unbalanced_acceleration) -> np.ndarray:
         """∂F/∂q of :meth:`arc_forces`, for a batch of states at once.
@@ -421,13 +402,53 @@ class NonlinearLateral:
         ndarray, (n, n) or (k, n, n)
             N/m, N, N·m/rad … : row i, column j is ∂F_i/∂q_j; one matrix per column of ``q``.
         """
-        self.arc_forces(q, speed, curvature, unbalanced_acceleration)  # the checks, and a finite answer
-        q = np.asarray(q, dtype=float)
-        V, kappa = np.asarray(speed, dtype=float), np.asarray(curvature, dtype=float)
+        return self._jacobians_on_arcs(*self._on_arcs(q, speed, curvature, unbalanced_acceleration))
+
+    def _on_arcs(self, q, speed, curvature, unbalanced_acceleration) -> tuple:
+        """The checked arguments of :meth:`arc_forces`: q, V, κ and a_q as float arrays."""
+        if self._positions is None:
+            raise ValueError(
+                "system cannot run on a curve: its wheelsets have no alignment inputs to place them"
+            )
+        n = self.system.size
+        q = _checks.array("q", q)
+        if not 1 <= q.ndim <= 2 or q.shape[0] != n:
+            raise ValueError(f"q must have shape ({n},) or ({n}, k), got shape {q.shape}")
+        batch = () if q.ndim == 1 else (q.shape[1],)
+        V = _checks.plausible_array("speed", speed, "speed", low_open=True)
+        kappa = _checks.array("curvature", curvature)
+        a_q = _checks.array("unbalanced_acceleration", unbalanced_acceleration)
+        for name, value in (("speed", V), ("curvature", kappa), ("unbalanced_acceleration", a_q)):
+            if value.shape not in ((), batch):
+                raise ValueError(
+                    f"{name} must be a float or have the shape {batch} of q's batch, got {value.shape}"
+                )
+        track_on_arc(0.0, kappa)  # its check of the curvature
+        return q, V, kappa, a_q
+
+    def _forces_on_arcs(self, q, V, kappa, a_q) -> np.ndarray:
+        """:meth:`arc_forces` of checked arguments: on the compiled engine where it holds the model."""
+        n = self.system.size
+        if self._row is not None:
+            shape = (n, q.size // n)
+            return self._compiled_on_arcs("arc_forces", q, (V, kappa, a_q), shape).reshape(q.shape)
+        column = (slice(None),) + (None,) * (q.ndim - 1)
+        force = -self._K_suspension @ q
+        self._add_curved_contact(
+            q, np.zeros_like(q), V, kappa, lambda x: track_on_arc(x[column], kappa)[0], force
+        )
+        if self._laws:
+            d = self._G @ q
+            pull = np.array([law(d[i], np.zeros_like(d[i])) for i, law in enumerate(self._laws)], dtype=float)
+            force -= self._G.T @ pull
+        force -= self._lateral_mass[column] * a_q
+        return force
+
+    def _jacobians_on_arcs(self, q, V, kappa, a_q) -> np.ndarray:
+        """:meth:`arc_jacobian` of checked arguments: on the compiled engine where it holds the model."""
         n, h = self.system.size, 1.0e-7
         if self._row is not None:
-            arcs = (V, kappa, np.asarray(unbalanced_acceleration, dtype=float))
-            J = self._compiled_on_arcs(_engine.arc_jacobian, q, arcs, (q.size // n, n, n))
+            J = self._compiled_on_arcs("arc_jacobian", q, (V, kappa, a_q), (q.size // n, n, n))
             return J[0] if q.ndim == 1 else J
         column = (slice(None),) + (None,) * (q.ndim - 1)
         J = np.broadcast_to(-self._K_suspension, (*q.shape[1:], n, n)).copy()
@@ -454,14 +475,16 @@ class NonlinearLateral:
             J -= np.einsum("ei,e...,ej->...ij", self._G, slope, self._G)
         return J
 
-    def _compiled_on_arcs(self, kernel, q, arcs, shape) -> np.ndarray:
+    def _compiled_on_arcs(self, kernel: str, q, arcs, shape) -> np.ndarray:
         """The engine's ``kernel`` (forces or Jacobian on arcs) on q's columns, as an array of ``shape``."""
+        from raildyn.wheelset import _engine
+
         n = self.system.size
         columns = np.ascontiguousarray(q.reshape(n, -1), dtype=float)
         P = columns.shape[1]
-        V, kappa, a_q = (np.ascontiguousarray(np.broadcast_to(v, (P,)), dtype=float) for v in arcs)
+        V, kappa, a_q = (np.array(np.broadcast_to(v, (P,)), dtype=float) for v in arcs)  # writable copies
         out = np.empty(shape)
-        kernel(self._row, columns, V, kappa, a_q, out)
+        getattr(_engine, kernel)(self._row, columns, V, kappa, a_q, out)
         return out
 
     def _add_curved_contact(self, q, qdot, V, kappa, track, force) -> None:

@@ -181,6 +181,20 @@ ENTRIES = [
         },
     ),
     fuzz(
+        "raildyn.wheelset.arc_newton",
+        lambda: call(Bogie().nonlinear(), np.zeros((6, 2)), 20.0, [1 / 600, 1 / 300], 0.3, tolerance=1e-3),
+        # any start, tangent track or an arc either way, any unbalanced acceleration; a looser tolerance or
+        # more steps only change when it stops
+        accepts={
+            "q": "zero negative",
+            "speed": "tiny list",  # one speed, or one per column
+            "curvature": "zero negative",
+            "unbalanced_acceleration": "zero negative big mm list",
+            "tolerance": "big mm tiny",  # a tolerance nothing meets leaves every point unconverged
+            "steps": "big",
+        },
+    ),
+    fuzz(
         "raildyn.wheelset.NonlinearLateral.relative_to_track",
         lambda: on(curved(), 1.0, np.full(12, 1e-3), 25.0),
         accepts={"t": "zero negative big mm", "state": "zero negative", "speed": "tiny"},
