@@ -2,10 +2,10 @@
 
 :func:`~raildyn.wheelset.arc_newton` solves :meth:`~raildyn.wheelset.NonlinearLateral.arc_forces` = 0
 for a batch of states at once, each at its own speed, curvature and unbalanced acceleration. It is
-written once for
-every model: the forces and their Jacobian come from the compiled engine where it holds the model,
-and from numpy where the model holds a Python force law. :mod:`raildyn.curving.quasi_static` builds
-its curving states and maps on it, continuing the points it leaves from their neighbours.
+written once for every model: the forces and their Jacobian come from the compiled engine where it
+holds the model, and from numpy where the model holds a Python force law.
+:mod:`raildyn.curving.quasi_static` builds its curving states and maps on it, continuing the points it
+leaves from their neighbours.
 """
 
 from __future__ import annotations
