@@ -372,11 +372,10 @@ def _geometry(ws: Wheelset, contact: WheelRailContact, y):
 
 
 def _flat(*arrays):
-    """The arrays broadcast together, each as a contiguous 1-D float array, and their common shape."""
+    """The arrays broadcast together, each as a writable contiguous 1-D float copy, and their common shape."""
     shape = np.broadcast_shapes(*(np.shape(a) for a in arrays))
-    return [
-        np.array(np.broadcast_to(a, shape), dtype=float).ravel() for a in arrays
-    ], shape  # writable copies
+    flat = [np.array(np.broadcast_to(a, shape), dtype=float).ravel() for a in arrays]
+    return flat, shape
 
 
 def _contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
