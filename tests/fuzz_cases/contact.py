@@ -23,6 +23,17 @@ RESULT_ARRAYS = {"*": "zero negative list mm big"}
 # Creepages (ξ, η, φ), lateral speeds and positions, angles: any sign, zero included; a parameter
 # documented as "float or array_like" takes a list of numbers.
 SIGNED = "zero negative list mm big"
+# A wheelset's motion and contact (wheelset_creepages and creepage_terms take the same): V, ẏ, ψ, ψ̇, the
+# rolling radii, r₀, a and the contact angles; rates and angles of either sign, the radii one per contact.
+CREEPAGE_MOTION = (40.0, 0.01, 1e-3, 0.02, 0.46015, 0.45985, 0.46, 0.75, 0.05, -0.05)
+CREEPAGE_ACCEPTS = {
+    "speed": "tiny",
+    "rolling_radius_left": "list",
+    "rolling_radius_right": "list",
+    **dict.fromkeys(
+        ("lateral_velocity", "yaw_angle", "yaw_rate", "contact_angle_left", "contact_angle_right"), SIGNED
+    ),
+}
 ETA = np.array([0.0, 2e-3, 1e-2])
 
 
@@ -247,31 +258,13 @@ ENTRIES = [
     ),
     fuzz(
         "raildyn.contact.wheelset_creepages",
-        lambda: call(40.0, 0.01, 1e-3, 0.02, 0.46015, 0.45985, 0.46, 0.75, 0.05, -0.05),
-        accepts={
-            "speed": "tiny",
-            "rolling_radius_left": "list",
-            "rolling_radius_right": "list",
-            "lateral_velocity": SIGNED,
-            "yaw_angle": SIGNED,
-            "yaw_rate": SIGNED,
-            "contact_angle_left": SIGNED,
-            "contact_angle_right": SIGNED,
-        },
+        lambda: call(*CREEPAGE_MOTION),
+        accepts=CREEPAGE_ACCEPTS,
     ),
     fuzz(
         "raildyn.contact.creepage_terms",
-        lambda: call(40.0, 0.01, 1e-3, 0.02, 0.46015, 0.45985, 0.46, 0.75, 0.05, -0.05),
-        accepts={
-            "speed": "tiny",
-            "rolling_radius_left": "list",
-            "rolling_radius_right": "list",
-            "lateral_velocity": SIGNED,
-            "yaw_angle": SIGNED,
-            "yaw_rate": SIGNED,
-            "contact_angle_left": SIGNED,
-            "contact_angle_right": SIGNED,
-        },
+        lambda: call(*CREEPAGE_MOTION),
+        accepts=CREEPAGE_ACCEPTS,
     ),
     # --------------------------------------------------------------- FASTSIM
     fuzz("raildyn.contact.Flexibilities", lambda: call(1e-14, 2e-14, 3e-14), accepts=RESULT_ARRAYS),
