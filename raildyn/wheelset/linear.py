@@ -180,6 +180,70 @@ class Wheelset(LinearModelBase):
                     changes[name] = None
         return replace(self, **changes)
 
+    def on_profiles(self, wheel, rail, amplitude=3.0e-3, *, gauge=1.435, tape_distance=1.5) -> Wheelset:
+        """The same wheelset linearised on a real wheel and rail profile pair at a lateral amplitude ŷ.
+
+        The cone's three contact parameters come from the pair's contact geometry
+        (:func:`raildyn.contact.geometry.contact_geometry`, with the wheelset's roll):
+
+        * the conicity is EN 15302's equivalent conicity λ_e(ŷ)
+          (:func:`raildyn.contact.geometry.equivalent_conicity`);
+        * the contact angle ϑ₀ is the mean of the two treads' contact angles when centred, and the
+          rolling radius r₀ the mean of their rolling radii;
+        * ε is read, like λ_e, over a motion of amplitude ŷ: the model's contact-angle difference is
+          Δϑ = 2εy/a, so ε = a k_ϑ(ŷ), with k_ϑ the first-harmonic slope of Δϑ(y)/2 over
+          y = ŷ sin θ (:func:`raildyn.contact.conicity.harmonic_conicity` of the Δϑ table).
+
+        The creep coefficients, the axle load, the half-spacing a and the suspension stay.
+
+        Parameters
+        ----------
+        wheel : raildyn.contact.geometry.WheelProfile
+        rail : raildyn.contact.geometry.RailProfile
+        amplitude : float
+            ŷ, m, in [0.001, 0.01]: EN 15302 quotes λ_e at 3 mm; the treads carry the wheelset to
+            about 6 mm, where a new S1002 wheel reaches its flange. Below 1 mm a new profile pair's
+            λ_e runs past the linear model's bound of 0.5.
+        gauge, tape_distance : float
+            m, as for :func:`~raildyn.contact.geometry.contact_geometry`.
+
+        Returns
+        -------
+        Wheelset
+
+        Examples
+        --------
+        A conical wheel of slope 1:20 linearises to its cone: λ_e, ϑ₀ and ε all about 0.05, the
+        values a :class:`Wheelset` takes for a cone (its roll on the rails adds 2 % to λ_e):
+
+        >>> from raildyn.contact.profiles import conical_wheel, uic60_rail
+        >>> ws = Wheelset().on_profiles(conical_wheel(1 / 20), uic60_rail(1 / 40))
+        >>> round(ws.conicity, 3), round(ws.contact_angle, 3), round(ws.contact_angle_parameter, 3)
+        (0.051, 0.05, 0.05)
+        """
+        from raildyn.contact.conicity import harmonic_conicity
+        from raildyn.contact.geometry import contact_geometry, equivalent_conicity
+
+        A = scalar("amplitude", amplitude, low=1.0e-3, high=0.01)
+        options = {"gauge": gauge, "tape_distance": tape_distance}
+        conicity = float(equivalent_conicity(wheel, rail, A, **options)[0])
+        if conicity > _MAX_ANGLE:
+            raise ValueError(
+                f"amplitude {A!r} m gives this profile pair an equivalent conicity of {conicity:.3g}, beyond "
+                f"the linear model's {_MAX_ANGLE}: take a larger amplitude (EN 15302 quotes 3 mm)"
+            )
+        y = np.linspace(-A, A, 801)
+        geometry = contact_geometry(wheel, rail, y, **options)
+        # Δϑ is odd in y (the wheels are mirror images): its odd part removes the contact search's rounding.
+        dd = 0.5 * (geometry.contact_angle_difference - geometry.contact_angle_difference[::-1])
+        centred = contact_geometry(wheel, rail, 0.0, **options)
+        return self.replace(
+            conicity=conicity,
+            contact_angle=float(centred.contact_angle.mean()),
+            contact_angle_parameter=self.half_gauge * float(harmonic_conicity(y, dd, A)[0]),
+            rolling_radius=float(centred.rolling_radius.mean()),
+        )
+
     def free(self) -> Wheelset:
         """The same wheelset with no primary suspension.
 

@@ -16,6 +16,7 @@ from matplotlib.figure import Figure
 
 from raildyn import stability as st
 from raildyn import wheelset as wh
+from raildyn.contact.profiles import s1002_wheel, uic60_rail
 from raildyn.linear_model import Assembler, LinearSystem
 from raildyn.vehicles import VerticalCar
 
@@ -270,6 +271,7 @@ ENTRIES = [
         },
     ),  # fmt: skip
     fuzz("raildyn.wheelset.Wheelset.free", lambda: on(SOFT)),
+    fuzz("raildyn.wheelset.Wheelset.on_profiles", lambda: on(SOFT, s1002_wheel(), uic60_rail(1 / 40), 3e-3)),
     fuzz("raildyn.wheelset.Wheelset.linear_system", lambda: on(SOFT)),
     fuzz("raildyn.wheelset.Wheelset.replace", lambda: on(SOFT, conicity=0.2)),
     fuzz(
