@@ -1,6 +1,8 @@
-"""The linear models on a real wheel and rail profile pair (``Wheelset.on_profiles``): the cone as its limit,
-ε read from the pair's contact angles by an independent first harmonic, and a car's critical speed on real
-wheels."""
+"""Real wheels on real rails: the linear models on a profile pair (``Wheelset.on_profiles``: the cone as its
+limit, ε read from the pair's contact angles by an independent first harmonic, a car's critical speed on real
+wheels) and the pair's own flange angle in the curving limits."""
+
+import dataclasses
 
 import numpy as np
 import pytest
@@ -8,8 +10,10 @@ import pytest
 from raildyn import stability
 from raildyn.contact.geometry import contact_geometry
 from raildyn.contact.profiles import conical_wheel, s1002_wheel, uic60_rail
-from raildyn.vehicles import cooperrider_car
-from raildyn.wheelset import Wheelset
+from raildyn.curving import quasi_static_curving
+from raildyn.track import balance_speed
+from raildyn.vehicles import LateralCar, cooperrider_car
+from raildyn.wheelset import WheelRailContact, Wheelset, profile_contact
 
 
 @pytest.mark.parametrize("slope", [0.025, 0.05, 0.1])
@@ -60,3 +64,26 @@ def test_on_profiles_refuses_an_amplitude_the_linear_model_cannot_take():
         Wheelset().on_profiles(s1002_wheel(), uic60_rail(1 / 40), 0.02)
     with pytest.raises(TypeError, match="wheel"):
         Wheelset().on_profiles("S1002", uic60_rail(1 / 40))
+
+
+def test_a_profile_pair_carries_its_own_flange_angle():
+    # S1002's flank is a straight line of slope 2.747477419 (EN 13715, section E): 70.0°. On the rail its
+    # contact angle differs from that by the wheelset's roll at flange contact (measured 3.3e-4 rad).
+    flank = np.arctan(2.747477419)
+    contact = profile_contact(s1002_wheel(), uic60_rail(1 / 40))
+    assert contact.flange_angle == pytest.approx(flank, abs=1e-3)
+    assert WheelRailContact().flange_angle == pytest.approx(np.radians(70.0), abs=1e-9)  # the cone's default
+    with pytest.raises(ValueError, match="flange_angle"):
+        WheelRailContact(flange_angle=np.radians(95.0))
+
+
+def test_quasi_static_curving_reads_the_flange_angle_of_the_contact():
+    # The flange angle shares a flange's load between tread and flange; left out, it is the contact's.
+    steep = dataclasses.replace(WheelRailContact(), flange_angle=np.radians(60.0))
+    model = LateralCar().nonlinear(contact=steep)
+    V = balance_speed(600.0, 0.1)
+    by_contact = quasi_static_curving(model, V, 600.0, 0.1)
+    given = quasi_static_curving(model, V, 600.0, 0.1, flange_angle=np.radians(60.0))
+    default = quasi_static_curving(LateralCar().nonlinear(), V, 600.0, 0.1)
+    np.testing.assert_array_equal(by_contact.derailment_quotient, given.derailment_quotient)
+    assert not np.allclose(by_contact.derailment_quotient, default.derailment_quotient)

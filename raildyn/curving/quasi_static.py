@@ -56,7 +56,6 @@ _TOLERANCE = 1.0e-9
 _ON_THE_RAILS = 0.05
 # The short run of the dynamics that brings a stalled search near the equilibrium, s.
 _SETTLE = 3.0
-_FLANGE_ANGLE = float(np.radians(70.0))  # rad, about the S1002 wheel's flange angle
 # Newton's steps before the points it leaves go to the single-point searches.
 _NEWTON_STEPS = 30
 # Rounds of the continuation from solved neighbours (the map's points converge within three or four).
@@ -288,8 +287,10 @@ def _wheels(
     return out
 
 
-def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_angle):
-    """The checked (V, R, h_t, h, tan ϑ_f) of either public function."""
+def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_angle, model):
+    """The checked (V, R, h_t, h, tan ϑ_f) of either public function; ϑ_f the model contact's by default."""
+    if flange_angle is None:
+        flange_angle = model.contact.flange_angle
     V = np.atleast_1d(_checks.plausible_array(speed_name, speed, "speed", low_open=True, allow_empty=False))
     R = np.atleast_1d(_checks.array(radius_name, radius, low=MINIMUM_RADIUS, allow_empty=False))
     D = _checks.scalar("cant", cant, low=0.0, high=MAXIMUM_CANT)
@@ -301,7 +302,7 @@ def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_ang
 
 
 def quasi_static_curving(
-    model, speed, radius, cant=0.0, *, cg_height=1.8, flange_angle=_FLANGE_ANGLE, start=None
+    model, speed, radius, cant=0.0, *, cg_height=1.8, flange_angle=None, start=None
 ) -> QuasiStaticCurving:
     """The equilibrium of a nonlinear lateral model in a curve to the left, flanges included.
 
@@ -320,10 +321,12 @@ def quasi_static_curving(
         h, height of the vehicle's centre of gravity above the rails, m, in (0, 4]: the
         unbalanced acceleration moves ΔQ = (W/2)(h/a)(a_q/g) of each axle's load W to the
         outer wheel. Default 1.8 m, the Manchester car's body (Iwnicki 1998).
-    flange_angle : float
+    flange_angle : float, optional
         ϑ_f, the flange's contact angle, rad, in (0, π/2): the flange's normal force, whose
         lateral part the flange spring gives, bears F/tan ϑ_f of the wheel's load (so that
-        the tread bears the rest). Default 70°, about the flange angle of the S1002 wheel.
+        the tread bears the rest). Default: the model's contact's
+        (:attr:`~raildyn.wheelset.WheelRailContact.flange_angle`; 70° on a cone, the S1002
+        wheel's flank, and a profile pair's own).
     start : QuasiStaticCurving, optional
         A nearby equilibrium of the same model: Newton starts from it, moved by the linear
         model's change from its point to this one, so that a widget moving one control
@@ -353,7 +356,7 @@ def quasi_static_curving(
     _checks.instance("model", model, NonlinearLateral)
     _checks.scalar("speed", speed)
     _checks.scalar("radius", radius)
-    V, R, D, h, tan_flange = _options("speed", "radius", speed, radius, cant, cg_height, flange_angle)
+    V, R, D, h, tan_flange = _options("speed", "radius", speed, radius, cant, cg_height, flange_angle, model)
     if start is not None:
         _checks.instance("start", start, QuasiStaticCurving)
         if start.labels != model.system.labels:
@@ -462,7 +465,7 @@ _MAP_UNITS = {
 }
 
 
-def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=_FLANGE_ANGLE) -> CurvingMap:
+def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=None) -> CurvingMap:
     """Quasi-static curving of a nonlinear lateral model over every pair of radius and speed.
 
     All the points are solved together (the module docstring): a 40 × 30 map of the bogie takes
@@ -478,7 +481,9 @@ def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=_
         R, m, each ≥ :data:`~raildyn.track.cant.MINIMUM_RADIUS`.
     cant : float
         h_t, m, in [0, :data:`~raildyn.track.cant.MAXIMUM_CANT`].
-    cg_height, flange_angle : float
+    cg_height : float
+        As for :func:`quasi_static_curving`.
+    flange_angle : float, optional
         As for :func:`quasi_static_curving`.
 
     Returns
@@ -501,7 +506,7 @@ def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=_
     _checks.instance("model", model, NonlinearLateral)
     s = _checks.array("speeds", speeds, ndim=1, allow_empty=False).size
     r = _checks.array("radii", radii, ndim=1, allow_empty=False).size
-    V, R, D, h, tan_flange = _options("speeds", "radii", speeds, radii, cant, cg_height, flange_angle)
+    V, R, D, h, tan_flange = _options("speeds", "radii", speeds, radii, cant, cg_height, flange_angle, model)
     # The points run over the speeds within each radius: point p is radius p // s, speed p % s.
     speeds, radii = np.tile(V, r), np.repeat(R, s)
     out = _wheels(model, _solve(model, speeds, radii, D), speeds, radii, D, h, tan_flange)

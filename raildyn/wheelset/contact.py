@@ -38,6 +38,11 @@ __all__ = [
 ]
 
 
+# rad: the S1002 wheel's flange flank, a straight line of slope 2.747477419 (EN 13715, section E; the
+# coefficients in raildyn.contact.profiles), 70.0°.
+_S1002_FLANK = float(np.arctan(2.747477419))
+
+
 @dataclass(frozen=True)
 class WheelRailContact:
     """Nonlinear wheel–rail contact of one wheelset: geometry, saturation and flange.
@@ -67,6 +72,10 @@ class WheelRailContact:
         sin ϑ/r₀ (:func:`contact_forces`), and its normal force, tilted by ϑ, enters its lateral
         force Y (:func:`raildyn.curving.quasi_static.quasi_static_curving`). None: ϑ₀ ± Δϑ(y)/2
         of the wheelset (:func:`tread_contact_angles`; ϑ₀ ± εy/a on a cone).
+    flange_angle : float
+        ϑ_f, the largest contact angle of the flange on its rail, rad, in (0, π/2): the angle of
+        Nadal's and Weinstock's limits of Y/Q (:mod:`raildyn.curving.climb`). Default 70°, the
+        flank of the S1002 wheel (EN 13715); :func:`profile_contact` reads it from the pair.
 
     Each callable is tried once, at y = −e, 0 and e, and what it returns checked.
     """
@@ -77,9 +86,11 @@ class WheelRailContact:
     rolling_radius_difference: Callable | None = None
     contact_angle_difference: Callable | None = None
     tread_angles: Callable | None = None
+    flange_angle: float = _S1002_FLANK
 
     def __post_init__(self):
         _checks.friction("friction", self.friction)
+        scalar("flange_angle", self.flange_angle, low=0.0, high=np.pi / 2, low_open=True, high_open=True)
         scalar("flange_clearance", self.flange_clearance, low=0.0, low_open=True, high=0.05)
         nonnegative("flange_stiffness", self.flange_stiffness)
         y = np.array([-1.0, 0.0, 1.0]) * self.flange_clearance
@@ -115,7 +126,8 @@ def profile_contact(
     interpolated linearly; beyond it the tread
     keeps its contact, its differences continued along their last slope, while the flange
     carries the rest as a spring of ``flange_stiffness``: a two-point contact, tread and
-    flange at once (Garg & Dukkipati 1984, ch. 4 and 8).
+    flange at once (Garg & Dukkipati 1984, ch. 4 and 8). The flange angle of the contact is the
+    steepest contact angle the pair reaches on its flange within those 20 mm.
 
     Parameters
     ----------
@@ -171,8 +183,11 @@ def profile_contact(
     dd = np.concatenate(
         [right.contact_angle_difference[last:0:-1], left.contact_angle_difference[: last + 1]]
     )
+    # The flange's own angle: the steepest contact of either wheel on its flange.
+    flange_angle = max(left.contact_angle[0].max(), right.contact_angle[1].max())
     return WheelRailContact(
         friction=friction,
+        flange_angle=float(flange_angle),
         flange_clearance=float(y[last]),
         flange_stiffness=flange_stiffness,
         rolling_radius_difference=ContactTable(shifts, dr),

@@ -298,6 +298,7 @@ ENTRIES = [
             "friction": "tiny",
             "flange_clearance": "tiny",
             "flange_stiffness": "zero big mm",
+            "flange_angle": "tiny",  # any angle in (0, π/2), as Nadal's limit takes
             "contact_angle_difference": "returns-negative",
             "tread_angles": "returns-negative",
         },
