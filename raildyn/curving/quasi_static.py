@@ -324,9 +324,9 @@ def quasi_static_curving(
     flange_angle : float, optional
         ϑ_f, the flange's contact angle, rad, in (0, π/2): the flange's normal force, whose
         lateral part the flange spring gives, bears F/tan ϑ_f of the wheel's load (so that
-        the tread bears the rest). Default: the model's contact's
-        (:attr:`~raildyn.wheelset.WheelRailContact.flange_angle`; 70° on a cone, the S1002
-        wheel's flank, and a profile pair's own).
+        the tread bears the rest). Default: the ``flange_angle`` of the model's
+        :class:`~raildyn.wheelset.WheelRailContact` (70° on a cone, the S1002 wheel's flank,
+        and a profile pair's own).
     start : QuasiStaticCurving, optional
         A nearby equilibrium of the same model: Newton starts from it, moved by the linear
         model's change from its point to this one, so that a widget moving one control
