@@ -482,7 +482,7 @@ class NonlinearLateral:
         n = self.system.size
         columns = np.ascontiguousarray(q.reshape(n, -1), dtype=float)
         P = columns.shape[1]
-        V, kappa, a_q = (np.array(np.broadcast_to(v, (P,)), dtype=float) for v in arcs)  # writable copies
+        V, kappa, a_q = (_column_values(v, P) for v in arcs)
         out = np.empty(shape)
         getattr(_engine, kernel)(self._row, columns, V, kappa, a_q, out)
         return out
@@ -510,6 +510,19 @@ class NonlinearLateral:
             q, qdot, V, kappa, lambda x: (0.5 * x * x * curve.curvature(s_c + x / 3.0))[column], force
         )
         force -= self._lateral_mass[column] * a_q
+
+
+def _column_values(value: np.ndarray, count: int) -> np.ndarray:
+    """One float per column, as the engine's kernels take them: writable and contiguous (a copy only where
+    ``value`` is not so already, as a broadcast float is not)."""
+    if (
+        value.shape == (count,)
+        and value.dtype == np.float64
+        and value.flags.writeable
+        and value.flags.c_contiguous
+    ):
+        return value
+    return np.array(np.broadcast_to(value, (count,)), dtype=float)
 
 
 def _compiled_reason(model: NonlinearLateral) -> str | None:
