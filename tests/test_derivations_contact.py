@@ -106,3 +106,23 @@ def test_derivation_refuses_a_matrix_of_the_wrong_shape():
 def test_numeric_refuses_a_speed_of_zero():
     with pytest.raises(ValueError, match="speed"):
         creepages().numeric(0.0, 0.0, 0.0, 0.0, 0.46, 0.46, 0.46, 0.75)
+
+
+def test_the_trace_line_is_derived():
+    # The derived line, evaluated on the S1002 profile and its slope, is raildyn.contact.trace_line's (the
+    # same formulas: round-off), at both signs of the yaw.
+    import sympy
+
+    from raildyn.contact import s1002_wheel, trace_line
+    from raildyn.derivations.contact import trace_line as derived_line
+
+    d = derived_line()
+    wheel = s1002_wheel()
+    slope = np.gradient(wheel.radius, wheel.lateral)
+    evaluate = sympy.lambdify(d.symbols, [d.lateral_seen, d.radius_seen, d.lead], modules="numpy")
+    for yaw in (0.01, -0.02):
+        ours = trace_line(wheel.lateral, wheel.radius, yaw, 1.5)
+        theirs = evaluate(wheel.lateral, wheel.radius, slope, yaw, 1.5)
+        for a, b in zip(ours, theirs, strict=True):
+            np.testing.assert_allclose(a, b, rtol=0, atol=1e-15)
+    assert d.sin_theta == d.symbols[2] * sympy.tan(d.symbols[3])

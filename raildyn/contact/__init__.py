@@ -57,6 +57,7 @@ from raildyn.contact.saturation import (
     saturation_scale,
     shen_hedrick_elkins,
 )
+from raildyn.contact.trace_line import trace_line
 
 __all__ = [
     "CREEP_LAWS",
@@ -103,6 +104,7 @@ __all__ = [
     "saturation_factor",
     "saturation_scale",
     "shen_hedrick_elkins",
+    "trace_line",
     "uic60_rail",
     "creepage_terms",
     "wheelset_creepages",

@@ -13,9 +13,10 @@ point u_w sits above the left rail's point u_r = u_w − y − d, where d is the
 offset of the tape circle from the rail centre line in the centred position.
 The contact is where the vertical gap between the two surfaces is least; the
 right side is the mirror image with −y. The wheelset rolls so that both wheels
-touch (first order in the roll angle; optional). The wheelset's yaw is not
-considered (no contact-point lead or lag): the geometry is that of a wheelset
-square to the track.
+touch (first order in the roll angle; optional). A yawed wheelset shows each
+rail its wheel's contact trace line instead of its profile
+(:mod:`raildyn.contact.trace_line`): the same search then gives the contact points
+of the yawed wheelset, and their lead or lag ahead of the axle.
 
 :func:`contact_geometry` returns :class:`ContactGeometry`; :func:`rolling_radius_difference`,
 :func:`contact_angles` and :func:`equivalent_conicity` are its parts a chapter needs alone.
@@ -29,6 +30,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.contact.conicity import kinematic_conicity
+from raildyn.contact.trace_line import _RADIUS_MAX, MAX_YAW, trace_line
 
 __all__ = [
     "ContactGeometry",
@@ -41,7 +43,6 @@ __all__ = [
 ]
 
 
-_RADIUS_MAX = 2.0  # m; the largest railway wheels (steam locomotives' drivers) have a radius of ~1.1 m
 _CANT_MAX = 0.1  # rail inclination (slope); in track 1:20 to 1:40, or upright
 
 
@@ -185,6 +186,11 @@ class ContactGeometry:
     roll : ndarray, shape (n,)
         Roll angle φ of the wheelset (rad), positive when the left wheel rises; zeros when the
         roll is left out.
+    lead : ndarray, shape (2, n), optional
+        How far each contact point lies ahead of the axle (m, forwards); zeros (the default) for
+        a wheelset square to the track.
+    yaw : float, optional
+        The wheelset's yaw ψ (rad, turning to the left), in [−0.03, 0.03]; 0 by default.
 
     Every number is finite; n ≥ 1.
     """
@@ -195,13 +201,18 @@ class ContactGeometry:
     rolling_radius: np.ndarray
     contact_angle: np.ndarray
     roll: np.ndarray
+    lead: np.ndarray | None = None
+    yaw: float = 0.0
 
     def __post_init__(self):
+        if self.lead is None:
+            object.__setattr__(self, "lead", np.zeros((2, *np.shape(self.shift))))
         _checks.fields(self)
+        _checks.scalar("yaw", self.yaw, low=-MAX_YAW, high=MAX_YAW)
         n = np.shape(self.shift)
         if len(n) != 1 or n[0] == 0:
             raise ValueError(f"shift must be a non-empty 1-D array, got shape {n}")
-        for name in ("wheel_position", "rail_position", "rolling_radius", "contact_angle", "roll"):
+        for name in ("wheel_position", "rail_position", "rolling_radius", "contact_angle", "roll", "lead"):
             want = n if name == "roll" else (2, *n)
             if np.shape(getattr(self, name)) != want:
                 raise ValueError(
@@ -209,7 +220,8 @@ class ContactGeometry:
                     f"{np.shape(getattr(self, name))}"
                 )
         for f in fields(self):
-            object.__setattr__(self, f.name, np.asarray(getattr(self, f.name), dtype=float))
+            if f.name != "yaw":
+                object.__setattr__(self, f.name, np.asarray(getattr(self, f.name), dtype=float))
 
     @property
     def rolling_radius_difference(self) -> np.ndarray:
@@ -400,8 +412,9 @@ _ROLL_ITERATIONS = 8  # the fixed point contracts by about 2|u_w|/T ≈ 0.05 per
 
 
 def contact_geometry(
-    wheel: WheelProfile, rail: RailProfile, shifts, *, gauge=1.435, tape_distance=1.5, roll: bool = True
-) -> ContactGeometry:
+    wheel: WheelProfile, rail: RailProfile, shifts, *, gauge=1.435, tape_distance=1.5, roll: bool = True,
+    yaw=0.0,
+) -> ContactGeometry:  # fmt: skip
     """Contact points, rolling radii and contact angles of a wheelset for each lateral shift.
 
     Each wheel touches its rail where the vertical gap is least. With
@@ -431,6 +444,10 @@ def contact_geometry(
         With ``gauge`` it must put the centred wheelset's wheels on the rails.
     roll : bool, keyword
         Include the wheelset roll angle (default True).
+    yaw : float, keyword
+        The wheelset's yaw ψ (rad, turning to the left), in [−0.03, 0.03]: each wheel touches along
+        its contact trace line (:mod:`raildyn.contact.trace_line`). Its effect on Δr and the angles
+        is of second order in ψ; the lead of each contact point is of first order.
 
     Returns
     -------
@@ -449,20 +466,23 @@ def contact_geometry(
     y = np.atleast_1d(_checks.array("shifts", shifts, allow_empty=False))
     if y.ndim != 1:
         raise ValueError(f"shifts must be a number or a 1-D array, got shape {y.shape}")
-    return _geometry(wheel, rail, y, "shifts", gauge=gauge, tape_distance=tape_distance, roll=roll)
+    return _geometry(wheel, rail, y, "shifts", gauge=gauge, tape_distance=tape_distance, roll=roll, yaw=yaw)
 
 
-def _geometry(wheel, rail, y, name, *, gauge=1.435, tape_distance=1.5, roll=True) -> ContactGeometry:
+def _geometry(wheel, rail, y, name, *, gauge=1.435, tape_distance=1.5, roll=True, yaw=0.0) -> ContactGeometry:
     """:func:`contact_geometry` for checked shifts ``y``; a wheel off its rail is blamed on ``name``."""
     _checks.instance("wheel", wheel, WheelProfile)
     _checks.instance("rail", rail, RailProfile)
     g = _checks.positive("gauge", gauge)
     t = _checks.positive("tape_distance", tape_distance)
     roll = _checks.flag("roll", roll)
+    u_e, r_e, lead = trace_line(wheel.lateral, wheel.radius, yaw, t)
+    # The rail sees the wheel's trace line; at ψ = 0 it is the profile itself.
+    profile = wheel if yaw == 0.0 else WheelProfile(wheel.name, u_e, r_e, wheel.nominal_radius)
     d = _offset(rail, g, t)
-    gap_l, u_l = _gap(wheel, rail, y, d)
-    gap_r, u_r = _gap(wheel, rail, -y, d)
-    _on_rails(wheel, rail, y, d, name, gap_l, gap_r)
+    gap_l, u_l = _gap(profile, rail, y, d)
+    gap_r, u_r = _gap(profile, rail, -y, d)
+    _on_rails(profile, rail, y, d, name, gap_l, gap_r)
     phi = np.zeros_like(y)
     if roll:
         # A roll φ (left side up) lifts a left-wheel point at u_w by φ(T/2 − u_w) and lowers a
@@ -472,11 +492,17 @@ def _geometry(wheel, rail, y, name, *, gauge=1.435, tape_distance=1.5, roll=True
             e_r = -np.min(gap_r + phi[:, None] * u_r, axis=1)
             phi = (e_l - e_r) / t
     gap_l, gap_r = gap_l - phi[:, None] * u_l, gap_r + phi[:, None] * u_r
-    _on_rails(wheel, rail, y, d, name, gap_l, gap_r)  # the roll may carry a contact to an edge
-    left = _contact_on(gap_l, wheel, rail, y, d)
-    right = _contact_on(gap_r, wheel, rail, -y, d)
+    _on_rails(profile, rail, y, d, name, gap_l, gap_r)  # the roll may carry a contact to an edge
+    left = _contact_on(gap_l, profile, rail, y, d)
+    right = _contact_on(gap_r, profile, rail, -y, d)
     wheel_pos, rail_pos, radius, angle = (np.stack([lv, rv]) for lv, rv in zip(left, right, strict=True))
-    return ContactGeometry(y, wheel_pos, rail_pos, radius, angle, phi)
+    if yaw != 0.0:
+        # Back from the trace line to the wheel's own profile: its point u and its radius there.
+        wheel_pos = np.interp(wheel_pos, u_e, wheel.lateral)
+        radius = np.interp(wheel_pos, wheel.lateral, wheel.radius)
+    # The lead: ahead of the axle on the left wheel for ψ > 0, behind it on the right.
+    ahead = np.interp(wheel_pos, wheel.lateral, lead) * np.array([[1.0], [-1.0]])
+    return ContactGeometry(y, wheel_pos, rail_pos, radius, angle, phi, ahead, float(yaw))
 
 
 def rolling_radius_difference(wheel: WheelProfile, rail: RailProfile, shifts, **kwargs) -> np.ndarray:

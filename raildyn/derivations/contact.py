@@ -1,4 +1,5 @@
-"""Chapter 4's creepages derived: the slip of each contact point from the velocities of the wheelset.
+"""Chapter 4's creepages derived: the slip of each contact point from the velocities of the wheelset;
+and the contact trace line of a yawed wheel (:func:`trace_line`).
 
 A wheelset runs at the speed V, moves sideways at ẏ, is yawed by ψ at the rate ψ̇ and spins about
 its axle at Ω = V/r₀. The velocity of the wheel's material at each contact point, v_c + ω × r_P,
@@ -20,7 +21,7 @@ import sympy
 from raildyn import _checks
 from raildyn.derivations._core import Step
 
-__all__ = ["CreepageDerivation", "creepages"]
+__all__ = ["CreepageDerivation", "TraceLineDerivation", "creepages", "trace_line"]
 
 _ARGUMENTS = (
     "speed",
@@ -231,3 +232,94 @@ def creepages() -> CreepageDerivation:
         ),
     ]
     return CreepageDerivation(**out, symbols=(V, yd, psi, psid, rL, rR, r0, a, thL, thR), steps=tuple(steps))
+
+
+@dataclass(frozen=True, eq=False)  # sympy expressions: compared by identity
+class TraceLineDerivation:
+    """The contact trace line of a yawed wheel, derived symbolically (left wheel).
+
+    Attributes
+    ----------
+    sin_theta : sympy.Expr
+        sin θ of the wheel angle θ at which the wheel's surface, at its profile point u, can touch a
+        prismatic rail: r′ tan ψ.
+    lateral_seen, radius_seen, lead : sympy.Expr
+        u_e, r_e and x: where that point lies across the track (m, from the tape circle's place
+        square to the track, towards the flange), below the axle (m) and ahead of it (m).
+    symbols : tuple of sympy.Symbol
+        u, r, r′, ψ, T: the profile point (m), its radius (m) and slope, the yaw (rad) and the
+        tape-circle distance (m), as :func:`raildyn.contact.trace_line.trace_line` takes them.
+    steps : tuple of Step
+        The derivation, step by step.
+    """
+
+    sin_theta: sympy.Expr
+    lateral_seen: sympy.Expr
+    radius_seen: sympy.Expr
+    lead: sympy.Expr
+    symbols: tuple
+    steps: tuple = ()
+
+    def __post_init__(self):
+        for name in ("sin_theta", "lateral_seen", "radius_seen", "lead"):
+            _checks.instance(name, getattr(self, name), sympy.Expr)
+        if not isinstance(self.symbols, tuple) or len(self.symbols) != 5:
+            raise TypeError(
+                f"symbols must be a tuple of 5 sympy Symbols (u, r, r′, ψ, T), got {self.symbols!r:.80}"
+            )
+        for i, step in enumerate(self.steps):
+            _checks.instance(f"steps[{i}]", step, Step)
+
+
+@functools.cache
+def trace_line() -> TraceLineDerivation:
+    """Where a yawed wheel can touch its rail: the condition on the surface normal, solved (book ch. 4).
+
+    The left wheel is a body of revolution about the axle: its point at the axle coordinate
+    s = T/2 − u (u the profile coordinate, positive towards the flange, inboard) and wheel angle θ
+    lies at (r sin θ, s, −r cos θ) in the wheelset's axes, with the outward normal
+    (sin θ, −dr/ds, −cos θ) = (sin θ, r′, −cos θ). Turned by ψ (nose to the left), its component along
+    the track must vanish for the point to touch a rail that is straight along the track:
+    sin θ cos ψ − r′ sin ψ = 0, that is sin θ = r′ tan ψ, θ measured forward; the point then lies
+    r r′ sin ψ ahead of the axle (the module :mod:`raildyn.contact.trace_line` states the line).
+
+    Returns
+    -------
+    TraceLineDerivation
+
+    Examples
+    --------
+    >>> d = trace_line()
+    >>> d.sin_theta
+    r_prime*tan(psi)
+    """
+    u, r, T = sympy.symbols("u r T", positive=True)
+    rp, psi, theta = sympy.symbols("r_prime psi theta", real=True)
+    s = T / 2 - u
+    point = sympy.Matrix([r * sympy.sin(theta), s, -r * sympy.cos(theta)])
+    normal = sympy.Matrix([sympy.sin(theta), rp, -sympy.cos(theta)])  # dr/ds = −r′
+    # The wheelset turned by ψ about the vertical (nose to the left): its axes in the track's.
+    turn = sympy.Matrix(
+        [[sympy.cos(psi), -sympy.sin(psi), 0], [sympy.sin(psi), sympy.cos(psi), 0], [0, 0, 1]]
+    )
+    longitudinal = sympy.simplify((turn * normal)[0])
+    solved = sympy.solve(sympy.Eq(longitudinal, 0), sympy.sin(theta))
+    sin_theta = sympy.simplify(solved[0]) if solved else rp * sympy.tan(psi)
+    at = {sympy.sin(theta): sin_theta, sympy.cos(theta): sympy.sqrt(1 - sin_theta**2)}
+    where = (turn * point).subs(at)
+    lateral_seen = sympy.simplify(T / 2 - where[1])
+    radius_seen = sympy.simplify(-where[2])
+    lead = sympy.simplify(where[0] - (turn * sympy.Matrix([0, s, 0]))[0])
+    steps = (
+        Step(
+            "a point of the left wheel, in the wheelset's axes",
+            sympy.Eq(sympy.Symbol("P"), point, evaluate=False),
+        ),
+        Step("its outward normal", sympy.Eq(sympy.Symbol("n"), normal, evaluate=False)),
+        Step("its longitudinal component in the track's axes must vanish", sympy.Eq(longitudinal, 0)),
+        Step("so the wheel angle of the touching point", sympy.Eq(sympy.sin(theta), sin_theta)),
+        Step("the point across the track, from the tape circle", sympy.Eq(sympy.Symbol("u_e"), lateral_seen)),
+        Step("below the axle", sympy.Eq(sympy.Symbol("r_e"), radius_seen)),
+        Step("ahead of the axle", sympy.Eq(sympy.Symbol("x"), lead)),
+    )
+    return TraceLineDerivation(sin_theta, lateral_seen, radius_seen, lead, (u, r, rp, psi, T), steps)

@@ -1,12 +1,14 @@
-"""Fuzz registry: chapter 4's creepages derived from the contact points' velocities."""
+"""Fuzz registry: chapter 4's creepages derived from the contact points' velocities; a yawed wheel's
+trace line."""
 
 from __future__ import annotations
 
 from fuzzing import call, fuzz, on
 
-from raildyn.derivations.contact import creepages
+from raildyn.derivations.contact import creepages, trace_line
 
 DERIVED = creepages()
+TRACE = trace_line()
 ARGS = (40.0, 0.01, 1e-3, 0.02, 0.4603, 0.4597, 0.46, 0.75, 0.05, 0.05)
 
 ENTRIES = [
@@ -29,5 +31,12 @@ ENTRIES = [
             "contact_angle_left": "zero negative",
             "contact_angle_right": "zero negative",
         },
+    ),
+    fuzz("raildyn.derivations.contact.trace_line", lambda: call()),
+    fuzz(
+        "raildyn.derivations.contact.TraceLineDerivation",
+        lambda: call(
+            TRACE.sin_theta, TRACE.lateral_seen, TRACE.radius_seen, TRACE.lead, TRACE.symbols, TRACE.steps
+        ),
     ),
 ]
