@@ -34,6 +34,7 @@ MOVES = [
     ("creep_laws a/b", chapter04.CREEP_LAWS, "a_over_b", [0.3, 0.6, 1.0, 2.0, 3.0, 5.0]),
     ("fastsim_patch ξ", chapter04.FASTSIM_PATCH, "xi_permille", [-3.0, -1.0, 0.0, 1.0, 2.0, 4.0]),
     ("profiles gauge", chapter04.PROFILES, "gauge_mm", [1432.0, 1435.0, 1437.0, 1440.0]),
+    ("wheel_on_rail y", chapter04.WHEEL_ON_RAIL, "shift_mm", [-7.5, -3.0, 0.5, 4.0, 6.25, 7.0]),
 ]
 
 
@@ -101,7 +102,36 @@ def fastsim_cases(repeats: int) -> list[Case]:
     ]
 
 
+def _contact_table_case(repeats: int) -> Case:
+    # The contact tables of one profile pair (S1002 on UIC 60 at 1:40, 81 shifts each way to 20 mm, with the
+    # wheelset's roll), as the nonlinear models take them: profile_contact's two vectorised searches against
+    # one contact_geometry call per shift. Both give the same tables before the timing counts.
+    from raildyn.contact.geometry import contact_geometry
+    from raildyn.contact.profiles import s1002_wheel, uic60_rail
+    from raildyn.wheelset import profile_contact
+
+    wheel, rail = s1002_wheel(), uic60_rail(1 / 40)
+    shifts = np.arange(0.0, 0.02 + 1.25e-4, 2.5e-4)
+
+    def one_by_one(i):
+        return [contact_geometry(wheel, rail, [sign * y]) for sign in (1.0, -1.0) for y in shifts]
+
+    table = profile_contact(wheel, rail).rolling_radius_difference
+    inside = table.x[(table.x >= 0) & (table.x <= 0.0065 + 1e-9)]
+    single = [float(contact_geometry(wheel, rail, [y]).rolling_radius_difference[0]) for y in inside]
+    np.testing.assert_allclose(table(inside), single, rtol=0, atol=1e-12)
+    return Case(
+        "contact tables of one profile pair (S1002 / UIC 60 1:40, 162 shifts with roll)",
+        timed(lambda i: profile_contact(wheel, rail), repeats),
+        timed(one_by_one, repeats),
+        "≤ 0.5 s",
+        "contact_geometry one shift at a time",
+    )
+
+
 def cases(repeats: int):
-    return fastsim_cases(repeats) + [
-        widget_case(label, recipe, control, values, repeats) for label, recipe, control, values in MOVES
-    ]
+    return (
+        fastsim_cases(repeats)
+        + [_contact_table_case(repeats)]
+        + [widget_case(label, recipe, control, values, repeats) for label, recipe, control, values in MOVES]
+    )

@@ -56,6 +56,7 @@ MOVES = {
     chapter04.fastsim_patch: dict(xi_permille=3.0, eta_permille=-1.0, spin=0.5, friction=0.2),
     # A cone gives the same Δr(y) = 2λy on any rail and gauge, so the wheel changes last.
     chapter04.profiles: dict(rail="60E1 at 1:20", gauge_mm=1440.0, wheel="cone 1:20"),
+    chapter04.wheel_on_rail: dict(shift_mm=7.0, rail="60E1 at 1:20", wheel="cone 1:40"),
     chapter05.klingel: dict(conicity=0.3, rolling_radius_mm=400.0, semi_wheelbase=1.0),
     chapter05.wheelset_roots: dict(conicity=0.3, yaw_stiffness=8.0, lateral_stiffness=3.0),
     chapter05.hunting_wheelset: dict(speed_kmh=250.0, phase_deg=90.0),

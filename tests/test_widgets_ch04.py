@@ -1,5 +1,6 @@
 """Chapter 4 widgets driven without a browser: every control changes the picture, in place."""
 
+import numpy as np
 import pytest
 
 from raildyn.contact import kalker_coefficients
@@ -41,3 +42,24 @@ def test_profile_status_gives_en15302_and_the_first_harmonic():
     status = container.children[-2].children[-1].value
     # A rolled 1:20 cone on the R300 crown: λ(1 + Rλ/a) = 0.0510 by both methods.
     assert "λ_e(3 mm) = 0.051 (EN 15302; first harmonic 0.051)" in status
+
+
+def test_wheel_on_rail_touches_where_the_geometry_says_and_jumps_to_the_flange():
+    from raildyn.contact import contact_geometry, s1002_wheel, uic60_rail
+
+    container, update = chapter04.wheel_on_rail()
+    status = container.children[-2].children[-1]
+    g = contact_geometry(s1002_wheel(), uic60_rail(1 / 40), [6.0e-3, 7.0e-3])
+    for k, y in enumerate((6.0, 7.0)):
+        update(shift_mm=y, wheel="S1002", rail="60E1 at 1:40")
+        rail_line, wheel_line, point = container.live.figure.axes[0].lines[:3]
+        u, z = point.get_xdata()[0], point.get_ydata()[0]
+        # the contact point lies on both drawn surfaces (to the interpolation of the drawn lines)
+        assert z == pytest.approx(np.interp(u, *rail_line.get_data()), abs=1e-6)
+        assert z == pytest.approx(np.interp(u, *wheel_line.get_data()), abs=1e-6)
+        assert u == pytest.approx(1e3 * g.rail_position[0, k], abs=1e-9)
+    # 6 mm: still on the tread; 7 mm: jumped to the flange, its tread lifted clear
+    update(shift_mm=6.0)
+    assert "left: tread" in status.value
+    update(shift_mm=7.0)
+    assert "left: flange" in status.value and "mm clear" in status.value

@@ -23,7 +23,7 @@ elsewhere.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache, partial
 
 import numpy as np
@@ -242,7 +242,6 @@ def _wheels(
     R: np.ndarray,
     D: float,
     h: float,
-    tan_flange: float,
 ):
     """Per-wheelset results for the equilibria q (n, P) at the speeds V and radii R (P,): a dict of arrays
     whose first axis is the wheelset (k) and then P (and 2 wheels [inner, outer] for Y and Q)."""
@@ -270,12 +269,12 @@ def _wheels(
         out["wear"][j] = forces.wear_number.sum(axis=0)
         out["guiding"][j] = contact_forces(ws, model.contact, y[j], psi[j], 0.0, V / R, V)[0]
         # Q: each wheel's share of the axle load with the roll moment of m a_q at h; a flange bears
-        # F/tan ϑ_f of it, the tread the rest, tilted by its contact angle (tread_contact_angles)
-        # towards the track's centre line (inner wheel: to the right, outer: left).
+        # its flange_vertical of it, the tread the rest, tilted by its contact angle
+        # (tread_contact_angles) towards the track's centre line (inner wheel: to the right, outer: left).
         a, W = ws.half_gauge, ws.axle_load
         transfer = 0.5 * W * h / a * a_q / GRAVITY
         Q[j] = 0.5 * W - transfer, 0.5 * W + transfer
-        tread = Q[j] - np.abs(forces.flange) / tan_flange
+        tread = Q[j] - forces.flange_vertical
         tilt = tread_contact_angles(ws, model.contact, y[j])
         Y[j] = forces.lateral + forces.flange + np.array([[-1.0], [1.0]]) * tread * np.tan(tilt)
     if np.any(Q <= 0.0):
@@ -288,7 +287,8 @@ def _wheels(
 
 
 def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_angle, model):
-    """The checked (V, R, h_t, h, tan ϑ_f) of either public function; ϑ_f the model contact's by default."""
+    """The checked (V, R, h_t, h) of either public function, and the model with the flange angle ϑ_f
+    given (the model contact's by default) in its contact."""
     if flange_angle is None:
         flange_angle = model.contact.flange_angle
     V = np.atleast_1d(_checks.plausible_array(speed_name, speed, "speed", low_open=True, allow_empty=False))
@@ -298,7 +298,9 @@ def _options(speed_name, radius_name, speed, radius, cant, cg_height, flange_ang
     delta = _checks.scalar(
         "flange_angle", flange_angle, low=0.0, high=np.pi / 2, low_open=True, high_open=True
     )
-    return V, R, D, h, float(np.tan(delta))
+    if delta != model.contact.flange_angle:
+        model = model.replace(contact=replace(model.contact, flange_angle=delta))
+    return V, R, D, h, model
 
 
 def quasi_static_curving(
@@ -326,7 +328,8 @@ def quasi_static_curving(
         lateral part the flange spring gives, bears F/tan ϑ_f of the wheel's load (so that
         the tread bears the rest). Default: the ``flange_angle`` of the model's
         :class:`~raildyn.wheelset.WheelRailContact` (70° on a cone, the S1002 wheel's flank,
-        and a profile pair's own).
+        and a profile pair's own); given, it replaces the contact's (on a two-point contact
+        it shapes the flange's creep forces too).
     start : QuasiStaticCurving, optional
         A nearby equilibrium of the same model: Newton starts from it, moved by the linear
         model's change from its point to this one, so that a widget moving one control
@@ -356,7 +359,7 @@ def quasi_static_curving(
     _checks.instance("model", model, NonlinearLateral)
     _checks.scalar("speed", speed)
     _checks.scalar("radius", radius)
-    V, R, D, h, tan_flange = _options("speed", "radius", speed, radius, cant, cg_height, flange_angle, model)
+    V, R, D, h, model = _options("speed", "radius", speed, radius, cant, cg_height, flange_angle, model)
     if start is not None:
         _checks.instance("start", start, QuasiStaticCurving)
         if start.labels != model.system.labels:
@@ -367,7 +370,7 @@ def quasi_static_curving(
         there = _linear_starts(model.system, np.array([start.speed]), np.array([start.radius]), start.cant)
         start = start.displacement[:, None] + here - there
     q = _solve(model, V, R, D, start)
-    out = _wheels(model, q, V, R, D, h, tan_flange)
+    out = _wheels(model, q, V, R, D, h)
     system = model.system
     return QuasiStaticCurving(
         float(R[0]), float(V[0]), D, unbalanced_acceleration(float(V[0]), float(R[0]), D), system.labels,
@@ -506,10 +509,10 @@ def curving_map(model, speeds, radii, cant=0.0, *, cg_height=1.8, flange_angle=N
     _checks.instance("model", model, NonlinearLateral)
     s = _checks.array("speeds", speeds, ndim=1, allow_empty=False).size
     r = _checks.array("radii", radii, ndim=1, allow_empty=False).size
-    V, R, D, h, tan_flange = _options("speeds", "radii", speeds, radii, cant, cg_height, flange_angle, model)
+    V, R, D, h, model = _options("speeds", "radii", speeds, radii, cant, cg_height, flange_angle, model)
     # The points run over the speeds within each radius: point p is radius p // s, speed p % s.
     speeds, radii = np.tile(V, r), np.repeat(R, s)
-    out = _wheels(model, _solve(model, speeds, radii, D), speeds, radii, D, h, tan_flange)
+    out = _wheels(model, _solve(model, speeds, radii, D), speeds, radii, D, h)
     k = len(model.system.wheelsets)
     fields = {
         name: out[key].T.reshape(r, s, k)

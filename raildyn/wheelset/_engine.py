@@ -31,12 +31,14 @@ from raildyn.wheelset import _law
 # The row of one model at one speed: a header of fixed places, then the arrays at the offsets it gives.
 _N, _NW, _SPEED, _CURVED, _START = 0, 1, 2, 3, 4
 _CURVE = 5  # s₀, s₁, s₂, s₃ (the ends of the pieces), R, L, h_t, rail spacing: places 5–12
-_CONTACT = 13  # μ, the flange clearance and the flange stiffness: places 13–15
-_DR, _DR_SIZE, _DD, _DD_SIZE = 16, 17, 18, 19  # table offsets and sizes; offset −1: the cone
-_MK, _MC, _MINV, _WHEELSETS, _LATERAL = 20, 21, 22, 23, 24  # offsets of M⁻¹K_s, M⁻¹C_s, M⁻¹, …
-_K, _MASS = 25, 26  # offsets of K_s and of the lateral mass vector (the forces at rest on an arc)
-_TL, _TL_SIZE, _TR, _TR_SIZE = 27, 28, 29, 30  # the tread angles' tables; offset −1: ϑ₀ ± Δϑ/2
-_HEADER = 31
+_CONTACT = 13  # the contact's parameters (raildyn.wheelset._law.CONTACT_FIELDS): places 13–18
+_DR, _DR_SIZE, _DD, _DD_SIZE = 19, 20, 21, 22  # table offsets and sizes; offset −1: the cone
+_MK, _MC, _MINV, _WHEELSETS, _LATERAL = 23, 24, 25, 26, 27  # offsets of M⁻¹K_s, M⁻¹C_s, M⁻¹, …
+_K, _MASS = 28, 29  # offsets of K_s and of the lateral mass vector (the forces at rest on an arc)
+_TL, _TL_SIZE, _TR, _TR_SIZE = 30, 31, 32, 33  # the tread angles' tables; offset −1: ϑ₀ ± Δϑ/2
+_SHARED, _CENTRED = 34, 35  # 1 if the four tables share their shifts; the tables' ϑ_L(0), ϑ_R(0): 35, 36
+_HEADER = 37
+_N_CONTACT = len(_law.CONTACT_FIELDS)
 # One wheelset: its coordinates' places iy and iψ, its place x along the vehicle, then the law's
 # parameters (raildyn.wheelset._law.FIELDS).
 _PLACES = 3
@@ -67,7 +69,7 @@ def pack(model, speed=None) -> np.ndarray:
     pieces += [np.ravel(model._K_suspension), model._lateral_mass]
     header = np.zeros(_HEADER)
     header[[_N, _NW, _SPEED, _START]] = n, len(rows), 0.0 if speed is None else speed, model.start
-    header[_CONTACT : _CONTACT + 3] = contact.friction, contact.flange_clearance, contact.flange_stiffness
+    header[_CONTACT : _CONTACT + len(_law.CONTACT_FIELDS)] = _law.contact_parameters(contact)
     if curve is not None:
         header[_CURVED] = 1.0
         header[_CURVE : _CURVE + 8] = (*curve.ends(), curve.radius, curve.transition_length, curve.cant,
@@ -82,6 +84,10 @@ def pack(model, speed=None) -> np.ndarray:
             header[place], header[place + 1] = offset, table[0].size
             pieces.append(np.concatenate(table))
             offset += 2 * table[0].size
+    if all(t is not None and np.array_equal(t[0], tables[0][0]) for t in tables):
+        header[_SHARED] = 1.0  # one search of the shifts serves all four (profile_contact's tables)
+    if contact.tread_angles is not None:
+        header[_CENTRED : _CENTRED + 2] = contact.tread_angles(0.0)
     return np.concatenate([header, *pieces])
 
 
@@ -113,6 +119,8 @@ def _at(row, place, y):
 def wheel_rail(row, w, y, psi, ydot, psidot, speed):
     """Lateral force (N) and yaw moment (N·m) of the rails on wheelset ``w`` of a packed row."""
     o = int(row[_WHEELSETS]) + _WS * w + _PLACES  # the wheelset's parameters in the row
+    if row[_SHARED] > 0.0:
+        return _on_tables(row, o, y, psi, ydot, psidot, speed)
     dr, dd = _law.cone(row, o, y)
     if row[_DR] >= 0.0:
         dr = _at(row, _DR, y)
@@ -125,12 +133,25 @@ def wheel_rail(row, w, y, psi, ydot, psidot, speed):
         centred_l, centred_r = _law.tread(row, o, dd0)
     else:
         theta_l, theta_r = _at(row, _TL, y), _at(row, _TR, y)
-        centred_l, centred_r = _at(row, _TL, 0.0), _at(row, _TR, 0.0)
-    friction, clearance, stiffness = row[_CONTACT], row[_CONTACT + 1], row[_CONTACT + 2]
+        centred_l, centred_r = row[_CENTRED], row[_CENTRED + 1]
+    c = row[_CONTACT : _CONTACT + _N_CONTACT]
     return _law.wheelset(
-        row, o, friction, clearance, stiffness, dr, dd, theta_l, theta_r, centred_l, centred_r, y, psi, ydot,
-        psidot, speed,
-    )  # fmt: skip
+        row, o, c, dr, dd, theta_l, theta_r, centred_l, centred_r, y, psi, ydot, psidot, speed
+    )
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _on_tables(row, o, y, psi, ydot, psidot, speed):
+    """:func:`wheel_rail` on four tables over one set of shifts: y placed once among them."""
+    o_dr, m = int(row[_DR]), int(row[_DR_SIZE])
+    i, fraction = _law.place(row[o_dr : o_dr + m], y)
+    dr = _law.at_place(row[o_dr + m : o_dr + 2 * m], i, fraction)
+    dd = _law.at_place(row[int(row[_DD]) + m : int(row[_DD]) + 2 * m], i, fraction)
+    theta_l = _law.at_place(row[int(row[_TL]) + m : int(row[_TL]) + 2 * m], i, fraction)
+    theta_r = _law.at_place(row[int(row[_TR]) + m : int(row[_TR]) + 2 * m], i, fraction)
+    c = row[_CONTACT : _CONTACT + _N_CONTACT]
+    return _law.wheelset(row, o, c, dr, dd, theta_l, theta_r, row[_CENTRED], row[_CENTRED + 1], y, psi, ydot,
+                         psidot, speed)  # fmt: skip
 
 
 @numba.njit(cache=True, error_model="numpy")

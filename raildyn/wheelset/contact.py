@@ -76,6 +76,16 @@ class WheelRailContact:
         ϑ_f, the largest contact angle of the flange on its rail, rad, in (0, π/2): the angle of
         Nadal's and Weinstock's limits of Y/Q (:mod:`raildyn.curving.climb`). Default 70°, the
         flank of the S1002 wheel (EN 13715); :func:`profile_contact` reads it from the pair.
+    two_point : bool
+        False (the default): the flange is the lateral spring of Cooperrider's model and nothing
+        more. True: it is a second contact beside the tread, with its normal force |H|/sin ϑ_f
+        (H the spring's force), the creepages of its own radius and angle, its own saturated creep
+        forces, and the vertical load it takes off its wheel's tread (see
+        :func:`contact_forces`); :func:`profile_contact` gives a profile pair so.
+    flange_radius_excess : float
+        r_f − r₀, m, in [0, 0.05]: how much larger the wheel's radius is at the flange contact
+        than at its tape circle (its longitudinal creepage on a two-point contact). Default 0
+        (the spring flange has none); :func:`profile_contact` reads it from the pair.
 
     Each callable is tried once, at y = −e, 0 and e, and what it returns checked.
     """
@@ -87,9 +97,13 @@ class WheelRailContact:
     contact_angle_difference: Callable | None = None
     tread_angles: Callable | None = None
     flange_angle: float = _S1002_FLANK
+    two_point: bool = False
+    flange_radius_excess: float = 0.0
 
     def __post_init__(self):
         _checks.friction("friction", self.friction)
+        _checks.flag("two_point", self.two_point)
+        scalar("flange_radius_excess", self.flange_radius_excess, low=0.0, high=0.05)
         scalar("flange_angle", self.flange_angle, low=0.0, high=np.pi / 2, low_open=True, high_open=True)
         scalar("flange_clearance", self.flange_clearance, low=0.0, low_open=True, high=0.05)
         nonnegative("flange_stiffness", self.flange_stiffness)
@@ -111,6 +125,7 @@ class WheelRailContact:
 
 _FLANGE_CONTACT_ANGLE = 0.7  # rad (40°): a contact steeper than this is on the flange, not the tread
 _PROFILE_STEP = 2.5e-4  # m, the lateral step of the contact tables
+_BEYOND = 0.02  # m: the tables' last points lie this far beyond the clearance (and go on at that slope)
 
 
 def profile_contact(
@@ -123,11 +138,15 @@ def profile_contact(
     contact angle passes 40°: there the contact jumps from the tread to the flange, and that
     shift is the flangeway clearance e. Inside it, the rolling-radius and contact-angle
     differences Δr(y) and Δϑ(y) and the two tread angles ϑ_L(y), ϑ_R(y) are tabulated and
-    interpolated linearly; beyond it the tread
-    keeps its contact, its differences continued along their last slope, while the flange
-    carries the rest as a spring of ``flange_stiffness``: a two-point contact, tread and
-    flange at once (Garg & Dukkipati 1984, ch. 4 and 8). The flange angle of the contact is the
-    steepest contact angle the pair reaches on its flange within those 20 mm.
+    interpolated linearly; beyond it the tread keeps its contact, while the flange touches
+    too, pressed by the rail's lateral stiffness ``flange_stiffness``: a two-point contact,
+    tread and flange at once (Garg & Dukkipati 1984, ch. 4 and 8), each with its own normal
+    load, creepages and creep forces (``two_point``). The flange angle of the contact is
+    the steepest contact angle the pair reaches on its flange within those 20 mm, and its radius
+    excess the flange contact's r − r₀ where the contact first jumps. Beyond e the flanging
+    wheel's rail gives way under its flange, so that wheel's tread contact stays where it was: the
+    tables hold the angles at their values at ±e, and Δr changes only by the other wheel's
+    rolling on along its tread (the tangent of its contact angle per metre of shift).
 
     Parameters
     ----------
@@ -183,11 +202,23 @@ def profile_contact(
     dd = np.concatenate(
         [right.contact_angle_difference[last:0:-1], left.contact_angle_difference[: last + 1]]
     )
-    # The flange's own angle: the steepest contact of either wheel on its flange.
+    # Beyond the clearance the flanging wheel's rail gives way under its flange: that wheel's tread contact
+    # stays where it was, and only the other wheel rolls on along its tread, its radius falling as the
+    # tangent of its contact angle. The angles keep their values at ±e.
+    shifts = np.concatenate([[shifts[0] - _BEYOND], shifts, [shifts[-1] + _BEYOND]])
+    angles = [np.concatenate([[v[0]], v, [v[-1]]]) for v in angles]
+    dd = np.concatenate([[dd[0]], dd, [dd[-1]]])
+    ends = [dr[0] - np.tan(angles[0][0]) * _BEYOND, dr[-1] + np.tan(angles[1][-1]) * _BEYOND]
+    dr = np.concatenate([[ends[0]], dr, [ends[1]]])
+    # The flange's own angle: the steepest contact of either wheel on its flange; its radius: where the
+    # contact first jumps to it (the two wheels are mirror images: the left one's).
     flange_angle = max(left.contact_angle[0].max(), right.contact_angle[1].max())
+    excess = left.rolling_radius[0, last + 1] - wheel.nominal_radius
     return WheelRailContact(
         friction=friction,
         flange_angle=float(flange_angle),
+        two_point=True,
+        flange_radius_excess=float(excess),
         flange_clearance=float(y[last]),
         flange_stiffness=flange_stiffness,
         rolling_radius_difference=ContactTable(shifts, dr),
@@ -401,9 +432,7 @@ def _contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psido
     )
     lateral, yaw = _law.wheelset_many(
         p,
-        contact.friction,
-        contact.flange_clearance,
-        contact.flange_stiffness,
+        _law.contact_parameters(contact),
         dr,
         dd,
         theta_l,
@@ -425,13 +454,20 @@ class WheelForces:
 
     Attributes
     ----------
-    longitudinal, lateral : ndarray, shape (2, ...)
-        Saturated creep forces on each wheel, N (forwards, to the left).
+    longitudinal : ndarray, shape (2, ...)
+        Saturated longitudinal creep force on each wheel, N (forwards): its tread's and, on a
+        two-point contact, its flange's.
+    lateral : ndarray, shape (2, ...)
+        Saturated lateral creep force of each wheel's tread, N (to the left).
     flange : ndarray, shape (2, ...)
-        Lateral force of the flange contact on each wheel, N (to the left; 0 off the flange).
+        Lateral force of the flange contact on each wheel, N (to the left; 0 off the flange): its
+        normal force's and, on a two-point contact, its creep force's.
     wear_number : ndarray, shape (2, ...)
-        Tγ = |T_x γ_x| + |T_y γ_y| of each wheel, N (J/m): the creep forces' work per metre
-        rolled, the wear index of Pearce & Sherratt (1991).
+        Tγ = |T_x γ_x| + |T_y γ_y| of each wheel's contacts, N (J/m): the creep forces' work per
+        metre rolled, the wear index of Pearce & Sherratt (1991).
+    flange_vertical : ndarray, shape (2, ...)
+        The vertical load the flange contact of each wheel bears, N (0 off the flange): of its normal
+        force |H|/tan ϑ_f and, on a two-point contact, of its creep force; the tread bears the rest.
 
     All finite, of one shape (2, ...); the wear number ≥ 0.
     """
@@ -440,10 +476,11 @@ class WheelForces:
     lateral: np.ndarray
     flange: np.ndarray
     wear_number: np.ndarray
+    flange_vertical: np.ndarray
 
     def __post_init__(self):
         shape = np.shape(self.longitudinal)
-        for name in ("longitudinal", "lateral", "flange", "wear_number"):
+        for name in ("longitudinal", "lateral", "flange", "wear_number", "flange_vertical"):
             value = _checks.array(name, getattr(self, name), low=0.0 if name == "wear_number" else None)
             if value.ndim == 0 or value.shape[0] != 2 or value.shape != shape:
                 raise ValueError(
@@ -456,7 +493,7 @@ def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, 
     """The rails' creep and flange forces on each wheel of a wheelset, nonlinear; arrays broadcast.
 
     The same forces as :func:`contact_forces`, wheel by wheel: each wheel's creep forces
-    −f γ scaled by the saturation factor, and the flange spring on the wheel whose flange
+    −f γ scaled by the saturation factor, and the flange contact on the wheel whose flange
     touches (the left one for y > e).
 
     Parameters
@@ -480,17 +517,11 @@ def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, 
     """
     y, psi, ydot, psidot, speed = _motion(ws, contact, y, psi, ydot, psidot, speed)
     p, dr, _, theta_l, theta_r, centred_l, centred_r = _geometry(ws, contact, y)
-    (dr, theta_l, theta_r, psi, ydot, psidot, speed), shape = _flat(
-        dr, theta_l, theta_r, psi, ydot, psidot, speed
+    (dr, theta_l, theta_r, y, psi, ydot, psidot, speed), shape = _flat(
+        dr, theta_l, theta_r, y, psi, ydot, psidot, speed
     )
-    xi_l, xi_r, xi_y, fx_l, fy_l, fx_r, fy_r = _law.wheels_many(
-        p, contact.friction, dr, theta_l, theta_r, centred_l, centred_r, psi, ydot, psidot, speed
-    ).reshape((7, *shape))
-    tx, ty = np.stack([fx_l, fx_r]), np.stack([fy_l, fy_r])
-    flange = _law.flange(y, contact.flange_clearance, contact.flange_stiffness)
-    return WheelForces(
-        tx,
-        ty,
-        np.stack([np.where(y > 0, flange, 0.0), np.where(y < 0, flange, 0.0)]),
-        np.abs(tx * np.stack([xi_l, xi_r])) + np.abs(ty * xi_y),
-    )
+    rows = _law.wheels_many(
+        p, _law.contact_parameters(contact), dr, theta_l, theta_r, centred_l, centred_r, y, psi, ydot, psidot,
+        speed,
+    ).reshape((5, 2, *shape))  # fmt: skip
+    return WheelForces(*rows[:2], rows[2], rows[4], rows[3])

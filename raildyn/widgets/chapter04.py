@@ -1,4 +1,5 @@
-"""Chapter 4 widgets: the Hertz ellipse, creep laws side by side, the FASTSIM patch, profile geometry.
+"""Chapter 4 widgets: the Hertz ellipse, creep laws side by side, the FASTSIM patch, profile geometry,
+and the wheel on its rail in section.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
 models are in :mod:`raildyn.contact` (steel of :mod:`raildyn.constants`); this
@@ -17,7 +18,7 @@ from raildyn import contact, plots
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
 from raildyn.widgets._core import Recipe, slider
 
-__all__ = ["creep_laws", "fastsim_patch", "hertz", "profiles"]
+__all__ = ["creep_laws", "fastsim_patch", "hertz", "profiles", "wheel_on_rail"]
 
 
 # ---------------------------------------------------------------- Hertz ellipse and pressure
@@ -337,3 +338,120 @@ def profiles():
         ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return PROFILES.build()
+
+
+# ---------------------------------------------------------------- the wheel on its rail, in section
+
+# mm: the kernel-free frames, past the S1002 wheel's jump to its flange (6.5 mm on the 1:40 rail) each way
+_SECTION_SHIFTS = [float(v) for v in np.arange(-7.0, 7.5, 1.0)]
+_SECTION_WINDOW = (-45.0, 45.0)  # mm across each rail head, about its crown
+
+
+@functools.lru_cache(maxsize=4)
+def _section_pair(wheel_name: str, rail_name: str):
+    return _WHEELS[wheel_name](), contact.uic60_rail(_RAILS[rail_name])
+
+
+def _section_controls():
+    return {
+        "shift_mm": slider("lateral shift y (mm)", 0.0, -10.0, 10.0, 0.25, fmt=".2f"),
+        "wheel": widgets.Dropdown(options=list(_WHEELS), value="S1002", description="wheel"),
+        "rail": widgets.Dropdown(options=list(_RAILS), value="60E1 at 1:40", description="rail"),
+    }
+
+
+def _section(wheel, rail, g, side: int):
+    """The rail head and the wheel above it on one side, in that rail's coordinates (mm): (u, z) of the
+    rail, (u, z) of the wheel lowered on to it, the contact point, and the wheel's tread gap.
+
+    The wheel's point u_w lies above the rail's u_w − (u_w* − u_r*) (the contact's own pair of points), at
+    r₀ − r(u_w) ∓ φu_w (the wheelset's roll, left/right), lowered until it touches at the contact.
+    """
+    u_w, u_r = g.wheel_position[side, 0], g.rail_position[side, 0]
+    rail_z = rail.height
+    wheel_u = wheel.lateral - (u_w - u_r)
+    roll = -g.roll[0] if side == 0 else g.roll[0]
+    wheel_z = wheel.nominal_radius - wheel.radius + roll * wheel.lateral
+    touch = np.interp(u_r, rail.lateral, rail_z)
+    wheel_z += touch - np.interp(u_w, wheel.lateral, wheel_z)
+    # the gap along the tread (the wheel's side of its flange root), to show the second contact coming
+    on_rail = (wheel_u > rail.lateral[0]) & (wheel_u < rail.lateral[-1]) & (wheel.lateral < 0.0)
+    gap = wheel_z[on_rail] - np.interp(wheel_u[on_rail], rail.lateral, rail_z)
+    return rail.lateral, rail_z, wheel_u, wheel_z, (u_r, touch), float(gap.min()) if gap.size else np.nan
+
+
+def _section_setup(live, status):
+    axes = live.axes[0]
+    lines = []
+    for k, ax in enumerate(axes):
+        ax.set_xlabel("across the rail head (mm), towards the track centre →" if k == 0 else
+                      "← towards the track centre, across the rail head (mm)")  # fmt: skip
+        ax.set_ylabel("height (mm)")
+        ax.set_xlim(*_SECTION_WINDOW) if k == 0 else ax.set_xlim(_SECTION_WINDOW[1], _SECTION_WINDOW[0])
+        ax.set_ylim(-25.0, 35.0)
+        ax.set_aspect("equal", adjustable="box")
+        ax.set_title("left wheel" if k == 0 else "right wheel")
+        (rail_line,) = ax.plot([], [], color=plots.COLORS[0], label="rail 60E1")
+        (wheel_line,) = ax.plot([], [], color=plots.COLORS[1], label="wheel")
+        (point,) = ax.plot([], [], "o", color=plots.COLORS[3], label="contact")
+        (normal,) = ax.plot([], [], "-", color=plots.COLORS[3], linewidth=1.0)
+        lines.append((rail_line, wheel_line, point, normal))
+    axes[0].legend(loc="upper left", fontsize="small")
+    live.animate(*(a for group in lines for a in group))
+
+    def redraw(v):
+        wheel, rail = _section_pair(v["wheel"], v["rail"])
+        y = 1e-3 * float(v["shift_mm"])
+        g = contact.contact_geometry(wheel, rail, [y])
+        words = []
+        for side, (rail_line, wheel_line, point, normal) in enumerate(lines):
+            u_rail, z_rail, u_wheel, z_wheel, (u_c, z_c), gap = _section(wheel, rail, g, side)
+            rail_line.set_data(1e3 * u_rail, 1e3 * z_rail)
+            wheel_line.set_data(1e3 * u_wheel, 1e3 * z_wheel)
+            point.set_data([1e3 * u_c], [1e3 * z_c])
+            angle = g.contact_angle[side, 0]
+            # the contact normal, 12 mm long, leaning towards the track centre by the contact angle
+            normal.set_data(1e3 * u_c + np.array([0.0, 12.0 * np.sin(angle)]),
+                            1e3 * z_c + np.array([0.0, 12.0 * np.cos(angle)]))  # fmt: skip
+            where = "flange" if angle > _FLANGE_ANGLE else "tread"
+            words.append(
+                f"{'left' if side == 0 else 'right'}: {where}, r = {1e3 * g.rolling_radius[side, 0]:.2f} mm, "
+                f"ϑ = {np.degrees(angle):.1f}°"
+                + (f", tread {1e3 * gap:.2f} mm clear" if where == "flange" else "")
+            )
+        status.value = (
+            f"y = {1e3 * y:.2f} mm · Δr = {1e3 * g.rolling_radius_difference[0]:.2f} mm · roll "
+            f"{1e3 * g.roll[0]:.2f} mrad · " + " · ".join(words)
+        )
+
+    return redraw
+
+
+_FLANGE_ANGLE = math.radians(40.0)  # a contact steeper than this is on the flange (profile_contact's rule)
+
+WHEEL_ON_RAIL = Recipe(
+    _section_controls,
+    _section_setup,
+    {"nrows": 1, "ncols": 2, "figsize": (10.0, 3.8)},
+    static={"shift_mm": _SECTION_SHIFTS},
+    title="A wheelset's two wheels on their rails in section, the contact points moving as it shifts",
+)
+
+
+def wheel_on_rail():
+    """Both wheels on their rails in section, with their contact points, as the wheelset shifts.
+
+    Controls: the lateral shift y (mm), the wheel (1:20 and 1:40 cones, S1002) and the 60E1
+    rail's inclination. Each panel draws the rail head and the wheel lowered on to it, with the
+    wheelset's roll, the contact point and its normal; on a new S1002 wheel the contact runs
+    smoothly over the tread, then jumps to the flange root. The status line gives each contact's
+    radius and angle, the tread's clearance once the flange touches, Δr and the roll.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
+    """
+    return WHEEL_ON_RAIL.build()

@@ -343,8 +343,14 @@ ENTRIES = [
     fuzz("raildyn.contact.ContactGeometry", _geometry_fields, accepts=RESULT),
     fuzz(
         "raildyn.contact.contact_geometry",
-        lambda: call(s1002(), rail(), [-2e-3, 3e-3]),
-        accepts={"shifts": SIGNED},
+        lambda: call(s1002(), rail(), [-2e-3, 3e-3], yaw=0.01),
+        # a yaw of either sign, or none
+        accepts={"shifts": SIGNED, "yaw": "zero negative mm tiny"},
+    ),
+    fuzz(
+        "raildyn.contact.trace_line",
+        lambda: call(np.linspace(-0.05, 0.05, 11), 0.46 + np.linspace(-0.05, 0.05, 11) / 20, 0.01, 1.5),
+        accepts={"yaw": "zero negative mm tiny", "radius": "list", "lateral": "list"},
     ),
     fuzz(
         "raildyn.contact.rolling_radius_difference",

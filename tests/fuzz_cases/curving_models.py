@@ -226,7 +226,7 @@ ENTRIES = [
     ),
     fuzz(
         "raildyn.wheelset.WheelForces",
-        lambda: call(*np.ones((4, 2))),
+        lambda: call(*np.ones((5, 2))),
         accepts={"*": "zero negative", "wear_number": "zero"},
     ),
 ]

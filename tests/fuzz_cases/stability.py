@@ -299,6 +299,7 @@ ENTRIES = [
             "flange_clearance": "tiny",
             "flange_stiffness": "zero big mm",
             "flange_angle": "tiny",  # any angle in (0, π/2), as Nadal's limit takes
+            "flange_radius_excess": "zero tiny",  # a flange contact at the tape circle's radius or just above
             "contact_angle_difference": "returns-negative",
             "tread_angles": "returns-negative",
         },
