@@ -150,8 +150,10 @@ def read_wheel_profile(path, *, nominal_radius=0.46, name=None) -> WheelProfile:
             f"got u from {u[0]:g} to {u[-1]:g} mm"
         )
     curve = PchipInterpolator(u, h)
-    grid = np.arange(u[0], u[-1] + _STEP / _MM / 2, _STEP / _MM)
-    grid = grid[grid <= u[-1]]
+    step = _STEP / _MM
+    grid = (
+        np.arange(np.ceil(u[0] / step - 1e-9), np.floor(u[-1] / step + 1e-9) + 1) * step
+    )  # u = 0 on the grid
     radius = r0 + (curve(grid) - curve(0.0)) * _MM
     return WheelProfile(_name(p, name), grid * _MM, radius, r0)
 
@@ -216,9 +218,10 @@ def check_pair(wheel: WheelProfile, rail: RailProfile, *, gauge=1.435, tape_dist
     """Check that a wheelset of this wheel sits on two rails of this rail at a gauge; its flangeway clearance.
 
     The wheelset, centred, must stand on both rails (:func:`~raildyn.contact.geometry.contact_geometry`
-    finds each contact inside both profiles) and on its treads: a centred contact steeper than
-    40° means that the flanges ride on the rail heads (the tape circles too far apart, or the
-    gauge too narrow). Shifted sideways in steps of 0.25 mm, one of its contacts must pass 40°,
+    finds each contact inside both profiles) and on its treads: a centred contact beyond the
+    steepest point of the flange's flank (on the flange tip), or one that passes 40° within
+    0.5 mm of the centre, means that the flanges ride on the rail heads (the tape circles too far
+    apart, or the gauge too narrow). Shifted sideways in steps of 0.25 mm, one of its contacts must pass 40°,
     the jump to the flange, within 20 mm (a wider gap means that the gauge is too wide for the
     wheelset, or the wheel has no flange): the last shift before that is the flangeway clearance
     e, as :func:`raildyn.wheelset.profile_contact` finds it.
@@ -265,11 +268,16 @@ def check_pair(wheel: WheelProfile, rail: RailProfile, *, gauge=1.435, tape_dist
     except ValueError as err:
         raise ValueError(f"gauge and tape_distance must put the wheels on the rails: {pair}: {err}") from None
     steep = (sides[0].contact_angle[0] > _TREAD_LIMIT) | (sides[1].contact_angle[1] > _TREAD_LIMIT)
-    if steep[:3].any():  # within 0.5 mm of the centre: no room on the treads (profile_contact's own limit)
+    slope = np.gradient(wheel.radius, wheel.lateral)
+    flank = int(np.argmax(slope))  # the steepest point of the flange's flank; beyond it lies the flange tip
+    on_tip = slope[flank] > np.tan(_TREAD_LIMIT) and sides[0].wheel_position[0, 0] > wheel.lateral[flank]
+    if on_tip or steep[:3].any():  # within 0.5 mm of the centre: no room on the treads (as profile_contact)
         raise ValueError(
             f"gauge and tape_distance must set the centred wheelset on its treads: {pair} touches at "
-            f"{np.degrees(sides[0].contact_angle[0, 0]):.1f}° when centred and passes 40° within 0.5 mm of the "
-            "centre (the flanges ride on the rail heads)"
+            f"u = {1e3 * sides[0].wheel_position[0, 0]:.1f} mm on the wheel, at "
+            f"{np.degrees(sides[0].contact_angle[0, 0]):.1f}°, "
+            + ("beyond the flange's flank" if on_tip else "and passes 40° within 0.5 mm of the centre")
+            + " (the flanges ride on the rail heads)"
         )
     if not steep.any():
         raise ValueError(
