@@ -80,14 +80,15 @@ def _points(path: Path, lateral: str, vertical: str) -> tuple[np.ndarray, np.nda
     if gaps.size:
         k = int(gaps[0])
         raise ValueError(
-            f"{path}: the points must be at most {MAX_SPACING:g} mm apart laterally, but lines {lines[k]} and "
+            f"{path}: the points must be at most {MAX_SPACING:g} mm apart laterally, but lines {lines[k]} "
+            f"and "
             f"{lines[k + 1]} ({x[k]:g} and {x[k + 1]:g} mm) leave a gap of {abs(step[k]):g} mm"
         )
     return (x, z) if sign > 0 else (x[::-1], z[::-1])
 
 
 def _name(path: Path, name) -> str:
-    """The profile's label: the file's path, after ``name`` if one is given (so every message names the file)."""
+    """The profile's label: the file's path, after ``name`` if given (so every message names the file)."""
     return str(path) if name is None else f"{name} ({path})"
 
 
@@ -281,7 +282,8 @@ def check_pair(wheel: WheelProfile, rail: RailProfile, *, gauge=1.435, tape_dist
         )
     if not steep.any():
         raise ValueError(
-            f"gauge and tape_distance must let a flange touch its rail within {1e3 * _REACH:g} mm of the centre: "
+            f"gauge and tape_distance must let a flange touch its rail within {1e3 * _REACH:g} mm of the "
+            "centre: "
             f"{pair} reaches no contact steeper than 40° (the gauge too wide, or a wheel with no flange)"
         )
     return float(y[int(np.argmax(steep)) - 1])
