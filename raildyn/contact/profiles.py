@@ -234,8 +234,8 @@ def worn_wheel(nominal_radius=0.444) -> WheelProfile:
     hollow (the hollow's bottom 13 mm from the tape circle towards the field side, a false flange
     rising 1.3 mm above it 46 mm further out) and its flange tip stands 35 mm above the tape
     circle. The tape circle is taken 70 mm from the back of the flange; the source's own case puts
-    the flange backs 1347.4 mm apart at a gauge of 1435.1 mm, so the pair runs with ``gauge=1.4351`` and ``tape_distance=1.4874``
-    (1.3474 + 2 × 0.070 m), e.g. on :func:`worn_rail`.
+    the flange backs 1347.4 mm apart at a gauge of 1435.1 mm, so the pair runs with
+    ``gauge=1.4351`` and ``tape_distance=1.4874`` (1.3474 + 2 × 0.070 m), e.g. on :func:`worn_rail`.
 
     Parameters
     ----------
