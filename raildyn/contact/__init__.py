@@ -9,7 +9,9 @@
 * :mod:`~raildyn.contact.creepages` — the creepages of a wheelset's two wheels.
 * :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states;
   :mod:`~raildyn.contact.fastsim_python` — the same in numpy and plain Python, for the tests.
-* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles.
+* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles, and a measured worn wheel and rail.
+* :mod:`~raildyn.contact.profile_files` — measured or worn profiles read from two-column files, and the
+  check that a wheel and a rail make a pair at a gauge.
 * :mod:`~raildyn.contact.geometry` — wheel and rail profiles as data, and a pair's contact points,
   Δr(y), contact angles and equivalent conicity.
 * :mod:`~raildyn.contact.conicity` — equivalent conicity of a tabulated Δr(y): EN 15302's kinematic
@@ -49,7 +51,16 @@ from raildyn.contact.kalker import (
     kalker_linear,
 )
 from raildyn.contact.polach import POLACH_DRY, POLACH_WET, PolachAdhesion, polach, polach_adhesion
-from raildyn.contact.profiles import conical_wheel, s1002_wheel, uic60_rail
+from raildyn.contact.profile_files import check_pair, read_rail_profile, read_wheel_profile
+from raildyn.contact.profiles import (
+    WORN_RAIL_FILE,
+    WORN_WHEEL_FILE,
+    conical_wheel,
+    s1002_wheel,
+    uic60_rail,
+    worn_rail,
+    worn_wheel,
+)
 from raildyn.contact.saturation import (
     carter,
     carter_coefficient,
@@ -75,8 +86,11 @@ __all__ = [
     "RailProfile",
     "WheelProfile",
     "WheelsetCreepages",
+    "WORN_RAIL_FILE",
+    "WORN_WHEEL_FILE",
     "carter",
     "carter_coefficient",
+    "check_pair",
     "conical_wheel",
     "contact_angles",
     "contact_geometry",
@@ -95,6 +109,8 @@ __all__ = [
     "kinematic_conicity",
     "lateral_creep_curves",
     "polach",
+    "read_rail_profile",
+    "read_wheel_profile",
     "polach_adhesion",
     "PolachAdhesion",
     "POLACH_DRY",
@@ -106,6 +122,8 @@ __all__ = [
     "shen_hedrick_elkins",
     "trace_line",
     "uic60_rail",
+    "worn_rail",
+    "worn_wheel",
     "creepage_terms",
     "wheelset_creepages",
 ]

@@ -1,4 +1,4 @@
-"""The wheel and rail profiles of chapter 4: the conical wheel, the S1002 wheel and the 60E1 rail.
+"""The wheel and rail profiles of chapter 4: the conical wheel, S1002 on 60E1, and a worn pair.
 
 Each is a :class:`~raildyn.contact.geometry.WheelProfile` or
 :class:`~raildyn.contact.geometry.RailProfile`, in the coordinates set out in
@@ -6,10 +6,15 @@ Each is a :class:`~raildyn.contact.geometry.WheelProfile` or
 
 Sources: S1002 wheel, EN 13715 (the piecewise polynomial definition as
 distributed by H. Netter, DLR); 60E1 (UIC60) rail head, EN 13674-1 (arcs R300
-to x = ±10.228 mm, R80 to ±26.027 mm, R13, then a 1:20 flank).
+to x = ±10.228 mm, R80 to ±26.027 mm, R13, then a 1:20 flank); the worn wheel and rail measured on
+a North American heavy-haul railway, files in ``raildyn/contact/data`` (their source and terms are in
+its README.md) read by :func:`~raildyn.contact.profile_files.read_wheel_profile` and
+:func:`~raildyn.contact.profile_files.read_rail_profile`.
 """
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import numpy as np
 
@@ -32,10 +37,20 @@ from raildyn.contact.geometry import (  # noqa: F401  (all but the private ones 
 # keep working for one issue, then they go.
 
 __all__ = [
+    "WORN_RAIL_FILE",
+    "WORN_WHEEL_FILE",
     "conical_wheel",
     "s1002_wheel",
     "uic60_rail",
+    "worn_rail",
+    "worn_wheel",
 ]
+
+_DATA = Path(__file__).resolve().parent / "data"
+#: The worn wheel's file (format of :func:`~raildyn.contact.profile_files.read_wheel_profile`).
+WORN_WHEEL_FILE = _DATA / "worn_wheel_na_heavy_haul.txt"
+#: The worn rail's file (format of :func:`~raildyn.contact.profile_files.read_rail_profile`).
+WORN_RAIL_FILE = _DATA / "worn_rail_na_heavy_haul.txt"
 
 _MM = 1e-3
 _STEP = 0.05e-3  # m; sampling of the profiles and of the contact search, refined by a parabola
@@ -175,14 +190,97 @@ def uic60_rail(inclination=1 / 40) -> RailProfile:
     x = np.linspace(-36.5, 36.5, 7301)  # mm, the head and its 1:20 flanks
     z = _uic60_head_mm(x)
     keep = z > -25.0  # the running surface and the upper flanks
-    x, z = x[keep], z[keep]
-    # Tilt: rotate the section so that the gauge side (+u) goes down.
+    name = "60E1" + (f" 1:{1 / np.tan(cant):.0f}" if cant > 0 else " upright")
+    return _tilted_rail(name, x[keep], z[keep], float(cant))
+
+
+_GAUGE_DEPTH = 14.0  # mm; the gauge point lies 14 mm below the top of the rail (EN 13848-1)
+
+
+def _tilted_rail(name: str, x: np.ndarray, z: np.ndarray, cant: float, *, where: str = "") -> RailProfile:
+    """A :class:`RailProfile` from a densely sampled upright head section, tilted by ``cant``.
+
+    ``x`` (mm, increasing, positive towards the gauge side) and ``z`` (mm, upwards) describe the
+    head in the rail's own axes. The section is turned so that the gauge side goes down, resampled
+    on the profiles' grid with the crown at height 0, and its gauge point found 14 mm below the top.
+    Where the turn folds the section back on itself (a face steeper than the cant), only the part
+    joined to the top is kept. ``where`` (e.g. a file name) starts the message if the tilted head
+    does not reach 14 mm below its top on the gauge side.
+    """
     u_t = x * np.cos(cant) + z * np.sin(cant)
     z_t = -x * np.sin(cant) + z * np.cos(cant)
-    top = z_t.max()
+    top = int(np.argmax(z_t))
+    rising = np.diff(u_t) > 0
+    first = top - int(np.argmin(rising[:top][::-1])) if top and not rising[:top].all() else 0
+    last = top + int(np.argmin(rising[top:])) if not rising[top:].all() else u_t.size - 1
+    u_t, z_t = u_t[first : last + 1], z_t[first : last + 1]
     u = np.arange(u_t.min(), u_t.max(), _STEP / _MM)
-    z_u = np.interp(u, u_t, z_t) - top
+    z_u = np.interp(u, u_t, z_t) - z_t.max()
     gauge_side = u > u[np.argmax(z_u)]
-    face = u[gauge_side][np.argmin(np.abs(z_u[gauge_side] + 14.0))]  # gauge point 14 mm below the top
-    name = "60E1" + (f" 1:{1 / np.tan(cant):.0f}" if cant > 0 else " upright")
+    if not gauge_side.any() or z_u[gauge_side].min() > -_GAUGE_DEPTH:
+        raise ValueError(
+            f"{where}the rail head must reach {_GAUGE_DEPTH:g} mm below its top on the gauge side (where the "
+            f"gauge is measured), got {-z_u[gauge_side].min() if gauge_side.any() else 0.0:.4g} mm"
+        )
+    face = u[gauge_side][np.argmin(np.abs(z_u[gauge_side] + _GAUGE_DEPTH))]  # gauge point 14 mm below the top
     return RailProfile(name, u * _MM, z_u * _MM, float(cant), float(face * _MM))
+
+
+def worn_wheel(nominal_radius=0.444) -> WheelProfile:
+    """A worn wheel: high mileage, hollow tread, measured on a North American heavy-haul railway.
+
+    Read from :data:`WORN_WHEEL_FILE` (source: the CONTACT program's test bank, courtesy of
+    K. Oldknow, Apache License 2.0; see ``raildyn/contact/data/README.md``). Its tread is worn
+    hollow (the hollow's bottom 13 mm from the tape circle towards the field side, a false flange
+    rising 1.3 mm above it 46 mm further out) and its flange tip stands 35 mm above the tape
+    circle. The tape circle is taken 70 mm from the back of the flange; the source's own case puts
+    the flange backs 1347.4 mm apart at a gauge of 1435.1 mm, so the pair runs with
+    ``gauge=1.4351`` and ``tape_distance=1.4874`` (1.3474 + 2 × 0.070 m), e.g. on :func:`worn_rail`.
+
+    Parameters
+    ----------
+    nominal_radius : float
+        r₀, the radius at the tape circle (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "wheel_radius"); 0.444 m, the source's case (a 36 in freight wheel, worn).
+
+    Returns
+    -------
+    WheelProfile
+        Named after its file.
+
+    Examples
+    --------
+    >>> w = worn_wheel()
+    >>> round(float(1e3 * (w.radius.max() - w.nominal_radius)), 1)  # flange tip above the tape circle, mm
+    35.4
+    """
+    from raildyn.contact.profile_files import read_wheel_profile  # it reads this module's grid
+
+    return read_wheel_profile(WORN_WHEEL_FILE, nominal_radius=nominal_radius, name="worn wheel")
+
+
+def worn_rail(inclination=1 / 40) -> RailProfile:
+    """A worn rail head: the high rail of a curve on a North American heavy-haul railway, measured.
+
+    Read from :data:`WORN_RAIL_FILE` (the same source and terms as :func:`worn_wheel`). Its gauge
+    corner is worn to a near-vertical face and its crown lies about 16 mm towards the field side.
+
+    Parameters
+    ----------
+    inclination : float
+        The cant as a slope, in [0, 1/10]; 1/40, the cant of North American track.
+
+    Returns
+    -------
+    RailProfile
+        Named after its file.
+
+    Examples
+    --------
+    >>> from raildyn.contact.profile_files import check_pair
+    >>> round(1e3 * check_pair(worn_wheel(), worn_rail(), gauge=1.4351, tape_distance=1.4874), 2)  # mm
+    15.0
+    """
+    from raildyn.contact.profile_files import read_rail_profile
+
+    return read_rail_profile(WORN_RAIL_FILE, inclination=inclination, name="worn rail")

@@ -53,6 +53,16 @@ def rail():
 
 
 @functools.cache
+def worn_wheel():
+    return contact.worn_wheel()
+
+
+@functools.cache
+def worn_rail():
+    return contact.worn_rail(1 / 40)
+
+
+@functools.cache
 def geometry():
     return contact.contact_geometry(cone(), rail(), np.linspace(-3e-3, 3e-3, 7), roll=False)
 
@@ -340,6 +350,22 @@ ENTRIES = [
     fuzz("raildyn.contact.conical_wheel", lambda: call(1 / 20, width=0.02), accepts={"slope": "zero"}),
     fuzz("raildyn.contact.s1002_wheel", lambda: call()),
     fuzz("raildyn.contact.uic60_rail", lambda: call(1 / 40), accepts={"inclination": "zero"}),
+    fuzz("raildyn.contact.worn_wheel", lambda: call()),
+    fuzz("raildyn.contact.worn_rail", lambda: call(1 / 40), accepts={"inclination": "zero"}),
+    # The readers take the shipped worn profiles' files (a path as text: a missing file, a number and
+    # None are the bad values); the pair check takes that worn pair at the gauge of its own track.
+    fuzz(
+        "raildyn.contact.read_wheel_profile", lambda: call(str(contact.WORN_WHEEL_FILE), nominal_radius=0.444)
+    ),
+    fuzz(
+        "raildyn.contact.read_rail_profile",
+        lambda: call(str(contact.WORN_RAIL_FILE), inclination=1 / 40),
+        accepts={"inclination": "zero"},
+    ),
+    fuzz(
+        "raildyn.contact.check_pair",
+        lambda: call(worn_wheel(), worn_rail(), gauge=1.4351, tape_distance=1.4874),
+    ),
     fuzz("raildyn.contact.ContactGeometry", _geometry_fields, accepts=RESULT),
     fuzz(
         "raildyn.contact.contact_geometry",
