@@ -237,7 +237,7 @@ def cone_file(tmp_path_factory):
 
 def test_a_flange_that_never_touches_is_refused_naming_the_file(cone_file):
     wheel, rail = read_wheel_profile(cone_file), uic60_rail(1 / 40)
-    with pytest.raises(ValueError, match="meet on a flange") as err:
+    with pytest.raises(ValueError, match="let a flange touch its rail within 20 mm") as err:
         profile_contact(wheel, rail)
     assert str(cone_file) in str(err.value)
     with pytest.raises(ValueError, match="let a flange touch its rail within 20 mm") as err:

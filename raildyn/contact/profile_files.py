@@ -210,9 +210,9 @@ def read_rail_profile(path, *, inclination=1 / 40, name=None) -> RailProfile:
     return _tilted_rail(_name(p, name), fine, PchipInterpolator(x, z)(fine), cant, where=f"{p}: ")
 
 
-_TREAD_LIMIT = np.radians(40.0)  # a contact steeper than 40° is on the flange, as profile_contact reads it
-_REACH = 0.02  # m; the flange must touch within 20 mm of the centre, as profile_contact requires
-_SCAN = 2.5e-4  # m; the step of the scan outwards from the centre, as profile_contact's
+_TREAD_LIMIT = np.radians(40.0)  # a contact steeper than 40° is on the flange (profile_contact takes e here)
+_REACH = 0.02  # m; the flange must touch within 20 mm of the centre
+_SCAN = 2.5e-4  # m; the step of the scan outwards from the centre (profile_contact's tables take it too)
 
 
 def check_pair(wheel: WheelProfile, rail: RailProfile, *, gauge=1.435, tape_distance=1.5) -> float:

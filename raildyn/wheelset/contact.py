@@ -123,7 +123,6 @@ class WheelRailContact:
                 raise ValueError(f"tread_angles must return angles within ±π/2, returned {out} at y = {y} m")
 
 
-_FLANGE_CONTACT_ANGLE = 0.7  # rad (40°): a contact steeper than this is on the flange, not the tread
 _PROFILE_STEP = 2.5e-4  # m, the lateral step of the contact tables
 _BEYOND = 0.02  # m: the tables' last points lie this far beyond the clearance (and go on at that slope)
 
@@ -136,7 +135,8 @@ def profile_contact(
     The rigid contact of chapter 4 (:func:`raildyn.contact.geometry.contact_geometry`, with
     the wheelset's roll) is followed outwards from the centre in steps of 0.25 mm until a
     contact angle passes 40°: there the contact jumps from the tread to the flange, and that
-    shift is the flangeway clearance e. Inside it, the rolling-radius and contact-angle
+    shift is the flangeway clearance e (:func:`raildyn.contact.profile_files.check_pair`, which
+    also refuses a pair that cannot run). Inside it, the rolling-radius and contact-angle
     differences Δr(y) and Δϑ(y) and the two tread angles ϑ_L(y), ϑ_R(y) are tabulated and
     interpolated linearly; beyond it the tread keeps its contact, while the flange touches
     too, pressed by the rail's lateral stiffness ``flange_stiffness``: a two-point contact,
@@ -166,8 +166,10 @@ def profile_contact(
     Raises
     ------
     ValueError
-        If no flange contact is found within 20 mm of the centre (a profile pair with no
-        flange, such as a cone).
+        As :func:`raildyn.contact.profile_files.check_pair`, naming both profiles (their files),
+        the gauge and the tape distance: no flange contact within 20 mm of the centre (a pair
+        with no flange, such as a cone, or a gauge too wide), or wheels that stand on their
+        flanges when centred, or off the rails.
 
     Examples
     --------
@@ -179,19 +181,14 @@ def profile_contact(
     6.5
     """
     from raildyn.contact.geometry import contact_geometry
+    from raildyn.contact.profile_files import check_pair
 
+    # The pair's checks and its clearance e, found by the one scan outwards from the centre.
+    clearance = check_pair(wheel, rail, gauge=gauge, tape_distance=tape_distance)
     y = np.arange(0.0, 0.02 + _PROFILE_STEP / 2, _PROFILE_STEP)
     left = contact_geometry(wheel, rail, y, gauge=gauge, tape_distance=tape_distance)
     right = contact_geometry(wheel, rail, -y, gauge=gauge, tape_distance=tape_distance)
-    steep = (left.contact_angle[0] > _FLANGE_CONTACT_ANGLE) | (right.contact_angle[1] > _FLANGE_CONTACT_ANGLE)
-    if not steep.any():
-        raise ValueError(
-            f"wheel and rail must meet on a flange within {1e3 * y[-1]:g} mm of the centre, got no contact "
-            f"steeper than {np.degrees(_FLANGE_CONTACT_ANGLE):g}° ({wheel.name!r} on {rail.name!r})"
-        )
-    last = int(np.argmax(steep)) - 1  # the last shift on the treads
-    if last < 2:
-        raise ValueError("wheel and rail must run on their treads when centred, got flange contact at y = 0")
+    last = int(np.searchsorted(y, clearance + 1e-12)) - 1  # the last shift on the treads: e
     shifts = np.concatenate([-y[last:0:-1], y[: last + 1]])
     angles = [
         np.concatenate([right.contact_angle[k, last:0:-1], left.contact_angle[k, : last + 1]]) for k in (0, 1)
