@@ -205,3 +205,36 @@ def test_beyond_the_clearance_the_flanging_wheels_tread_holds_its_contact(pair):
         slope = (pair.rolling_radius_difference(y) - pair.rolling_radius_difference(e)) / (y - e)
         assert slope == pytest.approx(np.tan(pair.tread_angles(e)[1]), rel=1e-9)
     assert pair.tread_angles(e)[0] < np.radians(40.0)  # a tread, not a flange
+
+
+@pytest.mark.parametrize("name", ["Bogie", "LateralCar", "LateralFreightCar", "LateralLocomotive"])
+@pytest.mark.parametrize("worn", [False, True])
+def test_every_lateral_vehicle_runs_on_real_profiles_with_two_point_contact(name, worn):
+    # Each vehicle's nonlinear model takes a profile pair's contact: new S1002 on 60E1, or the measured worn
+    # North American pair on its own track. Past the flange its forces are the two-point law's (they differ
+    # from the spring flange's), and where the compiled engine holds the model (all but the freight car and
+    # the locomotive, whose wedges are Python force laws) it evaluates the same right-hand side.
+    from raildyn import vehicles
+    from raildyn.contact import worn_rail, worn_wheel
+
+    if worn:
+        pair = profile_contact(worn_wheel(), worn_rail(), gauge=1.4351, tape_distance=1.4874)
+    else:
+        pair = profile_contact(s1002_wheel(), uic60_rail(1 / 40))
+    model = getattr(vehicles, name)().nonlinear(contact=pair)
+    spring = model.replace(contact=dataclasses.replace(pair, two_point=False))
+    state = np.zeros(model.state_size)
+    iy = model.system.wheelsets[0][0]
+    state[iy] = pair.flange_clearance + 2e-3  # the leading wheelset on its left flange
+    half = model.state_size // 2
+    state[half + iy] = 0.02
+    ours = model.rhs(0.0, state, 30.0)
+    assert np.all(np.isfinite(ours))
+    assert not np.allclose(ours, spring.rhs(0.0, state, 30.0))
+    if model.compiled_reason is None:
+        compiled = model.compiled_rhs(30.0)
+        out = np.empty_like(state)
+        compiled.kernel(0.0, state, 0, compiled.row[None, :].copy(), out)
+        np.testing.assert_allclose(out, ours, rtol=0, atol=1e-13 * np.abs(ours).max())
+    else:
+        assert name in ("LateralFreightCar", "LateralLocomotive")
