@@ -238,3 +238,21 @@ def test_every_lateral_vehicle_runs_on_real_profiles_with_two_point_contact(name
         np.testing.assert_allclose(out, ours, rtol=0, atol=1e-13 * np.abs(ours).max())
     else:
         assert name in ("LateralFreightCar", "LateralLocomotive")
+
+
+def test_a_pairs_tables_are_made_once(pair):
+    # Asked again (with another friction), profile_contact hands back the same tables; another gauge, or a
+    # profile that differs in one sample, gets its own.
+    again = profile_contact(s1002_wheel(), uic60_rail(1 / 40), friction=0.4)
+    assert again.rolling_radius_difference is pair.rolling_radius_difference and again.friction == 0.4
+    wider = profile_contact(s1002_wheel(), uic60_rail(1 / 40), gauge=1.437)
+    assert wider.rolling_radius_difference is not pair.rolling_radius_difference
+    assert wider.flange_clearance > pair.flange_clearance
+    worn = s1002_wheel()
+    radius = worn.radius.copy()
+    radius[100] -= 1e-6
+    touched = dataclasses.replace(worn, radius=radius)
+    assert (
+        profile_contact(touched, uic60_rail(1 / 40)).rolling_radius_difference
+        is not pair.rolling_radius_difference
+    )

@@ -267,6 +267,8 @@ class TraceLineDerivation:
             raise TypeError(
                 f"symbols must be a tuple of 5 sympy Symbols (u, r, r′, ψ, T), got {self.symbols!r:.80}"
             )
+        if not isinstance(self.steps, tuple):
+            raise TypeError(f"steps must be a tuple of Step, got {self.steps!r:.80}")
         for i, step in enumerate(self.steps):
             _checks.instance(f"steps[{i}]", step, Step)
 

@@ -16,6 +16,7 @@ Coordinates: y to the left, ψ turning to the left. SI units throughout.
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -146,7 +147,9 @@ def profile_contact(
     excess the flange contact's r − r₀ where the contact first jumps. Beyond e the flanging
     wheel's rail gives way under its flange, so that wheel's tread contact stays where it was: the
     tables hold the angles at their values at ±e, and Δr changes only by the other wheel's
-    rolling on along its tread (the tangent of its contact angle per metre of shift).
+    rolling on along its tread (the tangent of its contact angle per metre of shift). The
+    geometry of a pair is tabulated once and kept (the last 16 pairs, each with its gauge and
+    tape distance), so that asking again, with another friction or flange stiffness, is free.
 
     Parameters
     ----------
@@ -180,6 +183,43 @@ def profile_contact(
     >>> round(1e3 * contact.flange_clearance, 2)
     6.5
     """
+    from raildyn.contact.geometry import RailProfile, WheelProfile
+
+    _checks.instance("wheel", wheel, WheelProfile)
+    _checks.instance("rail", rail, RailProfile)
+    key = _pair_key(
+        wheel, rail, _checks.positive("gauge", gauge), _checks.positive("tape_distance", tape_distance)
+    )
+    if key not in _PAIRS:
+        if len(_PAIRS) >= _PAIRS_KEPT:
+            _PAIRS.pop(next(iter(_PAIRS)))  # the oldest pair goes
+        _PAIRS[key] = _pair_geometry(wheel, rail, gauge, tape_distance)
+    return WheelRailContact(
+        friction=friction, flange_stiffness=flange_stiffness, two_point=True, **_PAIRS[key]
+    )
+
+
+# The geometry of the last few profile pairs, tabulated once each (a widget or a family of runs asks again).
+_PAIRS: dict = {}
+_PAIRS_KEPT = 16
+
+
+def _pair_key(wheel, rail, gauge: float, tape_distance: float) -> str:
+    """A digest of everything the pair's tables depend on: both profiles, the gauge and the tape distance."""
+    digest = hashlib.sha1()
+    for profile in (wheel, rail):
+        digest.update(
+            repr({k: v for k, v in vars(profile).items() if not isinstance(v, np.ndarray)}).encode()
+        )
+        for v in vars(profile).values():
+            if isinstance(v, np.ndarray):
+                digest.update(v.tobytes())
+    digest.update(np.array([gauge, tape_distance]).tobytes())
+    return digest.hexdigest()
+
+
+def _pair_geometry(wheel, rail, gauge: float, tape_distance: float) -> dict:
+    """The geometry fields of :func:`profile_contact`'s :class:`WheelRailContact` for a profile pair."""
     from raildyn.contact.geometry import contact_geometry
     from raildyn.contact.profile_files import check_pair
 
@@ -211,13 +251,10 @@ def profile_contact(
     # contact first jumps to it (the two wheels are mirror images: the left one's).
     flange_angle = max(left.contact_angle[0].max(), right.contact_angle[1].max())
     excess = left.rolling_radius[0, last + 1] - wheel.nominal_radius
-    return WheelRailContact(
-        friction=friction,
+    return dict(
         flange_angle=float(flange_angle),
-        two_point=True,
         flange_radius_excess=float(excess),
         flange_clearance=float(y[last]),
-        flange_stiffness=flange_stiffness,
         rolling_radius_difference=ContactTable(shifts, dr),
         contact_angle_difference=ContactTable(shifts, dd),
         tread_angles=ContactTables(ContactTable(shifts, angles[0]), ContactTable(shifts, angles[1])),

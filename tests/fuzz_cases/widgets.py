@@ -127,6 +127,7 @@ ENTRIES = [
             "chapter04.fastsim_patch",
             "chapter04.hertz",
             "chapter04.profiles",
+            "chapter04.wheel_on_rail",
             "chapter05.curved_wheelset",
             "chapter05.hunting_wheelset",
             "chapter05.klingel",
