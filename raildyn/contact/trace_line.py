@@ -33,10 +33,10 @@ _RADIUS_MAX = 2.0  # m; the largest railway wheels (steam locomotives' drivers) 
 # m: tape-circle distances from metre gauge (1.06 m) to the broadest, 1.676 m (1.74 m), with a margin.
 _TAPE = (0.5, 2.0)
 
-# rad: the largest yaw the trace line takes. Beyond some 30 mrad the trace line folds over itself at the
-# flange root of a new profile (du_e/du = cos ψ − (r r′)′ tan ψ sin ψ, with (r r′)′ near 900 in the root's
-# 13 mm radius, reaches zero), where the lowest point is no longer one point of the line; a wheelset in
-# a 150 m curve yaws by some 10 to 15 mrad.
+#: rad: the largest yaw the trace line takes. Beyond some 30 mrad the trace line folds over itself at the
+#: flange root of a new profile (du_e/du = cos ψ − (r r′)′ tan ψ sin ψ, with (r r′)′ near 900 in the root's
+#: 13 mm radius, reaches zero), where the lowest point is no longer one point of the line; a wheelset in
+#: a 150 m curve yaws by some 10 to 15 mrad.
 MAX_YAW = 0.03
 
 
