@@ -145,15 +145,19 @@ def test_overturning_deficiency_by_hand(assessment):
     )
 
 
-def test_a_car_that_does_not_roll_unloads_as_the_equilibrium_does():
-    # no roll on the suspension (a stiff roll spring): ΔQ/Q₀ is the equilibrium's (Q_o − Q_i)/(Q_o + Q_i)
-    stiff = CAR.replace(roll_stiffness=1e12)
-    r = safety_assessment(stiff, V, R, D)
-    Q = r.equilibrium.wheel_vertical
+def test_the_unloading_is_the_equilibriums_transfer_plus_the_bodys_roll(assessment):
+    # the equilibrium's own load transfer (Q_o − Q_i)/(Q_o + Q_i) = h a_q/(a g) on every axle, and the
+    # body's roll s a_q/g moving its weight h_b s a_q/g sideways: m_b h_b s a_q/(a W) more
+    Q = assessment.equilibrium.wheel_vertical
     transfer = (Q[:, 1] - Q[:, 0]) / (Q[:, 1] + Q[:, 0])
-    # rel 1e-6: the roll left by a 1e12 N·m/rad spring, s ≈ 3e-7
-    np.testing.assert_allclose(r.overturning_unloading, transfer, rtol=1e-6)
-    assert r.overturning_deficiency == pytest.approx(1.5 * 0.75 / 1.8, rel=1e-6)
+    a_q = assessment.equilibrium.unbalanced_acceleration
+    W, a = 4 * CAR.wheelset.axle_load, CAR.wheelset.half_gauge
+    roll = CAR.body_mass * CAR.body_height * assessment.flexibility * a_q / (a * W)
+    np.testing.assert_allclose(assessment.overturning_unloading, transfer + roll, rtol=1e-12)
+    # a car whose body does not roll tips at G a/h = 1.5 × 0.75/1.8 = 625 mm (rel 1e-4: the roll left
+    # by the stiffest spring accepted, s ≈ 1.5e-4, moves it by 6e-5)
+    stiff = safety_assessment(CAR.replace(roll_stiffness=9.9e8), V, R, D)
+    assert stiff.overturning_deficiency == pytest.approx(1.5 * 0.75 / 1.8, rel=1e-4)
 
 
 def test_wind_and_a_lower_limit_bring_overturning_closer():
@@ -254,3 +258,15 @@ def test_the_equilibrium_is_the_quasi_static_one(assessment):
     np.testing.assert_allclose(
         assessment.equilibrium.wheel_lateral, state.wheel_lateral, rtol=1e-9, atol=1e-6
     )
+
+
+def test_on_real_profiles_nadal_takes_the_pairs_own_flange_angle():
+    from raildyn.contact.profiles import s1002_wheel, uic60_rail
+    from raildyn.wheelset import profile_contact
+
+    contact = profile_contact(s1002_wheel(), uic60_rail(1 / 40))
+    r = safety_assessment(CAR, V, R, D, contact=contact)
+    assert r.flange_angle == contact.flange_angle
+    assert np.degrees(r.flange_angle) == pytest.approx(70.0, abs=0.5)  # the S1002 flank, about 70°
+    assert r.nadal_limit == pytest.approx(nadal_limit(contact.flange_angle, contact.friction), rel=1e-12)
+    np.testing.assert_allclose(r.wheel_quotient, r.equilibrium.derailment_quotient, rtol=1e-12)

@@ -56,6 +56,9 @@ MANCHESTER_PRIMARY_ROLL_STIFFNESS = VerticalCar().primary_stiffness * _PRIMARY_S
 """k_φ1 = 2 k_z1 b₁² = 2.44 MN·m/rad, the primary roll stiffness of one wheelset of the Manchester
 benchmark vehicle (Iwnicki 1998: 1220 kN/m per axlebox at b₁ = 1.0 m either side)."""
 
+# Prud'homme's α: 1 and 0.85 are the standard's; a network's own rule is not expected below a half.
+_LOWEST_FACTOR = 0.5
+
 TWIST_UNLOADING_LIMIT = 0.6
 """The limit of ΔQ/Q₀ on twisted track, 0.6, as EN 14363 and UIC 530-2 apply it to the most
 unloaded wheel."""
@@ -71,9 +74,10 @@ def prudhomme_limit(axle_load, factor=1.0):
     Parameters
     ----------
     axle_load : float or array_like
-        P, the static axle load, N (> 0).
+        P, the static axle load, N, in [1, 2e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "axle_load").
     factor : float
-        α, in (0, 1].
+        α, in [0.5, 1].
 
     Returns
     -------
@@ -87,8 +91,8 @@ def prudhomme_limit(axle_load, factor=1.0):
     >>> round(prudhomme_limit(200e3, 0.85))  # a freight wagon: 0.85 × (10 + 66.7) kN
     65167
     """
-    P = _checks.array("axle_load", axle_load, low=0.0, low_open=True, allow_empty=False)
-    alpha = _checks.scalar("factor", factor, low=0.0, low_open=True, high=1.0)
+    P = _checks.plausible_array("axle_load", axle_load, "axle_load", allow_empty=False)
+    alpha = _checks.scalar("factor", factor, low=_LOWEST_FACTOR, high=1.0)
     limit = alpha * (10.0e3 + P / 3.0)
     return float(limit) if np.ndim(axle_load) == 0 else limit
 
@@ -153,17 +157,19 @@ def twist_unloading(
     Parameters
     ----------
     axle_load : float
-        P, the static axle load, N (> 0).
+        P, the static axle load, N, in [1, 2e6].
     half_gauge : float
-        a, half the distance between the contact points, m, in (0, 1.5].
+        a, half the distance between the contact points, m, in [0.15, 1.1].
     semi_wheelbase : float
-        b, half the bogie wheelbase, m (> 0).
+        b, half the bogie wheelbase, m, in [0.01, 100].
     semi_bogie_spacing : float
-        s, half the distance between bogie centres, m (> ``semi_wheelbase``).
+        s, half the distance between bogie centres, m, in [0.01, 100] and > ``semi_wheelbase``.
     primary_roll_stiffness : float
-        k_φ1, per wheelset, N·m/rad (> 0): 2 k_z1 b₁², k_z1 the vertical spring per axlebox at ±b₁.
+        k_φ1, per wheelset, N·m/rad, in [1e3, 1e9): 2 k_z1 b₁², k_z1 the vertical spring per
+        axlebox at ±b₁.
     secondary_roll_stiffness : float
-        k_φ2, per bogie, N·m/rad (> 0): the secondary vertical springs and any anti-roll bar.
+        k_φ2, per bogie, N·m/rad, in [1e3, 1e9): the secondary vertical springs and any anti-roll
+        bar.
     bogie_twist : float, optional
         g⁺, m/m, in [0, 0.05]; :func:`limit_twist` of 2b if None.
     car_twist : float, optional
@@ -181,22 +187,27 @@ def twist_unloading(
     >>> round(twist_unloading(109054.85, 0.75, 1.28, 9.5, 2.44e6, 1.8e6), 3)
     0.334
     """
-    P = _checks.scalar("axle_load", axle_load, low=0.0, low_open=True)
-    a = _checks.scalar("half_gauge", half_gauge, low=0.0, low_open=True, high=1.5)
+    P = _checks.plausible("axle_load", axle_load, "axle_load")
+    a = _checks.plausible("half_gauge", half_gauge, "half_gauge")
     b = _checks.plausible("semi_wheelbase", semi_wheelbase, "vehicle_length")
     s = _checks.plausible("semi_bogie_spacing", semi_bogie_spacing, "vehicle_length")
     if s <= b:
         raise ValueError(
             f"semi_bogie_spacing must exceed semi_wheelbase ({b!r} m), got {semi_bogie_spacing!r}"
         )
-    k1 = _checks.scalar("primary_roll_stiffness", primary_roll_stiffness, low=0.0, low_open=True)
-    k2 = _checks.scalar("secondary_roll_stiffness", secondary_roll_stiffness, low=0.0, low_open=True)
+    k1 = _roll_stiffness("primary_roll_stiffness", primary_roll_stiffness)
+    k2 = _roll_stiffness("secondary_roll_stiffness", secondary_roll_stiffness)
     g_bogie = limit_twist(2 * b) if bogie_twist is None else _twist("bogie_twist", bogie_twist)
     g_car = limit_twist(2 * s) if car_twist is None else _twist("car_twist", car_twist)
     bogie = k1 * g_bogie * b / (4 * a**2)
     series = 2 * k1 * k2 / (2 * k1 + k2)
     car = series * g_car * s / (8 * a**2)
     return (bogie + car) / (0.5 * P)
+
+
+def _roll_stiffness(name: str, value) -> float:
+    # N·m/rad: 1 kN·m/rad is a toy's, 1 GN·m/rad a rigid joint's (real suspensions: 0.3 to 10 MN·m/rad)
+    return _checks.scalar(name, value, low=1.0e3, high=1.0e9, high_open=True)
 
 
 def _twist(name: str, value) -> float:
@@ -250,7 +261,7 @@ class SafetyAssessment:
         ΔQ/Q₀ on the unloaded rail (the inner one under a deficiency, the outer under an excess)
         from a_q, the body's roll and the wind (≥ 0; at 1 the wheels lift).
     overturning_limit : float
-        The ΔQ/Q₀ held as overturning, in (0, 1].
+        The ΔQ/Q₀ held as overturning, in [0.5, 1].
     overturning_deficiency : float
         The cant deficiency (or excess) at which ``overturning_unloading`` reaches
         ``overturning_limit`` with this wind, m (≥ 0; 0: the wind alone reaches it).
@@ -289,13 +300,14 @@ class SafetyAssessment:
         k = _checks.array("wheel_quotient", self.wheel_quotient, shape=(None, 2), low=0.0).shape[0]
         _checks.array("axle_sum", self.axle_sum, shape=(k,), low=0.0)
         _checks.array("track_shift_force", self.track_shift_force, shape=(k,), low=0.0)
-        for name in ("speed", "radius", "nadal_limit", "weinstock_limit", "prudhomme_limit", "twist_limit"):
+        _checks.speed("speed", self.speed)
+        for name in ("radius", "nadal_limit", "weinstock_limit", "prudhomme_limit", "twist_limit"):
             _checks.positive(name, getattr(self, name))
         for name in ("cant", "twist_unloading", "flexibility", "wind_force", "overturning_unloading"):
             _checks.nonnegative(name, getattr(self, name))
         _checks.nonnegative("overturning_deficiency", self.overturning_deficiency)
         _checks.positive("wind_height", self.wind_height)
-        _checks.scalar("overturning_limit", self.overturning_limit, low=0.0, low_open=True, high=1.0)
+        _checks.scalar("overturning_limit", self.overturning_limit, low=0.5, high=1.0)
 
     @property
     def criteria(self) -> dict:
@@ -438,16 +450,16 @@ def safety_assessment(
     cg_height : float
         h, the vehicle's centre of gravity above the rails, m, in (``model.body_height``, 4].
     primary_roll_stiffness : float
-        k_φ1 per wheelset, N·m/rad (> 0); the Manchester car's by default
+        k_φ1 per wheelset, N·m/rad, in [1e3, 1e9); the Manchester car's by default
         (:data:`MANCHESTER_PRIMARY_ROLL_STIFFNESS`): give another car's.
     factor : float
-        Prud'homme's α, in (0, 1]: 1 for locomotives and passenger vehicles, 0.85 for freight.
+        Prud'homme's α, in [0.5, 1]: 1 for locomotives and passenger vehicles, 0.85 for freight.
     wind_force : float
         F_w, the side wind's resultant force on the vehicle, N, in [0, 1e6] (0: no wind).
     wind_height : float
-        h_w, its height above the rails, m, in (0, 6].
+        h_w, its height above the rails, m, in [0.5, 6].
     overturning_limit : float
-        The ΔQ/Q₀ on the unloaded rail taken as overturning, in (0, 1]: 1 when the wheels lift.
+        The ΔQ/Q₀ on the unloaded rail taken as overturning, in [0.5, 1]: 1 when the wheels lift.
     start : QuasiStaticCurving, optional
         A nearby equilibrium of the same car (a nearby assessment's ``equilibrium``), as for
         :func:`~raildyn.curving.quasi_static.quasi_static_curving`.
@@ -469,17 +481,17 @@ def safety_assessment(
     (97, 0.33, 603)
     """
     car = _checks.instance("model", model, LateralCar)
-    V = _checks.plausible("speed", speed, "speed", low_open=True)
+    V = _checks.speed("speed", speed)
     R = _checks.scalar("radius", radius, low=MINIMUM_RADIUS)
     D = _checks.scalar("cant", cant, low=0.0, high=MAXIMUM_CANT)
     if contact is not None:
         _checks.instance("contact", contact, WheelRailContact)
     h = _checks.scalar("cg_height", cg_height, low=0.0, low_open=True, high=4.0)
-    k1 = _checks.scalar("primary_roll_stiffness", primary_roll_stiffness, low=0.0, low_open=True)
-    alpha = _checks.scalar("factor", factor, low=0.0, low_open=True, high=1.0)
+    k1 = _roll_stiffness("primary_roll_stiffness", primary_roll_stiffness)
+    alpha = _checks.scalar("factor", factor, low=_LOWEST_FACTOR, high=1.0)
     F_w = _checks.scalar("wind_force", wind_force, low=0.0, high=1.0e6)
-    h_w = _checks.scalar("wind_height", wind_height, low=0.0, low_open=True, high=6.0)
-    limit = _checks.scalar("overturning_limit", overturning_limit, low=0.0, low_open=True, high=1.0)
+    h_w = _checks.scalar("wind_height", wind_height, low=0.5, high=6.0)
+    limit = _checks.scalar("overturning_limit", overturning_limit, low=0.5, high=1.0)
     s, h_b, stiff = _roll(car, h)
     nonlinear = car.nonlinear(contact)
     state = quasi_static_curving(nonlinear, V, R, D, cg_height=h, start=start)
