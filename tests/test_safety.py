@@ -270,3 +270,31 @@ def test_on_real_profiles_nadal_takes_the_pairs_own_flange_angle():
     assert np.degrees(r.flange_angle) == pytest.approx(70.0, abs=0.5)  # the S1002 flank, about 70°
     assert r.nadal_limit == pytest.approx(nadal_limit(contact.flange_angle, contact.friction), rel=1e-12)
     np.testing.assert_allclose(r.wheel_quotient, r.equilibrium.derailment_quotient, rtol=1e-12)
+
+
+# ---------------------------------------------------------------------------------- the widget
+
+
+def test_the_widget_shows_the_assessment_of_its_controls():
+    from widget_helpers import status_line
+
+    from raildyn.widgets import chapter08_safety
+
+    container, update = chapter08_safety.safety_chart()
+    bars = list(container.live.figure.axes[0].patches)
+    update(speed_kmh=120.0, radius=800.0, cant_mm=80.0, wind_kn=60.0)
+    status = status_line(container)
+    expected = safety_assessment(
+        CAR, 120 / 3.6, 800.0, 0.08, contact=chapter08_safety._contact(), wind_force=60e3, wind_height=2.0
+    )
+    assert f"twist ΔQ/Q₀ {expected.twist_unloading:.2f}" in status
+    assert f"overturning ΔQ/Q₀ {expected.overturning_unloading:.2f}" in status
+    assert f"lift at {1e3 * expected.overturning_deficiency:.0f} mm" in status
+    # the same bars, moved in place to the new utilisations (the widget starts Newton from its last
+    # equilibrium, this test from the linear state: they meet to the search's tolerance, rel 1e-6)
+    assert container.live.figure.axes[0].patches[:] == bars
+    np.testing.assert_allclose([b.get_width() for b in bars], list(expected.utilisation.values()), rtol=1e-6)
+    # beyond every equilibrium (the inner wheels lifted) the bars go and the status says why
+    update(speed_kmh=200.0, radius=300.0)
+    assert "no equilibrium" in status_line(container)
+    assert not any(b.get_visible() for b in bars)

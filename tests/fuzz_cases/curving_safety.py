@@ -1,4 +1,4 @@
-"""Fuzz registry: chapter 8, running safety (raildyn.curving.safety).
+"""Fuzz registry: chapter 8, running safety (raildyn.curving.safety, raildyn.widgets.chapter08_safety).
 
 Prud'homme's limit and the limit twist are vectorised (a list of axle loads or bases is valid);
 the twist's unloading takes single numbers. The assessment runs the Manchester car's quasi-static
@@ -76,4 +76,7 @@ ENTRIES = [
     ),
     fuzz("raildyn.curving.SafetyAssessment", _fields, accepts=RESULT),
     fuzz("raildyn.curving.SafetyAssessment.plot", lambda: on(_assessment())),
+    # the widget takes no arguments: only the unknown keyword applies (tests/test_safety.py and
+    # tests/test_widget_contract.py make the valid call)
+    fuzz("raildyn.widgets.chapter08_safety.safety_chart", lambda: call()),
 ]
