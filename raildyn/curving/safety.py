@@ -67,9 +67,9 @@ unloaded wheel."""
 def prudhomme_limit(axle_load, factor=1.0):
     """Prud'homme's limit of an axle's track shift force: α (10 + P/3) kN, P the axle load in kN.
 
-    (ΣY)_lim = α (10 kN + P/3) (Prud'homme 1967, from the lateral resistance of ballasted track
-    with timber sleepers; the form α (10 + 2Q₀/3) kN of EN 14363, Q₀ = P/2 the static wheel load,
-    is the same number). α = 1 for locomotives and passenger vehicles, 0.85 for freight wagons.
+    (ΣY)_lim = α (10 kN + P/3) (Prud'homme 1967, from tests of the lateral resistance of ballasted
+    track; the form α (10 + 2Q₀/3) kN of EN 14363:2016, Q₀ = P/2 the static wheel load, is the same
+    number). α = 1 for locomotives and passenger vehicles, 0.85 for freight wagons.
 
     Parameters
     ----------
