@@ -8,16 +8,17 @@ The criteria, each in closed form over the quasi-static equilibrium of
 * **Wheel climb** — each wheel's Y/Q against Nadal's limit at the contact's own flange angle
   and friction, and each axle's Σ|Y/Q| against Weinstock's (:func:`raildyn.curving.climb.wheel_climb`).
 * **Track shift** — each axle's ΣY = Y_inner + Y_outer against Prud'homme's limit
-  (:func:`prudhomme_limit`): (ΣY)_lim = α (10 + P/3) kN, P the axle load in kN (Prud'homme 1967;
+  (:func:`prudhomme_limit`): (ΣY)_lim = α_P (10 + W/3) kN, W the axle load in kN (Prud'homme 1967;
   EN 14363 writes it α (10 + 2Q₀/3) kN with Q₀ the static wheel load, the same number).
 * **Wheel unloading on twisted track** — ΔQ/Q₀ of the most unloaded wheel when the car stands on
-  a track twisted by the limit twist over its bogie wheelbase 2a⁺ and over its bogie-centre distance
-  2a* (:func:`limit_twist`, :func:`twist_unloading`), against ΔQ/Q₀ ≤ 0.6, in the manner of the
-  EN 14363 twist test (a rigid body and frames on their springs on a twisted plane; no friction
-  in the suspension, no torsional flexibility of the body or the frames).
+  a track twisted by the limit twist over its bogie wheelbase 2b and over its bogie-centre
+  distance 2l (EN 14363's 2a⁺ and 2a*; :func:`limit_twist`, :func:`twist_unloading`), against
+  ΔQ/Q₀ ≤ 0.6, in the manner of the EN 14363 twist test (a rigid body and frames on their springs
+  on a twisted plane; no friction in the suspension, no torsional flexibility of the body or the
+  frames).
 * **Overturning** — the quasi-static unloading of the wheels on the unloaded rail under the
   unbalanced lateral acceleration a_q (cant deficiency, or excess), with the body's roll on its
-  secondary suspension (the flexibility coefficient s from its roll stiffness) and an optional
+  secondary suspension (the flexibility coefficient s_φ from its roll stiffness) and an optional
   side wind, and the cant deficiency at which they lift.
 
 Units: N, m, m/s, rad; twists in m/m (× 1000 for ‰); quotients and ratios are plain numbers.
@@ -53,8 +54,8 @@ __all__ = [
 # track's centre line, so the primary roll stiffness of a wheelset is 2 k (1.0 m)².
 _PRIMARY_SEMI_SPACING = 1.0
 MANCHESTER_PRIMARY_ROLL_STIFFNESS = VerticalCar().primary_stiffness * _PRIMARY_SEMI_SPACING**2
-"""k_φ1 = 2 k_z1 b₁² = 2.44 MN·m/rad, the primary roll stiffness of one wheelset of the Manchester
-benchmark vehicle (Iwnicki 1998: 1220 kN/m per axlebox at b₁ = 1.0 m either side)."""
+"""k_φp = k_p d² = 2.44 MN·m/rad, the primary roll stiffness of one wheelset of the Manchester
+benchmark vehicle (Iwnicki 1998: k_p/2 = 1220 kN/m per axlebox at d = 1.0 m either side)."""
 
 # Prud'homme's α: 1 and 0.85 are the standard's; a network's own rule is not expected below a half.
 _LOWEST_FACTOR = 0.5
@@ -65,19 +66,19 @@ unloaded wheel."""
 
 
 def prudhomme_limit(axle_load, factor=1.0):
-    """Prud'homme's limit of an axle's track shift force: α (10 + P/3) kN, P the axle load in kN.
+    """Prud'homme's limit of an axle's track shift force: α_P (10 + W/3) kN, W the axle load in kN.
 
-    (ΣY)_lim = α (10 kN + P/3) (Prud'homme 1967, from tests of the lateral resistance of ballasted
-    track; the form α (10 + 2Q₀/3) kN of EN 14363:2016, Q₀ = P/2 the static wheel load, is the same
-    number). α = 1 for locomotives and passenger vehicles, 0.85 for freight wagons.
+    (ΣY)_lim = α_P (10 kN + W/3) (Prud'homme 1967, from tests of the lateral resistance of ballasted
+    track; the form α (10 + 2Q₀/3) kN of EN 14363:2016, Q₀ = W/2 the static wheel load, is the same
+    number). α_P (the standard's α) = 1 for locomotives and passenger vehicles, 0.85 for freight wagons.
 
     Parameters
     ----------
     axle_load : float or array_like
-        P, the static axle load, N, in [1, 2e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        W, the static axle load, N, in [1, 2e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
         "axle_load").
     factor : float
-        α, in [0.5, 1].
+        α_P, in [0.5, 1].
 
     Returns
     -------
@@ -98,23 +99,23 @@ def prudhomme_limit(axle_load, factor=1.0):
 
 
 def limit_twist(base):
-    """The limit twist of the track over a base 2a, m/m: 7 ‰ below 4 m, (20/2a + 2) ‰ up to 20 m, 3 ‰ beyond.
+    """The limit twist of the track over a base b_t, m/m: 7 ‰ below 4 m, (20 m/b_t + 2) ‰ to 20 m, 3 ‰ beyond.
 
     The twist that the EN 14363 (and UIC 530-2) test on twisted track applies over a vehicle's
-    bogie wheelbase 2a⁺ and over its bogie-centre distance 2a*, as the authors recall it from
-    EN 14363:2005 (section on safety against derailment on twisted track) and UIC 530-2: it could
-    not be checked here against the text of either standard (neither is openly published), so treat
-    it as the usual form, not as a quotation. The three pieces meet at 4 m (7 ‰) and 20 m (3 ‰).
+    bogie wheelbase 2b (the standard's 2a⁺) and over its bogie-centre distance 2l (2a*), as the
+    authors recall it from EN 14363:2005 (section on safety against derailment on twisted track)
+    and UIC 530-2: it could not be checked here against the text of either standard (neither is
+    openly published), so treat it as the usual form, not as a quotation. The three pieces meet at 4 m (7 ‰) and 20 m (3 ‰).
 
     Parameters
     ----------
     base : float or array_like
-        2a, the base of the twist, m (> 0).
+        b_t, the base of the twist, m (> 0).
 
     Returns
     -------
     float or ndarray
-        g_lim, m/m (× 1000 for ‰).
+        The limit twist t_w, m/m (× 1000 for ‰).
 
     Examples
     --------
@@ -138,42 +139,42 @@ def twist_unloading(
 ) -> float:
     """ΔQ/Q₀ of the most unloaded wheel of a car on two two-axle bogies standing on twisted track.
 
-    One rail rises by g x relative to the other, x along the track, so a wheelset at x rolls by
-    g x/(2a) (2a between its contact points). The body and the frames are rigid, each on its
+    One rail rises by t_w x relative to the other, x along the track, so a wheelset at x rolls by
+    t_w x/(2a) (2a between its contact points). The body and the frames are rigid, each on its
     springs; the body does not roll and the frames roll with the mean of their wheelsets' track, so
     the twist splits into two independent parts (a linear model: they add):
 
-    * over the bogie wheelbase 2b (twist g⁺): each wheelset rolls ± g⁺ b/(2a) against its frame,
-      and its primary roll stiffness k_φ1 moves ΔQ⁺ = k_φ1 g⁺ b/(4a²) between its wheels;
-    * over the bogie-centre distance 2s (twist g*): each bogie's track rolls ± g* s/(2a) against
-      the body through its two wheelsets' primaries (2 k_φ1) in series with its secondary k_φ2,
-      k = 2k_φ1 k_φ2/(2k_φ1 + k_φ2); the moment k g* s/(2a) is shared by its two wheelsets:
-      ΔQ* = k g* s/(8a²).
+    * over the bogie wheelbase 2b (twist t_w⁺): each wheelset rolls ± t_w⁺ b/(2a) against its frame,
+      and its primary roll stiffness k_φp moves ΔQ⁺ = k_φp t_w⁺ b/(4a²) between its wheels;
+    * over the bogie-centre distance 2l (twist t_w*): each bogie's track rolls ± t_w* l/(2a) against
+      the body through its two wheelsets' primaries (2 k_φp) in series with its secondary k_φ,
+      k = 2k_φp k_φ/(2k_φp + k_φ); the moment k t_w* l/(2a) is shared by its two wheelsets:
+      ΔQ* = k t_w* l/(8a²).
 
-    The leading wheel on the falling rail loses both: ΔQ/Q₀ = (ΔQ⁺ + ΔQ*)/(P/2). Left out: the
+    The leading wheel on the falling rail loses both: ΔQ/Q₀ = (ΔQ⁺ + ΔQ*)/(W/2). Left out: the
     body's and frames' torsional flexibility, the friction and hysteresis of the suspension, the
     weight's roll moment and the vertical tolerances of a real test (EN 14363 adds them).
 
     Parameters
     ----------
     axle_load : float
-        P, the static axle load, N, in [1, 2e6].
+        W, the static axle load, N, in [1, 2e6].
     half_gauge : float
         a, half the distance between the contact points, m, in [0.15, 1.1].
     semi_wheelbase : float
         b, half the bogie wheelbase, m, in [0.01, 100].
     semi_bogie_spacing : float
-        s, half the distance between bogie centres, m, in [0.01, 100] and > ``semi_wheelbase``.
+        l, half the distance between bogie centres, m, in [0.01, 100] and > ``semi_wheelbase``.
     primary_roll_stiffness : float
-        k_φ1, per wheelset, N·m/rad, in [1e3, 1e9): 2 k_z1 b₁², k_z1 the vertical spring per
-        axlebox at ±b₁.
+        k_φp, per wheelset, N·m/rad, in [1e3, 1e9): k_p d², k_p/2 the vertical spring of each
+        axlebox at ±d.
     secondary_roll_stiffness : float
-        k_φ2, per bogie, N·m/rad, in [1e3, 1e9): the secondary vertical springs and any anti-roll
+        k_φ, per bogie, N·m/rad, in [1e3, 1e9): the secondary vertical springs and any anti-roll
         bar.
     bogie_twist : float, optional
-        g⁺, m/m, in [0, 0.05]; :func:`limit_twist` of 2b if None.
+        t_w⁺, m/m, in [0, 0.05]; :func:`limit_twist` of 2b if None.
     car_twist : float, optional
-        g*, m/m, in [0, 0.05]; :func:`limit_twist` of 2s if None.
+        t_w*, m/m, in [0, 0.05]; :func:`limit_twist` of 2l if None.
 
     Returns
     -------
@@ -244,15 +245,15 @@ class SafetyAssessment:
     track_shift_force : ndarray, (k,)
         |ΣY| = |Y_inner + Y_outer| of each axle, N (≥ 0).
     prudhomme_limit : float
-        α (10 + P/3) kN, N.
+        α_P (10 + W/3) kN, N.
     bogie_twist, car_twist : float
-        g⁺ over the bogie wheelbase and g* over the bogie-centre distance, m/m.
+        t_w⁺ over the bogie wheelbase and t_w* over the bogie-centre distance, m/m.
     twist_unloading : float
         ΔQ/Q₀ of the most unloaded wheel on that twist (≥ 0).
     twist_limit : float
         0.6 (:data:`TWIST_UNLOADING_LIMIT`).
     flexibility : float
-        s, the body's roll on its suspension per radian of track roll standing on cant (≥ 0).
+        s_φ, the body's roll on its suspension per radian of track roll standing on cant (≥ 0).
     wind_force : float
         F_w, the side wind's force on the vehicle, N (≥ 0), at ``wind_height``, m.
     wind_height : float
@@ -424,13 +425,13 @@ def safety_assessment(
     :func:`twist_unloading` on the :func:`limit_twist` of its wheelbase and bogie spacing; and
     overturning from the moment balance about the unloaded rail, in the track's plane:
 
-        ΔQ/Q₀ = [W h |a_q|/g + m_b g h_b (φ_a + φ_w) + F_w h_w] / (a W),
+        ΔQ/Q₀ = [4W h_g |a_q|/g + m_b g h (φ_a + φ_w) + F_w h_w] / (4aW),
 
-    W = 4P the vehicle's weight, h = ``cg_height``, a the half gauge, m_b and h_b the body's mass
-    and height above its secondary springs, and the body's roll on those springs φ_a = s |a_q|/g
-    (s = m_b g h_b/(2k_φ − m_b g h_b), the flexibility coefficient of EN 15273: the body's roll per
-    radian of track roll standing on cant) and φ_w = F_w (h_w − h + h_b)/(2k_φ − m_b g h_b) from the
-    wind at h_w. The wind is taken to blow towards the unloaded rail; it enters the overturning only
+    W the axle load (4W the car's weight), h_g = ``cg_height``, a the half gauge, m_b and h the
+    body's mass and height above its secondary springs, and the body's roll on those springs
+    φ_a = s_φ |a_q|/g (s_φ = m_b g h/(2k_φ − m_b g h), the flexibility coefficient s of EN 15273: the
+    body's roll per radian of track roll standing on cant) and φ_w = F_w (h_w − h_g + h)/(2k_φ − m_b g h)
+    from the wind at h_w. The wind is taken to blow towards the unloaded rail; it enters the overturning only
     (not Y, Q or ΣY). Setting ΔQ/Q₀ to ``overturning_limit`` gives the cant deficiency of overturning.
 
     Parameters
@@ -448,12 +449,12 @@ def safety_assessment(
         The wheel–rail contact (its flange angle and friction are Nadal's); the default
         :class:`~raildyn.wheelset.WheelRailContact` if None.
     cg_height : float
-        h, the vehicle's centre of gravity above the rails, m, in (``model.body_height``, 4].
+        h_g, the vehicle's centre of gravity above the rails, m, in (``model.body_height``, 4].
     primary_roll_stiffness : float
-        k_φ1 per wheelset, N·m/rad, in [1e3, 1e9); the Manchester car's by default
+        k_φp per wheelset, N·m/rad, in [1e3, 1e9); the Manchester car's by default
         (:data:`MANCHESTER_PRIMARY_ROLL_STIFFNESS`): give another car's.
     factor : float
-        Prud'homme's α, in [0.5, 1]: 1 for locomotives and passenger vehicles, 0.85 for freight.
+        Prud'homme's α_P, in [0.5, 1]: 1 for locomotives and passenger vehicles, 0.85 for freight.
     wind_force : float
         F_w, the side wind's resultant force on the vehicle, N, in [0, 1e6] (0: no wind).
     wind_height : float
