@@ -105,7 +105,8 @@ def limit_twist(base):
     bogie wheelbase 2b (the standard's 2a⁺) and over its bogie-centre distance 2l (2a*), as the
     authors recall it from EN 14363:2005 (section on safety against derailment on twisted track)
     and UIC 530-2: it could not be checked here against the text of either standard (neither is
-    openly published), so treat it as the usual form, not as a quotation. The three pieces meet at 4 m (7 ‰) and 20 m (3 ‰).
+    openly published), so treat it as the usual form, not as a quotation. The three pieces meet at
+    4 m (7 ‰) and 20 m (3 ‰).
 
     Parameters
     ----------
