@@ -145,14 +145,14 @@ def twist_unloading(
     springs; the body does not roll and the frames roll with the mean of their wheelsets' track, so
     the twist splits into two independent parts (a linear model: they add):
 
-    * over the bogie wheelbase 2b (twist t_w⁺): each wheelset rolls ± t_w⁺ b/(2a) against its frame,
-      and its primary roll stiffness k_φp moves ΔQ⁺ = k_φp t_w⁺ b/(4a²) between its wheels;
-    * over the bogie-centre distance 2l (twist t_w*): each bogie's track rolls ± t_w* l/(2a) against
+    * over the bogie wheelbase 2b (twist t_w^b): each wheelset rolls ± t_w^b b/(2a) against its frame,
+      and its primary roll stiffness k_φp moves ΔQ^b = k_φp t_w^b b/(4a²) between its wheels;
+    * over the bogie-centre distance 2l (twist t_w^l): each bogie's track rolls ± t_w^l l/(2a) against
       the body through its two wheelsets' primaries (2 k_φp) in series with its secondary k_φ,
-      k = 2k_φp k_φ/(2k_φp + k_φ); the moment k t_w* l/(2a) is shared by its two wheelsets:
-      ΔQ* = k t_w* l/(8a²).
+      k = 2k_φp k_φ/(2k_φp + k_φ); the moment k t_w^l l/(2a) is shared by its two wheelsets:
+      ΔQ^l = k t_w^l l/(8a²).
 
-    The leading wheel on the falling rail loses both: ΔQ/Q₀ = (ΔQ⁺ + ΔQ*)/(W/2). Left out: the
+    The leading wheel on the falling rail loses both: ΔQ/Q₀ = (ΔQ^b + ΔQ^l)/(W/2). Left out: the
     body's and frames' torsional flexibility, the friction and hysteresis of the suspension, the
     weight's roll moment and the vertical tolerances of a real test (EN 14363 adds them).
 
@@ -173,9 +173,9 @@ def twist_unloading(
         k_φ, per bogie, N·m/rad, in [1e3, 1e9): the secondary vertical springs and any anti-roll
         bar.
     bogie_twist : float, optional
-        t_w⁺, m/m, in [0, 0.05]; :func:`limit_twist` of 2b if None.
+        t_w^b, m/m, in [0, 0.05]; :func:`limit_twist` of 2b if None.
     car_twist : float, optional
-        t_w*, m/m, in [0, 0.05]; :func:`limit_twist` of 2l if None.
+        t_w^l, m/m, in [0, 0.05]; :func:`limit_twist` of 2l if None.
 
     Returns
     -------
@@ -248,7 +248,7 @@ class SafetyAssessment:
     prudhomme_limit : float
         α_P (10 + W/3) kN, N.
     bogie_twist, car_twist : float
-        t_w⁺ over the bogie wheelbase and t_w* over the bogie-centre distance, m/m.
+        t_w^b over the bogie wheelbase and t_w^l over the bogie-centre distance, m/m.
     twist_unloading : float
         ΔQ/Q₀ of the most unloaded wheel on that twist (≥ 0).
     twist_limit : float
