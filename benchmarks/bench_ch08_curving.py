@@ -1,6 +1,7 @@
 """Chapter 8: a quasi-static curving map of the nonlinear bogie, 40 radii × 30 speeds, raildyn against a
-per-point ``scipy.optimize.fsolve`` loop started cold; and the chapter's widgets, each update against a
-new figure per change (``benchmarks.common.widget_case``).
+per-point ``scipy.optimize.fsolve`` loop started cold; and the chapter's widgets (the running-safety
+chart of ``raildyn.widgets.chapter08_safety`` among them), each update against a new figure per change
+(``benchmarks.common.widget_case``).
 
 raildyn (:func:`raildyn.curving.curving_map`) solves all 1200 points together: one Newton's method on
 the whole batch, its forces and Jacobian evaluated by the compiled engine
@@ -45,11 +46,11 @@ def _cold_loop(model) -> tuple[np.ndarray, np.ndarray]:
 
 
 def cases(repeats: int):
-    from raildyn.widgets import chapter08
+    from raildyn.widgets import chapter08, chapter08_safety
 
     return _map_case(repeats) + [
         widget_case(label, recipe, control, values, repeats)
-        for label, recipe, control, values in chapter08.BENCH_MOVES
+        for label, recipe, control, values in chapter08.BENCH_MOVES + chapter08_safety.BENCH_MOVES
     ]
 
 

@@ -14,12 +14,22 @@ that run on it.
 * :mod:`raildyn.curving.stiffness` — self-steering in bending and shear stiffness, and the
   trade-off between stability and curving
   (:func:`~raildyn.curving.stiffness.stability_and_curving`);
-* :mod:`raildyn.curving.climb` — wheel climb: Nadal's limit and Weinstock's axle sum.
+* :mod:`raildyn.curving.climb` — wheel climb: Nadal's limit and Weinstock's axle sum;
+* :mod:`raildyn.curving.safety` — running safety of a car through a curve: wheel climb, Prud'homme's
+  track shift, unloading on twisted track and overturning
+  (:func:`~raildyn.curving.safety.safety_assessment`).
 """
 
 from raildyn.curving import geometry  # noqa: F401  (the old path of raildyn.track.cant and .curve; goes after one issue)
 from raildyn.curving.entry import CurveEntry, curve_entry
 from raildyn.curving.quasi_static import CurvingMap, QuasiStaticCurving, curving_map, quasi_static_curving
+from raildyn.curving.safety import (
+    SafetyAssessment,
+    limit_twist,
+    prudhomme_limit,
+    safety_assessment,
+    twist_unloading,
+)
 from raildyn.curving.steady import SteadyCurving, steady_curving
 from raildyn.curving.stiffness import (
     BendingShear,
@@ -37,14 +47,19 @@ __all__ = [
     "CurveEntry",
     "CurvingMap",
     "QuasiStaticCurving",
+    "SafetyAssessment",
     "SelfSteeringCurving",
     "StabilityCurving",
     "SteadyCurving",
     "curve_entry",
     "bending_shear_stiffness",
     "curving_map",
+    "limit_twist",
+    "prudhomme_limit",
     "quasi_static_curving",
+    "safety_assessment",
     "self_steering_curving",
     "stability_and_curving",
     "steady_curving",
+    "twist_unloading",
 ]
