@@ -87,9 +87,10 @@ class BifurcationDiagram:
             raise ValueError(f"hunting must have shape ({n},), got {hunting.shape}")
         if self.nonlinear_critical_speed != np.inf:  # inf: no limit cycle on the grid
             V = np.asarray(self.speeds, dtype=float)
-            _checks.speed(
-                "nonlinear_critical_speed", self.nonlinear_critical_speed, low=V.min(), high=V.max()
-            )
+            _checks.speed(  # the lowest speed itself where every speed of the ramp hunts
+                "nonlinear_critical_speed", self.nonlinear_critical_speed, low=V.min(), low_open=False,
+                high=V.max(),
+            )  # fmt: skip
         positive("threshold", self.threshold)
 
     def plot(

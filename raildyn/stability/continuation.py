@@ -233,8 +233,8 @@ def limit_cycle_branch(
     Raises
     ------
     SolverError
-        If an integration fails, the correction of the starting cycle does not converge, or a
-        step halved eight times still does not converge.
+        If an integration fails, the correction of the starting cycle does not converge (or
+        converges to the centred running), or a step halved eight times still does not converge.
 
     Notes
     -----
@@ -290,6 +290,11 @@ def limit_cycle_branch(
     if corrected is None:
         raise SolverError(f"the starting cycle at V = {start.speed:.6g} m/s did not converge by shooting")
     w, point, _ = corrected
+    if point.lateral <= 0.0 or point.amplitude < end_amplitude:  # x = 0 closes for any T: the centre
+        raise SolverError(
+            f"the starting cycle at V = {start.speed:.6g} m/s shrank to the centred running (amplitude "
+            f"{point.amplitude:.3g} m): there is no cycle near the start"
+        )
     tangent = np.linalg.svd(point.jacobian)[2][-1]  # the Jacobian's null vector: the branch's direction
     tangent *= sign * np.sign(tangent[-1]) if tangent[-1] != 0.0 else 1.0
     points, arc, folds = [point], [0.0], []
