@@ -90,12 +90,12 @@ def test_normal_form_cycles_fold_periods_and_multipliers_are_exact(normal_branch
     np.testing.assert_allclose(far.real, np.exp(b.periods * (2 * r**2 - 4 * r**4)), atol=1e-3)
     # One fold, at μ = −¼ (V = 45 m/s) and r² = ½: regula falsi stops where the scaled dV/ds is
     # below 1e-3, which leaves the speed within 1e-4 m/s of the turning point.
-    assert b.fold_speeds.size == 1
-    assert b.fold_speeds[0] == pytest.approx(45.0, abs=1e-3)
-    assert b.fold_amplitudes[0] == pytest.approx(a / np.sqrt(2), rel=1e-3)
-    assert b.nonlinear_critical_speed == b.fold_speeds[0]
+    assert b.fold_speed == pytest.approx(45.0, abs=1e-3)
+    assert b.fold_amplitude == pytest.approx(a / np.sqrt(2), rel=1e-3)
+    assert b.nonlinear_critical_speed == b.fold_speed
+    assert np.sum(np.diff(np.sign(np.diff(b.speeds))) != 0) == 1  # the speed turns once
     # Stable outside (r² > ½), unstable inside; the flag changes at the fold.
-    fold = int(np.flatnonzero(b.speeds == b.fold_speeds[0])[0])
+    fold = int(np.flatnonzero(b.speeds == b.fold_speed)[0])
     assert b.stable[:fold].all() and not b.stable[fold + 1 :].any()
     np.testing.assert_array_equal(b.stable[r**2 > 0.5 + 1e-3], True)
     # The unstable branch ends at the Hopf point, amplitude → 0 at V_H: with r² ≈ −μ there, an
@@ -110,7 +110,7 @@ def test_continuation_runs_up_the_branch_too():
     start = stability.periodic_orbit(NORMAL, 48.0, [NORMAL.scale * np.sqrt(r2), 0.0], 0.5)
     assert not start.stable
     b = stability.limit_cycle_branch(NORMAL, start, direction="up", end_amplitude=1e-4)
-    assert np.all(np.diff(b.speeds) > 0) and not b.stable.any() and b.fold_speeds.size == 0
+    assert np.all(np.diff(b.speeds) > 0) and not b.stable.any() and b.fold_speed == np.inf
     assert b.speeds[-1] == pytest.approx(NORMAL.hopf_speed, abs=3e-3)
 
 
@@ -134,7 +134,7 @@ def _largest_nontrivial(multipliers):
 
 
 def _fold_index(branch):
-    return int(np.flatnonzero(branch.speeds == branch.fold_speeds[0])[0])
+    return int(np.flatnonzero(branch.speeds == branch.fold_speed)[0])
 
 
 def test_car_branch_meets_the_ramp_down(car):
@@ -223,7 +223,7 @@ def test_wheelset_branch_is_supercritical_down_to_its_critical_speed():
     model = NonlinearWheelset(SOFT)
     start = stability.limit_cycle_amplitude(model, 60.0, duration=4.0)
     b = stability.limit_cycle_branch(model, start, end_amplitude=5e-5)
-    assert b.stable.all() and b.fold_speeds.size == 0 and b.nonlinear_critical_speed == np.inf
+    assert b.stable.all() and b.fold_speed == np.inf and b.nonlinear_critical_speed == np.inf
     Vc = stability.critical_speed(SOFT, (1.0, 200.0)).speed
     V, A = b.speeds[-2:], b.amplitudes[-2:]
     reach = V[1] + A[1] * (V[1] - V[0]) / (A[0] - A[1])
@@ -253,7 +253,7 @@ def test_branch_plot_and_the_whole_diagram(normal_branch):
     _, unstable = drawn["unstable"].get_data()
     assert np.isfinite(unstable[~b.stable]).all()
     assert np.isnan(unstable[0])  # the first points, stable and far from the fold, are not dashed
-    np.testing.assert_allclose(drawn["fold"].get_data()[0], 3.6 * b.fold_speeds)
+    np.testing.assert_allclose(drawn["fold"].get_data()[0], [3.6 * b.fold_speed])
     assert drawn["unstable"].get_linestyle() == "--" and drawn["stable"].get_linestyle() == "-"
     # In place: no new artists.
     count = len(fig.axes[0].lines)
@@ -333,14 +333,15 @@ def test_branch_result_checks_its_fields():
     ok = dict(
         speeds=np.array([60.0, 55.0]), amplitudes=np.array([0.01, 0.009]), periods=np.array([0.2, 0.2]),
         stable=np.array([True, False]), multipliers=np.ones((2, 2), complex), states=np.ones((2, 2)),
-        arclength=np.array([0.0, 0.1]), fold_speeds=np.array([]), fold_amplitudes=np.array([]),
+        arclength=np.array([0.0, 0.1]), fold_speed=np.inf, fold_amplitude=0.0,
     )  # fmt: skip
     stability.LimitCycleBranch(**ok)
     for name, value, error in (
         ("arclength", np.array([0.1, 0.0]), ValueError),
         ("stable", np.array([1, 0]), TypeError),
         ("amplitudes", np.array([0.01, -1.0]), ValueError),
-        ("fold_amplitudes", np.array([0.01]), ValueError),
+        ("fold_amplitude", -0.01, ValueError),
+        ("fold_speed", -np.inf, ValueError),
     ):
         with pytest.raises(error, match=name):
             stability.LimitCycleBranch(**{**ok, name: value})

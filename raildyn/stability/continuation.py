@@ -23,12 +23,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn._checks import array, integer, positive, scalar
+from raildyn._checks import array, integer, scalar
 from raildyn.constants import MAXIMUM_SPEED
 from raildyn.errors import SolverError
 from raildyn.stability._shooting import compiled, flows
 from raildyn.stability.bifurcation import PeriodicOrbit
-from raildyn.stability.nonlinear import _MIN_RUN_SPEED, LimitCycle, _duration, _engine_choice, _model, _runs
+from raildyn.stability.nonlinear import (
+    _MAX_DISPLACEMENT,
+    _MIN_RUN_SPEED,
+    LimitCycle,
+    _duration,
+    _engine_choice,
+    _model,
+    _runs,
+)
 
 __all__ = ["LimitCycleBranch", "limit_cycle_branch"]
 
@@ -75,12 +83,13 @@ class LimitCycleBranch:
         The scaled arclength of each point from the first (dimensionless, increasing from 0): the
         change of speed relative to the starting speed, of the period relative to the starting
         period and the RMS change of the state relative to the starting cycle's entries.
-    fold_speeds : ndarray, (f,)
-        The speed of each fold (turning point in speed) of the branch, m/s: a point of the branch
-        located where the scaled dV/ds falls below 1e-3 (so it is also among ``speeds``); empty if
-        the branch does not turn.
-    fold_amplitudes : ndarray, (f,)
-        The amplitude at each fold, m.
+    fold_speed : float
+        The speed of the fold, the turning point in speed where the stable and unstable cycles
+        meet, m/s: a point of the branch (so also among ``speeds``), located where the scaled dV/ds
+        falls below 1e-3; the lowest, should the branch turn more than once; inf if it does not
+        turn (a supercritical branch).
+    fold_amplitude : float
+        The amplitude at the fold, m (≥ 0; 0 where there is no fold).
     """
 
     speeds: np.ndarray
@@ -90,13 +99,14 @@ class LimitCycleBranch:
     multipliers: np.ndarray
     states: np.ndarray
     arclength: np.ndarray
-    fold_speeds: np.ndarray
-    fold_amplitudes: np.ndarray
+    fold_speed: float
+    fold_amplitude: float
 
     def __post_init__(self):
-        k = array("speeds", self.speeds, ndim=1, low=0.0, allow_empty=False).size
+        k = _checks.speeds("speeds", self.speeds).size
         array("amplitudes", self.amplitudes, shape=(k,), low=0.0)
-        array("periods", self.periods, shape=(k,), low=0.0)
+        for period in array("periods", self.periods, shape=(k,)):
+            _duration("periods", period)
         stable = np.asarray(self.stable)
         if stable.dtype != bool or stable.shape != (k,):
             raise TypeError(f"stable must be an array of {k} bools, got {self.stable!r:.80}")
@@ -105,13 +115,15 @@ class LimitCycleBranch:
         s = array("arclength", self.arclength, shape=(k,), low=0.0)
         if np.any(np.diff(s) <= 0.0):
             raise ValueError(f"arclength must increase along the branch, got {self.arclength!r:.80}")
-        f = array("fold_speeds", self.fold_speeds, ndim=1, low=0.0).size
-        array("fold_amplitudes", self.fold_amplitudes, shape=(f,), low=0.0)
+        if self.fold_speed != np.inf:  # inf: the branch does not turn
+            V = np.asarray(self.speeds, dtype=float)  # the fold is a point of the branch
+            _checks.speed("fold_speed", self.fold_speed, low=V.min(), low_open=False, high=V.max())
+        _checks.nonnegative("fold_amplitude", self.fold_amplitude)
 
     @property
     def nonlinear_critical_speed(self) -> float:
-        """The lowest speed at which a limit cycle exists: the lowest fold, m/s (inf without a fold)."""
-        return float(self.fold_speeds.min()) if self.fold_speeds.size else np.inf
+        """The lowest speed at which a limit cycle exists: the fold's, m/s (inf without a fold)."""
+        return self.fold_speed
 
     def plot(self, ax=None, *, artists: dict | None = None) -> dict:
         """Draw the amplitude (mm) against speed (km/h): stable cycles solid, unstable dashed, folds marked.
@@ -154,7 +166,8 @@ class LimitCycleBranch:
             _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
         artists["stable"].set_data(V, np.where(stable, amp, np.nan))
         artists["unstable"].set_data(V, np.where(near_unstable, amp, np.nan))
-        artists["fold"].set_data(3.6 * self.fold_speeds, 1e3 * self.fold_amplitudes)
+        fold = [] if self.fold_speed == np.inf else [self.fold_speed]
+        artists["fold"].set_data(3.6 * np.array(fold), [1e3 * self.fold_amplitude] * len(fold))
         return artists
 
 
@@ -206,17 +219,19 @@ def limit_cycle_branch(
         (low, high), m/s, within [1, :data:`~raildyn.constants.MAXIMUM_SPEED`], low < high: the
         continuation stops where the branch leaves it.
     end_amplitude : float
-        The amplitude at which the continuation stops, m (> 0): the branch is taken to end at a
+        The amplitude at which the continuation stops, m, in (0, 0.05] (no wheelset on the rails
+        moves further): the branch is taken to end at a
         Hopf point (zero amplitude) just beyond. Default 0.2 mm, the amplitude below which
         :func:`~raildyn.stability.bifurcation.bifurcation_diagram` counts a motion as decayed.
     arc_step : float
-        The first step Δs, dimensionless, in (0, 1].
+        The first step Δs, dimensionless, in [1e-6, 1] (a millionth changes nothing measurable).
     max_arc_step : float
         The largest step, dimensionless, in [arc_step, 1].
     max_points : int
         The most points on the branch, in [2, 1000]: the continuation stops there.
     tol : float
-        Newton's convergence on the scaled step (dimensionless, > 0).
+        Newton's convergence on the scaled step (dimensionless), in (0, 0.01]: a coarser one would
+        leave the cycles unconverged by a per cent.
     max_iter : int
         Newton (chord) iterations per point before the step is retried shorter, in [1, 50].
     rtol : float
@@ -228,7 +243,7 @@ def limit_cycle_branch(
     -------
     LimitCycleBranch
         Speeds (m/s), amplitudes (m), periods (s), stability and multipliers of each cycle, and
-        the folds; :attr:`LimitCycleBranch.nonlinear_critical_speed` is the lowest fold.
+        the fold (:attr:`LimitCycleBranch.nonlinear_critical_speed`).
 
     Raises
     ------
@@ -253,8 +268,8 @@ def limit_cycle_branch(
     >>> model = NonlinearWheelset(Wheelset(yaw_stiffness=2.0e6, lateral_stiffness=1.0e6))
     >>> cycle = stability.limit_cycle_amplitude(model, 60.0, duration=4.0)
     >>> branch = stability.limit_cycle_branch(model, cycle)
-    >>> bool(branch.stable.all()), branch.fold_speeds.size, round(float(branch.speeds[-1]), 1)
-    (True, 0, 54.5)
+    >>> bool(branch.stable.all()), branch.fold_speed, round(float(branch.speeds[-1]), 1)
+    (True, inf, 54.5)
     """
     m = _model(model)
     _checks.instance("start", start, (PeriodicOrbit, LimitCycle), "PeriodicOrbit or LimitCycle")
@@ -264,11 +279,11 @@ def limit_cycle_branch(
     _checks.speed("speed_range", high)
     if not low < high:
         raise ValueError(f"speed_range must be (low, high) with low < high, m/s, got {speed_range!r}")
-    end_amplitude = positive("end_amplitude", end_amplitude)
-    ds = scalar("arc_step", arc_step, low=0.0, low_open=True, high=1.0)
+    end_amplitude = scalar("end_amplitude", end_amplitude, low=0.0, low_open=True, high=_MAX_DISPLACEMENT)
+    ds = scalar("arc_step", arc_step, low=1e-6, high=1.0)
     ds_max = scalar("max_arc_step", max_arc_step, low=ds, high=1.0)
     max_points = integer("max_points", max_points, low=2, high=1000)
-    tol = positive("tol", tol)
+    tol = scalar("tol", tol, low=0.0, low_open=True, high=1e-2)
     max_iter = integer("max_iter", max_iter, low=1, high=50)
     rtol = _checks.tolerance("rtol", rtol)
     engine = _engine_choice(engine)
@@ -509,7 +524,9 @@ def _branch(points, arc, folds) -> LimitCycleBranch:
     stable = np.array(
         [PeriodicOrbit(p.speed, p.period, p.state, p.amplitude, p.multipliers, 0.0).stable for p in points]
     )
+    lowest = folds[int(np.argmin(V[folds]))] if folds else 0
     return LimitCycleBranch(
         V, A, np.array([p.period for p in points]), stable, np.array([p.multipliers for p in points]),
-        np.array([p.state for p in points]), arc, V[folds], A[folds],
+        np.array([p.state for p in points]), arc, float(V[lowest]) if folds else np.inf,
+        float(A[lowest]) if folds else 0.0,
     )  # fmt: skip
