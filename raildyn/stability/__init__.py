@@ -20,7 +20,9 @@ eigenvalues come from one batched ``numpy.linalg`` call.
 * :func:`~raildyn.stability.nonlinear.limit_cycle_amplitude`,
   :func:`~raildyn.stability.bifurcation.bifurcation_diagram` — nonlinear hunting: the
   amplitude of the limit cycle against speed and the nonlinear critical speed;
-  :func:`~raildyn.stability.bifurcation.bifurcation_diagrams` runs a family of vehicles side by side.
+  :func:`~raildyn.stability.bifurcation.bifurcation_diagrams` runs a family of vehicles side by side;
+  :func:`~raildyn.stability.continuation.limit_cycle_branch` follows the whole branch of limit cycles,
+  stable and unstable, through its fold by pseudo-arclength continuation.
   The nonlinear models are integrated by a compiled engine (numba) that takes scipy RK45's
   steps a few hundred times faster; ``engine="scipy"`` runs the reference it is tested against.
 """
@@ -32,6 +34,7 @@ from raildyn.stability.bifurcation import (
     bifurcation_diagrams,
     periodic_orbit,
 )
+from raildyn.stability.continuation import LimitCycleBranch, limit_cycle_branch
 from raildyn.stability.critical import CriticalSpeed, CriticalSpeedMap, critical_speed, critical_speed_map
 from raildyn.stability.linear import (
     ModeSweep,
@@ -59,6 +62,7 @@ __all__ = [
     "CriticalSpeedMap",
     "CriticalSpeeds",
     "LimitCycle",
+    "LimitCycleBranch",
     "ModeSweep",
     "NonlinearRun",
     "PeriodicOrbit",
@@ -72,6 +76,7 @@ __all__ = [
     "eigenvalues_against_speed",
     "largest_real_part",
     "limit_cycle_amplitude",
+    "limit_cycle_branch",
     "mac",
     "mode_sweep",
     "periodic_orbit",

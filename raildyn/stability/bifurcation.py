@@ -87,18 +87,26 @@ class BifurcationDiagram:
             raise ValueError(f"hunting must have shape ({n},), got {hunting.shape}")
         if self.nonlinear_critical_speed != np.inf:  # inf: no limit cycle on the grid
             V = np.asarray(self.speeds, dtype=float)
-            _checks.speed(
-                "nonlinear_critical_speed", self.nonlinear_critical_speed, low=V.min(), high=V.max()
-            )
+            _checks.speed(  # the lowest speed itself where every speed of the ramp hunts
+                "nonlinear_critical_speed", self.nonlinear_critical_speed, low=V.min(), low_open=False,
+                high=V.max(),
+            )  # fmt: skip
         positive("threshold", self.threshold)
 
     def plot(
-        self, ax=None, *, linear_critical_speed: float | None = None, artists: dict | None = None
+        self,
+        ax=None,
+        *,
+        linear_critical_speed: float | None = None,
+        artists: dict | None = None,
+        branch=None,
     ) -> dict:
         """Draw the amplitude (mm) against speed (km/h), with the nonlinear and linear critical speeds.
 
         Filled markers joined by a line: sustained hunting; open markers: motion that dies away.
-        Each critical speed is a vertical line labelled with its value at the top of the axes.
+        Each critical speed is a vertical line labelled with its value at the top of the axes. With a
+        ``branch``, the whole diagram: the continued branch of cycles over the ramp's points, its
+        stable part solid, its unstable part dashed and its fold marked.
 
         Parameters
         ----------
@@ -111,13 +119,18 @@ class BifurcationDiagram:
         artists : dict, optional
             The artists an earlier call returned: they are moved to this diagram in place (a
             widget's redraw), and a critical speed that is absent is hidden.
+        branch : LimitCycleBranch, optional
+            The branch of limit cycles of the same vehicle, from
+            :func:`~raildyn.stability.continuation.limit_cycle_branch`, drawn by its own
+            :meth:`~raildyn.stability.continuation.LimitCycleBranch.plot` on the same axes.
 
         Returns
         -------
         dict
             The artists: ``cycles`` and ``decaying`` (``Line2D``), and the vertical lines
             ``nonlinear`` and ``linear`` with their labels ``nonlinear_text`` and ``linear_text``
-            (hidden where the nonlinear critical speed is infinite or no linear one is given).
+            (hidden where the nonlinear critical speed is infinite or no linear one is given); with
+            a branch, ``branch``, the dict of its artists.
         """
         import matplotlib
 
@@ -154,6 +167,13 @@ class BifurcationDiagram:
                 ax.legend(loc="center right")
         else:
             _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
+        if branch is not None:
+            from raildyn.stability.continuation import LimitCycleBranch
+
+            _checks.instance("branch", branch, LimitCycleBranch, "LimitCycleBranch (limit_cycle_branch)")
+            artists["branch"] = branch.plot(artists["cycles"].axes, artists=artists.get("branch"))
+            top = 1.1 * max(float(amp.max()), 1e3 * float(branch.amplitudes.max()), 1.0)
+            artists["cycles"].axes.set_ylim(0.0, top)
         artists["cycles"].set_data(V[hunt], amp[hunt])
         artists["decaying"].set_data(V[~hunt], amp[~hunt])
         for key, value in marks.items():
