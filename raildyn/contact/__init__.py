@@ -9,7 +9,7 @@
 * :mod:`~raildyn.contact.creepages` — the creepages of a wheelset's two wheels.
 * :mod:`~raildyn.contact.fastsim` — Kalker's simplified theory (FASTSIM), compiled, batched over states;
   :mod:`~raildyn.contact.fastsim_python` — the same in numpy and plain Python, for the tests.
-* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles, and a measured worn wheel and rail.
+* :mod:`~raildyn.contact.profiles` — conical, S1002 and 60E1 profiles.
 * :mod:`~raildyn.contact.profile_files` — measured or worn profiles read from two-column files, and the
   check that a wheel and a rail make a pair at a gauge.
 * :mod:`~raildyn.contact.geometry` — wheel and rail profiles as data, and a pair's contact points,
@@ -51,16 +51,16 @@ from raildyn.contact.kalker import (
     kalker_linear,
 )
 from raildyn.contact.polach import POLACH_DRY, POLACH_WET, PolachAdhesion, polach, polach_adhesion
-from raildyn.contact.profile_files import check_pair, read_rail_profile, read_wheel_profile
-from raildyn.contact.profiles import (
+from raildyn.contact.profile_files import (
     WORN_RAIL_FILE,
     WORN_WHEEL_FILE,
-    conical_wheel,
-    s1002_wheel,
-    uic60_rail,
+    check_pair,
+    read_rail_profile,
+    read_wheel_profile,
     worn_rail,
     worn_wheel,
 )
+from raildyn.contact.profiles import conical_wheel, s1002_wheel, uic60_rail
 from raildyn.contact.saturation import (
     carter,
     carter_coefficient,

@@ -8,7 +8,9 @@ here turn such a file into the :class:`~raildyn.contact.geometry.WheelProfile` o
 of :mod:`raildyn.contact.profiles`, and refuse a file whose points cannot describe a profile
 (out of order, a gap, too few, not numbers) with the file's name, the line and the reason.
 :func:`check_pair` then says whether a wheel and a rail, so read, make a wheelset that sits on
-its rails at a given gauge, and returns the pair's flangeway clearance.
+its rails at a given gauge, and returns the pair's flangeway clearance. One measured worn pair is
+shipped in ``raildyn/contact/data`` (:func:`worn_wheel`, :func:`worn_rail`; its source and terms are
+in that folder's README.md).
 """
 
 from __future__ import annotations
@@ -23,7 +25,15 @@ from raildyn import _checks
 from raildyn.contact.geometry import RailProfile, WheelProfile, contact_geometry
 from raildyn.contact.profiles import _CANT_MAX, _MM, _STEP, _tilted_rail
 
-__all__ = ["check_pair", "read_rail_profile", "read_wheel_profile"]
+__all__ = [
+    "WORN_RAIL_FILE",
+    "WORN_WHEEL_FILE",
+    "check_pair",
+    "read_rail_profile",
+    "read_wheel_profile",
+    "worn_rail",
+    "worn_wheel",
+]
 
 #: mm: the largest lateral step between two points of a profile file; a measuring gauge samples a
 #: profile every 0.1 to 1 mm, and a contact patch is ~10 mm wide, so a step of 2 mm is a gap.
@@ -136,7 +146,6 @@ def read_wheel_profile(path, *, nominal_radius=0.46, name=None) -> WheelProfile:
     The worn wheel shipped with raildyn, then the check that it sits on worn rails at the gauge
     of the track it was measured on (:func:`check_pair`, which returns the flangeway clearance):
 
-    >>> from raildyn.contact.profiles import WORN_WHEEL_FILE, WORN_RAIL_FILE
     >>> wheel = read_wheel_profile(WORN_WHEEL_FILE, nominal_radius=0.444)
     >>> rail = read_rail_profile(WORN_RAIL_FILE, inclination=1 / 40)
     >>> round(1e3 * check_pair(wheel, rail, gauge=1.4351, tape_distance=1.4874), 2)  # mm
@@ -198,7 +207,6 @@ def read_rail_profile(path, *, inclination=1 / 40, name=None) -> RailProfile:
 
     Examples
     --------
-    >>> from raildyn.contact.profiles import WORN_RAIL_FILE
     >>> rail = read_rail_profile(WORN_RAIL_FILE, inclination=1 / 40)
     >>> round(1e3 * float(rail.height.min()), 1) <= -14.0  # reaches the gauge point
     True
@@ -287,3 +295,67 @@ def check_pair(wheel: WheelProfile, rail: RailProfile, *, gauge=1.435, tape_dist
             f"{pair} reaches no contact steeper than 40° (the gauge too wide, or a wheel with no flange)"
         )
     return float(y[int(np.argmax(steep)) - 1])
+
+
+# ---------------------------------------------------------------- the measured worn pair shipped
+
+_DATA = Path(__file__).resolve().parent / "data"
+#: The worn wheel's file (format of :func:`~raildyn.contact.profile_files.read_wheel_profile`).
+WORN_WHEEL_FILE = _DATA / "worn_wheel_na_heavy_haul.txt"
+#: The worn rail's file (format of :func:`~raildyn.contact.profile_files.read_rail_profile`).
+WORN_RAIL_FILE = _DATA / "worn_rail_na_heavy_haul.txt"
+
+
+def worn_wheel(nominal_radius=0.444) -> WheelProfile:
+    """A worn wheel: high mileage, hollow tread, measured on a North American heavy-haul railway.
+
+    Read from :data:`WORN_WHEEL_FILE` (source: the CONTACT program's test bank, courtesy of
+    K. Oldknow, Apache License 2.0; see ``raildyn/contact/data/README.md``). Its tread is worn
+    hollow (the hollow's bottom 13 mm from the tape circle towards the field side, a false flange
+    rising 1.3 mm above it 46 mm further out) and its flange tip stands 35 mm above the tape
+    circle. The tape circle is taken 70 mm from the back of the flange; the source's own case puts
+    the flange backs 1347.4 mm apart at a gauge of 1435.1 mm, so the pair runs with
+    ``gauge=1.4351`` and ``tape_distance=1.4874`` (1.3474 + 2 × 0.070 m), e.g. on :func:`worn_rail`.
+
+    Parameters
+    ----------
+    nominal_radius : float
+        r₀, the radius at the tape circle (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "wheel_radius"); 0.444 m, the source's case (a 36 in freight wheel, worn).
+
+    Returns
+    -------
+    WheelProfile
+        Named after its file.
+
+    Examples
+    --------
+    >>> w = worn_wheel()
+    >>> round(float(1e3 * (w.radius.max() - w.nominal_radius)), 1)  # flange tip above the tape circle, mm
+    35.4
+    """
+    return read_wheel_profile(WORN_WHEEL_FILE, nominal_radius=nominal_radius, name="worn wheel")
+
+
+def worn_rail(inclination=1 / 40) -> RailProfile:
+    """A worn rail head: the high rail of a curve on a North American heavy-haul railway, measured.
+
+    Read from :data:`WORN_RAIL_FILE` (the same source and terms as :func:`worn_wheel`). Its gauge
+    corner is worn to a near-vertical face and its crown lies about 16 mm towards the field side.
+
+    Parameters
+    ----------
+    inclination : float
+        The cant as a slope, in [0, 1/10]; 1/40, the cant of North American track.
+
+    Returns
+    -------
+    RailProfile
+        Named after its file.
+
+    Examples
+    --------
+    >>> round(1e3 * check_pair(worn_wheel(), worn_rail(), gauge=1.4351, tape_distance=1.4874), 2)  # mm
+    15.0
+    """
+    return read_rail_profile(WORN_RAIL_FILE, inclination=inclination, name="worn rail")

@@ -1,4 +1,4 @@
-"""The wheel and rail profiles of chapter 4: the conical wheel, S1002 on 60E1, and a worn pair.
+"""The wheel and rail profiles of chapter 4: the conical wheel, S1002 and 60E1.
 
 Each is a :class:`~raildyn.contact.geometry.WheelProfile` or
 :class:`~raildyn.contact.geometry.RailProfile`, in the coordinates set out in
@@ -6,15 +6,11 @@ Each is a :class:`~raildyn.contact.geometry.WheelProfile` or
 
 Sources: S1002 wheel, EN 13715 (the piecewise polynomial definition as
 distributed by H. Netter, DLR); 60E1 (UIC60) rail head, EN 13674-1 (arcs R300
-to x = ±10.228 mm, R80 to ±26.027 mm, R13, then a 1:20 flank); the worn wheel and rail measured on
-a North American heavy-haul railway, files in ``raildyn/contact/data`` (their source and terms are in
-its README.md) read by :func:`~raildyn.contact.profile_files.read_wheel_profile` and
-:func:`~raildyn.contact.profile_files.read_rail_profile`.
+to x = ±10.228 mm, R80 to ±26.027 mm, R13, then a 1:20 flank). A measured worn wheel and rail are
+read from files by :mod:`raildyn.contact.profile_files` (:func:`~raildyn.contact.profile_files.worn_wheel`).
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 
@@ -37,20 +33,11 @@ from raildyn.contact.geometry import (  # noqa: F401  (all but the private ones 
 # keep working for one issue, then they go.
 
 __all__ = [
-    "WORN_RAIL_FILE",
-    "WORN_WHEEL_FILE",
     "conical_wheel",
     "s1002_wheel",
     "uic60_rail",
-    "worn_rail",
-    "worn_wheel",
 ]
 
-_DATA = Path(__file__).resolve().parent / "data"
-#: The worn wheel's file (format of :func:`~raildyn.contact.profile_files.read_wheel_profile`).
-WORN_WHEEL_FILE = _DATA / "worn_wheel_na_heavy_haul.txt"
-#: The worn rail's file (format of :func:`~raildyn.contact.profile_files.read_rail_profile`).
-WORN_RAIL_FILE = _DATA / "worn_rail_na_heavy_haul.txt"
 
 _MM = 1e-3
 _STEP = 0.05e-3  # m; sampling of the profiles and of the contact search, refined by a parabola
@@ -224,63 +211,3 @@ def _tilted_rail(name: str, x: np.ndarray, z: np.ndarray, cant: float, *, where:
         )
     face = u[gauge_side][np.argmin(np.abs(z_u[gauge_side] + _GAUGE_DEPTH))]  # gauge point 14 mm below the top
     return RailProfile(name, u * _MM, z_u * _MM, float(cant), float(face * _MM))
-
-
-def worn_wheel(nominal_radius=0.444) -> WheelProfile:
-    """A worn wheel: high mileage, hollow tread, measured on a North American heavy-haul railway.
-
-    Read from :data:`WORN_WHEEL_FILE` (source: the CONTACT program's test bank, courtesy of
-    K. Oldknow, Apache License 2.0; see ``raildyn/contact/data/README.md``). Its tread is worn
-    hollow (the hollow's bottom 13 mm from the tape circle towards the field side, a false flange
-    rising 1.3 mm above it 46 mm further out) and its flange tip stands 35 mm above the tape
-    circle. The tape circle is taken 70 mm from the back of the flange; the source's own case puts
-    the flange backs 1347.4 mm apart at a gauge of 1435.1 mm, so the pair runs with
-    ``gauge=1.4351`` and ``tape_distance=1.4874`` (1.3474 + 2 × 0.070 m), e.g. on :func:`worn_rail`.
-
-    Parameters
-    ----------
-    nominal_radius : float
-        r₀, the radius at the tape circle (m), in [0.1, 1.5] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
-        "wheel_radius"); 0.444 m, the source's case (a 36 in freight wheel, worn).
-
-    Returns
-    -------
-    WheelProfile
-        Named after its file.
-
-    Examples
-    --------
-    >>> w = worn_wheel()
-    >>> round(float(1e3 * (w.radius.max() - w.nominal_radius)), 1)  # flange tip above the tape circle, mm
-    35.4
-    """
-    from raildyn.contact.profile_files import read_wheel_profile  # it reads this module's grid
-
-    return read_wheel_profile(WORN_WHEEL_FILE, nominal_radius=nominal_radius, name="worn wheel")
-
-
-def worn_rail(inclination=1 / 40) -> RailProfile:
-    """A worn rail head: the high rail of a curve on a North American heavy-haul railway, measured.
-
-    Read from :data:`WORN_RAIL_FILE` (the same source and terms as :func:`worn_wheel`). Its gauge
-    corner is worn to a near-vertical face and its crown lies about 16 mm towards the field side.
-
-    Parameters
-    ----------
-    inclination : float
-        The cant as a slope, in [0, 1/10]; 1/40, the cant of North American track.
-
-    Returns
-    -------
-    RailProfile
-        Named after its file.
-
-    Examples
-    --------
-    >>> from raildyn.contact.profile_files import check_pair
-    >>> round(1e3 * check_pair(worn_wheel(), worn_rail(), gauge=1.4351, tape_distance=1.4874), 2)  # mm
-    15.0
-    """
-    from raildyn.contact.profile_files import read_rail_profile
-
-    return read_rail_profile(WORN_RAIL_FILE, inclination=inclination, name="worn rail")

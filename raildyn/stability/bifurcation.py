@@ -168,9 +168,14 @@ class BifurcationDiagram:
         else:
             _checks.instance("artists", artists, dict, "dict of the artists an earlier call returned")
         if branch is not None:
-            from raildyn.stability.continuation import LimitCycleBranch
-
-            _checks.instance("branch", branch, LimitCycleBranch, "LimitCycleBranch (limit_cycle_branch)")
+            # Known by what it does, not by its class: continuation builds on this module, not the reverse.
+            if not (
+                callable(getattr(branch, "plot", None))
+                and isinstance(getattr(branch, "amplitudes", None), np.ndarray)
+            ):
+                raise TypeError(
+                    f"branch must be a LimitCycleBranch (limit_cycle_branch), got {type(branch).__name__}"
+                )
             artists["branch"] = branch.plot(artists["cycles"].axes, artists=artists.get("branch"))
             top = 1.1 * max(float(amp.max()), 1e3 * float(branch.amplitudes.max()), 1.0)
             artists["cycles"].axes.set_ylim(0.0, top)
