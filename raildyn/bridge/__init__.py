@@ -3,6 +3,7 @@
 * :mod:`raildyn.bridge.beam` — the simply supported beam under moving forces, modal and in closed form.
 * :mod:`raildyn.bridge.continuous` — a beam continuous over several spans, by its exact modes.
 * :mod:`raildyn.bridge.winkler` — an infinite beam on an elastic foundation under a moving force.
+* :mod:`raildyn.bridge.track` — the track as a structure: a rail on pads, sleepers and ballast.
 * :mod:`raildyn.bridge.loads` — what crosses: axle sequences, moving masses, sprung masses, vehicles, trains.
 * :mod:`raildyn.bridge.trains` — the design trains of EN 1991-2 (HSLM-A) and regular trains.
 * :mod:`raildyn.bridge.coupled` — the crossing, bridge and vehicle coupled through the wheel forces.
@@ -37,6 +38,7 @@ from raildyn.bridge.loads import (
     train,
     vehicle,
 )
+from raildyn.bridge.track import LayeredTrack, beam_receptance
 from raildyn.bridge.trains import HSLM_A, hslm, regular_train
 from raildyn.bridge.winkler import WinklerBeam
 
@@ -45,11 +47,13 @@ __all__ = [
     "AxleSequence",
     "BridgeCrossing",
     "ContinuousBeam",
+    "LayeredTrack",
     "MovingForceResponse",
     "MovingLoad",
     "SimplySupportedBeam",
     "WinklerBeam",
     "arema_impact_factor",
+    "beam_receptance",
     "cancellation_spans",
     "comfort_acceleration_limit",
     "crossing",

@@ -27,6 +27,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn.bridge.track import _frequencies as track_frequencies
+from raildyn.bridge.track import beam_receptance
 
 __all__ = ["WinklerBeam"]
 
@@ -99,6 +101,27 @@ class WinklerBeam:
     def damping_ratio(self) -> float:
         """ξ = c/(2√(km̄)): the foundation's damping relative to its critical value."""
         return self.damping / (2 * np.sqrt(self.foundation_modulus * self.mass_per_length))
+
+    def receptance(self, frequencies) -> np.ndarray:
+        """α(f) = w/F under a harmonic point force at the frequencies f, m/N (complex).
+
+        :func:`raildyn.bridge.track.beam_receptance` with s(ω) = k + iωc − m̄ω²; at f = 0 it is
+        :meth:`static_deflection` at x = 0 per newton.
+
+        Parameters
+        ----------
+        frequencies : float or array_like
+            f, Hz, a number or a 1-D array, each in [0, 10 000] (undamped, not at the beam's
+            cut-off √(k/m̄)/(2π), where s = 0).
+
+        Returns
+        -------
+        ndarray of complex
+            One per frequency.
+        """
+        w = 2.0 * np.pi * track_frequencies(frequencies)
+        s = self.foundation_modulus + 1j * w * self.damping - self.mass_per_length * w**2
+        return beam_receptance(self.flexural_rigidity, s)
 
     def static_deflection(self, x, force) -> np.ndarray:
         """The deflection under a force at rest at x = 0, m (Hetényi 1946).

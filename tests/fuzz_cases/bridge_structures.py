@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import numpy as np
 from fuzzing import call, fuzz, on
 
 from raildyn.bridge.continuous import ContinuousBeam
+from raildyn.bridge.track import LayeredTrack
 from raildyn.bridge.winkler import WinklerBeam
 
 CONTINUOUS = ContinuousBeam((20.0, 25.0), 1.0e10, 1.0e4, modes=4)
@@ -55,6 +57,41 @@ ENTRIES = [
             "speed": "zero",
             "force": "zero negative big mm",
         },  # at rest: Hetényi's
+    ),
+    fuzz(
+        "raildyn.bridge.winkler.WinklerBeam.receptance",
+        lambda: on(RAIL, [0.0, 100.0, 1000.0]),
+        accepts={"frequencies": "zero mm big"},  # at rest, or any frequency of the damped beam
+    ),
+    # ------------------------------------------------------------------ the track as a structure
+    fuzz(
+        "raildyn.bridge.track.beam_receptance",
+        lambda: call(6.4e6, np.array([5.0e7, -2.0e7 + 1.0e6j])),
+        # any finite support stiffness: above the cut-off s < 0; a list of numbers is an array
+        accepts={"flexural_rigidity": "big mm", "dynamic_stiffness": "negative mm big list tiny"},
+    ),
+    fuzz(
+        "raildyn.bridge.track.LayeredTrack",
+        lambda: call(),
+        accepts={
+            "rail_flexural_rigidity": "big mm",
+            "rail_mass": "mm",
+            "pad_stiffness": "big tiny mm",
+            "pad_loss_factor": "zero mm",
+            "sleeper_mass": "big tiny mm",
+            "ballast_stiffness": "big tiny mm",
+            "ballast_loss_factor": "zero mm",
+        },
+    ),
+    fuzz(
+        "raildyn.bridge.track.LayeredTrack.receptance",
+        lambda: on(LayeredTrack(), [0.0, 100.0, 1000.0]),
+        accepts={"frequencies": "zero mm big list"},
+    ),
+    fuzz(
+        "raildyn.bridge.track.LayeredTrack.support_stiffness",
+        lambda: on(LayeredTrack(), [0.0, 100.0, 1000.0]),
+        accepts={"frequencies": "zero mm big list"},
     ),
     # ------------------------------------------------------------------ codes
     fuzz(
