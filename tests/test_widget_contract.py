@@ -80,6 +80,7 @@ MOVES = {
     chapter10.moving_load_explorer: dict(speed_kmh=300.0, position=0.8, damping=0.02),
     chapter10.train_resonance: dict(coach_length=22.0, span=25.0, frequency_hz=5.0),
     chapter10.load_models: dict(speed_kmh=150.0),
+    chapter10.track_receptance: dict(pad_mn=600.0, ballast_mn=80.0),
     chapter11.prediction_vs_measurement: dict(
         speed_kmh=70.0, scale=1.2, frequency_hz=10.0, damping=5.0, gauge=2
     ),

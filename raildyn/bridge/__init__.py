@@ -38,7 +38,7 @@ from raildyn.bridge.loads import (
     train,
     vehicle,
 )
-from raildyn.bridge.track import LayeredTrack, beam_receptance
+from raildyn.bridge.track import LayeredTrack, TrackResonances, beam_receptance
 from raildyn.bridge.trains import HSLM_A, hslm, regular_train
 from raildyn.bridge.winkler import WinklerBeam
 
@@ -51,6 +51,7 @@ __all__ = [
     "MovingForceResponse",
     "MovingLoad",
     "SimplySupportedBeam",
+    "TrackResonances",
     "WinklerBeam",
     "arema_impact_factor",
     "beam_receptance",

@@ -1,5 +1,5 @@
 """Chapter 10 widgets: a force crossing a beam beside its amplification curve, a regular train's
-resonances against speed, and four models of one car crossing the same bridge.
+resonances against speed, four models of one car crossing the same bridge, and the track's receptance.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The models are
 :mod:`raildyn.bridge`: :func:`raildyn.bridge.beam.moving_force_response` (the closed form, for the
@@ -31,12 +31,13 @@ from raildyn.bridge import (
     train,
     vehicle,
 )
+from raildyn.bridge.track import LayeredTrack
 from raildyn.bridge.trains import regular_train
 from raildyn.constants import GRAVITY
 from raildyn.vehicles import VerticalCar
 from raildyn.widgets._core import Recipe, slider
 
-__all__ = ["load_models", "moving_load_explorer", "train_resonance"]
+__all__ = ["load_models", "moving_load_explorer", "track_receptance", "train_resonance"]
 
 # The bridge of the chapter: 20 m, EI = 10 GN·m², 10 t/m, so f₁ = 3.93 Hz (SimplySupportedBeam's
 # defaults and docstring example).
@@ -469,6 +470,81 @@ def load_models():
     return LOAD_MODELS.build()
 
 
+# ---------------------------------------------------------------------------
+# The track's receptance
+
+_TRACK = LayeredTrack()  # UIC 60 on concrete sleepers and ballast (LayeredTrack's source)
+_TRACK_F = np.geomspace(10.0, 3000.0, 400)  # Hz
+
+
+def _track_controls():
+    return {
+        "pad_mn": slider("pad stiffness k_p (MN/m)", 225.0, 50.0, 1000.0, 25.0, fmt=".0f"),
+        "ballast_mn": slider("ballast stiffness k_b (MN/m)", 20.0, 10.0, 200.0, 5.0, fmt=".0f"),
+    }
+
+
+def _track_setup(live, status):
+    (ax,) = live.axes[0]
+    _TRACK.plot_receptance(_TRACK_F, ax, label="the default track", color="0.65")
+    drawn = _TRACK.plot_receptance(_TRACK_F, ax, label="this track", color=plots.COLORS[0])
+    marks = [ax.axvline(100.0, color=plots.COLORS[k], lw=1.0, ls=":") for k in (1, 2, 3)]
+    ax.set_ylim(1e-10, 1e-7)
+    ax.legend(loc="lower left", fontsize="small")
+    live.animate(drawn["receptance"], *marks)
+
+    def redraw(v):
+        track = LayeredTrack(
+            pad_stiffness=1e6 * float(v["pad_mn"]), ballast_stiffness=1e6 * float(v["ballast_mn"])
+        )
+        track.plot_receptance(_TRACK_F, artists=drawn)
+        turns = track.resonances()
+        for mark, f in zip(marks, (turns.full_track, turns.antiresonance, turns.rail_on_pads), strict=True):
+            mark.set_visible(bool(np.isfinite(f)))
+            if np.isfinite(f):
+                mark.set_xdata([f, f])
+        status.value = (
+            f"static stiffness {1e-6 * track.static_stiffness:.1f} MN/m · "
+            f"full track {turns.full_track:.0f} Hz"
+            + (
+                f" · antiresonance {turns.antiresonance:.0f} Hz · rail on pads {turns.rail_on_pads:.0f} Hz"
+                if np.isfinite(turns.rail_on_pads)
+                else " · one peak: the rail's resonance on its pads merged with it"
+            )
+        )
+
+    return redraw
+
+
+TRACK_RECEPTANCE = Recipe(
+    _track_controls,
+    _track_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (7.5, 3.6)},
+    static={"pad_mn": [50.0, 100.0, 150.0, 225.0, 300.0, 450.0, 600.0, 800.0, 1000.0]},
+    title="The point receptance of a rail on pads, sleepers and ballast, with its resonances",
+)
+
+
+def track_receptance():
+    """A ballasted track's point receptance |α(f)| against frequency, its three turns marked.
+
+    The rail on pads, sleepers and ballast of :class:`raildyn.bridge.track.LayeredTrack`; the
+    default track is drawn in grey for comparison. Controls: the pad stiffness and the ballast
+    stiffness (MN/m a rail seat). The dotted lines and the status line give the full-track
+    resonance, the rail's resonance on its pads and the antiresonance between them
+    (:meth:`~raildyn.bridge.track.LayeredTrack.resonances`; a soft pad on stiff ballast merges the
+    first two), and the static stiffness.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``pad_mn``, ``ballast_mn``), redraws and returns the PNG frame.
+    """
+    return TRACK_RECEPTANCE.build()
+
+
 BENCH_MOVES = [
     (
         "ch10 moving_load_explorer v",
@@ -481,4 +557,6 @@ BENCH_MOVES = [
     ("ch10 train_resonance L", TRAIN_RESONANCE, "span", [12.0, 15.0, 25.0, 30.0, 35.0, 20.0]),
     ("ch10 train_resonance f₁", TRAIN_RESONANCE, "frequency_hz", [3.0, 3.5, 5.0, 6.0, 7.0, 4.0]),
     ("ch10 load_models v", LOAD_MODELS, "speed_kmh", [80.0, 120.0, 160.0, 240.0, 300.0, 200.0]),
+    ("ch10 track_receptance k_p", TRACK_RECEPTANCE, "pad_mn", [100.0, 300.0, 500.0, 800.0, 150.0, 225.0]),
+    ("ch10 track_receptance k_b", TRACK_RECEPTANCE, "ballast_mn", [15.0, 40.0, 80.0, 150.0, 30.0, 20.0]),
 ]

@@ -88,6 +88,18 @@ ENTRIES = [
         lambda: on(LayeredTrack(), [0.0, 100.0, 1000.0]),
         accepts={"frequencies": "zero mm big list"},
     ),
+    fuzz("raildyn.bridge.track.LayeredTrack.resonances", lambda: on(LayeredTrack())),
+    fuzz(
+        "raildyn.bridge.track.TrackResonances",
+        lambda: call(48.6, 198.7, 457.4),
+        accepts={"*": "big mm tiny", "antiresonance": "inf big mm tiny", "rail_on_pads": "inf big mm tiny"},
+        infinite=("antiresonance", "rail_on_pads"),  # a single peak: no dip and no second peak, +inf
+    ),
+    fuzz(
+        "raildyn.bridge.track.LayeredTrack.plot_receptance",
+        lambda: on(LayeredTrack(), [10.0, 100.0, 1000.0]),
+        accepts={"frequencies": "mm big list", "label": "none", "color": "none"},
+    ),
     fuzz(
         "raildyn.bridge.track.LayeredTrack.support_stiffness",
         lambda: on(LayeredTrack(), [0.0, 100.0, 1000.0]),

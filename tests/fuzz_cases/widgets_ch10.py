@@ -10,5 +10,5 @@ from fuzzing import call, fuzz
 
 ENTRIES = [
     fuzz(f"raildyn.widgets.chapter10.{name}", lambda: call())
-    for name in ("load_models", "moving_load_explorer", "train_resonance")
+    for name in ("load_models", "moving_load_explorer", "track_receptance", "train_resonance")
 ]
