@@ -18,7 +18,7 @@ import numpy as np
 
 from raildyn import _checks
 
-__all__ = ["COLORS", "STYLE", "axes_or_new", "frequency_curves", "spectrum", "time_history"]
+__all__ = ["COLORS", "STYLE", "axes_or_new", "frequency_curves", "movable_line", "spectrum", "time_history"]
 
 STYLE = {
     "axes.grid": True,
@@ -60,6 +60,58 @@ def axes_or_new(ax):
     with matplotlib.rc_context(STYLE):
         _, ax = plt.subplots(figsize=(5.5, 3.6), layout="constrained")
     return ax
+
+
+def movable_line(ax, artists, key, x, y, *, label=None, color=None, xlabel="", ylabel="", log=False) -> dict:
+    """Draw one line of a model's curve, or move the line an earlier call drew (a widget's redraw).
+
+    The shape every ``plot_*`` method of a result with one curve shares: a first call draws on
+    ``ax`` (new axes if None) and returns ``{key: line}``; a call with that dict as ``artists`` only
+    sets the line's y data.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes or None
+        Where to draw (ignored when ``artists`` is given).
+    artists : dict or None
+        The dict an earlier call returned (same x), or None to draw.
+    key : str
+        The line's name in the returned dict (the ``plot_<key>`` method's).
+    x, y : array_like
+        The curve, in the units to draw: finite 1-D arrays of one length (x > 0 on a log axis).
+    label, color : optional
+        Legend label and colour.
+    xlabel, ylabel : str
+        The axes' labels.
+    log : bool
+        Both axes logarithmic.
+
+    Returns
+    -------
+    dict
+        ``{key: line}``.
+    """
+    _checks.instance("key", key, str)
+    x = _checks.array("x", x, ndim=1, allow_empty=False)
+    y = _checks.array("y", y, shape=x.shape)
+    if artists is not None:
+        _checks.instance("artists", artists, dict, f"dict returned by an earlier plot_{key}")
+        if key not in artists:
+            raise ValueError(
+                f"artists must hold the line {key!r} an earlier plot_{key} returned, got {sorted(artists)}"
+            )
+        artists[key].set_ydata(y)
+        return artists
+    _checks.instance("xlabel", xlabel, str)
+    _checks.instance("ylabel", ylabel, str)
+    if _checks.flag("log", log) and x.min() <= 0.0:
+        raise ValueError(f"x must be > 0 on a log axis, got {x.min()!r}")
+    ax = axes_or_new(ax)
+    with matplotlib.rc_context(STYLE):
+        (line,) = (ax.loglog if log else ax.plot)(x, y, color=color, label=label)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+    return {key: line}
 
 
 def time_history(

@@ -275,21 +275,12 @@ class LayeredTrack:
         f = _frequencies(frequencies)
         if f.min() <= 0.0:
             raise ValueError(f"frequencies must be > 0 Hz on the log axis, got {f.min()!r}")
-        magnitude = np.abs(self.receptance(f))
-        if artists is not None:
-            _checks.instance("artists", artists, dict, "dict returned by an earlier plot_receptance")
-            artists["receptance"].set_ydata(magnitude)
-            return artists
-        import matplotlib
-
         from raildyn import plots
 
-        ax = plots.axes_or_new(ax)
-        with matplotlib.rc_context(plots.STYLE):
-            (line,) = ax.loglog(f, magnitude, color=color, label=label)
-            ax.set_xlabel("frequency f (Hz)")
-            ax.set_ylabel("|α| (m/N)")
-        return {"receptance": line}
+        return plots.movable_line(
+            ax, artists, "receptance", f, np.abs(self.receptance(f)), label=label, color=color,
+            xlabel="frequency f (Hz)", ylabel="|α| (m/N)", log=True,
+        )  # fmt: skip
 
     @property
     def static_stiffness(self) -> float:

@@ -254,20 +254,11 @@ class ContactGeometry:
         return kinematic_conicity(self.shift[order], self.rolling_radius_difference[order], amplitudes)
 
     def _line(self, ax, artists, key, x, y, label, color, xlabel, ylabel):
-        if artists is not None:
-            _checks.instance("artists", artists, dict, f"dict returned by an earlier plot_{key}")
-            artists[key].set_ydata(y)
-            return artists
-        import matplotlib
-
         from raildyn import plots
 
-        ax = plots.axes_or_new(ax)
-        with matplotlib.rc_context(plots.STYLE):
-            (line,) = ax.plot(x, y, color=color, label=label)
-            ax.set_xlabel(xlabel)
-            ax.set_ylabel(ylabel)
-        return {key: line}
+        return plots.movable_line(
+            ax, artists, key, x, y, label=label, color=color, xlabel=xlabel, ylabel=ylabel
+        )
 
     def plot_rolling_radius_difference(self, ax=None, *, label=None, color=None, artists=None) -> dict:
         """Draw Δr(y) in mm against the shift y in mm; or move a line drawn before.

@@ -381,6 +381,20 @@ ENTRIES = [
         accepts={"ax": "none"},
     ),
     fuzz(
+        "raildyn.plots.movable_line",
+        lambda: call(axes(), None, "curve", np.array([1.0, 2.0, 3.0]), np.array([1.0, 0.5, 2.0]), log=True),
+        # any text names the line and labels the axes; y of any sign
+        accepts={
+            "ax": "none",
+            "y": "zero negative",
+            "label": "none",
+            "color": "none",
+            "key": "unknown",
+            "xlabel": "empty unknown",
+            "ylabel": "empty unknown",
+        },
+    ),
+    fuzz(
         "raildyn.plots.spectrum",
         lambda: call(OMEGA, np.array([1.0, 0.1, 0.01]), ax=axes()),
         accepts={"psd": "zero", "ax": "none"},
