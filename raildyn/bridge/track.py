@@ -10,7 +10,7 @@ stiffness k_f(ω) per length (N/m²), harmonic motion at ω turns the beam's equ
 whose point receptance is, as for the static beam on a Winkler bed (Hetényi 1946), but with a complex
 wavenumber (Grassie, Gregory, Harrison & Johnson 1982; Knothe & Grassie 1993):
 
-    α(ω) = 1 / (8 EI β³),   β = (s(ω)/(4EI))^{1/4},
+    α(ω) = 1 / (8 EI Ω_W³),   Ω_W = (s(ω)/(4EI))^{1/4},
 
 the root taken with the argument of s(ω) in (−π, π] (the one that continues the static root as damping
 grows). :func:`beam_receptance` evaluates it for any support; :class:`LayeredTrack` gives the support
@@ -56,7 +56,7 @@ def beam_receptance(flexural_rigidity, dynamic_stiffness) -> np.ndarray:
 
     Examples
     --------
-    At rest on a 50 MN/m² bed, a UIC 60 rail gives under each newton (Hetényi's Pβ/(2k)):
+    At rest on a 50 MN/m² bed, a UIC 60 rail gives under each newton (Hetényi's PΩ_W/(2k)):
 
     >>> round(1e9 * float(beam_receptance(6.4155e6, 50e6)[()].real), 3)  # nm
     11.815
