@@ -109,6 +109,10 @@ _FIT = """() => {
         const edge = inner(element).getBoundingClientRect();
         past += edge.width > 0 && (edge.left < left - 2 || edge.right > right + 2);
     }
+    // Anything else that widens the page (a signature's unbroken name) makes chromium shrink the whole
+    // page to the sheet, and the PDF's destinations, measured unshrunk, then drift from their headings.
+    const sheet = document.documentElement;
+    past += sheet.scrollWidth > sheet.clientWidth + 1;
     return [shrunk, past];
 }"""
 
