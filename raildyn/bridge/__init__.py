@@ -4,6 +4,7 @@
 * :mod:`raildyn.bridge.continuous` — a beam continuous over several spans, by its exact modes.
 * :mod:`raildyn.bridge.winkler` — an infinite beam on an elastic foundation under a moving force.
 * :mod:`raildyn.bridge.track` — the track as a structure: a rail on pads, sleepers and ballast.
+* :mod:`raildyn.bridge.sleepers` — the rail on discrete sleepers: a finite-element track and its receptance.
 * :mod:`raildyn.bridge.loads` — what crosses: axle sequences, moving masses, sprung masses, vehicles, trains.
 * :mod:`raildyn.bridge.trains` — the design trains of EN 1991-2 (HSLM-A) and regular trains.
 * :mod:`raildyn.bridge.coupled` — the crossing, bridge and vehicle coupled through the wheel forces.
@@ -38,6 +39,7 @@ from raildyn.bridge.loads import (
     train,
     vehicle,
 )
+from raildyn.bridge.sleepers import DiscreteResonances, DiscreteTrack, TrackMatrices
 from raildyn.bridge.track import LayeredTrack, TrackResonances, beam_receptance
 from raildyn.bridge.trains import HSLM_A, hslm, regular_train
 from raildyn.bridge.winkler import WinklerBeam
@@ -47,10 +49,13 @@ __all__ = [
     "AxleSequence",
     "BridgeCrossing",
     "ContinuousBeam",
+    "DiscreteResonances",
+    "DiscreteTrack",
     "LayeredTrack",
     "MovingForceResponse",
     "MovingLoad",
     "SimplySupportedBeam",
+    "TrackMatrices",
     "TrackResonances",
     "WinklerBeam",
     "arema_impact_factor",

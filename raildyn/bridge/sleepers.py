@@ -14,11 +14,11 @@ Each element's matrices are those of the Timoshenko beam element with interdepen
 rotation quadratic in ξ = x/h, both depending on Φ = 12 EI/(κGA h²), which makes the element's
 stiffness exact for a uniform beam. They are integrated here by Gauss quadrature over the shape
 functions (exact: the integrands are polynomials of degree ≤ 6). Damping is viscous (c, N·s/m) so
-that the same matrices serve the time march of :mod:`raildyn.bridge.impact`.
+that the same matrices serve a time march under a moving wheel.
 
 The degrees of freedom are numbered node by node (deflection, rotation, then the sleeper under the
 node if there is one), so every matrix is banded (half-bandwidth 4) and stored by diagonals:
-:func:`raildyn.bridge._band.band_receptance` solves each frequency in O(n).
+a banded factorisation solves each frequency in O(n).
 """
 
 from __future__ import annotations
@@ -30,9 +30,9 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.bridge import _band
-from raildyn.bridge.track import _RAIL_EI, _RAIL_MASS, _SLEEPER, _SPACING, _frequencies
+from raildyn.bridge.track import _RAIL_EI, _RAIL_MASS, _SEARCH, _SLEEPER, _SPACING, _frequencies, _turns
 
-__all__ = ["DiscreteTrack", "TrackMatrices"]
+__all__ = ["DiscreteResonances", "DiscreteTrack", "TrackMatrices"]
 
 # The rest of Table 1 of the source of raildyn.bridge.track's defaults (Mathematical Problems in
 # Engineering 2017, article 5872419, CC BY 4.0): G = 80.8 GPa, shear coefficient κ = 0.5329,
@@ -72,15 +72,21 @@ def _shape(xi, h, phi):
             h * (x3 - (1 - phi / 2) * x2 - phi / 2 * xi),
         ]
     )
-    dnw = mu / h * np.array(
-        [
-            6 * x2 - 6 * xi - phi,
-            h * (3 * x2 - (4 + phi) * xi + 1 + phi / 2),
-            -(6 * x2 - 6 * xi - phi),
-            h * (3 * x2 - (2 - phi) * xi - phi / 2),
-        ]
+    dnw = (
+        mu
+        / h
+        * np.array(
+            [
+                6 * x2 - 6 * xi - phi,
+                h * (3 * x2 - (4 + phi) * xi + 1 + phi / 2),
+                -(6 * x2 - 6 * xi - phi),
+                h * (3 * x2 - (2 - phi) * xi - phi / 2),
+            ]
+        )
     )
-    nt = mu * np.array([6 / h * (x2 - xi), 3 * x2 - (4 + phi) * xi + 1 + phi, -6 / h * (x2 - xi), 3 * x2 - (2 - phi) * xi])
+    nt = mu * np.array(
+        [6 / h * (x2 - xi), 3 * x2 - (4 + phi) * xi + 1 + phi, -6 / h * (x2 - xi), 3 * x2 - (2 - phi) * xi]
+    )
     dnt = mu / h * np.array([6 / h * (2 * xi - 1), 6 * xi - 4 - phi, -6 / h * (2 * xi - 1), 6 * xi - 2 + phi])
     return nw, dnw, nt, dnt
 
@@ -121,6 +127,29 @@ class TrackMatrices:
     sleepers: np.ndarray
     sleeper_nodes: np.ndarray
 
+    def __post_init__(self):
+        first = None
+        for name in ("mass", "damping", "stiffness"):
+            ab = _checks.array(name, getattr(self, name), ndim=2, shape=first)
+            if ab.shape[0] < 1 or ab.shape[1] < ab.shape[0]:
+                raise ValueError(
+                    f"{name} must hold p + 1 diagonals of n ≥ p + 1 entries, got shape {ab.shape}"
+                )
+            if name == "damping" and np.any(ab[0] < 0.0):
+                raise ValueError(f"damping must have a diagonal >= 0, got {ab[0].min()!r}")
+            if name != "damping" and np.any(ab[0] <= 0.0):
+                raise ValueError(f"{name} must have a diagonal > 0, got {ab[0].min()!r}")
+            first = first or ab.shape
+            object.__setattr__(self, name, ab)
+        for name, high in (("deflection", first[1]), ("sleepers", first[1]), ("sleeper_nodes", None)):
+            value = np.asarray(getattr(self, name))
+            high = len(self.deflection) if high is None else high
+            if value.dtype.kind not in "iu" or value.ndim != 1 or value.size == 0:
+                raise TypeError(f"{name} must be a non-empty 1-D array of integers, got {value!r:.80}")
+            if value.min() < 0 or value.max() >= high:
+                raise ValueError(f"{name} must hold indices in [0, {high}), got {value!r:.80}")
+            object.__setattr__(self, name, value)
+
     @property
     def size(self) -> int:
         """n, the number of unknowns."""
@@ -137,6 +166,38 @@ class TrackMatrices:
             out[i + k, i] = ab[k, : n - k]
             out[i, i + k] = ab[k, : n - k]
         return out
+
+
+@dataclass(frozen=True)
+class DiscreteResonances:
+    """Where a discrete track's receptance peaks between 5 Hz and 5 kHz, Hz.
+
+    Read off two receptances: above the sleeper at the middle of the track, and midway between it
+    and its neighbour (:meth:`DiscreteTrack.resonances`).
+
+    Attributes
+    ----------
+    full_track : float
+        The first peak above a sleeper: rail and sleepers bouncing together on the ballast, Hz (> 0).
+    rail_on_pads : float
+        The next peak above a sleeper below the pinned–pinned resonance: the rail bouncing on its pads,
+        Hz (> 0; +inf where there is none: a soft pad on stiff ballast merges it with the first). A very
+        stiff pad (above about 2 GN/m) lifts the rail's resonance on its pads past the pinned–pinned one;
+        the peak found below is then a small one of the rail and sleepers moving together.
+    pinned_pinned : float
+        The peak midway between sleepers where that receptance most exceeds the one above a sleeper:
+        one bay of rail bending between two sleepers that hardly move, Hz (> 0).
+    """
+
+    full_track: float
+    rail_on_pads: float
+    pinned_pinned: float
+
+    def __post_init__(self):
+        for name in ("full_track", "pinned_pinned"):
+            _checks.scalar(name, getattr(self, name), low=0.0, low_open=True)
+        if not (isinstance(self.rail_on_pads, float | int) and self.rail_on_pads == np.inf):
+            _checks.scalar("rail_on_pads", self.rail_on_pads, low=0.0, low_open=True)
 
 
 @dataclass(frozen=True)
@@ -158,7 +219,7 @@ class DiscreteTrack:
         ρI, the cross-section's rotary inertia per length, kg·m (≥ 0; 0 for a Rayleigh-free beam).
         Default 0.249 kg·m.
     pad_stiffness : float
-        k_p, N/m a rail seat, in [5e6, 5e9] (:data:`PAD_STIFFNESS_RANGE`). Default 225 MN/m.
+        k_p, N/m a rail seat, in [5e6, 5e9]. Default 225 MN/m.
     pad_damping : float
         c_p, N·s/m (≥ 0). Default 19.6 kN·s/m (the source's loss factor 0.25 at 457 Hz).
     sleeper_mass : float
@@ -168,7 +229,7 @@ class DiscreteTrack:
     ballast_damping : float
         c_b, N·s/m (≥ 0). Default 65.0 kN·s/m (the source's loss factor 1.0 at 49 Hz).
     sleeper_spacing : float
-        d, m, in [0.3, 1.0] (:data:`SLEEPER_SPACING_RANGE`). Default 0.55 m.
+        d, m, in [0.3, 1.0]. Default 0.55 m.
     bays : int
         Number of sleepers, in [4, 400]. Default 40 (22 m at the default spacing).
     quiet_bays : int
@@ -180,8 +241,9 @@ class DiscreteTrack:
         rail's end: the waves die there, as they would travelling away along an endless rail.
     quiet_rate : float
         a at the rail's ends, 1/s (≥ 0). Default 3000/s: with 14 of 40 bays the receptance between the
-        middle sleepers matches that of a track of 320 bays to 0.1 % below 600 Hz, and its peaks near the
-        pinned–pinned frequency are the endless rail's, not the reflections'.
+        middle sleepers matches that of a track of 320 bays to 0.1 % below 600 Hz. Near the pinned–pinned
+        frequency the waves hardly travel and hardly move the (damped) sleepers, so the peak there
+        depends on the track's length: its frequency within 1 %, its height only within a factor of 10.
     elements_per_bay : int
         Beam elements between two sleepers, even, in [2, 20]. Default 6: the pinned–pinned frequency
         within 0.3 % of its converged value (1,324 Hz against 1,321 Hz with 10 elements).
@@ -217,9 +279,14 @@ class DiscreteTrack:
             _checks.positive(name, getattr(self, name))
         for name in ("rail_rotary_inertia", "pad_damping", "ballast_damping"):
             _checks.nonnegative(name, getattr(self, name))
-        _checks.scalar("pad_stiffness", self.pad_stiffness, low=PAD_STIFFNESS_RANGE[0], high=PAD_STIFFNESS_RANGE[1])
         _checks.scalar(
-            "sleeper_spacing", self.sleeper_spacing, low=SLEEPER_SPACING_RANGE[0], high=SLEEPER_SPACING_RANGE[1]
+            "pad_stiffness", self.pad_stiffness, low=PAD_STIFFNESS_RANGE[0], high=PAD_STIFFNESS_RANGE[1]
+        )
+        _checks.scalar(
+            "sleeper_spacing",
+            self.sleeper_spacing,
+            low=SLEEPER_SPACING_RANGE[0],
+            high=SLEEPER_SPACING_RANGE[1],
         )
         _checks.integer("bays", self.bays, low=4, high=400)
         _checks.integer("quiet_bays", self.quiet_bays, low=0, high=self.bays // 2 - 1)
@@ -326,5 +393,66 @@ class DiscreteTrack:
         m = self.matrices
         alpha, smallest = _band.band_receptance(m.mass, m.damping, m.stiffness, 2 * np.pi * f, dofs, weights)
         if not np.all(smallest > 0.0):
-            raise ValueError(f"the track's dynamic stiffness is singular at f = {f[np.argmin(smallest)]!r} Hz")
+            raise ValueError(
+                f"the track's dynamic stiffness is singular at f = {f[np.argmin(smallest)]!r} Hz"
+            )
         return alpha
+
+    def resonances(self) -> DiscreteResonances:
+        """The full-track, rail-on-pads and pinned–pinned resonances between 5 Hz and 5 kHz.
+
+        Both receptances (midway between the two middle sleepers, and above the sleeper at the middle)
+        are evaluated on the geometric grid of
+        :meth:`LayeredTrack.resonances <raildyn.bridge.track.LayeredTrack.resonances>` (4001 frequencies,
+        0.17 % apart), each turn refined the same way (a parabola in log f through it and its neighbours).
+
+        Returns
+        -------
+        DiscreteResonances
+        """
+        middle = np.abs(self.receptance(_SEARCH))
+        above = np.abs(self.receptance(_SEARCH, position=float(self.sleeper_positions[self.bays // 2])))
+        peaks, k = _turns(middle, 1.0)
+        over = _turns(above, 1.0)[0]
+        if peaks.size == 0 or over.size == 0:
+            raise ValueError(
+                "the track's receptance must peak between 5 Hz and 5 kHz, got none (over-damped)"
+            )
+        pinned = float(peaks[np.argmax(middle[k] / above[k])])
+        below = over[1:][over[1:] < pinned]
+        return DiscreteResonances(float(over[0]), float(below[0]) if below.size else np.inf, pinned)
+
+    def plot_receptance(
+        self, frequencies, ax=None, *, position=None, label=None, color=None, artists=None
+    ) -> dict:
+        """Draw |α(f)| in m/N on log axes against f in Hz; or move a line drawn before.
+
+        Parameters
+        ----------
+        frequencies : float or array_like
+            f, Hz, as for :meth:`receptance`, each > 0 (a log axis).
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes on a new pyplot figure if None.
+        position : float, optional
+            x, m, as for :meth:`receptance`; default midway between the two middle sleepers.
+        label : str, optional
+            Legend label.
+        color : color, optional
+            Line colour.
+        artists : dict, optional
+            The dict a previous call returned (same frequencies): its line takes this track's curve.
+
+        Returns
+        -------
+        dict
+            ``{"receptance": line}``.
+        """
+        f = _frequencies(frequencies)
+        if f.min() <= 0.0:
+            raise ValueError(f"frequencies must be > 0 Hz on the log axis, got {f.min()!r}")
+        from raildyn import plots
+
+        return plots.movable_line(
+            ax, artists, "receptance", f, np.abs(self.receptance(f, position)), label=label, color=color,
+            xlabel="frequency f (Hz)", ylabel="|α| (m/N)", log=True,
+        )  # fmt: skip

@@ -118,6 +118,18 @@ class TrackResonances:
 _SEARCH = np.geomspace(5.0, 5000.0, 4001)  # Hz: the grid on which the turns of |α| are found (0.17 % apart)
 
 
+def _turns(magnitude, sign):
+    """The peaks (``sign`` 1) or dips (−1) of ``magnitude`` = |α| on the search grid, Hz, refined.
+
+    Each turn's frequency comes from the parabola through it and its two neighbours in (log f, log |α|).
+    Returns the refined frequencies and the turns' indices on the grid.
+    """
+    a, x = np.log(magnitude), np.log(_SEARCH)
+    k = np.flatnonzero((sign * a[1:-1] > sign * a[:-2]) & (sign * a[1:-1] > sign * a[2:])) + 1
+    y0, y1, y2 = a[k - 1], a[k], a[k + 1]
+    return np.exp(x[k] + 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2) * (x[k + 1] - x[k])), k
+
+
 # A ballasted track of UIC 60 rail on concrete sleepers: Table 1 of "Study on transmission
 # characteristics of vertical rail vibrations in ballast track", Mathematical Problems in Engineering
 # 2017, article 5872419 (Hindawi, CC BY 4.0; www.hindawi.com/journals/mpe/2017/5872419/tab1/):
@@ -233,15 +245,8 @@ class LayeredTrack:
         -------
         TrackResonances
         """
-        a = np.log(np.abs(self.receptance(_SEARCH)))
-        x = np.log(_SEARCH)
-
-        def turns(sign):
-            k = np.flatnonzero((sign * a[1:-1] > sign * a[:-2]) & (sign * a[1:-1] > sign * a[2:])) + 1
-            y0, y1, y2 = a[k - 1], a[k], a[k + 1]
-            return np.exp(x[k] + 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2) * (x[k + 1] - x[k]))
-
-        peaks, dips = turns(1.0), turns(-1.0)
+        magnitude = np.abs(self.receptance(_SEARCH))
+        peaks, dips = _turns(magnitude, 1.0)[0], _turns(magnitude, -1.0)[0]
         if peaks.size == 0:
             raise ValueError(
                 "the track's receptance must peak between 5 Hz and 5 kHz, got none (over-damped)"

@@ -6,11 +6,18 @@ import numpy as np
 from fuzzing import call, fuzz, on
 
 from raildyn.bridge.continuous import ContinuousBeam
+from raildyn.bridge.sleepers import DiscreteTrack
 from raildyn.bridge.track import LayeredTrack
 from raildyn.bridge.winkler import WinklerBeam
 
 CONTINUOUS = ContinuousBeam((20.0, 25.0), 1.0e10, 1.0e4, modes=4)
 RAIL = WinklerBeam(6.4e6, 60.34, 5.0e7, 2.0e4)
+SHORT = dict(bays=8, quiet_bays=2)  # a small discrete track: cheap fuzz runs
+
+
+def _matrices():
+    m = DiscreteTrack(**SHORT).matrices
+    return m.mass, m.damping, m.stiffness, m.deflection, m.sleepers, m.sleeper_nodes
 
 
 ENTRIES = [
@@ -104,6 +111,66 @@ ENTRIES = [
         "raildyn.bridge.track.LayeredTrack.support_stiffness",
         lambda: on(LayeredTrack(), [0.0, 100.0, 1000.0]),
         accepts={"frequencies": "zero mm big list"},
+    ),
+    fuzz(
+        "raildyn.bridge.sleepers.DiscreteTrack",
+        lambda: call(**SHORT),
+        accepts={
+            "rail_flexural_rigidity": "big mm",
+            "rail_mass": "mm",
+            "rail_shear_stiffness": "big tiny mm",
+            "rail_rotary_inertia": "zero big tiny mm",
+            "pad_stiffness": "big",  # 1e9 N/m: a stiff pad, in range
+            "pad_damping": "zero big tiny mm",
+            "sleeper_mass": "big tiny mm",
+            "ballast_stiffness": "big tiny mm",
+            "ballast_damping": "zero big tiny mm",
+            "quiet_bays": "zero",  # no quiet layers: free ends
+            "quiet_rate": "zero big tiny mm",
+        },
+    ),
+    fuzz(
+        "raildyn.bridge.sleepers.DiscreteTrack.receptance",
+        lambda: on(DiscreteTrack(**SHORT), [0.0, 100.0, 1000.0], position=1.0),
+        accepts={
+            "frequencies": "zero mm big list",
+            "position": "zero tiny none",
+        },  # 0: the end; None: the middle
+    ),
+    fuzz(
+        "raildyn.bridge.sleepers.DiscreteTrack.point",
+        lambda: on(DiscreteTrack(**SHORT), 1.0),
+        accepts={"position": "zero tiny"},
+    ),
+    fuzz("raildyn.bridge.sleepers.DiscreteTrack.resonances", lambda: on(DiscreteTrack(**SHORT))),
+    fuzz(
+        "raildyn.bridge.sleepers.DiscreteTrack.plot_receptance",
+        lambda: on(DiscreteTrack(**SHORT), [10.0, 100.0, 1000.0], position=1.0),
+        accepts={
+            "frequencies": "mm big list",
+            "position": "zero tiny none",
+            "label": "none",
+            "color": "none",
+        },
+    ),
+    fuzz(
+        "raildyn.bridge.sleepers.DiscreteResonances",
+        lambda: call(33.1, 440.0, 1314.2),
+        accepts={"*": "big mm tiny", "rail_on_pads": "inf big mm tiny"},
+        infinite=("rail_on_pads",),  # no second peak below the pinned–pinned one: +inf
+    ),
+    fuzz(
+        "raildyn.bridge.sleepers.TrackMatrices",
+        lambda: call(*_matrices()),
+        accepts={
+            "mass": "big tiny huge mm",  # any positive diagonal
+            "damping": "zero big tiny huge mm",
+            "stiffness": "big tiny huge mm",
+        },
+    ),
+    fuzz(
+        "raildyn.bridge.sleepers.TrackMatrices.dense",
+        lambda: on(DiscreteTrack(**SHORT).matrices, "stiffness"),
     ),
     # ------------------------------------------------------------------ codes
     fuzz(
