@@ -156,7 +156,18 @@ class TrackMatrices:
         return self.stiffness.shape[1]
 
     def dense(self, which: str) -> np.ndarray:
-        """One matrix as a full n × n array: ``which`` is "mass", "damping" or "stiffness"."""
+        """One matrix as a full, symmetric n × n array.
+
+        Parameters
+        ----------
+        which : {"mass", "damping", "stiffness"}
+            The matrix.
+
+        Returns
+        -------
+        ndarray, (n, n)
+            kg, N·s/m or N/m (and the rotations' units).
+        """
         if which not in ("mass", "damping", "stiffness"):
             raise ValueError(f"which must be 'mass', 'damping' or 'stiffness', got {which!r}")
         ab = getattr(self, which)
