@@ -24,14 +24,17 @@ __all__ = ["band_factor", "band_solve", "band_receptance"]
 def band_factor(ab):
     """Factor ``ab`` (by diagonals, p + 1 rows) in place into L D Lᵀ: D on row 0, L below."""
     p, n = ab.shape[0] - 1, ab.shape[1]
+    v = np.empty(p + 1, dtype=ab.dtype)  # v[j - k] = L[j,k] d_k: each product made once a column
     for j in range(n):
         for k in range(max(0, j - p), j):  # d_j -= L[j,k]² d_k
-            ab[0, j] -= ab[j - k, k] * ab[j - k, k] * ab[0, k]
+            v[j - k] = ab[j - k, k] * ab[0, k]
+            ab[0, j] -= ab[j - k, k] * v[j - k]
+        inverse = 1.0 / ab[0, j]  # one division a column (complex division is dear)
         for i in range(j + 1, min(n, j + p + 1)):
             s = ab[i - j, j]
             for k in range(max(0, i - p), j):  # L[i,j] -= L[i,k] L[j,k] d_k
-                s -= ab[i - k, k] * ab[j - k, k] * ab[0, k]
-            ab[i - j, j] = s / ab[0, j]
+                s -= ab[i - k, k] * v[j - k]
+            ab[i - j, j] = s * inverse
 
 
 @numba.njit(cache=True)
