@@ -5,6 +5,7 @@
 * :mod:`raildyn.bridge.winkler` — an infinite beam on an elastic foundation under a moving force.
 * :mod:`raildyn.bridge.track` — the track as a structure: a rail on pads, sleepers and ballast.
 * :mod:`raildyn.bridge.sleepers` — the rail on discrete sleepers: a finite-element track and its receptance.
+* :mod:`raildyn.bridge.impact` — a wheel rolling on that track: impact forces at joints and flats, roughness.
 * :mod:`raildyn.bridge.loads` — what crosses: axle sequences, moving masses, sprung masses, vehicles, trains.
 * :mod:`raildyn.bridge.trains` — the design trains of EN 1991-2 (HSLM-A) and regular trains.
 * :mod:`raildyn.bridge.coupled` — the crossing, bridge and vehicle coupled through the wheel forces.
@@ -30,6 +31,16 @@ from raildyn.bridge.codes import (
 )
 from raildyn.bridge.continuous import ContinuousBeam
 from raildyn.bridge.coupled import BridgeCrossing, crossing
+from raildyn.bridge.impact import (
+    DippedJoint,
+    Roughness,
+    Wheel,
+    WheelFlat,
+    WheelOnTrack,
+    contact_force_spectrum,
+    jenkins_p2,
+    wheel_on_track,
+)
 from raildyn.bridge.loads import (
     AxleSequence,
     MovingLoad,
@@ -45,29 +56,36 @@ from raildyn.bridge.trains import HSLM_A, hslm, regular_train
 from raildyn.bridge.winkler import WinklerBeam
 
 __all__ = [
-    "HSLM_A",
     "AxleSequence",
     "BridgeCrossing",
     "ContinuousBeam",
+    "DippedJoint",
     "DiscreteResonances",
     "DiscreteTrack",
+    "HSLM_A",
     "LayeredTrack",
     "MovingForceResponse",
     "MovingLoad",
+    "Roughness",
     "SimplySupportedBeam",
     "TrackMatrices",
     "TrackResonances",
+    "Wheel",
+    "WheelFlat",
+    "WheelOnTrack",
     "WinklerBeam",
     "arema_impact_factor",
     "beam_receptance",
     "cancellation_spans",
     "comfort_acceleration_limit",
+    "contact_force_spectrum",
     "crossing",
     "deck_acceleration_limit",
     "en1991_dynamic_factor",
     "en1991_real_train_factor",
     "fryba_deflection",
     "hslm",
+    "jenkins_p2",
     "moving_force_response",
     "moving_load",
     "moving_mass",
@@ -77,6 +95,7 @@ __all__ = [
     "sprung_mass",
     "train",
     "vehicle",
+    "wheel_on_track",
 ]
 
 # The old names of issue 33 (raildyn._deprecated.RENAMED): each warns and gives the new object;

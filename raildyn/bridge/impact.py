@@ -1,0 +1,554 @@
+"""A wheel rolling on a flexible track: the forces at a dipped joint, a wheel flat, rough rails (ch. 3, 10).
+
+Everywhere else in raildyn a wheel follows the rail. Here it does not: the wheel (its unsprung mass,
+and above it a share of the vehicle on its primary suspension) rests on the rail through the Hertz
+spring of chapter 4, F = C_H δ^{3/2} while the wheel presses on the rail (δ > 0) and F = 0 when it has
+lifted off, and the rail is the :class:`~raildyn.bridge.sleepers.DiscreteTrack`, bending between
+sleepers on pads and ballast. With z the wheel's and w(x) the rail's deflection (down positive, from
+where they stand unloaded), r(x) how far the running surface dips below its line (a dipped joint; a
+flat on the wheel reads as a dip that comes round once a revolution), and the wheel at x = x₀ + Vt:
+
+    m_w z̈_w = W_w − F + k₁(z_s − z_w) + c₁(ż_s − ż_w),    m_s z̈_s = m_s g − k₁(z_s − z_w) − c₁(ż_s − ż_w),
+    M ü + C u̇ + K u = N(x)ᵀ F,     δ = z_w − N(x) u − r(x),
+
+N(x) the rail element's shape functions at the wheel and W_w the rest of the wheel's static load Q₀.
+A wheel running into a dip of total angle 2α = α₁ + α₂ meets a sudden change 2αV of the rail's
+vertical velocity: first the wheel and the rail beneath it bounce against each other on the stiff
+Hertz spring (the *P1* force, some 0.2–0.5 ms after the joint), then wheel and track move together
+on the track's stiffness (the *P2* force, a few milliseconds later), which loads sleepers and ballast
+(Jenkins, Stephenson, Clayton, Morland & Lyon 1974, *Railway Engineering Journal* 3(1), 2–16).
+Their estimate of P2, :func:`jenkins_p2`, comes from that second picture.
+
+:func:`wheel_on_track` marches the equations (Newmark's average-acceleration rule, compiled; or, as
+the reference for the speed of the march, scipy's RK45 on the same equations) and returns a
+:class:`WheelOnTrack` with the contact force, P1 and P2, contact loss, the rail-seat (pad) and
+ballast forces, and the energy balance. :func:`contact_force_spectrum` gives the linear answer for
+small roughness from the receptances.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from raildyn import _checks
+from raildyn.bridge import _band, _impact_kernel, _impact_reference
+from raildyn.bridge.defects import MAX_DIP_ANGLE, DippedJoint, Roughness, WheelFlat
+from raildyn.bridge.sleepers import DiscreteTrack, _shape
+from raildyn.constants import GRAVITY
+from raildyn.errors import SolverError
+
+__all__ = [
+    "Wheel",
+    "WheelOnTrack",
+    "contact_force_spectrum",
+    "jenkins_p2",
+    "wheel_on_track",
+]
+
+
+@dataclass(frozen=True)
+class Wheel:
+    """One wheel, its share of the vehicle, and its Hertz contact with the rail.
+
+    Attributes
+    ----------
+    unsprung_mass : float
+        m_w, kg: half a wheelset with its axleboxes, in [10, 1e6]. Default 906.5 kg (half the 1813 kg
+        wheelset of the Manchester benchmark car, Iwnicki 1998).
+    static_load : float
+        Q₀, the wheel's static load, N, in [1, 1e6] and > m_s g. Default 54.5 kN (the Manchester car,
+        32 t body, two 2.615 t bogies and four wheelsets, on eight wheels).
+    sprung_mass : float
+        m_s, kg, the share of the vehicle above the primary suspension that moves with this wheel (≥ 0;
+        0: the static load alone, no sprung mass). Default 0.
+    primary_stiffness, primary_damping : float
+        k₁ (N/m) and c₁ (N·s/m) of one wheel's primary suspension (≥ 0; both 0 without a sprung mass).
+    wheel_radius : float
+        m, in [0.1, 1.5]. Default 0.46 m.
+    rail_head_radius : float
+        The rail head's transverse radius, m (≥ 0.05). Default 0.3 m (UIC 60's crown).
+    """
+
+    unsprung_mass: float = 1813.0 / 2
+    static_load: float = (32000.0 + 2 * 2615.0 + 4 * 1813.0) * GRAVITY / 8
+    sprung_mass: float = 0.0
+    primary_stiffness: float = 0.0
+    primary_damping: float = 0.0
+    wheel_radius: float = 0.46
+    rail_head_radius: float = 0.3
+
+    def __post_init__(self):
+        _checks.plausible("unsprung_mass", self.unsprung_mass, "mass")
+        _checks.plausible("static_load", self.static_load, "wheel_load")
+        for name in ("sprung_mass", "primary_stiffness", "primary_damping"):
+            _checks.nonnegative(name, getattr(self, name))
+        _checks.plausible("wheel_radius", self.wheel_radius, "wheel_radius")
+        _checks.scalar("rail_head_radius", self.rail_head_radius, low=0.05)
+        if self.sprung_mass * GRAVITY >= self.static_load:
+            raise ValueError(
+                f"sprung_mass must weigh less than static_load ({self.static_load!r} N), "
+                f"got {self.sprung_mass!r} kg"
+            )
+        if self.sprung_mass > 0.0 and self.primary_stiffness == 0.0:
+            raise ValueError("primary_stiffness must be > 0 to carry a sprung mass, got 0.0")
+
+    @classmethod
+    def from_vehicle(cls, vehicle, wheelset_mass: float = 1813.0) -> Wheel:
+        """One wheel of a vertical vehicle model (:class:`raildyn.vehicles.VerticalCar` or
+        :class:`raildyn.vehicles.VerticalLocomotive`): its share of the body and bogies on its primary
+        suspension.
+
+        Above a few tens of hertz the body and bogie frames hardly move, so the impact forces see the
+        vehicle as this share: the frames' mass spread equally over the wheels, on the primary
+        suspension of one axlebox (the vehicle's per-wheelset values halved).
+
+        Parameters
+        ----------
+        vehicle : VerticalCar or VerticalLocomotive
+            Any vehicle with ``body_mass``, ``bogie_mass`` (or ``truck_mass``), ``primary_stiffness``,
+            ``primary_damping`` (per wheelset) and ``axle_positions``.
+        wheelset_mass : float
+            kg, in [10, 1e6]. Default 1813 kg (Iwnicki 1998).
+
+        Returns
+        -------
+        Wheel
+        """
+        _checks.plausible("wheelset_mass", wheelset_mass, "mass")
+        _checks.not_a_class("vehicle", vehicle, "a vertical vehicle")
+        try:
+            frames = getattr(vehicle, "bogie_mass", None) or vehicle.truck_mass
+            axles = np.asarray(vehicle.axle_positions, dtype=float).size
+            k1, c1, body = (float(vehicle.primary_stiffness), float(vehicle.primary_damping),
+                            float(vehicle.body_mass))  # fmt: skip
+        except (AttributeError, TypeError, ValueError):
+            raise TypeError(
+                f"vehicle must be a vertical vehicle with a primary suspension (VerticalCar, "
+                f"VerticalLocomotive), "
+                f"got {type(vehicle).__name__}"
+            ) from None
+        sprung = (body + 2 * frames) / (2 * axles)
+        return cls(wheelset_mass / 2, (sprung + wheelset_mass / 2) * GRAVITY, sprung, k1 / 2, c1 / 2)
+
+    @property
+    def hertz_constant(self) -> float:
+        """C_H of F = C_H δ^{3/2}, N/m^{3/2}: :func:`raildyn.contact.hertz_contact` at the static load."""
+        from raildyn.contact import hertz_contact
+
+        c = hertz_contact(self.static_load, self.wheel_radius, math.inf, self.rail_head_radius)
+        return self.static_load / c.approach**1.5
+
+    @property
+    def contact_stiffness(self) -> float:
+        """k_H = dF/dδ at the static load, (3/2) C_H^{2/3} Q₀^{1/3}, N/m."""
+        return 1.5 * self.hertz_constant ** (2 / 3) * self.static_load ** (1 / 3)
+
+    def receptance(self, frequencies) -> np.ndarray:
+        """The wheel's own receptance at the contact, m/N (complex): its motion per unit force on it.
+
+        Parameters
+        ----------
+        frequencies : array_like
+            f, Hz, each > 0.
+
+        Returns
+        -------
+        ndarray of complex
+        """
+        f = _checks.array("frequencies", frequencies, ndim=1, low=0.0, low_open=True, allow_empty=False)
+        if f.max() > 1e4:
+            raise ValueError(f"frequencies must be at most 10000 Hz, got {f.max()!r}")
+        w = 2 * np.pi * f
+        dynamic = -self.unsprung_mass * w**2 + 0j
+        if self.sprung_mass > 0.0:
+            spring = self.primary_stiffness + 1j * w * self.primary_damping
+            dynamic += spring * (-self.sprung_mass * w**2) / (spring - self.sprung_mass * w**2)
+        return 1.0 / dynamic
+
+
+@dataclass(frozen=True, eq=False)
+class WheelOnTrack:
+    """A wheel's run over a discrete track (:func:`wheel_on_track`); every array one value per record.
+
+    Attributes
+    ----------
+    t : ndarray
+        s, from 0.
+    x : ndarray
+        The wheel's position on the track, m (or, for a standing wheel, where the running surface under
+        it came from).
+    contact_force : ndarray
+        F, N (≥ 0; 0 where the wheel has lifted off).
+    wheel : ndarray
+        z_w, m (down positive, from where the wheel stands unloaded on an undeflected rail).
+    rail : ndarray
+        w, the rail's deflection under the wheel, m (down positive).
+    irregularity : ndarray
+        r met by the wheel, m (down positive).
+    sleeper_positions : ndarray
+        x of each sleeper, m.
+    pad_forces, ballast_forces : ndarray, (records, sleepers)
+        The rail-seat force on each sleeper through its pad, and the ballast's force under it, N
+        (down positive: the load they carry).
+    energy : ndarray
+        The whole system's energy, J (kinetic and strain energy, less the work the constant loads could
+        do), from which :attr:`balance` follows.
+    work : ndarray
+        Work fed in by the rolling since t = 0, J: −∫ F V (∂w/∂x + dr/dx) dt.
+    dissipated : ndarray
+        Work done on the dampers since t = 0, J.
+    static_load : float
+        Q₀, N.
+    speed : float
+        V, m/s.
+    """
+
+    t: np.ndarray
+    x: np.ndarray
+    contact_force: np.ndarray
+    wheel: np.ndarray
+    rail: np.ndarray
+    irregularity: np.ndarray
+    sleeper_positions: np.ndarray
+    pad_forces: np.ndarray
+    ballast_forces: np.ndarray
+    energy: np.ndarray
+    work: np.ndarray
+    dissipated: np.ndarray
+    static_load: float
+    speed: float
+
+    def __post_init__(self):
+        t = _checks.array("t", self.t, ndim=1, allow_empty=False)
+        k = t.size
+        j = _checks.array("sleeper_positions", self.sleeper_positions, ndim=1, allow_empty=False).size
+        for name in ("x", "wheel", "rail", "irregularity", "energy", "work", "dissipated"):
+            _checks.array(name, getattr(self, name), shape=(k,))
+        _checks.array("contact_force", self.contact_force, shape=(k,), low=0.0)
+        for name in ("pad_forces", "ballast_forces"):
+            _checks.array(name, getattr(self, name), shape=(k, j))
+        _checks.plausible("static_load", self.static_load, "wheel_load")
+        _checks.speed("speed", self.speed, high=150.0)
+
+    @property
+    def lost_contact(self) -> np.ndarray:
+        """True where the wheel is off the rail (F = 0)."""
+        return self.contact_force <= 0.0
+
+    @property
+    def contact_loss_time(self) -> float:
+        """How long the wheel was off the rail in all, s."""
+        dt = self.t[1] - self.t[0] if self.t.size > 1 else 0.0
+        return float(np.count_nonzero(self.lost_contact) * dt)
+
+    @property
+    def balance(self) -> np.ndarray:
+        """E(t) − E(0) + dissipated − work, J: zero for an exact march (round-off and the rule's error)."""
+        return self.energy - self.energy[0] + self.dissipated - self.work
+
+    def peaks(self, position: float) -> tuple[float, float]:
+        """(P1, P2), N: the impact forces after the wheel passes ``position`` (a joint's x, or a flat's).
+
+        The force is first smoothed over 0.5 ms, which leaves the two stages and removes the ripples of
+        the rail's higher modes: P1 is the largest force until the smoothed force's first trough after
+        its first rise above Q₀ (the bounce on the Hertz spring), P2 the largest from that trough until
+        20 ms after the wheel passed ``position`` (wheel and track moving down together).
+
+        Parameters
+        ----------
+        position : float
+            m, within the run's x.
+
+        Returns
+        -------
+        (float, float)
+        """
+        x = _checks.scalar("position", position, low=float(self.x.min()), high=float(self.x.max()))
+        start = int(np.searchsorted(self.x, x)) if self.x[-1] > self.x[0] else 0
+        dt = self.t[1] - self.t[0]
+        end = start + int(round(0.020 / dt)) + 1
+        f = self.contact_force[start:end]
+        width = max(1, int(round(0.5e-3 / dt)))
+        smooth = np.convolve(f, np.ones(width) / width, mode="same")
+        rises = np.flatnonzero(
+            (smooth[1:-1] >= smooth[:-2]) & (smooth[1:-1] > smooth[2:]) & (smooth[1:-1] > self.static_load)
+        ) + 1  # fmt: skip
+        if rises.size == 0:
+            raise ValueError(
+                f"the contact force rises to no peak above the static load in the 20 ms after x = {x!r} m"
+            )
+        after = smooth[rises[0] :]
+        troughs = np.flatnonzero((after[1:-1] <= after[:-2]) & (after[1:-1] < after[2:])) + rises[0] + 1
+        split = int(troughs[0]) if troughs.size else f.size - 1
+        return float(f[: split + 1].max()), float(f[split:].max())
+
+    def plot(self, ax=None, *, position=None, artists=None) -> dict:
+        """Draw F (kN) against the wheel's position, with P1 and P2 marked after ``position``; or move it.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; new axes if None.
+        position : float, optional
+            Where the impact begins (the joint), m: mark P1 and P2 after it.
+        artists : dict, optional
+            What a previous call returned: its lines take this run's values (same number of records).
+
+        Returns
+        -------
+        dict
+            ``{"force": line, "peaks": line}``.
+        """
+        from raildyn import plots
+
+        out = plots.movable_line(
+            ax, artists, "force", self.x, 1e-3 * self.contact_force, xlabel="wheel position x (m)",
+            ylabel="wheel–rail force F (kN)",
+        )  # fmt: skip
+        line = out["force"]
+        px, py = [], []
+        if position is not None:
+            p1, p2 = self.peaks(position)
+            for p in (p1, p2):
+                i = int(np.flatnonzero(self.contact_force == p)[0])
+                px.append(self.x[i])
+                py.append(1e-3 * p)
+        if artists is not None and "peaks" in artists:
+            artists["peaks"].set_data(px, py)
+            return artists
+        (out["peaks"],) = line.axes.plot(px, py, "v", color="C3", label="P1, P2")
+        return out
+
+
+def _profile(irregularity, x):
+    if irregularity is None:
+        return np.zeros_like(x), np.zeros_like(x)
+    if not isinstance(irregularity, DippedJoint | WheelFlat | Roughness):
+        raise TypeError(
+            "irregularity must be a DippedJoint, a WheelFlat, a Roughness or None, "
+            f"got {type(irregularity).__name__}"
+        )
+    return irregularity.profile(x)
+
+
+def wheel_on_track(
+    wheel: Wheel,
+    speed: float,
+    irregularity=None,
+    *,
+    track: DiscreteTrack | None = None,
+    start: float | None = None,
+    distance: float | None = None,
+    time_step: float = 1.0e-5,
+    standing: bool = False,
+    record_every: int = 1,
+    method: str = "newmark",
+) -> WheelOnTrack:
+    """Run a wheel over a discrete track at a steady speed (the module docstring's equations).
+
+    The run starts from the static equilibrium of wheel and track under Q₀ at ``start``.
+
+    Parameters
+    ----------
+    wheel : Wheel
+    speed : float
+        V, m/s, in (0, 150].
+    irregularity : DippedJoint, WheelFlat, Roughness or None
+        What the wheel meets; None: a smooth rail (the sleepers' passing alone).
+    track : DiscreteTrack, optional
+        Default ``DiscreteTrack()``.
+    start : float, optional
+        x where the wheel starts, m; default the first sleeper bay past the quiet layer.
+    distance : float, optional
+        How far the wheel runs, m (> 0); default to the bay before the far quiet layer. The whole run
+        stays outside the quiet layers.
+    time_step : float
+        Δt, s, in [1e-7, 1e-4]. Default 10 µs (some 50 steps in the bounce on the Hertz spring).
+    standing : bool
+        If True the wheel stands over ``start`` and the irregularity passes under it at V (the moving-
+        irregularity model, for comparison with :func:`contact_force_spectrum`).
+    record_every : int
+        Keep every this-many steps, in [1, 1000].
+    method : {"newmark", "scipy"}
+        The compiled march, or scipy's RK45 on the same equations (rtol 1e-8; the reference for the
+        march's speed and answer: slow).
+
+    Returns
+    -------
+    WheelOnTrack
+
+    Raises
+    ------
+    SolverError
+        If the contact force goes non-finite.
+    """
+    if not isinstance(wheel, Wheel):
+        raise TypeError(f"wheel must be a Wheel, got {type(wheel).__name__}")
+    track = DiscreteTrack() if track is None else track
+    if not isinstance(track, DiscreteTrack):
+        raise TypeError(f"track must be a DiscreteTrack, got {type(track).__name__}")
+    V = _checks.speed("speed", speed, high=150.0)
+    dt = _checks.scalar("time_step", time_step, low=1e-7, high=1e-4)
+    standing = _checks.flag("standing", standing)
+    every = _checks.integer("record_every", record_every, low=1, high=1000)
+    if method not in ("newmark", "scipy"):
+        raise ValueError(f"method must be 'newmark' or 'scipy', got {method!r}")
+    d = track.sleeper_spacing
+    lo, hi = (track.quiet_bays + 1) * d, track.length - (track.quiet_bays + 1) * d
+    if hi <= lo:
+        raise ValueError(f"track must leave room to run between its quiet layers, got {track.bays} bays")
+    x0 = lo if start is None else _checks.scalar("start", start, low=lo, high=hi)
+    span = hi - x0 if distance is None else _checks.scalar("distance", distance, low=0.0, low_open=True)
+    if not standing and x0 + span > hi + 1e-9:
+        raise ValueError(f"distance must keep the wheel before x = {hi!r} m (the quiet layer), got {span!r}")
+    steps = int(math.ceil(span / V / dt))
+    if steps > 5_000_000:
+        raise ValueError(f"the run must take at most 5e6 steps, got {steps} (distance/speed/time_step)")
+    t = np.arange(steps + 1) * dt
+    seen = x0 + V * t
+    where = np.full_like(seen, x0) if standing else seen
+    r, slope_r = _profile(irregularity, seen)
+    mats = track.matrices
+    h = d / track.elements_per_bay
+    element = np.minimum((where / h).astype(int), track.elements_per_bay * track.bays - 1)
+    phi = 12.0 * track.rail_flexural_rigidity / (track.rail_shear_stiffness * h * h)
+    nw, dnw = (a.T.copy() for a in _shape(where / h - element, h, phi)[:2])
+    if standing:
+        dnw[:] = 0.0
+    nodes = mats.deflection[element]
+    dofs = np.stack(
+        [nodes, nodes + 1, mats.deflection[element + 1], mats.deflection[element + 1] + 1], axis=1
+    )
+    hertz = wheel.hertz_constant
+    sprung = wheel.sprung_mass if wheel.sprung_mass > 0.0 else 1.0  # a free, unloaded stand-in
+    k1 = wheel.primary_stiffness if wheel.sprung_mass > 0.0 else 0.0
+    c1 = wheel.primary_damping if wheel.sprung_mass > 0.0 else 0.0
+    sprung_force = wheel.sprung_mass * GRAVITY
+    wheel_force = wheel.static_load - sprung_force
+    # The static state: the rail under Q₀, the Hertz spring pressed by (Q₀/C_H)^{2/3}, the primary by m_s g.
+    u = np.zeros(mats.size)
+    stiff = mats.stiffness.copy()
+    u[dofs[0]] = nw[0] * wheel.static_load
+    _band.band_factor(stiff)
+    _band.band_solve(stiff, u)
+    rail0 = float(nw[0] @ u[dofs[0]])
+    z = np.array([rail0 + (wheel.static_load / hertz) ** (2 / 3) + r[0], 0.0])
+    z[1] = z[0] + (sprung_force / k1 if k1 > 0.0 else 0.0)
+    records = steps // every + 1
+    out = {name: np.zeros(records) for name in ("force", "wheel", "rail", "energy", "work", "dissipated")}
+    out["pad"], out["ballast"] = np.zeros((records, track.bays)), np.zeros((records, track.bays))
+    args = (mats.mass, mats.damping, mats.stiffness)
+    if method == "scipy":
+        surface = lambda s: _profile(irregularity, s)  # noqa: E731
+        _impact_reference.march(track, surface, x0, V, standing, t[::every], wheel, hertz, u, z, out)
+    else:
+        effective = mats.stiffness + 4.0 / dt**2 * mats.mass + 2.0 / dt * mats.damping
+        rail_dofs = np.unique(dofs)
+        column_of = np.full(mats.size, -1)
+        column_of[rail_dofs] = np.arange(rail_dofs.size)
+        columns = _impact_kernel.influence(effective, rail_dofs)
+        done, status = _impact_kernel.march(
+            *args, effective, columns, column_of, dofs, nw, dnw, r, slope_r, V, wheel.unsprung_mass, sprung,
+            k1, c1, wheel_force, sprung_force, hertz, wheel.static_load, dt, u, np.zeros_like(u),
+            np.zeros_like(u), z, np.zeros(2), np.zeros(2), every, mats.deflection[mats.sleeper_nodes],
+            mats.sleepers, track.pad_stiffness, track.pad_damping, track.ballast_stiffness,
+            track.ballast_damping, out["force"], out["wheel"], out["rail"], out["pad"], out["ballast"],
+            out["energy"], out["work"], out["dissipated"],
+        )  # fmt: skip
+        if status:
+            raise SolverError(
+                "the contact force became non-finite: the run diverged", step=int(done), time=float(done * dt)
+            )
+    keep = slice(None, None, every)
+    return WheelOnTrack(
+        t[keep], seen[keep], out["force"], out["wheel"], out["rail"], r[keep], track.sleeper_positions,
+        out["pad"], out["ballast"], out["energy"], out["work"], out["dissipated"], wheel.static_load, V,
+    )  # fmt: skip
+
+
+def contact_force_spectrum(wheel: Wheel, speed: float, psd, frequencies, *, track=None, position=None):
+    """The wheel–rail force's spectrum from a roughness's, linearised: S_F = S_r(f) / |α_w + α_H + α_r|².
+
+    For small roughness the Hertz spring acts as its tangent k_H = 1/α_H at the static load, and the
+    force that the roughness r drives between wheel (receptance α_w, :meth:`Wheel.receptance`) and rail
+    (α_r, the track's point receptance) is F = −r/(α_w + α_H + α_r): the three compliances in series.
+
+    Parameters
+    ----------
+    wheel : Wheel
+    speed : float
+        V, m/s, in (0, 150].
+    psd : callable
+        The roughness's one-sided spatial spectrum S(Ω), m²/(rad/m), Ω in rad/m (as
+        :func:`raildyn.track.synthesize_irregularity` takes it).
+    frequencies : array_like
+        f, Hz, each in (0, 10 000].
+    track : DiscreteTrack or LayeredTrack, optional
+        Default ``DiscreteTrack()``.
+    position : float, optional
+        For a DiscreteTrack, where the wheel stands (its receptance is taken there), m; default its
+        :meth:`~raildyn.bridge.sleepers.DiscreteTrack.receptance` default.
+
+    Returns
+    -------
+    ndarray
+        S_F, N²/Hz, one-sided, one per frequency.
+    """
+    from raildyn.bridge.track import LayeredTrack
+    from raildyn.track import temporal_psd
+
+    if not isinstance(wheel, Wheel):
+        raise TypeError(f"wheel must be a Wheel, got {type(wheel).__name__}")
+    V = _checks.speed("speed", speed, high=150.0)
+    f = _checks.array("frequencies", frequencies, ndim=1, low=0.0, low_open=True, allow_empty=False)
+    track = DiscreteTrack() if track is None else track
+    if isinstance(track, DiscreteTrack):
+        rail = track.receptance(f, position)
+    elif isinstance(track, LayeredTrack):
+        rail = track.receptance(f)
+    else:
+        raise TypeError(f"track must be a DiscreteTrack or a LayeredTrack, got {type(track).__name__}")
+    roughness = 2 * np.pi * temporal_psd(psd, V)(2 * np.pi * f)  # per Hz
+    return roughness / np.abs(wheel.receptance(f) + 1.0 / wheel.contact_stiffness + rail) ** 2
+
+
+def jenkins_p2(wheel: Wheel, speed: float, total_angle: float, track_mass: float, track_stiffness: float,
+               track_damping: float) -> float:  # fmt: skip
+    """P2 by the closed-form estimate of Jenkins et al. (1974), N.
+
+    P2 = Q₀ + 2αV √(m_w/(m_w + M_t)) [1 − π C_t / (4√(K_t(m_w + M_t)))] √(K_t m_w).
+
+    After the P1 bounce the wheel and an effective track mass M_t share the wheel's momentum 2αV m_w
+    and ride down together on the track's stiffness K_t and damping C_t; the bracket is the first-order
+    effect of damping on that oscillator's first peak. It holds while the two stages stay apart (P1
+    over well before P2: a Hertz spring much stiffer than the track), the damping ratio is small, the
+    wheel keeps contact, and the dip is sharp against the P2 period (its legs longer than the distance
+    run in half a P2 period, so that the wheel meets no third slope change before P2).
+
+    Parameters
+    ----------
+    wheel : Wheel
+        Its unsprung mass and static load (a sprung mass is taken as not moving).
+    speed : float
+        V, m/s, in (0, 150].
+    total_angle : float
+        2α, rad, in (0, 0.1].
+    track_mass, track_stiffness, track_damping : float
+        M_t (kg, > 0), K_t (N/m, > 0), C_t (N·s/m, ≥ 0): the track as one mass on a spring and damper.
+
+    Returns
+    -------
+    float
+    """
+    if not isinstance(wheel, Wheel):
+        raise TypeError(f"wheel must be a Wheel, got {type(wheel).__name__}")
+    V = _checks.speed("speed", speed, high=150.0)
+    angle = _checks.scalar("total_angle", total_angle, low=0.0, low_open=True, high=2 * MAX_DIP_ANGLE)
+    mt, kt = _checks.positive("track_mass", track_mass), _checks.positive("track_stiffness", track_stiffness)
+    ct = _checks.nonnegative("track_damping", track_damping)
+    mu = wheel.unsprung_mass
+    damping = 1.0 - math.pi * ct / (4.0 * math.sqrt(kt * (mu + mt)))
+    return wheel.static_load + angle * V * math.sqrt(mu / (mu + mt)) * damping * math.sqrt(kt * mu)
