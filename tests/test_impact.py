@@ -6,13 +6,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from raildyn.bridge.defects import DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.impact import (
-    DippedJoint,
-    Roughness,
     Wheel,
-    WheelFlat,
     contact_force_spectrum,
     jenkins_p2,
+    lumped_track,
     wheel_on_track,
 )
 from raildyn.bridge.sleepers import DiscreteTrack
@@ -84,23 +83,13 @@ def test_the_march_agrees_with_scipys_rk45():
     assert np.abs(runs[1].balance).max() < 1e-2 * (np.ptp(runs[1].energy) + runs[1].dissipated[-1])
 
 
-def _track_as_one_mass(track, x):
-    """K_t, M_t, C_t of 1/α = K − Mω² + iωC fitted to the track's receptance at x over 5–60 Hz, the
-    band around the P2 resonance (some 35 Hz here)."""
-    f = np.linspace(5.0, 60.0, 56)
-    w = 2 * np.pi * f
-    stiffness = 1.0 / track.receptance(f, x)
-    (k, m), *_ = np.linalg.lstsq(np.stack([np.ones_like(w), -(w**2)], 1), stiffness.real, rcond=None)
-    return k, m, float(np.linalg.lstsq(w[:, None], stiffness.imag, rcond=None)[0][0])
-
-
 @pytest.mark.parametrize(("speed", "total"), [(20.0, 0.004), (30.0, 0.004), (10.0, 0.01)])
 def test_p2_against_jenkins(speed, total):
     # Jenkins et al. (1974) picture P2 as the wheel and a track mass sharing the wheel's momentum 2αV
     # and riding down on one spring and damper. Fitted to this track (ζ ≈ 0.33), their estimate is
     # within 30 % of the run's rise above Q₀: the track is not one mass (the fit moves by ±20 % with its
     # band) and their damping term, 1 − πζ/2, is the first-order part of the damped peak's factor.
-    k, m, c = _track_as_one_mass(TRACK, JOINT_X)
+    k, m, c = lumped_track(TRACK, JOINT_X)  # over 5–60 Hz, around the P2 resonance (some 35 Hz)
     run = _joint_run(speed, total)
     assert run.contact_loss_time == 0.0  # the estimate's range: the wheel keeps contact
     p1, p2 = run.peaks(JOINT_X)

@@ -5,6 +5,7 @@
 * :mod:`raildyn.bridge.winkler` — an infinite beam on an elastic foundation under a moving force.
 * :mod:`raildyn.bridge.track` — the track as a structure: a rail on pads, sleepers and ballast.
 * :mod:`raildyn.bridge.sleepers` — the rail on discrete sleepers: a finite-element track and its receptance.
+* :mod:`raildyn.bridge.defects` — what the wheel meets: a dipped joint, a wheel flat, roughness.
 * :mod:`raildyn.bridge.impact` — a wheel rolling on that track: impact forces at joints and flats, roughness.
 * :mod:`raildyn.bridge.loads` — what crosses: axle sequences, moving masses, sprung masses, vehicles, trains.
 * :mod:`raildyn.bridge.trains` — the design trains of EN 1991-2 (HSLM-A) and regular trains.
@@ -31,14 +32,13 @@ from raildyn.bridge.codes import (
 )
 from raildyn.bridge.continuous import ContinuousBeam
 from raildyn.bridge.coupled import BridgeCrossing, crossing
+from raildyn.bridge.defects import DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.impact import (
-    DippedJoint,
-    Roughness,
     Wheel,
-    WheelFlat,
     WheelOnTrack,
     contact_force_spectrum,
     jenkins_p2,
+    lumped_track,
     wheel_on_track,
 )
 from raildyn.bridge.loads import (
@@ -86,6 +86,7 @@ __all__ = [
     "fryba_deflection",
     "hslm",
     "jenkins_p2",
+    "lumped_track",
     "moving_force_response",
     "moving_load",
     "moving_mass",

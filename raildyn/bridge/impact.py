@@ -45,6 +45,7 @@ __all__ = [
     "WheelOnTrack",
     "contact_force_spectrum",
     "jenkins_p2",
+    "lumped_track",
     "wheel_on_track",
 ]
 
@@ -286,41 +287,47 @@ class WheelOnTrack:
         return float(f[: split + 1].max()), float(f[split:].max())
 
     def plot(self, ax=None, *, position=None, artists=None) -> dict:
-        """Draw F (kN) against the wheel's position, with P1 and P2 marked after ``position``; or move it.
+        """Draw F (kN) against time, with P1 and P2 marked after ``position``; or move a drawing.
 
         Parameters
         ----------
         ax : matplotlib.axes.Axes, optional
-            Where to draw; new axes if None.
+            Where to draw; new axes on a new pyplot figure if None.
         position : float, optional
-            Where the impact begins (the joint), m: mark P1 and P2 after it.
+            Where the impact begins (a joint), m: time is then counted from the moment the wheel
+            passes it, and P1 and P2 are marked.
         artists : dict, optional
-            What a previous call returned: its lines take this run's values (same number of records).
+            What a previous call returned: its lines take this run's values (any number of records).
 
         Returns
         -------
         dict
             ``{"force": line, "peaks": line}``.
         """
-        from raildyn import plots
-
-        out = plots.movable_line(
-            ax, artists, "force", self.x, 1e-3 * self.contact_force, xlabel="wheel position x (m)",
-            ylabel="wheel–rail force F (kN)",
-        )  # fmt: skip
-        line = out["force"]
+        t0 = 0.0
         px, py = [], []
         if position is not None:
             p1, p2 = self.peaks(position)
+            t0 = float(self.t[int(np.searchsorted(self.x, position))]) if self.x[-1] > self.x[0] else 0.0
             for p in (p1, p2):
-                i = int(np.flatnonzero(self.contact_force == p)[0])
-                px.append(self.x[i])
+                i = int(np.flatnonzero((self.contact_force == p) & (self.t >= t0))[0])
+                px.append(1e3 * (self.t[i] - t0))
                 py.append(1e-3 * p)
-        if artists is not None and "peaks" in artists:
+        t, f = 1e3 * (self.t - t0), 1e-3 * self.contact_force
+        if artists is not None:
+            _checks.instance("artists", artists, dict, "dict returned by an earlier plot")
+            artists["force"].set_data(t, f)
             artists["peaks"].set_data(px, py)
             return artists
-        (out["peaks"],) = line.axes.plot(px, py, "v", color="C3", label="P1, P2")
-        return out
+        from raildyn import plots
+
+        ax = plots.axes_or_new(ax)
+        (force,) = ax.plot(t, f, color="C0", label="wheel–rail force F")
+        (peaks,) = ax.plot(px, py, "v", color="C3", label="P1, P2")
+        ax.axhline(1e-3 * self.static_load, color="0.6", lw=0.8, ls="--")
+        ax.set_xlabel("time after the joint (ms)" if position is not None else "time t (ms)")
+        ax.set_ylabel("F (kN)")
+        return {"force": force, "peaks": peaks}
 
 
 def _profile(irregularity, x):
@@ -513,6 +520,40 @@ def contact_force_spectrum(wheel: Wheel, speed: float, psd, frequencies, *, trac
         raise TypeError(f"track must be a DiscreteTrack or a LayeredTrack, got {type(track).__name__}")
     roughness = 2 * np.pi * temporal_psd(psd, V)(2 * np.pi * f)  # per Hz
     return roughness / np.abs(wheel.receptance(f) + 1.0 / wheel.contact_stiffness + rail) ** 2
+
+
+def lumped_track(track: DiscreteTrack, position=None, band=(5.0, 60.0)) -> tuple[float, float, float]:
+    """The track seen as one mass on a spring and damper: (K_t, M_t, C_t) for :func:`jenkins_p2`.
+
+    Least squares of 1/α(f) = K_t − M_t ω² + iω C_t over ``band`` (the real part for K_t and M_t, the
+    imaginary for C_t), α the track's receptance at ``position``: the picture Jenkins et al. (1974)
+    draw of the track under P2. The band should hold the P2 resonance (some 30–60 Hz); the fit moves
+    with the band, for no real track is one mass.
+
+    Parameters
+    ----------
+    track : DiscreteTrack
+    position : float, optional
+        m, as for :meth:`~raildyn.bridge.sleepers.DiscreteTrack.receptance`.
+    band : (float, float)
+        f, Hz, 0 < low < high ≤ 1000.
+
+    Returns
+    -------
+    (float, float, float)
+        K_t (N/m), M_t (kg), C_t (N·s/m).
+    """
+    if not isinstance(track, DiscreteTrack):
+        raise TypeError(f"track must be a DiscreteTrack, got {type(track).__name__}")
+    lo, hi = _checks.array("band", band, shape=(2,), low=0.0, low_open=True)
+    if not lo < hi <= 1000.0:
+        raise ValueError(f"band must be (low, high) with 0 < low < high <= 1000 Hz, got {band!r}")
+    f = np.linspace(lo, hi, 64)
+    w = 2 * np.pi * f
+    stiffness = 1.0 / track.receptance(f, position)
+    (k, m), *_ = np.linalg.lstsq(np.stack([np.ones_like(w), -(w**2)], 1), stiffness.real, rcond=None)
+    c = float(np.linalg.lstsq(w[:, None], stiffness.imag, rcond=None)[0][0])
+    return float(k), float(m), c
 
 
 def jenkins_p2(wheel: Wheel, speed: float, total_angle: float, track_mass: float, track_stiffness: float,

@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 from fuzzing import call, fuzz, on
 
-from raildyn.bridge.impact import DippedJoint, Roughness, Wheel, WheelFlat, wheel_on_track
+from raildyn.bridge.defects import DippedJoint, Roughness, WheelFlat
+from raildyn.bridge.impact import Wheel, wheel_on_track
 from raildyn.bridge.sleepers import DiscreteTrack
 
 SMALL = DiscreteTrack(bays=8, quiet_bays=2)  # runs between x = 1.65 and 2.75 m
@@ -22,32 +23,32 @@ def _psd(w):
 
 ENTRIES = [
     fuzz(
-        "raildyn.bridge.impact.DippedJoint",
+        "raildyn.bridge.defects.DippedJoint",
         lambda: call(2.2, (0.004, 0.004), 0.3),
         accepts={"position": "zero negative big mm tiny", "angles": "list"},
     ),
     fuzz(
-        "raildyn.bridge.impact.DippedJoint.profile",
+        "raildyn.bridge.defects.DippedJoint.profile",
         lambda: on(JOINT, np.linspace(1.0, 3.0, 5)),
         accepts={"x": "zero negative shape big mm tiny list huge"},
     ),
     fuzz(
-        "raildyn.bridge.impact.WheelFlat",
+        "raildyn.bridge.defects.WheelFlat",
         lambda: call(0.001, 0.46, 1.0),
         accepts={"first": "zero negative big mm tiny", "depth": "tiny"},
     ),
     fuzz(
-        "raildyn.bridge.impact.WheelFlat.profile",
+        "raildyn.bridge.defects.WheelFlat.profile",
         lambda: on(WheelFlat(0.001), np.linspace(0.0, 3.0, 5)),
         accepts={"x": "zero negative shape big mm tiny list huge"},
     ),
     fuzz(
-        "raildyn.bridge.impact.Roughness",
+        "raildyn.bridge.defects.Roughness",
         lambda: call(np.linspace(0.0, 1.0, 5), np.full(5, 1e-6)),
         accepts={"x": "big tiny mm list", "r": "zero negative tiny mm list"},
     ),
     fuzz(
-        "raildyn.bridge.impact.Roughness.profile",
+        "raildyn.bridge.defects.Roughness.profile",
         lambda: on(Roughness(np.linspace(0.0, 1.0, 5), np.full(5, 1e-6)), np.linspace(-1.0, 2.0, 4)),
         accepts={"x": "zero negative shape big mm tiny list huge"},
     ),
@@ -109,5 +110,10 @@ ENTRIES = [
             "track_mass": "big mm tiny",
             "track_stiffness": "big mm tiny",
         },
+    ),
+    fuzz(
+        "raildyn.bridge.impact.lumped_track",
+        lambda: call(SMALL, 2.2, (5.0, 60.0)),
+        accepts={"position": "none tiny zero", "band": "list"},
     ),
 ]
