@@ -68,5 +68,7 @@ def cases(repeats: int):
         ("random_track speed", chapter03.RANDOM_TRACK, "speed_kmh", [40.0, 80.0, 120.0, 160.0, 200.0, 250.0]),
         ("random_track track", chapter03.RANDOM_TRACK, "track", list(chapter03.TRACKS)[:6]),
         ("jointed_rail a", chapter03.JOINTED_RAIL, "half_width", [0.5, 1.0, 2.0, 3.0, 4.0, 5.0]),
+        ("dipped_joint V", chapter03.DIPPED_JOINT, "speed_kmh", [60.0, 80.0, 120.0, 160.0, 200.0, 100.0]),
+        ("dipped_joint 2α", chapter03.DIPPED_JOINT, "dip_mrad", [4.0, 6.0, 10.0, 14.0, 20.0, 8.0]),
     ]
     return [synth] + [widget_case(label, recipe, c, v, repeats) for label, recipe, c, v in moves]

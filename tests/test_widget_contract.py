@@ -52,6 +52,7 @@ MOVES = {
         track="FRA class 2", component="alignment", speed_kmh=160.0, shortest=3.0, longest=150.0, seed=4
     ),
     chapter03.jointed_rail: dict(half_width=3.5, depth_mm=12.0, arrangement="in_phase", speed_kmh=100.0),
+    chapter03.dipped_joint: dict(speed_kmh=160.0, dip_mrad=14.0, unsprung_kg=1500.0),
     chapter04.hertz: dict(load_kn=150.0, wheel_radius_mm=400.0, rail_radius_mm=120.0),
     chapter04.creep_laws: dict(a_over_b=2.0, spin=1.0, friction=0.4, load_kn=60.0),
     chapter04.fastsim_patch: dict(xi_permille=3.0, eta_permille=-1.0, spin=0.5, friction=0.2),

@@ -51,27 +51,27 @@ def band_solve(ab, b):
             b[i] -= ab[k - i, i] * b[k]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, parallel=True)
 def band_receptance(mass, damping, stiffness, omegas, dofs, weights):
     """w/F at one point for each ω: the point's deflection per unit harmonic force there.
 
     ``dofs`` and ``weights`` give the deflection at the point as Σ weights·u[dofs] (and, the load being
     consistent, the force's share on each). Returns the receptances and, for each ω, the smallest
-    |D| of the factor (zero would mean a singular matrix).
+    |D| of the factor (zero would mean a singular matrix). The frequencies are independent: they
+    are shared among the machine's cores.
     """
     p1, n = stiffness.shape
     out = np.empty(omegas.size, dtype=np.complex128)
     smallest = np.empty(omegas.size)
-    ab = np.empty((p1, n), dtype=np.complex128)
-    b = np.empty(n, dtype=np.complex128)
-    for m in range(omegas.size):
+    for m in numba.prange(omegas.size):
         w = omegas[m]
+        ab = np.empty((p1, n), dtype=np.complex128)
         for k in range(p1):
             for j in range(n):
                 ab[k, j] = stiffness[k, j] - w * w * mass[k, j] + 1j * w * damping[k, j]
         band_factor(ab)
         smallest[m] = np.min(np.abs(ab[0]))
-        b[:] = 0.0
+        b = np.zeros(n, dtype=np.complex128)
         for i in range(dofs.size):
             b[dofs[i]] += weights[i]
         band_solve(ab, b)

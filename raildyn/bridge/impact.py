@@ -253,10 +253,11 @@ class WheelOnTrack:
     def peaks(self, position: float) -> tuple[float, float]:
         """(P1, P2), N: the impact forces after the wheel passes ``position`` (a joint's x, or a flat's).
 
-        The force is first smoothed over 0.5 ms, which leaves the two stages and removes the ripples of
-        the rail's higher modes: P1 is the largest force until the smoothed force's first trough after
-        its first rise above Q₀ (the bounce on the Hertz spring), P2 the largest from that trough until
-        20 ms after the wheel passed ``position`` (wheel and track moving down together).
+        The force is first smoothed over 0.5 ms, which keeps the two stages and removes the ripples of
+        the rail's higher modes. P1 is the largest force up to the deepest trough of the smoothed force
+        in the 5 ms after its first peak above Q₀ (the bounce on the Hertz spring, and its recoil); P2
+        the largest from that trough until 20 ms after the wheel passed ``position`` (wheel and track
+        moving down together).
 
         Parameters
         ----------
@@ -281,9 +282,8 @@ class WheelOnTrack:
             raise ValueError(
                 f"the contact force rises to no peak above the static load in the 20 ms after x = {x!r} m"
             )
-        after = smooth[rises[0] :]
-        troughs = np.flatnonzero((after[1:-1] <= after[:-2]) & (after[1:-1] < after[2:])) + rises[0] + 1
-        split = int(troughs[0]) if troughs.size else f.size - 1
+        first = int(rises[0])
+        split = first + int(np.argmin(smooth[first : first + int(round(5e-3 / dt)) + 1]))
         return float(f[: split + 1].max()), float(f[split:].max())
 
     def plot(self, ax=None, *, position=None, artists=None) -> dict:

@@ -1,20 +1,22 @@
-"""Chapter 3 widgets: random track (spectrum, sample, excitation in time) and jointed rail.
+"""Chapter 3 widgets: random track (spectrum, sample, time), jointed rail, and the impact at a dipped joint.
 
 Each factory returns ``(container, update)`` (see :mod:`raildyn.widgets`). The
-models are :mod:`raildyn.track` and :mod:`raildyn.random_vibration`; this module
+models are :mod:`raildyn.track`, :mod:`raildyn.random_vibration` and :mod:`raildyn.bridge.impact`; this module
 only turns control values into model calls and moves artists. Units at the
 edge: speeds in km/h, irregularities in mm.
 """
 
 from __future__ import annotations
 
+from functools import cache
+
 import ipywidgets as widgets
 import numpy as np
 
-from raildyn import plots, random_vibration, track
+from raildyn import bridge, plots, random_vibration, track
 from raildyn.widgets._core import Recipe, slider
 
-__all__ = ["jointed_rail", "random_track"]
+__all__ = ["dipped_joint", "jointed_rail", "random_track"]
 
 # The eight track qualities the widget offers, by label: (spectrum family, class or level).
 TRACKS = {f"FRA class {c}": ("fra", c) for c in track.FRA_CLASSES} | {
@@ -226,3 +228,91 @@ def jointed_rail():
         ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return JOINTED_RAIL.build()
+
+
+# --------------------------------------------------------------------------- a dipped joint's impact
+
+# A shorter, coarser track than the model's default keeps each run near 20 ms: 30 sleepers with 8 quiet
+# bays at each end, 4 elements a bay (the P1 and P2 forces move by well under 1 % from the default's).
+_IMPACT_TRACK = bridge.DiscreteTrack(bays=30, quiet_bays=8, elements_per_bay=4)
+_JOINT_X = float(_IMPACT_TRACK.sleeper_positions[15]) + 0.5 * _IMPACT_TRACK.sleeper_spacing  # midway
+_RAMP, _AFTER = 0.5, 0.025  # m of the falling leg; s run after the joint
+
+
+@cache
+def _lumped():
+    return bridge.lumped_track(_IMPACT_TRACK, _JOINT_X)
+
+
+def _joint_run(speed_kmh: float, dip_mrad: float, unsprung_kg: float):
+    V = speed_kmh / 3.6
+    half = 0.5e-3 * dip_mrad
+    wheel = bridge.Wheel(unsprung_mass=unsprung_kg)
+    joint = bridge.DippedJoint(_JOINT_X, (half, half), _RAMP)
+    run = bridge.wheel_on_track(wheel, V, joint, track=_IMPACT_TRACK, start=_JOINT_X - _RAMP - 0.05,
+                                distance=_RAMP + 0.05 + V * _AFTER, time_step=2e-5)  # fmt: skip
+    return wheel, run
+
+
+def _dipped_joint_controls():
+    return {
+        "speed_kmh": slider("V (km/h)", 100.0, 40.0, 200.0, 10.0, fmt=".0f"),
+        "dip_mrad": slider("dip angle 2α (mrad)", 8.0, 2.0, 20.0, 1.0, fmt=".0f"),
+        "unsprung_kg": slider("unsprung mass m_w (kg)", 900.0, 400.0, 2000.0, 50.0, fmt=".0f"),
+    }
+
+
+def _dipped_joint_setup(live, status):
+    (ax,) = live.axes[0]
+    wheel, run = _joint_run(100.0, 8.0, 900.0)
+    drawn = run.plot(ax, position=_JOINT_X)
+    ax.set_xlim(-8.0, 1000 * _AFTER)
+    ax.set_ylim(0.0, 300.0)
+    ax.legend(loc="upper right")
+    live.animate(*drawn.values())
+
+    def redraw(v):
+        wheel, run = _joint_run(v["speed_kmh"], v["dip_mrad"], v["unsprung_kg"])
+        run.plot(position=_JOINT_X, artists=drawn)
+        p1, p2 = run.peaks(_JOINT_X)
+        k, m, c = _lumped()
+        estimate = bridge.jenkins_p2(wheel, v["speed_kmh"] / 3.6, 1e-3 * v["dip_mrad"], m, k, c)
+        lost = run.contact_loss_time
+        status.value = (
+            f"Q₀ {1e-3 * wheel.static_load:.1f} kN · P1 {1e-3 * p1:.0f} kN · P2 {1e-3 * p2:.0f} kN "
+            f"(Jenkins et al.: {1e-3 * estimate:.0f} kN)"
+            + (f" · the wheel leaves the rail for {1e3 * lost:.1f} ms" if lost > 0 else "")
+        )
+
+    return redraw
+
+
+DIPPED_JOINT = Recipe(
+    _dipped_joint_controls,
+    _dipped_joint_setup,
+    {"nrows": 1, "ncols": 1, "figsize": (8.0, 3.6)},
+    static={"dip_mrad": [2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0]},
+    title="A wheel over a dipped joint: the wheel–rail force with its P1 and P2 peaks",
+)
+
+
+def dipped_joint():
+    """A wheel rolling over a dipped rail joint on a track of discrete sleepers: the force history.
+
+    The wheel (:class:`raildyn.bridge.impact.Wheel`, the Manchester car's static load) runs over a
+    joint whose two legs fall and rise at α each (total angle 2α), midway between two sleepers of a
+    :class:`raildyn.bridge.sleepers.DiscreteTrack`. Controls: speed (km/h), the dip angle 2α (mrad)
+    and the unsprung mass (kg). The figure gives the wheel–rail force against the time since the
+    joint, P1 and P2 marked; the status line gives both, Jenkins et al.'s estimate of P2
+    (:func:`raildyn.bridge.impact.jenkins_p2` on :func:`raildyn.bridge.impact.lumped_track`) and how
+    long the wheel leaves the rail, if it does.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls, the status line and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls (``speed_kmh``, ``dip_mrad``, ``unsprung_kg``), redraws and
+        returns the PNG frame.
+    """
+    return DIPPED_JOINT.build()

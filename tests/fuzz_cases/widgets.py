@@ -121,6 +121,7 @@ ENTRIES = [
             "chapter01.random_response",
             "chapter02.accuracy_chart",
             "chapter02.scheme_response",
+            "chapter03.dipped_joint",
             "chapter03.jointed_rail",
             "chapter03.random_track",
             "chapter04.creep_laws",
