@@ -45,7 +45,7 @@ def test_dipped_joint_draws_the_run_it_reports():
     (ax,) = container.live.axes[0]
     force, peaks = ax.lines[0], ax.lines[1]
     # The drawn curve is the model's run, in kN against ms since the joint, and the marks its P1 and P2.
-    assert np.allclose(force.get_ydata(), 1e-3 * run.contact_force)
+    assert np.allclose(force.get_ydata(), 1e-3 * run.contact_force[:, 0])
     assert np.allclose(sorted(peaks.get_ydata()), sorted(1e-3 * np.array(run.peaks(chapter03._JOINT_X))))
     p1, p2 = run.peaks(chapter03._JOINT_X)
     assert f"P1 {1e-3 * p1:.0f} kN" in status_line(container)

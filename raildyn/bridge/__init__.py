@@ -6,7 +6,8 @@
 * :mod:`raildyn.bridge.track` — the track as a structure: a rail on pads, sleepers and ballast.
 * :mod:`raildyn.bridge.sleepers` — the rail on discrete sleepers: a finite-element track and its receptance.
 * :mod:`raildyn.bridge.defects` — what the wheel meets: a dipped joint, a wheel flat, roughness.
-* :mod:`raildyn.bridge.impact` — a wheel rolling on that track: impact forces at joints and flats, roughness.
+* :mod:`raildyn.bridge.wheels` — what rides on the rail: one wheel, or a vertical vehicle on its wheels.
+* :mod:`raildyn.bridge.impact` — wheels rolling on that track: impact forces at joints and flats, roughness.
 * :mod:`raildyn.bridge.loads` — what crosses: axle sequences, moving masses, sprung masses, vehicles, trains.
 * :mod:`raildyn.bridge.trains` — the design trains of EN 1991-2 (HSLM-A) and regular trains.
 * :mod:`raildyn.bridge.coupled` — the crossing, bridge and vehicle coupled through the wheel forces.
@@ -34,7 +35,6 @@ from raildyn.bridge.continuous import ContinuousBeam
 from raildyn.bridge.coupled import BridgeCrossing, crossing
 from raildyn.bridge.defects import DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.impact import (
-    Wheel,
     WheelOnTrack,
     contact_force_spectrum,
     jenkins_p2,
@@ -53,16 +53,17 @@ from raildyn.bridge.loads import (
 from raildyn.bridge.sleepers import DiscreteResonances, DiscreteTrack, TrackMatrices
 from raildyn.bridge.track import LayeredTrack, TrackResonances, beam_receptance
 from raildyn.bridge.trains import HSLM_A, hslm, regular_train
+from raildyn.bridge.wheels import VehicleWheels, Wheel, WheelBlock
 from raildyn.bridge.winkler import WinklerBeam
 
 __all__ = [
+    "HSLM_A",
     "AxleSequence",
     "BridgeCrossing",
     "ContinuousBeam",
     "DippedJoint",
     "DiscreteResonances",
     "DiscreteTrack",
-    "HSLM_A",
     "LayeredTrack",
     "MovingForceResponse",
     "MovingLoad",
@@ -70,7 +71,9 @@ __all__ = [
     "SimplySupportedBeam",
     "TrackMatrices",
     "TrackResonances",
+    "VehicleWheels",
     "Wheel",
+    "WheelBlock",
     "WheelFlat",
     "WheelOnTrack",
     "WinklerBeam",

@@ -1,17 +1,19 @@
-"""The time march of a wheel on a discrete track, compiled with numba.
+"""The time march of wheels on a discrete track, compiled with numba.
 
 Newmark's average-acceleration rule (unconditionally stable, no numerical damping) on the track's
-banded matrices and on the wheel with its sprung mass, both linear, joined by the Hertz spring,
-which is not. The step's effective stiffness is the same at every step, so it is factored once;
-each step then solves once for the track's motion without the contact force and adds the response
-to the contact force, whose columns (one per unknown the wheel can stand on) are solved once before
-the march. What is left is one equation in the contact force F,
+banded matrices and on the vehicle above (the wheels' unsprung masses and whatever rides on them, a
+small linear block), both linear, joined by a Hertz spring under each wheel, which is not. The step's
+effective stiffnesses are the same at every step, so each is factored (the block's inverted) once;
+each step then solves once for the motion without the contact forces and adds the response to each
+contact force, whose columns (one per rail unknown a wheel can stand on) are solved before the march.
+What is left is one equation per wheel in the contact forces,
 
-    F = C_H max(δ* − c F, 0)^{3/2},
+    F_i = C_H max(δ*_i − Σ_k A_ik F_k, 0)^{3/2},
 
-increasing on one side and concave on the other, which a Newton iteration kept inside its bracket
-solves to round-off. :func:`raildyn.bridge.impact.wheel_on_track` checks every input and documents
-the equations; nothing here checks anything.
+each increasing in its own F_i and concave, which a Newton iteration kept inside its bracket solves
+to round-off; the wheels' small coupling (through the rail between them and the vehicle above) is
+met by sweeping over them until no force moves. :func:`raildyn.bridge.impact.wheel_on_track` checks
+every input and documents the equations; nothing here checks anything.
 """
 
 from __future__ import annotations
@@ -73,90 +75,119 @@ def _contact(delta, c, hertz, guess):
 
 
 @numba.njit(cache=True)
-def march(mass, damping, stiffness, factor, columns, column_of, dofs, weights, slopes, irregularity, slope_r,
-          speed, wheel_mass, sprung_mass, primary_k, primary_c, wheel_force, sprung_force, hertz, force0, dt,
-          u, v, a, z, zd, zdd, record_every, pad_rows, sleeper_rows, pad_k, pad_c, ballast_k, ballast_c,
-          out_force, out_wheel, out_rail, out_pad, out_ballast, out_energy, out_work,
-          out_dissipated):  # fmt: skip
-    """Advance the track (u, v, a) and the wheel and sprung mass (z, zd, zdd: 2 each) over the steps.
+def _contacts(star, coupling, hertz, force):
+    """Solve every wheel's contact equation together (sweeps of the one-wheel solve).
 
-    Step n+1 puts the contact at ``dofs[n+1]`` with shape ``weights[n+1]`` (slope weights ``slopes``),
-    meets the irregularity r = ``irregularity[n+1]`` (slope dr/dx ``slope_r``). Records every
-    ``record_every`` steps; the energy recorded is the system's total (kinetic, strain and the
-    constant loads' potential). Returns (steps done, status): status 0 done, 1 a non-finite contact force.
+    Returns 0 when solved, 1 when a force is not finite, 2 when the sweeps do not settle."""
+    n = star.size
+    for _ in range(100):
+        moved = 0.0
+        for i in range(n):
+            delta = star[i]
+            for k in range(n):
+                if k != i:
+                    delta -= coupling[i, k] * force[k]
+            f = _contact(delta, coupling[i, i], hertz[i], force[i])
+            if f < 0.0:
+                return 1
+            moved = max(moved, abs(f - force[i]))
+            force[i] = f
+        if n == 1 or moved <= 1e-10 * (1.0 + np.max(np.abs(force))):
+            return 0
+    return 2
+
+
+@numba.njit(cache=True)
+def march(mass, damping, stiffness, factor, columns, column_of, dofs, weights, slopes, irregularity, slope_r,
+          speed, block_mass, block_damping, block_stiffness, contact_dofs, static_loads, origin, hertz,
+          dt, u, v, a, x, xd, xdd, force, record_every, pad_rows, sleeper_rows, pad_k, pad_c, ballast_k,
+          ballast_c, out_force, out_wheel, out_rail, out_pad, out_ballast, out_energy, out_work,
+          out_dissipated):  # fmt: skip
+    """Advance the track (u, v, a), the vehicle block (x, xd, xdd: up positive, from the static state)
+    and the contact forces over the steps.
+
+    At step n wheel i stands on ``dofs[n, i]`` with shape ``weights[n, i]`` (slope weights ``slopes``)
+    and meets r = ``irregularity[n, i]`` (dr/dx ``slope_r``); its down position is
+    ``origin[i] − x[contact_dofs[i]]``. Records every ``record_every`` steps; the energy recorded is
+    the system's total (kinetic, strain, the static loads' potential). Returns (steps done, status):
+    status 0 done, 1 a non-finite contact force, 2 contact forces that would not settle.
     """
-    n = u.size
+    n, nw = u.size, force.size
     steps = dofs.shape[0] - 1
     a0, a1 = 4.0 / (dt * dt), 2.0 / dt
-    rhs = np.empty(n)
-    tmp = np.empty(n)
-    g = np.empty(n)
-    # The wheel's 2 × 2 effective stiffness: [wheel, sprung].
-    kww = wheel_mass * a0 + primary_k + primary_c * a1
-    kss = sprung_mass * a0 + primary_k + primary_c * a1
-    kws = -(primary_k + primary_c * a1)
-    det = kww * kss - kws * kws
-    force = force0
-    power_prev = 0.0
-    loss_prev = 0.0
-    dissipated = 0.0
-    work = 0.0
+    rhs, tmp, work_n = np.empty(n), np.empty(n), np.empty(n)
+    g = np.empty((nw, n))
+    star, coupling = np.empty(nw), np.empty((nw, nw))
+    block_inverse = np.linalg.inv(block_stiffness + a0 * block_mass + a1 * block_damping)
+    rail = np.empty(nw)
+    power_prev = loss_prev = dissipated = work = 0.0
     rec = 0
     for step in range(steps + 1):
         if step > 0:
-            # The track without the contact force: rhs = M(a0 u + 4/dt v + a) + C(a1 u + v).
+            # The track without the contact forces: M(a0 u + 4/dt v + a) + C(a1 u + v), solved.
             for i in range(n):
                 tmp[i] = a0 * u[i] + 4.0 / dt * v[i] + a[i]
             _matvec(mass, tmp, rhs)
             for i in range(n):
                 tmp[i] = a1 * u[i] + v[i]
-            _matvec(damping, tmp, g)
+            _matvec(damping, tmp, work_n)
             for i in range(n):
-                rhs[i] += g[i]
-            band_solve(factor, rhs)  # rhs is now u*
-            # The response to a unit contact force (down on the rail): g = Σ w_k G[col(dof_k)].
-            for i in range(n):
-                g[i] = 0.0
-            for k in range(4):
-                col = column_of[dofs[step, k]]
-                w = weights[step, k]
+                rhs[i] += work_n[i]
+            band_solve(factor, rhs)  # u*
+            # Each wheel's response of the track to its unit force (down on the rail).
+            for w in range(nw):
                 for i in range(n):
-                    g[i] += w * columns[col, i]
-            rail_star, rail_unit = 0.0, 0.0
-            for k in range(4):
-                rail_star += weights[step, k] * rhs[dofs[step, k]]
-                rail_unit += weights[step, k] * g[dofs[step, k]]
-            # The wheel without the contact force, and its response to F (F pushes the wheel up).
-            bw = wheel_force + wheel_mass * (a0 * z[0] + 4.0 / dt * zd[0] + zdd[0])
-            bw += primary_c * (a1 * (z[0] - z[1]) + (zd[0] - zd[1]))
-            bs = sprung_force + sprung_mass * (a0 * z[1] + 4.0 / dt * zd[1] + zdd[1])
-            bs -= primary_c * (a1 * (z[0] - z[1]) + (zd[0] - zd[1]))
-            zw_star = (kss * bw - kws * bs) / det
-            zs_star = (kww * bs - kws * bw) / det
-            zw_unit, zs_unit = -kss / det, kws / det
-            force = _contact(zw_star - rail_star - irregularity[step], rail_unit - zw_unit, hertz, force)
-            if force < 0.0:
-                return step, 1
+                    g[w, i] = 0.0
+                for k in range(4):
+                    col = column_of[dofs[step, w, k]]
+                    for i in range(n):
+                        g[w, i] += weights[step, w, k] * columns[col, i]
+            # The block without the contact forces (the static loads pull its wheels down).
+            bx = block_mass @ (a0 * x + 4.0 / dt * xd + xdd) + block_damping @ (a1 * x + xd)
+            for w in range(nw):
+                bx[contact_dofs[w]] -= static_loads[w]
+            x_star = block_inverse @ bx
+            for i in range(nw):
+                rail_star = 0.0
+                for k in range(4):
+                    rail_star += weights[step, i, k] * rhs[dofs[step, i, k]]
+                star[i] = origin[i] - x_star[contact_dofs[i]] - rail_star - irregularity[step, i]
+                for w in range(nw):
+                    on_rail = 0.0
+                    for k in range(4):
+                        on_rail += weights[step, i, k] * g[w, dofs[step, i, k]]
+                    # F_w lifts the block at its wheel (up) and presses the rail under it (down).
+                    coupling[i, w] = on_rail + block_inverse[contact_dofs[i], contact_dofs[w]]
+            status = _contacts(star, coupling, hertz, force)
+            if status:
+                return step, status
             for i in range(n):
-                un = rhs[i] + g[i] * force
+                un = rhs[i]
+                for w in range(nw):
+                    un += g[w, i] * force[w]
                 an = a0 * (un - u[i]) - 4.0 / dt * v[i] - a[i]
                 v[i] += 0.5 * dt * (a[i] + an)
                 a[i] = an
                 u[i] = un
-            for j, (star, unit) in enumerate(((zw_star, zw_unit), (zs_star, zs_unit))):
-                zn = star + unit * force
-                an = a0 * (zn - z[j]) - 4.0 / dt * zd[j] - zdd[j]
-                zd[j] += 0.5 * dt * (zdd[j] + an)
-                zdd[j] = an
-                z[j] = zn
-        # Power fed in by the rolling (the rail's slope and the irregularity passing under the wheel),
+            xn = x_star.copy()
+            for w in range(nw):
+                xn += block_inverse[:, contact_dofs[w]] * force[w]
+            an_b = a0 * (xn - x) - 4.0 / dt * xd - xdd
+            xd += 0.5 * dt * (xdd + an_b)
+            xdd[:] = an_b
+            x[:] = xn
+        # Power fed in by the rolling (the rail's slope and the irregularity passing under each wheel),
         # and the dampers' loss, integrated by the trapezoidal rule as Newmark's rule integrates them.
-        rail_slope = 0.0
-        for k in range(4):
-            rail_slope += slopes[step, k] * u[dofs[step, k]]
-        power = -force * speed * (rail_slope + slope_r[step])
+        power = 0.0
+        for i in range(nw):
+            rail_slope = 0.0
+            rail[i] = 0.0
+            for k in range(4):
+                rail_slope += slopes[step, i, k] * u[dofs[step, i, k]]
+                rail[i] += weights[step, i, k] * u[dofs[step, i, k]]
+            power -= force[i] * speed * (rail_slope + slope_r[step, i])
         _matvec(damping, v, tmp)
-        loss = primary_c * (zd[0] - zd[1]) ** 2
+        loss = xd @ (block_damping @ xd)
         for i in range(n):
             loss += v[i] * tmp[i]
         if step > 0:
@@ -164,28 +195,27 @@ def march(mass, damping, stiffness, factor, columns, column_of, dofs, weights, s
             dissipated += 0.5 * dt * (loss + loss_prev)
         power_prev, loss_prev = power, loss
         if step % record_every == 0:
-            rail = 0.0
-            for k in range(4):
-                rail += weights[step, k] * u[dofs[step, k]]
-            out_force[rec] = force
-            out_wheel[rec] = z[0]
-            out_rail[rec] = rail
+            for i in range(nw):
+                out_force[rec, i] = force[i]
+                out_wheel[rec, i] = origin[i] - x[contact_dofs[i]]
+                out_rail[rec, i] = rail[i]
             for j in range(pad_rows.size):
                 r, s = pad_rows[j], sleeper_rows[j]
                 out_pad[rec, j] = pad_k * (u[r] - u[s]) + pad_c * (v[r] - v[s])
                 out_ballast[rec, j] = ballast_k * u[s] + ballast_c * v[s]
-            # The energy: kinetic, strain (track, primary, Hertz) and the potential of the constant loads.
+            # The energy: kinetic, strain (track, block, Hertz) and the potential of the static loads.
             _matvec(mass, v, tmp)
-            energy = 0.5 * wheel_mass * zd[0] ** 2 + 0.5 * sprung_mass * zd[1] ** 2
+            energy = 0.5 * xd @ (block_mass @ xd) + 0.5 * x @ (block_stiffness @ x)
             for i in range(n):
                 energy += 0.5 * v[i] * tmp[i]
             _matvec(stiffness, u, tmp)
             for i in range(n):
                 energy += 0.5 * u[i] * tmp[i]
-            energy += 0.5 * primary_k * (z[0] - z[1]) ** 2 - wheel_force * z[0] - sprung_force * z[1]
-            gap = z[0] - rail - irregularity[step]
-            if gap > 0.0:
-                energy += 0.4 * hertz * gap**2.5
+            for i in range(nw):
+                energy += static_loads[i] * x[contact_dofs[i]]
+                gap = origin[i] - x[contact_dofs[i]] - rail[i] - irregularity[step, i]
+                if gap > 0.0:
+                    energy += 0.4 * hertz[i] * gap**2.5
             out_energy[rec] = energy
             out_work[rec] = work
             out_dissipated[rec] = dissipated

@@ -37,11 +37,10 @@ from raildyn import _checks
 from raildyn.bridge import _band, _impact_kernel, _impact_reference
 from raildyn.bridge.defects import MAX_DIP_ANGLE, DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.sleepers import DiscreteTrack, _shape
-from raildyn.constants import GRAVITY
+from raildyn.bridge.wheels import VehicleWheels, Wheel, WheelBlock
 from raildyn.errors import SolverError
 
 __all__ = [
-    "Wheel",
     "WheelOnTrack",
     "contact_force_spectrum",
     "jenkins_p2",
@@ -50,165 +49,49 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True)
-class Wheel:
-    """One wheel, its share of the vehicle, and its Hertz contact with the rail.
-
-    Attributes
-    ----------
-    unsprung_mass : float
-        m_w, kg: half a wheelset with its axleboxes, in [10, 1e6]. Default 906.5 kg (half the 1813 kg
-        wheelset of the Manchester benchmark car, Iwnicki 1998).
-    static_load : float
-        Q₀, the wheel's static load, N, in [1, 1e6] and > m_s g. Default 54.5 kN (the Manchester car,
-        32 t body, two 2.615 t bogies and four wheelsets, on eight wheels).
-    sprung_mass : float
-        m_s, kg, the share of the vehicle above the primary suspension that moves with this wheel (≥ 0;
-        0: the static load alone, no sprung mass). Default 0.
-    primary_stiffness, primary_damping : float
-        k₁ (N/m) and c₁ (N·s/m) of one wheel's primary suspension (≥ 0; both 0 without a sprung mass).
-    wheel_radius : float
-        m, in [0.1, 1.5]. Default 0.46 m.
-    rail_head_radius : float
-        The rail head's transverse radius, m (≥ 0.05). Default 0.3 m (UIC 60's crown).
-    """
-
-    unsprung_mass: float = 1813.0 / 2
-    static_load: float = (32000.0 + 2 * 2615.0 + 4 * 1813.0) * GRAVITY / 8
-    sprung_mass: float = 0.0
-    primary_stiffness: float = 0.0
-    primary_damping: float = 0.0
-    wheel_radius: float = 0.46
-    rail_head_radius: float = 0.3
-
-    def __post_init__(self):
-        _checks.plausible("unsprung_mass", self.unsprung_mass, "mass")
-        _checks.plausible("static_load", self.static_load, "wheel_load")
-        for name in ("sprung_mass", "primary_stiffness", "primary_damping"):
-            _checks.nonnegative(name, getattr(self, name))
-        _checks.plausible("wheel_radius", self.wheel_radius, "wheel_radius")
-        _checks.scalar("rail_head_radius", self.rail_head_radius, low=0.05)
-        if self.sprung_mass * GRAVITY >= self.static_load:
-            raise ValueError(
-                f"sprung_mass must weigh less than static_load ({self.static_load!r} N), "
-                f"got {self.sprung_mass!r} kg"
-            )
-        if self.sprung_mass > 0.0 and self.primary_stiffness == 0.0:
-            raise ValueError("primary_stiffness must be > 0 to carry a sprung mass, got 0.0")
-
-    @classmethod
-    def from_vehicle(cls, vehicle, wheelset_mass: float = 1813.0) -> Wheel:
-        """One wheel of a vertical vehicle model (:class:`raildyn.vehicles.VerticalCar` or
-        :class:`raildyn.vehicles.VerticalLocomotive`): its share of the body and bogies on its primary
-        suspension.
-
-        Above a few tens of hertz the body and bogie frames hardly move, so the impact forces see the
-        vehicle as this share: the frames' mass spread equally over the wheels, on the primary
-        suspension of one axlebox (the vehicle's per-wheelset values halved).
-
-        Parameters
-        ----------
-        vehicle : VerticalCar or VerticalLocomotive
-            Any vehicle with ``body_mass``, ``bogie_mass`` (or ``truck_mass``), ``primary_stiffness``,
-            ``primary_damping`` (per wheelset) and ``axle_positions``.
-        wheelset_mass : float
-            kg, in [10, 1e6]. Default 1813 kg (Iwnicki 1998).
-
-        Returns
-        -------
-        Wheel
-        """
-        _checks.plausible("wheelset_mass", wheelset_mass, "mass")
-        _checks.not_a_class("vehicle", vehicle, "a vertical vehicle")
-        try:
-            frames = getattr(vehicle, "bogie_mass", None) or vehicle.truck_mass
-            axles = np.asarray(vehicle.axle_positions, dtype=float).size
-            k1, c1, body = (float(vehicle.primary_stiffness), float(vehicle.primary_damping),
-                            float(vehicle.body_mass))  # fmt: skip
-        except (AttributeError, TypeError, ValueError):
-            raise TypeError(
-                f"vehicle must be a vertical vehicle with a primary suspension (VerticalCar, "
-                f"VerticalLocomotive), "
-                f"got {type(vehicle).__name__}"
-            ) from None
-        sprung = (body + 2 * frames) / (2 * axles)
-        return cls(wheelset_mass / 2, (sprung + wheelset_mass / 2) * GRAVITY, sprung, k1 / 2, c1 / 2)
-
-    @property
-    def hertz_constant(self) -> float:
-        """C_H of F = C_H δ^{3/2}, N/m^{3/2}: :func:`raildyn.contact.hertz_contact` at the static load."""
-        from raildyn.contact import hertz_contact
-
-        c = hertz_contact(self.static_load, self.wheel_radius, math.inf, self.rail_head_radius)
-        return self.static_load / c.approach**1.5
-
-    @property
-    def contact_stiffness(self) -> float:
-        """k_H = dF/dδ at the static load, (3/2) C_H^{2/3} Q₀^{1/3}, N/m."""
-        return 1.5 * self.hertz_constant ** (2 / 3) * self.static_load ** (1 / 3)
-
-    def receptance(self, frequencies) -> np.ndarray:
-        """The wheel's own receptance at the contact, m/N (complex): its motion per unit force on it.
-
-        Parameters
-        ----------
-        frequencies : array_like
-            f, Hz, each > 0.
-
-        Returns
-        -------
-        ndarray of complex
-        """
-        f = _checks.array("frequencies", frequencies, ndim=1, low=0.0, low_open=True, allow_empty=False)
-        if f.max() > 1e4:
-            raise ValueError(f"frequencies must be at most 10000 Hz, got {f.max()!r}")
-        w = 2 * np.pi * f
-        dynamic = -self.unsprung_mass * w**2 + 0j
-        if self.sprung_mass > 0.0:
-            spring = self.primary_stiffness + 1j * w * self.primary_damping
-            dynamic += spring * (-self.sprung_mass * w**2) / (spring - self.sprung_mass * w**2)
-        return 1.0 / dynamic
-
-
 @dataclass(frozen=True, eq=False)
 class WheelOnTrack:
-    """A wheel's run over a discrete track (:func:`wheel_on_track`); every array one value per record.
+    """A run of wheels over a discrete track (:func:`wheel_on_track`): one row per record, one column
+    per wheel (the leading wheel first).
 
     Attributes
     ----------
-    t : ndarray
+    t : ndarray, (k,)
         s, from 0.
-    x : ndarray
-        The wheel's position on the track, m (or, for a standing wheel, where the running surface under
-        it came from).
-    contact_force : ndarray
-        F, N (≥ 0; 0 where the wheel has lifted off).
-    wheel : ndarray
+    x : ndarray, (k,)
+        The leading wheel's position on the track, m (for standing wheels, where the running surface
+        under the leading one came from).
+    offsets : ndarray, (w,)
+        Each wheel's distance behind the leading one, m.
+    contact_force : ndarray, (k, w)
+        F, N (≥ 0; 0 where a wheel has lifted off).
+    wheel : ndarray, (k, w)
         z_w, m (down positive, from where the wheel stands unloaded on an undeflected rail).
-    rail : ndarray
-        w, the rail's deflection under the wheel, m (down positive).
-    irregularity : ndarray
-        r met by the wheel, m (down positive).
-    sleeper_positions : ndarray
+    rail : ndarray, (k, w)
+        w, the rail's deflection under each wheel, m (down positive).
+    irregularity : ndarray, (k, w)
+        r_s met by each wheel, m (down positive).
+    sleeper_positions : ndarray, (j,)
         x of each sleeper, m.
-    pad_forces, ballast_forces : ndarray, (records, sleepers)
+    pad_forces, ballast_forces : ndarray, (k, j)
         The rail-seat force on each sleeper through its pad, and the ballast's force under it, N
         (down positive: the load they carry).
-    energy : ndarray
-        The whole system's energy, J (kinetic and strain energy, less the work the constant loads could
+    energy : ndarray, (k,)
+        The whole system's energy, J (kinetic and strain energy, less the work the static loads could
         do), from which :attr:`balance` follows.
-    work : ndarray
-        Work fed in by the rolling since t = 0, J: −∫ F V (∂w/∂x + dr/dx) dt.
-    dissipated : ndarray
+    work : ndarray, (k,)
+        Work fed in by the rolling since t = 0, J: −Σ ∫ F V (∂w/∂x + dr_s/dx) dt.
+    dissipated : ndarray, (k,)
         Work done on the dampers since t = 0, J.
-    static_load : float
-        Q₀, N.
+    static_loads : ndarray, (w,)
+        Q₀ of each wheel, N.
     speed : float
         V, m/s.
     """
 
     t: np.ndarray
     x: np.ndarray
+    offsets: np.ndarray
     contact_force: np.ndarray
     wheel: np.ndarray
     rail: np.ndarray
@@ -219,39 +102,44 @@ class WheelOnTrack:
     energy: np.ndarray
     work: np.ndarray
     dissipated: np.ndarray
-    static_load: float
+    static_loads: np.ndarray
     speed: float
 
     def __post_init__(self):
-        t = _checks.array("t", self.t, ndim=1, allow_empty=False)
-        k = t.size
+        k = _checks.array("t", self.t, ndim=1, allow_empty=False).size
+        w = _checks.array("offsets", self.offsets, ndim=1, allow_empty=False, low=0.0).size
         j = _checks.array("sleeper_positions", self.sleeper_positions, ndim=1, allow_empty=False).size
-        for name in ("x", "wheel", "rail", "irregularity", "energy", "work", "dissipated"):
+        for name in ("x", "energy", "work", "dissipated"):
             _checks.array(name, getattr(self, name), shape=(k,))
-        _checks.array("contact_force", self.contact_force, shape=(k,), low=0.0)
+        for name in ("wheel", "rail", "irregularity"):
+            _checks.array(name, getattr(self, name), shape=(k, w))
+        _checks.array("contact_force", self.contact_force, shape=(k, w), low=0.0)
         for name in ("pad_forces", "ballast_forces"):
             _checks.array(name, getattr(self, name), shape=(k, j))
-        _checks.plausible("static_load", self.static_load, "wheel_load")
+        _checks.plausible_array("static_loads", self.static_loads, "wheel_load", shape=(w,))
         _checks.speed("speed", self.speed, high=150.0)
 
     @property
     def lost_contact(self) -> np.ndarray:
-        """True where the wheel is off the rail (F = 0)."""
+        """True where a wheel is off the rail (F = 0), (k, w)."""
         return self.contact_force <= 0.0
 
     @property
-    def contact_loss_time(self) -> float:
-        """How long the wheel was off the rail in all, s."""
+    def contact_loss_time(self) -> np.ndarray:
+        """How long each wheel was off the rail in all, s, (w,)."""
         dt = self.t[1] - self.t[0] if self.t.size > 1 else 0.0
-        return float(np.count_nonzero(self.lost_contact) * dt)
+        return np.count_nonzero(self.lost_contact, axis=0) * dt
 
     @property
     def balance(self) -> np.ndarray:
         """E(t) − E(0) + dissipated − work, J: zero for an exact march (round-off and the rule's error)."""
         return self.energy - self.energy[0] + self.dissipated - self.work
 
-    def peaks(self, position: float) -> tuple[float, float]:
-        """(P1, P2), N: the impact forces after the wheel passes ``position`` (a joint's x, or a flat's).
+    def _wheel(self, wheel) -> int:
+        return _checks.integer("wheel", wheel, low=0, high=self.offsets.size - 1)
+
+    def peaks(self, position: float, wheel: int = 0) -> tuple[float, float]:
+        """(P1, P2), N: the impact forces of one wheel after it passes ``position`` (a joint's x, a flat's).
 
         The force is first smoothed over 0.5 ms, which keeps the two stages and removes the ripples of
         the rail's higher modes. P1 is the largest force up to the deepest trough of the smoothed force
@@ -262,32 +150,34 @@ class WheelOnTrack:
         Parameters
         ----------
         position : float
-            m, within the run's x.
+            m, where that wheel passes during the run.
+        wheel : int
+            Which wheel, from 0 (the leading one). Default 0.
 
         Returns
         -------
         (float, float)
         """
-        x = _checks.scalar("position", position, low=float(self.x.min()), high=float(self.x.max()))
-        start = int(np.searchsorted(self.x, x)) if self.x[-1] > self.x[0] else 0
+        i = self._wheel(wheel)
+        where = self.x - self.offsets[i]
+        x = _checks.scalar("position", position, low=float(where.min()), high=float(where.max()))
+        start = int(np.searchsorted(where, x)) if where[-1] > where[0] else 0
         dt = self.t[1] - self.t[0]
-        end = start + int(round(0.020 / dt)) + 1
-        f = self.contact_force[start:end]
+        f = self.contact_force[start : start + int(round(0.020 / dt)) + 1, i]
         width = max(1, int(round(0.5e-3 / dt)))
         smooth = np.convolve(f, np.ones(width) / width, mode="same")
+        load = self.static_loads[i]
         rises = np.flatnonzero(
-            (smooth[1:-1] >= smooth[:-2]) & (smooth[1:-1] > smooth[2:]) & (smooth[1:-1] > self.static_load)
-        ) + 1  # fmt: skip
+            (smooth[1:-1] >= smooth[:-2]) & (smooth[1:-1] > smooth[2:]) & (smooth[1:-1] > load)
+        )
         if rises.size == 0:
-            raise ValueError(
-                f"the contact force rises to no peak above the static load in the 20 ms after x = {x!r} m"
-            )
-        first = int(rises[0])
+            raise ValueError(f"the contact force rises to no peak above Q0 in the 20 ms after x = {x!r} m")
+        first = int(rises[0]) + 1
         split = first + int(np.argmin(smooth[first : first + int(round(5e-3 / dt)) + 1]))
         return float(f[: split + 1].max()), float(f[split:].max())
 
-    def plot(self, ax=None, *, position=None, artists=None) -> dict:
-        """Draw F (kN) against time, with P1 and P2 marked after ``position``; or move a drawing.
+    def plot(self, ax=None, *, position=None, wheel=0, artists=None) -> dict:
+        """Draw one wheel's F (kN) against time, with P1 and P2 marked after ``position``; or move a drawing.
 
         Parameters
         ----------
@@ -296,6 +186,8 @@ class WheelOnTrack:
         position : float, optional
             Where the impact begins (a joint), m: time is then counted from the moment the wheel
             passes it, and P1 and P2 are marked.
+        wheel : int
+            Which wheel, from 0 (the leading one). Default 0.
         artists : dict, optional
             What a previous call returned: its lines take this run's values (any number of records).
 
@@ -304,16 +196,18 @@ class WheelOnTrack:
         dict
             ``{"force": line, "peaks": line}``.
         """
-        t0 = 0.0
-        px, py = [], []
+        i = self._wheel(wheel)
+        force = self.contact_force[:, i]
+        t0, px, py = 0.0, [], []
         if position is not None:
-            p1, p2 = self.peaks(position)
-            t0 = float(self.t[int(np.searchsorted(self.x, position))]) if self.x[-1] > self.x[0] else 0.0
+            p1, p2 = self.peaks(position, i)
+            where = self.x - self.offsets[i]
+            t0 = float(self.t[int(np.searchsorted(where, position))]) if where[-1] > where[0] else 0.0
             for p in (p1, p2):
-                i = int(np.flatnonzero((self.contact_force == p) & (self.t >= t0))[0])
-                px.append(1e3 * (self.t[i] - t0))
+                k = int(np.flatnonzero((force == p) & (self.t >= t0))[0])
+                px.append(1e3 * (self.t[k] - t0))
                 py.append(1e-3 * p)
-        t, f = 1e3 * (self.t - t0), 1e-3 * self.contact_force
+        t, f = 1e3 * (self.t - t0), 1e-3 * force
         if artists is not None:
             _checks.instance("artists", artists, dict, "dict returned by an earlier plot")
             artists["force"].set_data(t, f)
@@ -322,12 +216,12 @@ class WheelOnTrack:
         from raildyn import plots
 
         ax = plots.axes_or_new(ax)
-        (force,) = ax.plot(t, f, color="C0", label="wheel–rail force F")
+        (line,) = ax.plot(t, f, color="C0", label="wheel–rail force F")
         (peaks,) = ax.plot(px, py, "v", color="C3", label="P1, P2")
-        ax.axhline(1e-3 * self.static_load, color="0.6", lw=0.8, ls="--")
+        ax.axhline(1e-3 * self.static_loads[i], color="0.6", lw=0.8, ls="--")
         ax.set_xlabel("time after the joint (ms)" if position is not None else "time t (ms)")
         ax.set_ylabel("F (kN)")
-        return {"force": force, "peaks": peaks}
+        return {"force": line, "peaks": peaks}
 
 
 def _profile(irregularity, x):
@@ -341,8 +235,16 @@ def _profile(irregularity, x):
     return irregularity.profile(x)
 
 
+def _surface(irregularity, seen):
+    """(r_s, dr_s/dx) each wheel meets, (k, w): a flat turns with the leading wheel only."""
+    r, slope = _profile(irregularity, seen)
+    if isinstance(irregularity, WheelFlat):
+        r[:, 1:], slope[:, 1:] = 0.0, 0.0
+    return r, slope
+
+
 def wheel_on_track(
-    wheel: Wheel,
+    wheels,
     speed: float,
     irregularity=None,
     *,
@@ -354,29 +256,33 @@ def wheel_on_track(
     record_every: int = 1,
     method: str = "newmark",
 ) -> WheelOnTrack:
-    """Run a wheel over a discrete track at a steady speed (the module docstring's equations).
+    """Run wheels over a discrete track at a steady speed (the module docstring's equations).
 
-    The run starts from the static equilibrium of wheel and track under Q₀ at ``start``.
+    The run starts from the static equilibrium of vehicle, wheels and track under the static loads.
 
     Parameters
     ----------
-    wheel : Wheel
+    wheels : Wheel, VehicleWheels or WheelBlock
+        One wheel (with any share of the vehicle on a primary spring), a whole vertical vehicle on its
+        wheels, or any block of wheels and what they carry.
     speed : float
         V, m/s, in (0, 150].
     irregularity : DippedJoint, WheelFlat, Roughness or None
-        What the wheel meets; None: a smooth rail (the sleepers' passing alone).
+        What the wheels meet; None: a smooth rail (the sleepers' passing alone). A joint or roughness
+        lies on the rail, under every wheel in turn; a flat is on the leading wheel.
     track : DiscreteTrack, optional
         Default ``DiscreteTrack()``.
     start : float, optional
-        x where the wheel starts, m; default the first sleeper bay past the quiet layer.
+        x where the leading wheel starts, m; default where the last wheel stands in the first sleeper
+        bay past the quiet layer.
     distance : float, optional
-        How far the wheel runs, m (> 0); default to the bay before the far quiet layer. The whole run
-        stays outside the quiet layers.
+        How far the wheels run, m (> 0); default until the leading wheel reaches the bay before the far
+        quiet layer. The whole run stays outside the quiet layers.
     time_step : float
         Δt, s, in [1e-7, 1e-4]. Default 10 µs (some 50 steps in the bounce on the Hertz spring).
     standing : bool
-        If True the wheel stands over ``start`` and the irregularity passes under it at V (the moving-
-        irregularity model, for comparison with :func:`contact_force_spectrum`).
+        If True the wheels stand where they start and the irregularity passes under them at V (the
+        moving-irregularity model, for comparison with :func:`contact_force_spectrum`).
     record_every : int
         Keep every this-many steps, in [1, 1000].
     method : {"newmark", "scipy"}
@@ -390,10 +296,11 @@ def wheel_on_track(
     Raises
     ------
     SolverError
-        If the contact force goes non-finite.
+        If a contact force goes non-finite, or the contact forces will not settle in a step.
     """
-    if not isinstance(wheel, Wheel):
-        raise TypeError(f"wheel must be a Wheel, got {type(wheel).__name__}")
+    if not isinstance(wheels, Wheel | VehicleWheels | WheelBlock):
+        raise TypeError(f"wheels must be a Wheel, VehicleWheels or a WheelBlock, got {type(wheels).__name__}")
+    block = wheels if isinstance(wheels, WheelBlock) else wheels.block()
     track = DiscreteTrack() if track is None else track
     if not isinstance(track, DiscreteTrack):
         raise TypeError(f"track must be a DiscreteTrack, got {type(track).__name__}")
@@ -405,75 +312,124 @@ def wheel_on_track(
         raise ValueError(f"method must be 'newmark' or 'scipy', got {method!r}")
     d = track.sleeper_spacing
     lo, hi = (track.quiet_bays + 1) * d, track.length - (track.quiet_bays + 1) * d
-    if hi <= lo:
-        raise ValueError(f"track must leave room to run between its quiet layers, got {track.bays} bays")
-    x0 = lo if start is None else _checks.scalar("start", start, low=lo, high=hi)
+    lo_lead = lo + block.offsets.max()
+    if hi <= lo_lead:
+        raise ValueError(
+            f"track must leave room for the wheels ({block.offsets.max():g} m apart) between its quiet "
+            f"layers, got {track.bays} bays"
+        )
+    x0 = lo_lead if start is None else _checks.scalar("start", start, low=lo_lead, high=hi)
     span = hi - x0 if distance is None else _checks.scalar("distance", distance, low=0.0, low_open=True)
     if not standing and x0 + span > hi + 1e-9:
-        raise ValueError(f"distance must keep the wheel before x = {hi!r} m (the quiet layer), got {span!r}")
+        raise ValueError(f"distance must keep the wheels before x = {hi!r} m (the quiet layer), got {span!r}")
     steps = int(math.ceil(span / V / dt))
-    if steps > 5_000_000:
-        raise ValueError(f"the run must take at most 5e6 steps, got {steps} (distance/speed/time_step)")
+    if steps * block.offsets.size > 5_000_000:
+        raise ValueError(
+            f"the run must take at most 5e6 wheel-steps, got {steps} steps (distance/speed/time_step)"
+        )
     t = np.arange(steps + 1) * dt
-    seen = x0 + V * t
-    where = np.full_like(seen, x0) if standing else seen
-    r, slope_r = _profile(irregularity, seen)
+    lead = x0 + V * t
+    seen = lead[:, None] - block.offsets[None, :]
+    where = np.broadcast_to(x0 - block.offsets, seen.shape) if standing else seen
+    r, slope_r = _surface(irregularity, seen)
     mats = track.matrices
     h = d / track.elements_per_bay
     element = np.minimum((where / h).astype(int), track.elements_per_bay * track.bays - 1)
     phi = 12.0 * track.rail_flexural_rigidity / (track.rail_shear_stiffness * h * h)
-    nw, dnw = (a.T.copy() for a in _shape(where / h - element, h, phi)[:2])
+    nw, dnw = (np.moveaxis(a, 0, -1).copy() for a in _shape(where / h - element, h, phi)[:2])
     if standing:
         dnw[:] = 0.0
-    nodes = mats.deflection[element]
-    dofs = np.stack(
-        [nodes, nodes + 1, mats.deflection[element + 1], mats.deflection[element + 1] + 1], axis=1
-    )
-    hertz = wheel.hertz_constant
-    sprung = wheel.sprung_mass if wheel.sprung_mass > 0.0 else 1.0  # a free, unloaded stand-in
-    k1 = wheel.primary_stiffness if wheel.sprung_mass > 0.0 else 0.0
-    c1 = wheel.primary_damping if wheel.sprung_mass > 0.0 else 0.0
-    sprung_force = wheel.sprung_mass * GRAVITY
-    wheel_force = wheel.static_load - sprung_force
-    # The static state: the rail under Q₀, the Hertz spring pressed by (Q₀/C_H)^{2/3}, the primary by m_s g.
+    a, b = mats.deflection[element], mats.deflection[element + 1]
+    dofs = np.stack([a, a + 1, b, b + 1], axis=-1)
+    # The static state: the rail under the static loads, each Hertz spring pressed by (Q₀/C_H)^{2/3}.
     u = np.zeros(mats.size)
+    for i, load in enumerate(block.static_loads):
+        np.add.at(u, dofs[0, i], nw[0, i] * load)
     stiff = mats.stiffness.copy()
-    u[dofs[0]] = nw[0] * wheel.static_load
     _band.band_factor(stiff)
     _band.band_solve(stiff, u)
-    rail0 = float(nw[0] @ u[dofs[0]])
-    z = np.array([rail0 + (wheel.static_load / hertz) ** (2 / 3) + r[0], 0.0])
-    z[1] = z[0] + (sprung_force / k1 if k1 > 0.0 else 0.0)
+    rail0 = np.einsum("wk,wk->w", nw[0], u[dofs[0]])
+    origin = rail0 + (block.static_loads / block.hertz_constants) ** (2 / 3) + r[0]
     records = steps // every + 1
-    out = {name: np.zeros(records) for name in ("force", "wheel", "rail", "energy", "work", "dissipated")}
+    w = block.offsets.size
+    out = {name: np.zeros(records) for name in ("energy", "work", "dissipated")}
+    out |= {name: np.zeros((records, w)) for name in ("force", "wheel", "rail")}
     out["pad"], out["ballast"] = np.zeros((records, track.bays)), np.zeros((records, track.bays))
-    args = (mats.mass, mats.damping, mats.stiffness)
     if method == "scipy":
-        surface = lambda s: _profile(irregularity, s)  # noqa: E731
-        _impact_reference.march(track, surface, x0, V, standing, t[::every], wheel, hertz, u, z, out)
+        surface = lambda s: _surface(irregularity, s)  # noqa: E731
+        _impact_reference.march(track, block, surface, x0, V, standing, t[::every], u, origin, out)
     else:
         effective = mats.stiffness + 4.0 / dt**2 * mats.mass + 2.0 / dt * mats.damping
         rail_dofs = np.unique(dofs)
         column_of = np.full(mats.size, -1)
         column_of[rail_dofs] = np.arange(rail_dofs.size)
         columns = _impact_kernel.influence(effective, rail_dofs)
+        nb = block.mass.shape[0]
         done, status = _impact_kernel.march(
-            *args, effective, columns, column_of, dofs, nw, dnw, r, slope_r, V, wheel.unsprung_mass, sprung,
-            k1, c1, wheel_force, sprung_force, hertz, wheel.static_load, dt, u, np.zeros_like(u),
-            np.zeros_like(u), z, np.zeros(2), np.zeros(2), every, mats.deflection[mats.sleeper_nodes],
-            mats.sleepers, track.pad_stiffness, track.pad_damping, track.ballast_stiffness,
-            track.ballast_damping, out["force"], out["wheel"], out["rail"], out["pad"], out["ballast"],
-            out["energy"], out["work"], out["dissipated"],
-        )  # fmt: skip
+            mats.mass,
+            mats.damping,
+            mats.stiffness,
+            effective,
+            columns,
+            column_of,
+            dofs,
+            nw,
+            dnw,
+            r,
+            slope_r,
+            V,
+            block.mass,
+            block.damping,
+            block.stiffness,
+            block.contact_dofs,
+            block.static_loads,
+            origin,
+            block.hertz_constants,
+            dt,
+            u,
+            np.zeros_like(u),
+            np.zeros_like(u),
+            np.zeros(nb),
+            np.zeros(nb),
+            np.zeros(nb),
+            block.static_loads.copy(),
+            every,
+            mats.deflection[mats.sleeper_nodes],
+            mats.sleepers,
+            track.pad_stiffness,
+            track.pad_damping,
+            track.ballast_stiffness,
+            track.ballast_damping,
+            out["force"],
+            out["wheel"],
+            out["rail"],
+            out["pad"],
+            out["ballast"],
+            out["energy"],
+            out["work"],
+            out["dissipated"],
+        )
         if status:
-            raise SolverError(
-                "the contact force became non-finite: the run diverged", step=int(done), time=float(done * dt)
-            )
+            reason = "became non-finite: the run diverged" if status == 1 else "would not settle in a step"
+            raise SolverError(f"the contact forces {reason}", step=int(done), time=float(done * dt))
     keep = slice(None, None, every)
     return WheelOnTrack(
-        t[keep], seen[keep], out["force"], out["wheel"], out["rail"], r[keep], track.sleeper_positions,
-        out["pad"], out["ballast"], out["energy"], out["work"], out["dissipated"], wheel.static_load, V,
-    )  # fmt: skip
+        t[keep],
+        lead[keep],
+        block.offsets,
+        out["force"],
+        out["wheel"],
+        out["rail"],
+        r[keep],
+        track.sleeper_positions,
+        out["pad"],
+        out["ballast"],
+        out["energy"],
+        out["work"],
+        out["dissipated"],
+        block.static_loads,
+        V,
+    )
 
 
 def contact_force_spectrum(wheel: Wheel, speed: float, psd, frequencies, *, track=None, position=None):

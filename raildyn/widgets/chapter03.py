@@ -277,7 +277,7 @@ def _dipped_joint_setup(live, status):
         p1, p2 = run.peaks(_JOINT_X)
         k, m, c = _lumped()
         estimate = bridge.jenkins_p2(wheel, v["speed_kmh"] / 3.6, 1e-3 * v["dip_mrad"], m, k, c)
-        lost = run.contact_loss_time
+        lost = run.contact_loss_time[0]
         status.value = (
             f"Q₀ {1e-3 * wheel.static_load:.1f} kN · P1 {1e-3 * p1:.0f} kN · P2 {1e-3 * p2:.0f} kN "
             f"(Jenkins et al.: {1e-3 * estimate:.0f} kN)"

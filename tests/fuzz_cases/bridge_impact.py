@@ -6,8 +6,10 @@ import numpy as np
 from fuzzing import call, fuzz, on
 
 from raildyn.bridge.defects import DippedJoint, Roughness, WheelFlat
-from raildyn.bridge.impact import Wheel, wheel_on_track
+from raildyn.bridge.impact import wheel_on_track
 from raildyn.bridge.sleepers import DiscreteTrack
+from raildyn.bridge.wheels import VehicleWheels, Wheel
+from raildyn.vehicles import VerticalCar
 
 SMALL = DiscreteTrack(bays=8, quiet_bays=2)  # runs between x = 1.65 and 2.75 m
 JOINT = DippedJoint(2.2, (0.004, 0.004), 0.3)
@@ -15,6 +17,12 @@ JOINT = DippedJoint(2.2, (0.004, 0.004), 0.3)
 
 def _run():
     return wheel_on_track(Wheel(), 10.0, JOINT, track=SMALL, start=1.9, distance=0.5, record_every=4)
+
+
+def _block_fields():
+    block = Wheel(sprung_mass=4000.0, primary_stiffness=1.2e6).block()
+    names = ("mass", "damping", "stiffness", "contact_dofs", "static_loads", "offsets", "hertz_constants")
+    return [getattr(block, name) for name in names]
 
 
 def _psd(w):
@@ -53,7 +61,7 @@ ENTRIES = [
         accepts={"x": "zero negative shape big mm tiny list huge"},
     ),
     fuzz(
-        "raildyn.bridge.impact.Wheel",
+        "raildyn.bridge.wheels.Wheel",
         lambda: call(900.0, 60e3, 4000.0, 1.2e6, 4e3, 0.46, 0.3),
         accepts={
             "unsprung_mass": "big mm",
@@ -64,12 +72,26 @@ ENTRIES = [
             "rail_head_radius": "big mm",
         },
     ),
+    fuzz("raildyn.bridge.wheels.Wheel.block", lambda: on(Wheel())),
     fuzz(
-        "raildyn.bridge.impact.Wheel.from_vehicle",
-        lambda: on(Wheel(), __import__("raildyn").vehicles.VerticalCar()),
+        "raildyn.bridge.wheels.VehicleWheels",
+        lambda: call(VerticalCar(), 1813.0, 0.46, 0.3),
+        accepts={"wheelset_mass": "big mm", "rail_head_radius": "big mm"},
+    ),
+    fuzz("raildyn.bridge.wheels.VehicleWheels.block", lambda: on(VehicleWheels(VerticalCar()))),
+    fuzz(
+        "raildyn.bridge.wheels.WheelBlock",
+        lambda: call(*_block_fields()),
+        accepts={
+            "*": "big tiny mm",
+            "contact_dofs": "zero",  # one wheel: its coordinate 0 is as good as 1
+            "offsets": "zero",  # one wheel: its offset is 0
+            "damping": "zero negative big tiny mm huge",
+            "stiffness": "zero negative big tiny mm huge",
+        },
     ),
     fuzz(
-        "raildyn.bridge.impact.Wheel.receptance",
+        "raildyn.bridge.wheels.Wheel.receptance",
         lambda: on(Wheel(), [10.0, 100.0]),
         accepts={"frequencies": "big mm tiny list"},
     ),
@@ -89,11 +111,11 @@ ENTRIES = [
         lambda: call(*[getattr(_run(), f) for f in _run().__dataclass_fields__]),
         accepts={"*": "zero negative big mm tiny"},
     ),
-    fuzz("raildyn.bridge.impact.WheelOnTrack.peaks", lambda: on(_run(), 2.2)),
+    fuzz("raildyn.bridge.impact.WheelOnTrack.peaks", lambda: on(_run(), 2.2), accepts={"wheel": "zero"}),
     fuzz(
         "raildyn.bridge.impact.WheelOnTrack.plot",
         lambda: on(_run(), position=2.2),
-        accepts={"position": "none"},
+        accepts={"position": "none", "wheel": "zero"},
     ),
     fuzz(
         "raildyn.bridge.impact.contact_force_spectrum",
