@@ -33,7 +33,7 @@ import numpy as np
 
 from raildyn._compiled import formula
 
-__all__ = ["element_forces", "march"]
+__all__ = ["compiled_forces", "element_forces", "march"]
 
 # Columns of the integer element table.
 KIND, DIRECTION, BODY_A, BODY_B, BODY_B2, RAIL = range(6)
@@ -105,6 +105,12 @@ def element_forces(q, v, rail_z, rail_v, dofs, ei, ef, eps, forces, deflections,
 
 
 @numba.njit(cache=True, error_model="numpy")
+def compiled_forces(q, v, rail_z, rail_v, dofs, ei, ef, eps, forces, deflections, gen):
+    """:func:`element_forces` compiled, for the Python callers that evaluate it many times (the statics)."""
+    element_forces(q, v, rail_z, rail_v, dofs, ei, ef, eps, forces, deflections, gen)
+
+
+@numba.njit(cache=True, error_model="numpy")
 def _rails(t, speed, behind, rail_length, spacing, table, rail_z, rail_v):
     """The left and right rail heights (m) and rates (m/s) under each wheelset at time t."""
     n = table.shape[1] - 1
@@ -115,12 +121,33 @@ def _rails(t, speed, behind, rail_length, spacing, table, rail_z, rail_v):
         frac = u - i
         for side in range(2):
             rail_z[2 * j + side] = table[side, i] + frac * (table[side, i + 1] - table[side, i])
-            rail_v[2 * j + side] = speed * (table[2 + side, i] + frac * (table[2 + side, i + 1] - table[2 + side, i]))
+            rail_v[2 * j + side] = speed * (
+                table[2 + side, i] + frac * (table[2 + side, i + 1] - table[2 + side, i])
+            )
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _acceleration(t, q, v, mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table, rail_z, rail_v,
-                  forces, deflections, gen, out):  # fmt: skip
+def _acceleration(
+    t,
+    q,
+    v,
+    mass,
+    dofs,
+    ei,
+    ef,
+    eps,
+    speed,
+    behind,
+    rail_length,
+    spacing,
+    table,
+    rail_z,
+    rail_v,
+    forces,
+    deflections,
+    gen,
+    out,
+):
     _rails(t, speed, behind, rail_length, spacing, table, rail_z, rail_v)
     element_forces(q, v, rail_z, rail_v, dofs, ei, ef, eps, forces, deflections, gen)
     for i in range(mass.size):
@@ -128,12 +155,36 @@ def _acceleration(t, q, v, mass, dofs, ei, ef, eps, speed, behind, rail_length, 
 
 
 @numba.njit(cache=True, error_model="numpy")
-def march(mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table, dt, steps, stride, tail,
-          q0, v0, watched, roll_dof, hist_forces, hist_roll, extremes, counts):  # fmt: skip
+def march(
+    mass,
+    dofs,
+    ei,
+    ef,
+    eps,
+    speed,
+    behind,
+    rail_length,
+    spacing,
+    table,
+    dt,
+    steps,
+    stride,
+    tail,
+    q0,
+    v0,
+    watched,
+    roll_dof,
+    hist_forces,
+    hist_roll,
+    hist_state,
+    extremes,
+    counts,
+):
     """RK4 over ``steps`` steps of ``dt`` s at ``speed`` m/s from (q0, v0).
 
-    Every ``stride`` steps the forces of the ``watched`` elements go to ``hist_forces`` and the roll to
-    ``hist_roll``. From step ``tail`` on, ``extremes`` (2, n_watched) keeps each watched force's least and
+    Every ``stride`` steps the forces of the ``watched`` elements go to ``hist_forces``, the roll to
+    ``hist_roll`` and, if ``hist_state`` has a row for each sample, the coordinates and their rates to it
+    (n_out, 2n). From step ``tail`` on, ``extremes`` (2, n_watched) keeps each watched force's least and
     greatest value and the roll's least and greatest (its last column pair), and ``counts`` the steps
     in which each watched force is zero (``counts[:n_watched]``), in which one of the wheels (watched 0-7)
     is, one of the plate edges (8-11) is, and one of the side bearers (12-15) is loaded (the last three).
@@ -156,8 +207,27 @@ def march(mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table, d
     out = 0
     for step in range(steps + 1):
         t = step * dt
-        _acceleration(t, q, v, mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table, rail_z,
-                      rail_v, forces, deflections, gen, k1v)  # fmt: skip
+        _acceleration(
+            t,
+            q,
+            v,
+            mass,
+            dofs,
+            ei,
+            ef,
+            eps,
+            speed,
+            behind,
+            rail_length,
+            spacing,
+            table,
+            rail_z,
+            rail_v,
+            forces,
+            deflections,
+            gen,
+            k1v,
+        )
         finite = True
         for i in range(n):
             if not (np.isfinite(q[i]) and np.isfinite(v[i]) and np.isfinite(k1v[i])):
@@ -168,6 +238,10 @@ def march(mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table, d
             for k in range(nw):
                 hist_forces[out, k] = forces[watched[k]]
             hist_roll[out] = q[roll_dof]
+            if hist_state.shape[0] > out:
+                for i in range(n):
+                    hist_state[out, i] = q[i]
+                    hist_state[out, n + i] = v[i]
             out += 1
         if step >= tail:
             wheel, plate, bearer = False, False, False
@@ -194,20 +268,77 @@ def march(mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table, d
         for i in range(n):
             qs[i] = q[i] + 0.5 * dt * v[i]
             vs[i] = v[i] + 0.5 * dt * k1v[i]
-        _acceleration(t + 0.5 * dt, qs, vs, mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table,
-                      rail_z, rail_v, forces, deflections, gen, k2v)  # fmt: skip
+        _acceleration(
+            t + 0.5 * dt,
+            qs,
+            vs,
+            mass,
+            dofs,
+            ei,
+            ef,
+            eps,
+            speed,
+            behind,
+            rail_length,
+            spacing,
+            table,
+            rail_z,
+            rail_v,
+            forces,
+            deflections,
+            gen,
+            k2v,
+        )
         k2q[:] = vs
         for i in range(n):
             qs[i] = q[i] + 0.5 * dt * k2q[i]
             vs[i] = v[i] + 0.5 * dt * k2v[i]
-        _acceleration(t + 0.5 * dt, qs, vs, mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table,
-                      rail_z, rail_v, forces, deflections, gen, k3v)  # fmt: skip
+        _acceleration(
+            t + 0.5 * dt,
+            qs,
+            vs,
+            mass,
+            dofs,
+            ei,
+            ef,
+            eps,
+            speed,
+            behind,
+            rail_length,
+            spacing,
+            table,
+            rail_z,
+            rail_v,
+            forces,
+            deflections,
+            gen,
+            k3v,
+        )
         k3q[:] = vs
         for i in range(n):
             qs[i] = q[i] + dt * k3q[i]
             vs[i] = v[i] + dt * k3v[i]
-        _acceleration(t + dt, qs, vs, mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table,
-                      rail_z, rail_v, forces, deflections, gen, k4v)  # fmt: skip
+        _acceleration(
+            t + dt,
+            qs,
+            vs,
+            mass,
+            dofs,
+            ei,
+            ef,
+            eps,
+            speed,
+            behind,
+            rail_length,
+            spacing,
+            table,
+            rail_z,
+            rail_v,
+            forces,
+            deflections,
+            gen,
+            k4v,
+        )
         for i in range(n):
             q[i] += dt / 6.0 * (v[i] + 2.0 * k2q[i] + 2.0 * k3q[i] + vs[i])
             v[i] += dt / 6.0 * (k1v[i] + 2.0 * k2v[i] + 2.0 * k3v[i] + k4v[i])

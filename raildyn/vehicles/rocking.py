@@ -25,19 +25,21 @@ compiled march live in ``_rocking_kernel``; the runs over jointed rail in
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
-import scipy.optimize
 
 from raildyn import _checks
 from raildyn import track as _track
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
-from raildyn.errors import SolverError
 from raildyn.linear_model import SystemMatrices
 from raildyn.vehicles import _rocking_kernel as kernel
 from raildyn.vehicles.freight import VerticalFreightCar
 
-__all__ = ["LABELS", "RockingFreightCar", "StaticRoll"]
+if TYPE_CHECKING:
+    from raildyn.vehicles.rocking_analysis import StaticRoll
+
+__all__ = ["LABELS", "RockingFreightCar", "TRACK_STIFFNESS"]
 
 LABELS = (
     ("body z", "body θ", "body φ", "body y")
@@ -157,12 +159,22 @@ class RockingFreightCar:
             _checks.plausible(name, getattr(self, name), "inertia")
         _checks.plausible("wheel_radius", self.wheel_radius, "wheel_radius")
         _checks.plausible("half_rail_spacing", self.half_rail_spacing, "half_gauge")
-        for name in ("spring_plane_height", "bolster_height", "centre_plate_height", "centre_plate_radius",
-                     "side_bearer_spacing"):  # fmt: skip
+        for name in (
+            "spring_plane_height",
+            "bolster_height",
+            "centre_plate_height",
+            "centre_plate_radius",
+            "side_bearer_spacing",
+        ):
             _checks.plausible(name, getattr(self, name), "vehicle_length")
         _checks.scalar("side_bearer_gap", self.side_bearer_gap, low=0.0, high=0.05)
-        for name in ("centre_plate_stiffness", "side_bearer_stiffness", "plate_lateral_stiffness",
-                     "nest_lateral_stiffness", "track_stiffness"):  # fmt: skip
+        for name in (
+            "centre_plate_stiffness",
+            "side_bearer_stiffness",
+            "plate_lateral_stiffness",
+            "nest_lateral_stiffness",
+            "track_stiffness",
+        ):
             _checks.positive(name, getattr(self, name))
         for name in ("contact_damping", "track_damping"):
             _checks.nonnegative(name, getattr(self, name))
@@ -219,11 +231,19 @@ class RockingFreightCar:
         """Masses, coordinate map and element tables for the kernel; the watched elements' indices."""
         c = self.car
         g = GRAVITY
-        hG, hp, hb, hs = self.cg_height_above_rail, self.centre_plate_height, self.bolster_height, \
-            self.spring_plane_height  # fmt: skip
-        l, a, d = c.semi_truck_spacing, c.semi_truck_wheelbase, c.semi_spring_spacing
-        r, rp, yb, ar = self.wheel_radius, self.centre_plate_radius, self.side_bearer_spacing, \
-            self.half_rail_spacing  # fmt: skip
+        hG, hp, hb, hs = (
+            self.cg_height_above_rail,
+            self.centre_plate_height,
+            self.bolster_height,
+            self.spring_plane_height,
+        )
+        l, d = c.semi_truck_spacing, c.semi_spring_spacing
+        r, rp, yb, ar = (
+            self.wheel_radius,
+            self.centre_plate_radius,
+            self.side_bearer_spacing,
+            self.half_rail_spacing,
+        )
         # bodies: 0 body (z θ φ y), 1-2 bolsters (z . φ y), 3-6 wheelsets (z . φ .) whose reference
         # point is the middle of the wheels' contact line, at the rail; 7 the ground. A coordinate a
         # body lacks is the kernel's extra entry 18, held at 0.
@@ -234,8 +254,16 @@ class RockingFreightCar:
         for j in range(4):
             dofs[3 + j] = [10 + 2 * j, 18, 11 + 2 * j, 18]
         mb, mw = self.bolster_mass, self.wheelset_mass
+        # The bowls hold the body along the track at the plates' height, so it pitches about that
+        # level, its centre of gravity hG − hp above: I_θ + m (hG − hp)² (the plates' forces, acting at
+        # that depth below the centre of gravity, give the weight's m g (hG − hp) against the pitch).
         mass = np.array(
-            [c.body_mass, c.body_pitch_inertia, c.body_roll_inertia, c.body_mass]
+            [
+                c.body_mass,
+                c.body_pitch_inertia + c.body_mass * (hG - hp) ** 2,
+                c.body_roll_inertia,
+                c.body_mass,
+            ]
             + [mb, self.bolster_roll_inertia, mb] * 2
             # a wheelset rolls about its contact line, its centre r₀ above: I + m r₀²
             + [mw, self.wheelset_roll_inertia + mw * r * r] * 4
@@ -253,28 +281,88 @@ class RockingFreightCar:
         # the wheels (watched 0-7): wheelset j, left then right, on its rails (inputs 2j, 2j + 1)
         for j in range(4):
             for s, y in enumerate((ar, -ar)):
-                add(f"wheel {j + 1}{'LR'[s]}", 1, 0, 3 + j, (0.0, y, 0.0), -1, (0.0, 0.0, 0.0),
-                    self.track_stiffness, self.track_damping, wheel, rail=2 * j + s)  # fmt: skip
+                add(
+                    f"wheel {j + 1}{'LR'[s]}",
+                    1,
+                    0,
+                    3 + j,
+                    (0.0, y, 0.0),
+                    -1,
+                    (0.0, 0.0, 0.0),
+                    self.track_stiffness,
+                    self.track_damping,
+                    wheel,
+                    rail=2 * j + s,
+                )
         # the centre plates' edges (watched 8-11) and the side bearers (watched 12-15), truck by truck
         for i, x in enumerate((l, -l)):
             for s, y in enumerate((rp, -rp)):
-                add(f"plate {i + 1}{'LR'[s]}", 1, 0, 0, (x, y, hp - hG), 1 + i, (0.0, y, hp - hb),
-                    self.centre_plate_stiffness, self.contact_damping, plate / 2)  # fmt: skip
+                add(
+                    f"plate {i + 1}{'LR'[s]}",
+                    1,
+                    0,
+                    0,
+                    (x, y, hp - hG),
+                    1 + i,
+                    (0.0, y, hp - hb),
+                    self.centre_plate_stiffness,
+                    self.contact_damping,
+                    plate / 2,
+                )
         for i, x in enumerate((l, -l)):
             for s, y in enumerate((yb, -yb)):
                 k = self.side_bearer_stiffness
-                add(f"bearer {i + 1}{'LR'[s]}", 1, 0, 0, (x, y, hp - hG), 1 + i, (0.0, y, hp - hb),
-                    k, self.contact_damping, -k * self.side_bearer_gap)  # fmt: skip
+                add(
+                    f"bearer {i + 1}{'LR'[s]}",
+                    1,
+                    0,
+                    0,
+                    (x, y, hp - hG),
+                    1 + i,
+                    (0.0, y, hp - hb),
+                    k,
+                    self.contact_damping,
+                    -k * self.side_bearer_gap,
+                )
         for i, x in enumerate((l, -l)):
-            add(f"plate {i + 1} rim", 0, 1, 0, (x, 0.0, hp - hG), 1 + i, (0.0, 0.0, hp - hb),
-                self.plate_lateral_stiffness)  # fmt: skip
+            add(
+                f"plate {i + 1} rim",
+                0,
+                1,
+                0,
+                (x, 0.0, hp - hG),
+                1 + i,
+                (0.0, 0.0, hp - hb),
+                self.plate_lateral_stiffness,
+            )
             for s, y in enumerate((d, -d)):
                 # the nest: bolster end on the side frame, which stands on the truck's two wheelsets
                 ends = dict(B=3 + 2 * i, B2=4 + 2 * i, w=0.5)
-                add(f"nest {i + 1}{'LR'[s]}", 1, 0, 1 + i, (0.0, y, hs - hb), ends["B"], (0.0, y, hs),
-                    c.nest_stiffness, 0.0, nest, F=c.wedge_friction, **{k: ends[k] for k in ("B2", "w")})
-                add(f"nest {i + 1}{'LR'[s]} lateral", 0, 1, 1 + i, (0.0, y, hs - hb), ends["B"], (0.0, y, hs),
-                    self.nest_lateral_stiffness, **{k: ends[k] for k in ("B2", "w")})  # fmt: skip
+                add(
+                    f"nest {i + 1}{'LR'[s]}",
+                    1,
+                    0,
+                    1 + i,
+                    (0.0, y, hs - hb),
+                    ends["B"],
+                    (0.0, y, hs),
+                    c.nest_stiffness,
+                    0.0,
+                    nest,
+                    F=c.wedge_friction,
+                    **{k: ends[k] for k in ("B2", "w")},
+                )
+                add(
+                    f"nest {i + 1}{'LR'[s]} lateral",
+                    0,
+                    1,
+                    1 + i,
+                    (0.0, y, hs - hb),
+                    ends["B"],
+                    (0.0, y, hs),
+                    self.nest_lateral_stiffness,
+                    **{k: ends[k] for k in ("B2", "w")},
+                )
         # the weights, at each body's centre of gravity (a wheelset's r₀ above its reference point)
         add("weight body", 0, 0, 0, (0.0, 0.0, 0.0), -1, (0.0, 0.0, 0.0), P0=-c.body_mass * g)
         for i in range(2):
@@ -337,42 +425,9 @@ class RockingFreightCar:
         SystemMatrices
             At a nominal 1 m/s (nothing in it depends on speed).
         """
-        engaged = _checks.flag("engaged", engaged)
-        mass, dofs, ei, ef, _ = self._tables()
-        n = mass.size
-        K, C = np.zeros((n, n)), np.zeros((n, n))
-        GK, GC = np.zeros((n, 8)), np.zeros((n, 8))
-        for e in range(len(ei)):
-            kind, direction, A, B, B2, rail = ei[e]
-            P0, k = ef[e, kernel.PRELOAD], ef[e, kernel.STIFFNESS]
-            if kind == 1 and P0 <= 0 and not engaged:
-                continue
-            w = ef[e, kernel.WEIGHT_B]
-            g, H = np.zeros(n), np.zeros((n, n))
-            for body, x, ay, az, sign in ((A, *ef[e, 0:3], -1.0), (B, *ef[e, 3:6], w), (B2, *ef[e, 3:6], 1 - w)):
-                if body == 7:  # the ground
-                    continue
-                iz, ith, iph, iy = (i if i < 18 else -1 for i in dofs[body])
-                if direction == 0:
-                    for i, value in ((iz, 1.0), (ith, x), (iph, ay)):
-                        if i >= 0:
-                            g[i] += sign * value
-                    for i in (ith, iph):
-                        if i >= 0:
-                            H[i, i] += sign * -az
-                else:
-                    for i, value in ((iy, 1.0), (iph, -az)):
-                        if i >= 0:
-                            g[i] += sign * value
-                    if iph >= 0:
-                        H[iph, iph] += sign * -ay
-            K += k * np.outer(g, g) + (P0 if kind == 0 or P0 > 0 else 0.0) * H
-            c = ef[e, kernel.DAMPING] + ef[e, kernel.FRICTION] / self.velocity_scale
-            C += c * np.outer(g, g)
-            if rail < 8:  # δ = rail − Z_A: a rail rising by w pushes A with k w + c ẇ
-                GK[:, rail] = -k * g
-                GC[:, rail] = -ef[e, kernel.DAMPING] * g
-        return SystemMatrices(np.diag(mass), C, K, GK, GC, LABELS, 1.0)
+        from raildyn.vehicles import rocking_analysis
+
+        return rocking_analysis.linearize(self, _checks.flag("engaged", engaged))
 
     def natural_frequencies(self) -> np.ndarray:
         """The undamped natural frequencies of :meth:`linearized`, Hz, ascending.
@@ -435,16 +490,25 @@ class RockingFreightCar:
 
     # ----------------------------------------------------------------------------------- quasi-static roll
 
-    def static_roll(self, roll_moment: float) -> StaticRoll:
-        """The car at rest on level track under a roll moment on its body (a steady wind, a cant deficiency).
+    def static_roll(self, roll_moment: float = 0.0, lateral_acceleration: float = 0.0) -> StaticRoll:
+        """The car at rest on level track under a roll moment on its body (a steady wind), or a lateral
+        acceleration of every part of it (a cant deficiency: the centrifugal force less the cant's share
+        of the weight), or both.
 
-        Solved by :func:`scipy.optimize.root` on the force balance of :meth:`forces` (wedges left out:
-        they only hold whatever state the car reaches), stepping the moment up from zero.
+        :func:`scipy.optimize.root` on the force balance of :meth:`forces` (its Jacobian by central
+        differences; wedges left out: they only hold whatever state the car reaches), the moment stepped
+        up from zero in eighths (halved where a step fails, down to 1/1024) by Powell's method, each from
+        the last balance or, where the body snaps
+        over from its plate's edge onto a side bearer (no balance lies between), from the body turned
+        through the bearers' gap; the balance is met to 1e-8 of the weight.
 
         Parameters
         ----------
         roll_moment : float
             N·m, left side up positive, within ± :attr:`weight` × a_r (beyond, the car overturns).
+        lateral_acceleration : float
+            a_y, m/s², towards the right positive (it leans the car onto the right rail, as a positive
+            ``roll_moment`` does), within ± g.
 
         Returns
         -------
@@ -455,40 +519,28 @@ class RockingFreightCar:
         SolverError
             If the balance is not found (the car is about to overturn).
         """
-        limit = self.weight * self.half_rail_spacing
-        M = _checks.scalar("roll_moment", roll_moment, low=-limit, high=limit)
-        free = self.replace(car=self.car.replace(wedge_friction=0.0))
-        v0 = np.zeros(18)
-        q = np.zeros(18)
-        for m in np.linspace(0.0, M, 9)[1:]:
-            load = np.zeros(18)
-            load[2] = m
+        from raildyn.vehicles import rocking_analysis
 
-            def balance(x, load=load):
-                return free.forces(x, v0)[0] + load
+        return rocking_analysis.static_roll(self, roll_moment, lateral_acceleration)
 
-            sol = scipy.optimize.root(balance, q, method="hybr", options={"xtol": 1e-13})
-            if not sol.success or np.max(np.abs(balance(sol.x))) > 1e-6 * self.weight:
-                raise SolverError(f"no static balance under a roll moment of {m:.6g} N·m: {sol.message}")
-            q = sol.x
-        _, element = free.forces(q, v0)
-        mass, _, _, ef, _ = self._tables()
-        # a contact's elastic force P₀ + k δ, which goes negative once it has separated
-        elastic = ef[:16, kernel.PRELOAD] + ef[:16, kernel.STIFFNESS] * _evaluate(free, q, v0, np.zeros(8), np.zeros(8))[2][:16]
-        return StaticRoll(M, q, element[:8].reshape(4, 2), elastic[:8].reshape(4, 2),
-                          element[8:12].reshape(2, 2), element[12:16].reshape(2, 2))  # fmt: skip
+    def wheel_lift_acceleration(self) -> float:
+        """The lateral acceleration of the whole car at which its first wheel unloads fully,
+        quasi-statically, m/s².
 
-    def wheel_lift_moment(self) -> float:
-        """The roll moment on the body at which the first wheel unloads fully, quasi-statically, N·m.
+        The least a_y beyond which no balance holds every wheel on its rail (bisection to 1e-7 g). On
+        rigid trucks and track it is g a_r / h̄, h̄ the height of the car's centre of gravity; the
+        flexible car leans over the loaded rail and lifts sooner. (A roll moment on the body alone
+        cannot lift a wheel: the body tips off its plates over its side bearers first, at about
+        m g y_b.)
 
         Returns
         -------
         float
-            N·m, > 0 (left side up: the left wheels lift).
+            m/s², > 0 (towards the right: the left wheels lift).
         """
-        limit = self.weight * self.half_rail_spacing
-        return float(scipy.optimize.brentq(lambda m: self.static_roll(m).elastic_wheel_loads.min(),
-                                           0.0, 0.999 * limit, xtol=1e-6 * limit))  # fmt: skip
+        from raildyn.vehicles import rocking_analysis
+
+        return rocking_analysis.threshold(self, "wheel_lift")
 
     def plate_lift_moment(self) -> float:
         """The roll moment on the body at which a centre plate's edge unloads, quasi-statically, N·m.
@@ -498,63 +550,26 @@ class RockingFreightCar:
         float
             N·m, > 0.
         """
-        limit = self.weight * self.half_rail_spacing
-        rp = self.centre_plate_radius
+        from raildyn.vehicles import rocking_analysis
 
-        def edge(m):
-            s = self.static_roll(m)
-            return s.plate_loads.min() - 1e-9 * self.weight if s.plate_loads.min() > 0 else -1.0
-
-        return float(scipy.optimize.brentq(edge, 0.0, min(0.999 * limit, 4 * self.weight * rp),
-                                           xtol=1e-7 * limit))  # fmt: skip
+        return rocking_analysis.threshold(self, "plate_lift")
 
 
 def _evaluate(car: RockingFreightCar, q, v, rail_z, rail_v):
     """(generalized forces (18,), element forces, element deflections) by the kernel's law."""
     mass, dofs, ei, ef, _ = car._tables()
     element, deflection, gen = np.zeros(len(ei)), np.zeros(len(ei)), np.zeros(19)
-    kernel.element_forces(np.append(q, 0.0), np.append(v, 0.0), np.append(rail_z, 0.0), np.append(rail_v, 0.0),
-                          dofs, ei, ef, car.velocity_scale, element, deflection, gen)  # fmt: skip
+    kernel.compiled_forces(
+        np.append(q, 0.0),
+        np.append(v, 0.0),
+        np.append(rail_z, 0.0),
+        np.append(rail_v, 0.0),
+        dofs,
+        ei,
+        ef,
+        car.velocity_scale,
+        element,
+        deflection,
+        gen,
+    )
     return gen[:18], element, deflection
-
-
-@dataclass(frozen=True, eq=False)
-class StaticRoll:
-    """The car at rest under a roll moment on its body (:meth:`RockingFreightCar.static_roll`).
-
-    Attributes
-    ----------
-    roll_moment : float
-        N·m, left side up positive.
-    q : ndarray, (18,)
-        The coordinates (:data:`LABELS`), m and rad, from the unloaded equilibrium.
-    wheel_loads : ndarray, (4, 2)
-        Each wheelset's left and right wheel load, N, ≥ 0.
-    elastic_wheel_loads : ndarray, (4, 2)
-        The same as the track's spring would give it, P₀ + k δ, N: negative by the amount the rail
-        would have to pull once a wheel has lifted (a measure of how far past lift-off).
-    plate_loads : ndarray, (2, 2)
-        Each truck's centre-plate edge loads, left and right, N, ≥ 0.
-    bearer_loads : ndarray, (2, 2)
-        Each truck's side-bearer loads, left and right, N, ≥ 0.
-    """
-
-    roll_moment: float
-    q: np.ndarray
-    wheel_loads: np.ndarray
-    elastic_wheel_loads: np.ndarray
-    plate_loads: np.ndarray
-    bearer_loads: np.ndarray
-
-    def __post_init__(self):
-        object.__setattr__(self, "roll_moment", _checks.scalar("roll_moment", self.roll_moment))
-        object.__setattr__(self, "q", _checks.array("q", self.q, shape=(18,)))
-        for name, shape in (("wheel_loads", (4, 2)), ("plate_loads", (2, 2)), ("bearer_loads", (2, 2))):
-            object.__setattr__(self, name, _checks.array(name, getattr(self, name), shape=shape, low=0.0))
-        object.__setattr__(self, "elastic_wheel_loads",
-                           _checks.array("elastic_wheel_loads", self.elastic_wheel_loads, shape=(4, 2)))  # fmt: skip
-
-    @property
-    def body_roll(self) -> float:
-        """The body's roll, rad."""
-        return float(self.q[2])

@@ -79,12 +79,17 @@ class RockingRun:
         object.__setattr__(self, "rail_length", _checks.positive("rail_length", self.rail_length))
         t = _checks.time_grid("t", self.t)
         object.__setattr__(self, "t", t)
-        object.__setattr__(self, "wheel_loads", _checks.array("wheel_loads", self.wheel_loads,
-                                                              shape=(t.size, 4, 2), low=0.0))  # fmt: skip
+        object.__setattr__(
+            self, "wheel_loads", _checks.array("wheel_loads", self.wheel_loads, shape=(t.size, 4, 2), low=0.0)
+        )
         for name in ("plate_loads", "bearer_loads"):
-            object.__setattr__(self, name, _checks.array(name, getattr(self, name), shape=(t.size, 2, 2), low=0.0))
+            object.__setattr__(
+                self, name, _checks.array(name, getattr(self, name), shape=(t.size, 2, 2), low=0.0)
+            )
         object.__setattr__(self, "roll", _checks.array("roll", self.roll, shape=(t.size,)))
-        object.__setattr__(self, "static_wheel_load", _checks.positive("static_wheel_load", self.static_wheel_load))
+        object.__setattr__(
+            self, "static_wheel_load", _checks.positive("static_wheel_load", self.static_wheel_load)
+        )
         for name in ("peak_unloading", "lift_fraction", "plate_lift_fraction", "bearer_contact_fraction"):
             object.__setattr__(self, name, _checks.scalar(name, getattr(self, name), low=0.0, high=1.0))
         object.__setattr__(self, "roll_amplitude", _checks.nonnegative("roll_amplitude", self.roll_amplitude))
@@ -101,7 +106,7 @@ class RockingRun:
 
     @property
     def unloading(self) -> np.ndarray:
-        """ΔQ/Q = 1 − Q/Q₀ of each wheel, (n_t, 4, 2): 1 where it has lifted, negative where loaded above Q₀."""
+        """ΔQ/Q = 1 − Q/Q₀ of each wheel, (n_t, 4, 2): 1 where it has lifted, < 0 where loaded above Q₀."""
         return 1.0 - self.wheel_loads / self.static_wheel_load
 
     @property
@@ -198,11 +203,17 @@ class RockingSweep:
             if (arr > 1.0).any():
                 raise ValueError(f"{name} must lie in [0, 1], got {arr.max()!r}")
             object.__setattr__(self, name, arr)
-        object.__setattr__(self, "roll_amplitude", _checks.array("roll_amplitude", self.roll_amplitude,
-                                                                 shape=V.shape, low=0.0))  # fmt: skip
+        object.__setattr__(
+            self,
+            "roll_amplitude",
+            _checks.array("roll_amplitude", self.roll_amplitude, shape=V.shape, low=0.0),
+        )
         object.__setattr__(self, "resonance_speed", _checks.speed("resonance_speed", self.resonance_speed))
-        if not (isinstance(self.runs, tuple) and len(self.runs) == V.size
-                and all(isinstance(r, RockingRun) for r in self.runs)):  # fmt: skip
+        if not (
+            isinstance(self.runs, tuple)
+            and len(self.runs) == V.size
+            and all(isinstance(r, RockingRun) for r in self.runs)
+        ):
             raise TypeError(f"runs must be a tuple of {V.size} RockingRun, got {self.runs!r:.80}")
 
     @property
@@ -239,13 +250,21 @@ class RockingSweep:
         ax = plots.axes_or_new(ax)
         out = {}
         with matplotlib.rc_context(plots.STYLE):
-            (out["unloading"],) = ax.plot(kmh, self.peak_unloading, "o-", ms=3, color=plots.COLORS[0],
-                                          label="peak ΔQ/Q")  # fmt: skip
-            (out["lift"],) = ax.plot(kmh, self.lift_fraction, "s--", ms=3, color=plots.COLORS[1],
-                                     label="share of time with a wheel lifted")  # fmt: skip
+            (out["unloading"],) = ax.plot(
+                kmh, self.peak_unloading, "o-", ms=3, color=plots.COLORS[0], label="peak ΔQ/Q"
+            )
+            (out["lift"],) = ax.plot(
+                kmh,
+                self.lift_fraction,
+                "s--",
+                ms=3,
+                color=plots.COLORS[1],
+                label="share of time with a wheel lifted",
+            )
             if resonance:
-                out["resonance"] = ax.axvline(3.6 * self.resonance_speed, color="k", ls=":", lw=1,
-                                              label="rocking mode $f L$")  # fmt: skip
+                out["resonance"] = ax.axvline(
+                    3.6 * self.resonance_speed, color="k", ls=":", lw=1, label="rocking mode $f L$"
+                )
             ax.set_xlabel("speed (km/h)")
             ax.set_ylabel("ΔQ/Q, share of time")
             ax.set_ylim(0, 1.05)
@@ -299,12 +318,37 @@ def _run(car, speed, L, cycles, dt, output_step, table) -> RockingRun:
     extremes = np.zeros((2, 17))
     counts = np.zeros(19, dtype=np.int64)
     tail = steps // 2
-    status = kernel.march(mass, dofs, ei, ef, car.velocity_scale, float(speed), behind, L, L / (table.shape[1] - 1),
-                          table, dt, steps, stride, tail, np.zeros(18), np.zeros(18), watched, 2, hist, roll,
-                          extremes, counts)  # fmt: skip
+    status = kernel.march(
+        mass,
+        dofs,
+        ei,
+        ef,
+        car.velocity_scale,
+        float(speed),
+        behind,
+        L,
+        L / (table.shape[1] - 1),
+        table,
+        dt,
+        steps,
+        stride,
+        tail,
+        np.zeros(18),
+        np.zeros(18),
+        watched,
+        2,
+        hist,
+        roll,
+        np.zeros((0, 36)),
+        extremes,
+        counts,
+    )
     if status >= 0:
-        raise SolverError(f"the state became non-finite at {speed:.4g} m/s: RK4 went unstable",
-                          step=int(status), time=float(status * dt))  # fmt: skip
+        raise SolverError(
+            f"the state became non-finite at {speed:.4g} m/s: RK4 went unstable",
+            step=int(status),
+            time=float(status * dt),
+        )
     window = steps - tail + 1
     Q0 = car.static_wheel_load
     return RockingRun(
@@ -369,7 +413,9 @@ def rocking_run(
     SolverError
         If the state becomes non-finite.
     """
-    L, cycles, dt, output_step, table = _settings(car, depth, half_width, rail_length, cycles, dt, output_step)
+    L, cycles, dt, output_step, table = _settings(
+        car, depth, half_width, rail_length, cycles, dt, output_step
+    )
     V = _checks.speed("speed", speed)
     return _run(car, V, L, cycles, dt, output_step, table)
 
@@ -403,13 +449,16 @@ def rocking_sweep(
     -------
     RockingSweep
     """
-    L, cycles, dt, output_step, table = _settings(car, depth, half_width, rail_length, cycles, dt, output_step)
+    L, cycles, dt, output_step, table = _settings(
+        car, depth, half_width, rail_length, cycles, dt, output_step
+    )
     V = _checks.speeds("speeds", speeds)
     progress = _checks.flag("progress", progress)
     for v in V:  # refuse a too-long run before any work
         if cycles * L / v / dt > _MAX_STEPS:
             raise ValueError(
-                f"the run of cycles = {cycles} rail lengths at the speed {v!r} m/s in steps of dt = {dt:.4g} s "
+                f"the run of cycles = {cycles} rail lengths at the speed {v!r} m/s in steps of dt = {dt:.4g} "
+                "s "
                 f"would take more than {_MAX_STEPS} steps: take fewer cycles or higher speeds"
             )
     items = V
