@@ -315,3 +315,24 @@ def test_plots_draw_and_move():
     np.testing.assert_allclose(run_art["left"].get_ydata(), sweep.runs[1].side_loads[:, 0, 0] / 1e3)
     with pytest.raises(ValueError, match="truck"):
         sweep.runs[0].plot(truck=2)
+
+
+def test_wheel_unloading_widget_shows_the_sweeps_numbers_and_moves():
+    import re
+
+    from widget_helpers import status_line
+
+    from raildyn.widgets import chapter06
+
+    container, update = chapter06.wheel_unloading()
+    sweep = chapter06.unloading_sweep()
+    first = update(speed_kmh=28.0)
+    text = status_line(container)
+    k = int(np.argmin(np.abs(sweep.speeds * 3.6 - 28.0)))
+    assert float(re.search(r"peak ΔQ/Q ([0-9.]+)", text)[1]) == pytest.approx(
+        sweep.peak_unloading[k], abs=0.006
+    )
+    assert float(re.search(r"f L = ([0-9.]+) km/h", text)[1]) == pytest.approx(
+        3.6 * CAR.roll_resonance_speed(), abs=0.51
+    )
+    assert update(speed_kmh=40.0) != first

@@ -46,6 +46,8 @@ LABELS = (
     + tuple(f"bolster {i} {c}" for i in (1, 2) for c in ("z", "φ", "y"))
     + tuple(f"wheelset {j} {c}" for j in (1, 2, 3, 4) for c in ("z", "φ"))
 )
+"""The names of the 18 coordinates: the body's height, pitch, roll and sway, each bolster's height, roll
+and sway, each wheelset's height and roll (wheelsets leading first), m and rad."""
 
 INCH = 0.0254
 # Track under one wheel: a rail on a Winkler foundation of modulus u takes a point load with the
@@ -56,6 +58,7 @@ _TRACK_MODULUS = 2000 * 4.4482216 / INCH**2
 _RAIL_EI = 207e9 * 65.6 * INCH**4
 _BETA = (_TRACK_MODULUS / (4 * _RAIL_EI)) ** 0.25
 TRACK_STIFFNESS = 2 * _TRACK_MODULUS / _BETA
+"""The track's stiffness under one wheel, N/m: 2u/β of a 115 RE rail on a foundation of 13.8 MPa."""
 
 
 @dataclass(frozen=True)
@@ -118,7 +121,7 @@ class RockingFreightCar:
         k_y, the lateral (shear) rate of a nest, N/m: 0.5 k, the value :mod:`raildyn.vehicles.three_piece`
         takes (representative: a loaded coil's lateral rate is a fraction of its vertical rate).
     track_stiffness : float
-        Under each wheel, N/m: 3.1e7, :data:`TRACK_STIFFNESS` (representative of older jointed track).
+        Under each wheel, N/m: 3.1e7, ``TRACK_STIFFNESS`` (representative of older jointed track).
     track_damping : float
         Under each wheel, N·s/m: 1e5 (representative: a damping ratio of about 0.2 of a wheelset on
         the track).
@@ -389,7 +392,7 @@ class RockingFreightCar:
         Parameters
         ----------
         q, v : array_like, (18,)
-            Coordinates from the static equilibrium (m, rad; :data:`LABELS`) and their rates.
+            Coordinates from the static equilibrium (m, rad; ``LABELS``) and their rates.
         rail_heights, rail_rates : array_like, (8,), optional
             The left and right rail under each wheelset, leading first (m, m/s); level track by default.
 
@@ -397,7 +400,8 @@ class RockingFreightCar:
         -------
         generalized : ndarray, (18,)
         element : ndarray, (n_elements,)
-            In the order of :meth:`element_names`; ≥ 0 for the contacts.
+            In the order of :meth:`~raildyn.vehicles.rocking.RockingFreightCar.element_names`; ≥ 0 for the
+            contacts.
         """
         q = _checks.array("q", q, shape=(18,))
         v = _checks.array("v", v, shape=(18,))
@@ -430,7 +434,8 @@ class RockingFreightCar:
         return rocking_analysis.linearize(self, _checks.flag("engaged", engaged))
 
     def natural_frequencies(self) -> np.ndarray:
-        """The undamped natural frequencies of :meth:`linearized`, Hz, ascending.
+        """The undamped natural frequencies of
+        :meth:`~raildyn.vehicles.rocking.RockingFreightCar.linearized`, Hz, ascending.
 
         Returns
         -------
@@ -443,7 +448,8 @@ class RockingFreightCar:
     def roll_frequency(self) -> float:
         """The frequency of the car's rocking mode, Hz.
 
-        Of the undamped modes of :meth:`linearized`, the one that a cross-level (left rails up, right
+        Of the undamped modes of :meth:`~raildyn.vehicles.rocking.RockingFreightCar.linearized`, the one
+        that a cross-level (left rails up, right
         rails down, by the same amount under every wheelset) rolls the body most through, quasi-statically:
         the largest |φ_r,body φ_rᵀ G_K w_x| / ω_r² over the mass-normalised modes φ_r. On a car whose
         nests are laterally flexible this is the lower of the two modes that couple the body's roll with
@@ -495,7 +501,8 @@ class RockingFreightCar:
         acceleration of every part of it (a cant deficiency: the centrifugal force less the cant's share
         of the weight), or both.
 
-        :func:`scipy.optimize.root` on the force balance of :meth:`forces` (its Jacobian by central
+        ``scipy.optimize.root`` on the force balance of
+        :meth:`~raildyn.vehicles.rocking.RockingFreightCar.forces` (its Jacobian by central
         differences; wedges left out: they only hold whatever state the car reaches), the moment stepped
         up from zero in eighths (halved where a step fails, down to 1/1024) by Powell's method, each from
         the last balance or, where the body snaps

@@ -23,7 +23,8 @@ __all__ = ["StaticRoll"]
 
 @dataclass(frozen=True, eq=False)
 class StaticRoll:
-    """The car at rest under a roll moment on its body (:meth:`RockingFreightCar.static_roll`).
+    """The car at rest under a roll moment on its body
+    (:meth:`~raildyn.vehicles.rocking.RockingFreightCar.static_roll`).
 
     Attributes
     ----------
@@ -32,7 +33,7 @@ class StaticRoll:
     lateral_acceleration : float
         m/s², towards the right positive.
     q : ndarray, (18,)
-        The coordinates (:data:`LABELS`), m and rad, from the unloaded equilibrium.
+        The coordinates (``LABELS``), m and rad, from the unloaded equilibrium.
     wheel_loads : ndarray, (4, 2)
         Each wheelset's left and right wheel load, N, ≥ 0.
     elastic_wheel_loads : ndarray, (4, 2)
@@ -73,7 +74,7 @@ class StaticRoll:
 
 
 def static_roll(car, roll_moment: float = 0.0, lateral_acceleration: float = 0.0) -> StaticRoll:
-    """:meth:`RockingFreightCar.static_roll` (see there)."""
+    """:meth:`~raildyn.vehicles.rocking.RockingFreightCar.static_roll` (see there)."""
 
     limit = car.weight * car.half_rail_spacing
     M = _checks.scalar("roll_moment", roll_moment, low=-limit, high=limit)
@@ -179,7 +180,8 @@ def _balance(free, q, load, tol: float):
 
 
 def linearize(car, engaged: bool) -> SystemMatrices:
-    """:meth:`RockingFreightCar.linearized` (see there): K = Σ k g gᵀ + Σ P₀ ∇²δ, C = Σ (c + F/v_ε) g gᵀ."""
+    """:meth:`~raildyn.vehicles.rocking.RockingFreightCar.linearized` (see there): K = Σ k g gᵀ + Σ P₀ ∇²δ,
+    C = Σ (c + F/v_ε) g gᵀ."""
     mass, dofs, ei, ef, _ = car._tables()
     n = mass.size
     K, C = np.zeros((n, n)), np.zeros((n, n))

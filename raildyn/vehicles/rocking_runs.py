@@ -1,8 +1,10 @@
 """The rocking freight car run over staggered jointed rail: wheel loads, wheel lift, plate and bearer
-contact, at one speed (:func:`rocking_run`) and over many (:func:`rocking_sweep`).
+contact, at one speed (:func:`~raildyn.vehicles.rocking_runs.rocking_run`) and over many
+(:func:`~raildyn.vehicles.rocking_runs.rocking_sweep`).
 
 The car is :class:`raildyn.vehicles.rocking.RockingFreightCar`; the track is
-:func:`raildyn.track.jointed_track` with the right rail's joints half a rail length along the left's,
+:func:`~raildyn.track.deterministic.jointed_track` with the right rail's joints half a rail length along
+the left's,
 tabulated over one rail length (1 mm apart) and read by each wheelset at its own delay. The march is
 RK4 at a fixed step, compiled with numba (``_rocking_kernel``), one speed after another.
 """
@@ -30,7 +32,8 @@ _MAX_STEPS = 2_000_000  # per speed: some 10 s of compiled work
 
 @dataclass(frozen=True, eq=False)
 class RockingRun:
-    """The rocking car at one speed over staggered jointed rail (:func:`rocking_run`).
+    """The rocking car at one speed over staggered jointed rail
+    (:func:`~raildyn.vehicles.rocking_runs.rocking_run`).
 
     The measures (``peak_unloading`` … ``roll_amplitude``) are taken over the steady window, the
     run's second half, at every step of the march; the histories are sampled more coarsely.
@@ -50,14 +53,15 @@ class RockingRun:
     roll : ndarray, (n_t,)
         The body's roll, rad (left side up).
     static_wheel_load : float
-        Q₀, each wheel's load at rest, N, > 0.
+        Q₀, each wheel's load at rest, N, in [1, 1e6] (:data:`~raildyn.constants.PLAUSIBLE_RANGES`
+        "wheel_load").
     peak_unloading : float
         The largest ΔQ/Q = 1 − Q/Q₀ of any wheel in the steady window, in [0, 1] (1: a wheel lifted).
     lift_fraction, plate_lift_fraction, bearer_contact_fraction : float
         The shares of the steady window, in [0, 1], in which some wheel is off its rail, some centre
         plate stands on one edge (the other lifted), and some side bearer is closed.
     roll_amplitude : float
-        Half the body's peak-to-peak roll in the steady window, rad, ≥ 0.
+        Half the body's peak-to-peak roll in the steady window, rad, in [0, π/2].
     """
 
     speed: float
@@ -88,11 +92,17 @@ class RockingRun:
             )
         object.__setattr__(self, "roll", _checks.array("roll", self.roll, shape=(t.size,)))
         object.__setattr__(
-            self, "static_wheel_load", _checks.positive("static_wheel_load", self.static_wheel_load)
+            self,
+            "static_wheel_load",
+            _checks.plausible("static_wheel_load", self.static_wheel_load, "wheel_load"),
         )
         for name in ("peak_unloading", "lift_fraction", "plate_lift_fraction", "bearer_contact_fraction"):
             object.__setattr__(self, name, _checks.scalar(name, getattr(self, name), low=0.0, high=1.0))
-        object.__setattr__(self, "roll_amplitude", _checks.nonnegative("roll_amplitude", self.roll_amplitude))
+        object.__setattr__(
+            self,
+            "roll_amplitude",
+            _checks.scalar("roll_amplitude", self.roll_amplitude, low=0.0, high=np.pi / 2),
+        )
 
     @property
     def side_loads(self) -> np.ndarray:
@@ -170,7 +180,8 @@ class RockingRun:
 
 @dataclass(frozen=True, eq=False)
 class RockingSweep:
-    """The rocking car over staggered jointed rail at many speeds (:func:`rocking_sweep`).
+    """The rocking car over staggered jointed rail at many speeds
+    (:func:`~raildyn.vehicles.rocking_runs.rocking_sweep`).
 
     Attributes
     ----------
@@ -181,7 +192,8 @@ class RockingSweep:
     roll_amplitude : ndarray, (n,)
         rad, ≥ 0.
     resonance_speed : float
-        V = f L of the car's linear rocking mode (:meth:`RockingFreightCar.roll_resonance_speed`), m/s.
+        V = f L of the car's linear rocking mode
+        (:meth:`~raildyn.vehicles.rocking.RockingFreightCar.roll_resonance_speed`), m/s.
     runs : tuple of RockingRun
         One per speed, with its histories.
     """
@@ -289,7 +301,7 @@ def _settings(car, depth, half_width, rail_length, cycles, dt, output_step):
                 f"dt must be at most {limit:.4g} s for RK4 to stay stable on this car with its contacts "
                 f"closed and its wedges sticking (slope F/v_ε), got {dt!r}"
             )
-    output_step = _checks.positive("output_step", output_step)
+    output_step = _checks.scalar("output_step", output_step, low=0.0, low_open=True, high=1.0)
     if output_step < dt:
         raise ValueError(f"output_step must be at least the time step dt = {dt:.4g} s, got {output_step!r}")
     x = np.linspace(0.0, L, int(np.ceil(L / _TABLE_SPACING)) + 1)
@@ -383,7 +395,7 @@ def rocking_run(
 
     The car starts at rest in its static equilibrium with its leading wheelset on a left joint and
     runs ``cycles`` rail lengths; the measures come from the second half. Each joint is the cusp of
-    :func:`raildyn.track.dipped_joints`, the right rail's joints half a rail length along.
+    :func:`~raildyn.track.deterministic.dipped_joints`, the right rail's joints half a rail length along.
 
     Parameters
     ----------
@@ -402,7 +414,7 @@ def rocking_run(
         wedges sticking (:func:`raildyn.integrators.stable_step`): a longer step is refused with the
         limit in the message. Default: 1 ms or 0.9 of that limit, the shorter.
     output_step : float
-        s between the histories' samples, ≥ ``dt`` (rounded to a whole number of steps).
+        s between the histories' samples, in [``dt``, 1] (rounded to a whole number of steps).
 
     Returns
     -------
@@ -432,7 +444,8 @@ def rocking_sweep(
     output_step: float = 0.005,
     progress: bool = False,
 ) -> RockingSweep:
-    """:func:`rocking_run` at each of ``speeds``: the peak ΔQ/Q, the wheel lift, and the plate and bearer
+    """:func:`~raildyn.vehicles.rocking_runs.rocking_run` at each of ``speeds``: the peak ΔQ/Q, the wheel
+    lift, and the plate and bearer
     contact against speed.
 
     Parameters
@@ -441,7 +454,7 @@ def rocking_sweep(
     speeds : array_like
         m/s, each in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`], not empty.
     depth, half_width, rail_length, cycles, dt, output_step
-        As :func:`rocking_run`, the same for every speed.
+        As :func:`~raildyn.vehicles.rocking_runs.rocking_run`, the same for every speed.
     progress : bool
         Show a progress bar.
 
