@@ -73,8 +73,10 @@ class StaticRoll:
         return float(self.q[2])
 
 
-def static_roll(car, roll_moment: float = 0.0, lateral_acceleration: float = 0.0) -> StaticRoll:
-    """:meth:`~raildyn.vehicles.rocking.RockingFreightCar.static_roll` (see there)."""
+def static_roll(car, roll_moment: float = 0.0, lateral_acceleration: float = 0.0, start=None) -> StaticRoll:
+    """:meth:`~raildyn.vehicles.rocking.RockingFreightCar.static_roll` (see there); ``start``, a
+    :class:`StaticRoll` of the same car under a share s of the same kind of load, starts the
+    continuation there (at s) instead of at rest."""
 
     limit = car.weight * car.half_rail_spacing
     M = _checks.scalar("roll_moment", roll_moment, low=-limit, high=limit)
@@ -90,13 +92,19 @@ def static_roll(car, roll_moment: float = 0.0, lateral_acceleration: float = 0.0
     load[11::2] = a_y * car.wheelset_mass * car.wheel_radius
     v0 = np.zeros(18)
     q = np.zeros(18)
-    tol = 1e-8 * car.weight
     done, step = 0.0, 0.125
+    if start is not None:
+        given = start.roll_moment if M != 0 else start.lateral_acceleration
+        wanted = M if M != 0 else a_y
+        if wanted != 0 and 0 <= given / wanted <= 1:
+            q, done, step = start.q, given / wanted, 1.0
+    floor = 1 / 1024 if start is None else (1.0 - done) / 4  # a warm start gives up sooner
+    tol = 1e-8 * car.weight
     while done < 1.0:
         share = min(1.0, done + step)
         solved = _balance(free, q, share * load, tol)
         if solved is None:
-            if step < 1 / 1024:
+            if step < floor:
                 raise SolverError(
                     f"no static balance at {share:.4g} of the roll moment {M:.6g} N·m and the lateral "
                     f"acceleration {a_y:.6g} m/s²: the car (or its body, off its plates) overturns"
@@ -137,11 +145,17 @@ def threshold(car, event: str) -> float:
         def holds(s):
             return s.plate_loads.min() > 0
 
+    last = [None]  # the balance at the highest load known to hold: the next try starts from it
+
     def ok(x):
         try:
-            return bool(holds(static_roll(car, **{kind: x})))
+            state = static_roll(car, **{kind: x}, start=last[0])
         except SolverError:
             return False
+        if holds(state):
+            last[0] = state
+            return True
+        return False
 
     low, high = 0.0, limit
     while high - low > 1e-7 * limit:
@@ -152,11 +166,17 @@ def threshold(car, event: str) -> float:
 
 def _balance(free, q, load, tol: float):
     """The coordinates that balance the generalized ``load`` (N, N·m), from the guess q, or None."""
-    v0 = np.zeros(18)
     m = load[2] if load[2] != 0 else -load[3]
+    _, dofs, ei, ef, _ = free._tables()
+    x1, v1, rails = np.zeros(19), np.zeros(19), np.zeros(9)
+    element, deflection, gen = np.zeros(len(ei)), np.zeros(len(ei)), np.zeros(19)
 
-    def residual(x):
-        return free.forces(x, v0)[0] + load
+    def residual(x):  # the law of RockingFreightCar.forces, its tables built once
+        x1[:18] = x
+        kernel.compiled_forces(
+            x1, v1, rails, rails, dofs, ei, ef, free.velocity_scale, element, deflection, gen
+        )
+        return gen[:18] + load
 
     def jacobian(x):
         J = np.empty((18, 18))
