@@ -5,8 +5,8 @@ dynamic-stiffness system for all 2000 frequencies in one batched call (the axle
 FRFs do not depend on speed) and forms each speed's delayed sum and temporal
 spectrum as array operations. The baseline is the straightforward loop: for
 each speed and each frequency, one ``np.linalg.solve``, the delayed sum over the
-four axles and the spectrum, then the trapezoid rule. The chapter's ride widget
-is timed against a new figure per change.
+four axles and the spectrum, then the trapezoid rule. The chapter's ride and wheel-unloading
+widgets are timed against a new figure per change.
 """
 
 from __future__ import annotations
@@ -63,4 +63,9 @@ def cases(repeats: int):
             "per-frequency Python loop",
         ),
         widget_case("ch06 ride quality", chapter06.RIDE, "speed_kmh", [80.0, 120.0, 160.0, 200.0], repeats),
+        # the rocking car's runs are made once, when the widget is built (chapter06.unloading_sweep):
+        # an update, like a new figure, only draws
+        widget_case(
+            "ch06 wheel unloading", chapter06.WHEEL_UNLOADING, "speed_kmh", [22.0, 26.0, 30.0, 34.0], repeats
+        ),
     ]

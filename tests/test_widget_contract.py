@@ -67,6 +67,7 @@ MOVES = {
     ),
     chapter06.ride_quality: dict(track="German high", speed_kmh=160.0, seed=4),
     chapter06.rock_and_roll_widget: dict(speed_kmh=55.0, friction_kn=10.0, depth_mm=15.0),
+    chapter06.wheel_unloading: dict(speed_kmh=26.0),
     chapter07.car_roots: dict(conicity=0.3, yaw_stiffness=20.0),
     chapter07.critical_curve: dict(yaw_stiffness=20.0, secondary_yaw_stiffness=1.0),
     chapter07.vehicle_comparison: dict(vehicle="locomotive", conicity=0.3),

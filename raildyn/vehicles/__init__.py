@@ -21,6 +21,9 @@ from raildyn.vehicles.locomotive_lateral import (
 )
 from raildyn.vehicles.response import ResponseSpectrum, response_spectrum, rms_over_speeds, track_frf
 from raildyn.vehicles.ride_comparison import RideRun, ride_run
+from raildyn.vehicles.rocking import RockingFreightCar
+from raildyn.vehicles.rocking_analysis import StaticRoll
+from raildyn.vehicles.rocking_runs import RockingRun, RockingSweep, rocking_run, rocking_sweep
 from raildyn.vehicles.three_piece import (
     EMPTY_FREIGHT_CAR,
     LOADED_FREIGHT_CAR,
@@ -50,6 +53,10 @@ __all__ = [
     "ResponseSpectrum",
     "RideRun",
     "RockAndRoll",
+    "RockingFreightCar",
+    "RockingRun",
+    "RockingSweep",
+    "StaticRoll",
     "ThreePieceTruck",
     "TimeResponse",
     "ThreeAxleTruck",
@@ -66,6 +73,8 @@ __all__ = [
     "rigid_truck_wavelength",
     "rms_over_speeds",
     "rock_and_roll",
+    "rocking_run",
+    "rocking_sweep",
     "time_response",
     "track_frf",
     "wedge_energy_per_cycle",

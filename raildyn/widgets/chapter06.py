@@ -26,7 +26,14 @@ from raildyn.vehicles import (
     rock_and_roll,
 )
 
-__all__ = ["RideRun", "ride_quality", "ride_run", "rock_and_roll_widget"]
+__all__ = [
+    "RideRun",
+    "ride_quality",
+    "ride_run",
+    "rock_and_roll_widget",
+    "unloading_sweep",
+    "wheel_unloading",
+]
 
 TRACKS = {f"FRA class {c}": ("fra", c) for c in track.FRA_CLASSES} | {
     "German low": ("german", "low"),
@@ -255,3 +262,99 @@ def rock_and_roll_widget():
         ``update(**values)`` sets controls, redraws and returns the PNG frame.
     """
     return ROCK.build()
+
+
+# ---------------------------------------------------------------------- wheel unloading of the rocking car
+
+_UNLOADING_SPEEDS_KMH = np.arange(18.0, 46.1, 2.0)  # the grid the widget runs at construction
+_UNLOADING_CYCLES = 12  # rail lengths a run lasts; its second half gives the measures
+_MPH = 1.609344  # km/h per mph
+SERVICE_BAND_MPH = (12.0, 24.0)
+"""Speeds at which loaded freight cars rock on jointed rail in service, mph: G. Wolf, "Rock 'til you
+drop: starting and stopping harmonic rock and roll", Interface Journal, February 2005."""
+
+
+@lru_cache(maxsize=1)
+def unloading_sweep() -> vehicles.RockingSweep:
+    """The rocking 286K hopper (:class:`raildyn.vehicles.RockingFreightCar`) over staggered 20 mm dipped
+    joints on 11.9 m rails at 18, 20, … 46 km/h, 12 rail lengths each: the widget's runs, made once.
+
+    Returns
+    -------
+    RockingSweep
+    """
+    return vehicles.rocking_sweep(
+        vehicles.RockingFreightCar(), _UNLOADING_SPEEDS_KMH / 3.6, cycles=_UNLOADING_CYCLES
+    )
+
+
+def _unloading_controls():
+    from raildyn.widgets._core import slider
+
+    return {"speed_kmh": slider("V (km/h)", 30.0, 18.0, 46.0, 2.0, fmt=".0f")}
+
+
+def _unloading_setup(live, status):
+    sweep = unloading_sweep()
+    ax_s, ax_t = live.axes[0]
+    low, high = (_MPH * v for v in SERVICE_BAND_MPH)
+    ax_s.axvspan(low, high, color="0.88", zorder=0, label="rock and roll in service (Wolf 2005)")
+    sweep.plot(ax_s)
+    (marker,) = ax_s.plot([30.0], [0.0], "s", color=plots.COLORS[2], ms=7, label="chosen speed")
+    ax_s.set_xlim(_UNLOADING_SPEEDS_KMH[0] - 2, _UNLOADING_SPEEDS_KMH[-1] + 2)
+    ax_s.legend(loc="upper right", fontsize="small")
+    history = sweep.runs[0].plot(ax_t)
+    ax_t.set_xlim(0, _UNLOADING_CYCLES * track.RAIL_LENGTH / (_UNLOADING_SPEEDS_KMH[0] / 3.6))
+    ax_t.set_ylim(-10.0, 4.5 * sweep.runs[0].static_wheel_load / 1e3)
+    ax_t.legend(loc="upper right", fontsize="small")
+    live.animate(marker, *history.values())
+
+    def redraw(v):
+        k = int(np.argmin(np.abs(_UNLOADING_SPEEDS_KMH - v["speed_kmh"])))
+        run = sweep.runs[k]
+        run.plot(artists=history)
+        marker.set_data([v["speed_kmh"]], [run.peak_unloading])
+        status.value = (
+            f"at {3.6 * run.speed:.0f} km/h: peak ΔQ/Q {run.peak_unloading:.2f}, a wheel off the rail "
+            f"{100 * run.lift_fraction:.0f} % of the time ({run.lift_distance:.1f} m per rail), centre plate "
+            f"on one edge {100 * run.plate_lift_fraction:.0f} %, side bearers closed "
+            f"{100 * run.bearer_contact_fraction:.0f} %, roll ±{np.degrees(run.roll_amplitude):.1f}° · "
+            f"rocking mode f L = {3.6 * sweep.resonance_speed:.0f} km/h"
+        )
+
+    return redraw
+
+
+def _unloading_recipe():
+    from raildyn.widgets._core import Recipe
+
+    return Recipe(
+        _unloading_controls,
+        _unloading_setup,
+        {"nrows": 1, "ncols": 2, "figsize": (11.0, 3.8)},
+        static={"speed_kmh": [18.0, 22.0, 24.0, 26.0, 28.0, 30.0, 32.0, 34.0, 38.0, 42.0, 46.0]},
+        title="Rocking freight car on staggered jointed rail: wheel unloading and wheel lift against speed",
+    )
+
+
+WHEEL_UNLOADING = _unloading_recipe()
+
+
+def wheel_unloading():
+    """The rocking freight car's wheels on staggered jointed rail: ΔQ/Q and wheel lift against speed.
+
+    Control: speed (km/h, 18–46 in steps of 2; every speed is run once, when the widget is first
+    built, by :func:`~raildyn.widgets.chapter06.unloading_sweep`). Left: the peak ΔQ/Q and the share of
+    time with a wheel off the
+    rail against speed, the rocking mode's speed f L dotted and the speeds at which cars rock in
+    service shaded; right: the leading truck's side loads Q_L and Q_R at the chosen speed, the
+    times a wheel is off its rail marked on the zero line.
+
+    Returns
+    -------
+    container : ipywidgets.VBox
+        The controls and the figure, to display.
+    update : callable
+        ``update(**values)`` sets controls, redraws and returns the PNG frame.
+    """
+    return WHEEL_UNLOADING.build()

@@ -135,6 +135,7 @@ ENTRIES = [
             "chapter05.wheelset_roots",
             "chapter06.ride_quality",
             "chapter06.rock_and_roll_widget",
+            "chapter06.wheel_unloading",
             "chapter07.bifurcation",
             "chapter07.car_roots",
             "chapter07.critical_curve",
