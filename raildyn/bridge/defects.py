@@ -30,8 +30,8 @@ class DippedJoint:
 
     r(x) is a V: from ``position − ramp`` it falls at α₁ to the depth α₁ · ramp at ``position``, then
     rises at α₂ back to the line. Its total angle 2α = α₁ + α₂ is the one of Jenkins et al. (1974).
-    (:func:`raildyn.track.dipped_joints` is the long-wave, periodic form of jointed rail for the vehicle's
-    ride; this one is the short, sharp dip that sets off the impact.)
+    (:func:`raildyn.track.deterministic.dipped_joints` is the long-wave, periodic form of jointed rail
+    for the vehicle's ride; this one is the short, sharp dip that sets off the impact.)
 
     Attributes
     ----------

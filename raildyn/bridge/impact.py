@@ -1,27 +1,31 @@
-"""A wheel rolling on a flexible track: the forces at a dipped joint, a wheel flat, rough rails (ch. 3, 10).
+"""Wheels rolling on a flexible track: the forces at a dipped joint, a wheel flat, rough rails (ch. 3, 10).
 
-Everywhere else in raildyn a wheel follows the rail. Here it does not: the wheel (its unsprung mass,
-and above it a share of the vehicle on its primary suspension) rests on the rail through the Hertz
-spring of chapter 4, F = C_H δ^{3/2} while the wheel presses on the rail (δ > 0) and F = 0 when it has
-lifted off, and the rail is the :class:`~raildyn.bridge.sleepers.DiscreteTrack`, bending between
-sleepers on pads and ballast. With z the wheel's and w(x) the rail's deflection (down positive, from
-where they stand unloaded), r(x) how far the running surface dips below its line (a dipped joint; a
-flat on the wheel reads as a dip that comes round once a revolution), and the wheel at x = x₀ + Vt:
+Everywhere else in raildyn a wheel follows the rail. Here it does not: each wheel rests on the rail
+through the Hertz spring of chapter 4, F = C_H u_N^{3/2} while it presses on the rail (u_N > 0) and
+F = 0 when it has lifted off, and the rail is the :class:`~raildyn.bridge.sleepers.DiscreteTrack`,
+bending between sleepers on pads and ballast. Above the contacts stands a linear block
+(:class:`~raildyn.bridge.wheels.WheelBlock`: one wheel's unsprung mass, with a share of the vehicle
+on a primary spring, or a whole vertical vehicle on its wheels), with coordinates x up positive from
+its static state, mass, damping and stiffness M_b, C_b, K_b. With w(x) the rail's deflection (down
+positive), r_s(x) how far the running surface dips below its line (a dipped joint; a flat on the
+wheel reads as a dip that comes round once a revolution), Q₀ᵢ each wheel's static load and wheel i at
+xᵢ = x₀ + Vt − dᵢ:
 
-    m_w z̈_w = W_w − F + k₁(z_s − z_w) + c₁(ż_s − ż_w),    m_s z̈_s = m_s g − k₁(z_s − z_w) − c₁(ż_s − ż_w),
-    M ü + C u̇ + K u = N(x)ᵀ F,     δ = z_w − N(x) u − r(x),
+    M_b ẍ + C_b ẋ + K_b x = Σᵢ eᵢ (Fᵢ − Q₀ᵢ),    M ü + C u̇ + K u = Σᵢ N(xᵢ)ᵀ Fᵢ,
+    Fᵢ = C_H max(z₀ᵢ − x_{cᵢ} − N(xᵢ) u − r_s(xᵢ), 0)^{3/2},
 
-N(x) the rail element's shape functions at the wheel and W_w the rest of the wheel's static load Q₀.
-A wheel running into a dip of total angle 2α = α₁ + α₂ meets a sudden change 2αV of the rail's
-vertical velocity: first the wheel and the rail beneath it bounce against each other on the stiff
-Hertz spring (the *P1* force, some 0.2–0.5 ms after the joint), then wheel and track move together
-on the track's stiffness (the *P2* force, a few milliseconds later), which loads sleepers and ballast
-(Jenkins, Stephenson, Clayton, Morland & Lyon 1974, *Railway Engineering Journal* 3(1), 2–16).
-Their estimate of P2, :func:`jenkins_p2`, comes from that second picture.
+N(x) the rail element's shape functions at a wheel, eᵢ the unit vector of wheel i's coordinate cᵢ and
+z₀ᵢ where it stands at rest. A wheel running into a dip of total angle 2α = α₁ + α₂ meets a sudden
+change 2αV of the rail's vertical velocity: first the wheel and the rail beneath it bounce against
+each other on the stiff Hertz spring (the *P1* force, within a millisecond or two of the joint), then
+wheel and track move together on the track's stiffness (the *P2* force, a few milliseconds later),
+which loads sleepers and ballast (Jenkins, Stephenson, Clayton, Morland & Lyon 1974, *Railway
+Engineering Journal* 3(1), 2–16). Their estimate of P2, :func:`jenkins_p2`, comes from that second
+picture.
 
 :func:`wheel_on_track` marches the equations (Newmark's average-acceleration rule, compiled; or, as
-the reference for the speed of the march, scipy's RK45 on the same equations) and returns a
-:class:`WheelOnTrack` with the contact force, P1 and P2, contact loss, the rail-seat (pad) and
+the reference for the march's answer and speed, scipy's RK45 on the same equations) and returns a
+:class:`WheelOnTrack` with each wheel's contact force, P1 and P2, contact loss, the rail-seat (pad) and
 ballast forces, and the energy balance. :func:`contact_force_spectrum` gives the linear answer for
 small roughness from the receptances.
 """
@@ -436,8 +440,9 @@ def contact_force_spectrum(wheel: Wheel, speed: float, psd, frequencies, *, trac
     """The wheel–rail force's spectrum from a roughness's, linearised: S_F = S_r(f) / |α_w + α_H + α_r|².
 
     For small roughness the Hertz spring acts as its tangent k_H = 1/α_H at the static load, and the
-    force that the roughness r drives between wheel (receptance α_w, :meth:`Wheel.receptance`) and rail
-    (α_r, the track's point receptance) is F = −r/(α_w + α_H + α_r): the three compliances in series.
+    force that the roughness r drives between wheel (receptance α_w,
+    :meth:`raildyn.bridge.wheels.Wheel.receptance`) and rail (α_r, the track's point receptance) is
+    F = −r/(α_w + α_H + α_r): the three compliances in series.
 
     Parameters
     ----------
@@ -446,7 +451,7 @@ def contact_force_spectrum(wheel: Wheel, speed: float, psd, frequencies, *, trac
         V, m/s, in (0, 150].
     psd : callable
         The roughness's one-sided spatial spectrum S(Ω), m²/(rad/m), Ω in rad/m (as
-        :func:`raildyn.track.synthesize_irregularity` takes it).
+        :func:`raildyn.track.synthesis.synthesize_irregularity` takes it).
     frequencies : array_like
         f, Hz, each in (0, 10 000].
     track : DiscreteTrack or LayeredTrack, optional

@@ -69,12 +69,12 @@ class Wheel:
 
     @property
     def hertz_constant(self) -> float:
-        """C_H of F = C_H δ^{3/2}, N/m^{3/2}: :func:`raildyn.contact.hertz_contact` at the static load."""
+        """C_H of F = C_H u_N^{3/2}, N/m^{3/2}, by :func:`raildyn.contact.hertz.hertz_contact` at Q₀."""
         return _hertz_constant(self.static_load, self.wheel_radius, self.rail_head_radius)
 
     @property
     def contact_stiffness(self) -> float:
-        """k_H = dF/dδ at the static load, (3/2) C_H^{2/3} Q₀^{1/3}, N/m."""
+        """k_H = dF/du_N at the static load, (3/2) C_H^{2/3} Q₀^{1/3}, N/m."""
         return 1.5 * self.hertz_constant ** (2 / 3) * self.static_load ** (1 / 3)
 
     def receptance(self, frequencies) -> np.ndarray:
@@ -242,7 +242,7 @@ class VehicleWheels:
 
 
 def _hertz_constant(load, wheel_radius, rail_head_radius) -> float:
-    """C_H = Q₀/u_N^{3/2}, u_N the Hertz approach at the load Q₀ (:func:`raildyn.contact.hertz_contact`)."""
+    """C_H = Q₀/u_N^{3/2}, u_N the Hertz approach at the load Q₀ (raildyn.contact.hertz.hertz_contact)."""
     from raildyn.contact import hertz_contact
 
     return load / hertz_contact(load, wheel_radius, math.inf, rail_head_radius).approach ** 1.5
