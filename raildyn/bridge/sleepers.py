@@ -30,7 +30,16 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.bridge import _band
-from raildyn.bridge.track import _RAIL_EI, _RAIL_MASS, _SEARCH, _SLEEPER, _SPACING, _frequencies, _turns
+from raildyn.bridge.track import (
+    _RAIL_EI,
+    _RAIL_MASS,
+    _SEARCH,
+    _SLEEPER,
+    _SPACING,
+    _draw_receptance,
+    _frequencies,
+    _turns,
+)
 
 __all__ = ["DiscreteResonances", "DiscreteTrack", "TrackMatrices"]
 
@@ -458,12 +467,6 @@ class DiscreteTrack:
         dict
             ``{"receptance": line}``.
         """
-        f = _frequencies(frequencies)
-        if f.min() <= 0.0:
-            raise ValueError(f"frequencies must be > 0 Hz on the log axis, got {f.min()!r}")
-        from raildyn import plots
-
-        return plots.movable_line(
-            ax, artists, "receptance", f, np.abs(self.receptance(f, position)), label=label, color=color,
-            xlabel="frequency f (Hz)", ylabel="|α| (m/N)", log=True,
-        )  # fmt: skip
+        return _draw_receptance(
+            frequencies, lambda f: self.receptance(f, position), ax, artists, label, color
+        )

@@ -277,15 +277,7 @@ class LayeredTrack:
         dict
             ``{"receptance": line}``.
         """
-        f = _frequencies(frequencies)
-        if f.min() <= 0.0:
-            raise ValueError(f"frequencies must be > 0 Hz on the log axis, got {f.min()!r}")
-        from raildyn import plots
-
-        return plots.movable_line(
-            ax, artists, "receptance", f, np.abs(self.receptance(f)), label=label, color=color,
-            xlabel="frequency f (Hz)", ylabel="|α| (m/N)", log=True,
-        )  # fmt: skip
+        return _draw_receptance(frequencies, self.receptance, ax, artists, label, color)
 
     @property
     def static_stiffness(self) -> float:
@@ -299,6 +291,20 @@ class LayeredTrack:
 
 
 _MAX_FREQUENCY = 1.0e4  # Hz: far above the pinned–pinned resonance, where the rail's cross-section deforms
+
+
+def _draw_receptance(frequencies, receptance, ax, artists, label, color) -> dict:
+    """|α(f)| of one track (``receptance(f)``) on log axes, or moved onto an earlier line: the one
+    drawing of both track models' ``plot_receptance``."""
+    f = _frequencies(frequencies)
+    if f.min() <= 0.0:
+        raise ValueError(f"frequencies must be > 0 Hz on the log axis, got {f.min()!r}")
+    from raildyn import plots
+
+    return plots.movable_line(
+        ax, artists, "receptance", f, np.abs(receptance(f)), label=label, color=color,
+        xlabel="frequency f (Hz)", ylabel="|α| (m/N)", log=True,
+    )  # fmt: skip
 
 
 def _frequencies(frequencies) -> np.ndarray:

@@ -199,38 +199,19 @@ def march(
     nw = watched.size
     rail_z, rail_v = np.zeros(2 * behind.size + 1), np.zeros(2 * behind.size + 1)
     forces, deflections, gen = np.zeros(ei.shape[0]), np.zeros(ei.shape[0]), np.zeros(n + 1)
-    k1v, k2v, k3v, k4v = np.zeros(n + 1), np.zeros(n + 1), np.zeros(n + 1), np.zeros(n + 1)
-    qs, vs, k2q, k3q = np.zeros(n + 1), np.zeros(n + 1), np.zeros(n + 1), np.zeros(n + 1)
+    kq, kv = np.zeros((4, n + 1)), np.zeros((4, n + 1))  # RK4's four stages of q̇ and v̇
+    qs, vs = np.zeros(n + 1), np.zeros(n + 1)
     extremes[0, :] = np.inf
     extremes[1, :] = -np.inf
     counts[:] = 0
     out = 0
     for step in range(steps + 1):
         t = step * dt
-        _acceleration(
-            t,
-            q,
-            v,
-            mass,
-            dofs,
-            ei,
-            ef,
-            eps,
-            speed,
-            behind,
-            rail_length,
-            spacing,
-            table,
-            rail_z,
-            rail_v,
-            forces,
-            deflections,
-            gen,
-            k1v,
-        )
+        _acceleration(t, q, v, mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing, table, rail_z,
+                      rail_v, forces, deflections, gen, kv[0])  # fmt: skip
         finite = True
         for i in range(n):
-            if not (np.isfinite(q[i]) and np.isfinite(v[i]) and np.isfinite(k1v[i])):
+            if not (np.isfinite(q[i]) and np.isfinite(v[i]) and np.isfinite(kv[0, i])):
                 finite = False
         if not finite:
             return step
@@ -264,82 +245,17 @@ def march(
             counts[nw + 2] += bearer
         if step == steps:
             break
-        # RK4 on (q, v): k_q = v, k_v = a(t, q, v)
+        # RK4 on (q, v): k_q = v, k_v = a(t, q, v); stages 2-4 from the one before, at ½, ½ and 1 step.
+        kq[0, :] = v
+        for stage in range(1, 4):
+            c = 0.5 if stage < 3 else 1.0
+            for i in range(n):
+                qs[i] = q[i] + c * dt * kq[stage - 1, i]
+                vs[i] = v[i] + c * dt * kv[stage - 1, i]
+            _acceleration(t + c * dt, qs, vs, mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing,
+                          table, rail_z, rail_v, forces, deflections, gen, kv[stage])  # fmt: skip
+            kq[stage, :] = vs
         for i in range(n):
-            qs[i] = q[i] + 0.5 * dt * v[i]
-            vs[i] = v[i] + 0.5 * dt * k1v[i]
-        _acceleration(
-            t + 0.5 * dt,
-            qs,
-            vs,
-            mass,
-            dofs,
-            ei,
-            ef,
-            eps,
-            speed,
-            behind,
-            rail_length,
-            spacing,
-            table,
-            rail_z,
-            rail_v,
-            forces,
-            deflections,
-            gen,
-            k2v,
-        )
-        k2q[:] = vs
-        for i in range(n):
-            qs[i] = q[i] + 0.5 * dt * k2q[i]
-            vs[i] = v[i] + 0.5 * dt * k2v[i]
-        _acceleration(
-            t + 0.5 * dt,
-            qs,
-            vs,
-            mass,
-            dofs,
-            ei,
-            ef,
-            eps,
-            speed,
-            behind,
-            rail_length,
-            spacing,
-            table,
-            rail_z,
-            rail_v,
-            forces,
-            deflections,
-            gen,
-            k3v,
-        )
-        k3q[:] = vs
-        for i in range(n):
-            qs[i] = q[i] + dt * k3q[i]
-            vs[i] = v[i] + dt * k3v[i]
-        _acceleration(
-            t + dt,
-            qs,
-            vs,
-            mass,
-            dofs,
-            ei,
-            ef,
-            eps,
-            speed,
-            behind,
-            rail_length,
-            spacing,
-            table,
-            rail_z,
-            rail_v,
-            forces,
-            deflections,
-            gen,
-            k4v,
-        )
-        for i in range(n):
-            q[i] += dt / 6.0 * (v[i] + 2.0 * k2q[i] + 2.0 * k3q[i] + vs[i])
-            v[i] += dt / 6.0 * (k1v[i] + 2.0 * k2v[i] + 2.0 * k3v[i] + k4v[i])
+            q[i] += dt / 6.0 * (kq[0, i] + 2.0 * kq[1, i] + 2.0 * kq[2, i] + kq[3, i])
+            v[i] += dt / 6.0 * (kv[0, i] + 2.0 * kv[1, i] + 2.0 * kv[2, i] + kv[3, i])
     return -1
