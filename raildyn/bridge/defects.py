@@ -66,7 +66,18 @@ class DippedJoint:
         return self.angles[0] * self.ramp
 
     def profile(self, x) -> tuple[np.ndarray, np.ndarray]:
-        """(r, dr/dx) at x (m; any shape): the dip below the rail's line, m (down positive), and its slope."""
+        """The dip below the rail's line and its slope along the track.
+
+        Parameters
+        ----------
+        x : array_like
+            Positions along the track, m; any shape, not empty.
+
+        Returns
+        -------
+        (ndarray, ndarray)
+            r_s (m, down positive) and dr_s/dx, each shaped like ``x``.
+        """
         x = _checks.array("x", x, allow_empty=False)
         a1, a2 = self.angles
         s = x - self.position
@@ -110,7 +121,18 @@ class WheelFlat:
         return math.sqrt(16.0 * self.wheel_radius * self.depth)
 
     def profile(self, x) -> tuple[np.ndarray, np.ndarray]:
-        """(r, dr/dx) at the wheel's position x (m; any shape), as :meth:`DippedJoint.profile`."""
+        """How far the wheel's centre drops, as a dip in the rail would make it, and its slope.
+
+        Parameters
+        ----------
+        x : array_like
+            The wheel's positions along the track, m; any shape, not empty.
+
+        Returns
+        -------
+        (ndarray, ndarray)
+            r_s (m, down positive) and dr_s/dx, each shaped like ``x``.
+        """
         s = np.mod(_checks.array("x", x, allow_empty=False) - self.first, 2.0 * np.pi * self.wheel_radius)
         inside = s < self.length
         k = 2.0 * np.pi / self.length
@@ -142,7 +164,18 @@ class Roughness:
         object.__setattr__(self, "r", r)
 
     def profile(self, x) -> tuple[np.ndarray, np.ndarray]:
-        """(r, dr/dx) at x (m; any shape); zero outside the sampled stretch."""
+        """The sampled roughness, interpolated, and its slope; zero outside the sampled stretch.
+
+        Parameters
+        ----------
+        x : array_like
+            Positions along the track, m; any shape, not empty.
+
+        Returns
+        -------
+        (ndarray, ndarray)
+            r_s (m, down positive) and dr_s/dx, each shaped like ``x``.
+        """
         x = _checks.array("x", x, allow_empty=False)
         r = np.interp(x, self.x, self.r, left=0.0, right=0.0)
         i = np.clip(np.searchsorted(self.x, x) - 1, 0, self.x.size - 2)

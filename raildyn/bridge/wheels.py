@@ -100,7 +100,13 @@ class Wheel:
         return 1.0 / dynamic
 
     def block(self) -> WheelBlock:
-        """The wheel (and its sprung mass) as the linear block above the contact (:class:`WheelBlock`)."""
+        """The wheel (and its sprung mass) as the linear block above the contact.
+
+        Returns
+        -------
+        WheelBlock
+            Coordinates [wheel] or [wheel, sprung mass], up positive.
+        """
         one = np.array([[1.0, -1.0], [-1.0, 1.0]])
         if self.sprung_mass > 0.0:
             mass = np.diag([self.unsprung_mass, self.sprung_mass])
