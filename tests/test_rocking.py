@@ -8,7 +8,6 @@ from raildyn.errors import SolverError
 from raildyn.suspension import coulomb_friction
 from raildyn.vehicles import RockingFreightCar, VerticalFreightCar, rocking_run, rocking_runs, rocking_sweep
 from raildyn.vehicles import _rocking_kernel as kernel
-from raildyn.vehicles import rocking as rocking_module
 
 CAR = RockingFreightCar()
 ZERO = np.zeros(18)
@@ -54,7 +53,7 @@ def _free_march(car, q0, v0, dt, duration):
 def _energy(car, q, v):
     """Kinetic energy plus every element's potential (springs, contacts, weights), J."""
     mass, _, ei, ef, _ = car._tables()
-    _, _, delta = rocking_module._evaluate(car, q, v, np.zeros(8), np.zeros(8))
+    _, _, delta = kernel.evaluate(car, q, v, np.zeros(8), np.zeros(8))
     P0, k = ef[:, kernel.PRELOAD], ef[:, kernel.STIFFNESS]
     one_sided = ei[:, kernel.KIND] == 1
     elastic = P0 + k * delta

@@ -33,7 +33,15 @@ import numpy as np
 
 from raildyn._compiled import formula
 
-__all__ = ["compiled_forces", "element_forces", "march"]
+__all__ = ["LABELS", "compiled_forces", "element_forces", "evaluate", "march"]
+
+# The 18 coordinates, in the order of the kernel's arrays.
+LABELS = (
+    ("body z", "body θ", "body φ", "body y")
+    + tuple(f"bolster {i} {c}" for i in (1, 2) for c in ("z", "φ", "y"))
+    + tuple(f"wheelset {j} {c}" for j in (1, 2, 3, 4) for c in ("z", "φ"))
+)
+
 
 # Columns of the integer element table.
 KIND, DIRECTION, BODY_A, BODY_B, BODY_B2, RAIL = range(6)
@@ -259,3 +267,25 @@ def march(
             q[i] += dt / 6.0 * (kq[0, i] + 2.0 * kq[1, i] + 2.0 * kq[2, i] + kq[3, i])
             v[i] += dt / 6.0 * (kv[0, i] + 2.0 * kv[1, i] + 2.0 * kv[2, i] + kv[3, i])
     return -1
+
+
+def evaluate(car, q, v, rail_z, rail_v):
+    """(generalized forces (18,), element forces, element deflections) of a
+    :class:`~raildyn.vehicles.rocking.RockingFreightCar` in state (q, v) on rails (rail_z, rail_v), by the
+    law called from numpy."""
+    mass, dofs, ei, ef, _ = car._tables()
+    element, deflection, gen = np.zeros(len(ei)), np.zeros(len(ei)), np.zeros(19)
+    compiled_forces(
+        np.append(q, 0.0),
+        np.append(v, 0.0),
+        np.append(rail_z, 0.0),
+        np.append(rail_v, 0.0),
+        dofs,
+        ei,
+        ef,
+        car.velocity_scale,
+        element,
+        deflection,
+        gen,
+    )
+    return gen[:18], element, deflection

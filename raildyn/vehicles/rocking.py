@@ -41,11 +41,7 @@ if TYPE_CHECKING:
 
 __all__ = ["LABELS", "RockingFreightCar", "TRACK_STIFFNESS"]
 
-LABELS = (
-    ("body z", "body θ", "body φ", "body y")
-    + tuple(f"bolster {i} {c}" for i in (1, 2) for c in ("z", "φ", "y"))
-    + tuple(f"wheelset {j} {c}" for j in (1, 2, 3, 4) for c in ("z", "φ"))
-)
+LABELS = kernel.LABELS
 """The names of the 18 coordinates: the body's height, pitch, roll and sway, each bolster's height, roll
 and sway, each wheelset's height and roll (wheelsets leading first), m and rad."""
 
@@ -407,7 +403,7 @@ class RockingFreightCar:
         v = _checks.array("v", v, shape=(18,))
         z = np.zeros(8) if rail_heights is None else _checks.array("rail_heights", rail_heights, shape=(8,))
         zd = np.zeros(8) if rail_rates is None else _checks.array("rail_rates", rail_rates, shape=(8,))
-        return _evaluate(self, q, v, z, zd)[:2]
+        return kernel.evaluate(self, q, v, z, zd)[:2]
 
     # ------------------------------------------------------------------------------------- linearisation
 
@@ -560,23 +556,3 @@ class RockingFreightCar:
         from raildyn.vehicles import rocking_analysis
 
         return rocking_analysis.threshold(self, "plate_lift")
-
-
-def _evaluate(car: RockingFreightCar, q, v, rail_z, rail_v):
-    """(generalized forces (18,), element forces, element deflections) by the kernel's law."""
-    mass, dofs, ei, ef, _ = car._tables()
-    element, deflection, gen = np.zeros(len(ei)), np.zeros(len(ei)), np.zeros(19)
-    kernel.compiled_forces(
-        np.append(q, 0.0),
-        np.append(v, 0.0),
-        np.append(rail_z, 0.0),
-        np.append(rail_v, 0.0),
-        dofs,
-        ei,
-        ef,
-        car.velocity_scale,
-        element,
-        deflection,
-        gen,
-    )
-    return gen[:18], element, deflection

@@ -16,7 +16,6 @@ from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
 from raildyn.linear_model import SystemMatrices
 from raildyn.vehicles import _rocking_kernel as kernel
-from raildyn.vehicles.rocking import LABELS, _evaluate
 
 __all__ = ["StaticRoll"]
 
@@ -117,7 +116,7 @@ def static_roll(car, roll_moment: float = 0.0, lateral_acceleration: float = 0.0
     # a contact's elastic force P₀ + k δ, which goes negative once it has separated
     elastic = (
         ef[:16, kernel.PRELOAD]
-        + ef[:16, kernel.STIFFNESS] * _evaluate(free, q, v0, np.zeros(8), np.zeros(8))[2][:16]
+        + ef[:16, kernel.STIFFNESS] * kernel.evaluate(free, q, v0, np.zeros(8), np.zeros(8))[2][:16]
     )
     return StaticRoll(
         M,
@@ -240,4 +239,4 @@ def linearize(car, engaged: bool) -> SystemMatrices:
         if rail < 8:  # δ = rail − Z_A: a rail rising by w pushes A with k w + c ẇ
             GK[:, rail] = -k * g
             GC[:, rail] = -ef[e, kernel.DAMPING] * g
-    return SystemMatrices(np.diag(mass), C, K, GK, GC, LABELS, 1.0)
+    return SystemMatrices(np.diag(mass), C, K, GK, GC, kernel.LABELS, 1.0)
