@@ -1,4 +1,5 @@
-"""Command line: ``python -m raildyn figures --out DIR`` writes the registered figures."""
+"""Command line: ``python -m raildyn figures --out DIR`` writes the registered figures;
+``python -m raildyn mark ANSWERS.csv KEY.py --out MARKS.csv`` marks a class's answers."""
 
 from __future__ import annotations
 
@@ -14,7 +15,13 @@ def main(argv: list[str] | None = None) -> int:
     fig.add_argument("--format", nargs="+", default=["png"], help="file formats, e.g. png svg pdf")
     fig.add_argument("--only", nargs="+", metavar="ID", help="only these figure ids")
     fig.add_argument("--list", action="store_true", help="list the figure ids and captions, write nothing")
+    grade = sub.add_parser("mark", help="mark a class's answers (CSV: student, exercise, answer)")
+    grade.add_argument("answers", help="the class's answers, a CSV file with a header row")
+    grade.add_argument("key", help="a Python file whose EXERCISES lists the raildyn.course.Exercise objects")
+    grade.add_argument("--out", default="marks.csv", help="where to write the marks (default: marks.csv)")
     args = parser.parse_args(argv)
+    if args.command == "mark":
+        return _mark(parser, args)
 
     import matplotlib
 
@@ -32,6 +39,31 @@ def main(argv: list[str] | None = None) -> int:
         parser.error(str(err))
     for path in paths:
         print(path)
+    return 0
+
+
+def _mark(parser, args) -> int:
+    """The ``mark`` command: load KEY.py's EXERCISES, mark, print each student's score."""
+    import importlib.util
+
+    from raildyn import course
+
+    spec = importlib.util.spec_from_file_location("raildyn_marking_key", args.key)
+    if spec is None or not args.key.endswith(".py"):
+        parser.error(f"key must be a Python file, got {args.key!r}")
+    key = importlib.util.module_from_spec(spec)
+    try:
+        spec.loader.exec_module(key)
+        exercises = key.EXERCISES
+    except (OSError, AttributeError) as err:
+        parser.error(f"key {args.key!r} must define EXERCISES: {err}")
+    try:
+        totals = course.mark_csv(args.answers, exercises, args.out)
+    except (ValueError, TypeError) as err:
+        parser.error(str(err))
+    for student, score in sorted(totals.items()):
+        print(f"{student}: {score} of {len(exercises)}")
+    print(f"marks written to {args.out}")
     return 0
 
 
