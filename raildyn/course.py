@@ -125,9 +125,8 @@ def check(answer, expected, *, rtol: float = 0.01, atol: float = 0.0) -> Verdict
             return Verdict(
                 False, a, e, "the square root of the answer: an RMS value where a variance was asked?"
             )
-    off = abs(a - e) / abs(e) if e != 0.0 else math.inf
     tolerance = f"{100 * rtol:g} %" + (f" and {atol:g}" if atol else "")
-    words = f"{100 * off:.3g} %" if math.isfinite(off) else "off"
+    words = f"{100 * abs(a - e) / abs(e):.3g} %" if e != 0.0 else f"{abs(a):.3g} from zero"
     return Verdict(False, a, e, f"off by {words} (tolerance {tolerance}): check the method, not a unit")
 
 

@@ -39,6 +39,7 @@ def test_a_right_answer_within_its_tolerance():
     assert course.check(1.59, 1.5, rtol=0.0, atol=0.1).correct
     # A slip outside the tolerance is not named: 2π·1.5 off by 5 % is just off.
     assert "off by" in course.check(1.05 * 2 * math.pi * 1.5, 1.5).reason
+    assert "0.2 from zero" in course.check(0.2, 0.0, atol=0.1).reason
 
 
 def test_each_student_has_their_own_values_and_answer():
