@@ -36,6 +36,7 @@ from raildyn.bridge.coupled import BridgeCrossing, crossing
 from raildyn.bridge.defects import DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.impact import (
     WheelOnTrack,
+    contact_compliance,
     contact_force_spectrum,
     jenkins_p2,
     lumped_track,
@@ -81,6 +82,7 @@ __all__ = [
     "beam_receptance",
     "cancellation_spans",
     "comfort_acceleration_limit",
+    "contact_compliance",
     "contact_force_spectrum",
     "crossing",
     "deck_acceleration_limit",

@@ -46,6 +46,7 @@ from raildyn.errors import SolverError
 
 __all__ = [
     "WheelOnTrack",
+    "contact_compliance",
     "contact_force_spectrum",
     "jenkins_p2",
     "lumped_track",
@@ -465,12 +466,41 @@ def contact_force_spectrum(wheel: Wheel, speed: float, psd, frequencies, *, trac
     ndarray
         S_F, N²/Hz, one-sided, one per frequency.
     """
-    from raildyn.bridge.track import LayeredTrack
     from raildyn.track import temporal_psd
+
+    V = _checks.speed("speed", speed, high=150.0)
+    f = _checks.array("frequencies", frequencies, ndim=1, low=0.0, low_open=True, allow_empty=False)
+    compliance = contact_compliance(wheel, f, track=track, position=position)
+    roughness = 2 * np.pi * temporal_psd(psd, V)(2 * np.pi * f)  # per Hz
+    return roughness / np.abs(compliance) ** 2
+
+
+def contact_compliance(wheel: Wheel, frequencies, *, track=None, position=None) -> np.ndarray:
+    """α_w + 1/k_H + α_r: the wheel's, the contact's and the rail's compliances in series, m/N (complex).
+
+    The roughness r_s drives the force F = −r_s/(α_w + 1/k_H + α_r) between wheel and rail
+    (:func:`contact_force_spectrum`); |1/compliance| is that force per metre of roughness.
+
+    Parameters
+    ----------
+    wheel : Wheel
+    frequencies : array_like
+        f, Hz, a non-empty 1-D array, each in (0, 10 000].
+    track : DiscreteTrack or LayeredTrack, optional
+        Default ``DiscreteTrack()``.
+    position : float, optional
+        For a DiscreteTrack, where the wheel stands, m; as for
+        :meth:`~raildyn.bridge.sleepers.DiscreteTrack.receptance`.
+
+    Returns
+    -------
+    ndarray of complex
+        One per frequency.
+    """
+    from raildyn.bridge.track import LayeredTrack
 
     if not isinstance(wheel, Wheel):
         raise TypeError(f"wheel must be a Wheel, got {type(wheel).__name__}")
-    V = _checks.speed("speed", speed, high=150.0)
     f = _checks.array("frequencies", frequencies, ndim=1, low=0.0, low_open=True, allow_empty=False)
     track = DiscreteTrack() if track is None else track
     if isinstance(track, DiscreteTrack):
@@ -479,8 +509,7 @@ def contact_force_spectrum(wheel: Wheel, speed: float, psd, frequencies, *, trac
         rail = track.receptance(f)
     else:
         raise TypeError(f"track must be a DiscreteTrack or a LayeredTrack, got {type(track).__name__}")
-    roughness = 2 * np.pi * temporal_psd(psd, V)(2 * np.pi * f)  # per Hz
-    return roughness / np.abs(wheel.receptance(f) + 1.0 / wheel.contact_stiffness + rail) ** 2
+    return wheel.receptance(f) + 1.0 / wheel.contact_stiffness + rail
 
 
 def lumped_track(track: DiscreteTrack, position=None, band=(5.0, 60.0)) -> tuple[float, float, float]:

@@ -138,4 +138,9 @@ ENTRIES = [
         lambda: call(SMALL, 2.2, (5.0, 60.0)),
         accepts={"position": "none tiny zero", "band": "list"},
     ),
+    fuzz(
+        "raildyn.bridge.impact.contact_compliance",
+        lambda: call(Wheel(), [50.0, 200.0], track=SMALL),
+        accepts={"track": "none", "position": "none", "frequencies": "big mm tiny list"},
+    ),
 ]
