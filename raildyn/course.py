@@ -10,13 +10,25 @@
 * :func:`mark` and :func:`mark_csv` mark a class's answers (a CSV of student, exercise, answer), and
   ``python -m raildyn mark ANSWERS.csv KEY.py`` does so from the command line, KEY.py listing the
   exercises as ``EXERCISES``.
+* :func:`check_matrices` holds the matrices a student derived (with
+  :func:`raildyn.derivations.lagrange`) to a model's, entry by entry, and names the first entry that
+  is off and the likely slip.
+* :class:`SelfCheck` is a question that answers in the page itself, without a kernel: the static book,
+  the lecture-room app and JupyterLab alike check a number (with :func:`check`'s slips) or a choice
+  in the page's JavaScript.
+* ``%load_ext raildyn.course`` gives the cell magic ``%%answer``: a worked answer whose output stays
+  folded under "Show the answer" when the notebook is run, in JupyterLab as in the lecture-room app.
 """
 
 from __future__ import annotations
 
 import csv
 import hashlib
+import html
+import itertools
+import json
 import math
+import sys
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -26,7 +38,7 @@ import numpy as np
 from raildyn import _checks
 from raildyn.constants import GRAVITY
 
-__all__ = ["Exercise", "Mark", "Verdict", "check", "mark", "mark_csv"]
+__all__ = ["Exercise", "Mark", "SelfCheck", "Verdict", "check", "check_matrices", "mark", "mark_csv"]
 
 #: The slips :func:`check` recognises: the factor between the answer given and the one expected, and
 #: what it most often means.
@@ -128,6 +140,99 @@ def check(answer, expected, *, rtol: float = 0.01, atol: float = 0.0) -> Verdict
     tolerance = f"{100 * rtol:g} %" + (f" and {atol:g}" if atol else "")
     words = f"{100 * abs(a - e) / abs(e):.3g} %" if e != 0.0 else f"{abs(a):.3g} from zero"
     return Verdict(False, a, e, f"off by {words} (tolerance {tolerance}): check the method, not a unit")
+
+
+_MATRICES = ("M", "C", "K", "GK", "GC")
+
+
+def _numbers(name: str, matrix, values: Mapping) -> np.ndarray:
+    """A derived matrix as floats: sympy's with ``values`` put in, anything else as an array."""
+    if type(matrix).__module__.startswith("sympy"):
+        matrix = matrix.xreplace(values)
+        left = sorted(str(s) for s in matrix.free_symbols)
+        if left:
+            raise ValueError(f"derived {name} still holds the symbols {left}: give their numbers in values")
+        matrix = np.array(matrix.evalf().tolist(), dtype=float)
+    return _checks.array(f"derived {name}", matrix, ndim=2)
+
+
+def check_matrices(derived, model, values: Mapping | None = None, *, rtol: float = 1e-6) -> Verdict:
+    """Hold the matrices a student derived to a model's, entry by entry, and name the first entry that is off.
+
+    Parameters
+    ----------
+    derived : sequence of sympy.Matrix or array_like
+        (M, C, K) or (M, C, K, GK, GC), as :func:`raildyn.derivations.lagrange` returns them.
+    model : SystemMatrices or sequence of array_like
+        The model's matrices at the same speed: a linear model's ``matrices(speed)`` (whose labels
+        name the entries) or (M, C, K) or (M, C, K, GK, GC). Only the matrices both hold are compared.
+    values : mapping of sympy.Symbol to float, optional
+        The number of each symbol left in ``derived`` (the model's parameters, the speed).
+    rtol : float
+        An entry is right when it lies within rtol × (the largest entry of that matrix of the model's)
+        of the model's entry, in [0, 1]. Default 1e-6: the algebra must be exact, the numbers are.
+
+    Returns
+    -------
+    Verdict
+        Right when every entry is; otherwise ``answer`` and ``expected`` are the first wrong entry's
+        two values (matrices in the order M, C, K, G_K, G_C, rows first) and ``reason`` names the entry
+        and the slip, e.g. "K[y, psi]: the sign is wrong: …".
+
+    Examples
+    --------
+    >>> import sympy
+    >>> from raildyn.derivations import coordinates, lagrange
+    >>> m, k = sympy.symbols("m k", positive=True)
+    >>> (x,) = coordinates("x")
+    >>> mine = lagrange(m * x.diff() ** 2 / 2, k * x**2 / 2, 0, [x])
+    >>> print(check_matrices(mine, ([[2.0]], [[0.0]], [[-8.0]]), {m: 2.0, k: 8.0}))
+    ✗ 8 (expected -8): K[0, 0]: the sign is wrong: which way is the quantity positive?
+    """
+    if values is None:
+        values = {}
+    if not isinstance(values, Mapping):
+        raise TypeError(f"values must map sympy symbols to numbers, got {type(values).__name__}")
+    rtol = _checks.scalar("rtol", rtol, low=0.0, high=1.0)
+    if all(hasattr(model, key) for key in ("M", "C", "K")):
+        theirs = [getattr(model, key) for key in _MATRICES if hasattr(model, key)]
+        labels = tuple(getattr(model, "labels", ()))
+    elif isinstance(model, Iterable) and not isinstance(model, str | bytes):
+        theirs, labels = list(model), ()
+    else:
+        raise TypeError(f"model must be a model's matrices(speed) or (M, C, K[, GK, GC]), got {model!r:.80}")
+    if isinstance(derived, str | bytes) or not isinstance(derived, Iterable):
+        raise TypeError(f"derived must be (M, C, K) or (M, C, K, GK, GC), got {derived!r:.80}")
+    mine = list(derived)
+    for name, given in (("derived", mine), ("model", theirs)):
+        if len(given) not in (3, 5):
+            raise ValueError(f"{name} must hold 3 matrices (M, C, K) or 5 (with GK, GC), got {len(given)}")
+    pairs = []
+    for name, a, b in zip(_MATRICES, mine, theirs, strict=False):
+        pairs.append((name, _numbers(name, a, values), _checks.array(f"model {name}", b, ndim=2)))
+    checked = 0
+    for name, a, b in pairs:
+        if a.shape != b.shape:
+            return Verdict(
+                False, float(a.size), float(b.size),
+                f"{name} is {a.shape[0]}×{a.shape[1]}, the model's {b.shape[0]}×{b.shape[1]}: "
+                "a coordinate (or an input) missing or extra?",
+            )  # fmt: skip
+        atol = rtol * max(float(np.abs(b).max(initial=0.0)), np.finfo(float).tiny)
+        for i, j in itertools.product(*map(range, a.shape)):
+            checked += 1
+            if _close(a[i, j], b[i, j], 0.0, atol):
+                continue
+            if name == "M" and np.allclose(np.sort(np.diag(a)), np.sort(np.diag(b)), rtol=rtol, atol=atol):
+                return Verdict(
+                    False, a[i, j], b[i, j],
+                    f"the coordinates are in another order than the model's {labels or ''}".rstrip(),
+                )  # fmt: skip
+            rows = labels if len(labels) == a.shape[0] else range(a.shape[0])
+            columns = labels if name in ("M", "C", "K") and len(labels) == a.shape[1] else range(a.shape[1])
+            slip = check(a[i, j], b[i, j], rtol=rtol, atol=atol).reason
+            return Verdict(False, a[i, j], b[i, j], f"{name}[{list(rows)[i]}, {list(columns)[j]}]: {slip}")
+    return Verdict(True, float(checked), float(checked), "right")
 
 
 def _seed(student: str, exercise: str) -> int:
@@ -366,3 +471,179 @@ def mark_csv(answers, exercises, out) -> dict:
             writer.writerow([m.student, m.exercise, m.answer, expected, int(m.correct), m.reason])
             totals[m.student] = totals.get(m.student, 0) + int(m.correct)
     return totals
+
+
+# --------------------------------------------------------------------------- on the page, without a kernel
+
+# The page's check of a number: the same rules as check() (the tolerance, then the sign, then SLIPS,
+# then a square or a square root), in JavaScript so that the static book answers with no kernel.
+_SELF_CHECK_JS = """(function () {
+  const box = document.getElementById(%(id)s), spec = %(spec)s;
+  const say = box.querySelector('.raildyn-selfcheck-verdict');
+  const close = (a, b, rtol, atol) => Math.abs(a - b) <= atol + rtol * Math.abs(b);
+  function verdict(a) {
+    const e = spec.expected, r = spec.rtol, t = spec.atol;
+    if (close(a, e, r, t)) return [true, 'right'];
+    if (e !== 0 && close(-a, e, r, t)) return [false, 'the sign is wrong: which way is the quantity positive?'];
+    for (const [factor, why] of spec.slips) {
+      if (e !== 0 && close(a, factor * e, r, t * factor)) return [false, why];
+      if (e !== 0 && close(-a, factor * e, r, t * factor)) return [false, why + ' (and the sign is wrong)'];
+    }
+    if (e > 0 && a > 0 && close(a, e * e, r, t)) return [false, 'the square of the answer: a variance where an RMS value was asked?'];
+    if (e > 0 && a > 0 && close(a * a, e, r, t)) return [false, 'the square root of the answer: an RMS value where a variance was asked?'];
+    return [false, 'not yet: check the method, not a unit'];
+  }
+  box.querySelector('button').addEventListener('click', () => {
+    let right, why;
+    if (spec.choices) {
+      const picked = box.querySelector('input[type=radio]:checked');
+      if (!picked) { say.textContent = 'Pick one first.'; return; }
+      right = Number(picked.value) === spec.right;
+      why = right ? 'right' : 'not that one: think again';
+    } else {
+      const a = Number(box.querySelector('input').value.replace(',', '.').replace('\\u2212', '-'));
+      if (!Number.isFinite(a) || box.querySelector('input').value.trim() === '') { say.textContent = 'Type a number first.'; return; }
+      [right, why] = verdict(a);
+    }
+    say.textContent = (right ? '\\u2713 ' : '\\u2717 ') + why + (right && spec.why ? ' ' + spec.why : '');
+    say.dataset.right = right;
+  });
+})();"""
+
+_SELF_CHECKS = itertools.count()
+
+
+@dataclass(frozen=True, repr=False)
+class SelfCheck:
+    """A question that checks its answer in the page: a number within a tolerance, or one choice of several.
+
+    Displayed in a notebook (its ``_repr_html_``), it is a question, an answer box and a "Check"
+    button; the check runs in the page's JavaScript, so it answers in the static book, in the
+    lecture-room app and in JupyterLab alike, with no kernel. A number is held as :func:`check` holds
+    it and a wrong one meets the same slips (the sign, 2π, a unit, a factor two).
+
+    Attributes
+    ----------
+    question : str
+        What is asked (not empty; HTML is escaped, $…$ mathematics is kept for the page's MathJax).
+    expected : float or None
+        The right number, finite, in ``unit``; None for a choice.
+    unit : str
+        The unit the answer is asked in, shown beside the box (may be empty).
+    rtol, atol : float
+        The tolerance of a number, as for :func:`check`. Default 2 % and 0.
+    choices : tuple of str
+        For a choice: the options (at least two, different); empty for a number.
+    right : int or None
+        For a choice: the index of the right option.
+    why : str
+        Shown after a right answer: the reason in a sentence (may be empty).
+    """
+
+    question: str
+    expected: float | None = None
+    unit: str = ""
+    rtol: float = 0.02
+    atol: float = 0.0
+    choices: tuple = ()
+    right: int | None = None
+    why: str = ""
+
+    def __post_init__(self):
+        if not isinstance(self.question, str) or not self.question.strip():
+            raise ValueError(f"question must be a non-empty string, got {self.question!r}")
+        for key in ("unit", "why"):
+            if not isinstance(getattr(self, key), str):
+                raise TypeError(f"{key} must be a string, got {type(getattr(self, key)).__name__}")
+        _checks.scalar("rtol", self.rtol, low=0.0, high=1.0)
+        _checks.nonnegative("atol", self.atol)
+        if not isinstance(self.choices, tuple | list):
+            raise TypeError(f"choices must be a tuple of strings (empty for a number), got {self.choices!r:.60}")
+        if self.choices:
+            choices = _checks.strings("choices", self.choices, unique=True)
+            if len(choices) < 2:
+                raise ValueError(f"choices must offer at least two options, got {len(choices)}")
+            if self.expected is not None:
+                raise ValueError(f"expected must be None for a choice, got {self.expected!r}")
+            _checks.integer("right", self.right, low=0, high=len(choices) - 1)
+        else:
+            if self.expected is None:
+                raise ValueError("expected must be a number for a question without choices, got None")
+            _checks.scalar("expected", self.expected)
+            if self.right is not None:
+                raise ValueError(f"right must be None for a number (no choices), got {self.right!r}")
+
+    def __repr__(self) -> str:  # the question only: a plain-text display must not give the answer away
+        return f"SelfCheck({self.question!r})"
+
+    def _repr_html_(self) -> str:
+        box = f"raildyn-selfcheck-{next(_SELF_CHECKS)}-{_seed('', self.question) % 10**8}"
+        spec = {"rtol": self.rtol, "atol": self.atol, "why": self.why, "slips": SLIPS}
+        if self.choices:
+            spec |= {"choices": len(self.choices), "right": self.right}
+            field_ = "".join(
+                f'<label><input type="radio" name="{box}" value="{i}"> {html.escape(c)}</label><br>'
+                for i, c in enumerate(self.choices)
+            )
+        else:
+            spec["expected"] = float(self.expected)
+            unit = f" {html.escape(self.unit)}" if self.unit else ""
+            field_ = f'<input type="text" inputmode="decimal" size="12" aria-label="your answer">{unit} '
+        script = _SELF_CHECK_JS % {"id": json.dumps(box), "spec": json.dumps(spec)}
+        return (
+            f'<div class="raildyn-selfcheck" id="{box}"><p><b>Check yourself:</b> {html.escape(self.question)}'
+            f"</p><p>{field_}<button>Check</button></p>"
+            f'<p class="raildyn-selfcheck-verdict" aria-live="polite"></p><script>{script}</script></div>'
+        )
+
+
+# What a folded answer's summary says (the page shows it; the answer's output is under it).
+ANSWER_FOLD = "Show the answer"
+
+
+def _fold(captured) -> str:
+    """The captured output of an answer as HTML folded under :data:`ANSWER_FOLD`."""
+    parts = [f"<pre>{html.escape(captured.stdout)}</pre>"] if captured.stdout.strip() else []
+    for output in captured.outputs:
+        data = output.data
+        if "text/html" in data:
+            parts.append(data["text/html"])
+        elif "image/png" in data:
+            parts.append(f'<img src="data:image/png;base64,{data["image/png"]}" alt="the answer\'s figure">')
+        elif "image/svg+xml" in data:
+            parts.append(data["image/svg+xml"])
+        else:
+            parts.append(f"<pre>{html.escape(data.get('text/plain', ''))}</pre>")
+    return f'<details class="raildyn-answer"><summary>{ANSWER_FOLD}</summary>{"".join(parts)}</details>'
+
+
+def _answer(line: str, cell: str) -> None:
+    """``%%answer``: run the cell, then show what it printed and drew folded, under "Show the answer".
+
+    JupyterLab unfolds a cell's outputs whenever the cell runs, so a worked answer hidden by the
+    notebook's metadata would show after "Run All"; folded in its own output it stays hidden until
+    opened, there and in the lecture-room app. An error is shown unfolded and fails the cell.
+    """
+    from IPython import get_ipython
+    from IPython.display import HTML, display
+    from IPython.utils.capture import capture_output
+
+    if line.strip():
+        raise ValueError(f"%%answer takes no arguments, got {line.strip()!r}")
+    shell = get_ipython()
+    with capture_output() as captured:
+        result = shell.run_cell(cell, store_history=False, silent=False)
+    sys.stderr.write(captured.stderr)  # a warning stays a warning (the tests make warnings errors)
+    if not result.success:
+        captured.show()
+        result.raise_error()
+    widgets = [o for o in captured.outputs if "application/vnd.jupyter.widget-view+json" in o.data]
+    captured.outputs[:] = [o for o in captured.outputs if o not in widgets]
+    display(HTML(_fold(captured)))
+    for widget in widgets:  # a live widget cannot fold into HTML: it shows as it is
+        display(widget.data, raw=True)
+
+
+def load_ipython_extension(ipython) -> None:
+    """``%load_ext raildyn.course``: registers the cell magic ``%%answer``."""
+    ipython.register_magic_function(_answer, magic_kind="cell", magic_name="answer")

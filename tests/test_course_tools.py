@@ -103,3 +103,106 @@ def test_bad_input_is_refused():
         course.mark(
             [{"student": "a", "exercise": "nope", "answer": "1"}], [course.Exercise("x", lambda: 1.0)]
         )
+
+
+# --------------------------------------------------------------------------- derived matrices checked
+
+
+def _two_masses():
+    """Two masses on springs, derived by Lagrange's equations, and the same system by hand."""
+    import sympy
+
+    from raildyn.derivations import coordinates, lagrange
+
+    m1, m2, k1, k2, c1 = sympy.symbols("m1 m2 k1 k2 c1", positive=True)
+    x1, x2 = coordinates("x1 x2")
+    T = (m1 * x1.diff() ** 2 + m2 * x2.diff() ** 2) / 2
+    U = (k1 * x1**2 + k2 * (x2 - x1) ** 2) / 2
+    D = c1 * x1.diff() ** 2 / 2
+    values = {m1: 40.0, m2: 400.0, k1: 2.0e6, k2: 1.0e5, c1: 3.0e3}
+    # By hand: M = diag(m1, m2), C = [[c1, 0], [0, 0]], K = [[k1 + k2, −k2], [−k2, k2]].
+    model = ([[40.0, 0.0], [0.0, 400.0]], [[3.0e3, 0.0], [0.0, 0.0]], [[2.1e6, -1.0e5], [-1.0e5, 1.0e5]])
+    return lagrange(T, U, D, [x1, x2]), model, values
+
+
+def test_derived_matrices_that_agree_are_right():
+    mine, model, values = _two_masses()
+    verdict = course.check_matrices(mine, model, values)
+    assert verdict.correct and verdict.reason == "right" and verdict.answer == 12  # 3 matrices × 4 entries
+
+
+@pytest.mark.parametrize(
+    ("change", "words"),
+    [
+        (lambda K: K * -1.0, "K[0, 0]: the sign is wrong"),
+        (lambda K: K * 0.5, "K[0, 0]: twice too large"),
+        (lambda K: K - [[0.0, 0.0], [0.0, 1.0e4]], "K[1, 1]: off by 11.1 %"),
+    ],
+)
+def test_a_wrong_entry_is_named_with_its_slip(change, words):
+    import numpy as np
+
+    mine, model, values = _two_masses()
+    wrong = (*model[:2], change(np.array(model[2])))  # the model changed: the derivation is now the slip
+    verdict = course.check_matrices(mine, wrong, values)
+    assert not verdict.correct and verdict.reason.startswith(words), verdict.reason
+
+
+def test_the_model_labels_name_the_entry_and_an_order_or_a_size_is_told():
+    import numpy as np
+
+    from raildyn.linear_model import SystemMatrices
+
+    mine, model, values = _two_masses()
+    M, C, K = (np.array(a) for a in model)
+    labelled = SystemMatrices(M, C, -K, np.zeros((2, 1)), np.zeros((2, 1)), ("wheel", "body"), 10.0)
+    assert course.check_matrices(mine, labelled, values).reason.startswith("K[wheel, wheel]: the sign")
+    swapped = [a[::-1, ::-1] for a in (M, C, K)]
+    assert "another order" in course.check_matrices(mine, swapped, values).reason
+    assert "1×1, the model's 2×2" in course.check_matrices([a[:1, :1] for a in (M, C, K)], model).reason
+
+
+def test_a_symbol_without_its_number_is_named():
+    mine, model, values = _two_masses()
+    with pytest.raises(ValueError, match=r"derived M still holds the symbols \['m2'\]"):
+        course.check_matrices(mine, model, {k: v for k, v in values.items() if str(k) != "m2"})
+
+
+# --------------------------------------------------------------------------- the page's own checks
+
+
+def test_a_self_check_keeps_its_answer_out_of_plain_text_and_states_its_rules():
+    import json
+    import re
+
+    number = course.SelfCheck("The wavelength, in metres?", 19.7, "m", rtol=0.05)
+    assert "19.7" not in repr(number) and "wavelength" in repr(number)
+    spec = json.loads(re.search(r"spec = (\{.*?\});", number._repr_html_()).group(1))
+    assert spec["expected"] == 19.7 and spec["rtol"] == 0.05 and [2.0, spec["slips"][-2][1]] in spec["slips"]
+    choice = course.SelfCheck("Which hunts?", choices=("the free wheelset", "neither"), right=0)
+    assert 'type="radio"' in choice._repr_html_() and '"right": 0' in choice._repr_html_()
+    with pytest.raises(ValueError, match="right"):
+        course.SelfCheck("Which?", choices=("a", "b"), right=2)
+    with pytest.raises(ValueError, match="expected must be a number"):
+        course.SelfCheck("How far?")
+
+
+def test_an_answer_folds_its_output_and_a_failing_answer_fails(tmp_path):
+    import nbformat
+    from nbclient import NotebookClient
+    from nbclient.exceptions import CellExecutionError
+
+    cells = [
+        "%load_ext raildyn.course\nimport matplotlib\nmatplotlib.use('agg')\nimport matplotlib.pyplot as plt",
+        "%%answer\n# the reasoning\nprint('f = 1.5 Hz')\nfrom IPython.display import display, HTML\n"
+        "display(HTML('<b>bold</b>'))\n3 * 7",
+        "%%answer\nraise ValueError('a slip')",
+    ]
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
+    client = NotebookClient(nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": tmp_path}})
+    with pytest.raises(CellExecutionError, match="a slip"):
+        client.execute()
+    (shown,) = nb.cells[1].outputs
+    page = shown["data"]["text/html"]
+    assert page.startswith(f'<details class="raildyn-answer"><summary>{course.ANSWER_FOLD}</summary>')
+    assert "f = 1.5 Hz" in page and "<b>bold</b>" in page and "<pre>21</pre>" in page

@@ -11,6 +11,7 @@ from raildyn.course import Exercise, Verdict
 EXERCISE = Exercise(
     "f", lambda m, k: math.sqrt(k / m) / (2 * math.pi), {"m": (800.0, 1200.0), "k": (1e6, 2e6)}
 )
+MATRICES = ([[2.0, 0.0], [0.0, 1.0]], [[0.0, 0.0], [0.0, 0.0]], [[8.0, -1.0], [-1.0, 3.0]])
 ROWS = [
     {"student": "s1", "exercise": "f", "answer": "5.5"},
     {"student": "s2", "exercise": "f", "answer": "x"},
@@ -61,6 +62,31 @@ ENTRIES = [
         accepts={"verdict": "none", "answer": "empty unknown", "student": "unknown", "exercise": "unknown"},
     ),
     fuzz("raildyn.course.mark", lambda: call(ROWS, [EXERCISE]), accepts={"rows": "empty"}),
+    fuzz(
+        "raildyn.course.check_matrices",
+        lambda: call(MATRICES, MATRICES, {}, rtol=1e-6),
+        # any finite matrices are compared (a wrong one is a verdict, not an error); no symbols is no values
+        accepts={
+            "derived": "zero negative",
+            "model": "zero negative",
+            "values": "empty none",
+            "rtol": "zero tiny mm",
+        },
+    ),
+    fuzz(
+        "raildyn.course.SelfCheck",
+        lambda: call("What is the frequency?", 1.5, "Hz", 0.02, 0.0, (), None, ""),
+        accepts={
+            "question": "unknown",
+            "expected": "zero negative huge big tiny mm",
+            "unit": "empty unknown",
+            "why": "empty unknown",
+            "rtol": "zero tiny",
+            "atol": "zero big tiny mm huge",
+            "choices": "empty",
+            "right": "none",
+        },
+    ),
     fuzz("raildyn.course.mark_csv", lambda: call(*_csv()), skip=("answers", "out")),
 ]
 
