@@ -81,7 +81,7 @@ _PREPARE = """(label) => {
 
 # Shrinks each display formula and each table wider than its column (a derivation's long expression; a
 # table of code names) until it fits: paper cannot scroll, and the formula would otherwise be cut at the
-# sheet's edges. Returns [elements shrunk, elements still wider than the column].
+# sheet's edges. Returns [elements shrunk, elements still wider than the column, what sticks out].
 _FIT = """() => {
     const column = document.querySelector('.bd-article');
     const inner = (element) => element.querySelector(':scope > mjx-math') || element;
@@ -113,7 +113,11 @@ _FIT = """() => {
     // page to the sheet, and the PDF's destinations, measured unshrunk, then drift from their headings.
     const sheet = document.documentElement;
     past += sheet.scrollWidth > sheet.clientWidth + 1;
-    return [shrunk, past];
+    // What sticks out, named for the log: the innermost elements past the column's right edge.
+    const out = [...column.querySelectorAll('*')].filter((e) => !e.children.length
+        && e.getBoundingClientRect().right > right + 2).slice(0, 3)
+        .map((e) => `${e.tagName.toLowerCase()}.${e.className}: ${e.textContent.trim().slice(0, 60)}`);
+    return [shrunk, past, out];
 }"""
 
 # The page's sections (its second-level headings) for the PDF's bookmarks: [[element id, title]].
@@ -278,7 +282,7 @@ def print_book(html: Path, out: Path) -> int:
                 page.add_style_tag(path=str(PRINT_CSS))
                 unfolded = page.evaluate(_PREPARE, ANSWER_LABEL)
                 answers += unfolded
-                shrunk, past = page.evaluate(_FIT)
+                shrunk, past, sticking_out = page.evaluate(_FIT)
                 fitted += shrunk
                 overflowing += past
                 title = page.title().split("—")[0].split("#")[0].strip() or path
@@ -296,7 +300,11 @@ def print_book(html: Path, out: Path) -> int:
                         writer.add_outline_item(heading, sheet, parent=chapter, fit=Fit.xyz(left, top))
                 note = f", answers unfolded: {unfolded}" if unfolded else ""
                 note += f", formulas or tables shrunk to fit: {shrunk}" if shrunk else ""
-                note += f", elements wider than the page's column: {past}" if past else ""
+                note += (
+                    f", elements wider than the page's column: {past} ({'; '.join(sticking_out)})"
+                    if past
+                    else ""
+                )
                 print(f"[{i}/{len(pages)}] {path}: pages: {len(reader.pages)}{note}", flush=True)
             # The page numbers, printed on blank sheets and laid over the book's.
             sheets = "".join(f"<div><span>{n}</span></div>" for n in range(1, len(writer.pages) + 1))

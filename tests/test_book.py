@@ -41,6 +41,15 @@ def test_no_progress_bar_is_left_frozen_on_a_page(built_book):
 
 
 @pytest.mark.slow
+def test_no_page_names_the_machine_it_was_built_on(built_book):
+    # A path of the build (a data file's location, shown as a constant's value) means nothing to a reader,
+    # and its length, which differs from machine to machine, once widened the printed API page.
+    _, html = built_book
+    for page in html.rglob("*.html"):
+        assert str(ROOT) not in page.read_text(encoding="utf-8"), f"{page.relative_to(html)} names {ROOT}"
+
+
+@pytest.mark.slow
 def test_book_links_its_repository_and_its_issues(built_book):
     # A course reports errata where the book's buttons point: both come from repository.url.
     import yaml

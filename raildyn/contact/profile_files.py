@@ -300,9 +300,16 @@ def check_pair(wheel: WheelProfile, rail: RailProfile, *, gauge=1.435, tape_dist
 # ---------------------------------------------------------------- the measured worn pair shipped
 
 _DATA = Path(__file__).resolve().parent / "data"
-#: The worn wheel's file (format of :func:`~raildyn.contact.profile_files.read_wheel_profile`).
+# The two paths are where raildyn is installed: the API page states what they are, not the build's path.
+#: The worn wheel's file (format of :func:`~raildyn.contact.profile_files.read_wheel_profile`), in
+#: raildyn's ``contact/data`` folder.
+#:
+#: :meta hide-value:
 WORN_WHEEL_FILE = _DATA / "worn_wheel_na_heavy_haul.txt"
-#: The worn rail's file (format of :func:`~raildyn.contact.profile_files.read_rail_profile`).
+#: The worn rail's file (format of :func:`~raildyn.contact.profile_files.read_rail_profile`), in
+#: raildyn's ``contact/data`` folder.
+#:
+#: :meta hide-value:
 WORN_RAIL_FILE = _DATA / "worn_rail_na_heavy_haul.txt"
 
 
