@@ -8,7 +8,7 @@ BOOK_HTML := book/_build/html
 # rewritten by another checkout's half-deleted venv and lose matplotlib's own fonts.
 export MPLCONFIGDIR := $(CURDIR)/.venv/matplotlib
 
-.PHONY: book pdf test test-fast lab app bench figures lint clean chromium fe-libs install
+.PHONY: book book-student pdf pdf-student test test-fast lab app bench figures lint clean chromium fe-libs install
 
 # A fresh virtual environment with the pinned ranges, raildyn installed editable
 # so that the notebooks import the working tree.
@@ -31,6 +31,14 @@ book: $(STAMP)
 ## course with its worked answers, then the API reference as its appendix; page numbers, links inside the PDF
 pdf: book chromium
 	$(PY) scripts/book_pdf.py $(BOOK_HTML) book/_build/raildyn.pdf
+
+## book-student: the student edition (book/_build/student/_build/html): the same book with every worked
+## answer removed, built from the notebooks `make book` executed; pdf-student prints it (raildyn-student.pdf)
+book-student: book
+	$(PY) scripts/student_edition.py book/_build book/_build/student
+
+pdf-student: book-student chromium
+	$(PY) scripts/book_pdf.py book/_build/student/_build/html book/_build/raildyn-student.pdf
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
 test: $(STAMP) chromium fe-libs

@@ -374,13 +374,15 @@ class ValidationTable(SphinxDirective):
 
 
 def add_static(app, config):
-    """The book's own style sheet (book/_ext/static/raildyn-book.css) is copied with the theme's."""
+    """The book's own style sheet and script (book/_ext/static/raildyn-book.css, .js) are copied with the
+    theme's."""
     config.html_static_path.append(str(Path(__file__).with_name("static")))
 
 
 def setup(app):
     app.connect("config-inited", add_static)
     app.add_css_file("raildyn-book.css")
+    app.add_js_file("raildyn-book.js")
     app.add_directive("validation-table", ValidationTable)
     app.connect("autodoc-process-docstring", escape_bars)
     app.connect("source-read", book_roles)

@@ -306,6 +306,25 @@ def lagrange(kinetic, potential, dissipation, coords: Sequence, forces=None, inp
     -------
     tuple of sympy.Matrix
         (M, C, K, GK, GC).
+
+    Examples
+    --------
+    A wheel of mass m on the primary spring k and damper c of a body of mass M, each moving
+    vertically (z_w, z_b); the track lifts the spring k_t under the wheel by w:
+
+    >>> import sympy
+    >>> m, M, k, c, kt = sympy.symbols("m M k c k_t", positive=True)
+    >>> zw, zb, w = coordinates("z_w z_b w")
+    >>> T = (m * zw.diff() ** 2 + M * zb.diff() ** 2) / 2
+    >>> U = (k * (zb - zw) ** 2 + kt * (zw - w) ** 2) / 2
+    >>> D = c * (zb.diff() - zw.diff()) ** 2 / 2
+    >>> M_, C, K, GK, GC = lagrange(T, U, D, [zw, zb], inputs=[w])
+    >>> K
+    Matrix([
+    [k + k_t, -k],
+    [     -k,  k]])
+    >>> GK.T
+    Matrix([[k_t, 0]])
     """
     kinetic = _expression("kinetic", kinetic)
     potential = _expression("potential", potential)
