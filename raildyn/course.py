@@ -525,7 +525,7 @@ class SelfCheck:
     Attributes
     ----------
     question : str
-        What is asked (not empty; HTML is escaped, $…$ mathematics is kept for the page's MathJax).
+        What is asked (not empty; HTML is escaped, its mathematics left for the page's MathJax).
     expected : float or None
         The right number, finite, in ``unit``; None for a choice.
     unit : str

@@ -235,6 +235,14 @@ def test_every_control_changes_its_figure_under_voila(browser, voila_app, notebo
             wait_changed(image, before, f"checkbox {c} of widget {w}")
             moved += 1
     assert moved > 0
+    # The worked answers ran (each under %%answer, its output folded) but the lecture room sees none.
+    answers = page.locator("details.raildyn-answer")
+    tagged = [
+        c for c in nbformat.read(notebook, as_version=4).cells if "hide-cell" in c.metadata.get("tags", [])
+    ]
+    assert answers.count() == len(tagged), f"{notebook.name}: {answers.count()} answers for {len(tagged)}"
+    shown = [k for k in range(answers.count()) if answers.nth(k).is_visible()]
+    assert not shown, f"{notebook.name}: answers {shown} show in the app"
     close_notebook(page, voila_app)
     assert not log.errors, f"{notebook.name}: console errors {log.errors}"
     assert not log.off_machine(), f"{notebook.name}: requests off this machine {log.off_machine()}"
@@ -374,6 +382,44 @@ def test_static_sliders_swap_frames_without_a_kernel(browser, book_server, noteb
     page.close()
     assert not log.errors, f"{notebook.name}: console errors {log.errors}"
     assert not log.off_machine(), f"{notebook.name}: requests off this machine {log.off_machine()}"
+
+
+@pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
+def test_self_checks_answer_in_the_static_book(browser, book_server, notebook):
+    # Each question that checks itself answers in the page's JavaScript, with no kernel: a right number
+    # or choice is told so, and a wrong number meets the same slip that raildyn.course.check names.
+    import json
+    import math
+
+    from raildyn import course
+
+    base, _ = book_server
+    page = browser.new_page(viewport={"width": 1280, "height": 1000})
+    log = PageLog(page)
+    page.goto(f"{base}notebooks/{notebook.stem}.html", timeout=60_000)
+    boxes = page.locator(".raildyn-selfcheck")
+    assert boxes.count() >= 2, f"{notebook.name}: {boxes.count()} self-checks"
+    for k in range(boxes.count()):
+        box = boxes.nth(k)
+        spec = json.loads(re.search(r"spec = (\{.*?\});", box.locator("script").text_content()).group(1))
+        verdict = box.locator(".raildyn-selfcheck-verdict")
+        if "choices" in spec:
+            wrong = (spec["right"] + 1) % spec["choices"]
+            for pick, mark in ((wrong, "✗"), (spec["right"], "✓")):
+                box.locator("input[type=radio]").nth(pick).check()
+                box.locator("button").click()
+                assert verdict.text_content().startswith(mark), (notebook.name, k, verdict.text_content())
+            continue
+        e = spec["expected"]
+        for a in (e, -e, 2 * math.pi * e, 1000 * e, 1.37 * e + 0.37):
+            box.locator("input").fill(repr(a))
+            box.locator("button").click()
+            told, python = verdict.text_content(), course.check(a, e, rtol=spec["rtol"], atol=spec["atol"])
+            assert told.startswith("✓" if python.correct else "✗"), (notebook.name, k, a, told, python)
+            if not python.correct and not python.reason.startswith("off by"):
+                assert python.reason in told, (notebook.name, k, a, told, python.reason)
+    page.close()
+    assert not log.errors, f"{notebook.name}: console errors {log.errors}"
 
 
 def test_page_weight_per_chapter(book_server):

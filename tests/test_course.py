@@ -105,3 +105,164 @@ def test_the_capstone_follows_one_car_with_a_rubric():
         assert chapter in capstone
     weights = [int(m) for m in re.findall(r"\| (\d+) % \|", capstone)]
     assert len(weights) == 7 and sum(weights) == 100
+
+
+# --------------------------------------------------------------------------- exercises worth setting
+
+LEVELS = ("Warm-up", "Standard", "Challenge")
+KINDS = ("derive", "compute", "explain", "design", "predict-then-check")
+_LABEL = re.compile(r"^\*\*(\d+)\.\*\* \*([\w-]+) · ([\w-]+)\.\*")
+ANSWER_TAG = "hide-cell"  # every worked answer's tag (tests/test_notebooks.py holds it)
+
+
+def _exercises(path) -> list[tuple[str, str, str, int]]:
+    """(number, level, kind, index of its answer cell) of each exercise of a notebook, in order."""
+    cells = nbformat.read(path, as_version=4).cells
+    start = next(
+        i for i, c in enumerate(cells) if c.cell_type == "markdown" and c.source.startswith("## Exercises")
+    )
+    found = []
+    for i in range(start, len(cells)):
+        cell = cells[i]
+        if cell.cell_type != "markdown":
+            continue
+        for line in cell.source.splitlines():
+            if re.match(r"^\*\*\d+\.\*\*", line):
+                label = _LABEL.match(line)
+                assert label, f"{path.name}: exercise without its level and kind: {line[:80]}"
+                answer = next(j for j in range(i + 1, len(cells)) if cells[j].cell_type == "code")
+                found.append((*label.groups(), answer))
+    return found
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_each_exercise_states_its_level_and_kind(path):
+    exercises = _exercises(path)
+    assert [int(e[0]) for e in exercises] == list(range(1, len(exercises) + 1)), f"{path.name}: numbering"
+    for number, level, kind, _ in exercises:
+        assert level in LEVELS and kind in KINDS, f"{path.name} exercise {number}: {level} · {kind}"
+    levels = {e[1] for e in exercises}
+    assert {"Warm-up", "Challenge"} <= levels, (
+        f"{path.name}: levels {levels}, a warm-up and a challenge wanted"
+    )
+    assert "predict-then-check" in {e[2] for e in exercises}, f"{path.name}: no predict-then-check exercise"
+
+
+def _derive_answers(path) -> list[int]:
+    return [answer for _, _, kind, answer in _exercises(path) if kind == "derive"]
+
+
+@pytest.mark.parametrize("path", [p for p in NOTEBOOKS if p.stem[:2] <= "10"], ids=lambda p: p.stem)
+def test_chapters_one_to_ten_set_two_derivations_checked_against_the_model(path):
+    cells = nbformat.read(path, as_version=4).cells
+    answers = _derive_answers(path)
+    assert len(answers) >= 2, f"{path.name}: {len(answers)} derive exercises, two wanted"
+    for i in answers:
+        code = cells[i].source
+        assert "lagrange(" in code and "check_matrices(" in code, (
+            f"{path.name}: the derive exercise answered in cell {i} does not call lagrange and check_matrices"
+        )
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("path", [p for p in NOTEBOOKS if p.stem[:2] <= "10"], ids=lambda p: p.stem)
+def test_each_worked_derivation_passes_its_check(path, built_book):
+    # The book executed every notebook (book/_build/jupyter_execute keeps them with their outputs, cells
+    # in the same order): each derive answer's verdict, folded in its output, must read right.
+    proc, _ = built_book
+    assert proc.returncode == 0, (proc.stdout + proc.stderr)[-4000:]
+    executed = nbformat.read(ROOT / "book" / "_build" / "jupyter_execute" / "notebooks" / path.name, 4)
+    for i in _derive_answers(path):
+        shown = " ".join(
+            str(o.get("data", {}).get("text/html", o.get("text", ""))) for o in executed.cells[i].outputs
+        )
+        assert "✓" in shown and "right" in shown and "✗" not in shown, f"{path.name} cell {i}: {shown[-300:]}"
+
+
+def _comment_words(code: str) -> int:
+    return sum(
+        len(line.strip().lstrip("#").split()) for line in code.splitlines() if line.strip().startswith("#")
+    )
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_every_worked_answer_folds_and_explains_its_reasoning(path):
+    # %%answer keeps the output folded when the notebook runs (JupyterLab unfolds a cell's outputs when
+    # it runs it; the lecture-room app shows no answer), and, as the first line, is all a collapsed cell
+    # shows of it; the comments beneath say why, in words beside the numbers.
+    cells = nbformat.read(path, as_version=4).cells
+    code = [c.source for c in cells if c.cell_type == "code"]
+    loads = next((k for k, s in enumerate(code) if "%load_ext raildyn.course" in s), None)
+    answers = [
+        k
+        for k, c in enumerate(c for c in cells if c.cell_type == "code")
+        if ANSWER_TAG in c.metadata.get("tags", [])
+    ]
+    assert answers and loads is not None and loads < answers[0], (
+        f"{path.name}: %load_ext raildyn.course first"
+    )
+    for k in answers:
+        first, _, rest = code[k].partition("\n")
+        assert first == "%%answer", f"{path.name}: an answer does not start with %%answer: {first[:60]}"
+        assert _comment_words(rest) >= 15, f"{path.name}: an answer explains too little: {rest[:120]}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_each_chapter_asks_questions_that_check_themselves_in_the_page(path):
+    cells = nbformat.read(path, as_version=4).cells
+    start = next(
+        i for i, c in enumerate(cells) if c.cell_type == "markdown" and "### Check yourself" in c.source
+    )
+    end = next(
+        i
+        for i in range(start + 1, len(cells))
+        if cells[i].cell_type == "markdown" and cells[i].source.startswith("## ")
+    )
+    checks = [c for c in cells[start:end] if c.cell_type == "code" and "course.SelfCheck(" in c.source]
+    assert len(checks) >= 2, f"{path.name}: {len(checks)} self-checks, two wanted"
+    for c in checks:
+        assert "remove-input" in c.metadata.get("tags", []), f"{path.name}: a self-check shows its code"
+
+
+# --------------------------------------------------------------------------- the student edition
+
+
+@pytest.fixture(scope="module")
+def student_book(built_book, tmp_path_factory):
+    """The student edition, built as `make book-student` builds it, from the notebooks the book executed."""
+    import subprocess
+    import sys
+
+    proc, _ = built_book
+    assert proc.returncode == 0, (proc.stdout + proc.stderr)[-4000:]
+    out = tmp_path_factory.mktemp("student")
+    script = ROOT / "scripts" / "student_edition.py"
+    cmd = [sys.executable, str(script), str(ROOT / "book" / "_build"), str(out), "-W", "-n", "--keep-going"]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=900), out / "_build" / "html"
+
+
+def _answer_sentences(source: str) -> list[str]:
+    """The comment lines of an answer long enough to be its own words (six words or more)."""
+    lines = (line.strip().lstrip("#").strip() for line in source.splitlines() if line.strip().startswith("#"))
+    return [line for line in lines if len(line.split()) >= 6]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_the_student_edition_keeps_the_questions_and_no_answer(student_book, path):
+    import html as markup
+
+    proc, pages = student_book
+    log = proc.stdout + proc.stderr
+    assert proc.returncode == 0 and "WARNING" not in log.replace("[IPKernelApp] WARNING", ""), log[-4000:]
+    page = (pages / "notebooks" / f"{path.stem}.html").read_text(encoding="utf-8")
+    text = markup.unescape(re.sub(r"<[^>]+>", " ", page))
+    flat = " ".join(text.split())
+    assert "tag_hide-cell" not in page and "raildyn-answer" not in page, f"{path.name}: an answer is left"
+    cells = nbformat.read(path, as_version=4).cells
+    answers = [c.source for c in cells if ANSWER_TAG in c.metadata.get("tags", [])]
+    left = [s for a in answers for s in _answer_sentences(a) if " ".join(s.split()) in flat]
+    assert not left, f"{path.name}: answer text in the student edition: {left[:3]}"
+    for number, _, _, _ in _exercises(path):
+        assert f"{number}." in flat, f"{path.name}: exercise {number} is missing"
+    assert len(re.findall(r"raildyn-selfcheck", page)) >= 2, f"{path.name}: its self-checks are missing"
