@@ -16,8 +16,9 @@
 * :class:`SelfCheck` is a question that answers in the page itself, without a kernel: the static book,
   the lecture-room app and JupyterLab alike check a number (with :func:`check`'s slips) or a choice
   in the page's JavaScript.
-* ``%load_ext raildyn.course`` gives the cell magic ``%%answer``: a worked answer whose output stays
-  folded under "Show the answer" when the notebook is run, in JupyterLab as in the lecture-room app.
+* ``%load_ext raildyn.course`` makes a cell that opens with the line ``#| answer`` a worked answer: its
+  output stays folded under "Show the answer" when the notebook is run, in JupyterLab as in the
+  lecture-room app.
 """
 
 from __future__ import annotations
@@ -618,7 +619,7 @@ def _fold(captured) -> str:
 
 
 def _answer(line: str, cell: str) -> None:
-    """``%%answer``: run the cell, then show what it printed and drew folded, under "Show the answer".
+    """``%%answer`` (what ``#| answer`` runs): run the cell, then show what it printed and drew folded.
 
     JupyterLab unfolds a cell's outputs whenever the cell runs, so a worked answer hidden by the
     notebook's metadata would show after "Run All"; folded in its own output it stays hidden until
@@ -644,6 +645,24 @@ def _answer(line: str, cell: str) -> None:
         display(widget.data, raw=True)
 
 
+#: The first line of a worked answer's cell: a comment, so that the cell stays Python (linted, parsed,
+#: and run as plain code where the extension is not loaded), and all a collapsed cell shows of it.
+ANSWER_LINE = "#| answer"
+
+
+def _answer_cells(lines: list[str]) -> list[str]:
+    """IPython input transformer: a cell that opens with :data:`ANSWER_LINE` runs as ``%%answer``."""
+    if lines and lines[0].strip() == ANSWER_LINE:
+        return ["%%answer\n", *lines[1:]]
+    return lines
+
+
 def load_ipython_extension(ipython) -> None:
-    """``%load_ext raildyn.course``: registers the cell magic ``%%answer``."""
+    """``%load_ext raildyn.course``: a cell that opens with ``#| answer`` is a worked answer.
+
+    Registers the cell magic ``%%answer`` (:func:`_answer`) and an input transformer that runs every
+    cell whose first line is ``#| answer`` through it.
+    """
     ipython.register_magic_function(_answer, magic_kind="cell", magic_name="answer")
+    if _answer_cells not in ipython.input_transformers_cleanup:
+        ipython.input_transformers_cleanup.append(_answer_cells)

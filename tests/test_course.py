@@ -9,6 +9,8 @@ from pathlib import Path
 import nbformat
 import pytest
 
+from raildyn import course
+
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 
@@ -187,7 +189,7 @@ def _comment_words(code: str) -> int:
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_every_worked_answer_folds_and_explains_its_reasoning(path):
-    # %%answer keeps the output folded when the notebook runs (JupyterLab unfolds a cell's outputs when
+    # "#| answer" keeps the output folded when the notebook runs (JupyterLab unfolds a cell's outputs when
     # it runs it; the lecture-room app shows no answer), and, as the first line, is all a collapsed cell
     # shows of it; the comments beneath say why, in words beside the numbers.
     cells = nbformat.read(path, as_version=4).cells
@@ -203,7 +205,9 @@ def test_every_worked_answer_folds_and_explains_its_reasoning(path):
     )
     for k in answers:
         first, _, rest = code[k].partition("\n")
-        assert first == "%%answer", f"{path.name}: an answer does not start with %%answer: {first[:60]}"
+        assert first == course.ANSWER_LINE, (
+            f"{path.name}: an answer does not start with #| answer: {first[:60]}"
+        )
         assert _comment_words(rest) >= 15, f"{path.name}: an answer explains too little: {rest[:120]}"
 
 

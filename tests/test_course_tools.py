@@ -194,12 +194,14 @@ def test_an_answer_folds_its_output_and_a_failing_answer_fails(tmp_path):
 
     cells = [
         "%load_ext raildyn.course\nimport matplotlib\nmatplotlib.use('agg')\nimport matplotlib.pyplot as plt",
-        "%%answer\n# the reasoning\nprint('f = 1.5 Hz')\nfrom IPython.display import display, HTML\n"
+        "#| answer\n# the reasoning\nprint('f = 1.5 Hz')\nfrom IPython.display import display, HTML\n"
         "display(HTML('<b>bold</b>'))\n3 * 7",
-        "%%answer\nraise ValueError('a slip')",
+        "#| answer\nraise ValueError('a slip')",
     ]
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
-    client = NotebookClient(nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": tmp_path}})
+    client = NotebookClient(
+        nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": tmp_path}}
+    )
     with pytest.raises(CellExecutionError, match="a slip"):
         client.execute()
     (shown,) = nb.cells[1].outputs

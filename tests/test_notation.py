@@ -288,7 +288,7 @@ def test_fra_classes_run_at_speeds_they_allow(path):
     for cell in cells:
         if cell.cell_type != "code":
             continue
-        tree = ast.parse(cell.source)
+        tree = ast.parse(python(cell.source))
         names = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)}
         classes = _fra_classes(tree) | set().union(*(spectra.get(n, set()) for n in names))
         for node in (n for n in ast.walk(tree) if isinstance(n, ast.Assign)):
@@ -346,9 +346,14 @@ def test_a_model_from_a_later_chapter_is_pointed_forward_to(path):
         )
 
 
+def python(source: str) -> str:
+    """A cell's code as Python: its IPython line magics (``%load_ext …``) left out."""
+    return "\n".join(line for line in source.splitlines() if not line.lstrip().startswith("%"))
+
+
 def _loaded(source: str) -> set[str]:
     """The names a cell's code uses (an import alone does not count)."""
-    return {n.id for n in ast.walk(ast.parse(source)) if isinstance(n, ast.Name)}
+    return {n.id for n in ast.walk(ast.parse(python(source))) if isinstance(n, ast.Name)}
 
 
 # --------------------------------------------------------------------------- no development talk
