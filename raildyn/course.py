@@ -485,13 +485,16 @@ _SELF_CHECK_JS = """(function () {
   function verdict(a) {
     const e = spec.expected, r = spec.rtol, t = spec.atol;
     if (close(a, e, r, t)) return [true, 'right'];
-    if (e !== 0 && close(-a, e, r, t)) return [false, 'the sign is wrong: which way is the quantity positive?'];
+    const sign = 'the sign is wrong: which way is the quantity positive?';
+    if (e !== 0 && close(-a, e, r, t)) return [false, sign];
     for (const [factor, why] of spec.slips) {
       if (e !== 0 && close(a, factor * e, r, t * factor)) return [false, why];
       if (e !== 0 && close(-a, factor * e, r, t * factor)) return [false, why + ' (and the sign is wrong)'];
     }
-    if (e > 0 && a > 0 && close(a, e * e, r, t)) return [false, 'the square of the answer: a variance where an RMS value was asked?'];
-    if (e > 0 && a > 0 && close(a * a, e, r, t)) return [false, 'the square root of the answer: an RMS value where a variance was asked?'];
+    const square = 'the square of the answer: a variance where an RMS value was asked?';
+    const root = 'the square root of the answer: an RMS value where a variance was asked?';
+    if (e > 0 && a > 0 && close(a, e * e, r, t)) return [false, square];
+    if (e > 0 && a > 0 && close(a * a, e, r, t)) return [false, root];
     return [false, 'not yet: check the method, not a unit'];
   }
   box.querySelector('button').addEventListener('click', () => {
@@ -502,8 +505,9 @@ _SELF_CHECK_JS = """(function () {
       right = Number(picked.value) === spec.right;
       why = right ? 'right' : 'not that one: think again';
     } else {
-      const a = Number(box.querySelector('input').value.replace(',', '.').replace('\\u2212', '-'));
-      if (!Number.isFinite(a) || box.querySelector('input').value.trim() === '') { say.textContent = 'Type a number first.'; return; }
+      const typed = box.querySelector('input').value.trim();
+      const a = Number(typed.replace(',', '.').replace('\\u2212', '-'));
+      if (!Number.isFinite(a) || typed === '') { say.textContent = 'Type a number first.'; return; }
       [right, why] = verdict(a);
     }
     say.textContent = (right ? '\\u2713 ' : '\\u2717 ') + why + (right && spec.why ? ' ' + spec.why : '');
@@ -559,7 +563,9 @@ class SelfCheck:
         _checks.scalar("rtol", self.rtol, low=0.0, high=1.0)
         _checks.nonnegative("atol", self.atol)
         if not isinstance(self.choices, tuple | list):
-            raise TypeError(f"choices must be a tuple of strings (empty for a number), got {self.choices!r:.60}")
+            raise TypeError(
+                f"choices must be a tuple of strings (none for a number), got {self.choices!r:.60}"
+            )
         if self.choices:
             choices = _checks.strings("choices", self.choices, unique=True)
             if len(choices) < 2:
@@ -592,8 +598,8 @@ class SelfCheck:
             field_ = f'<input type="text" inputmode="decimal" size="12" aria-label="your answer">{unit} '
         script = _SELF_CHECK_JS % {"id": json.dumps(box), "spec": json.dumps(spec)}
         return (
-            f'<div class="raildyn-selfcheck" id="{box}"><p><b>Check yourself:</b> {html.escape(self.question)}'
-            f"</p><p>{field_}<button>Check</button></p>"
+            f'<div class="raildyn-selfcheck" id="{box}">'
+            f"<p><b>Check yourself:</b> {html.escape(self.question)}</p><p>{field_}<button>Check</button></p>"
             f'<p class="raildyn-selfcheck-verdict" aria-live="polite"></p><script>{script}</script></div>'
         )
 
