@@ -151,19 +151,17 @@ def test_each_exercise_states_its_level_and_kind(path):
 
 
 def _derive_answers(path) -> list[int]:
-    return [answer for _, _, kind, answer in _exercises(path) if kind == "derive"]
+    """The answer cells of the derive exercises that call lagrange and check the matrices they get
+    (a chapter may also set a derivation by hand)."""
+    cells = nbformat.read(path, as_version=4).cells
+    derive = [answer for _, _, kind, answer in _exercises(path) if kind == "derive"]
+    return [i for i in derive if "lagrange(" in cells[i].source and "check_matrices(" in cells[i].source]
 
 
 @pytest.mark.parametrize("path", [p for p in NOTEBOOKS if p.stem[:2] <= "10"], ids=lambda p: p.stem)
 def test_chapters_one_to_ten_set_two_derivations_checked_against_the_model(path):
-    cells = nbformat.read(path, as_version=4).cells
     answers = _derive_answers(path)
-    assert len(answers) >= 2, f"{path.name}: {len(answers)} derive exercises, two wanted"
-    for i in answers:
-        code = cells[i].source
-        assert "lagrange(" in code and "check_matrices(" in code, (
-            f"{path.name}: the derive exercise answered in cell {i} does not call lagrange and check_matrices"
-        )
+    assert len(answers) >= 2, f"{path.name}: {len(answers)} derive exercises call lagrange and check_matrices"
 
 
 @pytest.mark.slow
