@@ -90,8 +90,8 @@ figures: $(STAMP)
 
 ## lint: ruff over the code (also part of make test)
 lint: $(STAMP)
-	$(VENV)/bin/ruff check raildyn tests benchmarks book/_ext
-	$(VENV)/bin/ruff format --check raildyn tests benchmarks book/_ext
+	$(VENV)/bin/ruff check raildyn tests benchmarks book/_ext notebooks scripts
+	$(VENV)/bin/ruff format --check raildyn tests benchmarks book/_ext notebooks scripts
 
 clean:
 	rm -rf $(VENV) book/_build .pytest_cache figures

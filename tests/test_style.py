@@ -1,11 +1,11 @@
-"""ruff lints and formats the package, the tests, the benchmarks and the book's extension."""
+"""ruff lints and formats the package, the tests, the benchmarks, the book's extension and the notebooks."""
 
 import subprocess
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-PATHS = ["raildyn", "tests", "benchmarks", "book/_ext"]
+PATHS = ["raildyn", "tests", "benchmarks", "book/_ext", "notebooks", "scripts"]
 RUFF = str(Path(sys.executable).parent / "ruff")
 
 
