@@ -11,6 +11,8 @@ import contextlib
 import functools
 import http.cookiejar
 import http.server
+import json
+import math
 import os
 import re
 import shutil
@@ -358,12 +360,27 @@ def test_book_page_reads_offline(browser, book_server, page_path):
     assert not log.off_machine(), f"{page_path}: requests off this machine {log.off_machine()}"
 
 
-@pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
-def test_static_sliders_swap_frames_without_a_kernel(browser, book_server, notebook):
+@contextlib.contextmanager
+def chapter_page(browser, book_server, notebook: Path):
+    """A chapter's page of the built book in a new tab; on leaving, no console error and no request off
+    this machine."""
     base, _ = book_server
     page = browser.new_page(viewport={"width": 1280, "height": 1000})
     log = PageLog(page)
     page.goto(f"{base}notebooks/{notebook.stem}.html", timeout=60_000)
+    yield page
+    page.close()
+    assert not log.errors, f"{notebook.name}: console errors {log.errors}"
+    assert not log.off_machine(), f"{notebook.name}: requests off this machine {log.off_machine()}"
+
+
+@pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
+def test_static_sliders_swap_frames_without_a_kernel(browser, book_server, notebook):
+    with chapter_page(browser, book_server, notebook) as page:
+        _swap_every_frame(page)
+
+
+def _swap_every_frame(page) -> None:
     statics = page.locator(".raildyn-static")
     assert statics.count() >= 1, "no kernel-free widget on the page"
     for k in range(statics.count()):
@@ -379,47 +396,40 @@ def test_static_sliders_swap_frames_without_a_kernel(browser, book_server, noteb
                 f"static slider {r} of block {k} did not change the picture"
             )
             assert block.evaluate("b => b.querySelector('img').naturalWidth") > 0
-    page.close()
-    assert not log.errors, f"{notebook.name}: console errors {log.errors}"
-    assert not log.off_machine(), f"{notebook.name}: requests off this machine {log.off_machine()}"
 
 
 @pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
 def test_self_checks_answer_in_the_static_book(browser, book_server, notebook):
     # Each question that checks itself answers in the page's JavaScript, with no kernel: a right number
     # or choice is told so, and a wrong number meets the same slip that raildyn.course.check names.
-    import json
-    import math
+    with chapter_page(browser, book_server, notebook) as page:
+        boxes = page.locator(".raildyn-selfcheck")
+        assert boxes.count() >= 2, f"{notebook.name}: {boxes.count()} self-checks"
+        for k in range(boxes.count()):
+            _answer(boxes.nth(k), f"{notebook.name}, self-check {k}")
 
+
+def _answer(box, name: str) -> None:
+    """Answer one self-check wrongly and rightly, and hold what the page says to raildyn.course.check."""
     from raildyn import course
 
-    base, _ = book_server
-    page = browser.new_page(viewport={"width": 1280, "height": 1000})
-    log = PageLog(page)
-    page.goto(f"{base}notebooks/{notebook.stem}.html", timeout=60_000)
-    boxes = page.locator(".raildyn-selfcheck")
-    assert boxes.count() >= 2, f"{notebook.name}: {boxes.count()} self-checks"
-    for k in range(boxes.count()):
-        box = boxes.nth(k)
-        spec = json.loads(re.search(r"spec = (\{.*?\});", box.locator("script").text_content()).group(1))
-        verdict = box.locator(".raildyn-selfcheck-verdict")
-        if "choices" in spec:
-            wrong = (spec["right"] + 1) % spec["choices"]
-            for pick, mark in ((wrong, "✗"), (spec["right"], "✓")):
-                box.locator("input[type=radio]").nth(pick).check()
-                box.locator("button").click()
-                assert verdict.text_content().startswith(mark), (notebook.name, k, verdict.text_content())
-            continue
-        e = spec["expected"]
-        for a in (e, -e, 2 * math.pi * e, 1000 * e, 1.37 * e + 0.37):
-            box.locator("input").fill(repr(a))
+    spec = json.loads(re.search(r"spec = (\{.*?\});", box.locator("script").text_content()).group(1))
+    verdict = box.locator(".raildyn-selfcheck-verdict")
+    if "choices" in spec:
+        wrong = (spec["right"] + 1) % spec["choices"]
+        for pick, mark in ((wrong, "✗"), (spec["right"], "✓")):
+            box.locator("input[type=radio]").nth(pick).check()
             box.locator("button").click()
-            told, python = verdict.text_content(), course.check(a, e, rtol=spec["rtol"], atol=spec["atol"])
-            assert told.startswith("✓" if python.correct else "✗"), (notebook.name, k, a, told, python)
-            if not python.correct and not python.reason.startswith("off by"):
-                assert python.reason in told, (notebook.name, k, a, told, python.reason)
-    page.close()
-    assert not log.errors, f"{notebook.name}: console errors {log.errors}"
+            assert verdict.text_content().startswith(mark), (name, verdict.text_content())
+        return
+    e = spec["expected"]
+    for a in (e, -e, 2 * math.pi * e, 1000 * e, 1.37 * e + 0.37):
+        box.locator("input").fill(repr(a))
+        box.locator("button").click()
+        told, python = verdict.text_content(), course.check(a, e, rtol=spec["rtol"], atol=spec["atol"])
+        assert told.startswith("✓" if python.correct else "✗"), (name, a, told, python)
+        if not python.correct and not python.reason.startswith("off by"):
+            assert python.reason in told, (name, a, told, python.reason)
 
 
 def test_page_weight_per_chapter(book_server):

@@ -268,3 +268,12 @@ def test_the_student_edition_keeps_the_questions_and_no_answer(student_book, pat
     for number, _, _, _ in _exercises(path):
         assert f"{number}." in flat, f"{path.name}: exercise {number} is missing"
     assert len(re.findall(r"raildyn-selfcheck", page)) >= 2, f"{path.name}: its self-checks are missing"
+
+
+def test_chapter_seven_marks_its_freight_and_locomotive_part_optional():
+    # Chapter 7 is the longest; its freight cars and locomotives are optional reading, in the notebook's
+    # heading as in the course page, so that a week's reading stays a week's.
+    path = next(p for p in NOTEBOOKS if p.stem.startswith("07"))
+    assert any(t.startswith("## Freight cars and locomotives (optional)") for t in _markdown(path))
+    week = next(w for w in _weeks() if w[0] == "8")
+    assert "freight cars and locomotives" in week[3] and "freight" not in week[2]
