@@ -518,6 +518,18 @@ _SELF_CHECK_JS = """(function () {
 _SELF_CHECKS = itertools.count()
 
 
+def _inline_math(text: str) -> str:
+    """``text`` as HTML, each $…$ in it marked up as the book marks inline mathematics (a span of class
+    "math" around \\(…\\)), which the book's MathJax and JupyterLab's both typeset."""
+    parts = html.escape(text).split("$")
+    if len(parts) % 2 == 0:
+        raise ValueError(f"question must pair its $ signs (each formula between two), got {text!r:.80}")
+    return "".join(
+        f'<span class="math notranslate nohighlight">\\({p}\\)</span>' if i % 2 else p
+        for i, p in enumerate(parts)
+    )
+
+
 @dataclass(frozen=True, repr=False)
 class SelfCheck:
     """A question that checks its answer in the page: a number within a tolerance, or one choice of several.
@@ -530,7 +542,8 @@ class SelfCheck:
     Attributes
     ----------
     question : str
-        What is asked (not empty; HTML is escaped, its mathematics left for the page's MathJax).
+        What is asked (not empty; HTML is escaped; a formula stands between two dollar signs, which
+        the page's MathJax typesets).
     expected : float or None
         The right number, finite, in ``unit``; None for a choice.
     unit : str
@@ -557,6 +570,7 @@ class SelfCheck:
     def __post_init__(self):
         if not isinstance(self.question, str) or not self.question.strip():
             raise ValueError(f"question must be a non-empty string, got {self.question!r}")
+        _inline_math(self.question)
         for key in ("unit", "why"):
             if not isinstance(getattr(self, key), str):
                 raise TypeError(f"{key} must be a string, got {type(getattr(self, key)).__name__}")
@@ -599,7 +613,8 @@ class SelfCheck:
         script = _SELF_CHECK_JS % {"id": json.dumps(box), "spec": json.dumps(spec)}
         return (
             f'<div class="raildyn-selfcheck" id="{box}">'
-            f"<p><b>Check yourself:</b> {html.escape(self.question)}</p><p>{field_}<button>Check</button></p>"
+            f"<p><b>Check yourself:</b> {_inline_math(self.question)}</p>"
+            f"<p>{field_}<button>Check</button></p>"
             f'<p class="raildyn-selfcheck-verdict" aria-live="polite"></p><script>{script}</script></div>'
         )
 

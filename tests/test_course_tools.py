@@ -185,6 +185,10 @@ def test_a_self_check_keeps_its_answer_out_of_plain_text_and_states_its_rules():
         course.SelfCheck("Which?", choices=("a", "b"), right=2)
     with pytest.raises(ValueError, match="expected must be a number"):
         course.SelfCheck("How far?")
+    formula = course.SelfCheck("What is $L_b$ in metres?", 20.0)._repr_html_()
+    assert '<span class="math notranslate nohighlight">\\(L_b\\)</span> in metres' in formula
+    with pytest.raises(ValueError, match=r"question must pair its \$ signs"):
+        course.SelfCheck("Costs $5?", 5.0)
 
 
 def test_an_answer_folds_its_output_and_a_failing_answer_fails(tmp_path):
