@@ -1,5 +1,5 @@
-"""An answer checked and its slip named: a number (:func:`check`) and a derivation's matrices
-(:func:`check_matrices`)."""
+"""An answer checked and its slip named: a number (:func:`~raildyn.course.check`) and a derivation's
+matrices (:func:`~raildyn.course.check_matrices`)."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ from raildyn.constants import GRAVITY
 
 __all__ = ["SLIPS", "Verdict", "check", "check_matrices"]
 
-#: The slips :func:`check` recognises: the factor between the answer given and the one expected, and
-#: what it most often means.
+#: The slips :func:`~raildyn.course.check` recognises: the factor between the answer given and the one
+#: expected, and what it most often means.
 SLIPS = (
     (2 * math.pi, "2π times too large: rad/s where Hz was asked?"),
     (1 / (2 * math.pi), "2π times too small: Hz where rad/s was asked?"),

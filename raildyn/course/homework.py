@@ -1,5 +1,6 @@
-"""Homework a lecturer can set: per-student variants of a numeric exercise (:class:`Exercise`), and a
-class's answers marked (:func:`mark`, :func:`mark_csv`)."""
+"""Homework a lecturer can set: per-student variants of a numeric exercise
+(:class:`~raildyn.course.Exercise`), and a class's answers marked (:func:`~raildyn.course.mark`,
+:func:`~raildyn.course.mark_csv`)."""
 
 from __future__ import annotations
 

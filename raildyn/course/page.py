@@ -1,5 +1,6 @@
-"""The course on the page: questions that check themselves without a kernel (:class:`SelfCheck`), and
-worked answers whose output stays folded when a notebook runs (a cell that opens with ``#| answer``)."""
+"""The course on the page: questions that check themselves without a kernel
+(:class:`~raildyn.course.SelfCheck`), and worked answers whose output stays folded when a notebook runs
+(a cell that opens with ``#| answer``)."""
 
 from __future__ import annotations
 
