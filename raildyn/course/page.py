@@ -212,24 +212,15 @@ class _Record(io.TextIOBase):
 
 def _run_recorded(shell, cell: str) -> tuple:
     """Run ``cell`` with what it prints and displays recorded in order; returns (result, items, stderr)."""
-    from IPython.core.displayhook import CapturingDisplayHook
-    from IPython.core.displaypub import CapturingDisplayPublisher
+    from IPython.utils.capture import capture_output
 
-    items: list[dict] = []
-
-    class Publisher(CapturingDisplayPublisher):  # a display() joins the printed text, in order
-        def publish(self, data, metadata=None, source=None, *, transient=None, update=False):
-            items.append({"data": data})
-
-    saved = sys.stdout, sys.stderr, shell.display_pub, sys.displayhook
-    sys.stdout, sys.stderr = _Record(items), io.StringIO()
-    shell.display_pub, sys.displayhook = Publisher(), CapturingDisplayHook(shell, outputs=items)
-    try:
+    with capture_output() as captured:
+        # the list every display and the display hook append to; printed text joins it, in order
+        # (capture_output puts sys.stdout back as it found it)
+        items = shell.display_pub.outputs
+        sys.stdout = _Record(items)
         result = shell.run_cell(cell, store_history=False, silent=False)
-        errors = sys.stderr.getvalue()
-    finally:
-        sys.stdout, sys.stderr, shell.display_pub, sys.displayhook = saved
-    return result, items, errors
+    return result, list(items), captured.stderr
 
 
 def _answer(line: str, cell: str) -> None:
