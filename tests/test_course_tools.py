@@ -212,11 +212,11 @@ def test_an_answer_folds_its_output_and_a_failing_answer_fails(tmp_path):
     (shown,) = nb.cells[1].outputs
     page = shown["data"]["text/html"]
     assert page.startswith(f'<details class="raildyn-answer"><summary>{ANSWER_FOLD}</summary>')
-    # what was printed and displayed, in the order it was, a formula as the book marks one
+    # what was printed, then what was displayed in the order it was, a formula as the book marks one
     order = [
         "f = 1.5 Hz",
-        "<b>bold</b>",
         "then",
+        "<b>bold</b>",
         '<div class="math notranslate nohighlight">\\[',
         "<pre>21</pre>",
     ]

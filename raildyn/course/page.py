@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import hashlib
 import html
-import io
 import itertools
 import json
 import sys
@@ -173,8 +172,8 @@ def _math(latex: str) -> str:
 
 
 def _fold(items: list[dict]) -> str:
-    """What an answer printed ({"text": …}) and displayed ({"data": mime bundle}), in order, as HTML
-    folded under :data:`ANSWER_FOLD`."""
+    """What an answer printed ({"text": …}) and displayed ({"data": mime bundle}), as HTML folded under
+    :data:`ANSWER_FOLD`."""
     parts = []
     for item in items:
         data = item.get("data", {})
@@ -193,34 +192,17 @@ def _fold(items: list[dict]) -> str:
     return f'<details class="raildyn-answer"><summary>{ANSWER_FOLD}</summary>{"".join(parts)}</details>'
 
 
-class _Record(io.TextIOBase):
-    """Stands in for sys.stdout while an answer runs: its text joins the answer's displays, in order."""
-
-    def __init__(self, items: list):
-        self.items = items
-
-    def writable(self) -> bool:
-        return True
-
-    def write(self, text: str) -> int:
-        if self.items and "text" in self.items[-1]:
-            self.items[-1]["text"] += text
-        else:
-            self.items.append({"text": text})
-        return len(text)
-
-
 def _run_recorded(shell, cell: str) -> tuple:
-    """Run ``cell`` with what it prints and displays recorded in order; returns (result, items, stderr)."""
+    """Run ``cell`` with IPython's own capture; returns (result, items, stderr), the items being what it
+    printed ({"text": …}, first) and what it displayed ({"data": …}, in order)."""
     from IPython.utils.capture import capture_output
 
+    # IPython's capture as it is: a stand-in for sys.stdout that also recorded the displays' order made
+    # the lecture-room app lose widget models on a busy machine, so printed text comes first.
     with capture_output() as captured:
-        # the list every display and the display hook append to; printed text joins it, in order
-        # (capture_output puts sys.stdout back as it found it)
-        items = shell.display_pub.outputs
-        sys.stdout = _Record(items)
         result = shell.run_cell(cell, store_history=False, silent=False)
-    return result, list(items), captured.stderr
+    items = [{"text": captured.stdout}] + [{"data": output.data} for output in captured.outputs]
+    return result, items, captured.stderr
 
 
 def _answer(line: str, cell: str) -> None:
