@@ -209,6 +209,32 @@ def test_every_worked_answer_folds_and_explains_its_reasoning(path):
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_no_cell_but_an_answer_uses_what_an_answer_defines(path):
+    # The student edition removes the answers and the lecture-room app does not run them: the chapter
+    # must run without them, so no other cell may read a name that an answer was the last to define.
+    import ast
+
+    def python(source: str) -> str:
+        return "\n".join(line for line in source.splitlines() if not line.lstrip().startswith("%"))
+
+    last, wrong = {}, []
+    for i, cell in enumerate(nbformat.read(path, as_version=4).cells):
+        if cell.cell_type != "code":
+            continue
+        tree = ast.parse(python(cell.source))
+        answer = ANSWER_TAG in cell.metadata.get("tags", [])
+        if not answer:
+            reads = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)}
+            wrong += [(i, name) for name in sorted(reads) if last.get(name)]
+        names = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
+        names |= {n.name for n in ast.walk(tree) if isinstance(n, ast.FunctionDef | ast.ClassDef)}
+        imports = (n for n in ast.walk(tree) if isinstance(n, ast.Import | ast.ImportFrom))
+        names |= {a.asname or a.name.split(".")[0] for n in imports for a in n.names}
+        last |= dict.fromkeys(names, answer)
+    assert not wrong, f"{path.name}: cells that read what only an answer defined: {wrong[:5]}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_each_chapter_asks_questions_that_check_themselves_in_the_page(path):
     cells = nbformat.read(path, as_version=4).cells
     start = next(

@@ -201,6 +201,9 @@ def test_an_answer_folds_its_output_and_a_failing_answer_fails(tmp_path):
         "%load_ext raildyn.course\nimport matplotlib\nmatplotlib.use('agg')\nimport matplotlib.pyplot as plt",
         "#| answer\n# the reasoning\nprint('f = 1.5 Hz')\nfrom IPython.display import display, HTML\n"
         "display(HTML('<b>bold</b>'))\nimport sympy\nprint('then')\ndisplay(sympy.Matrix([[1, 2]]))\n3 * 7",
+        "import os\nos.environ['VOILA_KERNEL_ID'] = 'k'",  # as the lecture-room app's kernel
+        "#| answer\nprint('worked out in the app')",
+        "del os.environ['VOILA_KERNEL_ID']",
         "#| answer\nraise ValueError('a slip')",
     ]
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
@@ -209,6 +212,7 @@ def test_an_answer_folds_its_output_and_a_failing_answer_fails(tmp_path):
     )
     with pytest.raises(CellExecutionError, match="a slip"):
         client.execute()
+    assert not nb.cells[3].outputs  # the app does not work an answer out
     (shown,) = nb.cells[1].outputs
     page = shown["data"]["text/html"]
     assert page.startswith(f'<details class="raildyn-answer"><summary>{ANSWER_FOLD}</summary>')

@@ -8,6 +8,7 @@ import hashlib
 import html
 import itertools
 import json
+import os
 import sys
 from dataclasses import dataclass
 
@@ -210,13 +211,18 @@ def _answer(line: str, cell: str) -> None:
 
     JupyterLab unfolds a cell's outputs whenever the cell runs, so a worked answer hidden by the
     notebook's metadata would show after "Run All"; folded in its own output it stays hidden until
-    opened, there and in the lecture-room app. An error is shown unfolded and fails the cell.
+    opened. An error is shown unfolded and fails the cell. The lecture-room app (Voilà, which names
+    its kernel in ``VOILA_KERNEL_ID``) shows no answer, so there an answer is not worked out at all:
+    nothing of it can reach the projector, and the page is ready sooner. (No other cell uses a name an
+    answer defines: tests/test_course.py holds the notebooks to that.)
     """
     from IPython import get_ipython
     from IPython.display import HTML, display
 
     if line.strip():
         raise ValueError(f"%%answer takes no arguments, got {line.strip()!r}")
+    if os.environ.get("VOILA_KERNEL_ID"):
+        return
     result, items, errors = _run_recorded(get_ipython(), cell)
     sys.stderr.write(errors)  # a warning stays a warning (the tests make warnings errors)
     if not result.success:
