@@ -214,8 +214,7 @@ def test_no_cell_but_an_answer_uses_what_an_answer_defines(path):
     # must run without them, so no other cell may read a name that an answer was the last to define.
     import ast
 
-    def python(source: str) -> str:
-        return "\n".join(line for line in source.splitlines() if not line.lstrip().startswith("%"))
+    from test_notation import python  # a cell's code without its line magics (the one definition)
 
     last, wrong = {}, []
     for i, cell in enumerate(nbformat.read(path, as_version=4).cells):
