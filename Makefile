@@ -23,7 +23,10 @@ install: $(STAMP)
 
 ## book: execute every notebook and build the HTML book (the README's main command)
 # RAILDYN_PROGRESS=0: a page without a kernel would show a progress bar frozen at 0 %, so none is drawn.
+# A rebuild runs only the notebooks whose code changed (Jupyter Book's execution cache) and rewrites only
+# the pages that changed; scripts/book_cache.py empties the cache when raildyn's own files changed.
 book: $(STAMP)
+	$(PY) scripts/book_cache.py book/_build
 	RAILDYN_PROGRESS=0 $(VENV)/bin/jupyter-book build . --config book/_config.yml --toc book/_toc.yml --path-output book
 	@echo "The book is at $(abspath $(BOOK_HTML))/index.html"
 
@@ -41,8 +44,12 @@ pdf-student: book-student chromium
 	$(PY) scripts/book_pdf.py book/_build/student/_build/html book/_build/raildyn-student.pdf
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
+# On every core (JOBS=0 runs them in pytest's own process): the book's group and the app's each hold one worker, the
+# other tests are shared out as workers come free (tests/conftest.py).
+JOBS ?= auto
+PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadgroup
 test: $(STAMP) chromium fe-libs
-	$(PY) -m pytest
+	$(PYTEST)
 
 # Debian's chromium for the browser tests; Playwright drives it, nothing is downloaded.
 chromium:
@@ -60,7 +67,7 @@ fe-libs:
 
 ## test-fast: the unit and property tests only
 test-fast: $(STAMP) fe-libs
-	$(PY) -m pytest -m "not slow"
+	$(PYTEST) -m "not slow"
 
 ## lab: JupyterLab on the notebooks
 lab: $(STAMP)

@@ -17,6 +17,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "scripts"))
+import book_cache  # noqa: E402  (scripts/book_cache.py: the book's execution cache, kept while raildyn is unchanged)
 
 _DEFAULTS = dict(matplotlib.rcParams)
 
@@ -70,8 +72,14 @@ def built_book(tmp_path_factory):
     startup.mkdir(parents=True)
     (startup / "00-strict.py").write_text(STRICT)
     env = {**os.environ, "RAILDYN_PROGRESS": "0", "IPYTHONDIR": str(ipython)}
+    # Every notebook runs here, strict: the execution cache `make book` keeps starts empty, and what this
+    # build ran is stamped as run on raildyn as it is now, so that a `make book` after the tests reuses it.
+    build = ROOT / "book" / "_build"
+    book_cache.empty(build)
     proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900, env=env)
-    html = ROOT / "book" / "_build" / "html"
+    if proc.returncode == 0:
+        book_cache.stamp(build)
+    html = build / "html"
     if proc.returncode == 0 and Path("/usr/bin/chromium").exists():
         # `make pdf`'s printing (a minute or two of chromium) starts now, in the background, so that it
         # overlaps the other tests of the built book; tests/test_pdf.py waits for it (``printed_book``).
@@ -145,9 +153,13 @@ def write_references() -> None:
 _BINDER: dict = {}
 
 
-def pytest_collection_finish(session):
-    """Start building the Binder environment in the background if its test is to run (it takes minutes)."""
-    if any("binder_run" in getattr(item, "fixturenames", ()) for item in session.items):
+@pytest.fixture(scope="session")
+def background_jobs(request):
+    """Start the session's long background job, the Binder environment (minutes of installing), if its
+    test is to run. Every test of the book's group asks for it, so the job starts with the first of them,
+    on the one process that runs that group (``pytest -n``: one worker; alone: the session)."""
+    wanted = any("binder_run" in getattr(item, "fixturenames", ()) for item in request.session.items)
+    if wanted and not _BINDER:
         work = Path(tempfile.mkdtemp(prefix="raildyn-binder-"))
         log = (work / "log.txt").open("w")
         script = Path(__file__).with_name("binder_env.py")
@@ -157,7 +169,7 @@ def pytest_collection_finish(session):
 
 
 @pytest.fixture(scope="session")
-def binder_run():
+def binder_run(background_jobs):
     """The background Binder run, waited for: (finished process, what it printed, its folder)."""
     if not _BINDER:
         pytest.skip("the Binder environment was not started (its test was not collected)")
@@ -166,21 +178,48 @@ def binder_run():
     return _BINDER["proc"], (_BINDER["work"] / "log.txt").read_text(), _BINDER["work"]
 
 
+# The fixtures of the book's group: the tests that read the built book, and the checks that its validation
+# page lists, which must run before it is built.
+BOOK_FIXTURES = ("built_book", "printed_book", "binder_run", "reference")
+
+
+def _book_rank(item) -> int | None:
+    """Where a test of the book's group runs within it: the recorded checks (0), the book (1), the Binder
+    environment (2, built in the background meanwhile), the printed book last (3, printed meanwhile);
+    None for a test outside the group."""
+    names = getattr(item, "fixturenames", ())
+    if "printed_book" in names:
+        return 3
+    if "binder_run" in names:
+        return 2
+    if "built_book" in names:
+        return 1
+    return 0 if "reference" in names else None
+
+
+@pytest.hookimpl(tryfirst=True)  # before pytest-xdist reads the groups off the markers
 def pytest_collection_modifyitems(config, items):
-    """Mark the reference checks (``pytest -m reference`` runs them alone) and build the book last."""
+    """Mark the reference checks (``pytest -m reference`` runs them alone) and order the long groups.
+
+    Two groups hold a process for minutes: the book's (its checks, the build, the tests that read it) and
+    the lecture-room app's (one Voilà server). Under ``pytest -n`` (pytest-xdist, ``--dist loadgroup``)
+    each group runs on one worker while the others share the remaining tests; both go first, so that they
+    start at once. Within the book's group the order is ``_book_rank``'s.
+    """
     for item in items:
-        if "reference" in getattr(item, "fixturenames", ()):
+        names = getattr(item, "fixturenames", ())
+        if "reference" in names:
             item.add_marker(pytest.mark.reference)
-    # stable: the book's tests move to the end, so its validation page sees every check of the session
-    # and the Binder test just before them, so that its environment, built in the background from the
-    # start of the session, is ready when the test asks for it
-    items.sort(
-        key=lambda item: (
-            "built_book" in getattr(item, "fixturenames", ()),
-            "binder_run" in getattr(item, "fixturenames", ()),
-            "printed_book" in getattr(item, "fixturenames", ()),  # last: the printing runs meanwhile
-        )
-    )
+        rank = _book_rank(item)
+        if rank is not None:
+            item.add_marker(pytest.mark.xdist_group("book"))
+            if "background_jobs" not in names:
+                item.fixturenames.append("background_jobs")
+        elif "voila_app" in names:
+            item.add_marker(pytest.mark.xdist_group("voila"))
+    # stable: within each group the tests keep the order they were collected in
+    items.sort(key=lambda item: (0, _book_rank(item)) if _book_rank(item) is not None else
+               (1 if "voila_app" in getattr(item, "fixturenames", ()) else 2, 0))  # fmt: skip
 
 
 def pytest_sessionfinish(session, exitstatus):
