@@ -44,10 +44,10 @@ pdf-student: book-student chromium
 	$(PY) scripts/book_pdf.py book/_build/student/_build/html book/_build/raildyn-student.pdf
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
-# On every core (JOBS=0 runs them in pytest's own process): the book's group and the app's each hold one worker, the
-# other tests are shared out as workers come free (tests/conftest.py).
+# On every core (JOBS=0: in pytest's own process): the book's group and the app's each hold one worker,
+# the other files are shared out as workers come free, the groups first (tests/conftest.py).
 JOBS ?= auto
-PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadgroup
+PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadgroup --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs
 	$(PYTEST)
 

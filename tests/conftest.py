@@ -203,8 +203,9 @@ def pytest_collection_modifyitems(config, items):
 
     Two groups hold a process for minutes: the book's (its checks, the build, the tests that read it) and
     the lecture-room app's (one Voilà server). Under ``pytest -n`` (pytest-xdist, ``--dist loadgroup``)
-    each group runs on one worker while the others share the remaining tests; both go first, so that they
-    start at once. Within the book's group the order is ``_book_rank``'s.
+    each group runs on one worker while the others share the remaining tests, a file at a time (its
+    module-wide fixtures computed once); both go first, so that they start at once (the Makefile turns
+    off xdist's reordering by size). Within the book's group the order is ``_book_rank``'s.
     """
     for item in items:
         names = getattr(item, "fixturenames", ())
@@ -217,6 +218,8 @@ def pytest_collection_modifyitems(config, items):
                 item.fixturenames.append("background_jobs")
         elif "voila_app" in names:
             item.add_marker(pytest.mark.xdist_group("voila"))
+        else:  # a file's tests stay together, so that its module-wide fixtures are computed once
+            item.add_marker(pytest.mark.xdist_group(item.nodeid.split("::")[0]))
     # stable: within each group the tests keep the order they were collected in
     items.sort(key=lambda item: (0, _book_rank(item)) if _book_rank(item) is not None else
                (1 if "voila_app" in getattr(item, "fixturenames", ()) else 2, 0))  # fmt: skip
