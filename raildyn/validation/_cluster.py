@@ -35,18 +35,20 @@ __all__ = [
 
 #: Seconds to wait for a scheduler given by its address.
 CONNECT_TIMEOUT = 10.0
-# The batches, when ``batch`` is None. Each task costs an overhead o besides its evaluations
-# (scheduling, pickling the model and the rows, sending the answer back: 1–10 ms on one
-# machine, see benchmarks/bench_ch11_uncertainty.py), and the workers wait at the end for the
-# last batches. With n evaluations of t seconds on W workers split into k W near-equal batches
-# taken in turn, the run takes about n t / W + k o + (the spread of the last round), so the
-# parallel efficiency is about 1 / (1 + k o W / (n t) + spread W / (n t)). A whole multiple of
-# W keeps the rounds full (64 batches on 24 workers would leave 8 idle for a third of the
-# run); k = 4 rounds let a worker that drew slow rows hand the rest to the others and keep the
-# overhead small: 3,000 critical speeds of 7 ms on 16 workers are 1.3 s a worker, against
-# 4 o ≈ 0.02 s of overhead and a last round of about a quarter of a batch's 0.33 s spread over
-# the workers, an efficiency near 0.9 or above (the benchmark replays the measured task times
-# on 16 workers). At least MIN_BATCHES in all, so that the progress bar moves on one worker.
+# The batches, when ``batch`` is None. A task costs an overhead o besides its evaluations
+# (scheduling, pickling the model and its rows, sending the answer back: 3 to 10 ms a task on
+# a LocalCluster of the 2-core development machine, quiet to busy). n evaluations of t seconds
+# split into k W near-equal batches run on W workers in k full rounds and take about
+# n t / W + k o + s, s being how long the workers that finish first wait for the last, so the
+# parallel efficiency is about 1 / (1 + (k o + s) W / (n t)). A whole multiple of W keeps every
+# round full (a fixed 64 batches on 24 workers leave 8 of them idle for the third round), and a
+# few rounds let the load balance (a worker that drew slow rows takes fewer batches) while
+# k o stays small against n t / W. For 3,000 critical speeds of 6–7 ms on 16 workers: 1.2 s of
+# work each, 64 batches of 47 evaluations, k o = 0.01–0.04 s. Replaying 1,000 measured
+# evaluation times (taken three times over) on 16 workers gives an efficiency of 0.88–0.90 for
+# k from 1 to 8, on 24 workers 0.83–0.85 at k = 4 where 64 batches give 0.80–0.82
+# (benchmarks/bench_ch11_uncertainty.py replays it in every run). At least MIN_BATCHES in all,
+# so that the progress bar moves on one or two workers.
 #: Batches per worker when ``batch`` is None.
 BATCHES_PER_WORKER = 4
 #: Fewest batches when ``batch`` is None (a whole multiple of the workers at or above it).
