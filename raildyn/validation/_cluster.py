@@ -1,35 +1,81 @@
-"""Running the studies of :mod:`raildyn.validation.uncertainty` on dask.distributed.
+"""Running the studies of :mod:`raildyn.validation.uncertainty` on dask.distributed or an executor.
 
 A call opens what it needs (a LocalCluster of processes when no client is given, a Client on a
-scheduler address or a cluster object) and closes what it opened; the model runs on the workers
-in batches whose rows were drawn beforehand, gathered in their order, so the answer does not
-depend on the number of workers. The module is private: :mod:`raildyn.validation.uncertainty`
-imports its names.
+scheduler address or a cluster object) and closes what it opened; a ``concurrent.futures``
+executor (threads, processes) is used as it is and left open. The model runs on the workers in
+batches whose rows were drawn beforehand, gathered in their order, so the answer does not
+depend on the number of workers nor on where they run. The module is private:
+:mod:`raildyn.validation.uncertainty` imports its names.
 """
 
 from __future__ import annotations
 
 import contextlib
 import math
+import os
+import pickle
 import re
+from concurrent.futures import Executor, ThreadPoolExecutor
 
 import numpy as np
 
 from raildyn import _checks
 from raildyn._progress import progress_bar
 
-__all__ = ["CONNECT_TIMEOUT", "DEFAULT_BATCHES", "check_client", "evaluate_all", "session"]
+__all__ = [
+    "BATCHES_PER_WORKER",
+    "CONNECT_TIMEOUT",
+    "MIN_BATCHES",
+    "batches",
+    "check_client",
+    "evaluate_all",
+    "machine_cores",
+    "session",
+]
 
 #: Seconds to wait for a scheduler given by its address.
 CONNECT_TIMEOUT = 10.0
-#: Batches the work is split into when ``batch`` is None (enough for a smooth bar and for
-#: load balancing over a few tens of workers; few enough that scheduling costs little).
-DEFAULT_BATCHES = 64
+# The batches, when ``batch`` is None. A task costs an overhead o besides its evaluations
+# (scheduling, pickling the model and its rows, sending the answer back: 3 to 10 ms a task on
+# a LocalCluster of the 2-core development machine, quiet to busy). n evaluations of t seconds
+# split into k W near-equal batches run on W workers in k full rounds and take about
+# n t / W + k o + s, s being how long the workers that finish first wait for the last, so the
+# parallel efficiency is about 1 / (1 + (k o + s) W / (n t)). A whole multiple of W keeps every
+# round full (a fixed 64 batches on 24 workers leave 8 of them idle for the third round), and a
+# few rounds let the load balance (a worker that drew slow rows takes fewer batches) while
+# k o stays small against n t / W. For 3,000 critical speeds of 6–7 ms on 16 workers: 1.2 s of
+# work each, 64 batches of 47 evaluations, k o = 0.01–0.04 s. Replaying 1,000 measured
+# evaluation times (taken three times over) on 16 workers gives an efficiency of 0.88–0.90 for
+# k from 1 to 8, on 24 workers 0.83–0.85 at k = 4 where 64 batches give 0.80–0.82
+# (benchmarks/bench_ch11_uncertainty.py replays it in every run). At least MIN_BATCHES in all,
+# so that the progress bar moves on one or two workers.
+#: Batches per worker when ``batch`` is None.
+BATCHES_PER_WORKER = 4
+#: Fewest batches when ``batch`` is None (a whole multiple of the workers at or above it).
+MIN_BATCHES = 16
+
+
+def machine_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the system tells it)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # macOS and Windows have no sched_getaffinity
+        return os.cpu_count() or 1
+
+
+def batches(n: int, batch: int | None, workers: int) -> list[tuple[int, int]]:
+    """The (start, stop) rows of each task: ``batch`` rows each, or near-equal batches for ``workers``."""
+    if batch is not None:
+        return [(s, min(s + batch, n)) for s in range(0, n, batch)]
+    per_worker = max(BATCHES_PER_WORKER, math.ceil(MIN_BATCHES / workers))
+    tasks = min(n, per_worker * workers)
+    edges = [n * i // tasks for i in range(tasks + 1)]  # sizes differ by one row at most
+    return list(zip(edges[:-1], edges[1:], strict=True))
 
 
 def check_client(client) -> None:
-    """None, a distributed.Client, a scheduler address or a cluster object (with scheduler_address)."""
-    if client is None:
+    """None, an executor, a distributed.Client, a scheduler address or a cluster object."""
+    if client is None or isinstance(client, Executor):
         return
     from distributed import Client
 
@@ -45,8 +91,9 @@ def check_client(client) -> None:
     if isinstance(getattr(client, "scheduler_address", None), str):
         return
     raise TypeError(
-        "client must be a distributed.Client, a scheduler address, a cluster object (LocalCluster, "
-        f"a dask-jobqueue cluster) or None, got {client!r:.80} of type {type(client).__name__}"
+        "client must be a concurrent.futures executor (ThreadPoolExecutor, ProcessPoolExecutor), a "
+        "distributed.Client, a scheduler address, a cluster object (LocalCluster, a dask-jobqueue "
+        f"cluster) or None, got {client!r:.80} of type {type(client).__name__}"
     )
 
 
@@ -169,25 +216,73 @@ def session(client, workers):
         yield opened
 
 
+class _Call:
+    """A task as one pickle that runs it when loaded, for an executor of processes.
+
+    ``pickle.loads`` of ``cloudpickle.dumps(_Call(fn, *args))`` is ``fn(*args)`` (the pickle's
+    REDUCE step). A process pool pickles what it sends with the standard pickle, which sends
+    functions by name: the task built by :func:`batch_task` has none, nor has a lambda or a
+    notebook's model. Sent as bytes to ``pickle.loads``, they travel by value, as dask sends
+    them, and the worker imports neither this module nor raildyn.
+    """
+
+    def __init__(self, fn, *args):
+        self.fn, self.args = fn, args
+
+    def __reduce__(self):
+        return self.fn, self.args
+
+
+def _executor_workers(executor) -> int:
+    """The workers of a concurrent.futures executor (the machine's cores if it does not say)."""
+    return int(getattr(executor, "_max_workers", 0) or machine_cores())
+
+
+def _dask_workers(client) -> int:
+    """The threads of the cluster's workers (0 while an adaptive cluster has none yet)."""
+    return sum(w.get("nthreads", 1) for w in client.scheduler_info().get("workers", {}).values())
+
+
+def _wait(futures, as_completed, failed, desc) -> None:
+    """Advance the bar as the batches finish; raise the first error, naming its sample."""
+    with progress_bar(total=len(futures), desc=desc) as bar:
+        for done in as_completed(futures):
+            if failed(done):
+                done.result()  # raises the model's error here, naming its sample
+            bar.update(1)
+
+
 def evaluate_all(model_fn, names, X, client, workers, batch, vectorized, desc, *, scalar=False):
-    """The model at every row of X, on dask.distributed, in batches gathered in their order."""
+    """The model at every row of X, on dask.distributed or an executor, in batches gathered in order."""
     shape = probe(model_fn, names, X, vectorized, scalar)
     n = X.shape[0]
-    size = batch if batch is not None else max(1, math.ceil(n / DEFAULT_BATCHES))
-    starts = range(0, n, size)
+    task = batch_task()
+    desc = f"{desc} ({n} evaluations, batches)"
+    if isinstance(client, Executor):
+        import concurrent.futures
+
+        rows = batches(n, batch, _executor_workers(client))
+        args = [(model_fn, names, X[s:e], s, shape, vectorized) for s, e in rows]
+        if isinstance(client, ThreadPoolExecutor):  # shares this process: nothing to pickle
+            futures = [client.submit(task, *a) for a in args]
+        else:
+            import cloudpickle
+
+            futures = [client.submit(pickle.loads, cloudpickle.dumps(_Call(task, *a))) for a in args]
+        try:
+            _wait(futures, concurrent.futures.as_completed, lambda f: f.exception() is not None, desc)
+            parts = [f.result() for f in futures]
+        finally:
+            for f in futures:
+                f.cancel()
+        return np.concatenate(parts)
     from distributed import as_completed
 
     with session(client, workers) as c:
-        task = batch_task()
-        futures = [
-            c.submit(task, model_fn, names, X[s : s + size], s, shape, vectorized, pure=False) for s in starts
-        ]
+        rows = batches(n, batch, _dask_workers(c) or workers)
+        futures = [c.submit(task, model_fn, names, X[s:e], s, shape, vectorized, pure=False) for s, e in rows]
         try:
-            with progress_bar(total=len(futures), desc=f"{desc} ({n} evaluations, batches)") as bar:
-                for done in as_completed(futures):
-                    if done.status == "error":
-                        done.result()  # raises the model's error here, naming its sample
-                    bar.update(1)
+            _wait(futures, as_completed, lambda f: f.status == "error", desc)
             parts = c.gather(futures)
         finally:
             c.cancel(futures)

@@ -1,31 +1,39 @@
-"""Uncertainty and sensitivity: Monte Carlo prediction bands and Sobol' indices, on dask.distributed.
+"""Uncertainty and sensitivity: Monte Carlo prediction bands and Sobol' indices, on many workers.
 
 A model is any function ``model_fn(**params)`` of named scalar parameters returning a number
 (or, for :func:`monte_carlo`, an array of a fixed shape); the uncertain parameters are given as
 a mapping from each name to a frozen ``scipy.stats`` distribution, taken as independent.
 
-Every random number is drawn in the calling process from ``rng`` before any work is sent
-out; the evaluations are then split into batches, each one a ``distributed`` future, and
-gathered in their original order. The answer therefore depends on the seed only: the same
-seed gives the same numbers, bit for bit, on one worker, on two, or on a cluster of many
-machines. A ``LocalCluster`` of ``workers`` processes is started (and closed) by the call
-when no ``client`` is given; a ``distributed.Client``, a scheduler address or a cluster
-object (``LocalCluster``, a dask-jobqueue ``SLURMCluster``...) runs the same call elsewhere.
+The samples are pseudo-random draws (``sampling="random"``, each distribution's ``rvs``) or
+the points of a scrambled Sobol' or Halton sequence (``"sobol"``, ``"halton"``: quasi-Monte
+Carlo, ``scipy.stats.qmc``) sent through each distribution's inverse CDF. Quasi-random points
+fill the cube more evenly than random ones: for a smooth model the error of a mean falls
+nearly as 1/n instead of 1/√n (for the Ishigami function at n = 1024, 30 times smaller than
+plain Monte Carlo's; see benchmarks/bench_ch11_uncertainty.py).
+
+Every sample is drawn in the calling process from ``rng`` before any work is sent out; the
+evaluations are then split into batches, each one a future, and gathered in their original
+order. The answer therefore depends on the seed only: the same seed gives the same numbers,
+bit for bit, on one worker, on two, on a pool of threads or on a cluster of many machines. A
+``LocalCluster`` with one process per core is started (and closed) by the call when no
+``client`` is given; a ``concurrent.futures`` executor (``ThreadPoolExecutor``,
+``ProcessPoolExecutor``), a ``distributed.Client``, a scheduler address or a cluster object
+(``LocalCluster``, a dask-jobqueue ``SLURMCluster``...) runs the same call elsewhere.
 
 In a script, call these under ``if __name__ == "__main__":``: the worker processes are
 started by spawning, and each imports the script that started them.
 
 Processes, not threads, are the default workers: a model written in Python holds the GIL, so
 threads would take turns on it, while processes compute side by side (the models are sent to
-them by cloudpickle, so a lambda or a function defined in a notebook is fine).
+them by cloudpickle, so a lambda or a function defined in a notebook is fine). Threads serve a
+model that spends its time in numpy or compiled code, which releases the GIL.
 
-SALib is not used. Its Sobol' analysis is the same two estimators (Saltelli's and
-Jansen's, a few lines of numpy here) run on one in-memory matrix, and its sampler builds
-that matrix from a quasi-random Sobol' sequence of a power-of-two length in one piece;
-what this module needs around them is what SALib does not do: draws from any scipy
-distribution by a seed, split into futures, gathered in order. Taking it in would add a
-dependency (with pandas, multiprocess and dill) for the two sums; the Ishigami closed
-form checks them instead.
+The indices themselves are ``scipy.stats.sobol_indices``'s (the same two estimators), given
+the outputs computed here; see :func:`sobol_indices` for where raildyn's own sums remain. SALib
+is not used: its Sobol' analysis is the same two estimators on one in-memory matrix, and what
+this module needs around them is what SALib does not do either (draws from any scipy
+distribution by a seed, split into futures, gathered in order); it would add a dependency (with
+pandas, multiprocess and dill) for the two sums.
 """
 
 from __future__ import annotations
@@ -37,7 +45,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.validation import _cluster
+from raildyn.validation import _cluster, _sampling, _sobol
 
 __all__ = ["MonteCarloResult", "SobolResult", "monte_carlo", "sobol_indices"]
 
@@ -273,19 +281,20 @@ def monte_carlo(
     samples: int,
     *,
     rng=None,
+    sampling: str = "random",
     client=None,
-    workers: int = 2,
+    workers: int | None = None,
     percentiles=(2.5, 50.0, 97.5),
     batch: int | None = None,
     vectorized: bool = False,
 ) -> MonteCarloResult:
-    """Monte Carlo propagation: the model's output over random draws of its parameters, with bands.
+    """Monte Carlo propagation: the model's output over samples of its parameters, with bands.
 
-    Draws ``samples`` independent values of each parameter from its distribution, evaluates
-    the model at each draw on dask.distributed (in batches, gathered in order) and returns
-    the outputs with their mean, standard deviation and percentiles. The draws come from
-    ``rng`` in this process before any evaluation, so the answer is the same whatever the
-    number of workers.
+    Draws ``samples`` values of each parameter from its distribution (pseudo-random, or
+    quasi-random points of a scrambled Sobol' or Halton sequence), evaluates the model at
+    each sample on the workers (in batches, gathered in order) and returns the outputs with
+    their mean, standard deviation and percentiles. The samples come from ``rng`` in this
+    process before any evaluation, so the answer is the same whatever runs them.
 
     Parameters
     ----------
@@ -295,24 +304,36 @@ def monte_carlo(
         by cloudpickle (a lambda or a notebook function is). Called with one float per
         parameter, or with one array per parameter (the batch's values) when ``vectorized``.
     distributions : mapping of str to scipy.stats frozen distribution
-        Each uncertain parameter's distribution (anything with ``rvs(size, random_state)``),
-        taken as independent, e.g. ``{"k": scipy.stats.uniform(0.9e6, 0.2e6)}``.
+        Each uncertain parameter's distribution (anything with ``rvs(size, random_state)``,
+        and a ``ppf`` for quasi-random sampling), taken as independent, e.g.
+        ``{"k": scipy.stats.uniform(0.9e6, 0.2e6)}``.
     samples : int
-        Number of draws n, in [2, 10⁸].
+        Number of samples n, in [2, 10⁸]; a power of two for ``sampling="sobol"``.
     rng : numpy.random.Generator, int or None
-        Source of the draws (a seed for a reproducible run).
-    client : distributed.Client, str, cluster or None
+        Source of the draws, or of the scrambling of a quasi-random sequence (a seed for a
+        reproducible run).
+    sampling : {"random", "sobol", "halton"}
+        ``"random"``: independent draws by each distribution's ``rvs``. ``"sobol"``: a
+        scrambled Sobol' sequence (``scipy.stats.qmc.Sobol``) of n = 2^m points, each
+        coordinate sent through its distribution's ``ppf``; another n is refused, because
+        the points are balanced over powers of two only. ``"halton"``: a scrambled Halton
+        sequence (``scipy.stats.qmc.Halton``), any n.
+    client : concurrent.futures.Executor, distributed.Client, str, cluster or None
         Where to run: None starts a ``LocalCluster`` of ``workers`` processes for this call
-        and closes it after; a ``distributed.Client`` is used as it is; a string is a
-        scheduler address (``"tcp://host:8786"``); a cluster object (``LocalCluster``,
-        a dask-jobqueue cluster) is connected to for the call.
-    workers : int
-        Worker processes of the ``LocalCluster`` started when ``client`` is None, in [1, 64].
+        and closes it after; an executor (``ThreadPoolExecutor``, ``ProcessPoolExecutor``,
+        any ``concurrent.futures.Executor``) or a ``distributed.Client`` is used as it is and
+        left open; a string is a scheduler address (``"tcp://host:8786"``); a cluster object
+        (``LocalCluster``, a dask-jobqueue cluster) is connected to for the call.
+    workers : int or None
+        Worker processes of the ``LocalCluster`` started when ``client`` is None, in [1, 64];
+        None: one per core this process may use (at most 64).
     percentiles : array_like, shape (p,)
         Percentiles of the bands, in [0, 100], strictly increasing (default: the median and
         the 95 % band).
     batch : int or None
-        Evaluations per task (≥ 1); None splits the work into about 64 tasks.
+        Evaluations per task (≥ 1); None splits the work into four near-equal batches per
+        worker (at least 16 in all), enough to balance the load and move the progress bar,
+        few enough that the cost of each task stays small.
     vectorized : bool
         Whether ``model_fn`` takes arrays (one value per evaluation of the batch) and returns
         an array with one row per evaluation.
@@ -326,14 +347,17 @@ def monte_carlo(
     ------
     ValueError
         For a parameter name ``model_fn`` does not take, a distribution that draws
-        non-finite values, or a model output that is not finite (the message names the
-        sample and its parameter values) or changes shape.
+        non-finite values, a ``sampling`` not in the list or a number of samples it does not
+        take, or a model output that is not finite (the message names the sample and its
+        parameter values) or changes shape.
 
     Notes
     -----
     The bands are sample percentiles: with n draws the 2.5 % point is estimated from about
-    0.025 n outputs below it, so a 95 % band wants n in the thousands. The mean's standard
-    error is std / √n.
+    0.025 n outputs below it, so a 95 % band wants n in the thousands. With random draws the
+    mean's standard error is std / √n; quasi-random points are not independent, and for a
+    smooth model their mean is much closer than that (its error is measured by repeating the
+    study with other seeds, each scrambling the sequence afresh).
 
     Examples
     --------
@@ -344,12 +368,21 @@ def monte_carlo(
     ...                      "m": stats.uniform(900, 200)}, 400, rng=1, client=client)
     >>> mc.outputs.shape, bool(30 < mc.mean < 34)
     ((400,), True)
+
+    The same study on 256 points of a scrambled Sobol' sequence, on a pool of threads:
+
+    >>> from concurrent.futures import ThreadPoolExecutor
+    >>> with ThreadPoolExecutor(2) as pool:
+    ...     qmc = monte_carlo(lambda k, m: (k / m) ** 0.5, {"k": stats.norm(1e6, 1e5),
+    ...                       "m": stats.uniform(900, 200)}, 256, rng=1, sampling="sobol", client=pool)
+    >>> round(float(qmc.mean), 1)
+    31.6
     """
     names, gen, n_workers, chunk = _common(
-        model_fn, distributions, samples, rng, client, workers, batch, vectorized
+        model_fn, distributions, samples, rng, sampling, client, workers, batch, vectorized
     )
     p = _percentiles("percentiles", percentiles)
-    X = _draw(distributions, names, samples, gen)
+    X = _sampling.draw(distributions, names, samples, gen, sampling)
     Y = _cluster.evaluate_all(model_fn, names, X, client, n_workers, chunk, vectorized, "Monte Carlo")
     return MonteCarloResult(
         names,
@@ -368,8 +401,9 @@ def sobol_indices(
     samples: int,
     *,
     rng=None,
+    sampling: str = "random",
     client=None,
-    workers: int = 2,
+    workers: int | None = None,
     bootstrap: int = 1000,
     confidence: float = 0.95,
     batch: int | None = None,
@@ -377,9 +411,11 @@ def sobol_indices(
 ) -> SobolResult:
     """Sobol' first-order and total sensitivity indices of a scalar model, with bootstrap intervals.
 
-    Two independent N × d samples A and B are drawn; for each parameter i the matrix
-    A_B⁽ⁱ⁾ is A with its column i taken from B. The model runs on A, B and the d matrices
-    A_B⁽ⁱ⁾, N (d + 2) times in all, on dask.distributed. With f₀ and σ_Y² the mean and the
+    Two independent N × d samples A and B are drawn (pseudo-random, or the two halves of
+    one scrambled quasi-random sequence of dimension 2d, as Saltelli et al. 2010, section 5,
+    make them); for each parameter i the matrix A_B⁽ⁱ⁾ is A with its column i taken from B.
+    The model runs on A, B and the d matrices A_B⁽ⁱ⁾, N (d + 2) times in all, on the
+    workers. With f₀ and σ_Y² the mean and the
     variance of f over A and B together, the first-order index uses Saltelli's estimator
     and the total index Jansen's (Jansen 1999), both as Saltelli et al. (2010, Table 2) list them
     (derived in notebook 11 from the law of total variance):
@@ -388,11 +424,20 @@ def sobol_indices(
     S_Ti = (1/2N) Σ_j (f(A)_j − f(A_B⁽ⁱ⁾)_j)² / σ_Y².
 
     Saltelli's estimator is written with f(B) itself; subtracting f₀ leaves its expectation
-    unchanged and removes the noise an output's mean adds to it (SALib's analysis centres its
-    outputs too), so the indices of f and of f + c agree.
+    unchanged and removes the noise an output's mean adds to it (scipy's and SALib's analyses
+    centre their outputs too), so the indices of f and of f + c agree.
+
+    The two sums are ``scipy.stats.sobol_indices``'s (its ``saltelli_2010`` method), handed
+    the outputs computed here, whenever N is a power of two. raildyn keeps its own few lines
+    of numpy for what scipy's cannot do: scipy refuses any other N, even with the outputs
+    given, and its callable form evaluates the model on all samples at once in this process
+    (no batches, no workers, no progress). The intervals are raildyn's too: scipy's
+    bootstrap (BCa) takes no seed, so its intervals would change from run to run.
 
     The intervals are bootstrap percentile intervals over the N rows (Efron & Tibshirani
     1993, ch. 13), resampled ``bootstrap`` times with draws from ``rng`` after the samples.
+    They treat the rows as independent: with quasi-random samples, which are not, they
+    overstate the error.
 
     Parameters
     ----------
@@ -401,20 +446,24 @@ def sobol_indices(
     distributions : mapping of str to scipy.stats frozen distribution
         Each parameter's distribution; the indices assume independent parameters.
     samples : int
-        N, the rows of each base sample, in [2, 10⁷]. The estimators' standard error falls
-        as 1/√N; for the Ishigami function it is 0.004 to 0.017 at N = 8192.
+        N, the rows of each base sample, in [2, 10⁷]; a power of two for
+        ``sampling="sobol"``. The estimators' standard error falls as 1/√N with random
+        samples; for the Ishigami function it is 0.004 to 0.017 at N = 8192.
     rng : numpy.random.Generator, int or None
         Source of the samples and of the bootstrap (a seed for a reproducible run).
-    client : distributed.Client, str, cluster or None
+    sampling : {"random", "sobol", "halton"}
+        How A and B are drawn; see :func:`monte_carlo`.
+    client : concurrent.futures.Executor, distributed.Client, str, cluster or None
         Where to run; see :func:`monte_carlo`.
-    workers : int
-        Worker processes of the ``LocalCluster`` started when ``client`` is None, in [1, 64].
+    workers : int or None
+        Worker processes of the ``LocalCluster`` started when ``client`` is None, in [1, 64];
+        None: one per core.
     bootstrap : int
         Bootstrap resamples for the intervals, in [10, 10⁵].
     confidence : float
         Confidence level of the intervals, in (0, 1).
     batch : int or None
-        Evaluations per task (≥ 1); None splits the work into about 64 tasks.
+        Evaluations per task (≥ 1); None: see :func:`monte_carlo`.
     vectorized : bool
         Whether ``model_fn`` takes and returns arrays; see :func:`monte_carlo`.
 
@@ -440,14 +489,14 @@ def sobol_indices(
     ([0.2, 0.8], [0.2, 0.8])
     """
     names, gen, n_workers, chunk = _common(
-        model_fn, distributions, samples, rng, client, workers, batch, vectorized, sobol=True
+        model_fn, distributions, samples, rng, sampling, client, workers, batch, vectorized, sobol=True
     )
     d = len(names)
     resamples = _checks.integer("bootstrap", bootstrap, low=10, high=10**5)
     level = _checks.scalar("confidence", confidence, low=0.0, high=1.0, low_open=True, high_open=True)
     N = samples
-    A = _draw(distributions, names, N, gen)
-    B = _draw(distributions, names, N, gen)
+    AB = _sampling.draw(distributions, names, N, gen, sampling, blocks=2)
+    A, B = AB[:, :d], AB[:, d:]
     stacked = [A, B]
     for i in range(d):
         ABi = A.copy()
@@ -464,59 +513,27 @@ def sobol_indices(
             f"model_fn's output does not vary over the {2 * N} base samples (variance {variance!r}): "
             "its Sobol' indices are undefined"
         )
-    first, total, _ = _sobol_estimators(fA, fB, fAB)
-    # Bootstrap: resample the N rows (the same rows for A, B and every A_B(i)), in chunks of
-    # resamples to bound the memory at about 32 MB whatever N.
-    rows_per_chunk = max(1, 4_000_000 // (N * (d + 2)))
-    boot_first, boot_total = [], []
-    for start in range(0, resamples, rows_per_chunk):
-        idx = gen.integers(0, N, size=(min(rows_per_chunk, resamples - start), N))
-        with np.errstate(divide="ignore", invalid="ignore"):  # a resample of equal rows: NaN, left out
-            s, t, _ = _sobol_estimators(fA[idx], fB[idx], fAB[:, idx])
-        boot_first.append(s)
-        boot_total.append(t)
-    tail = 50.0 * (1.0 - level)
-    q = (tail, 100.0 - tail)
-    boot_first, boot_total = np.concatenate(boot_first, axis=-1), np.concatenate(boot_total, axis=-1)
-    kept = np.isfinite(boot_first).all(axis=0) & np.isfinite(boot_total).all(axis=0)
-    if kept.sum() < 10:
-        raise ValueError(
-            f"samples = {N} is too few for a bootstrap: the output varies in fewer than 10 of "
-            f"{resamples} resamples"
-        )
-    first_interval = np.percentile(boot_first[:, kept], q, axis=-1).T
-    total_interval = np.percentile(boot_total[:, kept], q, axis=-1).T
+    first, total = _sobol.indices(fA, fB, fAB)
+    first_interval, total_interval = _sobol.bootstrap_intervals(fA, fB, fAB, gen, resamples, level)
     return SobolResult(names, first, total, first_interval, total_interval, level, N, variance)
-
-
-def _sobol_estimators(fA, fB, fAB):
-    """S_i by Saltelli's estimator and S_Ti by Jansen's (Saltelli et al. 2010, Table 2), centred, and σ_Y².
-
-    ``fA`` and ``fB`` have shape (..., N); ``fAB`` has shape (d, ..., N). Returns arrays of
-    shape (d, ...) and the variance of shape (...).
-    """
-    both = np.concatenate([fA, fB], axis=-1)
-    variance = np.var(both, axis=-1)
-    # Centred first: f(B) multiplies a difference whose mean is S_i V, so an output's mean f0
-    # adds f0 (f(A_B) − f(A)), zero on average but with f0² times its variance to the estimate
-    # (a critical speed of 78 ± 1 m/s would drown its indices in noise).
-    mean = both.mean(axis=-1, keepdims=True)
-    first = np.mean((fB - mean) * (fAB - fA), axis=-1) / variance
-    total = 0.5 * np.mean((fA - fAB) ** 2, axis=-1) / variance
-    return first, total, variance
 
 
 # --------------------------------------------------------------------------- checks
 
 
-def _common(model_fn, distributions, samples, rng, client, workers, batch, vectorized, *, sobol=False):
+def _common(
+    model_fn, distributions, samples, rng, sampling, client, workers, batch, vectorized, *, sobol=False
+):
     """Check what both analyses take, before anything is drawn or sent; return the names and the rest."""
     _checks.function("model_fn", model_fn)
     names = _names(distributions)
     _check_signature(model_fn, names)
     per_sample = len(names) + 2 if sobol else 1  # model runs per sample: N (d + 2) for Sobol' indices
     _checks.integer("samples", samples, low=2, high=_MAX_EVALUATIONS // per_sample)
+    _sampling.check(sampling, distributions, names, samples)
     gen = _checks.generator(rng)
+    if workers is None:
+        workers = min(_cluster.machine_cores(), _MAX_WORKERS)
     n_workers = _checks.integer("workers", workers, low=1, high=_MAX_WORKERS)
     chunk = None if batch is None else _checks.integer("batch", batch, low=1)
     _checks.flag("vectorized", vectorized)
@@ -578,23 +595,3 @@ def _percentiles(name, value) -> np.ndarray:
     if p[-1] > 100.0:
         raise ValueError(f"{name} must lie in [0, 100], got {p[-1]!r}")
     return p
-
-
-def _draw(distributions, names, n, gen) -> np.ndarray:
-    """n draws of each parameter, one column each, in the order of ``names``."""
-    X = np.empty((n, len(names)))
-    for j, name in enumerate(names):
-        try:
-            values = np.asarray(distributions[name].rvs(size=n, random_state=gen), dtype=float)
-        except (TypeError, ValueError) as err:
-            raise ValueError(f"distributions[{name!r}] could not be sampled: {err}") from err
-        if values.shape != (n,):
-            raise ValueError(
-                f"distributions[{name!r}] must be a scalar distribution; rvs(size={n}) gave shape "
-                f"{values.shape}"
-            )
-        if not np.isfinite(values).all():
-            k = int(np.flatnonzero(~np.isfinite(values))[0])
-            raise ValueError(f"distributions[{name!r}] drew a non-finite value {values[k]!r} (draw {k})")
-        X[:, j] = values
-    return X

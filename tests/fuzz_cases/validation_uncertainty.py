@@ -1,7 +1,8 @@
 """Fuzz registry: chapter 11's Monte Carlo bands and Sobol' indices (raildyn.validation.uncertainty).
 
 The valid calls run on one in-process cluster (threads: it starts in well under a second),
-started at the first call and closed when the interpreter exits. The change ``client: none``
+started at the first call and closed when the interpreter exits; they draw quasi-random
+samples (Halton's for the bands, Sobol' points for the indices, 16 = 2^4 of them). The change ``client: none``
 starts the default LocalCluster of two processes, hence the longer limit of those entries.
 """
 
@@ -49,7 +50,9 @@ def _sobol_result() -> SobolResult:
 ENTRIES = [
     fuzz(
         "raildyn.validation.uncertainty.monte_carlo",
-        lambda: call(lambda k, m: np.sqrt(k / m), DISTRIBUTIONS, 20, rng=1, client=_client()),
+        lambda: call(
+            lambda k, m: np.sqrt(k / m), DISTRIBUTIONS, 20, rng=1, sampling="halton", client=_client()
+        ),
         accepts={
             "model_fn": "returns-negative returns-shape",  # any finite output of one fixed shape
             "rng": "zero none",  # seed 0; None: fresh entropy
@@ -61,7 +64,14 @@ ENTRIES = [
     fuzz(
         "raildyn.validation.uncertainty.sobol_indices",
         lambda: call(
-            lambda k, m: k / m, DISTRIBUTIONS, 20, rng=1, client=_client(), bootstrap=20, confidence=0.9
+            lambda k, m: k / m,
+            DISTRIBUTIONS,
+            16,
+            rng=1,
+            sampling="sobol",
+            client=_client(),
+            bootstrap=20,
+            confidence=0.9,
         ),
         accepts={
             "confidence": "tiny",
