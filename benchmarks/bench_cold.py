@@ -1,7 +1,7 @@
 """Cold starts: the first call of each compiled path in a fresh process, with numba's cache empty and built.
 
 raildyn's kernels are compiled by numba on first use and cached on disk (``cache=True``); the install
-builds the cache ahead of time (``python -m raildyn compile``, ``raildyn._warm``). Each case runs a fresh
+builds the cache ahead of time (``python -m raildyn compile``). Each case runs a fresh
 Python process that imports the chapter's module and makes the first call a notebook makes (the first
 bifurcation diagram, FASTSIM batch, train run and bridge crossing): raildyn's time with the cache the
 warm-up built, the baseline's with an empty cache (``NUMBA_CACHE_DIR`` pointed at a new folder, one per

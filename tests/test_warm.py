@@ -1,4 +1,4 @@
-"""The warm-up (``python -m raildyn compile``, raildyn._warm) leaves numba's cache built for every kernel.
+"""The warm-up (``python -m raildyn compile``) leaves numba's cache built for every kernel.
 
 One fresh process with an empty cache (``NUMBA_CACHE_DIR`` in a temporary folder) runs the command, which
 must write an index (.nbi) for every cached numba function of raildyn, found in the sources, and machine
@@ -25,7 +25,8 @@ ROOT = Path(__file__).resolve().parents[1]
 FIRST_CALLS = """
 import json
 import numpy as np
-from raildyn import _warm, bridge, stability, train
+from raildyn import bridge, stability, train
+from raildyn.__main__ import cache_counts, kernels, warm
 from raildyn.contact import fastsim
 from raildyn.vehicles import LateralCar
 
@@ -36,9 +37,9 @@ train.simulate(train.braking_model(10, 1), 5.0, 20.0)
 beam = bridge.SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=5)
 bridge.crossing(beam, bridge.AxleSequence([0.0], [1.0e5]), 40.0)
 first = {name: [sum(k.stats.cache_hits.values()), sum(k.stats.cache_misses.values())]
-         for name, k in _warm.kernels().items()}
-_warm.warm(progress=False)
-print(json.dumps({"first": first, "all": _warm.cache_counts()}))
+         for name, k in kernels().items()}
+warm(progress=False)
+print(json.dumps({"first": first, "all": cache_counts()}))
 """
 
 
