@@ -11,12 +11,14 @@ export MPLCONFIGDIR := $(CURDIR)/.venv/matplotlib
 .PHONY: book book-student pdf pdf-student test test-fast lab app bench figures lint clean chromium fe-libs install
 
 # A fresh virtual environment with the pinned ranges, raildyn installed editable
-# so that the notebooks import the working tree.
+# so that the notebooks import the working tree; then its numba kernels compiled once into numba's
+# cache (the __pycache__ folders beside the sources, which every later kernel, book build and Voilà loads).
 $(STAMP): requirements.txt pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -r requirements.txt
 	$(PY) -m pip install --quiet --no-deps --no-build-isolation -e .
+	$(PY) -m raildyn compile
 	touch $@
 
 install: $(STAMP)
