@@ -7,8 +7,8 @@ environment leaks in. ``tests/conftest.py`` starts this script in the background
 has collected the slow test of ``tests/test_binder.py`` (the installation takes a minute or two, mostly
 waiting on the disk), and the test reads what it printed.
 
-Usage: ``python tests/binder_env.py WORKDIR`` → prints ``notebook ran``, ``raildyn from <path>`` and
-``python X.Y``.
+Usage: ``python tests/binder_env.py WORKDIR`` → prints what postBuild printed, ``notebook ran``, numba's
+counts of the first compiled calls (``first calls: {...}``), ``raildyn from <path>`` and ``python X.Y``.
 """
 
 from __future__ import annotations
@@ -59,8 +59,14 @@ def main(work: Path) -> None:
     env["RAILDYN_PROGRESS"] = "0"
     env["PIP_NO_COMPILE"] = "1"  # no byte-compiling at install: less CPU taken from the tests running beside
     subprocess.run([bin_ / "python", "-m", "pip", "install", "-q", *BASE], check=True, env=env)
-    subprocess.run(["bash", "binder/postBuild"], cwd=repo, check=True, env=env, stdout=subprocess.DEVNULL)
+    # postBuild installs raildyn and compiles its kernels into a cache that starts empty: what it prints
+    # (how many kernels it compiled, how many it loaded) is read by tests/test_warm.py.
+    subprocess.run(["bash", "binder/postBuild"], cwd=repo, check=True, env=env)
     subprocess.run([bin_ / "python", "-c", RUN], cwd=repo / "notebooks", env=env, check=True)
+    # A fresh process of the launched environment makes the notebooks' first compiled calls
+    # (tests/test_warm.py holds numba's counts: every kernel loaded from postBuild's cache, none compiled).
+    first_calls = (ROOT / "tests" / "first_calls.py").read_text(encoding="utf-8")
+    subprocess.run([bin_ / "python", "-c", first_calls], cwd=work, env=env, check=True)
     subprocess.run(
         [bin_ / "python", "-c", "import sys, raildyn; print('raildyn from', raildyn.__file__); "
          "print(f'python {sys.version_info.major}.{sys.version_info.minor}')"],
