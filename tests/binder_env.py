@@ -2,10 +2,11 @@
 
 A fresh virtual environment stands in for repo2docker's (the Python that ``binder/runtime.txt`` asks
 for, with Jupyter's kernel and nbclient), ``binder/postBuild`` installs raildyn into it, and notebook
-01 runs there from ``notebooks/``, in a clone of the repository, so that nothing of this checkout's own
-environment leaks in. ``tests/conftest.py`` starts this script in the background as soon as the session
-has collected the slow test of ``tests/test_binder.py`` (the installation takes a minute or two, mostly
-waiting on the disk), and the test reads what it printed.
+01 runs there from ``notebooks/`` through ``binder/start`` (as every launch does), in a clone of the
+repository, so that nothing of this checkout's own environment leaks in. ``tests/conftest.py`` starts
+this script in the background when the book's group of tests begins (the installation and the kernels'
+compilation take minutes), and the tests of ``tests/test_binder.py`` and ``tests/test_warm.py`` read
+what it printed.
 
 Usage: ``python tests/binder_env.py WORKDIR`` → prints what postBuild printed, ``notebook ran``, numba's
 counts of the first compiled calls (``first calls: {...}``), ``raildyn from <path>`` and ``python X.Y``.
@@ -62,11 +63,12 @@ def main(work: Path) -> None:
     # postBuild installs raildyn and compiles its kernels into a cache that starts empty: what it prints
     # (how many kernels it compiled, how many it loaded) is read by tests/test_warm.py.
     subprocess.run(["bash", "binder/postBuild"], cwd=repo, check=True, env=env)
-    subprocess.run([bin_ / "python", "-c", RUN], cwd=repo / "notebooks", env=env, check=True)
+    start = ["bash", str(repo / "binder" / "start")]  # what every launch runs through
+    subprocess.run([*start, bin_ / "python", "-c", RUN], cwd=repo / "notebooks", env=env, check=True)
     # A fresh process of the launched environment makes the notebooks' first compiled calls
     # (tests/test_warm.py holds numba's counts: every kernel loaded from postBuild's cache, none compiled).
     first_calls = (ROOT / "tests" / "first_calls.py").read_text(encoding="utf-8")
-    subprocess.run([bin_ / "python", "-c", first_calls], cwd=work, env=env, check=True)
+    subprocess.run([*start, bin_ / "python", "-c", first_calls], cwd=work, env=env, check=True)
     subprocess.run(
         [bin_ / "python", "-c", "import sys, raildyn; print('raildyn from', raildyn.__file__); "
          "print(f'python {sys.version_info.major}.{sys.version_info.minor}')"],
