@@ -136,7 +136,15 @@ def _nonlinear_wheelset():
     from raildyn import stability
     from raildyn.wheelset import NonlinearWheelset, WheelRailContact, Wheelset
 
-    stability.limit_cycle_amplitude(NonlinearWheelset(Wheelset(), WheelRailContact()), 60.0, duration=0.1)
+    model = NonlinearWheelset(Wheelset(), WheelRailContact())
+    stability.limit_cycle_amplitude(model, 60.0, duration=0.1)
+    # The shooting's stacked right-hand side (the branch of limit cycles): two columns, one evaluation.
+    rhs = model.compiled_rhs(60.0)
+    n = model.state_size
+    data = np.zeros((2, max(rhs.row.size, 3)))
+    data[0, : rhs.row.size] = rhs.row
+    data[1, :3] = [n, 0, 0]
+    rhs.stacked(0.0, np.zeros(2 * n), 0, data, np.empty(2 * n))
 
 
 def _profile_contact():
@@ -218,7 +226,7 @@ def _time_response():
 STEPS: tuple[tuple[str, Callable[[], None]], ...] = (
     ("track: a wheel over a dipped joint, the discrete track's receptance", _impact),
     ("contact: FASTSIM, one state and a batch", _fastsim),
-    ("wheelset: the nonlinear wheelset's limit cycle", _nonlinear_wheelset),
+    ("wheelset: the nonlinear wheelset's limit cycle and its shooting", _nonlinear_wheelset),
     ("vehicle response: the ride's time march", _time_response),
     ("vehicle response: the rocking freight car", _rocking),
     ("stability: the nonlinear car's bifurcation diagram", _nonlinear_car),

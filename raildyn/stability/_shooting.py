@@ -17,15 +17,20 @@ from raildyn.stability.nonlinear import _MAX_EVALUATIONS, _integrate, _label
 _ATOL = 1.0e-12  # the absolute tolerance of the runs, in the state's units
 
 
-# The stacked right-hand sides built so far, one per model kernel (each compiled once, in about 0.3 s).
+# The stacked right-hand sides built so far for kernels that give none of their own (each compiled once
+# a process, in about 0.3 s: numba cannot cache a function that closes over another).
 _STACKED = {}
 
 
-def stacked(kernel):
-    """A compiled right-hand side that evaluates ``kernel`` on each column of a stacked state.
+def stacked(rhs):
+    """A compiled right-hand side that evaluates ``rhs.kernel`` on each column of a stacked state: the
+    model's own (``rhs.stacked``, cached by numba), or one built around the kernel.
 
     The last row of ``data`` lays the stack out: [n, the data row of column 0, of column 1, ...].
     """
+    if rhs.stacked is not None:
+        return rhs.stacked
+    kernel = rhs.kernel
     if kernel not in _STACKED:
         import numba
 
@@ -77,7 +82,7 @@ def flows(model, starts, V, dV, T, rtol, engine):
             data[i, : r.row.size] = r.row
         data[2, : k + 1] = [n] + [0] * (k - 1) + [1]
         run = runner.dormand_prince(
-            stacked(rows[0].kernel), data, starts.T.ravel(), t, rtol=rtol, atol=_ATOL, rows=[iy],
+            stacked(rows[0]), data, starts.T.ravel(), t, rtol=rtol, atol=_ATOL, rows=[iy],
             budget=_MAX_EVALUATIONS, label=_label(V),
         )  # fmt: skip
         return run.end.reshape(k, n).T, run.y[0]

@@ -198,6 +198,19 @@ def lateral_rhs(t, state, member, data, out):
             out[n + i] += row[minv + i * n + iy] * fy + row[minv + i * n + ipsi] * mz
 
 
+@numba.njit(RHS_SIGNATURE, cache=True, error_model="numpy")
+def stacked_lateral_rhs(t, y, member, data, out):
+    """``lateral_rhs`` on each column of a stacked state, integrated as one system (the shooting's finite
+    differences, which must share one sequence of steps). The last row of ``data`` lays the stack out:
+    [n, the data row of column 0, of column 1, ...]. Defined here, not built around the kernel where it is
+    used, so that numba can cache it: a function that closes over a kernel is compiled in every process.
+    """
+    layout = data.shape[0] - 1
+    n = int(data[layout, 0])
+    for c in range(y.size // n):
+        lateral_rhs(t, y[c * n : (c + 1) * n], int(data[layout, 1 + c]), data, out[c * n : (c + 1) * n])
+
+
 @numba.njit(cache=True, error_model="numpy")
 def _arc_forces(row, q, V, kappa, a_q, out):
     """The generalized forces at rest on an arc into ``out`` (as ``NonlinearLateral.arc_forces``)."""

@@ -278,7 +278,7 @@ class NonlinearLateral:
             raise ValueError(f"the compiled engine cannot run this model: {self.compiled_reason}")
         from raildyn.wheelset import _engine
 
-        return CompiledRHS(_engine.lateral_rhs, _engine.pack(self, V))
+        return CompiledRHS(_engine.lateral_rhs, _engine.pack(self, V), _engine.stacked_lateral_rhs)
 
     def rhs(self, t, state, speed):
         """Time derivative of [q; q̇] at speed V.

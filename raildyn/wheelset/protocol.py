@@ -89,17 +89,26 @@ class CompiledRHS:
         :data:`raildyn.integrators.runner.RHS_SIGNATURE`.
     row : ndarray, (m,)
         The model's row of ``data``: its matrices, wheelsets, contact and curve, and the speed.
+    stacked : numba function or None
+        The same right-hand side on each column of a stacked state, compiled to the same signature, the
+        last row of ``data`` laying the stack out ([n, the data row of column 0, of column 1, ...]);
+        None where the model gives none (the shooting then builds one around ``kernel``).
     """
 
     kernel: object
     row: np.ndarray
+    stacked: object = None
 
     def __post_init__(self):
         import numba.core.registry
 
-        if not isinstance(self.kernel, numba.core.registry.CPUDispatcher):
-            raise TypeError(
-                "kernel must be a numba function compiled to raildyn.integrators.runner.RHS_SIGNATURE, "
-                f"got {self.kernel!r:.80}"
-            )
+        for name in ("kernel", "stacked"):
+            value = getattr(self, name)
+            if name == "stacked" and value is None:
+                continue
+            if not isinstance(value, numba.core.registry.CPUDispatcher):
+                raise TypeError(
+                    f"{name} must be a numba function compiled to raildyn.integrators.runner.RHS_SIGNATURE, "
+                    f"got {value!r:.80}"
+                )
         object.__setattr__(self, "row", _checks.array("row", self.row, shape=(None,), allow_empty=False))

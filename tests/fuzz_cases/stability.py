@@ -345,9 +345,10 @@ ENTRIES = [
     ),
     fuzz(
         "raildyn.wheelset.CompiledRHS",
-        lambda: call(NW.compiled_rhs(60.0).kernel, NW.compiled_rhs(60.0).row),
-        # a row is any floats of the engine's layout; its entries are the model's, of either sign
-        accepts={"row": "zero negative huge"},
+        lambda: call(*[getattr(NW.compiled_rhs(60.0), f) for f in ("kernel", "row", "stacked")]),
+        # a row is any floats of the engine's layout; its entries are the model's, of either sign; a model
+        # may give no stacked right-hand side of its own
+        accepts={"row": "zero negative huge", "stacked": "none"},
     ),
     fuzz(
         "raildyn.wheelset.NonlinearLateral.rhs",
