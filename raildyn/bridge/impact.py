@@ -38,7 +38,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.bridge import _band, _impact_kernel, _impact_reference
+from raildyn.bridge import _impact_reference
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.bridge._band,
+# raildyn.bridge._impact_kernel
 from raildyn.bridge.defects import MAX_DIP_ANGLE, DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.sleepers import DiscreteTrack, _shape
 from raildyn.bridge.wheels import VehicleWheels, Wheel, WheelBlock
@@ -303,6 +306,8 @@ def wheel_on_track(
     SolverError
         If a contact force goes non-finite, or the contact forces will not settle in a step.
     """
+    from raildyn.bridge import _band, _impact_kernel
+
     if not isinstance(wheels, Wheel | VehicleWheels | WheelBlock):
         raise TypeError(f"wheels must be a Wheel, VehicleWheels or a WheelBlock, got {type(wheels).__name__}")
     block = wheels if isinstance(wheels, WheelBlock) else wheels.block()

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 import scipy.linalg
 
@@ -355,6 +355,8 @@ class IntegrationResult:
         dict
             ``{"line": Line2D}``.
         """
+        import matplotlib
+
         y = self._row(dof, quantity)
         n = self.x.shape[0]
         scale = scalar("scale", scale)

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
@@ -233,6 +233,8 @@ class SchemeAccuracy:
             )
 
     def _draw(self, ax, artists, y, ylabel, style) -> dict:
+        import matplotlib
+
         if artists is not None:
             _checks.instance("artists", artists, dict, "dict of an earlier call's artists")
             if "line" not in artists:

@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-import matplotlib
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
@@ -110,6 +110,8 @@ class IrregularitySample:
         dict
             The artists ``line``, ``upper`` and ``lower``.
         """
+        import matplotlib
+
         ax = plots.axes_or_new(ax)
         z = self.z if self.z.ndim == 1 else self.z[0]
         with matplotlib.rc_context(plots.STYLE):
@@ -355,6 +357,8 @@ class TwoRailIrregularity:
         dict
             The lines ``left_vertical``, ``right_vertical``, ``left_lateral`` and ``right_lateral``.
         """
+        import matplotlib
+
         if axes is not None:
             from matplotlib.axes import Axes
 

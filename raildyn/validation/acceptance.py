@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks
@@ -103,6 +103,8 @@ class SlidingRMS:
         dict
             ``{"line": line}``.
         """
+        import matplotlib
+
         ax = axes_or_new(ax)
         with matplotlib.rc_context(STYLE):
             (line,) = ax.plot(self.position, self.rms, color=color, label=label)
@@ -211,6 +213,8 @@ class SectionMaxima:
         dict
             The step artists ``lower`` and ``upper``.
         """
+        import matplotlib
+
         ax = axes_or_new(ax)
         edges = np.append(self.start, self.start[-1] + self.length)
         lo, hi = (f"{q:g} %" for q in self.percent)

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks
@@ -314,6 +314,8 @@ class Agreement:
         dict
             The lines ``measured`` and ``predicted``.
         """
+        import matplotlib
+
         ax = axes_or_new(ax)
         x = np.arange(self.measured.size) if self.time is None else self.time
         with matplotlib.rc_context(STYLE):

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks, _deprecated, plots
@@ -330,6 +330,8 @@ class RockAndRoll:
         dict
             The artists: ``curve`` and, with ``resonance``, ``resonance``.
         """
+        import matplotlib
+
         resonance = _checks.flag("resonance", resonance)
         kmh = 3.6 * self.speeds
         amplitude = np.degrees(self.roll_amplitude)

@@ -30,7 +30,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
-import matplotlib
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
@@ -199,6 +199,8 @@ class ResponseSpectrum:
         dict
             The artists: ``line``.
         """
+        import matplotlib
+
         floor = 1e-12  # (unit)²/Hz: a logarithmic axis cannot show a zero
         y = np.maximum(self.psd_per_hz, floor)
         if artists is not None:
