@@ -46,7 +46,12 @@ def import_seconds(modules: str, root: Path = ROOT) -> float:
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}  # as a reader's
     env["PYTHONPATH"] = str(root)
     proc = subprocess.run(
-        [sys.executable, "-c", _TIMED.format(modules)], env=env, capture_output=True, text=True, check=False
+        [sys.executable, "-c", _TIMED.format(modules)],
+        cwd=root,  # `python -c` looks in its working directory first
+        env=env,
+        capture_output=True,
+        text=True,
+        check=False,
     )
     if proc.returncode:
         raise RuntimeError(f"import {modules} failed: {proc.stderr[-2000:]}")
