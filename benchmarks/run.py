@@ -7,6 +7,7 @@ Cases live in ``benchmarks/bench_*.py`` (see ``benchmarks/common.py``).
     python benchmarks/run.py                 # all cases: a table, and benchmarks/latest.json
     python benchmarks/run.py --quick         # 3 repeats instead of 15
     python benchmarks/run.py --only ch01     # files whose name contains "ch01"
+    python benchmarks/run.py --only imports  # each chapter's cold import (bench_imports.py)
 """
 
 from __future__ import annotations

@@ -13,10 +13,11 @@ generic pieces they and the widgets share.
 
 from __future__ import annotations
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = ["COLORS", "STYLE", "axes_or_new", "frequency_curves", "movable_line", "spectrum", "time_history"]
 

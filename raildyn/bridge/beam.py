@@ -17,9 +17,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from raildyn import _checks, _deprecated
+
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
 # raildyn.bridge._kernel
-from raildyn import _checks, _deprecated
 
 __all__ = [
     "MovingForceResponse",

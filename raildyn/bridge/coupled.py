@@ -26,12 +26,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py):
-# scipy.interpolate.CubicSpline, raildyn.bridge._kernel
 from raildyn import _checks
 from raildyn.bridge.loads import AxleSequence, MovingLoad, moving_load
 from raildyn.errors import SolverError
 from raildyn.plots import axes_or_new
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py):
+# scipy.interpolate.CubicSpline, raildyn.bridge._kernel
 
 __all__ = ["BridgeCrossing", "crossing"]
 

@@ -39,13 +39,13 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.bridge import _impact_reference
-
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.bridge._band,
-# raildyn.bridge._impact_kernel
 from raildyn.bridge.defects import MAX_DIP_ANGLE, DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.sleepers import DiscreteTrack, _shape
 from raildyn.bridge.wheels import VehicleWheels, Wheel, WheelBlock
 from raildyn.errors import SolverError
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.bridge._band,
+# raildyn.bridge._impact_kernel
 
 __all__ = [
     "WheelOnTrack",

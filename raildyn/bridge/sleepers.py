@@ -29,8 +29,6 @@ from functools import cached_property
 import numpy as np
 
 from raildyn import _checks
-
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.bridge._band
 from raildyn.bridge.track import (
     _RAIL_EI,
     _RAIL_MASS,
@@ -41,6 +39,8 @@ from raildyn.bridge.track import (
     _frequencies,
     _turns,
 )
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.bridge._band
 
 __all__ = ["DiscreteResonances", "DiscreteTrack", "TrackMatrices"]
 

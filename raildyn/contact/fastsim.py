@@ -34,10 +34,10 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
+from raildyn.contact.kalker import _ratio, kalker_coefficients
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): numba,
 # raildyn.contact._fastsim_kernel
-from raildyn.contact.kalker import _ratio, kalker_coefficients
 
 __all__ = ["FastsimResult", "Flexibilities", "fastsim", "flexibilities"]
 

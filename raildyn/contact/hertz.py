@@ -18,9 +18,10 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.special
 from raildyn import _checks
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.special
 
 __all__ = ["HertzCoefficients", "HertzContact", "hertz_coefficients", "hertz_contact"]
 

@@ -20,11 +20,12 @@ from pathlib import Path
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py):
-# scipy.interpolate.PchipInterpolator
 from raildyn import _checks
 from raildyn.contact.geometry import RailProfile, WheelProfile, contact_geometry
 from raildyn.contact.profiles import _CANT_MAX, _MM, _STEP, _tilted_rail
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py):
+# scipy.interpolate.PchipInterpolator
 
 __all__ = [
     "WORN_RAIL_FILE",

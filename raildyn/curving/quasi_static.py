@@ -28,8 +28,6 @@ from functools import lru_cache, partial
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize.root,
-# raildyn.integrators.runner.solve_ivp
 from raildyn import _checks
 from raildyn.constants import GRAVITY
 from raildyn.curving.steady import SteadyCurving, steady_curving
@@ -43,6 +41,9 @@ from raildyn.wheelset import (
     tread_contact_angles,
     wheel_forces,
 )
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize.root,
+# raildyn.integrators.runner.solve_ivp
 
 __all__ = ["CurvingMap", "QuasiStaticCurving", "curving_map", "quasi_static_curving"]
 

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
@@ -35,6 +34,8 @@ from raildyn.integrators.amplification import (
 )
 from raildyn.integrators.schemes import integrate
 from raildyn.vibration import SDOF, first_order_matrix
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = [
     "METHODS",

@@ -18,8 +18,6 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.linalg
-
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 from scipy.linalg.blas import dgemv as gemv
 
 from raildyn._checks import scalar
@@ -45,6 +43,8 @@ from raildyn.integrators.recursions import (  # the steps: importable from here 
     wilson_step,
 )
 from raildyn.vibration import first_order_matrix
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 
 __all__ = [
     "average_acceleration",

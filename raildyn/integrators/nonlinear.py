@@ -15,9 +15,6 @@ and the completed part of the run as ``partial``.
 from __future__ import annotations
 
 import numpy as np
-
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.integrate,
-# raildyn.integrators.runner._failure
 import scipy.linalg
 
 from raildyn import _checks
@@ -36,6 +33,9 @@ from raildyn.integrators._common import (
 )
 from raildyn.integrators._divergence import diverged
 from raildyn.vibration import first_order_matrix
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.integrate,
+# raildyn.integrators.runner._failure
 
 # Newton iterations a step may be allowed: the iteration converges quadratically near the
 # answer, so a step that needs more than a few dozen will not converge at all.

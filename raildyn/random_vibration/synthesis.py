@@ -14,7 +14,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 from raildyn import _checks
 from raildyn.random_vibration._common import (
     _MAX_RECORD,
@@ -22,6 +21,8 @@ from raildyn.random_vibration._common import (
     _finite,
     _spectrum_grid,
 )
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 
 __all__ = [
     "SpectralLines",

@@ -16,13 +16,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize
 from raildyn import _checks
 from raildyn.linear_model import as_linear_system
 
 # Moved to raildyn.stability.critical; re-exported so that the old import path keeps working for one
 # issue (then the names go from here).
 from raildyn.stability.critical import CriticalSpeed, CriticalSpeedMap, critical_speed, critical_speed_map
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize
 
 __all__ = [
     "CriticalSpeed",

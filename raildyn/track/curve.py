@@ -17,7 +17,6 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.special.fresnel
 from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
 from raildyn._compiled import compiled_as
@@ -29,6 +28,8 @@ from raildyn.track.cant import (
     TWIST_BASE,
     _rail_spacing,
 )
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.special.fresnel
 
 __all__ = ["Curve", "ramp"]
 

@@ -20,13 +20,14 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
 from raildyn import random_vibration as rv
 from raildyn.track.deterministic import _vehicle_speed
 from raildyn.track.spectra import COMPONENTS, _wavenumber_band, track_psd
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = [
     "ComponentVariances",

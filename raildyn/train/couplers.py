@@ -18,10 +18,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = ["DraftGear", "DraftGearLoop"]
 

@@ -22,14 +22,14 @@ from raildyn import _checks
 from raildyn._progress import progress_bar
 from raildyn.constants import MAXIMUM_SPEED
 from raildyn.errors import SolverError
-
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.train._kernel
 from raildyn.train.couplers import _MAX_EXTENSION, DraftGear
 from raildyn.train.forces import AirBrake
 from raildyn.train.model import TrainModel  # defined there; importable from here for one more issue
 from raildyn.train.resistance import Route
 from raildyn.train.results import TrainRun
 from raildyn.train.vehicles import _MAX_VEHICLES, make_consist
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.train._kernel
 
 __all__ = ["braking_model", "simulate"]
 

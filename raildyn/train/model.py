@@ -27,8 +27,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize.brentq,
-# raildyn.train._kernel
 from raildyn import _checks
 from raildyn.constants import GRAVITY, MAXIMUM_SPEED
 from raildyn.errors import SolverError
@@ -38,6 +36,9 @@ from raildyn.train.forces import NOTCHES, AirBrake, dynamic_brake_force
 from raildyn.train.resistance import CURVE_RESISTANCE, Route, davis_resistance
 from raildyn.train.results import QuasiStatic, TrainRun
 from raildyn.train.vehicles import Consist, make_consist  # noqa: F401  (the examples use make_consist)
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize.brentq,
+# raildyn.train._kernel
 
 __all__ = ["TrainModel"]
 

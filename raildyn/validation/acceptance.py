@@ -20,12 +20,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 import numpy as np
 
 from raildyn import _checks
 from raildyn.plots import COLORS, STYLE, axes_or_new
 from raildyn.validation import _records
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = ["SectionMaxima", "SlidingRMS", "percentiles", "section_maxima", "sliding_rms"]
 

@@ -11,11 +11,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
-# scipy.signal
 from raildyn import _checks
 from raildyn.bridge import SimplySupportedBeam
 from raildyn.validation.fits import ParameterFit, _confidence, _intervals, _record
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
+# scipy.signal
 
 __all__ = ["WeighInMotionFit", "weigh_in_motion"]
 

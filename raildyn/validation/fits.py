@@ -13,8 +13,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.stats
 from raildyn import _checks
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.stats
 
 __all__ = ["ParameterFit"]
 

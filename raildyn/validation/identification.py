@@ -30,8 +30,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
-# scipy.signal
 from raildyn import _checks
 
 # Moved to raildyn.validation.fits and raildyn.validation.bridge_wim (issue 33): imported here so
@@ -39,6 +37,9 @@ from raildyn import _checks
 from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion  # noqa: F401
 from raildyn.validation.fits import ParameterFit, _confidence, _intervals, _record
 from raildyn.vibration import damping_ratio_from_decrement, decrement_from_peaks
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
+# scipy.signal
 
 __all__ = [
     "CoastDownFit",

@@ -22,12 +22,13 @@ from pathlib import Path
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 from raildyn import _checks
 from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force_response
 from raildyn.constants import GRAVITY
 from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion
 from raildyn.validation.metrics import Agreement, compare
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 
 __all__ = [
     "LERELVA_PANEL",

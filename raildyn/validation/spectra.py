@@ -20,13 +20,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib, scipy.signal
 import numpy as np
 
 from raildyn import _checks
 from raildyn.plots import COLORS, STYLE, axes_or_new
 from raildyn.random_vibration import welch_psd
 from raildyn.validation import _records
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib, scipy.signal
 
 __all__ = ["BandRMS", "FrequencyResponseEstimate", "frequency_response_h1", "third_octave_rms"]
 

@@ -33,10 +33,10 @@ from raildyn import _checks
 from raildyn import track as _track
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import SystemMatrices
+from raildyn.vehicles.freight import VerticalFreightCar
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py):
 # raildyn.vehicles._rocking_kernel
-from raildyn.vehicles.freight import VerticalFreightCar
 
 if TYPE_CHECKING:
     from raildyn.vehicles.rocking_analysis import StaticRoll

@@ -10,12 +10,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
-# raildyn.vehicles._rocking_kernel
 from raildyn import _checks
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
 from raildyn.linear_model import SystemMatrices
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
+# raildyn.vehicles._rocking_kernel
 
 __all__ = ["StaticRoll"]
 

@@ -13,8 +13,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib,
-# raildyn.vehicles._rocking_kernel
 import numpy as np
 
 from raildyn import _checks, plots
@@ -23,6 +21,9 @@ from raildyn.errors import SolverError
 from raildyn.integrators import stable_step
 from raildyn.vehicles._shared import _earlier_artists
 from raildyn.vehicles.rocking import RockingFreightCar
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib,
+# raildyn.vehicles._rocking_kernel
 
 __all__ = ["RockingRun", "RockingSweep", "rocking_run", "rocking_sweep"]
 

@@ -24,9 +24,9 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
+from raildyn.wheelset.linear import Wheelset
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.wheelset._law
-from raildyn.wheelset.linear import Wheelset
 
 __all__ = [
     "ContactTable",
