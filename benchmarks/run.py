@@ -8,6 +8,7 @@ Cases live in ``benchmarks/bench_*.py`` (see ``benchmarks/common.py``).
     python benchmarks/run.py --quick         # 3 repeats instead of 15
     python benchmarks/run.py --only ch01     # files whose name contains "ch01"
     python benchmarks/run.py --only cold     # first calls in fresh processes, numba's cache empty or built
+    python benchmarks/run.py --only imports  # each chapter's cold import (bench_imports.py)
 """
 
 from __future__ import annotations

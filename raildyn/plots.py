@@ -13,10 +13,11 @@ generic pieces they and the widgets share.
 
 from __future__ import annotations
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = ["COLORS", "STYLE", "axes_or_new", "frequency_curves", "movable_line", "spectrum", "time_history"]
 
@@ -51,6 +52,8 @@ def axes_or_new(ax):
     -------
     matplotlib.axes.Axes
     """
+    import matplotlib
+
     if ax is not None:
         from matplotlib.axes import Axes
 
@@ -91,6 +94,8 @@ def movable_line(ax, artists, key, x, y, *, label=None, color=None, xlabel="", y
     dict
         ``{key: line}``.
     """
+    import matplotlib
+
     _checks.instance("key", key, str)
     x = _checks.array("x", x, ndim=1, allow_empty=False)
     y = _checks.array("y", y, shape=x.shape)
@@ -139,6 +144,8 @@ def time_history(
     dict
         The artists ``line``, ``upper``, ``lower``.
     """
+    import matplotlib
+
     t = _checks.time_grid("t", t)
     x = _checks.array("x", x, shape=t.shape)
     if envelope is not None:
@@ -174,6 +181,8 @@ def frequency_curves(r: np.ndarray, curves: dict[str, np.ndarray], *, ax=None, l
     dict
         The lines, by the names of ``curves``.
     """
+    import matplotlib
+
     r = _checks.increasing("r", r, low=0.0)
     _checks.instance("curves", curves, dict, "dict of name to array")
     values = {name: _checks.array(f"curves[{name!r}]", y, shape=r.shape) for name, y in curves.items()}
@@ -212,6 +221,8 @@ def spectrum(
     dict
         ``{"line": line}``.
     """
+    import matplotlib
+
     omega = _checks.increasing("omega", omega, low=0.0, low_open=True)
     psd = _checks.array("psd", psd, shape=omega.shape, low=0.0)
     ax = axes_or_new(ax)

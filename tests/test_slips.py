@@ -12,7 +12,7 @@ cases, each with the message it must give.
 from __future__ import annotations
 
 import re
-import time
+import tracemalloc
 
 import numpy as np
 import pytest
@@ -159,26 +159,55 @@ def test_booleans_are_not_numbers():
 # --------------------------------------------------------------------------- memory and work
 
 
-def test_a_step_that_would_fill_the_memory_is_refused_before_allocating():
-    start = time.perf_counter()
-    with pytest.raises(ValueError, match=r"max_step = 1e-300 would need .* GiB of memory"):
-        stability.simulate(NonlinearWheelset(), 30.0, [1e-3, 0.0, 0.0, 0.0], 1.0, max_step=1e-300)
+def _no_integration(monkeypatch):
+    """Make every entry of the integration runner fail the test: the call must refuse before any run."""
+    from raildyn.integrators import runner
+
+    def ran(*args, **kwargs):
+        raise AssertionError("an integration ran: the refusal must come before any work")
+
+    for name in ("dormand_prince", "dormand_prince_batch", "solve_ivp"):
+        monkeypatch.setattr(runner, name, ran)
+
+
+def test_a_step_that_would_fill_the_memory_is_refused_before_allocating(monkeypatch):
+    model, bogie = NonlinearWheelset(), vehicles.Bogie().nonlinear()
     curve = Curve(radius=600.0, cant=0.1, transition_length=30.0, arc_length=20.0, straight=10.0)
-    with pytest.raises(ValueError, match=r"max_step = 1e-09 would need .* GiB of memory"):
-        curving.curve_entry(vehicles.Bogie().nonlinear(), 25.0, curve, max_step=1e-9)
-    assert time.perf_counter() - start < 5.0  # nothing was allocated or integrated
+    _no_integration(monkeypatch)
+    tracemalloc.start()
+    try:
+        with pytest.raises(ValueError, match=r"max_step = 1e-300 would need .* GiB of memory"):
+            stability.simulate(model, 30.0, [1e-3, 0.0, 0.0, 0.0], 1.0, max_step=1e-300)
+        with pytest.raises(ValueError, match=r"max_step = 1e-09 would need .* GiB of memory"):
+            curving.curve_entry(bogie, 25.0, curve, max_step=1e-9)
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    # The runs would need GiB; refused before allocating, the calls' peak stays far below that.
+    assert peak < 50e6, f"{peak / 1e6:.0f} MB allocated before the refusal"
 
 
-def test_a_hopeless_periodic_orbit_gives_up_within_seconds():
+def test_a_hopeless_periodic_orbit_gives_up_within_its_budget(monkeypatch):
     # A car's orbit guessed at a period of 100 s: each integration used to run to its own bound of
-    # 10⁶ evaluations (about 50 s here, 104 s in the issue); the shooting now shares 10⁵ in all.
+    # 10⁶ evaluations (about 50 s here, 104 s in the issue); the shooting now shares 10⁵ in all, and the
+    # evaluations its runs make are counted here.
+    from raildyn.integrators import runner
+
     model = LateralCar().nonlinear()
     state = np.zeros(model.state_size)
     state[model.lateral_index] = 0.01
-    start = time.perf_counter()
-    with pytest.raises(SolverError, match="evaluations"):
+    budgets = []
+
+    class Counted(runner.EvaluationBudget):
+        def __init__(self, *args, **kwargs):
+            super().__init__(*args, **kwargs)
+            budgets.append(self)
+
+    monkeypatch.setattr(runner, "EvaluationBudget", Counted)
+    with pytest.raises(SolverError, match="needed more than 100000 evaluations"):
         stability.periodic_orbit(model, 70.0, state, 100.0, max_iter=3)
-    assert time.perf_counter() - start < 30.0  # about 5 s on a loaded 2-core machine
+    # One budget for the whole shooting, spent: the runs stopped at 10⁵ evaluations in all.
+    assert [(b.limit, b.used <= b.limit) for b in budgets] == [(100_000, True)]
 
 
 # --------------------------------------------------------------------------- finite input, non-finite output

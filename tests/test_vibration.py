@@ -7,7 +7,6 @@ tolerance, or a stated discretisation-error bound.
 
 import dataclasses
 import math
-import time
 
 import control
 import numpy as np
@@ -395,15 +394,20 @@ def test_impulse_response_is_the_derivative_of_the_step_response(xi):
     np.testing.assert_allclose(s.impulse_response(t), s.free_response(t, 0.0, 1 / s.mass), rtol=4 * EPS)
 
 
-def test_forced_response_handles_a_long_record_quickly():
+def test_forced_response_handles_a_long_record():
+    # 10⁵ samples by FFT, not by a loop over them: how fast is benchmarks/bench_ch01_widgets.py's.
     s = _system(0.02)
     t = np.arange(100_000) * 1e-3
     force = np.sin(3.0 * t)
-    start = time.perf_counter()
     x = s.forced_response(t, force)
-    elapsed = time.perf_counter() - start
     assert np.all(np.isfinite(x))
-    assert elapsed < 1.0, f"10⁵ samples took {elapsed:.2f} s"  # typically ~20 ms; generous for CI
+    # After 90 s (11 times 1/(ξω_n)) the transient is below 1e-4 of the steady state, |H(3)| sin(3t + ∠H(3)).
+    w = 3.0
+    H = 1.0 / (s.stiffness - s.mass * w**2 + 1j * s.damping * w)
+    tail = t > 90.0
+    np.testing.assert_allclose(
+        x[tail], np.abs(H) * np.sin(w * t[tail] + np.angle(H)), rtol=0, atol=1e-4 * np.abs(H)
+    )
 
 
 def test_modal_superposition_against_direct_state_space():

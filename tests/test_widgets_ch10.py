@@ -3,7 +3,7 @@ an independent path where there is one (Frýba's series, the closed form against
 
 import numpy as np
 import pytest
-from widget_helpers import median_update_ms, status_line
+from widget_helpers import redrawn_frames, status_line
 
 from raildyn.bridge import SimplySupportedBeam, codes, fryba_deflection, moving_force_response
 from raildyn.bridge.trains import regular_train
@@ -217,13 +217,11 @@ def test_sprung_masses_approach_the_forces_and_the_car_at_low_speed():
     chapter10.BENCH_MOVES,
     ids=[move[0].removeprefix("ch10 ") for move in chapter10.BENCH_MOVES],
 )
-def test_median_update(label, recipe, control, values):
+def test_each_update_redraws(label, recipe, control, values):
+    # How fast (the widget goal, median ≤ 30 ms) is for `make bench`: benchmarks/bench_ch10_bridge.py
     _, update = recipe.build()
-    median = median_update_ms(update, control, values)
-    print(f"{label}: median update {median:.1f} ms")
-    # Issue 22 asks for 30 ms (measured 5–15 ms here on an idle machine, uncached); a test on a shared
-    # machine under load only guards against a widget that recomputes far too much.
-    assert median < 250.0
+    frames = redrawn_frames(update, control, values)
+    assert len(frames) == len(values)
 
 
 # ---------------------------------------------------------------------------

@@ -4,7 +4,7 @@ metrics' definitions on signals with known answers, a linearised variance decomp
 
 import numpy as np
 import pytest
-from widget_helpers import median_update_ms, status_line
+from widget_helpers import redrawn_frames, status_line
 
 from raildyn.stability import critical_speed
 from raildyn.validation.measured import LERELVA_PANEL, NSB92_LOADS, NSB92_SPACINGS
@@ -228,14 +228,11 @@ def test_sobol_indices_agree_with_the_linearised_variance_shares():
     ],
     ids=[move[0].removeprefix("ch11 ") for move in chapter11.BENCH_MOVES],
 )
-def test_median_update(label, recipe, control, values):
+def test_each_update_redraws(label, recipe, control, values):
+    # How fast (the widget goal, median ≤ 30 ms) is for `make bench`: benchmarks/bench_ch11_uncertainty.py
     _, update = recipe.build()
-    median = median_update_ms(update, control, values)
-    print(f"{label}: median update {median:.1f} ms")
-    # The widget goal lives in benchmarks/README.md (measured 15–48 ms here, uncached, under a load
-    # average of 4 on 2 cores); a test on a shared machine under load only guards against a widget that
-    # recomputes far too much.
-    assert median < 250.0
+    frames = redrawn_frames(update, control, values)
+    assert len(frames) == len(values)
 
 
 # ---------------------------------------------------------------------------

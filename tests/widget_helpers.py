@@ -1,9 +1,12 @@
-"""What the widget tests share: a widget's status line, and the median time of its updates."""
+"""What the widget tests share: a widget's status line, and the frames its updates draw.
+
+How fast an update is belongs to the benchmarks (``widget_case`` in ``benchmarks/common.py``, each
+widget's goal in ``benchmarks/README.md``), not to a timed test.
+"""
 
 from __future__ import annotations
 
-import statistics
-import time
+PNG = b"\x89PNG\r\n\x1a\n"
 
 
 def status_line(container) -> str:
@@ -11,11 +14,19 @@ def status_line(container) -> str:
     return container.children[-2].children[-1].value
 
 
-def median_update_ms(update, control: str, values) -> float:
-    """Median wall time, ms, of ``update(control=value)`` over ``values``."""
-    times = []
+def redrawn_frames(update, control: str, values) -> list[bytes]:
+    """The PNG frames of ``update(control=value)`` over ``values``, each checked to be a new picture.
+
+    Every update must return a PNG frame, and a value that differs from the one before must draw a
+    frame that differs from the one before: the update moved the figure.
+    """
+    frames = []
     for value in values:
-        start = time.perf_counter()
-        update(**{control: value})
-        times.append(time.perf_counter() - start)
-    return 1e3 * statistics.median(times)
+        frame = update(**{control: value})
+        assert isinstance(frame, bytes) and frame.startswith(PNG), f"{control}={value!r} gave no PNG frame"
+        frames.append(frame)
+    for k in range(1, len(frames)):
+        before, value = values[k - 1], values[k]
+        if value != before:
+            assert frames[k] != frames[k - 1], f"{control}: {before!r} → {value!r} left the figure as it was"
+    return frames

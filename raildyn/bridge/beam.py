@@ -16,10 +16,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.optimize
 
 from raildyn import _checks, _deprecated
-from raildyn.bridge import _kernel
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
+# raildyn.bridge._kernel
 
 __all__ = [
     "MovingForceResponse",
@@ -302,6 +303,7 @@ def moving_force_response(beam: SimplySupportedBeam, speeds, force=1.0, *, posit
     >>> round(float(r.amplification[0]), 3)
     1.003
     """
+    from raildyn.bridge import _kernel
     from raildyn.bridge.loads import AxleSequence  # loads builds on this module
 
     _checks.instance("beam", beam, SimplySupportedBeam)
@@ -381,6 +383,8 @@ def _influence(beam: SimplySupportedBeam, x, a):
 
 def _largest_static(beam: SimplySupportedBeam, x, delays, loads) -> float:
     """Max over the front's positions of Σ P_k × influence(x, front − d_k): the slow crossing's peak."""
+    import scipy.optimize
+
     L = beam.span
 
     def static(front):

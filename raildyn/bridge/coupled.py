@@ -25,13 +25,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from raildyn import _checks
-from raildyn.bridge import _kernel
 from raildyn.bridge.loads import AxleSequence, MovingLoad, moving_load
 from raildyn.errors import SolverError
 from raildyn.plots import axes_or_new
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py):
+# scipy.interpolate.CubicSpline, raildyn.bridge._kernel
 
 __all__ = ["BridgeCrossing", "crossing"]
 
@@ -213,6 +214,8 @@ class BridgeCrossing:
 
 def _rail(irregularity, load: MovingLoad, length: float, x: np.ndarray) -> np.ndarray:
     """r, r′, r″ under each axle at each time, (k, a, 3); zeros when there is no irregularity."""
+    from scipy.interpolate import CubicSpline
+
     out = np.zeros((*x.shape, 3))
     if irregularity is None:
         return out
@@ -283,6 +286,8 @@ def crossing(
     >>> round(run.amplification, 2)
     1.73
     """
+    from raildyn.bridge import _kernel
+
     _checks.not_a_class("beam", beam, "a beam")
     for name in (
         "length",

@@ -38,11 +38,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
-from raildyn.bridge import _band, _impact_kernel, _impact_reference
+from raildyn.bridge import _impact_reference
 from raildyn.bridge.defects import MAX_DIP_ANGLE, DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.sleepers import DiscreteTrack, _shape
 from raildyn.bridge.wheels import VehicleWheels, Wheel, WheelBlock
 from raildyn.errors import SolverError
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.bridge._band,
+# raildyn.bridge._impact_kernel
 
 __all__ = [
     "WheelOnTrack",
@@ -303,6 +306,8 @@ def wheel_on_track(
     SolverError
         If a contact force goes non-finite, or the contact forces will not settle in a step.
     """
+    from raildyn.bridge import _band, _impact_kernel
+
     if not isinstance(wheels, Wheel | VehicleWheels | WheelBlock):
         raise TypeError(f"wheels must be a Wheel, VehicleWheels or a WheelBlock, got {type(wheels).__name__}")
     block = wheels if isinstance(wheels, WheelBlock) else wheels.block()

@@ -29,7 +29,6 @@ from functools import cached_property
 import numpy as np
 
 from raildyn import _checks
-from raildyn.bridge import _band
 from raildyn.bridge.track import (
     _RAIL_EI,
     _RAIL_MASS,
@@ -40,6 +39,8 @@ from raildyn.bridge.track import (
     _frequencies,
     _turns,
 )
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.bridge._band
 
 __all__ = ["DiscreteResonances", "DiscreteTrack", "TrackMatrices"]
 
@@ -405,6 +406,8 @@ class DiscreteTrack:
         ndarray of complex
             One per frequency.
         """
+        from raildyn.bridge import _band
+
         f = _frequencies(frequencies)
         x = 0.5 * self.length if position is None else position
         if position is None and self.bays % 2:

@@ -30,13 +30,14 @@ import functools
 import math
 from dataclasses import dataclass
 
-import numba
 import numpy as np
 
 from raildyn import _checks
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
-from raildyn.contact import _fastsim_kernel
 from raildyn.contact.kalker import _ratio, kalker_coefficients
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): numba,
+# raildyn.contact._fastsim_kernel
 
 __all__ = ["FastsimResult", "Flexibilities", "fastsim", "flexibilities"]
 
@@ -345,6 +346,10 @@ def fastsim(
     >>> r.fx < 0 and bool(r.adhesion.any())
     True
     """
+    import numba
+
+    from raildyn.contact import _fastsim_kernel
+
     state = _prepare(
         longitudinal,
         lateral,

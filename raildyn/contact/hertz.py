@@ -17,10 +17,11 @@ import math
 from dataclasses import dataclass, fields
 
 import numpy as np
-from scipy import special
 
 from raildyn import _checks
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.special
 
 __all__ = ["HertzCoefficients", "HertzContact", "hertz_coefficients", "hertz_contact"]
 
@@ -33,6 +34,8 @@ def _ratio_from_cos_theta(cos_theta: np.ndarray) -> np.ndarray:
     Solves ``(B−A)/(B+A) = [(1+k²)E(e_c) − 2k²K(e_c)] / (e_c² E(e_c))`` with e_c² = 1 − k²
     (Johnson 1985, eqs. 4.39) by bisection on log k, vectorized over θ_H.
     """
+    from scipy import special
+
     lo = np.full(cos_theta.shape, -15.0)  # log k = −15 (a/b ≈ 3e6): cos θ_H = 1 − 1e-12
     hi = np.zeros(cos_theta.shape)  # log k = 0: circle, cos θ_H = 0
     for _ in range(_BISECTION_STEPS):
@@ -57,6 +60,8 @@ def _shape_factors(k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
     m³ = 2E(e_c)/(π k²), n = k m, with e_c² = 1 − k².
     """
+    from scipy import special
+
     m3 = 2.0 * special.ellipe(1.0 - k**2) / (np.pi * k**2)
     m = np.cbrt(m3)
     return m, k * m
@@ -264,6 +269,8 @@ def hertz_contact(
     >>> round(c.a * 1e3, 2), round(c.b * 1e3, 2)  # mm
     (7.16, 5.39)
     """
+    from scipy import special
+
     load = _checks.plausible("normal_load", normal_load, "wheel_load")
     _checks.plausible("wheel_rolling_radius", wheel_rolling_radius, "wheel_radius")
     young = _checks.positive("youngs_modulus", youngs_modulus)

@@ -19,11 +19,13 @@ import os
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import PchipInterpolator
 
 from raildyn import _checks
 from raildyn.contact.geometry import RailProfile, WheelProfile, contact_geometry
 from raildyn.contact.profiles import _CANT_MAX, _MM, _STEP, _tilted_rail
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py):
+# scipy.interpolate.PchipInterpolator
 
 __all__ = [
     "WORN_RAIL_FILE",
@@ -151,6 +153,8 @@ def read_wheel_profile(path, *, nominal_radius=0.46, name=None) -> WheelProfile:
     >>> round(1e3 * check_pair(wheel, rail, gauge=1.4351, tape_distance=1.4874), 2)  # mm
     15.0
     """
+    from scipy.interpolate import PchipInterpolator
+
     p = _path(path)
     r0 = _checks.plausible("nominal_radius", nominal_radius, "wheel_radius")
     u, h = _points(p, "lateral positions u", "heights")
@@ -211,6 +215,8 @@ def read_rail_profile(path, *, inclination=1 / 40, name=None) -> RailProfile:
     >>> round(1e3 * float(rail.height.min()), 1) <= -14.0  # reaches the gauge point
     True
     """
+    from scipy.interpolate import PchipInterpolator
+
     p = _path(path)
     cant = float(np.arctan(_checks.scalar("inclination", inclination, low=0.0, high=_CANT_MAX)))
     x, z = _points(p, "lateral positions", "heights")

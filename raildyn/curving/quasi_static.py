@@ -27,13 +27,11 @@ from dataclasses import dataclass, replace
 from functools import lru_cache, partial
 
 import numpy as np
-from scipy.optimize import root
 
 from raildyn import _checks
 from raildyn.constants import GRAVITY
 from raildyn.curving.steady import SteadyCurving, steady_curving
 from raildyn.errors import SolverError
-from raildyn.integrators.runner import solve_ivp
 from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, Curve, balance_speed, unbalanced_acceleration
 from raildyn.wheelset import (
     NonlinearLateral,
@@ -43,6 +41,9 @@ from raildyn.wheelset import (
     tread_contact_angles,
     wheel_forces,
 )
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize.root,
+# raildyn.integrators.runner.solve_ivp
 
 __all__ = ["CurvingMap", "QuasiStaticCurving", "curving_map", "quasi_static_curving"]
 
@@ -135,6 +136,10 @@ def _newton(model, q, V, kappa, a_q) -> tuple[np.ndarray, np.ndarray]:
 
 def _rescue(model: NonlinearLateral, start: np.ndarray, V: float, R: float, D: float) -> np.ndarray:
     """One point that Newton left, by the searches of the module docstring, or a SolverError."""
+    from scipy.optimize import root
+
+    from raildyn.integrators.runner import solve_ivp
+
     n = model.system.size
     rest = np.zeros(n)
     kappa, a_q = 1.0 / R, unbalanced_acceleration(V, R, D)

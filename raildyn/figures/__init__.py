@@ -1,9 +1,11 @@
 """Registry of the reproducible figures: each has an id, a caption and the book's figure number.
 
 Each chapter registers its figures in ``raildyn/figures/chNN.py`` with the
-:func:`register` decorator; every such module is imported below, so adding a
-chapter's figures needs no edit here. A chapter's figures are numbered in the order
-they are registered (Figure 7.1, 7.2, ...), which is the order its notebook shows them.
+:func:`register` decorator; every such module is imported when ``REGISTRY`` is first reached
+(or a figure made, shown or registered), so adding a chapter's figures needs no edit here, and
+importing this module does not import every chapter's models (tests/test_imports.py). A
+chapter's figures are numbered in the order they are registered (Figure 7.1, 7.2, ...), which is
+the order its notebook shows them.
 
 ``python -m raildyn figures --out DIR`` writes every registered figure; a
 notebook shows the same figure, captioned, with ``raildyn.figures.show(id)``. A figure
@@ -100,10 +102,15 @@ class FigureSpec:
         _checks.function("draw", self.draw)
 
 
-#: Every registered figure, by id; filled by :func:`register` when ``raildyn.figures`` is imported.
+#: Every registered figure, by id; filled by :func:`register` from the chapters' modules, which are
+#: imported when it is first reached.
 #:
 #: :meta hide-value:
-REGISTRY: dict[str, FigureSpec] = {}
+REGISTRY: dict[str, FigureSpec]
+
+# The registry itself; REGISTRY is this dict, served by __getattr__ once the chapters are loaded.
+_REGISTRY: dict[str, FigureSpec] = {}
+_LOADED = False
 
 
 def register(id: str, caption: str, *, chapter: int, book_figure: str | None = None):
@@ -131,13 +138,14 @@ def register(id: str, caption: str, *, chapter: int, book_figure: str | None = N
         ``matplotlib.figure.Figure``) and returns it unchanged.
     """
     _check_spec(id, caption, book_figure, chapter)
-    if id in REGISTRY:
+    registry = _registry()  # the chapters' own figures first, so that their numbers do not move
+    if id in registry:
         raise ValueError(f"figure id {id!r} is registered already")
 
     def add(draw: Callable[[], Figure]) -> Callable[[], Figure]:
-        if id in REGISTRY:
+        if id in registry:
             raise ValueError(f"figure id {id!r} is registered twice")
-        REGISTRY[id] = FigureSpec(id, caption, book_figure, chapter, draw)
+        registry[id] = FigureSpec(id, caption, book_figure, chapter, draw)
         return draw
 
     return add
@@ -164,7 +172,8 @@ def make(id: str) -> Figure:
     ValueError
         If ``id`` is not registered; the message lists the registered ids.
     """
-    spec = REGISTRY[_checks.choice("id", id, REGISTRY)]
+    registry = _registry()
+    spec = registry[_checks.choice("id", id, registry)]
     with matplotlib.rc_context(plots.STYLE):
         figure = spec.draw()
     if not isinstance(figure, Figure):
@@ -214,9 +223,10 @@ def _caption(spec: FigureSpec) -> str:
     """The caption a reader sees: "Figure 7.1. <what it shows>", numbered within its chapter in the order
     of registration, with the book's figure it mirrors; the id (a file name) stays out of it."""
     book = f" (book Fig. {spec.book_figure})" if spec.book_figure else ""
-    if REGISTRY.get(spec.id) is not spec:  # a figure made outside the registry has no number
+    registry = _registry()
+    if registry.get(spec.id) is not spec:  # a figure made outside the registry has no number
         return f"{spec.caption}{book}"
-    same = [s.id for s in REGISTRY.values() if s.chapter == spec.chapter]
+    same = [s.id for s in registry.values() if s.chapter == spec.chapter]
     return f"Figure {spec.chapter}.{same.index(spec.id) + 1}{book}. {spec.caption}"
 
 
@@ -235,7 +245,7 @@ def show(id: str) -> FigureView:
         display it as a captioned picture.
     """
     figure = make(id)
-    return FigureView(REGISTRY[id], figure)
+    return FigureView(_registry()[id], figure)
 
 
 def save_all(
@@ -267,7 +277,8 @@ def save_all(
     """
     _checks.instance("out", out, (str, os.PathLike), "str or pathlib.Path")
     formats = _names("formats", formats, FigureCanvasBase.get_supported_filetypes())
-    chosen = sorted(REGISTRY) if ids is None else _names("ids", ids, REGISTRY)
+    registry = _registry()
+    chosen = sorted(registry) if ids is None else _names("ids", ids, registry)
     progress = _checks.flag("progress", progress)
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
@@ -320,9 +331,32 @@ _FIGURE_KEYWORDS = frozenset(inspect.signature(Figure.__init__).parameters) - {"
 }
 
 
-def _load_chapters() -> None:
-    for module in sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name.startswith("ch")):
-        importlib.import_module(f"{__name__}.{module}")
+def _registry() -> dict[str, FigureSpec]:
+    """The registry, with every chapter's figures: their modules are imported on the first call.
+
+    While they are being imported (their :func:`register` calls this), the registry is returned as
+    it is.
+    """
+    global _LOADED
+    if not _LOADED:
+        _LOADED = True
+        try:
+            for module in sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name.startswith("ch")):
+                importlib.import_module(f"{__name__}.{module}")
+        except BaseException:
+            _LOADED = False  # the next call tries again (and fails again, rather than give a part)
+            raise
+    return _REGISTRY
 
 
-_load_chapters()
+def __getattr__(name: str):
+    # PEP 562: REGISTRY is reached here (once: it is then a plain global), so that importing this
+    # module does not import the chapters' figures and with them every model.
+    if name == "REGISTRY":
+        globals()["REGISTRY"] = registry = _registry()
+        return registry
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), "REGISTRY"})

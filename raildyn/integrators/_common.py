@@ -17,7 +17,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 import scipy.linalg
 
@@ -25,6 +24,8 @@ from raildyn import _checks, plots
 from raildyn._checks import array, scalar, square_matrix, time_grid
 from raildyn.errors import SolverError
 from raildyn.vibration import first_order_matrix
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = ["Deviation", "ForceJacobian", "IntegrationResult", "Maxima"]
 
@@ -355,6 +356,8 @@ class IntegrationResult:
         dict
             ``{"line": Line2D}``.
         """
+        import matplotlib
+
         y = self._row(dof, quantity)
         n = self.x.shape[0]
         scale = scalar("scale", scale)

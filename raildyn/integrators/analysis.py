@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
@@ -35,6 +34,8 @@ from raildyn.integrators.amplification import (
 )
 from raildyn.integrators.schemes import integrate
 from raildyn.vibration import SDOF, first_order_matrix
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = [
     "METHODS",
@@ -233,6 +234,8 @@ class SchemeAccuracy:
             )
 
     def _draw(self, ax, artists, y, ylabel, style) -> dict:
+        import matplotlib
+
         if artists is not None:
             _checks.instance("artists", artists, dict, "dict of an earlier call's artists")
             if "line" not in artists:

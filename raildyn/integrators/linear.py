@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.linalg
-import scipy.signal
 from scipy.linalg.blas import dgemv as gemv
 
 from raildyn._checks import scalar
@@ -44,6 +43,8 @@ from raildyn.integrators.recursions import (  # the steps: importable from here 
     wilson_step,
 )
 from raildyn.vibration import first_order_matrix
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 
 __all__ = [
     "average_acceleration",
@@ -126,6 +127,8 @@ def _two_step(p: Problem, load, gamma, beta, A, B0, B1, a0, bound):
 
 def _two_step_velocities(X, v0, ratio, h):
     """v₊ = (1 − γ/β) v + (γ/β)(x₊ − x)/Δt for every coordinate at once (γ = 2β)."""
+    import scipy.signal
+
     v = np.empty_like(X)
     v[0] = v0
     if len(X) > 1:
@@ -171,6 +174,8 @@ def _modal_two_step(p: Problem, load, gamma, beta, modes, bound):
     a step instead of an n × 2n product. Returns x, v, a (rows in time) and the
     first bad row or None.
     """
+    import scipy.signal
+
     stiffness, damping, phi = modes
     n, h, m = p.n, p.h, p.t.size
     q0, qd0 = phi.T @ (p.M @ p.x0), phi.T @ (p.M @ p.v0)

@@ -15,7 +15,6 @@ and the completed part of the run as ``partial``.
 from __future__ import annotations
 
 import numpy as np
-import scipy.integrate
 import scipy.linalg
 
 from raildyn import _checks
@@ -33,8 +32,10 @@ from raildyn.integrators._common import (
     scale,
 )
 from raildyn.integrators._divergence import diverged
-from raildyn.integrators.runner import _failure
 from raildyn.vibration import first_order_matrix
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.integrate,
+# raildyn.integrators.runner._failure
 
 # Newton iterations a step may be allowed: the iteration converges quadratically near the
 # answer, so a step that needs more than a few dozen will not converge at all.
@@ -53,7 +54,8 @@ MAX_STIFF_EVALUATIONS = 40_000
 
 __all__ = ["abm", "forward_euler", "newmark_newton", "rk4", "stiff"]
 
-_STIFF = {"Radau": scipy.integrate.Radau, "BDF": scipy.integrate.BDF, "LSODA": scipy.integrate.LSODA}
+# The stiff solvers of scipy.integrate that stiff() offers, by their class names there.
+_STIFF = ("Radau", "BDF", "LSODA")
 
 
 def _first_order(p, force, *, finite=True):
@@ -492,6 +494,10 @@ def stiff(
     >>> round(float(r.x[0, -1]), 7), r.method
     (1.0, 'stiff_radau')
     """
+    import scipy.integrate
+
+    from raildyn.integrators.runner import _failure
+
     _checks.choice("method", method, _STIFF)
     rtol, atol = _checks.tolerance("rtol", rtol), _checks.tolerance("atol", atol, low=MIN_ATOL)
     if jacobian is not None:
@@ -520,7 +526,7 @@ def stiff(
     Y[0] = np.r_[p.x0, p.v0]
     filled, steps, reason = 1, 0, None
     with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported as a failure below
-        solver = _STIFF[method](
+        solver = getattr(scipy.integrate, method)(
             rhs, p.t[0], Y[0], p.t[-1], rtol=rtol, atol=atol, jac=jac if uses_force_tangent else None
         )
         while solver.status == "running" and reason is None:

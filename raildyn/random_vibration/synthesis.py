@@ -13,7 +13,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.signal
 
 from raildyn import _checks
 from raildyn.random_vibration._common import (
@@ -22,6 +21,8 @@ from raildyn.random_vibration._common import (
     _finite,
     _spectrum_grid,
 )
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 
 __all__ = [
     "SpectralLines",
@@ -298,6 +299,8 @@ def welch_psd(x, dt, nperseg=None) -> Spectrum:
     >>> round(est.mean_square, 3)
     0.5
     """
+    import scipy.signal
+
     arr = _checks.array("x", x)
     if arr.ndim not in (1, 2):
         raise ValueError(f"x must be a 1-D record or a 2-D array of records, got shape {arr.shape}")

@@ -15,7 +15,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.optimize
 
 from raildyn import _checks
 from raildyn.linear_model import as_linear_system
@@ -23,6 +22,8 @@ from raildyn.linear_model import as_linear_system
 # Moved to raildyn.stability.critical; re-exported so that the old import path keeps working for one
 # issue (then the names go from here).
 from raildyn.stability.critical import CriticalSpeed, CriticalSpeedMap, critical_speed, critical_speed_map
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize
 
 __all__ = [
     "CriticalSpeed",
@@ -179,6 +180,8 @@ def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> TrackedModes:
     TrackedModes
         The eigenvalues and vectors with the columns permuted at each speed.
     """
+    import scipy.optimize
+
     lam, vec = (arr.copy() for arr in _modes(eigenvalues, vectors))
     # The cost of pairing each mode at one speed with each at the next, for all speeds at once: the
     # MAC in one batched product (as _mac: each column scaled by its largest entry first) and the

@@ -16,7 +16,6 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy.special import fresnel
 
 from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
@@ -29,6 +28,8 @@ from raildyn.track.cant import (
     TWIST_BASE,
     _rail_spacing,
 )
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.special.fresnel
 
 __all__ = ["Curve", "ramp"]
 
@@ -345,6 +346,8 @@ class Curve:
         x = a C(u/a), y = a S(u/a), a = √(π R L), with Fresnel's integrals
         C(z) = ∫₀^z cos(πt²/2) dt and S(z) = ∫₀^z sin(πt²/2) dt.
         """
+        from scipy.special import fresnel
+
         if self.transition_length == 0:
             return np.zeros_like(u), np.zeros_like(u)
         # √π √R √L, not √(πRL), which would overflow for R and L near 1e300.

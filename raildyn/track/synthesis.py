@@ -20,13 +20,14 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
 from raildyn import random_vibration as rv
 from raildyn.track.deterministic import _vehicle_speed
 from raildyn.track.spectra import COMPONENTS, _wavenumber_band, track_psd
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = [
     "ComponentVariances",
@@ -110,6 +111,8 @@ class IrregularitySample:
         dict
             The artists ``line``, ``upper`` and ``lower``.
         """
+        import matplotlib
+
         ax = plots.axes_or_new(ax)
         z = self.z if self.z.ndim == 1 else self.z[0]
         with matplotlib.rc_context(plots.STYLE):
@@ -355,6 +358,8 @@ class TwoRailIrregularity:
         dict
             The lines ``left_vertical``, ``right_vertical``, ``left_lateral`` and ``right_lateral``.
         """
+        import matplotlib
+
         if axes is not None:
             from matplotlib.axes import Axes
 

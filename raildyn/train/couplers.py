@@ -18,10 +18,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = ["DraftGear", "DraftGearLoop"]
 
@@ -254,6 +255,8 @@ class DraftGearLoop:
         dict
             The artists: ``line`` (the loop) and ``area`` (the shaded energy).
         """
+        import matplotlib
+
         ax = plots.axes_or_new(ax)
         with matplotlib.rc_context(plots.STYLE):
             (area,) = ax.fill(1e3 * self.deflection, self.force / 1e3, color=plots.COLORS[0], alpha=0.2)

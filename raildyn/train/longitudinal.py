@@ -22,13 +22,14 @@ from raildyn import _checks
 from raildyn._progress import progress_bar
 from raildyn.constants import MAXIMUM_SPEED
 from raildyn.errors import SolverError
-from raildyn.train import _kernel
 from raildyn.train.couplers import _MAX_EXTENSION, DraftGear
 from raildyn.train.forces import AirBrake
 from raildyn.train.model import TrainModel  # defined there; importable from here for one more issue
 from raildyn.train.resistance import Route
 from raildyn.train.results import TrainRun
 from raildyn.train.vehicles import _MAX_VEHICLES, make_consist
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.train._kernel
 
 __all__ = ["braking_model", "simulate"]
 
@@ -126,6 +127,8 @@ def simulate(
     >>> peak.kind, peak.coupler, round(peak.force / 1e3), round(run.stop_time(), 1)
     ('buff', 8, -77, 45.3)
     """
+    from raildyn.train import _kernel
+
     _checks.instance("model", model, TrainModel)
     duration = _checks.scalar("duration", duration, low=0.0, high=_MAX_DURATION, low_open=True)
     initial_speed = _checks.scalar("initial_speed", initial_speed, low=-MAXIMUM_SPEED, high=MAXIMUM_SPEED)
@@ -171,6 +174,7 @@ def _integrate(model, y0, t_eval, rtol, atol, method, max_step, bar):
     where the last stopped, so the steps are those of one uninterrupted run.
     """
     from raildyn.integrators import runner
+    from raildyn.train import _kernel
 
     data = _kernel.pack(*model._packed)
     try:

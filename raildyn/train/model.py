@@ -26,18 +26,19 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import brentq
 
 from raildyn import _checks
 from raildyn.constants import GRAVITY, MAXIMUM_SPEED
 from raildyn.errors import SolverError
-from raildyn.train import _kernel
 from raildyn.train import forces as train_forces
 from raildyn.train.couplers import _MAX_EXTENSION, DraftGear, _extension
 from raildyn.train.forces import NOTCHES, AirBrake, dynamic_brake_force
 from raildyn.train.resistance import CURVE_RESISTANCE, Route, davis_resistance
 from raildyn.train.results import QuasiStatic, TrainRun
 from raildyn.train.vehicles import Consist, make_consist  # noqa: F401  (the examples use make_consist)
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize.brentq,
+# raildyn.train._kernel
 
 __all__ = ["TrainModel"]
 
@@ -138,6 +139,8 @@ class TrainModel:
 
     def _pack(self, pre):
         """The model as the compiled right-hand side takes it: (table, scalars, route)."""
+        from raildyn.train import _kernel
+
         c, k = self.consist, _kernel
         n = len(c)
         table = np.zeros((k.ROWS, n))
@@ -404,6 +407,8 @@ class TrainModel:
 
     def _rhs_one(self, t, y):
         """The compiled right-hand side of one state; ``y`` must already be checked."""
+        from raildyn.train import _kernel
+
         return _kernel.rhs(t, y, *self._packed)
 
     def rhs_numpy(self, t, y) -> np.ndarray:
@@ -555,6 +560,8 @@ class TrainModel:
         >>> round(3.6 * climb.balancing_speed(), 1)  # km/h on a 1 % climb
         14.7
         """
+        from scipy.optimize import brentq
+
         low = _checks.scalar("low", low, low=0.0, high=MAXIMUM_SPEED)
         high = _checks.scalar("high", high, low=0.0, high=MAXIMUM_SPEED)
         if not low < high:

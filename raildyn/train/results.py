@@ -12,10 +12,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = ["CouplerPeak", "QuasiStatic", "TrainRun"]
 
@@ -71,6 +72,8 @@ class QuasiStatic:
         dict
             The artists: ``line``.
         """
+        import matplotlib
+
         ax = plots.axes_or_new(ax)
         with matplotlib.rc_context(plots.STYLE):
             (line,) = ax.plot(
@@ -218,6 +221,8 @@ class TrainRun:
             The artists: ``draft`` (largest tension), ``buff`` (largest compression, drawn
             negative) and ``peak`` (a marker on the force of largest magnitude).
         """
+        import matplotlib
+
         x = self.coupler_offsets
         peak = self.peak
         data = {
@@ -259,6 +264,8 @@ class TrainRun:
         dict
             The artists: ``mesh`` (the colour map) and ``colorbar``.
         """
+        import matplotlib
+
         peak = abs(self.peak.force) / 1e3
         limit = (peak if peak > 0 else 1.0) if limit is None else _checks.positive("limit", limit)
         ax = plots.axes_or_new(ax)

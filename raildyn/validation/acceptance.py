@@ -20,12 +20,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks
 from raildyn.plots import COLORS, STYLE, axes_or_new
 from raildyn.validation import _records
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = ["SectionMaxima", "SlidingRMS", "percentiles", "section_maxima", "sliding_rms"]
 
@@ -103,6 +104,8 @@ class SlidingRMS:
         dict
             ``{"line": line}``.
         """
+        import matplotlib
+
         ax = axes_or_new(ax)
         with matplotlib.rc_context(STYLE):
             (line,) = ax.plot(self.position, self.rms, color=color, label=label)
@@ -211,6 +214,8 @@ class SectionMaxima:
         dict
             The step artists ``lower`` and ``upper``.
         """
+        import matplotlib
+
         ax = axes_or_new(ax)
         edges = np.append(self.start, self.start[-1] + self.length)
         lo, hi = (f"{q:g} %" for q in self.percent)

@@ -10,11 +10,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize, signal
 
 from raildyn import _checks
 from raildyn.bridge import SimplySupportedBeam
 from raildyn.validation.fits import ParameterFit, _confidence, _intervals, _record
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
+# scipy.signal
 
 __all__ = ["WeighInMotionFit", "weigh_in_motion"]
 
@@ -105,6 +107,8 @@ def _wim_starts(t, eps, pos, span, d, speed, keep=3):
     for a train up to about 30 spans long; give ``speed`` for a longer one) the template of
     equal axle loads is cross-correlated with the records, which scores every arrival at once.
     """
+    from scipy import signal
+
     dt = t[1] - t[0]
     y = eps - np.median(eps, axis=1, keepdims=True)
     speeds = np.array([speed]) if speed is not None else np.geomspace(1.0, 150.0, 160)
@@ -206,6 +210,8 @@ def weigh_in_motion(
     >>> round(fit.speed, 6), np.round(fit.spacings, 6), np.round(fit.loads / 1.0e5, 6)
     (20.0, array([3.]), array([1., 1.]))
     """
+    from scipy import optimize
+
     _checks.instance("beam", beam, SimplySupportedBeam)
     pos = _checks.array("positions", positions, ndim=1, allow_empty=False)
     if np.any(pos <= 0.0) or np.any(pos >= beam.span):

@@ -12,9 +12,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import stats
 
 from raildyn import _checks
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.stats
 
 __all__ = ["ParameterFit"]
 
@@ -59,6 +60,8 @@ def _intervals(solution, n: int, confidence: float):
     cov = s² (JᵀJ)⁻¹, s² = Σr²/(n − p) {seber2003}; a rank-deficient JᵀJ (a parameter the record
     does not determine) gives an infinite standard error, which the caller refuses.
     """
+    from scipy import stats
+
     jac = np.asarray(solution.jac, dtype=float)
     p = jac.shape[1]
     dof = n - p

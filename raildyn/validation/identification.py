@@ -29,7 +29,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize, signal
 
 from raildyn import _checks
 
@@ -38,6 +37,9 @@ from raildyn import _checks
 from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion  # noqa: F401
 from raildyn.validation.fits import ParameterFit, _confidence, _intervals, _record
 from raildyn.vibration import damping_ratio_from_decrement, decrement_from_peaks
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
+# scipy.signal
 
 __all__ = [
     "CoastDownFit",
@@ -107,6 +109,8 @@ def _decrement(t, x, offset, noise, frequency):
     noise on one crest does not count as a second crest; the periods between the first and
     the last are counted from their time apart.
     """
+    from scipy import signal
+
     y = x - offset
     dt = t[1] - t[0]
     apart = max(int(0.7 / (frequency * dt)), 1)
@@ -154,6 +158,8 @@ def free_decay(time, response, *, confidence: float = 0.95) -> FreeDecayFit:
     >>> round(fit.frequency_hz, 6), round(fit.damping_ratio, 6)
     (3.0, 0.02)
     """
+    from scipy import optimize
+
     t, x = _record(time, response)
     level = _confidence(confidence)
     if t.size <= 5:
@@ -333,6 +339,8 @@ def coast_down(time, speed, mass: float, *, confidence: float = 0.95) -> CoastDo
     >>> np.round(coast_down(t, v, 4.0e5).estimate, 3)
     array([4000.,   60.,    6.,   40.])
     """
+    from scipy import optimize
+
     t, v = _record(time, speed, name="speed")
     _checks.plausible_array("speed", v, "speed", low=-np.inf)  # at most MAXIMUM_SPEED (>0 just below)
     if np.any(v <= 0.0):

@@ -21,13 +21,14 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from scipy import signal
 
 from raildyn import _checks
 from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force_response
 from raildyn.constants import GRAVITY
 from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion
 from raildyn.validation.metrics import Agreement, compare
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.signal
 
 __all__ = [
     "LERELVA_PANEL",
@@ -310,6 +311,8 @@ class LerelvaCase:
 
 def _lag_speed(t, first, second, distance):
     """Speed from the lag of the cross-correlation's peak of two records ``distance`` apart (m)."""
+    from scipy import signal
+
     dt = t[1] - t[0]
     a, b = first - first.mean(), second - second.mean()
     corr = signal.correlate(b, a, mode="full")
@@ -331,6 +334,8 @@ def _lag_speed(t, first, second, distance):
 
 def _peak_speed(t, midspan, rate):
     """First-to-last bogie-centre distance over the time between the first and last bogie maxima."""
+    from scipy import signal
+
     b, a = signal.butter(4, 8.0 / (rate / 2))  # keep the bogies' humps (~1-2 Hz), drop the ringing
     smooth = signal.filtfilt(b, a, midspan)
     peaks, _ = signal.find_peaks(smooth, height=0.3 * smooth.max(), distance=int(0.25 * rate))

@@ -28,12 +28,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks
 from raildyn.plots import COLORS, STYLE, axes_or_new
 from raildyn.validation import _records
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = [
     "NORMALISATIONS",
@@ -314,6 +315,8 @@ class Agreement:
         dict
             The lines ``measured`` and ``predicted``.
         """
+        import matplotlib
+
         ax = axes_or_new(ax)
         x = np.arange(self.measured.size) if self.time is None else self.time
         with matplotlib.rc_context(STYLE):

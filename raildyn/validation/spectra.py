@@ -20,14 +20,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
-import scipy.signal
 
 from raildyn import _checks
 from raildyn.plots import COLORS, STYLE, axes_or_new
 from raildyn.random_vibration import welch_psd
 from raildyn.validation import _records
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib, scipy.signal
 
 __all__ = ["BandRMS", "FrequencyResponseEstimate", "frequency_response_h1", "third_octave_rms"]
 
@@ -93,6 +93,8 @@ class BandRMS:
         dict
             ``{"line": line}``.
         """
+        import matplotlib
+
         ax = axes_or_new(ax)
         edges = np.append(self.lower_hz, self.upper_hz[-1])
         with matplotlib.rc_context(STYLE):
@@ -222,6 +224,8 @@ class FrequencyResponseEstimate:
         dict
             The lines ``h1`` and ``coherence``.
         """
+        import matplotlib
+
         ax = axes_or_new(ax)
         keep = self.omega > 0
         with matplotlib.rc_context(STYLE):
@@ -272,6 +276,8 @@ def frequency_response_h1(excitation, response, dt, *, nperseg=None) -> Frequenc
     >>> round(float(np.abs(est.h1[1:-1]).mean()), 9), round(float(est.coherence[1:-1].min()), 9)
     (2.0, 1.0)
     """
+    import scipy.signal
+
     x, y = _records.pair(excitation, response, names=("excitation", "response"), min_size=8)
     dt = _checks.positive("dt", dt)
     nperseg = min(256, x.size) if nperseg is None else _checks.integer("nperseg", nperseg, low=8, high=x.size)

@@ -32,15 +32,9 @@ import numba
 import numpy as np
 
 from raildyn._compiled import formula
+from raildyn.vehicles.rocking import LABELS  # the 18 coordinates, in the order of the kernel's arrays
 
 __all__ = ["LABELS", "compiled_forces", "element_forces", "evaluate", "march"]
-
-# The 18 coordinates, in the order of the kernel's arrays.
-LABELS = (
-    ("body z", "body θ", "body φ", "body y")
-    + tuple(f"bolster {i} {c}" for i in (1, 2) for c in ("z", "φ", "y"))
-    + tuple(f"wheelset {j} {c}" for j in (1, 2, 3, 4) for c in ("z", "φ"))
-)
 
 
 # Columns of the integer element table.

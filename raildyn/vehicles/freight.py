@@ -31,7 +31,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks, _deprecated, plots
@@ -47,6 +46,8 @@ from raildyn.vehicles.vertical import BodyFrequencies
 # Moved to raildyn.vehicles.wedges (issue 33): imported here so that the old paths
 # (raildyn.vehicles.freight.X) keep working for one issue; then this goes.
 from raildyn.vehicles.wedges import WedgeFriction, wedge_energy_per_cycle, wedge_friction_force  # noqa: F401
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = [
     "GDU_ORE_CAR",
@@ -330,6 +331,8 @@ class RockAndRoll:
         dict
             The artists: ``curve`` and, with ``resonance``, ``resonance``.
         """
+        import matplotlib
+
         resonance = _checks.flag("resonance", resonance)
         kmh = 3.6 * self.speeds
         amplitude = np.degrees(self.roll_amplitude)

@@ -30,7 +30,6 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
@@ -43,6 +42,8 @@ from raildyn.vehicles._shared import _earlier_artists, _steady_system, _vehicle
 # Moved to raildyn.vehicles.time_domain (issue 33): imported here so that the old paths
 # (raildyn.vehicles.response.X) keep working for one issue; then this goes.
 from raildyn.vehicles.time_domain import PeriodicProfile, TimeResponse, periodic_profile, time_response  # noqa: F401
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
 __all__ = [
     "ResponseSpectrum",
@@ -199,6 +200,8 @@ class ResponseSpectrum:
         dict
             The artists: ``line``.
         """
+        import matplotlib
+
         floor = 1e-12  # (unit)²/Hz: a logarithmic axis cannot show a zero
         y = np.maximum(self.psd_per_hz, floor)
         if artists is not None:

@@ -33,15 +33,23 @@ from raildyn import _checks
 from raildyn import track as _track
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import SystemMatrices
-from raildyn.vehicles import _rocking_kernel as kernel
 from raildyn.vehicles.freight import VerticalFreightCar
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py):
+# raildyn.vehicles._rocking_kernel
 
 if TYPE_CHECKING:
     from raildyn.vehicles.rocking_analysis import StaticRoll
 
 __all__ = ["LABELS", "RockingFreightCar", "TRACK_STIFFNESS"]
 
-LABELS = kernel.LABELS
+# Defined here, not in the kernel (which takes it from here), so that importing this module does not
+# load the compiled kernel (tests/test_imports.py).
+LABELS = (
+    ("body z", "body θ", "body φ", "body y")
+    + tuple(f"bolster {i} {c}" for i in (1, 2) for c in ("z", "φ", "y"))
+    + tuple(f"wheelset {j} {c}" for j in (1, 2, 3, 4) for c in ("z", "φ"))
+)
 """The names of the 18 coordinates: the body's height, pitch, roll and sway, each bolster's height, roll
 and sway, each wheelset's height and roll (wheelsets leading first), m and rad."""
 
@@ -399,6 +407,8 @@ class RockingFreightCar:
             In the order of :meth:`~raildyn.vehicles.rocking.RockingFreightCar.element_names`; ≥ 0 for the
             contacts.
         """
+        from raildyn.vehicles import _rocking_kernel as kernel
+
         q = _checks.array("q", q, shape=(18,))
         v = _checks.array("v", v, shape=(18,))
         z = np.zeros(8) if rail_heights is None else _checks.array("rail_heights", rail_heights, shape=(8,))

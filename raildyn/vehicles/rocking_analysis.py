@@ -9,13 +9,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.optimize
 
 from raildyn import _checks
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
 from raildyn.linear_model import SystemMatrices
-from raildyn.vehicles import _rocking_kernel as kernel
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
+# raildyn.vehicles._rocking_kernel
 
 __all__ = ["StaticRoll"]
 
@@ -76,6 +77,8 @@ def static_roll(car, roll_moment: float = 0.0, lateral_acceleration: float = 0.0
     """:meth:`~raildyn.vehicles.rocking.RockingFreightCar.static_roll` (see there); ``start``, a
     :class:`StaticRoll` of the same car under a share s of the same kind of load, starts the
     continuation there (at s) instead of at rest."""
+
+    from raildyn.vehicles import _rocking_kernel as kernel
 
     limit = car.weight * car.half_rail_spacing
     M = _checks.scalar("roll_moment", roll_moment, low=-limit, high=limit)
@@ -165,6 +168,10 @@ def threshold(car, event: str) -> float:
 
 def _balance(free, q, load, tol: float):
     """The coordinates that balance the generalized ``load`` (N, N·m), from the guess q, or None."""
+    import scipy.optimize
+
+    from raildyn.vehicles import _rocking_kernel as kernel
+
     m = load[2] if load[2] != 0 else -load[3]
     _, dofs, ei, ef, _ = free._tables()
     x1, v1, rails = np.zeros(19), np.zeros(19), np.zeros(9)
@@ -201,6 +208,8 @@ def _balance(free, q, load, tol: float):
 def linearize(car, engaged: bool) -> SystemMatrices:
     """:meth:`~raildyn.vehicles.rocking.RockingFreightCar.linearized` (see there): K = Σ k g gᵀ + Σ P₀ ∇²δ,
     C = Σ (c + F/v_ε) g gᵀ."""
+    from raildyn.vehicles import _rocking_kernel as kernel
+
     mass, dofs, ei, ef, _ = car._tables()
     n = mass.size
     K, C = np.zeros((n, n)), np.zeros((n, n))

@@ -13,16 +13,17 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import matplotlib
 import numpy as np
 
 from raildyn import _checks, plots
 from raildyn import track as _track
 from raildyn.errors import SolverError
 from raildyn.integrators import stable_step
-from raildyn.vehicles import _rocking_kernel as kernel
 from raildyn.vehicles._shared import _earlier_artists
 from raildyn.vehicles.rocking import RockingFreightCar
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib,
+# raildyn.vehicles._rocking_kernel
 
 __all__ = ["RockingRun", "RockingSweep", "rocking_run", "rocking_sweep"]
 
@@ -157,6 +158,8 @@ class RockingRun:
             The artists: ``left``, ``right`` (lines) and ``lift`` (the times some wheel of the truck is
             off its rail, as points on the zero line).
         """
+        import matplotlib
+
         truck = _checks.integer("truck", truck, low=0, high=1)
         q = self.side_loads[:, truck] / 1e3
         lifted = self.wheel_lifted[:, 2 * truck : 2 * truck + 2].any(axis=(1, 2))
@@ -250,6 +253,8 @@ class RockingSweep:
         dict
             The artists: ``unloading``, ``lift`` and, with ``resonance``, ``resonance``.
         """
+        import matplotlib
+
         resonance = _checks.flag("resonance", resonance)
         kmh = 3.6 * self.speeds
         if artists is not None:
@@ -312,6 +317,8 @@ def _settings(car, depth, half_width, rail_length, cycles, dt, output_step):
 
 
 def _run(car, speed, L, cycles, dt, output_step, table) -> RockingRun:
+    from raildyn.vehicles import _rocking_kernel as kernel
+
     mass, dofs, ei, ef, _ = car._tables()
     c = car.car
     a, s = c.semi_truck_wheelbase, c.semi_truck_spacing

@@ -12,7 +12,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-import numba
 import numpy as np
 import scipy.linalg
 
@@ -165,9 +164,12 @@ def _lsim(A, B, C, D, U, dt: float) -> np.ndarray:
 
     so x₁ = A_d x₀ + B_d0 u₀ + B_d1 u₁. lsim steps this in a Python loop, some 5 µs a step (30 ms of
     the ride widget's 5,500 steps); here the input terms of every step are one matrix product and
-    the recurrence runs compiled (:func:`_march`). ``tests/test_vehicles_response.py`` holds the
+    the recurrence runs compiled (``raildyn.vehicles._march_kernel``, imported here only when it
+    runs, as it loads numba). ``tests/test_vehicles_response.py`` holds the
     two to round-off. ``U`` is (n_steps, inputs), ``dt`` the step (> 0 unless there is one step).
     """
+    from raildyn.vehicles._march_kernel import march
+
     n, m = A.shape[0], B.shape[1]
     x = np.zeros((U.shape[0], n))
     if U.shape[0] > 1:
@@ -179,20 +181,8 @@ def _lsim(A, B, C, D, U, dt: float) -> np.ndarray:
         Ad = step[:n, :n]
         Bd1 = step[n + m :, :n]
         Bd0 = step[n : n + m, :n] - Bd1
-        _march(np.ascontiguousarray(Ad), U[:-1] @ Bd0 + U[1:] @ Bd1, x)
+        march(np.ascontiguousarray(Ad), U[:-1] @ Bd0 + U[1:] @ Bd1, x)
     return x @ C[0] + U @ D[0]
-
-
-@numba.njit(cache=True)
-def _march(Ad, F, x):
-    """x[i] = x[i − 1] A_d + F[i − 1] for i = 1 … n_steps − 1, in place (states as rows)."""
-    n = x.shape[1]
-    for i in range(1, x.shape[0]):
-        for k in range(n):
-            total = F[i - 1, k]
-            for j in range(n):
-                total += x[i - 1, j] * Ad[j, k]
-            x[i, k] = total
 
 
 def time_response(

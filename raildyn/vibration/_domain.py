@@ -1,8 +1,9 @@
 """What the one- and many-degree-of-freedom modules of :mod:`raildyn.vibration` share.
 
 The domain limits every oscillator is held to (rates, counts, the phase of one time step), the
-characteristic roots of eq. 1.9 and the sign rule for mode shapes. Kept apart so that ``sdof``,
-``sdof_curves``, ``mdof`` and ``damped`` can all import it without importing each other.
+characteristic roots of eq. 1.9, the sign rule for mode shapes and the convolution of a response.
+Kept apart so that ``sdof``, ``sdof_curves``, ``mdof`` and ``damped`` can all import it without
+importing each other.
 """
 
 from __future__ import annotations
@@ -80,3 +81,15 @@ def _pivots(vectors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     mag = np.abs(vectors)
     rows = np.argmax(mag >= (1.0 - 1e-8) * mag.max(axis=0), axis=0)
     return rows, np.arange(vectors.shape[1])
+
+
+def _causal_convolution(samples: np.ndarray, kernel: np.ndarray) -> np.ndarray:
+    """The first ``samples.size`` terms of the convolution Σ_j kernel[k − j] samples[j], by real FFT.
+
+    numpy's FFT rather than ``scipy.signal.fftconvolve``, which computes the same sum the same way but
+    costs its module's import, a second or more, on the first response of a session.
+    """
+    n = samples.size
+    size = 1 << (2 * n - 2).bit_length()  # a power of two ≥ 2n − 1: no wrap-around
+    product = np.fft.rfft(samples, size) * np.fft.rfft(kernel, size)
+    return np.fft.irfft(product, size)[:n]

@@ -20,7 +20,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg
-import scipy.signal
 
 from raildyn import _deprecated
 from raildyn._checks import array, integer, nonnegative, positive, scalar, time_grid
@@ -28,6 +27,7 @@ from raildyn.vibration._domain import (
     _MAX_COUNT,
     _MAX_PHASE,
     _RATE,
+    _causal_convolution,
     _check_rates,
     _one_minus_square,
     _reciprocal,
@@ -568,7 +568,7 @@ class SDOF:
         hold), and the response to that input is exact: the free part is the
         closed form of :meth:`free_response`, and the forced part is the
         discrete convolution of the samples with the exact one-step kernel,
-        evaluated by FFT (so 10⁵ samples take milliseconds).
+        evaluated by FFT (so 10⁵ samples take milliseconds: ``benchmarks/bench_ch01_widgets.py``).
 
         Parameters
         ----------
@@ -619,7 +619,7 @@ class SDOF:
         kernel[0] = q[0]
         kernel[1:] = self.free_response(tau[:-1], gamma[0], gamma[1])
         free = self.free_response(tau, x0 - q[0] * f[0], v0 - q[1] * f[0])
-        return free + scipy.signal.fftconvolve(f, kernel)[:n]
+        return free + _causal_convolution(f, kernel)
 
     def duhamel_response(self, t, force) -> np.ndarray:
         """Response from rest to a sampled force by Duhamel's integral, summed by the rectangle rule.
@@ -656,7 +656,7 @@ class SDOF:
             return np.zeros(1)
         h = (t[-1] - t[0]) / (t.size - 1)
         kernel = self.impulse_response(t - t[0])
-        return h * scipy.signal.fftconvolve(f, kernel)[: t.size]
+        return h * _causal_convolution(f, kernel)
 
     # -- linear-system views ---------------------------------------------
 

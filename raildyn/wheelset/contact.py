@@ -24,8 +24,9 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import nonnegative, scalar
-from raildyn.wheelset import _law
 from raildyn.wheelset.linear import Wheelset
+
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): raildyn.wheelset._law
 
 __all__ = [
     "ContactTable",
@@ -299,6 +300,8 @@ class ContactTable:
         self.slopes = ((f[1] - f[0]) / (x[1] - x[0]), (f[-1] - f[-2]) / (x[-1] - x[-2]))
 
     def __call__(self, y):
+        from raildyn.wheelset import _law
+
         y = np.asarray(y, dtype=float)
         return _law.table_many(self.x, self.f, np.ravel(y)).reshape(y.shape)  # the engine's table, compiled
 
@@ -425,6 +428,8 @@ def tread_contact_angles(ws: Wheelset, contact: WheelRailContact, y) -> np.ndarr
 
 def _angles(ws: Wheelset, contact: WheelRailContact, y):
     """ϑ_L(y), ϑ_R(y) and Δϑ(y) of :func:`tread_contact_angles`, unchecked."""
+    from raildyn.wheelset import _law
+
     p = _law.parameters(ws)
     y = np.asarray(y, dtype=float)
     dd = (
@@ -440,6 +445,8 @@ def _angles(ws: Wheelset, contact: WheelRailContact, y):
 
 def _geometry(ws: Wheelset, contact: WheelRailContact, y):
     """The law's parameters and geometry at y: p, Δr, Δϑ, ϑ_L, ϑ_R and the centred ϑ_c,L, ϑ_c,R."""
+    from raildyn.wheelset import _law
+
     p = _law.parameters(ws)
     dr = (
         _law.cone(p, 0, np.asarray(y, dtype=float))[0]
@@ -460,6 +467,8 @@ def _flat(*arrays):
 
 def _contact_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, speed):
     """:func:`contact_forces` without the checks, for the right-hand sides (called at every step)."""
+    from raildyn.wheelset import _law
+
     p, dr, dd, theta_l, theta_r, centred_l, centred_r = _geometry(ws, contact, y)
     (dr, dd, theta_l, theta_r, y, psi, ydot, psidot, speed), shape = _flat(
         dr, dd, theta_l, theta_r, y, psi, ydot, psidot, speed
@@ -549,6 +558,8 @@ def wheel_forces(ws: Wheelset, contact: WheelRailContact, y, psi, ydot, psidot, 
     >>> round(float(f.flange[0]) / 1e3, 1), float(f.flange[1])
     (-42.3, 0.0)
     """
+    from raildyn.wheelset import _law
+
     y, psi, ydot, psidot, speed = _motion(ws, contact, y, psi, ydot, psidot, speed)
     p, dr, _, theta_l, theta_r, centred_l, centred_r = _geometry(ws, contact, y)
     (dr, theta_l, theta_r, y, psi, ydot, psidot, speed), shape = _flat(
