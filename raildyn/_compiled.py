@@ -10,6 +10,12 @@ checks, which it cannot run and its own caller has already made. This is how the
 (:func:`raildyn.contact.creepages.creepage_terms`) and the curve's ramp
 (:func:`raildyn.track.curve.ramp`) reach the compiled wheel–rail engine of :mod:`raildyn.wheelset`.
 
+Importing a model must not load numba (a third of a second; ``tests/test_imports.py``), so a formula
+defined before numba is loaded waits in a queue, and :func:`ready` hands the queue to numba before it
+compiles anything: numba calls it itself, as the ``numba_extensions`` entry point that
+``pyproject.toml`` declares (numba runs every such entry point ahead of its first compilation in a
+process). A formula defined once numba is loaded is handed over at once.
+
 Part of raildyn's ground floor (with ``_numbers``, ``_checks`` and ``_progress``): every package may
 import it.
 """
@@ -17,16 +23,38 @@ import it.
 from __future__ import annotations
 
 import inspect
+import sys
 from collections.abc import Callable
 
-from numba.extending import overload, register_jitable
+__all__ = ["compiled_as", "formula", "ready"]
 
-__all__ = ["compiled_as", "formula"]
+# Registrations waiting for numba to be loaded: see the module's docstring.
+_PENDING: list[Callable[[], None]] = []
+
+
+def _with_numba(register: Callable[[], None]) -> None:
+    """Run ``register`` now if numba is loaded (after any waiting before it), else when :func:`ready` runs."""
+    _PENDING.append(register)
+    if "numba" in sys.modules:
+        ready()
+
+
+def ready() -> None:
+    """Hand every formula defined so far to numba (numba's entry point: see the module's docstring)."""
+    while _PENDING:
+        _PENDING.pop(0)()
 
 
 def formula(fn: Callable) -> Callable:
     """Mark ``fn`` as a formula: unchanged for Python, compiled where a numba function calls it."""
-    return register_jitable(fn)
+
+    def register():
+        from numba.extending import register_jitable
+
+        register_jitable(fn)
+
+    _with_numba(register)
+    return fn
 
 
 def compiled_as(law: Callable) -> Callable[[Callable], Callable]:
@@ -35,7 +63,7 @@ def compiled_as(law: Callable) -> Callable[[Callable], Callable]:
     ``law`` (a :func:`formula`) takes the public function's parameters, by the same names and in
     the same order.
     """
-    jitted = formula(law)
+    formula(law)
 
     def decorate(public: Callable) -> Callable:
         if list(inspect.signature(public).parameters) != list(inspect.signature(law).parameters):
@@ -45,11 +73,17 @@ def compiled_as(law: Callable) -> Callable[[Callable], Callable]:
             )
 
         def implementation(*args):
-            return jitted
+            return law
 
         # numba matches the typing function's signature to the implementation's
         implementation.__signature__ = inspect.signature(law)
-        overload(public)(implementation)
+
+        def register():
+            from numba.extending import overload
+
+            overload(public)(implementation)
+
+        _with_numba(register)
         return public
 
     return decorate

@@ -58,23 +58,19 @@ HEAVY = (
     "distributed",
     "ipywidgets",
     "IPython",
+    "numba",  # loaded by the kernels where they run; the formulas wait for it (raildyn._compiled)
 )
-
-#: The one module that imports numba at its top and that a model's import may load: the formulas' link
-#: to numba (raildyn._compiled; another helper of issue 37 owns it). Every other such module is a
-#: kernel, compiled at its import or at its first call: imported where it runs.
-NUMBA_AT_IMPORT = {"raildyn._compiled"}
 
 
 @cache
 def _kernels() -> frozenset[str]:
-    """Every raildyn module that imports numba at its top, but those of :data:`NUMBA_AT_IMPORT`."""
+    """Every raildyn module that imports numba at its top: a compiled kernel."""
     found = set()
     for path in (ROOT / "raildyn").rglob("*.py"):
         if re.search(r"^(import numba|from numba)", path.read_text(encoding="utf-8"), re.M):
             parts = path.relative_to(ROOT).with_suffix("").parts
             found.add(".".join(parts[:-1] if parts[-1] == "__init__" else parts))
-    return frozenset(found - NUMBA_AT_IMPORT)
+    return frozenset(found)
 
 
 def _fresh(script: str) -> dict:
@@ -123,13 +119,6 @@ def test_a_model_loads_no_heavy_library(loaded, model):
 def test_a_model_loads_no_compiled_kernel(loaded, model):
     kernels = sorted(_kernels() & set(loaded[model]))
     assert kernels == [], f"importing {model} loads the compiled {kernels}: import them where they run"
-
-
-@pytest.mark.parametrize("model", MODELS)
-def test_numba_comes_only_with_the_formulas_link(loaded, model):
-    # numba is loaded by a model's import only through raildyn._compiled (none, once it defers numba)
-    if "numba" in loaded[model]:
-        assert "raildyn._compiled" in loaded[model], f"importing {model} loads numba, not for a formula"
 
 
 def test_the_kernels_are_found():
