@@ -6,6 +6,8 @@ notebook; the rebuild, after a comment is added to one code cell of the slowest 
 executes that notebook alone (Jupyter Book's execution cache) and rewrites the pages that changed. The
 baseline of the clean build is the notebooks alone executed one after another by nbclient (no Sphinx),
 so its ratio says what the book adds to running them; the baseline of the rebuild is the clean build.
+A third row gives the slowest notebook's execution in the clean build (as the book's cache recorded it,
+numba's cache as the install leaves it: a fresh clone's first run), beside the same notebook alone.
 One repeat each: a clean build takes minutes.
 """
 
