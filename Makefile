@@ -49,7 +49,7 @@ pdf-student: book-student chromium
 # On every core (JOBS=0: in pytest's own process): the book's group and the app's each hold one worker,
 # the other files are shared out as workers come free, the groups first (tests/conftest.py).
 JOBS ?= auto
-PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadgroup --no-loadscope-reorder
+PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs
 	$(PYTEST)
 

@@ -178,15 +178,14 @@ def binder_run(background_jobs):
     return _BINDER["proc"], (_BINDER["work"] / "log.txt").read_text(), _BINDER["work"]
 
 
-# The fixtures of the book's group: the tests that read the built book, and the checks that its validation
-# page lists, which must run before it is built.
-BOOK_FIXTURES = ("built_book", "printed_book", "binder_run", "reference")
+# Under `pytest -n`, the file in which the workers write each test's group for the controller's scheduler.
+GROUPS = "RAILDYN_TEST_GROUPS"
 
 
 def _book_rank(item) -> int | None:
-    """Where a test of the book's group runs within it: the recorded checks (0), the book (1), the Binder
-    environment (2, built in the background meanwhile), the printed book last (3, printed meanwhile);
-    None for a test outside the group."""
+    """Where a test of the book's group runs within it: the checks its validation page lists (0), the
+    book (1), the Binder environment (2, built in the background meanwhile), the printed book last (3,
+    printed meanwhile); None for a test outside the group."""
     names = getattr(item, "fixturenames", ())
     if "printed_book" in names:
         return 3
@@ -197,32 +196,60 @@ def _book_rank(item) -> int | None:
     return 0 if "reference" in names else None
 
 
-@pytest.hookimpl(tryfirst=True)  # before pytest-xdist reads the groups off the markers
+def _group(item) -> str:
+    """The tests that must run in one process, in order: the book's, the lecture-room app's (one Voilà
+    server), or else the test's file (so that its module-wide fixtures are computed once)."""
+    if _book_rank(item) is not None:
+        return "book"
+    return "app" if "voila_app" in getattr(item, "fixturenames", ()) else item.nodeid.split("::")[0]
+
+
 def pytest_collection_modifyitems(config, items):
     """Mark the reference checks (``pytest -m reference`` runs them alone) and order the long groups.
 
     Two groups hold a process for minutes: the book's (its checks, the build, the tests that read it) and
-    the lecture-room app's (one Voilà server). Under ``pytest -n`` (pytest-xdist, ``--dist loadgroup``)
-    each group runs on one worker while the others share the remaining tests, a file at a time (its
-    module-wide fixtures computed once); both go first, so that they start at once (the Makefile turns
-    off xdist's reordering by size). Within the book's group the order is ``_book_rank``'s.
+    the lecture-room app's. They go first, so that under ``pytest -n`` they start at once, each on one
+    worker, while the other workers share the files as they come free (``pytest_xdist_make_scheduler``).
+    Within the book's group the order is ``_book_rank``'s.
     """
     for item in items:
         names = getattr(item, "fixturenames", ())
         if "reference" in names:
             item.add_marker(pytest.mark.reference)
-        rank = _book_rank(item)
-        if rank is not None:
-            item.add_marker(pytest.mark.xdist_group("book"))
-            if "background_jobs" not in names:
-                item.fixturenames.append("background_jobs")
-        elif "voila_app" in names:
-            item.add_marker(pytest.mark.xdist_group("voila"))
-        else:  # a file's tests stay together, so that its module-wide fixtures are computed once
-            item.add_marker(pytest.mark.xdist_group(item.nodeid.split("::")[0]))
+        if _book_rank(item) is not None and "background_jobs" not in names:
+            item.fixturenames.append("background_jobs")
     # stable: within each group the tests keep the order they were collected in
     items.sort(key=lambda item: (0, _book_rank(item)) if _book_rank(item) is not None else
-               (1 if "voila_app" in getattr(item, "fixturenames", ()) else 2, 0))  # fmt: skip
+               (1 if _group(item) == "app" else 2, 0))  # fmt: skip
+    if os.environ.get(GROUPS) and os.environ.get("PYTEST_XDIST_WORKER"):
+        # a worker of `pytest -n` tells the controller each test's group (every worker, the same map)
+        path = Path(os.environ[GROUPS])
+        draft = path.with_name(f"{os.environ['PYTEST_XDIST_WORKER']}.json")
+        draft.write_text(json.dumps({item.nodeid: _group(item) for item in items}))
+        draft.replace(path)
+
+
+def pytest_configure(config):
+    if getattr(config.option, "numprocesses", None) and not hasattr(config, "workerinput"):
+        os.environ[GROUPS] = str(Path(tempfile.mkdtemp(prefix="raildyn-groups-")) / "groups.json")
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_xdist_make_scheduler(config, log):
+    """pytest-xdist's scheduling by scope, the scope being a test's group (``_group``): each group goes
+    whole to one worker, in the order of the collection (``--no-loadscope-reorder``). (pytest-xdist's own
+    ``--dist loadgroup`` renames the tests in a way pytest 9.2 no longer reads, so it groups nothing.)"""
+    from xdist.scheduler import LoadScopeScheduling
+
+    class ByGroup(LoadScopeScheduling):
+        groups: dict[str, str] | None = None
+
+        def _split_scope(self, nodeid: str) -> str:
+            if self.groups is None:  # written by the workers as they collected, before they reported
+                self.groups = json.loads(Path(os.environ[GROUPS]).read_text())
+            return self.groups.get(nodeid, nodeid.split("::")[0])
+
+    return ByGroup(config, log)
 
 
 def pytest_sessionfinish(session, exitstatus):

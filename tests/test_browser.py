@@ -193,7 +193,9 @@ def image_of(control):
     )
 
 
-def wait_changed(image, before: str, what: str, timeout: float = 20.0) -> str:
+def wait_changed(image, before: str, what: str, timeout: float = 60.0) -> str:
+    # A minute: the app's kernel shares the machine with the book's build on the other worker of
+    # `make test`, and a control whose model runs anew (a curve entry at a new speed) can take seconds.
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         now = image.evaluate(IMAGE_DIGEST)
