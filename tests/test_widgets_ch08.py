@@ -101,7 +101,7 @@ def test_nadal_chart_draws_the_limit_and_the_cars_quotient():
     assert f"Y/Q = {quotient:.3f}, Nadal's limit at ϑ_f = 65.0°, μ = 0.20: {nadal:.3f}" in status
     assert "below Nadal's limit: no climb" in status
     assert f"Σ|Y/Q| = {axle.axle_sum:.3f} against Weinstock's {axle.weinstock_limit:.3f}" in status
-    assert ax.texts[-1].get_text() == f"Y/Q {quotient:.2f} < {nadal:.2f}: no climb"
+    assert ax.texts[-1].get_text() == f"R = 400 m, V = 80 km/h: Y/Q {quotient:.2f} < {nadal:.2f}: no climb"
 
 
 def test_nadal_chart_flags_a_wheel_above_the_limit():

@@ -211,7 +211,7 @@ def _nadal_setup(live, status):
         if isinstance(state, SolverError):
             car.set_data([], [])
             level.set_data([], [])
-            verdict.set_text("no equilibrium")
+            verdict.set_text(f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h: no equilibrium")
             status.value = f"{head} · no equilibrium: {state}"
             return
         quotient = float(state.derailment_quotient[0, 1])
@@ -222,7 +222,12 @@ def _nadal_setup(live, status):
             word, short = "above Nadal's limit: the flange may climb", "may climb"
         else:
             word, short = "below Nadal's limit: no climb", "no climb"
-        verdict.set_text(f"Y/Q {quotient:.2f} {'>' if quotient > nadal else '<'} {nadal:.2f}: {short}")
+        # the curve and the speed head the verdict: a few km/h move Y/Q by less than a pixel, and the
+        # figure should still say which case it shows
+        verdict.set_text(
+            f"R = {R:.0f} m, V = {3.6 * V:.0f} km/h: Y/Q {quotient:.2f} {'>' if quotient > nadal else '<'} "
+            f"{nadal:.2f}: {short}"
+        )
         status.value = (
             f"{head} · leading outer wheel Y/Q = {quotient:.3f}, Nadal's limit at ϑ_f = {delta:.1f}°, "
             f"μ = {mu:.2f}: {nadal:.3f} — {word} · axle sum Σ|Y/Q| = {axle.axle_sum:.3f} against "
