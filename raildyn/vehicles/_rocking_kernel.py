@@ -32,7 +32,7 @@ import numba
 import numpy as np
 
 from raildyn._compiled import formula
-from raildyn.vehicles.rocking import LABELS  # the 18 coordinates, in the order of the kernel's arrays
+from raildyn.vehicles._rocking_coordinates import LABELS  # the 18 coordinates, in the arrays' order
 
 __all__ = ["LABELS", "compiled_forces", "element_forces", "evaluate", "march"]
 

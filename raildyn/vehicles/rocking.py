@@ -33,6 +33,7 @@ from raildyn import _checks
 from raildyn import track as _track
 from raildyn.constants import GRAVITY, STANDARD_RAIL_SPACING
 from raildyn.linear_model import SystemMatrices
+from raildyn.vehicles import _rocking_coordinates
 from raildyn.vehicles.freight import VerticalFreightCar
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py):
@@ -43,13 +44,7 @@ if TYPE_CHECKING:
 
 __all__ = ["LABELS", "RockingFreightCar", "TRACK_STIFFNESS"]
 
-# Defined here, not in the kernel (which takes it from here), so that importing this module does not
-# load the compiled kernel (tests/test_imports.py).
-LABELS = (
-    ("body z", "body θ", "body φ", "body y")
-    + tuple(f"bolster {i} {c}" for i in (1, 2) for c in ("z", "φ", "y"))
-    + tuple(f"wheelset {j} {c}" for j in (1, 2, 3, 4) for c in ("z", "φ"))
-)
+LABELS = _rocking_coordinates.LABELS
 """The names of the 18 coordinates: the body's height, pitch, roll and sway, each bolster's height, roll
 and sway, each wheelset's height and roll (wheelsets leading first), m and rad."""
 

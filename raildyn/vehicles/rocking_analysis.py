@@ -14,6 +14,7 @@ from raildyn import _checks
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
 from raildyn.linear_model import SystemMatrices
+from raildyn.vehicles._rocking_coordinates import LABELS
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
 # raildyn.vehicles._rocking_kernel
@@ -248,4 +249,4 @@ def linearize(car, engaged: bool) -> SystemMatrices:
         if rail < 8:  # δ = rail − Z_A: a rail rising by w pushes A with k w + c ẇ
             GK[:, rail] = -k * g
             GC[:, rail] = -ef[e, kernel.DAMPING] * g
-    return SystemMatrices(np.diag(mass), C, K, GK, GC, kernel.LABELS, 1.0)
+    return SystemMatrices(np.diag(mass), C, K, GK, GC, LABELS, 1.0)
