@@ -47,9 +47,9 @@ pdf-student: book-student chromium
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
 # On every core (JOBS=0: in pytest's own process): the book's group and the app's each hold one worker,
-# the other files are shared out as workers come free, the groups first (tests/conftest.py). One worker
-# more than the cores: the two groups' workers spend most of their time waiting on their own processes
-# (the book's kernels and Sphinx, the app's kernel and the browser), which then use the cores.
+# the other tests (a file at a time where they share a fixture) are shared out as workers come free, the groups
+# first (tests/conftest.py). One worker more than the cores: the two groups' workers spend most of their time
+# waiting on their own processes (the book's kernels and Sphinx, the app's kernel and the browser).
 JOBS ?= $(shell echo $$(( $$(nproc) + 1 )))
 PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs

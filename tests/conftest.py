@@ -198,10 +198,15 @@ def _book_rank(item) -> int | None:
 
 def _group(item) -> str:
     """The tests that must run in one process, in order: the book's, the lecture-room app's (one Voilà
-    server), or else the test's file (so that its module-wide fixtures are computed once)."""
+    server), a file's whose tests share a module-wide fixture (computed once), or else the test alone."""
     if _book_rank(item) is not None:
         return "book"
-    return "app" if "voila_app" in getattr(item, "fixturenames", ()) else item.nodeid.split("::")[0]
+    if "voila_app" in getattr(item, "fixturenames", ()):
+        return "app"
+    info = getattr(item, "_fixtureinfo", None)
+    defs = info.name2fixturedefs.values() if info else ()
+    shared = any(d[-1].scope in ("package", "module", "class") for d in defs)
+    return item.nodeid.split("::")[0] if shared else item.nodeid
 
 
 def pytest_collection_modifyitems(config, items):
@@ -209,7 +214,7 @@ def pytest_collection_modifyitems(config, items):
 
     Two groups hold a process for minutes: the book's (its checks, the build, the tests that read it) and
     the lecture-room app's. They go first, so that under ``pytest -n`` they start at once, each on one
-    worker, while the other workers share the files as they come free (``pytest_xdist_make_scheduler``).
+    worker, while the other workers share the rest as they come free (``pytest_xdist_make_scheduler``).
     Within the book's group the order is ``_book_rank``'s.
     """
     for item in items:
