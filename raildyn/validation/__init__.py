@@ -11,8 +11,10 @@ parameters from records, and spreading uncertain parameters into the answer.
   — bridge weigh-in-motion; :mod:`raildyn.validation.fits` — the fit result they all return.
 * :mod:`raildyn.validation.measured` — a measured case: strain at midspan of a railway bridge near
   Trondheim under an NSB class 92 train, and the chapter-10 prediction beside it.
-* :mod:`raildyn.validation.uncertainty` — Monte Carlo prediction bands and Sobol' indices, run on
-  dask.distributed (a local cluster by default, any scheduler on request), reproducible from a seed.
+* :mod:`raildyn.validation.uncertainty` — Monte Carlo prediction bands and Sobol' indices from
+  pseudo-random or quasi-random (scrambled Sobol', Halton) samples, run on dask.distributed (a local
+  cluster of one process per core by default, any scheduler on request) or any ``concurrent.futures``
+  executor, reproducible from a seed.
 """
 
 from raildyn.validation.acceptance import SectionMaxima, SlidingRMS, percentiles, section_maxima, sliding_rms
