@@ -47,10 +47,10 @@ pdf-student: book-student chromium
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
 # On every core (JOBS=0: in pytest's own process): the book's group and the app's each hold one worker,
-# the other tests (a file at a time where they share a fixture) are shared out as workers come free, the groups
-# first (tests/conftest.py). One worker more than the cores: the two groups' workers spend most of their time
-# waiting on their own processes (the book's kernels and Sphinx, the app's kernel and the browser).
-JOBS ?= $(shell echo $$(( $$(nproc) + 1 )))
+# the other tests (a file at a time where they share a fixture) are shared out as workers come free, the
+# groups first (tests/conftest.py). One worker a core, not more: the app's page loses widget models
+# ("widget model not found") when its kernel and browser are starved, and a third worker starves them.
+JOBS ?= $(shell nproc)
 PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs
 	$(PYTEST)
