@@ -46,11 +46,11 @@ pdf-student: book-student chromium
 	$(PY) scripts/book_pdf.py book/_build/student/_build/html book/_build/raildyn-student.pdf
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
-# On every core (JOBS=0: in pytest's own process): the book's group and the app's each hold one worker,
-# the other tests (a file at a time where they share a fixture) are shared out as workers come free, the
-# groups first (tests/conftest.py). One worker a core, not more: the app's page loses widget models
-# ("widget model not found") when its kernel and browser are starved, and a third worker starves them.
-JOBS ?= $(shell nproc)
+# JOBS=N runs on N pytest-xdist workers: the book's group and the app's each hold one worker, the other
+# tests (a file at a time where they share a fixture) are shared out as workers come free (tests/conftest.py).
+# The default is pytest's own process: on a 2-core machine the app's page, run beside the book's build,
+# lost widget models ("widget model not found") or never drew in two fresh-clone runs of three.
+JOBS ?= 0
 PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs
 	$(PYTEST)
