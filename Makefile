@@ -83,8 +83,10 @@ lab: $(STAMP)
 # host); Voilà finds it on JUPYTER_PATH. tests/test_browser.py serves the app with these settings.
 # A closed tab leaves its kernel running (the page's shutdown request is refused, voila#1458), so
 # kernels no page has been connected to for ten minutes are shut down; an open page's never are.
+# The list of notebooks is the server's own HTML page (--classic-tree): Voilà's default list is a
+# JupyterLab application that sometimes drew nothing within 30 s in the tests, and needs twice the time.
 APP_TEMPLATES := app
-APP_OPTIONS := --template=raildyn --no-browser --Voila.ip=127.0.0.1 \
+APP_OPTIONS := --template=raildyn --classic-tree --no-browser --Voila.ip=127.0.0.1 \
   --MappingKernelManager.cull_idle_timeout=600 --MappingKernelManager.cull_interval=60
 app: $(STAMP)
 	JUPYTER_PATH=$(CURDIR)/$(APP_TEMPLATES)$${JUPYTER_PATH:+:$$JUPYTER_PATH} $(VENV)/bin/voila notebooks $(APP_OPTIONS) --port=8866

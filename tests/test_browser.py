@@ -281,16 +281,20 @@ def test_a_click_on_a_citation_or_an_equation_leaves_the_widgets_alive(browser, 
 
 
 def test_the_app_lists_every_notebook_from_this_machine(browser, voila_app):
-    # The first page `make app` shows. Its console errors are not checked: Voilà's list page starts the
-    # widget manager with no kernel behind it and logs that (and a 404 for a kernel list it asks of a
-    # server that keeps none); the page itself works.
+    # The first page `make app` shows: the server's list, each name a link to its notebook's page.
     page = browser.new_page(viewport={"width": 1300, "height": 900})
     log = PageLog(page)
     page.goto(voila_app, timeout=60_000)
     page.wait_for_load_state("networkidle", timeout=60_000)
     for notebook in NOTEBOOKS:
-        page.get_by_text(notebook.name, exact=True).wait_for(timeout=30_000)
+        name = page.get_by_text(notebook.name, exact=True)
+        name.wait_for(timeout=30_000)
+        link = name.evaluate("e => e.closest('a') && e.closest('a').getAttribute('href')")
+        assert link and link.split("?")[0].endswith(f"voila/render/{notebook.name}"), (
+            f"{notebook.name} links to {link!r}, not to its page"
+        )
     page.close()
+    assert not log.errors, f"the list of notebooks: console errors {log.errors}"
     assert not log.off_machine(), f"the list of notebooks: requests off this machine {log.off_machine()}"
 
 
