@@ -86,9 +86,10 @@ class PageLog:
 
     def __init__(self, page):
         self.errors: list[str] = []
+        self.messages: list[str] = []  # every console message but the errors, for a failure's report
         self.hosts: set[str] = set()
         self.urls: list[str] = []
-        page.on("console", lambda m: self.errors.append(m.text) if m.type == "error" else None)
+        page.on("console", lambda m: (self.errors if m.type == "error" else self.messages).append(m.text))
         page.on("pageerror", lambda e: self.errors.append(str(e)))
         page.on("request", self._request)
         page.on("websocket", lambda socket: self.urls.append(socket.url))
@@ -152,10 +153,17 @@ def voila_app(tmp_path_factory):
                 proc.wait(timeout=15)
 
 
-def open_notebook(page, base: str, notebook: Path) -> None:
-    """Open a notebook in the app and wait until its widgets are drawn and the page is quiet."""
+def open_notebook(page, base: str, notebook: Path, log: PageLog) -> None:
+    """Open a notebook in the app and wait until its widgets are drawn and the page is quiet; if they
+    are not drawn, fail with what the page logged."""
     page.goto(f"{base}voila/render/{notebook.name}", timeout=120_000)
-    page.wait_for_selector(".raildyn-widget .widget-image", timeout=120_000)
+    try:
+        page.wait_for_selector(".raildyn-widget .widget-image", timeout=120_000)
+    except Exception as error:
+        raise AssertionError(
+            f"{notebook.name}: no widget drew in the app ({type(error).__name__}); the page logged"
+            f" {log.errors or 'no error'}; messages {log.messages[-12:]}"
+        ) from None
     page.wait_for_load_state("networkidle", timeout=60_000)
 
 
@@ -209,7 +217,7 @@ def wait_changed(image, before: str, what: str, timeout: float = 60.0) -> str:
 def test_every_control_changes_its_figure_under_voila(browser, voila_app, notebook):
     page = browser.new_page(viewport={"width": 1300, "height": 900})
     log = PageLog(page)
-    open_notebook(page, voila_app, notebook)
+    open_notebook(page, voila_app, notebook, log)
     widgets = page.locator(".raildyn-widget")
     assert widgets.count() >= 1
     moved = 0
@@ -260,7 +268,7 @@ def test_a_click_on_a_citation_or_an_equation_leaves_the_widgets_alive(browser, 
     notebook = NOTEBOOKS[0]
     page = browser.new_page(viewport={"width": 1300, "height": 900})
     log = PageLog(page)
-    open_notebook(page, voila_app, notebook)
+    open_notebook(page, voila_app, notebook, log)
     address = page.url
     for scheme in ("cite", "eq"):
         texts = link_texts(notebook, scheme)
