@@ -11,6 +11,7 @@ import os  # noqa: E402
 import subprocess  # noqa: E402
 import sys  # noqa: E402
 import tempfile  # noqa: E402
+from dataclasses import dataclass  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import matplotlib.pyplot as plt  # noqa: E402
@@ -42,29 +43,52 @@ warnings.filterwarnings("ignore", category=PendingDeprecationWarning, module="ip
 """
 
 
-@pytest.fixture(scope="session")
-def built_book(tmp_path_factory):
-    """Build the book once per session into book/_build, as ``make book`` does, warnings reported,
-    every notebook executed in a strict kernel (``STRICT``).
+# -- the session's background jobs ---------------------------------------------------------------------
+# Four jobs of minutes run in processes of their own while the tests go on: the book's build (started
+# once the checks its validation page lists have run); from the built book, its printing (`make pdf`) and
+# its student edition (`make book-student`); and an environment built from the Binder configuration
+# alone. The tests that read a job's result wait for it.
 
-    Returns the finished process and the folder of the HTML pages.
-    """
-    jb = Path(sys.executable).parent / "jupyter-book"
-    cmd = [
-        str(jb),
-        "build",
-        ".",
-        "--config",
-        "book/_config.yml",
-        "--toc",
-        "book/_toc.yml",
-        "--path-output",
-        "book",
-        "--all",
-        "-W",
-        "-n",
-        "--keep-going",
-    ]
+
+@dataclass
+class _Job:
+    proc: subprocess.Popen
+    work: Path  # the job's folder; what it printed is in work/log.txt
+
+    def result(self, timeout: float = 1800) -> subprocess.CompletedProcess:
+        """Wait for the job; its outcome, with everything it printed (both streams) as ``stdout``."""
+        try:
+            self.proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            self.proc.wait()
+        text = (self.work / "log.txt").read_text(errors="replace")
+        return subprocess.CompletedProcess(self.proc.args, self.proc.returncode, text, "")
+
+
+_JOBS: dict[str, _Job] = {}
+
+
+def _start(name: str, args: list[str], work: Path, **popen) -> None:
+    work.mkdir(parents=True, exist_ok=True)
+    with (work / "log.txt").open("w") as log:
+        _JOBS[name] = _Job(subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT, **popen), work)
+
+
+BOOK_BUILD = [
+    str(Path(sys.executable).parent / "jupyter-book"),
+    *("build", ".", "--config", "book/_config.yml", "--toc", "book/_toc.yml", "--path-output", "book"),
+    *("--all", "-W", "-n", "--keep-going"),
+]
+
+
+@pytest.fixture(scope="session")
+def book_started(tmp_path_factory):
+    """Start building the book into book/_build, as ``make book`` does, with warnings reported and every
+    notebook executed in a strict kernel (``STRICT``). Every test after the validation page's checks asks
+    for this (``pytest_collection_modifyitems``), so that the build runs beside them."""
+    if "book" in _JOBS:
+        return
     write_references()  # the validation page reads the checks recorded so far in this session
     # As `make book`: no progress bars, which a page without a kernel would show frozen at 0 %.
     ipython = tmp_path_factory.mktemp("ipython")
@@ -74,35 +98,96 @@ def built_book(tmp_path_factory):
     env = {**os.environ, "RAILDYN_PROGRESS": "0", "IPYTHONDIR": str(ipython)}
     # Every notebook runs here, strict: the execution cache `make book` keeps starts empty, and what this
     # build ran is stamped as run on raildyn as it is now, so that a `make book` after the tests reuses it.
-    build = ROOT / "book" / "_build"
-    book_cache.empty(build)
-    proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900, env=env)
-    if proc.returncode == 0:
-        book_cache.stamp(build)
-    html = build / "html"
-    if proc.returncode == 0 and Path("/usr/bin/chromium").exists():
-        # `make pdf`'s printing (a minute or two of chromium) starts now, in the background, so that it
-        # overlaps the other tests of the built book; tests/test_pdf.py waits for it (``printed_book``).
-        out = tmp_path_factory.mktemp("pdf") / "raildyn.pdf"
-        log = (out.parent / "log.txt").open("w")
-        script = ROOT / "scripts" / "book_pdf.py"
-        _PDF.update(out=out, log=log, proc=subprocess.Popen(
-            [sys.executable, str(script), str(html), str(out)], stdout=log, stderr=subprocess.STDOUT
-        ))  # fmt: skip
-    return proc, html
+    book_cache.empty(ROOT / "book" / "_build")
+    _start("book", BOOK_BUILD, tmp_path_factory.mktemp("build"), cwd=ROOT, env=env)
 
 
-_PDF: dict = {}
+def _after_the_build() -> None:
+    """Once the book is built: stamp its execution cache and start the jobs that follow it (once)."""
+    global _FOLLOWED
+    build = _JOBS.get("book")
+    if _FOLLOWED or build is None or build.proc.poll() is None:
+        return
+    _FOLLOWED = True
+    html = ROOT / "book" / "_build" / "html"
+    scripts = ROOT / "scripts"
+
+    def folder(name: str) -> Path:  # beside the build's, in the session's temporary folder
+        return Path(tempfile.mkdtemp(prefix=f"{name}-", dir=build.work.parent))
+
+    if build.proc.returncode == 0:
+        book_cache.stamp(ROOT / "book" / "_build")
+        if Path("/usr/bin/chromium").exists():
+            pdf = folder("pdf")
+            _start(
+                "pdf",
+                [sys.executable, str(scripts / "book_pdf.py"), str(html), str(pdf / "raildyn.pdf")],
+                pdf,
+            )
+        student = folder("student")
+        _start("student", [sys.executable, str(scripts / "student_edition.py"), str(ROOT / "book" / "_build"),
+                           str(student), "-W", "-n", "--keep-going"], student)  # fmt: skip
+    if _BINDER_WANTED:
+        _start_binder(folder("binder"))
+
+
+def _start_binder(work: Path) -> None:
+    if "binder" not in _JOBS:
+        _start("binder", [sys.executable, str(Path(__file__).with_name("binder_env.py")), str(work)], work)
+
+
+_FOLLOWED = False  # whether the jobs that follow the build have been started
+_BINDER_WANTED = False  # whether this session runs a test of the Binder environment
+
+
+@pytest.fixture(scope="session")
+def built_book(book_started):
+    """The book, built: (the build's outcome, the folder of its HTML pages)."""
+    proc = _JOBS["book"].result(timeout=900)
+    _after_the_build()
+    return proc, ROOT / "book" / "_build" / "html"
+
+
+def _assert_built(built_book) -> None:
+    proc, _ = built_book
+    assert proc.returncode == 0, f"the book's build failed: {proc.stdout[-4000:]}"
 
 
 @pytest.fixture(scope="session")
 def printed_book(built_book):
-    """The book printed by ``scripts/book_pdf.py`` in the background: (finished process, its log, the PDF)."""
-    if not _PDF:
-        pytest.skip("the book was not printed (its build failed, or chromium is missing)")
-    _PDF["proc"].wait(timeout=1800)
-    _PDF["log"].close()
-    return _PDF["proc"], (_PDF["out"].parent / "log.txt").read_text(), _PDF["out"]
+    """The book printed by ``scripts/book_pdf.py`` in the background: (its outcome, its log, the PDF)."""
+    _assert_built(built_book)
+    if "pdf" not in _JOBS:
+        pytest.skip("chromium is not installed: the book was not printed")
+    job = _JOBS["pdf"]
+    proc = job.result()
+    return proc, proc.stdout, job.work / "raildyn.pdf"
+
+
+@pytest.fixture(scope="session")
+def student_book(built_book):
+    """The student edition, built as ``make book-student`` builds it from the notebooks the book executed:
+    (its outcome, the folder of its HTML pages)."""
+    _assert_built(built_book)
+    job = _JOBS["student"]
+    return job.result(timeout=900), job.work / "_build" / "html"
+
+
+@pytest.fixture(scope="session")
+def binder_run(tmp_path_factory):
+    """The environment built from the Binder configuration alone (tests/binder_env.py), waited for:
+    (its outcome, what it printed, its folder). In a session that builds the book it was started, in the
+    background, with the jobs that follow the build."""
+    _start_binder(tmp_path_factory.mktemp("binder"))
+    job = _JOBS["binder"]
+    proc = job.result()
+    return proc, proc.stdout, job.work
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_runtest_setup(item):
+    # Each test's start looks in on the book's build, so that the jobs that follow it start soon after it.
+    _after_the_build()
 
 
 # -- the validation page's record ------------------------------------------------------------------------
@@ -150,46 +235,18 @@ def write_references() -> None:
     REFERENCES.write_text(json.dumps({**kept, **_RECORDED}, indent=1, sort_keys=True))
 
 
-_BINDER: dict = {}
-
-
-@pytest.fixture(scope="session")
-def background_jobs(request):
-    """Start the session's long background job, the Binder environment (minutes of installing), if its
-    test is to run. Every test of the book's group asks for it, so the job starts with the first of them,
-    on the one process that runs that group (``pytest -n``: one worker; alone: the session)."""
-    wanted = any("binder_run" in getattr(item, "fixturenames", ()) for item in request.session.items)
-    if wanted and not _BINDER:
-        work = Path(tempfile.mkdtemp(prefix="raildyn-binder-"))
-        log = (work / "log.txt").open("w")
-        script = Path(__file__).with_name("binder_env.py")
-        _BINDER.update(work=work, log=log, proc=subprocess.Popen(
-            [sys.executable, str(script), str(work)], stdout=log, stderr=subprocess.STDOUT
-        ))  # fmt: skip
-
-
-@pytest.fixture(scope="session")
-def binder_run(background_jobs):
-    """The background Binder run, waited for: (finished process, what it printed, its folder)."""
-    if not _BINDER:
-        pytest.skip("the Binder environment was not started (its test was not collected)")
-    _BINDER["proc"].wait(timeout=1800)
-    _BINDER["log"].close()
-    return _BINDER["proc"], (_BINDER["work"] / "log.txt").read_text(), _BINDER["work"]
-
-
 # Under `pytest -n`, the file in which the workers write each test's group for the controller's scheduler.
 GROUPS = "RAILDYN_TEST_GROUPS"
 
 
 def _book_rank(item) -> int | None:
     """Where a test of the book's group runs within it: the checks its validation page lists (0), the
-    book (1), the Binder environment (2, built in the background meanwhile), the printed book last (3,
-    printed meanwhile); None for a test outside the group."""
+    built book (1), the student edition and the Binder environment (2), the printed book (3), the last
+    three made in the background meanwhile; None for a test outside the group."""
     names = getattr(item, "fixturenames", ())
     if "printed_book" in names:
         return 3
-    if "binder_run" in names:
+    if "binder_run" in names or "student_book" in names:
         return 2
     if "built_book" in names:
         return 1
@@ -209,22 +266,39 @@ def _group(item) -> str:
     return item.nodeid.split("::")[0] if shared else item.nodeid
 
 
-def pytest_collection_modifyitems(config, items):
-    """Mark the reference checks (``pytest -m reference`` runs them alone) and order the long groups.
+def pytest_itemcollected(item):
+    # before `-m` selects: `pytest -m reference` runs the reference checks alone
+    if "reference" in getattr(item, "fixturenames", ()):
+        item.add_marker(pytest.mark.reference)
 
-    Two groups hold a process for minutes: the book's (its checks, the build, the tests that read it) and
-    the lecture-room app's. They go first, so that under ``pytest -n`` they start at once, each on one
-    worker, while the other workers share the rest as they come free (``pytest_xdist_make_scheduler``).
-    Within the book's group the order is ``_book_rank``'s.
+
+@pytest.hookimpl(trylast=True)  # after `-m` and `-k` have deselected: only the tests that will run
+def pytest_collection_modifyitems(config, items):
+    """Order the tests.
+
+    Two groups hold a process for minutes: the book's (its checks, then the tests that read the built
+    book, in ``_book_rank``'s order) and the lecture-room app's. Under ``pytest -n`` they go first, so
+    that they start at once, each on one worker, while the other workers share the rest as they come free
+    (``pytest_xdist_make_scheduler``). In one process the book's checks go first, then every other test
+    asks for the book's build to start, and the tests that read the book go last, so that the build and
+    the jobs that follow it run beside the app's tests and the rest.
     """
-    for item in items:
-        names = getattr(item, "fixturenames", ())
-        if "reference" in names:
-            item.add_marker(pytest.mark.reference)
-        if _book_rank(item) is not None and "background_jobs" not in names:
-            item.fixturenames.append("background_jobs")
-    # stable: within each group the tests keep the order they were collected in
-    items.sort(key=lambda item: (0, _book_rank(item)) if _book_rank(item) is not None else
+    global _BINDER_WANTED
+    _BINDER_WANTED = any("binder_run" in getattr(item, "fixturenames", ()) for item in items)
+    one_process = not getattr(config.option, "numprocesses", None) and not os.environ.get(
+        "PYTEST_XDIST_WORKER"
+    )
+    book = lambda item: _book_rank(item) is not None  # noqa: E731
+    if one_process:
+        if any((_book_rank(item) or 0) > 0 for item in items):
+            for item in items:
+                if _book_rank(item) != 0:
+                    item.fixturenames.append("book_started")
+        # stable: within each group the tests keep the order they were collected in
+        items.sort(key=lambda item: (0, 0) if _book_rank(item) == 0 else (2, _book_rank(item)) if book(item)
+                   else (1, 0 if _group(item) == "app" else 1))  # fmt: skip
+        return
+    items.sort(key=lambda item: (0, _book_rank(item)) if book(item) else
                (1 if _group(item) == "app" else 2, 0))  # fmt: skip
     if os.environ.get(GROUPS) and os.environ.get("PYTEST_XDIST_WORKER"):
         # a worker of `pytest -n` tells the controller each test's group (every worker, the same map)
@@ -259,6 +333,6 @@ def pytest_xdist_make_scheduler(config, log):
 
 def pytest_sessionfinish(session, exitstatus):
     write_references()
-    for job in (_BINDER, _PDF):  # a session stopped early leaves nothing running behind
-        if job and job["proc"].poll() is None:
-            job["proc"].kill()
+    for job in _JOBS.values():  # a session stopped early leaves nothing running behind
+        if job.proc.poll() is None:
+            job.proc.kill()

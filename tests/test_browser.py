@@ -41,7 +41,6 @@ FLAGS = [
     "--no-first-run",
     "--disable-quic",
 ]
-SCREENSHOTS = ROOT / "book" / "_build" / "screenshots"
 
 pytestmark = [
     pytest.mark.slow,
@@ -328,63 +327,79 @@ def book_server(built_book):
     server.server_close()
 
 
-def book_pages():
-    return [
-        "index.html",
-        "book/intro.html",
-        "book/api.html",
-        "book/bibliography.html",
-        "book/validation.html",
-    ] + [f"notebooks/{p.stem}.html" for p in NOTEBOOKS]
+@pytest.fixture(scope="module")
+def chapter_pages(browser, book_server):
+    """Each chapter's page of the built book, loaded once (a few seconds: its figures' frames are inline)
+    and kept open for every test that reads it: ``chapter_pages(notebook)`` → (page, its log)."""
+    base, _ = book_server
+    opened: dict[str, tuple] = {}
+
+    def page_of(notebook: Path) -> tuple:
+        if notebook.stem not in opened:
+            page = browser.new_page(viewport={"width": 1280, "height": 1000})
+            log = PageLog(page)
+            page.goto(f"{base}notebooks/{notebook.stem}.html", timeout=60_000, wait_until="load")
+            page.wait_for_load_state("networkidle", timeout=60_000)
+            opened[notebook.stem] = page, log
+        return opened[notebook.stem]
+
+    yield page_of
+    for page, _ in opened.values():
+        page.close()
 
 
-@pytest.mark.parametrize("page_path", book_pages())
-def test_book_page_reads_offline(browser, book_server, page_path):
-    base, html = book_server
-    page = browser.new_page(viewport={"width": 1280, "height": 1000})
-    log = PageLog(page)
-    page.goto(base + page_path, timeout=60_000, wait_until="load")
-    page.wait_for_load_state("networkidle", timeout=60_000)
+def reads_offline(page, log: PageLog, name: str) -> None:
+    """The page's mathematics is typeset, its images are loaded, and it logged no error and asked nothing
+    of another host."""
     has_math = page.evaluate("() => document.body.innerHTML.includes('class=\"math')")
     if has_math:
         # a visible one: a heading's mathematics also stands in the page's table of contents, which a
         # narrow window hides
         page.wait_for_selector("mjx-container >> visible=true", timeout=30_000)
     text = page.inner_text("main") if page.locator("main").count() else page.inner_text("body")
-    assert "$$" not in text, f"{page_path}: raw $$ left, MathJax did not typeset"
+    assert "$$" not in text, f"{name}: raw $$ left, MathJax did not typeset"
     broken = page.evaluate(
         "() => Array.from(document.images).filter(i => !(i.complete && i.naturalWidth > 0))"
         ".map(i => i.src.slice(0, 80))"
     )
-    assert not broken, f"{page_path}: images not loaded {broken}"
-    if page_path.startswith("notebooks/"):
-        SCREENSHOTS.mkdir(parents=True, exist_ok=True)
-        page.screenshot(path=str(SCREENSHOTS / f"{Path(page_path).stem}.png"), full_page=True)
-    page.close()
-    assert not log.errors, f"{page_path}: console errors {log.errors}"
-    assert log.hosts <= {"127.0.0.1"}, (
-        f"{page_path}: requests left the machine for {log.hosts - {'127.0.0.1'}}"
-    )
-    assert not log.off_machine(), f"{page_path}: requests off this machine {log.off_machine()}"
+    assert not broken, f"{name}: images not loaded {broken}"
+    assert not log.errors, f"{name}: console errors {log.errors}"
+    assert log.hosts <= {"127.0.0.1"}, f"{name}: requests left the machine for {log.hosts - {'127.0.0.1'}}"
+    assert not log.off_machine(), f"{name}: requests off this machine {log.off_machine()}"
 
 
-@contextlib.contextmanager
-def chapter_page(browser, book_server, notebook: Path):
-    """A chapter's page of the built book in a new tab; on leaving, no console error and no request off
-    this machine."""
+@pytest.mark.parametrize(
+    "page_path",
+    ["index.html", "book/intro.html", "book/api.html", "book/bibliography.html", "book/validation.html"],
+)
+def test_book_page_reads_offline(browser, book_server, page_path):
     base, _ = book_server
     page = browser.new_page(viewport={"width": 1280, "height": 1000})
     log = PageLog(page)
-    page.goto(f"{base}notebooks/{notebook.stem}.html", timeout=60_000)
-    yield page
+    page.goto(base + page_path, timeout=60_000, wait_until="load")
+    page.wait_for_load_state("networkidle", timeout=60_000)
+    reads_offline(page, log, page_path)
     page.close()
+
+
+@pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
+def test_chapter_page_reads_offline(chapter_pages, notebook):
+    page, log = chapter_pages(notebook)
+    reads_offline(page, log, f"{notebook.stem}.html")
+
+
+@contextlib.contextmanager
+def chapter_page(chapter_pages, notebook: Path):
+    """A chapter's page of the built book; on leaving, no console error and no request off this machine."""
+    page, log = chapter_pages(notebook)
+    yield page
     assert not log.errors, f"{notebook.name}: console errors {log.errors}"
     assert not log.off_machine(), f"{notebook.name}: requests off this machine {log.off_machine()}"
 
 
 @pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
-def test_static_sliders_swap_frames_without_a_kernel(browser, book_server, notebook):
-    with chapter_page(browser, book_server, notebook) as page:
+def test_static_sliders_swap_frames_without_a_kernel(chapter_pages, notebook):
+    with chapter_page(chapter_pages, notebook) as page:
         _swap_every_frame(page)
 
 
@@ -407,10 +422,10 @@ def _swap_every_frame(page) -> None:
 
 
 @pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
-def test_self_checks_answer_in_the_static_book(browser, book_server, notebook):
+def test_self_checks_answer_in_the_static_book(chapter_pages, notebook):
     # Each question that checks itself answers in the page's JavaScript, with no kernel: a right number
     # or choice is told so, and a wrong number meets the same slip that raildyn.course.check names.
-    with chapter_page(browser, book_server, notebook) as page:
+    with chapter_page(chapter_pages, notebook) as page:
         boxes = page.locator(".raildyn-selfcheck")
         assert boxes.count() >= 2, f"{notebook.name}: {boxes.count()} self-checks"
         for k in range(boxes.count()):
@@ -438,6 +453,44 @@ def _answer(box, name: str) -> None:
         assert told.startswith("✓" if python.correct else "✗"), (name, a, told, python)
         if not python.correct and not python.reason.startswith("off by"):
             assert python.reason in told, (name, a, told, python.reason)
+
+
+@pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
+def test_answers_wrap_in_a_1280_pixel_window(chapter_pages, notebook):
+    # Opened, an answer wraps its long lines instead of scrolling sideways (comments run to 110
+    # characters). It runs after the other tests of the shared page, since it opens every answer.
+    with chapter_page(chapter_pages, notebook) as page:
+        wide = page.evaluate(
+            """() => { document.querySelectorAll('details.hide').forEach(d => d.open = true);
+            return Array.from(document.querySelectorAll('.cell.tag_hide-cell pre'))
+                .filter(p => p.scrollWidth > p.clientWidth + 1).map(p => p.textContent.slice(0, 60));
+            }"""
+        )
+        assert not wide, f"{notebook.stem}: answers that scroll sideways: {wide[:3]}"
+
+
+def test_notation_and_validation_pages_fit_a_1280_pixel_window(browser, book_server):
+    # The notation tables fit their column, and no number of the validation page is split across lines.
+    base, _ = book_server
+    page = browser.new_page(viewport={"width": 1280, "height": 900})
+    log = PageLog(page)
+    page.goto(f"{base}book/notation.html", timeout=60_000)
+    page.wait_for_function("() => document.querySelectorAll('mjx-container').length > 100", timeout=60_000)
+    over = page.evaluate(
+        """() => Array.from(document.querySelectorAll('table'))
+            .map(t => t.scrollWidth - t.parentElement.clientWidth).filter(d => d > 1)"""
+    )
+    assert not over, f"notation tables wider than their column by {over} px"
+    page.goto(f"{base}book/validation.html", timeout=60_000)
+    page.wait_for_load_state("networkidle", timeout=60_000)
+    split = page.evaluate(
+        """() => Array.from(document.querySelectorAll('.raildyn-number'))
+            .filter(e => e.getClientRects().length > 1).map(e => e.textContent)"""
+    )
+    assert not split, f"numbers split across lines: {split[:5]}"
+    page.close()
+    assert not log.errors, f"notation and validation pages: console errors {log.errors}"
+    assert not log.off_machine(), f"notation and validation pages: requests off {log.off_machine()}"
 
 
 def test_page_weight_per_chapter(book_server):

@@ -253,20 +253,6 @@ def test_each_chapter_asks_questions_that_check_themselves_in_the_page(path):
 # --------------------------------------------------------------------------- the student edition
 
 
-@pytest.fixture(scope="module")
-def student_book(built_book, tmp_path_factory):
-    """The student edition, built as `make book-student` builds it, from the notebooks the book executed."""
-    import subprocess
-    import sys
-
-    proc, _ = built_book
-    assert proc.returncode == 0, (proc.stdout + proc.stderr)[-4000:]
-    out = tmp_path_factory.mktemp("student")
-    script = ROOT / "scripts" / "student_edition.py"
-    cmd = [sys.executable, str(script), str(ROOT / "book" / "_build"), str(out), "-W", "-n", "--keep-going"]
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=900), out / "_build" / "html"
-
-
 def _answer_sentences(source: str) -> list[str]:
     """The comment lines of an answer long enough to be its own words (six words or more)."""
     lines = (line.strip().lstrip("#").strip() for line in source.splitlines() if line.strip().startswith("#"))

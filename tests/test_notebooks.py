@@ -35,7 +35,9 @@ def test_notebook_runs_clean(path, built_book):
     # second time.
     proc, _ = built_book
     executed = ROOT / "book" / "_build" / "jupyter_execute" / "notebooks" / path.name
-    assert executed.exists(), f"{path.name} was not executed by the book build:\n{proc.stderr[-3000:]}"
+    assert executed.exists(), (
+        f"{path.name} was not executed by the book build:\n{(proc.stdout + proc.stderr)[-3000:]}"
+    )
     nb = nbformat.read(executed, as_version=4)
     source = nbformat.read(path, as_version=4)
     code = [c for c in nb.cells if c.cell_type == "code"]
