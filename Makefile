@@ -48,8 +48,10 @@ pdf-student: book-student chromium
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
 # JOBS=N runs on N pytest-xdist workers: the book's group and the app's each hold one worker, the other
 # tests (a file at a time where they share a fixture) are shared out as workers come free (tests/conftest.py).
-# The default is pytest's own process: on a 2-core machine the app's page, run beside the book's build,
-# lost widget models ("widget model not found") or never drew in two fresh-clone runs of three.
+# The default is pytest's own process. The book's build, its printing, its student edition and a Binder
+# environment run in processes of their own beside the tests (tests/conftest.py); the app's tests run
+# first, on a quiet machine: under load Voilà's widget manager, which waits 4 s for the kernel's widget
+# states, drew no widget ("widget model not found") in fresh-clone runs.
 JOBS ?= 0
 PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs

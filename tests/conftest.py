@@ -279,9 +279,9 @@ def pytest_collection_modifyitems(config, items):
     Two groups hold a process for minutes: the book's (its checks, then the tests that read the built
     book, in ``_book_rank``'s order) and the lecture-room app's. Under ``pytest -n`` they go first, so
     that they start at once, each on one worker, while the other workers share the rest as they come free
-    (``pytest_xdist_make_scheduler``). In one process the book's checks go first, then every other test
-    asks for the book's build to start, and the tests that read the book go last, so that the build and
-    the jobs that follow it run beside the app's tests and the rest.
+    (``pytest_xdist_make_scheduler``). In one process the book's checks go first, then the app's tests,
+    then every other test, each asking for the book's build to start, and the tests that read the book
+    go last, so that the build and the jobs that follow it run beside the rest.
     """
     global _BINDER_WANTED
     _BINDER_WANTED = any("binder_run" in getattr(item, "fixturenames", ()) for item in items)
@@ -290,13 +290,16 @@ def pytest_collection_modifyitems(config, items):
     )
     book = lambda item: _book_rank(item) is not None  # noqa: E731
     if one_process:
+        # The app's pages load their widgets from the kernel within a few seconds or not at all (Voilà's
+        # widget manager gives up after 4 s): they run on a quiet machine, before the build starts.
         if any((_book_rank(item) or 0) > 0 for item in items):
             for item in items:  # (the doctests of raildyn/ see no fixture of this file)
-                if _book_rank(item) != 0 and Path(item.path).is_relative_to(ROOT / "tests"):
+                quiet = _book_rank(item) == 0 or _group(item) == "app"
+                if not quiet and Path(item.path).is_relative_to(ROOT / "tests"):
                     item.fixturenames.append("book_started")
         # stable: within each group the tests keep the order they were collected in
-        items.sort(key=lambda item: (0, 0) if _book_rank(item) == 0 else (2, _book_rank(item)) if book(item)
-                   else (1, 0 if _group(item) == "app" else 1))  # fmt: skip
+        items.sort(key=lambda item: (0, 0) if _book_rank(item) == 0 else (3, _book_rank(item)) if book(item)
+                   else (1 if _group(item) == "app" else 2, 0))  # fmt: skip
         return
     items.sort(key=lambda item: (0, _book_rank(item)) if book(item) else
                (1 if _group(item) == "app" else 2, 0))  # fmt: skip
