@@ -50,8 +50,7 @@ pdf-student: book-student chromium
 # tests (a file at a time where they share a fixture) are shared out as workers come free (tests/conftest.py).
 # The default is pytest's own process. The book's build, its printing, its student edition and a Binder
 # environment run in processes of their own beside the tests (tests/conftest.py); the app's tests run
-# first, on a quiet machine: under load Voilà's widget manager, which waits 4 s for the kernel's widget
-# states, drew no widget ("widget model not found") in fresh-clone runs.
+# first, on a quiet machine, since Voilà's widget manager gives up on the kernel's widget states after 4 s.
 JOBS ?= 0
 PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs

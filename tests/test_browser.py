@@ -152,6 +152,25 @@ def voila_app(tmp_path_factory):
                 proc.wait(timeout=15)
 
 
+def test_the_apps_widget_manager_is_the_one_voila_was_built_with():
+    # Voilà 0.5 carries its own copy of the widget manager, built against its own JupyterLab. An installed
+    # jupyterlab_widgets whose manager is newer replaces that copy in the app's pages (the page loads the
+    # newest version of a shared module), and there some widgets drew as "model not found" in one page
+    # load of four or five (requirements.txt pins the pair).
+    from packaging.version import Version
+
+    share = Path(sys.prefix) / "share" / "jupyter"
+    licences = (
+        share / "voila/labextensions/@voila-dashboards/widgets-manager8/static/third-party-licenses.json"
+    )
+    name = "@jupyter-widgets/jupyterlab-manager"
+    voilas = next(p["versionInfo"] for p in json.loads(licences.read_text())["packages"] if p["name"] == name)
+    installed = json.loads((share / "labextensions" / name / "package.json").read_text())["version"]
+    assert Version(installed) <= Version(voilas), (
+        f"jupyterlab_widgets installs {name} {installed}, newer than Voilà's own {voilas}"
+    )
+
+
 def open_notebook(page, base: str, notebook: Path, log: PageLog) -> None:
     """Open a notebook in the app and wait until its widgets are drawn and the page is quiet; if they
     are not drawn, fail with what the page logged."""
