@@ -57,12 +57,14 @@ class _Job:
 
     def result(self, timeout: float = 1800) -> subprocess.CompletedProcess:
         """Wait for the job; its outcome, with everything it printed (both streams) as ``stdout``."""
+        late = ""
         try:
             self.proc.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
             self.proc.kill()
             self.proc.wait()
-        text = (self.work / "log.txt").read_text(errors="replace")
+            late = f"\n(stopped: still running after {timeout:.0f} s)"
+        text = (self.work / "log.txt").read_text(errors="replace") + late
         return subprocess.CompletedProcess(self.proc.args, self.proc.returncode, text, "")
 
 
