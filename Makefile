@@ -52,9 +52,9 @@ pdf-student: book-student chromium
 # environment run in processes of their own beside the tests (tests/conftest.py); the app's tests run
 # first, on a quiet machine, since Voilà's widget manager gives up on the kernel's widget states after 4 s.
 JOBS ?= 0
-PYTEST := $(PY) -m pytest -n $(JOBS) --dist loadscope --no-loadscope-reorder
+PYTEST := $(PY) -m pytest --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs
-	$(PYTEST)
+	$(PYTEST) -n $(JOBS)
 
 # Debian's chromium for the browser tests; Playwright drives it, nothing is downloaded.
 chromium:
@@ -71,8 +71,10 @@ fe-libs:
 	fi
 
 ## test-fast: the unit and property tests only
+# No app and no book among them: one pytest-xdist worker a core (FAST_JOBS=N for another number).
+FAST_JOBS ?= $(shell nproc)
 test-fast: $(STAMP) fe-libs
-	$(PYTEST) -m "not slow"
+	$(PYTEST) -n $(FAST_JOBS) -m "not slow"
 
 ## lab: JupyterLab on the notebooks
 lab: $(STAMP)
