@@ -292,12 +292,9 @@ def pytest_collection_modifyitems(config, items):
     )
     book = lambda item: _book_rank(item) is not None  # noqa: E731
     if one_process:
-        # The app's pages load their widgets from the kernel within a few seconds or not at all (Voilà's
-        # widget manager gives up after 4 s): they run on a quiet machine, before the build starts.
         if any((_book_rank(item) or 0) > 0 for item in items):
             for item in items:  # (the doctests of raildyn/ see no fixture of this file)
-                quiet = _book_rank(item) == 0 or _group(item) == "app"
-                if not quiet and Path(item.path).is_relative_to(ROOT / "tests"):
+                if _book_rank(item) != 0 and Path(item.path).is_relative_to(ROOT / "tests"):
                     item.fixturenames.append("book_started")
         # stable: within each group the tests keep the order they were collected in
         items.sort(key=lambda item: (0, 0) if _book_rank(item) == 0 else (3, _book_rank(item)) if book(item)
