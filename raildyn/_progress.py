@@ -1,4 +1,5 @@
-"""The one progress bar of raildyn's long computations (sweeps, maps, long simulations)."""
+"""How raildyn shows itself where it runs: the one progress bar of its long computations (sweeps, maps,
+long simulations), and whether its kernel serves the lecture-room app."""
 
 from __future__ import annotations
 
@@ -17,3 +18,10 @@ def progress_bar(iterable=None, *, total=None, desc: str = ""):
 
     off = os.environ.get("RAILDYN_PROGRESS", "1") == "0"
     return tqdm(iterable, total=total, desc=desc, disable=off)
+
+
+def in_the_app() -> bool:
+    """Whether this kernel serves a page of the lecture-room app (Voilà names its kernels in
+    ``VOILA_KERNEL_ID``). The app shows live widgets and no worked answer, so what only a page without a
+    kernel or a reader of the answers would see is not worked out there."""
+    return bool(os.environ.get("VOILA_KERNEL_ID"))

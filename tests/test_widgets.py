@@ -41,6 +41,19 @@ def test_display_bundle_carries_the_kernel_free_html():
     assert 'class="raildyn-static"' in bundle["text/html"]
 
 
+def test_the_app_draws_no_kernel_free_frames(monkeypatch):
+    # The lecture-room app shows the live view only: its kernels skip the frames (seconds a page).
+    container, _ = chapter01.forced_response()
+    drawn = []
+    container.static = lambda: drawn.append(1) or "<div></div>"
+    monkeypatch.setenv("VOILA_KERNEL_ID", "k")
+    bundle = container._repr_mimebundle_()
+    assert "application/vnd.jupyter.widget-view+json" in bundle
+    assert "text/html" not in bundle and not drawn
+    monkeypatch.delenv("VOILA_KERNEL_ID")
+    assert container._repr_mimebundle_()["text/html"] == "<div></div>" and drawn == [1]
+
+
 def test_static_grid_must_name_one_or_two_controls():
     from raildyn.widgets._static import frames_html
 

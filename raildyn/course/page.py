@@ -8,11 +8,11 @@ import hashlib
 import html
 import itertools
 import json
-import os
 import sys
 from dataclasses import dataclass
 
 from raildyn import _checks
+from raildyn._progress import in_the_app
 from raildyn.course.answers import SLIPS
 
 __all__ = ["ANSWER_FOLD", "ANSWER_LINE", "SelfCheck"]
@@ -211,8 +211,8 @@ def _answer(line: str, cell: str) -> None:
 
     JupyterLab unfolds a cell's outputs whenever the cell runs, so a worked answer hidden by the
     notebook's metadata would show after "Run All"; folded in its own output it stays hidden until
-    opened. An error is shown unfolded and fails the cell. The lecture-room app (Voilà, which names
-    its kernel in ``VOILA_KERNEL_ID``) shows no answer, so there an answer is not worked out at all:
+    opened. An error is shown unfolded and fails the cell. The lecture-room app shows no answer
+    (``raildyn._progress.in_the_app``), so there an answer is not worked out at all:
     nothing of it can reach the projector, and the page is ready sooner. (No other cell uses a name an
     answer defines: tests/test_course.py holds the notebooks to that.)
     """
@@ -221,7 +221,7 @@ def _answer(line: str, cell: str) -> None:
 
     if line.strip():
         raise ValueError(f"%%answer takes no arguments, got {line.strip()!r}")
-    if os.environ.get("VOILA_KERNEL_ID"):
+    if in_the_app():
         return
     result, items, errors = _run_recorded(get_ipython(), cell)
     sys.stderr.write(errors)  # a warning stays a warning (the tests make warnings errors)

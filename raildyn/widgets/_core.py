@@ -23,6 +23,7 @@ from matplotlib.collections import PathCollection
 from matplotlib.figure import Figure
 
 from raildyn import _checks
+from raildyn._progress import in_the_app
 from raildyn.plots import STYLE
 
 # A widget's figure: at most 10 × 10 panels, at most 40 in a side and 600 dpi (a frame of at most
@@ -208,7 +209,9 @@ class LiveBox(widgets.VBox):
     In Jupyter and Voilà the widget view is shown. Pages rendered without a
     kernel (the book) pick the ``text/html`` or ``image/png`` part of the same
     display bundle: precomputed frames behind HTML range inputs when a
-    ``static`` source is set, else the current frame as a picture.
+    ``static`` source is set, else the current frame as a picture. The
+    lecture-room app never shows that part, so there the frames are not drawn
+    (a page of the app is ready seconds sooner).
     """
 
     static: Callable[[], str] | None = None
@@ -218,7 +221,7 @@ class LiveBox(widgets.VBox):
         data = super()._repr_mimebundle_(**kwargs)
         if data is None:
             return None
-        if self.static is not None:
+        if self.static is not None and not in_the_app():
             data["text/html"] = self.static()
         else:
             data["image/png"] = base64.b64encode(self.children[-1].value).decode("ascii")
