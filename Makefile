@@ -7,6 +7,10 @@ BOOK_HTML := book/_build/html
 # matplotlib's font cache inside the venv: a cache shared across checkouts on one machine can be
 # rewritten by another checkout's half-deleted venv and lose matplotlib's own fonts.
 export MPLCONFIGDIR := $(CURDIR)/.venv/matplotlib
+# Python's bytecode cache on for every process a target starts (the tests' workers, the book's kernels, the
+# app's): where the machine switches it off (PYTHONDONTWRITEBYTECODE), each process compiles raildyn anew
+# and pytest rewrites every test module's assertions anew, 4.5 s of each worker's collection.
+unexport PYTHONDONTWRITEBYTECODE
 
 .PHONY: book book-student pdf pdf-student test test-fast lab app bench figures lint clean chromium fe-libs install
 

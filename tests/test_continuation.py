@@ -76,7 +76,7 @@ def test_normal_form_cycles_fold_periods_and_multipliers_are_exact(normal_branch
     b, a = normal_branch, NORMAL.scale
     r = b.amplitudes / a
     mu = NORMAL.mu(b.speeds)
-    # Each point closes to Newton's tolerance 1e-5 on the scaled unknowns, the runs at rtol 1e-10:
+    # Each point closes to Newton's tolerance 1e-5 on the scaled unknowns, the runs at rtol 1e-9:
     # the cycle equation μ = r⁴ − r² holds to 1e-4 (in μ, about 2e-3 m/s of speed). The last point,
     # below end_amplitude, stands at the Hopf point, where the centred state (x = 0, a solution at any
     # speed) meets the branch and the speed of a cycle of r → 0 is no longer resolved: it is held below.

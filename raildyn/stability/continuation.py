@@ -183,7 +183,7 @@ def limit_cycle_branch(
     max_points: int = 100,
     tol: float = 1e-5,
     max_iter: int = 10,
-    rtol: float = 1e-10,
+    rtol: float = 1e-9,
     engine: str = "auto",
 ) -> LimitCycleBranch:
     """Follow a branch of limit cycles in speed, through its folds, by pseudo-arclength continuation.
@@ -235,7 +235,9 @@ def limit_cycle_branch(
     max_iter : int
         Newton (chord) iterations per point before the step is retried shorter, in [1, 50].
     rtol : float
-        Relative tolerance of the integrations, in [1e-13, 1).
+        Relative tolerance of the integrations, in [1e-13, 1). The default 1e-9 lies four orders below
+        Newton's ``tol``, which bounds the cycles; the car of chapter 7 gives the same fold speed to
+        1e-7 and fold amplitude to 5e-5 as at 1e-10, in two thirds of the time.
     engine : str
         ``"auto"``, ``"compiled"`` or ``"scipy"``, as for :func:`~raildyn.stability.nonlinear.simulate`.
 
