@@ -6,11 +6,14 @@ import matplotlib
 
 matplotlib.use("Agg")
 
+import contextlib  # noqa: E402
 import json  # noqa: E402
 import os  # noqa: E402
+import signal  # noqa: E402
 import subprocess  # noqa: E402
 import sys  # noqa: E402
 import tempfile  # noqa: E402
+import time  # noqa: E402
 from dataclasses import dataclass  # noqa: E402
 from pathlib import Path  # noqa: E402
 
@@ -18,8 +21,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "scripts"))
-import book_cache  # noqa: E402  (scripts/book_cache.py: the book's execution cache, kept while raildyn is unchanged)
 
 _DEFAULTS = dict(matplotlib.rcParams)
 
@@ -34,120 +35,90 @@ def _matplotlib_hygiene():
     assert not changed, f"the test changed matplotlib rcParams: {changed}"
 
 
-# Run first in every kernel the book build starts (an IPython start-up file): any warning raised by
-# raildyn, numpy or matplotlib becomes an error, so the executed notebooks that tests/test_notebooks.py
-# reads ran strict. (The one exception is ipykernel's own notice at kernel shutdown, not the notebook's.)
-STRICT = """import warnings
-warnings.simplefilter("error")
-warnings.filterwarnings("ignore", category=PendingDeprecationWarning, module="ipykernel")
-"""
-
-
 # -- the session's background jobs ---------------------------------------------------------------------
-# Four jobs of minutes run in processes of their own while the tests go on: the book's build (started
-# once the checks its validation page lists have run); from the built book, its printing (`make pdf`) and
-# its student edition (`make book-student`); and an environment built from the Binder configuration
-# alone. The tests that read a job's result wait for it.
+# Four jobs of minutes run beside the tests, in a process of their own (tests/background.py): the book's
+# build, started as soon as the checks its validation page lists have run; from the built book, its
+# printing (`make pdf`) and its student edition (`make book-student`); and an environment built from the
+# Binder configuration alone. Their folders are in one place for every process of the session
+# (``RAILDYN_TEST_JOBS``), so that a test reads a job's result in whichever process it runs.
+
+JOBS = "RAILDYN_TEST_JOBS"
+BACKGROUND = Path(__file__).with_name("background.py")
+_SESSION = {"readers": False, "references": False, "binder": False}  # what the collected tests ask for
+_DRIVERS: list[subprocess.Popen] = []  # the background processes this process started
 
 
 @dataclass
 class _Job:
-    proc: subprocess.Popen
-    work: Path  # the job's folder; what it printed is in work/log.txt
+    name: str
+
+    @property
+    def work(self) -> Path:
+        """The job's folder: what it printed is in work/log.txt, its exit status in work/rc once it ended."""
+        return Path(os.environ[JOBS]) / self.name
 
     def result(self, timeout: float = 1800) -> subprocess.CompletedProcess:
-        """Wait for the job; its outcome, with everything it printed (both streams) as ``stdout``."""
-        late = ""
+        """Wait for the job; its outcome, with everything it printed (both streams) as ``stdout``.
+
+        A job that did not run (``rc`` "skipped: why") skips the test that asked for it."""
+        rc = self.work / "rc"
+        deadline = time.monotonic() + timeout
+        while not rc.exists():
+            if time.monotonic() > deadline:
+                pytest.fail(f"the background job {self.name!r} did not end within {timeout:.0f} s")
+            base = Path(os.environ[JOBS])
+            drivers = list(base.glob("*.pid"))
+            if drivers and not any(_alive(int(p.read_text())) for p in drivers) and not rc.exists():
+                logs = "\n".join(p.read_text(errors="replace")[-2000:] for p in base.glob("*.log"))
+                pytest.fail(f"tests/background.py ended without ending the job {self.name!r}: {logs}")
+            time.sleep(0.5)
+        status = rc.read_text()
+        if status.startswith("skipped: "):
+            pytest.skip(status.removeprefix("skipped: "))
+        text = (self.work / "log.txt").read_text(errors="replace")
+        return subprocess.CompletedProcess(self.name, int(status), text, "")
+
+
+def _alive(pid: int) -> bool:
+    """Whether a process runs (a zombie, ended but not yet reaped by its parent, does not)."""
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z"
+    except FileNotFoundError:
+        return False
+
+
+def _launch(*jobs: str) -> None:
+    """Start tests/background.py on the given jobs ("book", "binder"), unless a process of this session
+    already did (the first to make the folder ``<job>.started`` starts it)."""
+    base = Path(os.environ[JOBS])
+    mine = []
+    for job in jobs:
         try:
-            self.proc.wait(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
-            self.proc.wait()
-            late = f"\n(stopped: still running after {timeout:.0f} s)"
-        text = (self.work / "log.txt").read_text(errors="replace") + late
-        return subprocess.CompletedProcess(self.proc.args, self.proc.returncode, text, "")
+            (base / f"{job}.started").mkdir()
+            mine.append(job)
+        except FileExistsError:
+            pass
+    if mine:
+        if "book" in mine:
+            write_references()  # the validation page reads the checks recorded so far in this session
+        with (base / f"{'-'.join(mine)}.log").open("w") as log:
+            proc = subprocess.Popen([sys.executable, str(BACKGROUND), str(base), *(f"--{j}" for j in mine)],
+                                    stdout=log, stderr=subprocess.STDOUT, start_new_session=True)  # fmt: skip
+        (base / f"{'-'.join(mine)}.pid").write_text(str(proc.pid))
+        _DRIVERS.append(proc)  # held until the session ends (a process dropped while it runs is a warning)
 
 
-_JOBS: dict[str, _Job] = {}
-
-
-def _start(name: str, args: list[str], work: Path, **popen) -> None:
-    work.mkdir(parents=True, exist_ok=True)
-    with (work / "log.txt").open("w") as log:
-        _JOBS[name] = _Job(subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT, **popen), work)
-
-
-BOOK_BUILD = [
-    str(Path(sys.executable).parent / "jupyter-book"),
-    *("build", ".", "--config", "book/_config.yml", "--toc", "book/_toc.yml", "--path-output", "book"),
-    *("--all", "-W", "-n", "--keep-going"),
-]
+def _launch_book() -> None:
+    _launch("book", *(["binder"] if _SESSION["binder"] else []))
 
 
 @pytest.fixture(scope="session")
-def book_started(tmp_path_factory):
-    """Start building the book into book/_build, as ``make book`` does, with warnings reported and every
-    notebook executed in a strict kernel (``STRICT``). Every test after the validation page's checks asks
-    for this (``pytest_collection_modifyitems``), so that the build runs beside them."""
-    if "book" in _JOBS:
-        return
-    write_references()  # the validation page reads the checks recorded so far in this session
-    # As `make book`: no progress bars, which a page without a kernel would show frozen at 0 %.
-    ipython = tmp_path_factory.mktemp("ipython")
-    startup = ipython / "profile_default" / "startup"
-    startup.mkdir(parents=True)
-    (startup / "00-strict.py").write_text(STRICT)
-    env = {**os.environ, "RAILDYN_PROGRESS": "0", "IPYTHONDIR": str(ipython)}
-    # Every notebook runs here, strict: the execution cache `make book` keeps starts empty, and what this
-    # build ran is stamped as run on raildyn as it is now, so that a `make book` after the tests reuses it.
-    book_cache.empty(ROOT / "book" / "_build")
-    _start("book", BOOK_BUILD, tmp_path_factory.mktemp("build"), cwd=ROOT, env=env)
-
-
-def _after_the_build() -> None:
-    """Once the book is built: stamp its execution cache and start the jobs that follow it (once)."""
-    global _FOLLOWED
-    build = _JOBS.get("book")
-    if _FOLLOWED or build is None or build.proc.poll() is None:
-        return
-    _FOLLOWED = True
-    html = ROOT / "book" / "_build" / "html"
-    scripts = ROOT / "scripts"
-
-    def folder(name: str) -> Path:  # beside the build's, in the session's temporary folder
-        return Path(tempfile.mkdtemp(prefix=f"{name}-", dir=build.work.parent))
-
-    if build.proc.returncode == 0:
-        book_cache.stamp(ROOT / "book" / "_build")
-        if Path("/usr/bin/chromium").exists():
-            pdf = folder("pdf")
-            _start(
-                "pdf",
-                [sys.executable, str(scripts / "book_pdf.py"), str(html), str(pdf / "raildyn.pdf")],
-                pdf,
-            )
-        student = folder("student")
-        _start("student", [sys.executable, str(scripts / "student_edition.py"), str(ROOT / "book" / "_build"),
-                           str(student), "-W", "-n", "--keep-going"], student)  # fmt: skip
-    if _BINDER_WANTED:
-        _start_binder(folder("binder"))
-
-
-def _start_binder(work: Path) -> None:
-    if "binder" not in _JOBS:
-        _start("binder", [sys.executable, str(Path(__file__).with_name("binder_env.py")), str(work)], work)
-
-
-_FOLLOWED = False  # whether the jobs that follow the build have been started
-_BINDER_WANTED = False  # whether this session runs a test of the Binder environment
-
-
-@pytest.fixture(scope="session")
-def built_book(book_started):
-    """The book, built: (the build's outcome, the folder of its HTML pages)."""
-    proc = _JOBS["book"].result(timeout=900)
-    _after_the_build()
-    return proc, ROOT / "book" / "_build" / "html"
+def built_book():
+    """The book, built: (the build's outcome, the folder of its HTML pages). In a session with the
+    validation page's checks, the process that ran the last of them started the build."""
+    if not _SESSION["references"]:
+        _launch_book()
+    return _Job("book").result(timeout=1200), ROOT / "book" / "_build" / "html"
 
 
 def _assert_built(built_book) -> None:
@@ -159,9 +130,7 @@ def _assert_built(built_book) -> None:
 def printed_book(built_book):
     """The book printed by ``scripts/book_pdf.py`` in the background: (its outcome, its log, the PDF)."""
     _assert_built(built_book)
-    if "pdf" not in _JOBS:
-        pytest.skip("chromium is not installed: the book was not printed")
-    job = _JOBS["pdf"]
+    job = _Job("pdf")
     proc = job.result()
     return proc, proc.stdout, job.work / "raildyn.pdf"
 
@@ -171,25 +140,26 @@ def student_book(built_book):
     """The student edition, built as ``make book-student`` builds it from the notebooks the book executed:
     (its outcome, the folder of its HTML pages)."""
     _assert_built(built_book)
-    job = _JOBS["student"]
+    job = _Job("student")
     return job.result(timeout=900), job.work / "_build" / "html"
 
 
 @pytest.fixture(scope="session")
-def binder_run(tmp_path_factory):
+def binder_run():
     """The environment built from the Binder configuration alone (tests/binder_env.py), waited for:
-    (its outcome, what it printed, its folder). In a session that builds the book it was started, in the
-    background, with the jobs that follow the build."""
-    _start_binder(tmp_path_factory.mktemp("binder"))
-    job = _JOBS["binder"]
-    proc = job.result()
+    (its outcome, what it printed, its folder). In a session that builds the book it is built after the
+    book, in the same background process."""
+    if not _SESSION["readers"]:
+        _launch("binder")
+    job = _Job("binder")
+    proc = job.result(timeout=2400)
     return proc, proc.stdout, job.work
 
 
-@pytest.hookimpl(tryfirst=True)
-def pytest_runtest_setup(item):
-    # Each test's start looks in on the book's build, so that the jobs that follow it start soon after it.
-    _after_the_build()
+def pytest_runtest_teardown(item, nextitem):
+    # The last of the validation page's checks starts the book's build (tests run in _order's order).
+    if _SESSION["readers"] and _book_rank(item) == 0 and (nextitem is None or _book_rank(nextitem) != 0):
+        _launch_book()
 
 
 # -- the validation page's record ------------------------------------------------------------------------
@@ -256,16 +226,25 @@ def _book_rank(item) -> int | None:
 
 
 def _group(item) -> str:
-    """The tests that must run in one process, in order: the book's, the lecture-room app's (one Voilà
-    server), a file's whose tests share a module-wide fixture (computed once), or else the test alone."""
-    if _book_rank(item) is not None:
-        return "book"
+    """The tests that must run in one process, in order: the validation page's checks, the tests that read
+    the built book, the lecture-room app's (one Voilà server), a file's whose tests share a module-wide
+    fixture (computed once), or else the test alone."""
+    rank = _book_rank(item)
+    if rank is not None:
+        return "references" if rank == 0 else "book"
     if "voila_app" in getattr(item, "fixturenames", ()):
         return "app"
     info = getattr(item, "_fixtureinfo", None)
     defs = info.name2fixturedefs.values() if info else ()
     shared = any(d[-1].scope in ("package", "module", "class") for d in defs)
     return item.nodeid.split("::")[0] if shared else item.nodeid
+
+
+def _order(item) -> tuple[int, int]:
+    group = _group(item)
+    if group == "book":
+        return 3, _book_rank(item)
+    return {"references": 0, "app": 1}.get(group, 2), 0
 
 
 def pytest_itemcollected(item):
@@ -276,32 +255,17 @@ def pytest_itemcollected(item):
 
 @pytest.hookimpl(trylast=True)  # after `-m` and `-k` have deselected: only the tests that will run
 def pytest_collection_modifyitems(config, items):
-    """Order the tests.
-
-    Two groups hold a process for minutes: the book's (its checks, then the tests that read the built
-    book, in ``_book_rank``'s order) and the lecture-room app's. Under ``pytest -n`` they go first, so
-    that they start at once, each on one worker, while the other workers share the rest as they come free
-    (``pytest_xdist_make_scheduler``). In one process the book's checks go first, then the app's tests,
-    then every other test, each asking for the book's build to start, and the tests that read the book
-    go last, so that the build and the jobs that follow it run beside the rest.
+    """Order the tests (``_order``): the validation page's checks, whose last one starts the book's build
+    in the background; the lecture-room app's tests; every other test; and last the tests that read the
+    book and the jobs that follow its build, in ``_book_rank``'s order. Under ``pytest -n`` each of the
+    first two groups and the last goes whole to one worker, the other tests a file or a test at a time,
+    to whichever worker comes free (``pytest_xdist_make_scheduler``).
     """
-    global _BINDER_WANTED
-    _BINDER_WANTED = any("binder_run" in getattr(item, "fixturenames", ()) for item in items)
-    one_process = not getattr(config.option, "numprocesses", None) and not os.environ.get(
-        "PYTEST_XDIST_WORKER"
-    )
-    book = lambda item: _book_rank(item) is not None  # noqa: E731
-    if one_process:
-        if any((_book_rank(item) or 0) > 0 for item in items):
-            for item in items:  # (the doctests of raildyn/ see no fixture of this file)
-                if _book_rank(item) != 0 and Path(item.path).is_relative_to(ROOT / "tests"):
-                    item.fixturenames.append("book_started")
-        # stable: within each group the tests keep the order they were collected in
-        items.sort(key=lambda item: (0, 0) if _book_rank(item) == 0 else (3, _book_rank(item)) if book(item)
-                   else (1 if _group(item) == "app" else 2, 0))  # fmt: skip
-        return
-    items.sort(key=lambda item: (0, _book_rank(item)) if book(item) else
-               (1 if _group(item) == "app" else 2, 0))  # fmt: skip
+    names = [getattr(item, "fixturenames", ()) for item in items]
+    _SESSION["readers"] = any((_book_rank(item) or 0) > 0 for item in items)
+    _SESSION["references"] = any(_book_rank(item) == 0 for item in items)
+    _SESSION["binder"] = any("binder_run" in n for n in names)
+    items.sort(key=_order)  # stable: within each group the tests keep the order they were collected in
     if os.environ.get(GROUPS) and os.environ.get("PYTEST_XDIST_WORKER"):
         # a worker of `pytest -n` tells the controller each test's group (every worker, the same map)
         path = Path(os.environ[GROUPS])
@@ -310,9 +274,18 @@ def pytest_collection_modifyitems(config, items):
         draft.replace(path)
 
 
+@pytest.hookimpl(trylast=True)  # after pytest's own set-up of its temporary folders
 def pytest_configure(config):
-    if getattr(config.option, "numprocesses", None) and not hasattr(config, "workerinput"):
+    if hasattr(config, "workerinput"):
+        return  # a worker of `pytest -n`: the controller set the session's folders in the environment
+    if getattr(config.option, "numprocesses", None):
         os.environ[GROUPS] = str(Path(tempfile.mkdtemp(prefix="raildyn-groups-")) / "groups.json")
+    # The jobs' folders in the session's temporary folder, which pytest clears a few sessions later.
+    factory = getattr(config, "_tmp_path_factory", None)
+    base = (
+        factory.mktemp("jobs", numbered=False) if factory else Path(tempfile.mkdtemp(prefix="raildyn-jobs-"))
+    )
+    os.environ[JOBS] = str(base)
 
 
 @pytest.hookimpl(tryfirst=True)
@@ -335,6 +308,10 @@ def pytest_xdist_make_scheduler(config, log):
 
 def pytest_sessionfinish(session, exitstatus):
     write_references()
-    for job in _JOBS.values():  # a session stopped early leaves nothing running behind
-        if job.proc.poll() is None:
-            job.proc.kill()
+    if hasattr(session.config, "workerinput"):
+        return  # the jobs outlive a worker: another may be waiting for them
+    for pid in Path(os.environ[JOBS]).glob("*.pid"):  # a session stopped early leaves nothing running behind
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(int(pid.read_text()), signal.SIGKILL)
+    for proc in _DRIVERS:
+        proc.wait()
