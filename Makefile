@@ -50,12 +50,13 @@ pdf-student: book-student chromium
 	$(PY) scripts/book_pdf.py book/_build/student/_build/html book/_build/raildyn-student.pdf
 
 ## test: the whole suite: unit, property, notebooks, book build (warnings are errors), browser
-# JOBS=N runs on N pytest-xdist workers: the book's group and the app's each hold one worker, the other
-# tests (a file at a time where they share a fixture) are shared out as workers come free (tests/conftest.py).
-# The default is pytest's own process. The book's build, its printing, its student edition and a Binder
-# environment run in processes of their own beside the tests (tests/conftest.py); the app's tests run
-# first, on a quiet machine, since Voilà's widget manager gives up on the kernel's widget states after 4 s.
-JOBS ?= 0
+# One pytest-xdist worker a core (JOBS=N for another number, JOBS=0 for pytest's own process). The book's
+# build starts once the checks of its validation page have run, in a process of its own
+# (tests/background.py), and its printing and student edition follow it there, as the Binder environment
+# does from the first test; the app's tests hold one worker, the other tests (a file at a time where they
+# share a fixture) go to the workers as they come free, and the tests that read the book come last
+# (tests/conftest.py).
+JOBS ?= $(shell nproc)
 PYTEST := $(PY) -m pytest --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs
 	$(PYTEST) -n $(JOBS)

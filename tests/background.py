@@ -3,15 +3,14 @@
 With ``--book``: the book's build, as ``make book`` builds it but with warnings reported and every notebook
 executed in a strict kernel (``STRICT``); then, from the built book, its printing (``scripts/book_pdf.py``,
 where chromium is installed) and its student edition (``scripts/student_edition.py``) side by side. With
-``--binder``: an environment built from the Binder configuration alone (``tests/binder_env.py``), after the
-book's build where there is one (the two would only slow each other down).
+``--binder``: an environment built from the Binder configuration alone (``tests/binder_env.py``).
 
 Each job has a folder under JOBS: what it printed in ``log.txt`` and, once it has ended, its exit status in
 ``rc`` ("skipped: why" where it did not run). The tests that read a job wait for its ``rc``
 (``conftest._Job``), in whichever of pytest's processes they run; this process outlives the one that
 started it, so that the worker which ran the validation page's checks may finish before the book is built.
 
-Usage: ``python tests/background.py JOBS [--book] [--binder]``
+Usage: ``python tests/background.py JOBS --book`` or ``... JOBS --binder``
 """
 
 from __future__ import annotations

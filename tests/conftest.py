@@ -36,16 +36,18 @@ def _matplotlib_hygiene():
 
 
 # -- the session's background jobs ---------------------------------------------------------------------
-# Four jobs of minutes run beside the tests, in a process of their own (tests/background.py): the book's
-# build, started as soon as the checks its validation page lists have run; from the built book, its
-# printing (`make pdf`) and its student edition (`make book-student`); and an environment built from the
-# Binder configuration alone. Their folders are in one place for every process of the session
-# (``RAILDYN_TEST_JOBS``), so that a test reads a job's result in whichever process it runs.
+# Four jobs of minutes run beside the tests, in processes of their own (tests/background.py): the book's
+# build, started as soon as the checks its validation page lists have run, and from the built book its
+# printing (`make pdf`) and its student edition (`make book-student`); and, from the session's first test,
+# an environment built from the Binder configuration alone. Their folders are in one place for every
+# process of the session (``RAILDYN_TEST_JOBS``), so that a test reads a job's result in whichever process
+# it runs.
 
 JOBS = "RAILDYN_TEST_JOBS"
 BACKGROUND = Path(__file__).with_name("background.py")
 _SESSION = {"readers": False, "references": False, "binder": False}  # what the collected tests ask for
 _DRIVERS: list[subprocess.Popen] = []  # the background processes this process started
+_LAUNCHED: set[str] = set()  # the jobs this process has seen started
 
 
 @dataclass
@@ -87,29 +89,24 @@ def _alive(pid: int) -> bool:
         return False
 
 
-def _launch(*jobs: str) -> None:
-    """Start tests/background.py on the given jobs ("book", "binder"), unless a process of this session
-    already did (the first to make the folder ``<job>.started`` starts it)."""
+def _launch(job: str) -> None:
+    """Start tests/background.py on a job ("book" or "binder") unless a process of this session already did
+    (the first to make the folder ``<job>.started`` starts it)."""
+    if job in _LAUNCHED:
+        return
+    _LAUNCHED.add(job)
     base = Path(os.environ[JOBS])
-    mine = []
-    for job in jobs:
-        try:
-            (base / f"{job}.started").mkdir()
-            mine.append(job)
-        except FileExistsError:
-            pass
-    if mine:
-        if "book" in mine:
-            write_references()  # the validation page reads the checks recorded so far in this session
-        with (base / f"{'-'.join(mine)}.log").open("w") as log:
-            proc = subprocess.Popen([sys.executable, str(BACKGROUND), str(base), *(f"--{j}" for j in mine)],
-                                    stdout=log, stderr=subprocess.STDOUT, start_new_session=True)  # fmt: skip
-        (base / f"{'-'.join(mine)}.pid").write_text(str(proc.pid))
-        _DRIVERS.append(proc)  # held until the session ends (a process dropped while it runs is a warning)
-
-
-def _launch_book() -> None:
-    _launch("book", *(["binder"] if _SESSION["binder"] else []))
+    try:
+        (base / f"{job}.started").mkdir()
+    except FileExistsError:
+        return
+    if job == "book":
+        write_references()  # the validation page reads the checks recorded so far in this session
+    with (base / f"{job}.log").open("w") as log:
+        proc = subprocess.Popen([sys.executable, str(BACKGROUND), str(base), f"--{job}"], stdout=log,
+                                stderr=subprocess.STDOUT, start_new_session=True)  # fmt: skip
+    (base / f"{job}.pid").write_text(str(proc.pid))
+    _DRIVERS.append(proc)  # held until the session ends (a process dropped while it runs is a warning)
 
 
 @pytest.fixture(scope="session")
@@ -117,7 +114,7 @@ def built_book():
     """The book, built: (the build's outcome, the folder of its HTML pages). In a session with the
     validation page's checks, the process that ran the last of them started the build."""
     if not _SESSION["references"]:
-        _launch_book()
+        _launch("book")
     return _Job("book").result(timeout=1200), ROOT / "book" / "_build" / "html"
 
 
@@ -147,19 +144,23 @@ def student_book(built_book):
 @pytest.fixture(scope="session")
 def binder_run():
     """The environment built from the Binder configuration alone (tests/binder_env.py), waited for:
-    (its outcome, what it printed, its folder). In a session that builds the book it is built after the
-    book, in the same background process."""
-    if not _SESSION["readers"]:
-        _launch("binder")
+    (its outcome, what it printed, its folder). The session's first test started it."""
+    _launch("binder")
     job = _Job("binder")
     proc = job.result(timeout=2400)
     return proc, proc.stdout, job.work
 
 
+def pytest_runtest_setup(item):
+    # The Binder environment takes minutes and needs nothing of the tests: it starts with the first test.
+    if _SESSION["binder"]:
+        _launch("binder")
+
+
 def pytest_runtest_teardown(item, nextitem):
     # The last of the validation page's checks starts the book's build (tests run in _order's order).
     if _SESSION["readers"] and _book_rank(item) == 0 and (nextitem is None or _book_rank(nextitem) != 0):
-        _launch_book()
+        _launch("book")
 
 
 # -- the validation page's record ------------------------------------------------------------------------
@@ -212,9 +213,9 @@ GROUPS = "RAILDYN_TEST_GROUPS"
 
 
 def _book_rank(item) -> int | None:
-    """Where a test of the book's group runs within it: the checks its validation page lists (0), the
+    """For a test of the book's or of a background job: the checks the validation page lists (0), the
     built book (1), the student edition and the Binder environment (2), the printed book (3), the last
-    three made in the background meanwhile; None for a test outside the group."""
+    three made in the background meanwhile; None for any other test."""
     names = getattr(item, "fixturenames", ())
     if "printed_book" in names:
         return 3
@@ -226,12 +227,11 @@ def _book_rank(item) -> int | None:
 
 
 def _group(item) -> str:
-    """The tests that must run in one process, in order: the validation page's checks, the tests that read
-    the built book, the lecture-room app's (one Voilà server), a file's whose tests share a module-wide
-    fixture (computed once), or else the test alone."""
-    rank = _book_rank(item)
-    if rank is not None:
-        return "references" if rank == 0 else "book"
+    """The tests that must run in one process, in order: the validation page's checks, the lecture-room
+    app's (one Voilà server), a file's whose tests share a module-wide fixture (computed once), or else
+    the test alone."""
+    if _book_rank(item) == 0:
+        return "references"
     if "voila_app" in getattr(item, "fixturenames", ()):
         return "app"
     info = getattr(item, "_fixtureinfo", None)
@@ -241,10 +241,11 @@ def _group(item) -> str:
 
 
 def _order(item) -> tuple[int, int]:
-    group = _group(item)
-    if group == "book":
-        return 3, _book_rank(item)
-    return {"references": 0, "app": 1}.get(group, 2), 0
+    """The validation page's checks, the app's tests, the others, and last those that read the book."""
+    rank = _book_rank(item)
+    if rank:
+        return 3, rank
+    return {"references": 0, "app": 1}.get(_group(item), 2), 0
 
 
 def pytest_itemcollected(item):
@@ -258,8 +259,8 @@ def pytest_collection_modifyitems(config, items):
     """Order the tests (``_order``): the validation page's checks, whose last one starts the book's build
     in the background; the lecture-room app's tests; every other test; and last the tests that read the
     book and the jobs that follow its build, in ``_book_rank``'s order. Under ``pytest -n`` each of the
-    first two groups and the last goes whole to one worker, the other tests a file or a test at a time,
-    to whichever worker comes free (``pytest_xdist_make_scheduler``).
+    first two groups goes whole to one worker, the other tests a file or a test at a time
+    (``_group``), to whichever worker comes free (``pytest_xdist_make_scheduler``).
     """
     names = [getattr(item, "fixturenames", ()) for item in items]
     _SESSION["readers"] = any((_book_rank(item) or 0) > 0 for item in items)

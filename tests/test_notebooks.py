@@ -31,8 +31,8 @@ def test_notebook_is_stored_without_outputs(path):
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_notebook_runs_clean(path, built_book):
     # The book build executes every notebook once, in a kernel where any warning is an error
-    # (conftest.STRICT, an IPython start-up file); its executed copy is read here rather than run a
-    # second time.
+    # (tests/background.py's STRICT, an IPython start-up file); its executed copy is read here rather than
+    # run a second time.
     proc, _ = built_book
     executed = ROOT / "book" / "_build" / "jupyter_execute" / "notebooks" / path.name
     assert executed.exists(), (

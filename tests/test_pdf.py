@@ -1,5 +1,5 @@
 """`make pdf`: the built book printed to one PDF by headless chromium (scripts/book_pdf.py), in the
-background from the moment the book is built (tests/conftest.py), checked here.
+background once the book is built (tests/background.py), checked here.
 
 What a reader of the PDF needs, each checked against the built HTML or the notebooks rather than against
 numbers typed here: every page numbered; every link inside the PDF (a citation to its entry in the
