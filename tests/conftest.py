@@ -47,7 +47,7 @@ JOBS = "RAILDYN_TEST_JOBS"
 BACKGROUND = Path(__file__).with_name("background.py")
 _SESSION = {"readers": False, "references": False, "binder": False}  # what the collected tests ask for
 _DRIVERS: list[subprocess.Popen] = []  # the background processes this process started
-_LAUNCHED: set[str] = set()  # the jobs this process has seen started
+_LAUNCHED: set[str] = set()  # the jobs this process has seen started ("niced": it gave way to them)
 
 
 @dataclass
@@ -151,10 +151,21 @@ def binder_run():
     return proc, proc.stdout, job.work
 
 
+# The niceness of the tests' own processes once the book's build may run: the build, its printing and
+# its student edition are the session's longest chain, one step after another, and a core's share of the
+# machine keeps it as short as on a quiet machine, while the other tests take up what it leaves.
+_YIELDING = 5
+
+
 def pytest_runtest_setup(item):
     # The Binder environment takes minutes and needs nothing of the tests: it starts with the first test.
     if _SESSION["binder"]:
         _launch("binder")
+    # A process that will not start the book's build gives way to it (a process can only lower its own
+    # priority, and what it starts inherits it: the process that starts the build lowers it after).
+    if _book_rank(item) != 0 and "niced" not in _LAUNCHED:
+        _LAUNCHED.add("niced")
+        os.nice(_YIELDING)
 
 
 def pytest_runtest_teardown(item, nextitem):
