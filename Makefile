@@ -11,6 +11,11 @@ export MPLCONFIGDIR := $(CURDIR)/.venv/matplotlib
 # app's): where the machine switches it off (PYTHONDONTWRITEBYTECODE), each process compiles raildyn anew
 # and pytest rewrites every test module's assertions anew, 4.5 s of each worker's collection.
 unexport PYTHONDONTWRITEBYTECODE
+# One BLAS thread a process, where processes already share the cores (the tests' workers, the book's
+# kernels, the app's kernels, one a lecture-room page): OpenBLAS's threads wait for each other by
+# spinning, so two of them in each of several busy processes burn the machine (chapter 2's notebook ran
+# in 32 s beside two busy loops, 12 s on one thread; alone, 11 s either way).
+ONE_BLAS_THREAD := OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1
 
 .PHONY: book book-student pdf pdf-student test test-fast lab app bench figures lint clean chromium fe-libs install
 
@@ -59,7 +64,7 @@ pdf-student: book-student chromium
 JOBS ?= $(shell nproc)
 PYTEST := $(PY) -m pytest --dist loadscope --no-loadscope-reorder
 test: $(STAMP) chromium fe-libs
-	$(PYTEST) -n $(JOBS)
+	$(ONE_BLAS_THREAD) $(PYTEST) -n $(JOBS)
 
 # Debian's chromium for the browser tests; Playwright drives it, nothing is downloaded.
 chromium:
@@ -79,7 +84,7 @@ fe-libs:
 # No app and no book among them: one pytest-xdist worker a core (FAST_JOBS=N for another number).
 FAST_JOBS ?= $(shell nproc)
 test-fast: $(STAMP) fe-libs
-	$(PYTEST) -n $(FAST_JOBS) -m "not slow"
+	$(ONE_BLAS_THREAD) $(PYTEST) -n $(FAST_JOBS) -m "not slow"
 
 ## lab: JupyterLab on the notebooks
 lab: $(STAMP)
@@ -97,13 +102,13 @@ APP_TEMPLATES := app
 APP_OPTIONS := --template=raildyn --classic-tree --no-browser --Voila.ip=127.0.0.1 \
   --MappingKernelManager.cull_idle_timeout=600 --MappingKernelManager.cull_interval=60
 app: $(STAMP)
-	JUPYTER_PATH=$(CURDIR)/$(APP_TEMPLATES)$${JUPYTER_PATH:+:$$JUPYTER_PATH} $(VENV)/bin/voila notebooks $(APP_OPTIONS) --port=8866
+	$(ONE_BLAS_THREAD) JUPYTER_PATH=$(CURDIR)/$(APP_TEMPLATES)$${JUPYTER_PATH:+:$$JUPYTER_PATH} $(VENV)/bin/voila notebooks $(APP_OPTIONS) --port=8866
 
 ## bench: widget and model timings against their baselines, same run
-# One BLAS thread: on a shared 2-core machine, thread scheduling otherwise swings the
+# One BLAS thread (ONE_BLAS_THREAD): on a shared 2-core machine, thread scheduling otherwise swings the
 # matrix-heavy cases (raildyn and baseline alike) by more than the ratios measured.
 bench: $(STAMP) fe-libs
-	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 $(PY) benchmarks/run.py
+	$(ONE_BLAS_THREAD) $(PY) benchmarks/run.py
 
 ## figures: write every registered book figure
 figures: $(STAMP)

@@ -100,7 +100,7 @@ def main(jobs: Path, book: bool, binder: bool) -> None:
                        str(jobs / "student"), "-W", "-n", "--keep-going"]  # fmt: skip
             running.append(start(jobs, "student", student))
     if binder:
-        os.nice(5)  # as the tests' own processes (tests/conftest.py): the book's build comes first
+        os.nice(10)  # as the tests' own processes (tests/conftest.py): the book's build comes first
         environment = [sys.executable, str(ROOT / "tests" / "binder_env.py"), str(jobs / "binder")]
         running.append(start(jobs, "binder", environment))
     for proc, folder in running:

@@ -154,7 +154,7 @@ def binder_run():
 # The niceness of the tests' own processes once the book's build may run: the build, its printing and
 # its student edition are the session's longest chain, one step after another, and a core's share of the
 # machine keeps it as short as on a quiet machine, while the other tests take up what it leaves.
-_YIELDING = 5
+_YIELDING = 10
 
 
 def pytest_runtest_setup(item):
