@@ -1,6 +1,6 @@
 """Command line: ``python -m raildyn figures --out DIR`` writes the registered figures;
 ``python -m raildyn mark ANSWERS.csv KEY.py --out MARKS.csv`` marks a class's answers;
-``python -m raildyn compile`` compiles the numba kernels once, into numba's cache on disk.
+``python -m raildyn compile [--jobs N]`` compiles the numba kernels once, into numba's cache on disk.
 
 The ``compile`` command: raildyn's compiled kernels carry ``cache=True``, so the first process that calls
 one compiles it (1–30 s a path, 10–15 s for a chapter) and writes the machine code beside its source, in
@@ -37,16 +37,23 @@ def main(argv: list[str] | None = None) -> int:
     grade.add_argument("answers", help="the class's answers, a CSV file with a header row")
     grade.add_argument("key", help="a Python file whose EXERCISES lists the raildyn.course.Exercise objects")
     grade.add_argument("--out", default="marks.csv", help="where to write the marks (default: marks.csv)")
-    sub.add_parser(
+    comp = sub.add_parser(
         "compile",
         help="compile raildyn's numba kernels into numba's cache on disk, so that no notebook waits for "
         "them (about two minutes the first time, a few seconds after)",
     )
+    comp.add_argument(
+        "--jobs", type=int, default=1,
+        help="processes to compile in, each taking the next path as it comes free (default 1; a kernel "
+        "that two paths share may then be compiled twice, or loaded from the other's cache)",
+    )  # fmt: skip
     args = parser.parse_args(argv)
     if args.command == "mark":
         return _mark(parser, args)
     if args.command == "compile":
-        return _compile()
+        if not 1 <= args.jobs <= 64:
+            parser.error(f"--jobs must be an integer in [1, 64], got {args.jobs}")
+        return _compile(args.jobs)
 
     import matplotlib
 
@@ -92,20 +99,38 @@ def _mark(parser, args) -> int:
     return 0
 
 
-def _compile() -> int:
-    """The ``compile`` command: run every compiled path once, print each step's time and the cache."""
+def _compile(jobs: int = 1) -> int:
+    """The ``compile`` command: run every compiled path once (in ``jobs`` processes), print each step's
+    time and the cache."""
     import raildyn
 
     start = time.perf_counter()
-    steps = warm()
+    if jobs == 1:
+        steps = warm()
+        loaded, compiled = cache_counts()
+        folders = cache_folders()
+    else:
+        import importlib
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+
+        from raildyn._progress import progress_bar
+
+        # New interpreters, not forks: each imports what its paths need, as a reader's kernel does. They
+        # find the step by this module's importable name (run as ``-m``, it is ``__main__`` here).
+        one = importlib.import_module("raildyn.__main__")._warm_one
+        with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+            done = list(progress_bar(pool.map(one, range(len(STEPS))), total=len(STEPS),
+                                     desc="compiling raildyn's kernels"))  # fmt: skip
+        steps = [(label, seconds) for label, seconds, _, _ in done]
+        loaded, compiled = (sum(step[2][k] for step in done) for k in (0, 1))
+        folders = sorted({f for step in done for f in step[3]})
     for label, seconds in steps:
         print(f"{seconds:7.2f} s  {label}")
-    loaded, compiled = cache_counts()
     print(
         f"{time.perf_counter() - start:7.2f} s  in all (imports included): {compiled} kernels compiled, "
         f"{loaded} loaded from the cache, for raildyn at {raildyn.__path__[0]}"
     )
-    folders = cache_folders()
     if folders:
         print(f"numba's cache: under {os.path.commonpath(folders)}")
     return 0
@@ -260,6 +285,18 @@ def warm(progress: bool = True) -> list[tuple[str, float]]:
         step()
         times.append((label, time.perf_counter() - start))
     return times
+
+
+def _warm_one(index: int) -> tuple[str, float, tuple[int, int], list[str]]:
+    """One step of :data:`STEPS`, in a process of ``compile --jobs``: its label, its time, the kernels it
+    loaded and compiled, and the cache's folders."""
+    label, step = STEPS[index]
+    before = cache_counts()
+    start = time.perf_counter()
+    step()
+    seconds = time.perf_counter() - start
+    after = cache_counts()
+    return label, seconds, (after[0] - before[0], after[1] - before[1]), cache_folders()
 
 
 def cache_counts() -> tuple[int, int]:

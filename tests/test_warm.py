@@ -75,3 +75,18 @@ def test_the_install_compiles_every_kernel_and_a_fresh_process_loads_them(binder
         assert any(f"raildyn.{module}." in name for name in used), f"no kernel of {module} was loaded: {used}"
     loaded, recompiled = counts["all"]
     assert recompiled == 0 and loaded > 0, counts["all"]
+
+
+def test_the_warm_up_shares_its_paths_among_processes(capsys):
+    # `compile --jobs 2` (the Makefile's install): every path runs once, in one process or the other, and
+    # the counts add up over both (here the install's cache is built, so they load what they can).
+    from raildyn.__main__ import STEPS, main
+
+    assert main(["compile", "--jobs", "2"]) == 0
+    out = capsys.readouterr().out
+    for label, _ in STEPS:
+        assert out.count(f"s  {label}\n") == 1, out
+    assert " kernels compiled, " in out and " loaded from the cache, for raildyn at " in out
+    with pytest.raises(SystemExit):
+        main(["compile", "--jobs", "0"])
+    assert "--jobs must be an integer in [1, 64], got 0" in capsys.readouterr().err
