@@ -15,7 +15,6 @@ Usage: ``python tests/background.py JOBS --book`` or ``... JOBS --binder``
 
 from __future__ import annotations
 
-import contextlib
 import os
 import subprocess
 import sys
@@ -81,17 +80,6 @@ def build_book(jobs: Path) -> int:
     return code
 
 
-def give_way(niceness: int) -> None:
-    """Lower this process's priority, and that of what it starts: its niceness, and where Linux shares the
-    processor among sessions before processes (autogroup), that of its session, which this job alone holds
-    (conftest starts it in a session of its own)."""
-    os.nice(niceness)
-    group = Path("/proc/self/autogroup")
-    if group.exists():
-        with contextlib.suppress(OSError):  # a kernel without autogroup, or a read-only /proc
-            group.write_text(str(niceness))
-
-
 def main(jobs: Path, book: bool, binder: bool) -> None:
     running = []
     if book:
@@ -112,7 +100,7 @@ def main(jobs: Path, book: bool, binder: bool) -> None:
                        str(jobs / "student"), "-W", "-n", "--keep-going"]  # fmt: skip
             running.append(start(jobs, "student", student))
     if binder:
-        give_way(10)  # as the tests' own processes (tests/conftest.py): the book's build comes first
+        os.nice(10)  # as the tests' own processes (tests/conftest.py): the book's build comes first
         environment = [sys.executable, str(ROOT / "tests" / "binder_env.py"), str(jobs / "binder")]
         running.append(start(jobs, "binder", environment))
     for proc, folder in running:

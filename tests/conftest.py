@@ -46,7 +46,6 @@ def _matplotlib_hygiene():
 JOBS = "RAILDYN_TEST_JOBS"
 BACKGROUND = Path(__file__).with_name("background.py")
 _SESSION = {"readers": False, "references": False, "binder": False}  # what the collected tests ask for
-_DRIVERS: list[subprocess.Popen] = []  # the background processes this process started
 _LAUNCHED: set[str] = set()  # the jobs this process has seen started ("niced": it gave way to them)
 
 
@@ -82,11 +81,14 @@ class _Job:
 
 
 def _alive(pid: int) -> bool:
-    """Whether a process runs (a zombie, ended but not yet reaped by its parent, does not)."""
+    """Whether a process runs (on Linux, a zombie, ended but not reaped, does not)."""
     try:
+        os.kill(pid, 0)
         return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z"
-    except FileNotFoundError:
+    except ProcessLookupError:
         return False
+    except FileNotFoundError:  # no /proc: the process exists
+        return True
 
 
 def _launch(job: str) -> None:
@@ -102,11 +104,15 @@ def _launch(job: str) -> None:
         return
     if job == "book":
         write_references()  # the validation page reads the checks recorded so far in this session
-    with (base / f"{job}.log").open("w") as log:
-        proc = subprocess.Popen([sys.executable, str(BACKGROUND), str(base), f"--{job}"], stdout=log,
-                                stderr=subprocess.STDOUT, start_new_session=True)  # fmt: skip
-    (base / f"{job}.pid").write_text(str(proc.pid))
-    _DRIVERS.append(proc)  # held until the session ends (a process dropped while it runs is a warning)
+    # Through a shell that leaves it running in the background and ends: the job is nobody's child here,
+    # so it outlives the process that started it (a worker of `pytest -n` may end first), in a session of
+    # its own (its process group, which the session's end stops if it still runs).
+    started = subprocess.run(
+        ["sh", "-c", 'exec "$@" > "$0" 2>&1 & echo $!', str(base / f"{job}.log"), sys.executable,
+         str(BACKGROUND), str(base), f"--{job}"],
+        capture_output=True, text=True, check=True, start_new_session=True,
+    )  # fmt: skip
+    (base / f"{job}.pid").write_text(started.stdout.strip())
 
 
 @pytest.fixture(scope="session")
@@ -324,6 +330,4 @@ def pytest_sessionfinish(session, exitstatus):
         return  # the jobs outlive a worker: another may be waiting for them
     for pid in Path(os.environ[JOBS]).glob("*.pid"):  # a session stopped early leaves nothing running behind
         with contextlib.suppress(ProcessLookupError):
-            os.killpg(int(pid.read_text()), signal.SIGKILL)
-    for proc in _DRIVERS:
-        proc.wait()
+            os.killpg(os.getpgid(int(pid.read_text())), signal.SIGKILL)
