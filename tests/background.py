@@ -40,6 +40,12 @@ warnings.filterwarnings("ignore", category=PendingDeprecationWarning, module="ip
 """
 
 
+# The niceness of every process of the session but the book's chain (the build, its printing, its student
+# edition: the session's longest run of steps one after another): tests/conftest.py lowers the tests' own
+# to it, and the Binder environment runs at it.
+YIELDING = 10
+
+
 def start(jobs: Path, name: str, args: list[str], **popen) -> tuple[subprocess.Popen, Path]:
     """Start one job, its output in its folder's log.txt: (the process, the folder)."""
     folder = jobs / name
@@ -56,6 +62,7 @@ def finish(folder: Path, status: str) -> None:
 
 
 def skip(jobs: Path, name: str, why: str) -> None:
+    """Mark a job as not run, and why (the test that reads it is skipped)."""
     folder = jobs / name
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "log.txt").write_text(why + "\n")
@@ -80,9 +87,9 @@ def build_book(jobs: Path) -> int:
     return code
 
 
-def main(jobs: Path, book: bool, binder: bool) -> None:
+def main(jobs: Path, job: str) -> None:
     running = []
-    if book:
+    if job == "book":
         if build_book(jobs) != 0:
             for name in ("pdf", "student"):
                 skip(jobs, name, "the book's build failed")
@@ -99,8 +106,8 @@ def main(jobs: Path, book: bool, binder: bool) -> None:
             student = [sys.executable, str(scripts / "student_edition.py"), str(ROOT / "book" / "_build"),
                        str(jobs / "student"), "-W", "-n", "--keep-going"]  # fmt: skip
             running.append(start(jobs, "student", student))
-    if binder:
-        os.nice(10)  # as the tests' own processes (tests/conftest.py): the book's build comes first
+    else:
+        os.nice(YIELDING)
         environment = [sys.executable, str(ROOT / "tests" / "binder_env.py"), str(jobs / "binder")]
         running.append(start(jobs, "binder", environment))
     for proc, folder in running:
@@ -108,4 +115,6 @@ def main(jobs: Path, book: bool, binder: bool) -> None:
 
 
 if __name__ == "__main__":
-    main(Path(sys.argv[1]), "--book" in sys.argv[2:], "--binder" in sys.argv[2:])
+    if len(sys.argv) != 3 or sys.argv[2] not in ("--book", "--binder"):
+        sys.exit(__doc__.rpartition("Usage: ")[2])
+    main(Path(sys.argv[1]), sys.argv[2].removeprefix("--"))

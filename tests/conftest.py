@@ -19,6 +19,7 @@ from pathlib import Path  # noqa: E402
 
 import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
+from background import YIELDING  # noqa: E402  (tests/background.py: the session's background jobs)
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -45,8 +46,9 @@ def _matplotlib_hygiene():
 
 JOBS = "RAILDYN_TEST_JOBS"
 BACKGROUND = Path(__file__).with_name("background.py")
-_SESSION = {"readers": False, "references": False, "binder": False}  # what the collected tests ask for
-_LAUNCHED: set[str] = set()  # the jobs this process has seen started ("niced": it gave way to them)
+# What the collected tests ask for, and whether this process has lowered its priority yet.
+_SESSION = {"readers": False, "references": False, "binder": False, "yielded": False}
+_LAUNCHED: set[str] = set()  # the jobs this process has seen started
 
 
 @dataclass
@@ -157,13 +159,11 @@ def binder_run():
     return proc, proc.stdout, job.work
 
 
-# The niceness of the tests' own processes once the book's build may run: the build, its printing and
-# its student edition are the session's longest chain, one step after another, and the other tests can
-# take up what it leaves. (Where Linux shares the processor among sessions before processes, autogroup,
-# niceness counts only within the tests' session: the build's kernels, each in a session of its own,
-# then share the machine evenly with it; on this 2-core machine the build took 290-320 s beside the
-# tests, 177 s alone.)
-_YIELDING = 10
+# The tests' own processes lower their priority to background.YIELDING once the book's build may run, so
+# that the other tests take up what the build's chain leaves. (Where Linux shares the processor among
+# sessions before processes, autogroup, niceness counts only within the tests' session: the build's
+# kernels, each in a session of its own, then share the machine evenly with it; on this 2-core machine
+# the build took 290-340 s beside the tests, 177 s alone.)
 
 
 def pytest_runtest_setup(item):
@@ -172,9 +172,9 @@ def pytest_runtest_setup(item):
         _launch("binder")
     # A process that will not start the book's build gives way to it (a process can only lower its own
     # priority, and what it starts inherits it: the process that starts the build lowers it after).
-    if _book_rank(item) != 0 and "niced" not in _LAUNCHED:
-        _LAUNCHED.add("niced")
-        os.nice(_YIELDING)
+    if _book_rank(item) != 0 and not _SESSION["yielded"]:
+        _SESSION["yielded"] = True
+        os.nice(YIELDING)
 
 
 def pytest_runtest_teardown(item, nextitem):
@@ -282,10 +282,9 @@ def pytest_collection_modifyitems(config, items):
     first two groups goes whole to one worker, the other tests a file or a test at a time
     (``_group``), to whichever worker comes free (``pytest_xdist_make_scheduler``).
     """
-    names = [getattr(item, "fixturenames", ()) for item in items]
     _SESSION["readers"] = any((_book_rank(item) or 0) > 0 for item in items)
     _SESSION["references"] = any(_book_rank(item) == 0 for item in items)
-    _SESSION["binder"] = any("binder_run" in n for n in names)
+    _SESSION["binder"] = any("binder_run" in getattr(item, "fixturenames", ()) for item in items)
     items.sort(key=_order)  # stable: within each group the tests keep the order they were collected in
     if os.environ.get(GROUPS) and os.environ.get("PYTEST_XDIST_WORKER"):
         # a worker of `pytest -n` tells the controller each test's group (every worker, the same map)
