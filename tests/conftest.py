@@ -261,11 +261,14 @@ def _group(item) -> str:
 
 
 def _order(item) -> tuple[int, int]:
-    """The validation page's checks, the app's tests, the others, and last those that read the book."""
+    """The validation page's checks, the app's tests, the others, and last those that read the book.
+    Among the others, the files that go whole to one worker come before the tests that go one at a time:
+    the longer pieces first, so that the short ones fill the workers' ends evenly."""
     rank = _book_rank(item)
     if rank:
         return 3, rank
-    return {"references": 0, "app": 1}.get(_group(item), 2), 0
+    group = _group(item)
+    return {"references": 0, "app": 1}.get(group, 2), int("::" in group)
 
 
 def pytest_itemcollected(item):
