@@ -22,11 +22,14 @@ ONE_BLAS_THREAD := OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1
 # A fresh virtual environment with the pinned ranges, raildyn installed editable
 # so that the notebooks import the working tree; then its numba kernels compiled once into numba's
 # cache (the __pycache__ folders beside the sources, which every later kernel, book build and Voilà loads),
-# one process a core (29 s on 2 cores, 44 s in one).
+# one process a core (29 s on 2 cores, 44 s in one). pip does not byte-compile what it installs
+# (--no-compile): Python compiles a module when it is first imported and keeps it, so only the modules
+# in use are compiled (the install from pip's cache: 39 s with pip's compiling, 19 s without; the first
+# imports of a test session then compile for some 6 s once).
 $(STAMP): requirements.txt pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -r requirements.txt
+	$(PY) -m pip install --quiet --no-compile -r requirements.txt
 	$(PY) -m pip install --quiet --no-deps --no-build-isolation -e .
 	$(PY) -m raildyn compile --jobs $(shell nproc)
 	touch $@
