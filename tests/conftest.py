@@ -248,12 +248,16 @@ def _book_rank(item) -> int | None:
 
 def _group(item) -> str:
     """The tests that must run in one process, in order: the validation page's checks, the lecture-room
-    app's (one Voilà server), a file's whose tests share a module-wide fixture (computed once), or else
-    the test alone."""
+    app's (one Voilà server), those marked ``shares(key)`` with one key (their model runs are cached in
+    the process, so they are made once), a file's whose tests share a module-wide fixture (computed once),
+    or else the test alone."""
     if _book_rank(item) == 0:
         return "references"
     if "voila_app" in getattr(item, "fixturenames", ()):
         return "app"
+    shares = item.get_closest_marker("shares")
+    if shares:
+        return f"shares {shares.args[0]}"
     info = getattr(item, "_fixtureinfo", None)
     defs = info.name2fixturedefs.values() if info else ()
     shared = any(d[-1].scope in ("package", "module", "class") for d in defs)
@@ -268,7 +272,7 @@ def _order(item) -> tuple[int, int]:
     if rank:
         return 3, rank
     group = _group(item)
-    return {"references": 0, "app": 1}.get(group, 2), int("::" in group)
+    return {"references": 0, "app": 1}.get(group, 2), int("::" in group or group.startswith("shares "))
 
 
 def pytest_itemcollected(item):

@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+from widget_helpers import widgets_of
 
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
@@ -316,6 +317,7 @@ def test_plots_draw_and_move():
         sweep.runs[0].plot(truck=2)
 
 
+@widgets_of("chapter06")  # the widget's sweep is made once, with chapter 6's other widget tests
 def test_wheel_unloading_widget_shows_the_sweeps_numbers_and_moves():
     import re
 

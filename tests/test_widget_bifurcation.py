@@ -6,10 +6,12 @@ same car, whether it came from the batch of the kernel-free grid or from a singl
 
 import numpy as np
 import pytest
-from widget_helpers import status_line
+from widget_helpers import status_line, widgets_of
 
 from raildyn import stability
 from raildyn.widgets import chapter07
+
+pytestmark = widgets_of("chapter07")  # the grid's batch is made once, with chapter 7's other widget tests
 
 
 def _car(conicity, yaw_stiffness):

@@ -19,6 +19,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from PIL import Image
+from widget_helpers import widgets_of
 
 import raildyn.widgets
 from raildyn.widgets import (
@@ -104,6 +105,10 @@ RECIPES = {
 }
 
 
+FACTORIES = [pytest.param(f, id=f.__name__, marks=widgets_of(f.__module__)) for f in MOVES]
+RECIPE_NAMES = [pytest.param(name, id=name, marks=widgets_of(name.split(".")[0])) for name in RECIPES]
+
+
 def _pixels(png: bytes) -> np.ndarray:
     return np.asarray(Image.open(io.BytesIO(png)))
 
@@ -113,7 +118,7 @@ def test_every_widget_has_moves_here():
     assert len(factories) == len(RECIPES), "a widget recipe has no entry in MOVES (or the reverse)"
 
 
-@pytest.mark.parametrize("factory", list(MOVES), ids=lambda f: f.__name__)
+@pytest.mark.parametrize("factory", FACTORIES)
 def test_each_control_changes_the_frame_in_place(factory):
     before = plt.get_fignums()
     container, update = factory()
@@ -129,7 +134,7 @@ def test_each_control_changes_the_frame_in_place(factory):
     assert plt.get_fignums() == before, "a widget opened a pyplot figure"
 
 
-@pytest.mark.parametrize("factory", list(MOVES), ids=lambda f: f.__name__)
+@pytest.mark.parametrize("factory", FACTORIES)
 def test_blitted_frame_equals_a_full_redraw(factory):
     container, update = factory()
     for name, value in MOVES[factory].items():
@@ -138,7 +143,7 @@ def test_blitted_frame_equals_a_full_redraw(factory):
     assert np.array_equal(_pixels(blitted), _pixels(container.live.render()))
 
 
-@pytest.mark.parametrize("name", list(RECIPES))
+@pytest.mark.parametrize("name", RECIPE_NAMES)
 def test_static_copy_has_one_distinct_frame_per_grid_value(name):
     recipe = RECIPES[name]
     assert 1 <= len(recipe.static) <= 2, "one or two controls"

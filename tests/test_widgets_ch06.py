@@ -5,7 +5,7 @@ import re
 
 import numpy as np
 import pytest
-from widget_helpers import status_line
+from widget_helpers import status_line, widgets_of
 
 from raildyn import ride, track
 from raildyn.vehicles import MANCHESTER_VERTICAL, response_spectrum
@@ -36,6 +36,7 @@ def test_ride_status_gives_the_frequency_domain_index_and_a_matching_run():
     assert wz_td == pytest.approx(wz_fd, abs=0.05)
 
 
+@widgets_of("chapter06")  # the rocking sweep is made once, with chapter 6's other widget tests
 @pytest.mark.parametrize("label", list(chapter06.FREIGHT_CARS))
 def test_rock_widget_marks_the_resonance_speed(label):
     container, update = chapter06.rock_and_roll_widget()

@@ -1,4 +1,5 @@
-"""What the widget tests share: a widget's status line, and the frames its updates draw.
+"""What the widget tests share: a widget's status line, the frames its updates draw, and the mark that
+runs a chapter's widget tests in one process.
 
 How fast an update is belongs to the benchmarks (``widget_case`` in ``benchmarks/common.py``, each
 widget's goal in ``benchmarks/README.md``), not to a timed test.
@@ -6,7 +7,17 @@ widget's goal in ``benchmarks/README.md``), not to a timed test.
 
 from __future__ import annotations
 
+import pytest
+
 PNG = b"\x89PNG\r\n\x1a\n"
+
+
+def widgets_of(module: str) -> pytest.MarkDecorator:
+    """The mark of a test that builds the widgets of one chapter module (``"chapter06"`` or
+    ``"raildyn.widgets.chapter06"``): a chapter's widgets cache their model runs in the process (a rocking
+    sweep, a bifurcation grid), so its tests run in one process, which makes each run once
+    (``shares`` in tests/conftest.py)."""
+    return pytest.mark.shares(f"widgets of {module.rsplit('.', 1)[-1]}")
 
 
 def status_line(container) -> str:
