@@ -215,10 +215,8 @@ def _bridge():
     from raildyn.vehicles import VerticalCar
 
     beam = SimplySupportedBeam(20.0, 1.0e10, 1.0e4, modes=3)
-    moving_force_response(beam, [20.0, 40.0], 1.0, samples=50)
-    # An axle sequence's arrays are read-only, which numba compiles apart (the HSLM trains of chapter 10).
+    # A train of axle loads (the HSLM trains of chapter 10) and a vehicle take the same compiled paths.
     moving_force_response(beam, [20.0, 40.0], AxleSequence([0.0, 2.5], [1.0e5, 1.0e5]), samples=50)
-    crossing(beam, AxleSequence([0.0], [1.0e5]), 40.0)
     crossing(beam, vehicle(VerticalCar(), 1813.0), 40.0)
 
 

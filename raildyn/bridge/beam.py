@@ -309,7 +309,8 @@ def moving_force_response(beam: SimplySupportedBeam, speeds, force=1.0, *, posit
     _checks.instance("beam", beam, SimplySupportedBeam)
     v = _checks.speeds("speeds", speeds)
     if isinstance(force, AxleSequence):
-        delays, loads = force.positions, force.loads
+        # writable copies of its read-only arrays: numba would compile the kernel anew for read-only ones
+        delays, loads = np.array(force.positions), np.array(force.loads)
     else:
         delays, loads = np.zeros(1), np.array([_checks.scalar("force", force)])
     L = beam.span

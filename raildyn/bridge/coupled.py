@@ -351,9 +351,11 @@ def crossing(
         KW, CW = system.input_stiffness, system.input_damping
     X, V, A = (np.zeros((steps + 1, n + p)) for _ in range(3))
     F = np.zeros((steps + 1, a))
+    # Writable copies, whatever the vehicle's own arrays are: numba compiles a kernel anew for read-only
+    # arguments, and a crossing by axle loads alone and one by a vehicle share one compiled march.
     bad = _kernel.march(
         h, steps, v, L, grid[1] - grid[0], *tables, mu, 2 * beam.damping_ratio * omega * mu, omega**2 * mu,
-        *(np.ascontiguousarray(z, dtype=float) for z in (M, C, K, GK, GC, KW, CW)),
+        *(np.array(z, dtype=float, order="C") for z in (M, C, K, GK, GC, KW, CW)),
         load.static_loads, load.unsprung_masses, load.positions, rail, X, V, A, F,
     )  # fmt: skip
 
