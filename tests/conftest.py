@@ -267,8 +267,9 @@ def _group(item) -> str:
 
 def _order(item) -> tuple[int, int]:
     """The validation page's checks, the app's tests, the others, and last those that read the book.
-    Among the others, the files that go whole to one worker come before the tests that go one at a time:
-    the longer pieces first, so that the short ones fill the workers' ends evenly."""
+    Among the others, the groups that go whole to one worker (a file's, a ``shares`` key's) come before
+    the tests that go one at a time: the longer pieces first, so that the short ones fill the workers'
+    ends evenly."""
     rank = _book_rank(item)
     if rank:
         return 3, rank

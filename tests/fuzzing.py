@@ -118,7 +118,7 @@ class Entry:
     whose valid call is slow; ``infinite`` names result fields whose documented answer may
     be +inf (see :func:`bad_numbers`); ``patches`` sets module constants while the entry's
     calls run, dotted name → value (a solver's budget lowered, so that a call that spends it
-    says so in a tenth of the time and in the same words).
+    says so in a quarter of the time and in the same words).
     """
 
     target: str
