@@ -40,7 +40,7 @@ def main(argv: list[str] | None = None) -> int:
     comp = sub.add_parser(
         "compile",
         help="compile raildyn's numba kernels into numba's cache on disk, so that no notebook waits for "
-        "them (about two minutes the first time, a few seconds after)",
+        "them (under a minute the first time, a few seconds after)",
     )
     comp.add_argument(
         "--jobs", type=int, default=1,

@@ -4,7 +4,7 @@ A fresh virtual environment stands in for repo2docker's (the Python that ``binde
 for, with Jupyter's kernel and nbclient), ``binder/postBuild`` installs raildyn into it, and notebook
 01 runs there from ``notebooks/`` through ``binder/start`` (as every launch does), in a clone of the
 repository, so that nothing of this checkout's own environment leaks in. ``tests/background.py`` runs
-this script once the book is built (the installation and the kernels' compilation
+this script from the test session's first test (the installation and the kernels' compilation
 take minutes), and the tests of ``tests/test_binder.py`` and ``tests/test_warm.py`` read
 what it printed.
 

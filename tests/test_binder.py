@@ -1,7 +1,7 @@
 """The Binder configuration alone gives an environment in which the notebooks run (tests/binder_env.py).
 
-The environment is built in the background once the book is built (tests/background.py, started by
-tests/conftest.py; ``binder_run``); the test waits for it and reads what it printed.
+The environment is built in the background from the session's first test (tests/background.py, started
+by tests/conftest.py; ``binder_run``); the test waits for it and reads what it printed.
 """
 
 from __future__ import annotations
