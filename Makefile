@@ -85,7 +85,8 @@ fe-libs:
 	fi
 
 ## test-fast: the unit and property tests only
-# No app and no book among them: one pytest-xdist worker a core (FAST_JOBS=N for another number).
+# No app, no book and no model run of seconds against its reference (the tests marked slow, which
+# make test runs): one pytest-xdist worker a core (FAST_JOBS=N for another number).
 FAST_JOBS ?= $(shell nproc)
 test-fast: $(STAMP) fe-libs
 	$(ONE_BLAS_THREAD) $(PYTEST) -n $(FAST_JOBS) -m "not slow"

@@ -137,6 +137,7 @@ def _fold_index(branch):
     return int(np.flatnonzero(branch.speeds == branch.fold_speed)[0])
 
 
+@pytest.mark.slow  # the car's branch of limit cycles, 5 s, shared with the tests below
 def test_car_branch_meets_the_ramp_down(car):
     model, b = car
     fold = _fold_index(b)
@@ -161,6 +162,7 @@ def test_car_branch_meets_the_ramp_down(car):
     assert np.all(gap[settled] <= 1e-3 * b.amplitudes[stable][settled])
 
 
+@pytest.mark.slow  # on the car's branch (above)
 def test_car_fold_against_the_ramp_estimate_and_long_runs(car):
     model, b = car
     fold = _fold_index(b)
@@ -179,6 +181,7 @@ def test_car_fold_against_the_ramp_estimate_and_long_runs(car):
     assert above.hunting()
 
 
+@pytest.mark.slow  # on the car's branch (above)
 def test_unstable_cycle_is_the_edge_of_the_basin(car):
     # Between the fold and the linear critical speed, started just inside the unstable cycle the car
     # runs centred again; just outside, it hunts on the stable cycle.
@@ -191,6 +194,7 @@ def test_unstable_cycle_is_the_edge_of_the_basin(car):
     assert outside.hunting() and outside.amplitude > b.amplitudes[k]
 
 
+@pytest.mark.slow  # on the car's branch (above)
 def test_unstable_cycle_against_periodic_orbit(car):
     # A second integrator: scipy's DOP853 on the numpy right-hand side, with central differences, started
     # from the branch's cycle, must find the same cycle and the same unstable multiplier.
@@ -204,6 +208,7 @@ def test_unstable_cycle_against_periodic_orbit(car):
     assert np.abs(orbit.multipliers).max() == pytest.approx(np.abs(b.multipliers[k]).max(), rel=1e-3)
 
 
+@pytest.mark.slow  # on the car's branch (above)
 def test_car_branch_ends_at_the_linear_critical_speed(car):
     model, b = car
     Vc = stability.critical_speed(LateralCar(), (1.0, 200.0)).speed

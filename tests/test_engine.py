@@ -79,6 +79,7 @@ def test_the_wheelsets_limit_cycle_is_scipys():
     assert compiled.amplitude == pytest.approx(10.3e-3, abs=0.05e-3)  # the docstring's cycle
 
 
+@pytest.mark.slow  # a ramp of runs through scipy beside the engine's, seconds
 def test_the_wheelsets_bifurcation_diagram_is_scipys():
     # Five speeds either side of the wheelset's onset, 2 s runs and two bisections: scipy takes some
     # seconds (the ramp's chaining and the bisection are the diagram's own; more of them test no more).
@@ -93,6 +94,7 @@ def test_the_wheelsets_bifurcation_diagram_is_scipys():
     assert compiled.nonlinear_critical_speed == reference.nonlinear_critical_speed
 
 
+@pytest.mark.slow  # a ramp of runs through scipy beside the engine's, seconds
 def test_the_cars_bifurcation_diagram_is_scipys():
     # Three speeds about the car's fold, 2 s runs: scipy takes some seconds, the engine a tenth of one.
     car = LateralCar().nonlinear()

@@ -264,6 +264,7 @@ def test_the_friction_law_is_coulomb_friction():
     np.testing.assert_allclose(law(0.0 * v, v), coulomb_friction(v, 8.0e3, velocity_scale=5e-3), rtol=1e-15)
 
 
+@pytest.mark.slow  # a run of seconds through the wedges' stiff friction
 def test_the_loaded_car_hunts_below_its_linear_critical_speed():
     # Subcritical hunting: at 0.7 of the linear critical speed (24.4 m/s), where small motions die away (the
     # nonlinear model linearises to the linear one, above), a motion started at 12 mm does not: after 4 s it
@@ -374,6 +375,7 @@ def test_a_drift_or_a_held_offset_is_not_hunting_and_a_cycle_is():
     assert slow.frequency_hz == pytest.approx(0.1, rel=1e-2) and slow.cycles >= 1.0 and not slow.hunting()
 
 
+@pytest.mark.slow  # a run of seconds through the wedges' stiff friction
 def test_the_empty_car_hunts_below_its_linear_critical_speed():
     """The empty car's nonlinear critical speed: 12.45-12.5 m/s, 0.86 of the linear 14.48 m/s (issue 16).
 

@@ -66,6 +66,7 @@ def test_contact_and_energy_at_a_joint_that_throws_the_wheel_off():
     assert np.abs(run.balance).max() < 1e-3 * exchanged
 
 
+@pytest.mark.slow  # scipy's RK45 on the same equations, seconds
 def test_the_march_agrees_with_scipys_rk45():
     small = DiscreteTrack(bays=16, quiet_bays=5, elements_per_bay=2)
     x = float(small.sleeper_positions[8]) + 0.275
@@ -117,6 +118,7 @@ def test_a_flat_strikes_once_a_revolution():
         assert run.peaks(x)[0] > 1.2 * WHEEL.static_load
 
 
+@pytest.mark.slow  # a time run of seconds against the receptances
 def test_the_force_spectrum_of_small_roughness_matches_the_receptances():
     # A wheel standing midway between sleepers while a small random roughness (rms 2 µm against a
     # Hertz compression of 70 µm: linear) passes under it at 30 m/s for 116 m. Welch's estimate averages
@@ -177,6 +179,7 @@ def test_a_vehicle_on_its_wheels():
     assert np.abs(run.balance).max() < 1e-3 * exchanged
 
 
+@pytest.mark.slow  # scipy's RK45 on the same equations, seconds
 def test_two_wheels_on_a_bogie_frame_against_rk45():
     # A bogie frame (1,300 kg, half the frame on one rail) on two wheels 2.5 m apart through primary
     # springs: two contacts coupled through the frame and the rail, against RK45 on the same equations.

@@ -134,6 +134,7 @@ def test_in_a_tight_curve_the_flange_wears_and_steers(pair):
     np.testing.assert_array_equal(gentle[0].wear_number, gentle[1].wear_number)
 
 
+@pytest.mark.slow  # scipy's RK45 on the same equations, seconds
 def test_a_car_on_real_profiles_hunts_alike_through_the_engine_and_scipy(pair):
     # The Manchester car on S1002/UIC 60 with its flange as a second contact: the compiled engine against
     # scipy's RK45 on the numpy right-hand side. Their right-hand sides agree at round-off

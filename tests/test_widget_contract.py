@@ -9,6 +9,7 @@
 Chapter-specific checks (the numbers in a status line) stay in test_widgets_chNN.py.
 """
 
+import functools
 import importlib
 import io
 import pkgutil
@@ -118,29 +119,33 @@ def test_every_widget_has_moves_here():
     assert len(factories) == len(RECIPES), "a widget recipe has no entry in MOVES (or the reverse)"
 
 
-@pytest.mark.parametrize("factory", FACTORIES)
-def test_each_control_changes_the_frame_in_place(factory):
+@functools.cache
+def _moved(factory):
+    """One widget, built and moved through its MOVES once: the two tests below read the same run
+    (a chapter's tests share a process), so a widget is built and driven once, not twice."""
     before = plt.get_fignums()
     container, update = factory()
-    assert isinstance(container, ipywidgets.VBox)
     image = container.children[-1]
-    frame = update()
-    assert frame.startswith(b"\x89PNG"), "a frame is a PNG image"
-    for name, value in MOVES[factory].items():
-        new = update(**{name: value})
-        assert new != frame, f"moving {name} did not change the picture"
-        frame = new
+    frames = [update()] + [update(**{name: value}) for name, value in MOVES[factory].items()]
+    return container, image, frames, plt.get_fignums() == before
+
+
+@pytest.mark.parametrize("factory", FACTORIES)
+def test_each_control_changes_the_frame_in_place(factory):
+    container, image, frames, no_pyplot_figure = _moved(factory)
+    assert isinstance(container, ipywidgets.VBox)
+    assert frames[0].startswith(b"\x89PNG"), "a frame is a PNG image"
+    for name, before, after in zip(MOVES[factory], frames[:-1], frames[1:], strict=True):
+        assert after != before, f"moving {name} did not change the picture"
     assert container.children[-1] is image, "the figure widget was rebuilt instead of updated"
-    assert plt.get_fignums() == before, "a widget opened a pyplot figure"
+    assert no_pyplot_figure, "a widget opened a pyplot figure"
 
 
 @pytest.mark.parametrize("factory", FACTORIES)
 def test_blitted_frame_equals_a_full_redraw(factory):
-    container, update = factory()
-    for name, value in MOVES[factory].items():
-        blitted = update(**{name: value})
+    container, _, frames, _ = _moved(factory)
     container.live.invalidate()
-    assert np.array_equal(_pixels(blitted), _pixels(container.live.render()))
+    assert np.array_equal(_pixels(frames[-1]), _pixels(container.live.render()))
 
 
 @pytest.mark.parametrize("name", RECIPE_NAMES)
