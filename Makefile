@@ -17,7 +17,7 @@ unexport PYTHONDONTWRITEBYTECODE
 # in 32 s beside two busy loops, 12 s on one thread; alone, 11 s either way).
 ONE_BLAS_THREAD := OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1
 
-.PHONY: book book-student pdf pdf-student test test-fast lab app bench figures lint clean chromium fe-libs install
+.PHONY: book book-student pdf pdf-student test test-fast lab app bench figures lint clean chromium fe-libs install constraints
 
 # A fresh virtual environment with the pinned ranges, raildyn installed editable
 # so that the notebooks import the working tree; then its numba kernels compiled once into numba's
@@ -26,15 +26,21 @@ ONE_BLAS_THREAD := OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1
 # (--no-compile): Python compiles a module when it is first imported and keeps it, so only the modules
 # in use are compiled (the install from pip's cache: 39 s with pip's compiling, 19 s without; the first
 # imports of a test session then compile for some 6 s once).
-$(STAMP): requirements.txt pyproject.toml
+# requirements.txt installs raildyn editable with its "dev" extra (the ranges live in pyproject.toml), at the
+# versions constraints.txt pins, so that every machine tests the same set.
+$(STAMP): requirements.txt pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet --no-compile -r requirements.txt
-	$(PY) -m pip install --quiet --no-deps --no-build-isolation -e .
+	$(PY) -m pip install --quiet --no-compile -c constraints.txt -r requirements.txt
 	$(PY) -m raildyn compile --jobs $(shell nproc)
 	touch $@
 
 install: $(STAMP)
+
+## constraints: pin the installed versions (within pyproject.toml's ranges) as the tested set, after an upgrade
+constraints: $(STAMP)
+	{ echo "# The tested set: make install pins these; make constraints writes them from the venv."; \
+	  $(PY) -m pip list --format=freeze --exclude-editable | grep -v -i -E '^(pip|raildyn)=='; } > constraints.txt
 
 ## book: execute every notebook and build the HTML book (the README's main command)
 # RAILDYN_PROGRESS=0: a page without a kernel would show a progress bar frozen at 0 %, so none is drawn.

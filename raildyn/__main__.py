@@ -1,4 +1,5 @@
 """Command line: ``python -m raildyn figures --out DIR`` writes the registered figures;
+``python -m raildyn notebooks DIR`` copies the chapter notebooks into DIR;
 ``python -m raildyn mark ANSWERS.csv KEY.py --out MARKS.csv`` marks a class's answers;
 ``python -m raildyn compile [--jobs N]`` compiles the numba kernels once, into numba's cache on disk.
 
@@ -21,6 +22,7 @@ import os
 import sys
 import time
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 
@@ -33,6 +35,10 @@ def main(argv: list[str] | None = None) -> int:
     fig.add_argument("--format", nargs="+", default=["png"], help="file formats, e.g. png svg pdf")
     fig.add_argument("--only", nargs="+", metavar="ID", help="only these figure ids")
     fig.add_argument("--list", action="store_true", help="list the figure ids and captions, write nothing")
+    fig.add_argument("--data", action="store_true", help="also write each figure's data beside it, <id>.csv")
+    books = sub.add_parser("notebooks", help="copy the chapter notebooks into a folder, to open in Jupyter")
+    books.add_argument("out", help="the folder to copy them into (created if missing)")
+    books.add_argument("--force", action="store_true", help="replace the notebooks of the same names there")
     grade = sub.add_parser("mark", help="mark a class's answers (CSV: student, exercise, answer)")
     grade.add_argument("answers", help="the class's answers, a CSV file with a header row")
     grade.add_argument("key", help="a Python file whose EXERCISES lists the raildyn.course.Exercise objects")
@@ -50,6 +56,8 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.command == "mark":
         return _mark(parser, args)
+    if args.command == "notebooks":
+        return _notebooks(parser, args)
     if args.command == "compile":
         if not 1 <= args.jobs <= 64:
             parser.error(f"--jobs must be an integer in [1, 64], got {args.jobs}")
@@ -66,11 +74,49 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{spec.id}{book}: {spec.caption}")
         return 0
     try:
-        paths = figures.save_all(args.out, formats=args.format, ids=args.only)
+        paths = figures.save_all(args.out, formats=args.format, ids=args.only, data=args.data)
     except ValueError as err:
         parser.error(str(err))
     for path in paths:
         print(path)
+    return 0
+
+
+def notebook_files() -> list[Path]:
+    """The chapter notebooks that came with raildyn: in an installed wheel, the package's ``_notebooks``
+    folder (setup.py copies them there); in a clone of the repository, its ``notebooks`` folder.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The eleven ``.ipynb`` files, in chapter order.
+    """
+    package = Path(__file__).resolve().parent
+    for folder in (package / "_notebooks", package.parent / "notebooks"):
+        found = sorted(folder.glob("[0-9][0-9]_*.ipynb"))
+        if found:
+            return found
+    raise FileNotFoundError(
+        f"raildyn at {package} carries no chapter notebooks (no _notebooks, no ../notebooks)"
+    )
+
+
+def _notebooks(parser, args) -> int:
+    """The ``notebooks`` command: copy the chapter notebooks into ``args.out``, never over a reader's own
+    edits unless ``--force``."""
+    import shutil
+
+    out = Path(args.out)
+    if out.exists() and not out.is_dir():
+        parser.error(f"out must be a folder, got the file {args.out!r}")
+    sources = notebook_files()
+    taken = [p.name for p in sources if (out / p.name).exists()]
+    if taken and not args.force:
+        parser.error(f"{args.out!r} already holds {', '.join(taken)}: choose another folder or pass --force")
+    out.mkdir(parents=True, exist_ok=True)
+    for source in sources:
+        shutil.copyfile(source, out / source.name)
+        print(out / source.name)
     return 0
 
 

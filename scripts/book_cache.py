@@ -23,10 +23,11 @@ STAMP = ".raildyn-sources"
 
 
 def digest() -> str:
-    """A digest of every file of the raildyn package (compiled caches aside) and requirements.txt."""
+    """A digest of every file of the raildyn package (compiled caches aside), of the ranges it is installed
+    with (pyproject.toml) and of the versions it runs on (constraints.txt)."""
     files = [p for p in (ROOT / "raildyn").rglob("*") if p.is_file() and "__pycache__" not in p.parts]
     sha = hashlib.sha256()
-    for path in sorted(files) + [ROOT / "requirements.txt"]:
+    for path in sorted(files) + [ROOT / "pyproject.toml", ROOT / "constraints.txt"]:
         sha.update(str(path.relative_to(ROOT)).encode() + b"\0" + path.read_bytes() + b"\0")
     return sha.hexdigest()
 

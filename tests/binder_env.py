@@ -33,7 +33,7 @@ print("notebook ran:", sum(c.cell_type == "code" for c in nb.cells), "code cells
 """
 
 # What repo2docker's base environment brings: a Jupyter kernel and a way to run notebooks.
-BASE = ["ipykernel>=6.29,<8", "nbclient>=0.10,<0.11", "nbformat>=5.10,<6"]
+BASE = ["ipykernel>=6.29,<8", "nbclient>=0.10,<0.12", "nbformat>=5.10,<6"]
 
 
 def _runtime_python() -> str:

@@ -156,7 +156,7 @@ def test_the_apps_widget_manager_is_the_one_voila_was_built_with():
     # Voilà 0.5 carries its own copy of the widget manager, built against its own JupyterLab. An installed
     # jupyterlab_widgets whose manager is newer replaces that copy in the app's pages (the page loads the
     # newest version of a shared module), and there some widgets drew as "model not found" in one page
-    # load of four or five (requirements.txt pins the pair).
+    # load of four or five (pyproject.toml's app extra pins the pair).
     from packaging.version import Version
 
     share = Path(sys.prefix) / "share" / "jupyter"

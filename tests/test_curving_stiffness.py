@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-import sympy as sp  # solves the equilibrium symbolically (requirements.txt: the derivations' tool)
+import sympy as sp  # solves the equilibrium symbolically (a dependency: the derivations' tool)
 from matplotlib.figure import Figure
 
 from raildyn.curving import steady_curving

@@ -1,5 +1,6 @@
 """The figure registry and the ``python -m raildyn figures`` command."""
 
+import csv
 import dataclasses
 
 import numpy as np
@@ -51,6 +52,61 @@ def test_command_line_writes_every_figure(tmp_path, capsys, monkeypatch):
     written = sorted(p.stem for p in tmp_path.glob("*.png"))
     assert written == sorted(figures.REGISTRY)
     assert all((tmp_path / f"{fid}.png").stat().st_size > 1_000 for fid in written)
+
+
+def _read_table(path):
+    with open(path, newline="", encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+def test_each_figures_data_is_written_beside_it_as_drawn(tmp_path, monkeypatch):
+    # A stand-in that draws one of each kind the tables read: a line, a scatter, bars, a colour map with
+    # its bar, a filled contour map; the table must give back exactly the numbers drawn.
+    x = np.linspace(0.0, 2.0, 7)
+    grid = np.arange(6.0).reshape(2, 3)
+
+    def drawn():
+        fig = figures.new_figure(figsize=(6, 2))
+        a, b, c = fig.subplots(1, 3)
+        a.plot(x, x**2, label="square")
+        a.scatter([1.0, 2.0], [3.0, 4.0])
+        a.set(xlabel="speed (m/s)", ylabel="force (kN)", title="one")
+        b.bar([1.0, 2.0], [5.0, 6.0], width=0.5)
+        fig.colorbar(c.pcolormesh([0.0, 1.0, 2.0, 3.0], [0.0, 1.0, 2.0], grid), ax=c, label="stress (MPa)")
+        c.contourf([0.0, 1.0, 2.0], [0.0, 1.0], grid[:, :3], levels=[0.0, 2.5, 5.0])
+        return fig
+
+    spec = figures.REGISTRY["fig1.4"]
+    monkeypatch.setitem(figures.REGISTRY, "fig1.4", dataclasses.replace(spec, draw=drawn))
+    assert main(["figures", "--out", str(tmp_path), "--only", "fig1.4", "--data"]) == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fig1.4.csv", "fig1.4.png"]
+    rows = _read_table(tmp_path / "fig1.4.csv")
+    line = [r for r in rows if r["series"] == "square"]
+    assert [float(r["x"]) for r in line] == list(x) and [float(r["y"]) for r in line] == list(x**2)
+    labels = {(r["panel"], r["x label"], r["y label"]) for r in line}
+    assert labels == {("1: one", "speed (m/s)", "force (kN)")}
+    scatter = [(float(r["x"]), float(r["y"])) for r in rows if r["series"].startswith("points")]
+    assert scatter == [(1.0, 3.0), (2.0, 4.0)]
+    bars = [(float(r["x"]), float(r["y"])) for r in rows if r["panel"] == "2"]
+    assert bars == [(1.0, 5.0), (2.0, 6.0)]  # each bar's centre and top
+    cells = [r for r in rows if r["series"].startswith("map")]
+    assert [float(r["value"]) for r in cells] == list(grid.ravel())
+    assert [(float(r["x"]), float(r["y"])) for r in cells[:2]] == [(0.5, 0.5), (1.5, 0.5)]  # cell centres
+    assert {r["value label"] for r in cells} == {"stress (MPa)"}
+    bands = {float(r["value"]) for r in rows if r["series"].startswith("level")}
+    assert bands == {0.0, 2.5}  # each filled band's outline, at its lower level
+    assert not any(r["panel"] == "4" for r in rows)  # the colour bar is not a panel
+
+
+def test_a_real_figures_table_holds_its_curves(tmp_path):
+    fig = figures.make("fig1.4")
+    written = figures.save_all(tmp_path, ids="fig1.4", data=True, progress=False)
+    (path,) = [p for p in written if p.suffix == ".csv"]
+    rows = _read_table(path)
+    drawn = sum(len(line.get_xdata()) for ax in fig.axes for line in ax.get_lines() if line.get_visible())
+    assert len(rows) >= drawn > 0
+    with pytest.raises(TypeError, match="data must be True or False, got 'yes'"):
+        figures.save_all(tmp_path, ids="fig1.4", data="yes")
 
 
 def test_command_line_lists(capsys):

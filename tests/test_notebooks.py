@@ -141,7 +141,14 @@ def test_no_line_of_inline_mathematics_starts_like_a_list_item():
     assert not found, "\n".join(found)
 
 
-COLAB = re.compile(r'"google\.colab" in sys\.modules and importlib\.util\.find_spec\("raildyn"\) is None')
+COLAB = re.compile(
+    r'if "google\.colab" in sys\.modules:\n    if importlib\.util\.find_spec\("raildyn"\) is None:'
+)
+
+
+def _colab_cell(path):
+    nb = nbformat.read(path, as_version=4)
+    return next(c for c in nb.cells if c.cell_type == "code")
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
@@ -150,12 +157,59 @@ def test_colab_installs_raildyn_first_and_nothing_else_does(path, monkeypatch):
 
     import yaml
 
-    nb = nbformat.read(path, as_version=4)
-    cell = next(c for c in nb.cells if c.cell_type == "code")
+    cell = _colab_cell(path)
     assert COLAB.search(cell.source), f"{path.name}: the first code cell is not the Colab installer"
     assert "remove-cell" in cell.metadata.get("tags", []), f"{path.name}: the installer shows in the book"
     url = yaml.safe_load((ROOT / "book" / "_config.yml").read_text())["repository"]["url"]
     assert f"git+{url}" in cell.source, f"{path.name}: the installer does not install from {url}"
+    # Every chapter's installer is the same cell.
+    assert cell.source == _colab_cell(NOTEBOOKS[0]).source
     # Outside Colab (here, in the book, under Voilà) the cell runs and installs nothing.
     monkeypatch.setattr(subprocess, "check_call", lambda *a, **k: pytest.fail("installed outside Colab"))
     exec(compile(cell.source, path.name, "exec"), {})
+
+
+def _on_colab(monkeypatch, *, raildyn_installed: bool, widgets_version: str | None):
+    """Run the installer as Colab would: a google.colab module whose output records the widget manager
+    switched on, pip and the compile recorded instead of run, and the ipywidgets the session had loaded."""
+    import importlib.util
+    import subprocess
+    import types
+
+    calls, enabled = [], []
+    colab = types.ModuleType("google.colab")
+    colab.output = types.SimpleNamespace(enable_custom_widget_manager=lambda: enabled.append(True))
+    monkeypatch.setitem(sys.modules, "google", types.ModuleType("google"))
+    monkeypatch.setitem(sys.modules, "google.colab", colab)
+    monkeypatch.setattr(subprocess, "check_call", lambda args, **k: calls.append(args[2:]))
+    found = importlib.util.find_spec
+
+    def find_spec(name, *args):
+        return None if name == "raildyn" and not raildyn_installed else found(name, *args)
+
+    monkeypatch.setattr(importlib.util, "find_spec", find_spec)
+    if widgets_version is None:
+        monkeypatch.delitem(sys.modules, "ipywidgets", raising=False)
+    else:
+        monkeypatch.setitem(sys.modules, "ipywidgets", types.SimpleNamespace(__version__=widgets_version))
+    source = _colab_cell(NOTEBOOKS[0]).source
+    exec(compile(source, "colab", "exec"), {})
+    return calls, enabled
+
+
+def test_on_colab_the_installer_installs_compiles_and_switches_on_the_widget_manager(monkeypatch):
+    calls, enabled = _on_colab(monkeypatch, raildyn_installed=False, widgets_version=None)
+    install = ["pip", "install", "-q", "git+https://github.com/raildyn/raildyn"]
+    assert calls == [install, ["raildyn", "compile"]]
+    assert enabled == [True]
+
+
+def test_on_colab_a_second_run_installs_nothing_and_still_switches_on_the_manager(monkeypatch):
+    calls, enabled = _on_colab(monkeypatch, raildyn_installed=True, widgets_version="8.1.5")
+    assert calls == [] and enabled == [True]
+
+
+def test_on_colab_a_session_that_loaded_ipywidgets_7_is_told_to_restart(monkeypatch):
+    # Colab has shipped ipywidgets 7.7; the install puts 8 in its place, which a running session cannot load.
+    with pytest.raises(SystemExit, match="Restart the session"):
+        _on_colab(monkeypatch, raildyn_installed=False, widgets_version="7.7.1")

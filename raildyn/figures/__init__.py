@@ -254,6 +254,7 @@ def save_all(
     formats: Iterable[str] = ("png",),
     ids: Iterable[str] | None = None,
     progress: bool = True,
+    data: bool = False,
 ) -> list[Path]:
     """Write the registered figures (all, or ``ids``) to ``out``; return the paths written.
 
@@ -269,17 +270,21 @@ def save_all(
         writes every registered figure, sorted by id.
     progress : bool, optional
         Show a progress bar (default True).
+    data : bool, optional
+        Also write each figure's data beside its picture, ``<id>.csv``: every point that its panels
+        draw, one row a point, with the panel's axis labels and their units (default False).
 
     Returns
     -------
     list of pathlib.Path
-        The files written, figure by figure and format by format.
+        The files written, figure by figure and format by format (the table after the pictures).
     """
     _checks.instance("out", out, (str, os.PathLike), "str or pathlib.Path")
     formats = _names("formats", formats, FigureCanvasBase.get_supported_filetypes())
     registry = _registry()
     chosen = sorted(registry) if ids is None else _names("ids", ids, registry)
     progress = _checks.flag("progress", progress)
+    data = _checks.flag("data", data)
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     written = []
@@ -289,6 +294,10 @@ def save_all(
             path = out / f"{fid}.{fmt}"
             fig.savefig(path, dpi=150)
             written.append(path)
+        if data:
+            from raildyn.figures import _data
+
+            written.append(_data.write(fig, out / f"{fid}.csv"))
     return written
 
 
