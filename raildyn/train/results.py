@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks, plots
+from raildyn._tables import Tabular
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
@@ -120,7 +121,7 @@ class CouplerPeak:
 
 
 @dataclass(frozen=True)
-class TrainRun:
+class TrainRun(Tabular):
     """A simulated run: a returned run is always a success (failures raise ``SolverError``).
 
     Attributes
@@ -139,6 +140,11 @@ class TrainRun:
     evaluations : int
         Right-hand-side calls made by the integrator.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("t", "s"), ("position", "m"), ("speed", "m/s"), ("coupler_force", "N"))
+    _scalars = (("evaluations", "-"),)
+    _by_row = ("position", "speed", "coupler_force")
 
     t: np.ndarray
     position: np.ndarray
