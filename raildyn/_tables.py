@@ -61,6 +61,13 @@ class Tabular:
     with the row axis last, shape (n, m) against m rows (every other field has its row axis
     first). A field that is None (an optional array not computed) gives no column; a field of
     text (a status per row) gives a column of text.
+
+    Examples
+    --------
+    >>> from raildyn.vibration import modal_analysis
+    >>> modes = modal_analysis([[1.0, 0.0], [0.0, 2.0]], [[300.0, -100.0], [-100.0, 100.0]])
+    >>> modes.table()[0]
+    ['natural_frequencies (rad/s)', 'mode_shapes[0] (kg^(−1/2))', 'mode_shapes[1] (kg^(−1/2))']
     """
 
     _columns: ClassVar[tuple[tuple[str, str], ...]] = ()
