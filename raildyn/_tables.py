@@ -10,8 +10,9 @@ Conventions, the same for every result:
 * a column is named ``"field (unit)"``, e.g. ``"t (s)"``; a dimensionless quantity has the unit
   ``-`` (written ``"damping_ratios (-)"``), so that every name carries its unit in parentheses;
 * a field of more than one axis gives one column for each entry across the row axis, named by
-  the result's own coordinate labels where it carries them (``"x[bogie y] (m)"``), else by its
-  index (``"x[0] (m)"``, ``"wheel_loads[0][1] (N)"``);
+  the result's own coordinate labels where it carries them (``"frequencies_hz[wheelset y] (Hz)"``),
+  or the values of the other axis where they are numbers (``"deflection[speeds=20.0] (m)"``), else
+  by its index (``"x[0] (m)"``, ``"wheel_loads[0][1] (N)"``);
 * a complex field gives two columns, its real and imaginary parts (``"eigenvalues[0].real
   (rad/s)"``);
 * the result's scalars (a critical speed, a resonance speed) are no columns: they go in the
@@ -113,10 +114,11 @@ class Tabular:
             parts = [(field, value)]
         else:
             flat = value.reshape(value.shape[0], -1)
-            labels = dict(self._labels).get(field)
-            labels = None if labels is None else getattr(self, labels)
+            source = dict(self._labels).get(field)
+            labels = None if source is None else getattr(self, source)
             if labels is not None and len(labels) == flat.shape[1] and value.ndim == 2:
-                tags = [str(label) for label in labels]
+                # a number alone does not say what it is: "deflection[speeds=20.0]", not "deflection[20.0]"
+                tags = [label if isinstance(label, str) else f"{source}={label}" for label in labels]
             else:
                 tags = [
                     "][".join(map(str, index)) for index in itertools.product(*map(range, value.shape[1:]))
