@@ -19,7 +19,7 @@ Conventions, the same for every result:
   DataFrame's ``attrs`` and in the CSV's leading comment lines ``# name (unit) = value``, under
   the same ``"name (unit)"`` keys;
 * the CSV holds every number to full precision (the shortest text that reads back to the same
-  float), so that it reads back exactly.
+  float), so that it reads back exactly; a flag is written 1 or 0 (the DataFrame keeps it a bool).
 
 pandas is imported inside :meth:`Tabular.to_pandas` only: importing a model module never
 imports it.

@@ -196,6 +196,10 @@ def _check_table(result, tmp_path):
     names, columns = result.table()
     rows = len(columns[0])
     assert rows >= 1 and all(column.shape == (rows,) for column in columns)
+    # as many rows as the row axis has entries: the first declared field that the result holds
+    field = next(f for f, _ in type(result)._columns if getattr(result, f) is not None)
+    axis = np.atleast_1d(getattr(result, field))
+    assert rows == (axis.shape[-1] if field in type(result)._by_row else axis.shape[0])
     assert len(set(names)) == len(names), "two columns of one name"
     assert all(NAME.match(name) and NAME.match(name)["unit"] for name in names), names
     # the CSV reads back exactly: the same names, and every number to the last bit
