@@ -70,7 +70,6 @@ PARAMETER_SETS = {
 # Results whose arrays share no row axis, and why (a single state, or a map over a grid).
 NO_COMMON_AXIS = {
     "CurvingMap": "a map over radii and speeds, each cell holding a value per wheelset",
-    "QuasiStatic": "one value per vehicle and one per coupler: two lengths, n and n - 1",
     "WheelClimb": "quotients of an axle or of a history of any rank: no fixed row axis",
     "LimitCycle": "one end state; its measures are scalars",
     "PeriodicOrbit": "one state of the orbit and its multipliers: two unrelated vectors",

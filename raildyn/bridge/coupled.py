@@ -78,7 +78,8 @@ class BridgeCrossing(Tabular):
     Each array is finite.
     """
 
-    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # the modal and vehicle states (their units mixed along an axis) are no columns.
     _columns = (
         ("time", "s"), ("deflection", "m"), ("static_deflection", "m"), ("moment", "N·m"),
         ("deck_acceleration", "m/s²"), ("contact_forces", "N"),

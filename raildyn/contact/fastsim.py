@@ -79,7 +79,8 @@ class FastsimResult(Tabular):
     non-empty shape S + (n_y, n_x), and ``adhesion`` holds bools.
     """
 
-    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # a row per state; the fields over the ellipse (two more axes) are no columns.
     _columns = (("fx", "N"), ("fy", "N"), ("mz", "N m"))
 
     fx: np.ndarray | float

@@ -398,7 +398,8 @@ class ConvergenceStudy(Tabular):
         log₂ of successive error ratios over log₂ of the step ratios: the measured order.
     """
 
-    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # ``orders`` (one fewer, between successive steps) is no column.
     _columns = (("step_counts", "-"), ("dt_over_T", "-"), ("max_error_m", "m"))
 
     method: str

@@ -23,7 +23,7 @@ __all__ = ["CouplerPeak", "QuasiStatic", "TrainRun"]
 
 
 @dataclass(frozen=True)
-class QuasiStatic:
+class QuasiStatic(Tabular):
     """Quasi-static state of a train.
 
     Attributes
@@ -40,6 +40,11 @@ class QuasiStatic:
         Distance of each coupler behind the front of the train, m
         (``Consist.coupler_offsets``).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # a row per coupler, front first; the per-vehicle forces and positions (one more) are no columns.
+    _columns = (("coupler_offsets", "m"), ("coupler_force", "N"))
+    _scalars = (("acceleration", "m/s²"),)
 
     coupler_force: np.ndarray
     acceleration: float

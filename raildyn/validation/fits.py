@@ -113,7 +113,8 @@ class ParameterFit(Tabular):
         The model at the estimates.
     """
 
-    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # the record and the fit along time; the estimates, one per parameter, are no columns.
     _columns = (("time", "s"), ("measured", "record's unit"), ("fitted", "record's unit"))
     _scalars = (("confidence", "-"), ("residual_rms", "record's unit"))
     _by_row = ("measured", "fitted")

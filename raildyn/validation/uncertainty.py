@@ -81,7 +81,8 @@ class MonteCarloResult(Tabular):
         The outputs' percentiles (``numpy.percentile``, linear interpolation).
     """
 
-    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # a row per evaluation; the statistics over them (mean, std, bands) are no columns.
     _columns = (("samples", "unit of its parameter"), ("outputs", "model's unit"))
     _labels = (("samples", "names"),)
 

@@ -292,7 +292,8 @@ class RockAndRoll(Tabular):
         Roll histories, rad, of either sign.
     """
 
-    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # the roll histories (a row per speed along ``t``) are no columns.
     _columns = (("speeds", "m/s"), ("roll_amplitude", "rad"))
     _scalars = (("resonance_speed", "m/s"),)
 
