@@ -181,8 +181,15 @@ def _function(obj):
 
 
 def public_callables() -> dict[int, str]:
-    """Identity → a public dotted name, for every public function, class and public method."""
+    """Identity → a public dotted name, for every public function, class and public method.
+
+    A public method that a public class inherits from a base class of a private module (the
+    ground floor's :class:`raildyn._tables.Tabular`, whose ``to_csv`` every result shares) is
+    public too, under the first public class that has it: it is reached through no public
+    name of its own.
+    """
     found: dict[int, str] = {}
+    inherited: dict[int, str] = {}
     for module_name in PUBLIC:
         module = importlib.import_module(module_name)
         for name in module.__all__:
@@ -195,7 +202,19 @@ def public_callables() -> dict[int, str]:
                     member = _function(member)
                     if not attr.startswith("_") and inspect.isfunction(member) and id(member) not in found:
                         found[id(member)] = f"{module_name}.{name}.{attr}"
-    return found
+                for base in obj.__mro__[1:]:
+                    if not _private_module(base.__module__):
+                        continue
+                    for attr, member in vars(base).items():
+                        member = _function(member)
+                        if not attr.startswith("_") and inspect.isfunction(member):
+                            inherited.setdefault(id(member), f"{module_name}.{name}.{attr}")
+    return {**inherited, **found}
+
+
+def _private_module(name: str) -> bool:
+    """Whether ``name`` is a private module of raildyn (a part of its dotted name starts with ``_``)."""
+    return name.startswith("raildyn.") and any(part.startswith("_") for part in name.split(".")[1:])
 
 
 # --------------------------------------------------------------------------- the changes

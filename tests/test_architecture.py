@@ -5,7 +5,8 @@ a function's lazy one included) and line counts.
   each other without a circle, so they stand in layers, each using only those below it.
 * No package imports another's private name (a module or object whose name starts with an underscore);
   ``raildyn._numbers``, ``raildyn._checks`` and ``raildyn._progress`` are the shared ground floor that
-  every package uses, with ``raildyn._deprecated`` (the old names kept for one issue).
+  every package uses, with ``raildyn._deprecated`` (the old names kept for one issue) and ``raildyn._tables``
+  (the one table, CSV and DataFrame of every result).
 * A module holds at most 600 lines, or its docstring says why it is not split; none holds more than 800.
 """
 
@@ -24,6 +25,7 @@ SHARED = {
     "raildyn._progress",
     "raildyn._compiled",
     "raildyn._deprecated",
+    "raildyn._tables",  # the mixin that gives every result with arrays its table, CSV and DataFrame
 }
 LONG, LONGEST = 600, 800
 KNOWN_REACHES: set[str] = set()  # none: every name another package needs is public

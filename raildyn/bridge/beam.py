@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks, _deprecated
+from raildyn._tables import Tabular
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.optimize,
 # raildyn.bridge._kernel
@@ -131,7 +132,7 @@ class SimplySupportedBeam:
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
-class MovingForceResponse:
+class MovingForceResponse(Tabular):
     """The deflection at one point of the beam while a force crosses it, for several speeds.
 
     Attributes
@@ -153,6 +154,13 @@ class MovingForceResponse:
 
     Each array is finite.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units; a
+    # row for each time step, a column for each speed ("deflection[speeds=20.0] (m)").
+    _columns = (("time", "s"), ("deflection", "m"), ("acceleration", "m/s²"))
+    _scalars = (("position", "m"), ("static", "m"))
+    _labels = (("time", "speeds"), ("deflection", "speeds"), ("acceleration", "speeds"))
+    _by_row = ("time", "deflection", "acceleration")
 
     speeds: np.ndarray
     time: np.ndarray

@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.bridge.loads import AxleSequence, MovingLoad, moving_load
 from raildyn.errors import SolverError
 from raildyn.plots import axes_or_new
@@ -44,7 +45,7 @@ _TABLE_POINTS_PER_MODE = 200  # Hermite tables: φ to ~1e-10 of its peak (module
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
-class BridgeCrossing:
+class BridgeCrossing(Tabular):
     """The beam and the vehicle while the vehicle crosses, and after it has left.
 
     Attributes
@@ -76,6 +77,14 @@ class BridgeCrossing:
 
     Each array is finite.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # the modal and vehicle states (their units mixed along an axis) are no columns.
+    _columns = (
+        ("time", "s"), ("deflection", "m"), ("static_deflection", "m"), ("moment", "N·m"),
+        ("deck_acceleration", "m/s²"), ("contact_forces", "N"),
+    )  # fmt: skip
+    _scalars = (("speed", "m/s"), ("at", "m"))
 
     speed: float
     at: float

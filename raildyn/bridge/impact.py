@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.bridge import _impact_reference
 from raildyn.bridge.defects import MAX_DIP_ANGLE, DippedJoint, Roughness, WheelFlat
 from raildyn.bridge.sleepers import DiscreteTrack, _shape
@@ -58,7 +59,7 @@ __all__ = [
 
 
 @dataclass(frozen=True, eq=False)
-class WheelOnTrack:
+class WheelOnTrack(Tabular):
     """A run of wheels over a discrete track (:func:`wheel_on_track`): one row per record, one column
     per wheel (the leading wheel first).
 
@@ -96,6 +97,14 @@ class WheelOnTrack:
     speed : float
         V, m/s.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("t", "s"), ("x", "m"), ("contact_force", "N"), ("wheel", "m"), ("rail", "m"),
+        ("irregularity", "m"), ("pad_forces", "N"), ("ballast_forces", "N"), ("energy", "J"), ("work", "J"),
+        ("dissipated", "J"),
+    )  # fmt: skip
+    _scalars = (("speed", "m/s"),)
 
     t: np.ndarray
     x: np.ndarray

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
 from raildyn.contact.fastsim import fastsim
 from raildyn.contact.johnson_vermeulen import johnson_vermeulen
@@ -38,7 +39,7 @@ _STYLES = dict(zip(CREEP_LAWS, (":", "-", "-", "--", "-.", "o"), strict=True))
 
 
 @dataclass(frozen=True)
-class LateralCreepCurves:
+class LateralCreepCurves(Tabular):
     """Lateral creep force against lateral creepage by every law of chapter 4 (no longitudinal creepage).
 
     Attributes
@@ -60,6 +61,13 @@ class LateralCreepCurves:
 
     Every number is finite, and the curves are 1-D, non-empty and of the shape of ``lateral``.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("lateral", "-"), ("kalker_linear", "N"), ("carter", "N"), ("johnson_vermeulen", "N"),
+        ("shen_hedrick_elkins", "N"), ("polach", "N"), ("fastsim", "N"),
+    )  # fmt: skip
+    _scalars = (("spin", "1/m"), ("normal_load", "N"), ("friction", "-"), ("a", "m"), ("b", "m"))
 
     lateral: np.ndarray
     spin: float

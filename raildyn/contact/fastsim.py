@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.constants import STEEL_POISSON_RATIO, STEEL_SHEAR_MODULUS
 from raildyn.contact.kalker import _ratio, kalker_coefficients
 
@@ -43,7 +44,7 @@ __all__ = ["FastsimResult", "Flexibilities", "fastsim", "flexibilities"]
 
 
 @dataclass(frozen=True)
-class FastsimResult:
+class FastsimResult(Tabular):
     """Forces and (optionally) the fields over the contact ellipse from FASTSIM.
 
     Shapes: the forces have the broadcast shape S of the inputs; the fields
@@ -77,6 +78,10 @@ class FastsimResult:
     The fields (``x`` to ``adhesion``) are all given or all None; given, they share one
     non-empty shape S + (n_y, n_x), and ``adhesion`` holds bools.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # a row per state; the fields over the ellipse (two more axes) are no columns.
+    _columns = (("fx", "N"), ("fy", "N"), ("mz", "N m"))
 
     fx: np.ndarray | float
     fy: np.ndarray | float

@@ -29,6 +29,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.contact.conicity import kinematic_conicity
 from raildyn.contact.trace_line import _RADIUS_MAX, MAX_YAW, trace_line
 
@@ -165,7 +166,7 @@ class RailProfile:
 
 
 @dataclass(frozen=True)
-class ContactGeometry:
+class ContactGeometry(Tabular):
     """Rigid contact points of a wheelset against its lateral shift y (arrays over y).
 
     Every field but ``shift`` stacks the left and the right contact: shape (2, n).
@@ -194,6 +195,14 @@ class ContactGeometry:
 
     Every number is finite; n ≥ 1.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("shift", "m"), ("wheel_position", "m"), ("rail_position", "m"), ("rolling_radius", "m"),
+        ("contact_angle", "rad"), ("roll", "rad"), ("lead", "m"),
+    )  # fmt: skip
+    _scalars = (("yaw", "rad"),)
+    _by_row = ("wheel_position", "rail_position", "rolling_radius", "contact_angle", "lead")
 
     shift: np.ndarray
     wheel_position: np.ndarray

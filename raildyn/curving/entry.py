@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.stability.nonlinear import simulate
 from raildyn.track import Curve
 from raildyn.wheelset import NonlinearLateral, wheel_forces
@@ -26,7 +27,7 @@ _LEAD_IN = 5.0
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
-class CurveEntry:
+class CurveEntry(Tabular):
     """A run through a curve's entry, sampled at the solver's steps.
 
     Attributes
@@ -49,6 +50,11 @@ class CurveEntry:
 
     All finite and of the shapes above.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("distance", "m"), ("offset", "m"), ("angle_of_attack", "rad"), ("flange_force", "N"))
+    _scalars = (("speed", "m/s"),)
+    _by_row = ("offset", "angle_of_attack", "flange_force")
 
     speed: float
     curve: Curve

@@ -96,6 +96,14 @@ class QuasiStaticCurving(SteadyCurving):
     (Q_o − Q_i) tan ϑ₀, and of the flange's relief, a few per cent of the flange force.
     """
 
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("positions", "m"), ("offset", "m"), ("angle_of_attack", "rad"), ("longitudinal_creep_force", "N"),
+        ("lateral_creep_force", "N"), ("guiding_force", "N"), ("flange_force", "N"),
+        ("flange_contact", "-"), ("wear_number", "N"), ("wheel_lateral", "N"), ("wheel_vertical", "N"),
+    )  # fmt: skip
+    _scalars = (("radius", "m"), ("speed", "m/s"), ("cant", "m"), ("unbalanced_acceleration", "m/s²"))
+
     guiding_force: np.ndarray
     flange_force: np.ndarray
     flange_contact: np.ndarray

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.constants import GRAVITY
 from raildyn.curving.climb import wheel_climb
 from raildyn.curving.quasi_static import QuasiStaticCurving, quasi_static_curving
@@ -218,7 +219,7 @@ def _twist(name: str, value) -> float:
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
-class SafetyAssessment:
+class SafetyAssessment(Tabular):
     """The running-safety criteria of one vehicle through one curve, each with its limit.
 
     Attributes
@@ -271,6 +272,13 @@ class SafetyAssessment:
         The quasi-static equilibrium the curve's criteria come from (a nearby assessment's
         ``start``).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("wheel_quotient", "-"), ("axle_sum", "-"), ("track_shift_force", "N"))
+    _scalars = (
+        ("speed", "m/s"), ("radius", "m"), ("cant", "m"), ("cant_deficiency", "m"), ("nadal_limit", "-"),
+        ("weinstock_limit", "-"), ("prudhomme_limit", "N"),
+    )  # fmt: skip
 
     speed: float
     radius: float

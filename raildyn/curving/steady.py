@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.contact.creepages import wheelset_creepages
 from raildyn.linear_model import as_linear_system
 from raildyn.track import MAXIMUM_CANT, MINIMUM_RADIUS, unbalanced_acceleration
@@ -32,7 +33,7 @@ __all__ = ["SteadyCurving", "steady_curving"]
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
-class SteadyCurving:
+class SteadyCurving(Tabular):
     """A linear model's steady state in a curve to the left.
 
     Attributes
@@ -66,6 +67,13 @@ class SteadyCurving:
 
     All arrays are finite; the scalars are checked as above.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("positions", "m"), ("offset", "m"), ("angle_of_attack", "rad"), ("longitudinal_creep_force", "N"),
+        ("lateral_creep_force", "N"),
+    )  # fmt: skip
+    _scalars = (("radius", "m"), ("speed", "m/s"), ("cant", "m"), ("unbalanced_acceleration", "m/s²"))
 
     radius: float
     speed: float

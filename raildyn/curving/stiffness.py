@@ -40,6 +40,7 @@ from functools import lru_cache
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.curving.steady import steady_curving
 from raildyn.linear_model import AffineFamily, as_linear_system
 from raildyn.stability import CRITICAL_SPEED_STATUSES, MAX_SCAN_SPEEDS, StateMatrices, critical_speeds
@@ -118,7 +119,7 @@ def bending_shear_stiffness(bogie: Bogie) -> BendingShear:
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity
-class SelfSteeringCurving:
+class SelfSteeringCurving(Tabular):
     """The closed-form steady state of two wheelsets joined by k_b and k_sh in a curve at balance speed.
 
     Attributes
@@ -133,6 +134,10 @@ class SelfSteeringCurving:
         Leading and trailing wheelset's yaw from the local tangent, positive towards the
         outer rail, rad.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("offset", "m"), ("angle_of_attack", "rad"))
+    _scalars = (("radius", "m"),)
 
     radius: float
     stiffness: BendingShear
@@ -209,7 +214,7 @@ def self_steering_curving(bogie: Bogie, radius) -> SelfSteeringCurving:
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity
-class StabilityCurving:
+class StabilityCurving(Tabular):
     """Critical speed and angle of attack in a curve against the primary yaw stiffness.
 
     Attributes
@@ -234,6 +239,13 @@ class StabilityCurving:
     speed_range : tuple of float
         The speeds searched for the critical speed, m/s.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("yaw_stiffness", "N·m/rad"), ("critical_speed", "m/s"), ("status", "-"),
+        ("angle_of_attack", "rad"),
+    )  # fmt: skip
+    _scalars = (("speed", "m/s"), ("radius", "m"), ("cant", "m"))
 
     yaw_stiffness: np.ndarray
     critical_speed: np.ndarray

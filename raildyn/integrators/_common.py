@@ -22,6 +22,7 @@ import scipy.linalg
 
 from raildyn import _checks, plots
 from raildyn._checks import array, scalar, square_matrix, time_grid
+from raildyn._tables import Tabular
 from raildyn.errors import SolverError
 from raildyn.vibration import first_order_matrix
 
@@ -162,7 +163,7 @@ class Deviation:
 
 
 @dataclass(frozen=True)
-class Maxima:
+class Maxima(Tabular):
     """The local maxima of one coordinate of a time history.
 
     Attributes
@@ -172,6 +173,9 @@ class Maxima:
     values : ndarray, shape (k,)
         The quantity there, in its unit (m, m/s or m/s²; rad for a rotation), finite.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("times", "s"), ("values", "m, m/s or m/s²; rad for a rotation"))
 
     times: np.ndarray
     values: np.ndarray
@@ -190,7 +194,7 @@ class Maxima:
 
 
 @dataclass(frozen=True)
-class IntegrationResult:
+class IntegrationResult(Tabular):
     """The time history computed by one integrator (a returned result is a success).
 
     Attributes
@@ -210,6 +214,11 @@ class IntegrationResult:
 
     All numbers finite; t strictly increasing, and x, v, a of shape (n, m) with n >= 1.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("t", "s"), ("x", "m"), ("v", "m/s"), ("a", "m/s²"))
+    _scalars = (("steps", "-"), ("iterations", "-"))
+    _by_row = ("x", "v", "a")
 
     t: np.ndarray
     x: np.ndarray

@@ -18,6 +18,7 @@ import numpy as np
 
 from raildyn import _checks, plots
 from raildyn._checks import array, integer, scalar, square_matrix
+from raildyn._tables import Tabular
 from raildyn.integrators._common import FIRST_ORDER, METHODS, PARAMETERS, draw_line, highest_frequency
 from raildyn.integrators.amplification import (
     MAX_DT_OVER_T,  # noqa: F401  (its old home: importable from here for one more issue)
@@ -162,7 +163,7 @@ _AD_SHOWN = 1.0e3
 
 
 @dataclass(frozen=True)
-class SchemeAccuracy:
+class SchemeAccuracy(Tabular):
     """Spectral radius, period elongation and amplitude decay of one scheme against Δt/T.
 
     Attributes
@@ -188,6 +189,13 @@ class SchemeAccuracy:
     period elongation is documented to hold it and an infinite limit only for an
     unconditionally stable scheme.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("dt_over_T", "-"), ("spectral_radius", "-"), ("period_elongation_fraction", "-"),
+        ("amplitude_decay_fraction", "-"),
+    )  # fmt: skip
+    _scalars = (("damping_ratio", "-"), ("stability_limit_dt_over_T", "-"))
 
     method: str
     parameters: dict
@@ -371,7 +379,7 @@ _STUDY_MAX_STEPS = 100_000
 
 
 @dataclass(frozen=True)
-class ConvergenceStudy:
+class ConvergenceStudy(Tabular):
     """The error of a scheme at several steps on a problem with an exact answer, and the order it shows.
 
     Attributes
@@ -389,6 +397,10 @@ class ConvergenceStudy:
     orders : ndarray, shape (k − 1,)
         log₂ of successive error ratios over log₂ of the step ratios: the measured order.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # ``orders`` (one fewer, between successive steps) is no column.
+    _columns = (("step_counts", "-"), ("dt_over_T", "-"), ("max_error_m", "m"))
 
     method: str
     parameters: dict

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.errors import SolverError
 from raildyn.integrators import _dopri
 
@@ -151,7 +152,7 @@ def _failure(kind: str, label: str, *, time: float, step=None, limit=None, detai
 
 
 @dataclass(frozen=True)
-class Trajectory:
+class Trajectory(Tabular):
     """A run sampled at its output times (or, in a failure's ``partial``, those it passed).
 
     Attributes
@@ -167,6 +168,11 @@ class Trajectory:
     steps : int
         Steps accepted, >= 0.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("t", "s"), ("y", "caller's units"))
+    _scalars = (("evaluations", "-"), ("steps", "-"))
+    _by_row = ("y",)
 
     t: np.ndarray
     y: np.ndarray

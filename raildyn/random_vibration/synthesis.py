@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.random_vibration._common import (
     _MAX_RECORD,
     _MAX_VALUES,
@@ -70,7 +71,7 @@ class Spectrum:
 
 
 @dataclass(frozen=True)
-class SpectralLines:
+class SpectralLines(Tabular):
     """The spectral lines of a synthesized sample (:func:`synthesis_lines`).
 
     Attributes
@@ -78,10 +79,14 @@ class SpectralLines:
     omega : ndarray, shape (k,)
         Line frequencies kept, rad/s, > 0 and strictly increasing.
     psd : ndarray, shape (k,)
-        One-sided PSD at those frequencies, per rad/s, >= 0.
+        One-sided PSD at those frequencies, (signal unit)²/(rad/s), >= 0.
     d_omega : float
         Line spacing Δω = 2π/(n·dt), rad/s, > 0.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("omega", "rad/s"), ("psd", "(signal unit)²/(rad/s)"))
+    _scalars = (("d_omega", "rad/s"),)
 
     omega: np.ndarray
     psd: np.ndarray

@@ -17,6 +17,7 @@ import numpy as np
 from raildyn import _checks
 from raildyn._checks import array, integer, positive, scalar
 from raildyn._progress import progress_bar
+from raildyn._tables import Tabular
 from raildyn.errors import SolverError
 from raildyn.stability.nonlinear import (
     _MAX_DISPLACEMENT,
@@ -48,7 +49,7 @@ _SHOOTING_EVALUATIONS = 100_000
 
 
 @dataclass(frozen=True)
-class BifurcationDiagram:
+class BifurcationDiagram(Tabular):
     """Limit-cycle amplitude against speed and the nonlinear critical speed.
 
     Attributes
@@ -68,6 +69,10 @@ class BifurcationDiagram:
     threshold : float
         Amplitude of the oscillation below which the motion counts as decayed, m (> 0).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("speeds", "m/s"), ("amplitudes", "m"), ("frequencies_hz", "Hz"), ("hunting", "-"))
+    _scalars = (("nonlinear_critical_speed", "m/s"), ("threshold", "m"))
 
     speeds: np.ndarray
     amplitudes: np.ndarray

@@ -24,6 +24,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import array, integer, scalar
+from raildyn._tables import Tabular
 from raildyn.constants import MAXIMUM_SPEED
 from raildyn.errors import SolverError
 from raildyn.stability._shooting import compiled, flows
@@ -56,7 +57,7 @@ _MAX_HALVINGS = 8  # of one step, before the continuation gives up: 1/256 of the
 
 
 @dataclass(frozen=True)
-class LimitCycleBranch:
+class LimitCycleBranch(Tabular):
     """A branch of limit cycles against speed, stable and unstable, with its folds.
 
     The points are in the order of the continuation (arclength increasing): from the starting
@@ -91,6 +92,13 @@ class LimitCycleBranch:
     fold_amplitude : float
         The amplitude at the fold, m (≥ 0; 0 where there is no fold).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("speeds", "m/s"), ("amplitudes", "m"), ("periods", "s"), ("stable", "-"), ("arclength", "-"),
+        ("multipliers", "-"), ("states", "units of the model's state"),
+    )  # fmt: skip
+    _scalars = (("fold_speed", "m/s"), ("fold_amplitude", "m"))
 
     speeds: np.ndarray
     amplitudes: np.ndarray

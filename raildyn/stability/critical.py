@@ -20,6 +20,7 @@ import numpy as np
 from raildyn import _checks
 from raildyn._checks import array, integer, positive
 from raildyn._progress import progress_bar
+from raildyn._tables import Tabular
 from raildyn.linear_model import LinearSystem, as_linear_system
 from raildyn.stability.search import (
     CRITICAL_SPEED_STATUSES,
@@ -161,7 +162,7 @@ def critical_speed(model, speed_range=(1.0, 150.0), *, tol: float = 0.01, scan: 
 
 
 @dataclass(frozen=True)
-class CriticalSpeedMap:
+class CriticalSpeedMap(Tabular):
     """Critical speed over a grid of two parameters.
 
     Attributes
@@ -173,6 +174,12 @@ class CriticalSpeedMap:
     x_name, y_name : str
         Names of the two parameters (with their units), used as axis labels.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units; the
+    # map as laid out, a row for each y, a column of speeds for each x ("speeds[x=0.5] (m/s)").
+    _columns = (("y", "units of the parameters"), ("speeds", "m/s"))
+    _scalars = (("x_name", "-"), ("y_name", "-"))  # what x and y are, with their units
+    _labels = (("speeds", "x"),)
 
     x: np.ndarray
     y: np.ndarray

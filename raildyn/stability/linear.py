@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.linear_model import as_linear_system
 
 # Moved to raildyn.stability.critical; re-exported so that the old import path keeps working for one
@@ -218,7 +219,7 @@ def track_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> TrackedModes:
 
 
 @dataclass(frozen=True)
-class ModeSweep:
+class ModeSweep(Tabular):
     """Modes of a lateral model across speed, each column one mode followed by MAC.
 
     Attributes
@@ -239,6 +240,13 @@ class ModeSweep:
     coordinates : tuple of str
         The model's coordinate names.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("speeds", "m/s"), ("eigenvalues", "1/s"), ("frequencies_hz", "Hz"), ("damping_ratios", "-"),
+        ("shapes", "-"),
+    )  # fmt: skip
+    _labels = (("eigenvalues", "labels"), ("frequencies_hz", "labels"), ("damping_ratios", "labels"))
 
     speeds: np.ndarray
     eigenvalues: np.ndarray

@@ -21,6 +21,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import array, integer, positive, scalar
+from raildyn._tables import Tabular
 from raildyn.wheelset import NonlinearModel
 
 __all__ = [
@@ -36,7 +37,7 @@ __all__ = [
 
 
 @dataclass(frozen=True)
-class NonlinearRun:
+class NonlinearRun(Tabular):
     """A time history of a nonlinear lateral model.
 
     Attributes
@@ -50,6 +51,11 @@ class NonlinearRun:
     lateral_index : int
         Row of the first wheelset's lateral displacement.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("t", "s"), ("states", "m, rad, m/s, rad/s"))
+    _scalars = (("speed", "m/s"), ("lateral_index", "-"))
+    _by_row = ("states",)
 
     speed: float
     t: np.ndarray

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.errors import SolverError
 from raildyn.linear_model import LinearSystem, as_linear_system
 
@@ -281,7 +282,7 @@ def _crossings(state: StateMatrices, low: float, high: float, tol: float, scan: 
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity
-class CriticalSpeeds:
+class CriticalSpeeds(Tabular):
     """The linear critical speed of each system of a stack, from one batched search.
 
     Attributes
@@ -292,6 +293,9 @@ class CriticalSpeeds:
     status : tuple of str, (m,)
         Each one of :data:`CRITICAL_SPEED_STATUSES`.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("speeds", "m/s"), ("status", "-"))
 
     speeds: np.ndarray
     status: tuple

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.constants import MAXIMUM_SPEED
 
 __all__ = [
@@ -146,7 +147,7 @@ def dipped_joints(
 
 
 @dataclass(frozen=True)
-class JointedTrack:
+class JointedTrack(Tabular):
     """Vertical profiles of the two rails of jointed track (or their derivatives).
 
     Attributes
@@ -158,6 +159,9 @@ class JointedTrack:
     arrangement : str
         "staggered" or "in_phase".
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("x", "m"), ("left", "m"), ("right", "m"))
 
     x: np.ndarray
     left: np.ndarray

@@ -24,6 +24,7 @@ import numpy as np
 
 from raildyn import _checks, plots
 from raildyn import random_vibration as rv
+from raildyn._tables import Tabular
 from raildyn.track.deterministic import _vehicle_speed
 from raildyn.track.spectra import COMPONENTS, _wavenumber_band, track_psd
 
@@ -54,7 +55,7 @@ _PROBE = np.array([0.1, 1.0, 10.0])
 
 
 @dataclass(frozen=True)
-class IrregularitySample:
+class IrregularitySample(Tabular):
     """A sampled irregularity along the track.
 
     Attributes
@@ -69,6 +70,11 @@ class IrregularitySample:
     variance : float
         ∫_band S dΩ, m², >= 0; the mean square of every sample over its length.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("x", "m"), ("z", "m"))
+    _scalars = (("variance", "m²"),)
+    _by_row = ("z",)
 
     x: np.ndarray
     z: np.ndarray
@@ -255,7 +261,7 @@ class ComponentVariances:
 
 
 @dataclass(frozen=True)
-class TwoRailIrregularity:
+class TwoRailIrregularity(Tabular):
     """A two-rail track sample: four irregularities along distance, consistent by construction.
 
     The vertical profile and alignment are those of the track centreline, the
@@ -277,6 +283,8 @@ class TwoRailIrregularity:
     variances : ComponentVariances
         ∫_band S dΩ of each component, m².
     """
+
+    _columns = (("x", "m"), ("vertical", "m"), ("alignment", "m"), ("cross_level", "m"), ("gauge", "m"))
 
     x: np.ndarray
     vertical: np.ndarray

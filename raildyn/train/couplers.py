@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks, plots
+from raildyn._tables import Tabular
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
@@ -219,7 +220,7 @@ class DraftGear:
 
 
 @dataclass(frozen=True)
-class DraftGearLoop:
+class DraftGearLoop(Tabular):
     """A slow load–unload loop of a draft gear.
 
     Attributes
@@ -231,6 +232,10 @@ class DraftGearLoop:
     energy : float
         Energy absorbed per cycle (the area of the loop), J.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("deflection", "m"), ("force", "N"))
+    _scalars = (("energy", "J"),)
 
     deflection: np.ndarray
     force: np.ndarray

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.constants import GRAVITY
 from raildyn.train.vehicles import Consist
 
@@ -90,7 +91,7 @@ def _truck_loads(consist: Consist, end_force: np.ndarray) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class CouplerEffects:
+class CouplerEffects(Tabular):
     """Lateral and vertical effects of coupler forces on each vehicle.
 
     Attributes
@@ -107,6 +108,9 @@ class CouplerEffects:
         For each coupler: "string-lining" (tension on a curve), "jack-knifing"
         (compression on a curve) or "" (straight or no force).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("lateral_force", "N"), ("l_over_v", "-"), ("vertical_force", "N"), ("unloading", "-"))
 
     lateral_force: np.ndarray
     l_over_v: np.ndarray

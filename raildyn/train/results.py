@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks, plots
+from raildyn._tables import Tabular
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
 
@@ -22,7 +23,7 @@ __all__ = ["CouplerPeak", "QuasiStatic", "TrainRun"]
 
 
 @dataclass(frozen=True)
-class QuasiStatic:
+class QuasiStatic(Tabular):
     """Quasi-static state of a train.
 
     Attributes
@@ -39,6 +40,11 @@ class QuasiStatic:
         Distance of each coupler behind the front of the train, m
         (``Consist.coupler_offsets``).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # a row per coupler, front first; the per-vehicle forces and positions (one more) are no columns.
+    _columns = (("coupler_offsets", "m"), ("coupler_force", "N"))
+    _scalars = (("acceleration", "m/s²"),)
 
     coupler_force: np.ndarray
     acceleration: float
@@ -120,7 +126,7 @@ class CouplerPeak:
 
 
 @dataclass(frozen=True)
-class TrainRun:
+class TrainRun(Tabular):
     """A simulated run: a returned run is always a success (failures raise ``SolverError``).
 
     Attributes
@@ -139,6 +145,11 @@ class TrainRun:
     evaluations : int
         Right-hand-side calls made by the integrator.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("t", "s"), ("position", "m"), ("speed", "m/s"), ("coupler_force", "N"))
+    _scalars = (("evaluations", "-"),)
+    _by_row = ("position", "speed", "coupler_force")
 
     t: np.ndarray
     position: np.ndarray

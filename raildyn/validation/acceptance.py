@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.plots import COLORS, STYLE, axes_or_new
 from raildyn.validation import _records
 
@@ -64,7 +65,7 @@ def percentiles(record, percent=(0.15, 99.85)) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class SlidingRMS:
+class SlidingRMS(Tabular):
     """A sliding RMS of a record (:func:`sliding_rms`).
 
     Attributes
@@ -76,6 +77,10 @@ class SlidingRMS:
     window : float
         The window length, s or m, > 0.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("position", "s or m"), ("rms", "record's unit"))
+    _scalars = (("window", "s or m"),)
 
     position: np.ndarray
     rms: np.ndarray
@@ -167,7 +172,7 @@ def sliding_rms(record, spacing, window, *, step=None) -> SlidingRMS:
 
 
 @dataclass(frozen=True)
-class SectionMaxima:
+class SectionMaxima(Tabular):
     """Extremes (or percentiles) of a record section by section (:func:`section_maxima`).
 
     Attributes
@@ -182,6 +187,10 @@ class SectionMaxima:
     percent : ndarray, shape (2,)
         The percentiles taken, in [0, 100] ((0, 100): the extremes).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("start", "s or m"), ("lower", "record's unit"), ("upper", "record's unit"))
+    _scalars = (("length", "s or m"),)
 
     start: np.ndarray
     lower: np.ndarray

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 
 # Imported where used, to keep this module's import cheap (tests/test_imports.py): scipy.stats
 
@@ -86,7 +87,7 @@ def _intervals(solution, n: int, confidence: float):
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
-class ParameterFit:
+class ParameterFit(Tabular):
     """A least-squares fit of a model to a record: estimates, standard errors and intervals.
 
     Attributes
@@ -111,6 +112,12 @@ class ParameterFit:
     fitted : ndarray, same shape as ``measured``
         The model at the estimates.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # the record and the fit along time; the estimates, one per parameter, are no columns.
+    _columns = (("time", "s"), ("measured", "record's unit"), ("fitted", "record's unit"))
+    _scalars = (("confidence", "-"), ("residual_rms", "record's unit"))
+    _by_row = ("measured", "fitted")
 
     names: tuple
     estimate: np.ndarray

@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.bridge import AxleSequence, SimplySupportedBeam, moving_force_response
 from raildyn.constants import GRAVITY
 from raildyn.validation.bridge_wim import WeighInMotionFit, weigh_in_motion
@@ -62,7 +63,7 @@ _BOGIE_SPAN = 16.5 + (3.575 + 0.5 + 3.575) + 16.5
 
 
 @dataclass(frozen=True, eq=False)  # arrays: compared by identity, not elementwise
-class StrainRecord:
+class StrainRecord(Tabular):
     """A strain record: gauges' time histories with their names, positions, units and provenance.
 
     Attributes
@@ -82,6 +83,12 @@ class StrainRecord:
     provenance : str
         Where the record comes from and what was done to it.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("time", "s"), ("strain", "-"))
+    _scalars = (("rate_hz", "Hz"),)
+    _labels = (("strain", "channels"),)
+    _by_row = ("strain",)
 
     time: np.ndarray
     strain: np.ndarray
@@ -206,7 +213,7 @@ def lerelva_strain(run: str = "1603161045") -> StrainRecord:
 
 
 @dataclass(frozen=True, eq=False)
-class LerelvaCase:
+class LerelvaCase(Tabular):
     """The Lerelva case study: identification, prediction and agreement (see :func:`lerelva_case`).
 
     Attributes
@@ -238,6 +245,11 @@ class LerelvaCase:
     agreement : tuple of Agreement
         :func:`raildyn.validation.metrics.compare` of measured and predicted, one per gauge.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("time", "s"), ("measured", "-"), ("predicted", "-"))
+    _scalars = (("peak_speed", "m/s"), ("lag_speed", "m/s"), ("model_lag_speed", "m/s"), ("scale", "1/m"))
+    _by_row = ("measured", "predicted")
 
     record: StrainRecord
     fit: WeighInMotionFit

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.plots import COLORS, STYLE, axes_or_new
 from raildyn.validation import _records
 
@@ -247,7 +248,7 @@ def sprague_geers(measured, predicted, time=None) -> SpragueGeers:
 
 
 @dataclass(frozen=True)
-class Agreement:
+class Agreement(Tabular):
     """How well a prediction agrees with a measurement in time (:func:`compare`).
 
     Attributes
@@ -255,7 +256,7 @@ class Agreement:
     time : ndarray, shape (n,) or None
         The uniform time base, s; None for records given without one (samples 0, 1, ...).
     measured : ndarray, shape (n,)
-        The measurement, finite.
+        The measurement, finite, in the record's unit.
     predicted : ndarray, shape (n,)
         The prediction, finite, in the unit of ``measured``.
     normalisation : str
@@ -273,6 +274,13 @@ class Agreement:
     combined : float
         Sprague–Geers C = √(M² + P²), >= 0.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("time", "s"), ("measured", "record's unit"), ("predicted", "record's unit"))
+    _scalars = (
+        ("nrmse", "-"), ("correlation", "-"), ("theil_u", "-"), ("magnitude", "-"), ("phase", "-"),
+        ("combined", "-"),
+    )  # fmt: skip
 
     time: np.ndarray | None
     measured: np.ndarray

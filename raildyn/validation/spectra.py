@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.plots import COLORS, STYLE, axes_or_new
 from raildyn.random_vibration import welch_psd
 from raildyn.validation import _records
@@ -42,7 +43,7 @@ _MIN_BINS_PER_BAND = 4
 
 
 @dataclass(frozen=True)
-class BandRMS:
+class BandRMS(Tabular):
     """RMS values in one-third-octave bands (:func:`third_octave_rms`).
 
     Attributes
@@ -54,6 +55,9 @@ class BandRMS:
     rms : ndarray, shape (k,)
         RMS of the record in each band, >= 0, in the record's unit.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("centre_hz", "Hz"), ("lower_hz", "Hz"), ("upper_hz", "Hz"), ("rms", "record's unit"))
 
     centre_hz: np.ndarray
     lower_hz: np.ndarray
@@ -184,7 +188,7 @@ def third_octave_rms(record, dt, *, nperseg=None, f_min=None, f_max=None) -> Ban
 
 
 @dataclass(frozen=True)
-class FrequencyResponseEstimate:
+class FrequencyResponseEstimate(Tabular):
     """The H1 estimate of a frequency response and the coherence (:func:`frequency_response_h1`).
 
     Attributes
@@ -196,6 +200,9 @@ class FrequencyResponseEstimate:
     coherence : ndarray, shape (k,)
         Ordinary coherence γ² = |G_xy|²/(G_xx G_yy), in [0, 1]; 0 where either record has no power.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("omega", "rad/s"), ("h1", "(response unit)/(excitation unit)"), ("coherence", "-"))
 
     omega: np.ndarray
     h1: np.ndarray

@@ -45,6 +45,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.validation import _cluster, _sampling, _sobol
 
 __all__ = ["MonteCarloResult", "SobolResult", "monte_carlo", "sobol_indices"]
@@ -59,7 +60,7 @@ _MAX_WORKERS = 64
 
 
 @dataclass(frozen=True)
-class MonteCarloResult:
+class MonteCarloResult(Tabular):
     """A model's output over samples of its uncertain parameters, and its prediction bands.
 
     Attributes
@@ -79,6 +80,11 @@ class MonteCarloResult:
     bands : ndarray, shape (p, ...)
         The outputs' percentiles (``numpy.percentile``, linear interpolation).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # a row per evaluation; the statistics over them (mean, std, bands) are no columns.
+    _columns = (("samples", "unit of its parameter"), ("outputs", "model's unit"))
+    _labels = (("samples", "names"),)
 
     names: tuple
     samples: np.ndarray
@@ -183,7 +189,7 @@ class MonteCarloResult:
 
 
 @dataclass(frozen=True)
-class SobolResult:
+class SobolResult(Tabular):
     """Sobol' first-order and total sensitivity indices with bootstrap confidence intervals.
 
     Attributes
@@ -206,6 +212,13 @@ class SobolResult:
     variance : float
         The output's variance over the base samples (the model's unit squared).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("names", "-"), ("first_order", "-"), ("total", "-"), ("first_order_interval", "-"),
+        ("total_interval", "-"),
+    )  # fmt: skip
+    _scalars = (("confidence", "-"), ("samples", "-"), ("variance", "model's unit squared"))
 
     names: tuple
     first_order: np.ndarray

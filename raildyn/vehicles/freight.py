@@ -35,6 +35,7 @@ import numpy as np
 
 from raildyn import _checks, _deprecated, plots
 from raildyn import track as _track
+from raildyn._tables import Tabular
 from raildyn.constants import GRAVITY
 from raildyn.errors import SolverError
 from raildyn.integrators import rk4, stable_step
@@ -274,7 +275,7 @@ class VerticalFreightCar(LinearModelBase):
 
 
 @dataclass(frozen=True)
-class RockAndRoll:
+class RockAndRoll(Tabular):
     """Steady rocking of a freight car on staggered jointed rail.
 
     Attributes
@@ -290,6 +291,11 @@ class RockAndRoll:
     roll : ndarray, (n_speeds, n_t)
         Roll histories, rad, of either sign.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units;
+    # the roll histories (a row per speed along ``t``) are no columns.
+    _columns = (("speeds", "m/s"), ("roll_amplitude", "rad"))
+    _scalars = (("resonance_speed", "m/s"),)
 
     speeds: np.ndarray
     roll_amplitude: np.ndarray

@@ -35,6 +35,7 @@ import numpy as np
 from raildyn import _checks, plots
 from raildyn import random_vibration as rv
 from raildyn import track as _track
+from raildyn._tables import Tabular
 from raildyn.constants import MAXIMUM_FREQUENCY
 from raildyn.linear_model import INPUT_KINDS, LinearSystem
 from raildyn.vehicles._shared import _earlier_artists, _steady_system, _vehicle
@@ -144,7 +145,7 @@ def _delayed_sum(Hj, weights, omega, delays) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class ResponseSpectrum:
+class ResponseSpectrum(Tabular):
     """A response spectrum at one speed.
 
     Attributes
@@ -152,12 +153,16 @@ class ResponseSpectrum:
     omega : ndarray, (n_ω,)
         rad/s, > 0, not empty.
     psd : ndarray, (n_ω,)
-        One-sided PSD of the output, (unit)²/(rad/s), ≥ 0.
+        One-sided PSD of the output, (output unit)²/(rad/s), ≥ 0.
     rms : float
         √∫S dω over the grid, in the output unit, ≥ 0.
     speed : float
         m/s, in [0.001, :data:`~raildyn.constants.MAXIMUM_SPEED`].
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("omega", "rad/s"), ("psd", "(output unit)²/(rad/s)"))
+    _scalars = (("rms", "output unit"), ("speed", "m/s"))
 
     omega: np.ndarray
     psd: np.ndarray

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from raildyn import _checks, ride
+from raildyn._tables import Tabular
 from raildyn.vehicles.response import ResponseSpectrum, response_spectrum
 from raildyn.vehicles.time_domain import PeriodicProfile, time_response
 
@@ -23,7 +24,7 @@ _MAX_STEPS = 1_000_000  # time steps of one run: 10⁶ steps of a 30-state car t
 
 
 @dataclass(frozen=True)
-class RideRun:
+class RideRun(Tabular):
     """The ride of a vehicle at one speed on one track, two ways.
 
     Attributes
@@ -39,6 +40,9 @@ class RideRun:
     time_domain : raildyn.ride.RideQuality
         The same measures of ``acceleration``.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("t", "s"), ("acceleration", "m/s²"))
 
     spectrum: ResponseSpectrum
     frequency_domain: ride.RideQuality

@@ -17,6 +17,7 @@ import numpy as np
 
 from raildyn import _checks, plots
 from raildyn import track as _track
+from raildyn._tables import Tabular
 from raildyn.errors import SolverError
 from raildyn.integrators import stable_step
 from raildyn.vehicles._shared import _earlier_artists
@@ -32,7 +33,7 @@ _MAX_STEPS = 2_000_000  # per speed: some 10 s of compiled work
 
 
 @dataclass(frozen=True, eq=False)
-class RockingRun:
+class RockingRun(Tabular):
     """The rocking car at one speed over staggered jointed rail
     (:func:`~raildyn.vehicles.rocking_runs.rocking_run`).
 
@@ -64,6 +65,16 @@ class RockingRun:
     roll_amplitude : float
         Half the body's peak-to-peak roll in the steady window, rad, in [0, π/2].
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("t", "s"), ("wheel_loads", "N"), ("plate_loads", "N"), ("bearer_loads", "N"), ("roll", "rad"),
+    )  # fmt: skip
+    _scalars = (
+        ("speed", "m/s"), ("rail_length", "m"), ("static_wheel_load", "N"), ("peak_unloading", "-"),
+        ("lift_fraction", "-"), ("plate_lift_fraction", "-"), ("bearer_contact_fraction", "-"),
+        ("roll_amplitude", "rad"),
+    )  # fmt: skip
 
     speed: float
     rail_length: float
@@ -182,7 +193,7 @@ class RockingRun:
 
 
 @dataclass(frozen=True, eq=False)
-class RockingSweep:
+class RockingSweep(Tabular):
     """The rocking car over staggered jointed rail at many speeds
     (:func:`~raildyn.vehicles.rocking_runs.rocking_sweep`).
 
@@ -200,6 +211,13 @@ class RockingSweep:
     runs : tuple of RockingRun
         One per speed, with its histories.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("speeds", "m/s"), ("peak_unloading", "-"), ("lift_fraction", "-"), ("plate_lift_fraction", "-"),
+        ("bearer_contact_fraction", "-"), ("roll_amplitude", "rad"),
+    )  # fmt: skip
+    _scalars = (("resonance_speed", "m/s"),)
 
     speeds: np.ndarray
     peak_unloading: np.ndarray

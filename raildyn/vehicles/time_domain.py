@@ -16,6 +16,7 @@ import numpy as np
 import scipy.linalg
 
 from raildyn import _checks
+from raildyn._tables import Tabular
 from raildyn.errors import SolverError
 from raildyn.vehicles._shared import _steady_system
 
@@ -23,7 +24,7 @@ __all__ = ["PeriodicProfile", "TimeResponse", "periodic_profile", "time_response
 
 
 @dataclass(frozen=True)
-class TimeResponse:
+class TimeResponse(Tabular):
     """A time history.
 
     Attributes
@@ -35,6 +36,9 @@ class TimeResponse:
     inputs : ndarray, (n_t, q)
         Track heights at the inputs, m, of either sign.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("t", "s"), ("y", "m, m/s or m/s²"), ("inputs", "m"))
 
     t: np.ndarray
     y: np.ndarray

@@ -15,6 +15,7 @@ import scipy.linalg
 
 from raildyn import _checks, _deprecated
 from raildyn._checks import array, integer, square_matrix
+from raildyn._tables import Tabular
 from raildyn.vibration._domain import _pivots
 
 __all__ = [
@@ -37,7 +38,7 @@ _OUTPUTS = ("displacement", "velocity", "acceleration", "state")
 
 
 @dataclass(frozen=True)
-class ComplexModes:
+class ComplexModes(Tabular):
     """Modes of ``M x'' + C x' + K x = 0`` from its first-order form.
 
     Attributes
@@ -54,6 +55,13 @@ class ComplexModes:
     damping_ratios : ndarray, shape (2n,)
         −Re s_r/|s_r| (1 for a real, overdamped eigenvalue; 0 for s_r = 0).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (
+        ("eigenvalues", "rad/s"), ("natural_frequencies", "rad/s"), ("damping_ratios", "-"),
+        ("mode_shapes", "-"),
+    )  # fmt: skip
+    _by_row = ("mode_shapes",)
 
     eigenvalues: np.ndarray
     mode_shapes: np.ndarray

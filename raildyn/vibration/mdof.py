@@ -17,6 +17,7 @@ import scipy.linalg
 
 from raildyn import _checks, _deprecated
 from raildyn._checks import array, integer, nonnegative, positive, scalar, square_matrix, time_grid
+from raildyn._tables import Tabular
 from raildyn.vibration._domain import _MAX_COUNT, _MAX_PHASE, _RATE, _pivots
 
 # Moved to raildyn.vibration.damped (issue 33): re-exported here so that the old import paths keep
@@ -55,7 +56,7 @@ __getattr__ = _deprecated.module_getattr(__name__, globals())
 
 
 @dataclass(frozen=True)
-class ModalResult:
+class ModalResult(Tabular):
     """Undamped modes of ``M x'' + K x = 0``.
 
     Attributes
@@ -67,6 +68,10 @@ class ModalResult:
         Column j is mode j, scaled so that Φᵀ M Φ = I (units kg^(−1/2)) and its
         largest-magnitude entry is positive.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("natural_frequencies", "rad/s"), ("mode_shapes", "kg^(−1/2)"))
+    _by_row = ("mode_shapes",)
 
     natural_frequencies: np.ndarray
     mode_shapes: np.ndarray

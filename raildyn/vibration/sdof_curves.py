@@ -15,6 +15,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import array, integer, positive, scalar
+from raildyn._tables import Tabular
 from raildyn.vibration._domain import _RATE, _check_rates, _one_minus_square, _roots
 
 __all__ = [
@@ -30,7 +31,7 @@ __all__ = [
 
 
 @dataclass(frozen=True)
-class RootLocus:
+class RootLocus(Tabular):
     """Characteristic roots s₁, s₂ of an SDOF system over a sweep of damping factors (book Fig. 1.4).
 
     Attributes
@@ -42,6 +43,10 @@ class RootLocus:
     roots : complex ndarray, shape (n, 2)
         s₁ (+ sign in eq. 1.9) and s₂ for each ξ, rad/s.
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("damping_ratios", "-"), ("roots", "rad/s"))
+    _scalars = (("natural_frequency", "rad/s"),)
 
     natural_frequency: float
     damping_ratios: np.ndarray

@@ -12,6 +12,7 @@ import numpy as np
 
 from raildyn import _checks
 from raildyn._checks import array, time_grid
+from raildyn._tables import Tabular
 from raildyn.vibration.sdof_curves import decrement_from_peaks
 
 __all__ = [
@@ -21,7 +22,7 @@ __all__ = [
 
 
 @dataclass(frozen=True)
-class DecayPeaks:
+class DecayPeaks(Tabular):
     """Successive maxima of an underdamped free response (book Fig. 1.5).
 
     Attributes
@@ -31,6 +32,9 @@ class DecayPeaks:
     values : ndarray, shape (count,)
         Displacements there, m (or the unit of x0).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("times", "s"), ("values", "m"))
 
     times: np.ndarray
     values: np.ndarray
@@ -55,7 +59,7 @@ class DecayPeaks:
 
 
 @dataclass(frozen=True)
-class FreeVibration:
+class FreeVibration(Tabular):
     """The free response of an SDOF system on a time grid, with its envelope and its maxima.
 
     Built by :meth:`SDOF.free_vibration`; :meth:`plot` draws it as book Fig. 1.5.
@@ -71,6 +75,9 @@ class FreeVibration:
     peaks : DecayPeaks
         The first maxima (empty arrays when ξ >= 1: no oscillation, no peaks).
     """
+
+    # The table of to_csv and to_pandas (raildyn._tables): columns and scalars with their units.
+    _columns = (("time", "s"), ("displacement", "m"), ("envelope", "m"))
 
     time: np.ndarray
     displacement: np.ndarray

@@ -207,6 +207,15 @@ ENTRIES = [
         lambda: on(result(), None, dof=0, quantity="v", scale=2.0),
         accepts={"dof": "zero", "scale": "negative big tiny mm"},
     ),
+    # The table of every result (raildyn._tables.Tabular, one implementation): its entries stand
+    # here, on the integrators' result, once for all the results that share it.
+    fuzz("raildyn.integrators.IntegrationResult.table", lambda: on(result())),
+    fuzz(
+        "raildyn.integrators.IntegrationResult.to_csv",
+        lambda: on(result(), "result.csv"),
+        accepts={"path": "unknown"},  # any file name in an existing folder (here the test's own) is valid
+    ),
+    fuzz("raildyn.integrators.IntegrationResult.to_pandas", lambda: on(result())),
     fuzz(
         "raildyn.integrators.Deviation",
         lambda: call(np.array([0.1]), np.array([0.2]), np.array([0.3]), np.array([0.0, 0.5])),
