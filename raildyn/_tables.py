@@ -154,26 +154,7 @@ class Tabular:
         pathlib.Path
             The file written.
         """
-        if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
-            raise TypeError(
-                f"path must be a file name (str or os.PathLike), got {type(path).__name__} {path!r}"
-            )
-        target = Path(path)
-        if not str(path) or target.is_dir():
-            raise ValueError(f"path must name a file, got the folder {str(path)!r}")
-        if not target.parent.is_dir():
-            raise ValueError(
-                f"path must be in an existing folder, got {str(path)!r}: "
-                f"{str(target.parent)!r} does not exist"
-            )
-        names, columns = self.table()
-        with target.open("w", newline="", encoding="utf-8") as file:
-            for key, value in self._scalar_items().items():
-                file.write(f"# {key} = {_cell(value)}\n")
-            writer = csv.writer(file)
-            writer.writerow(names)
-            writer.writerows(zip(*([_cell(v) for v in column] for column in columns), strict=True))
-        return target
+        return write_csv(path, *self.table(), notes=self._scalar_items())
 
     def to_pandas(self):
         """The table as a pandas DataFrame, the scalars in its ``attrs``.
@@ -200,3 +181,43 @@ class Tabular:
         frame = pd.DataFrame(dict(zip(names, columns, strict=True)))
         frame.attrs.update(self._scalar_items())
         return frame
+
+
+def write_csv(path, names: list[str], columns, notes: dict[str, object] | None = None) -> Path:
+    """Write columns to a CSV file: ``notes`` as comment lines ``# key = value``, a header row, the rows.
+
+    The one CSV writer of raildyn (a result's :meth:`Tabular.to_csv`, a figure's data): numbers to full
+    precision, flags as 1 and 0, text as it is.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file to write (replaced if it exists); its folder must exist.
+    names : list of str
+        The column names, the header row.
+    columns : sequence of sequences
+        The columns, one for each name, all of one length.
+    notes : dict, optional
+        Lines written before the header, ``# key = value``.
+
+    Returns
+    -------
+    pathlib.Path
+        The file written.
+    """
+    if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path must be a file name (str or os.PathLike), got {type(path).__name__} {path!r}")
+    target = Path(path)
+    if not str(path) or target.is_dir():
+        raise ValueError(f"path must name a file, got the folder {str(path)!r}")
+    if not target.parent.is_dir():
+        raise ValueError(
+            f"path must be in an existing folder, got {str(path)!r}: {str(target.parent)!r} does not exist"
+        )
+    with target.open("w", newline="", encoding="utf-8") as file:
+        for key, value in (notes or {}).items():
+            file.write(f"# {key} = {_cell(value)}\n")
+        writer = csv.writer(file)
+        writer.writerow(names)
+        writer.writerows(zip(*([_cell(v) for v in column] for column in columns), strict=True))
+    return target

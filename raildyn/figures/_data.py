@@ -16,7 +16,6 @@ shading carry no data of their own and are left out.
 
 from __future__ import annotations
 
-import csv
 from pathlib import Path
 
 import numpy as np
@@ -24,6 +23,8 @@ from matplotlib.collections import LineCollection, PathCollection, QuadMesh
 from matplotlib.container import BarContainer
 from matplotlib.contour import ContourSet
 from matplotlib.figure import Figure
+
+from raildyn._tables import write_csv
 
 COLUMNS = ("panel", "series", "x label", "x", "y label", "y", "value label", "value")
 
@@ -102,9 +103,8 @@ def rows(fig: Figure) -> list[tuple]:
 
 
 def write(fig: Figure, path: Path) -> Path:
-    """Write ``fig``'s table to ``path`` as CSV with a header row; return the path."""
-    with open(path, "w", newline="", encoding="utf-8") as f:
-        writer = csv.writer(f)
-        writer.writerow(COLUMNS)
-        writer.writerows(rows(fig))
-    return path
+    """Write ``fig``'s table to ``path`` as CSV with a header row (raildyn's one CSV writer); return the
+    path."""
+    table = rows(fig)
+    columns = list(zip(*table, strict=True)) if table else [() for _ in COLUMNS]
+    return write_csv(path, list(COLUMNS), columns)
