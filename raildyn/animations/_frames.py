@@ -59,3 +59,25 @@ def trace(ax, t, curves: dict, *, ylabel: str, xlabel: str = "t (s)", window=Non
         if len(curves) > 1:
             ax.legend(fontsize=7, loc="upper left", frameon=False, ncols=len(curves))
     return cursor
+
+
+def artists(*groups) -> list:
+    """The artists in ``groups`` (artists, or lists, tuples and dicts of them, nested), each once."""
+    from matplotlib.artist import Artist
+
+    found: list = []
+
+    def walk(item):
+        if isinstance(item, Artist):
+            if all(item is not a for a in found):
+                found.append(item)
+        elif isinstance(item, dict):
+            for value in item.values():
+                walk(value)
+        elif isinstance(item, list | tuple):
+            for value in item:
+                walk(value)
+
+    for group in groups:
+        walk(group)
+    return found

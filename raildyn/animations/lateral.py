@@ -1,12 +1,12 @@
 """Lateral motion in plan, from the nonlinear models' own runs: the hunting wheelset (chapter 5), the
 hunting bogie (chapter 7) and the bogie through a curve's entry (chapter 8).
 
-Each function runs the model (:func:`raildyn.stability.simulate`, :func:`raildyn.curving.curve_entry`),
-picks evenly spaced times of the run, and moves a schematic of :mod:`raildyn.diagrams` to the state at
-each (:class:`~raildyn.diagrams.WheelsetPlan`, :class:`~raildyn.diagrams.BogiePlan`), with the run's
-trace below and a cursor at the frame's time. Hunting amplitudes are millimetres and milliradians on a
-track 1.5 m wide: the plan draws them exaggerated, by the round factor that fits the run's largest
-motion, and says so on the picture.
+Each function runs the model (:func:`raildyn.stability.nonlinear.simulate`,
+:func:`raildyn.curving.entry.curve_entry`), picks evenly spaced times of the run, and moves a schematic of
+:mod:`raildyn.diagrams` to the state at each (:class:`~raildyn.diagrams.rolling.WheelsetPlan`,
+:class:`~raildyn.diagrams.vehicles.BogiePlan`), with the run's trace below and a cursor at the frame's
+time. Hunting amplitudes are millimetres and milliradians on a track 1.5 m wide: the plan draws them
+exaggerated, by the round factor that fits the run's largest motion, and says so on the picture.
 """
 
 from __future__ import annotations
@@ -57,7 +57,7 @@ def hunting_wheelset(
 
     The wheelset with its cone, saturating creep and flange (:class:`~raildyn.wheelset.NonlinearWheelset`
     on a :class:`~raildyn.wheelset.WheelRailContact`) starts ``initial_displacement`` to the side
-    and runs ``duration`` seconds at ``speed`` (:func:`raildyn.stability.simulate`); the frames
+    and runs ``duration`` seconds at ``speed`` (:func:`raildyn.stability.nonlinear.simulate`); the frames
     cover the run's last ``window`` seconds, where above the critical speed it has settled on its
     limit cycle. Below: y and ψ over the whole run, the window shaded.
 
@@ -104,7 +104,9 @@ def hunting_wheelset(
         cursor.set_xdata([run.t[k]])
 
     labels = [f"t = {run.t[k]:.3f} s, V = {run.speed:g} m/s" for k in pick]
-    return record(fig, draw, labels, title=f"the nonlinear wheelset hunting at {run.speed:g} m/s, in plan")
+    moving = _frames.artists({k: v for k, v in plan.artists.items() if k != "rails"}, cursor)
+    title = f"the nonlinear wheelset hunting at {run.speed:g} m/s, in plan"
+    return record(fig, draw, labels, title=title, moving=moving)
 
 
 def hunting_bogie(
@@ -120,8 +122,8 @@ def hunting_bogie(
 
     The bogie's nonlinear model (``bogie.nonlinear()``: cone, saturating creep, flange) starts with
     its leading wheelset ``initial_displacement`` to the side and runs ``duration`` seconds at
-    ``speed`` (:func:`raildyn.stability.simulate`); the frames cover the run's last ``window``
-    seconds. :class:`~raildyn.diagrams.BogiePlan` moves the frame and both wheelsets, springs
+    ``speed`` (:func:`raildyn.stability.nonlinear.simulate`); the frames cover the run's last ``window``
+    seconds. :class:`~raildyn.diagrams.vehicles.BogiePlan` moves the frame and both wheelsets, springs
     stretching between them; below, each wheelset's y over the whole run.
 
     Parameters
@@ -180,7 +182,8 @@ def hunting_bogie(
         cursor.set_xdata([run.t[k]])
 
     labels = [f"t = {run.t[k]:.3f} s, V = {run.speed:g} m/s" for k in pick]
-    return record(fig, draw, labels, title=f"the bogie hunting at {run.speed:g} m/s, in plan")
+    moving = _frames.artists(_bogie_moving(plan), cursor)
+    return record(fig, draw, labels, title=f"the bogie hunting at {run.speed:g} m/s, in plan", moving=moving)
 
 
 def bogie_curve_entry(
@@ -192,7 +195,7 @@ def bogie_curve_entry(
 ) -> Animation:
     """The bogie running from straight track into a curve, in plan on the straightened track.
 
-    :func:`raildyn.curving.curve_entry` runs the nonlinear bogie through the curve's transition onto
+    :func:`raildyn.curving.entry.curve_entry` runs the nonlinear bogie through the curve's transition onto
     its arc. Each frame draws the bogie on the track straightened (the rails straight, the curve's
     own turning taken out), each wheelset at its offset towards the outer rail (up the page) and
     its angle of attack, both exaggerated by the factor the picture states; the frame stands at the
@@ -259,6 +262,10 @@ def bogie_curve_entry(
         cursor.set_xdata([s[k]])
 
     labels = [f"s = {s[k]:.1f} m, curvature {1e3 * curve.curvature(s[k]):.3f} 1/km" for k in pick]
-    return record(
-        fig, draw, labels, title=f"the bogie entering a {curve.radius:g} m curve at {run.speed:g} m/s"
-    )
+    title = f"the bogie entering a {curve.radius:g} m curve at {run.speed:g} m/s"
+    return record(fig, draw, labels, title=title, moving=_frames.artists(_bogie_moving(plan), cursor))
+
+
+def _bogie_moving(plan: diagrams.BogiePlan) -> dict:
+    """The artists of a bogie's plan that its ``update`` moves (not the rails, not the labels)."""
+    return {k: v for k, v in plan.artists.items() if k not in ("rails", "texts")}

@@ -1,11 +1,11 @@
 """Motion in section, along the train and along the span, from the models' own runs: the rocking freight
 car (chapter 6), the train's run-in (chapter 9) and the car crossing the bridge (chapter 10).
 
-Each function runs the model (:func:`raildyn.vehicles.rocking_run`, :func:`raildyn.train.simulate`,
-:func:`raildyn.bridge.crossing`), picks evenly spaced times of the run and moves one picture to the
-state at each, the run's own numbers below it. Where a motion is too small to see at the picture's
-scale (the roll, the slack, the deflection), it is drawn exaggerated by a round factor that the picture
-states.
+Each function runs the model (:func:`raildyn.vehicles.rocking_runs.rocking_run`,
+:func:`raildyn.train.longitudinal.simulate`, :func:`raildyn.bridge.coupled.crossing`), picks evenly
+spaced times of the run and moves one picture to the state at each, the run's own numbers below it.
+Where a motion is too small to see at the picture's scale (the roll, the slack, the deflection), it is
+drawn exaggerated by a round factor that the picture states.
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ def rocking_car(
 ) -> Animation:
     """The freight car rocking on staggered joints, in section: its own run, the last two rail lengths.
 
-    :func:`raildyn.vehicles.rocking_run` runs the car over staggered dipped joints for ``cycles``
+    :func:`raildyn.vehicles.rocking_runs.rocking_run` runs the car over staggered dipped joints for ``cycles``
     rail lengths at ``speed``; the frames cover the last two rail lengths, in its steady window. The
     body is drawn in section seen from behind, rolled about its centre plate by the run's roll (times
     the factor the picture states) on the two spring nests; each wheel of the leading wheelset stands
@@ -45,7 +45,7 @@ def rocking_car(
         Default :class:`~raildyn.vehicles.RockingFreightCar` (the loaded 286K hopper).
     speed : float, optional
         V, m/s, in (0, :data:`~raildyn.constants.MAXIMUM_SPEED`]; default the car's roll resonance
-        speed (:meth:`~raildyn.vehicles.RockingFreightCar.roll_resonance_speed`).
+        speed (:meth:`~raildyn.vehicles.rocking.RockingFreightCar.roll_resonance_speed`).
     cycles : int
         Rail lengths run, in [4, 1000].
     frames : int
@@ -147,9 +147,9 @@ def rocking_car(
     labels = [
         f"t = {t[k]:.2f} s, V = {3.6 * run.speed:.1f} km/h, roll {np.degrees(roll[k]):+.2f}°" for k in pick
     ]
-    return record(
-        fig, draw, labels, title=f"the freight car rocking at {3.6 * run.speed:.1f} km/h, in section"
-    )
+    title = f"the freight car rocking at {3.6 * run.speed:.1f} km/h, in section"
+    moving = [body, *springs, *wheels, *bars, *lifted, cursor]
+    return record(fig, draw, labels, title=title, moving=moving)
 
 
 def _turn(points: np.ndarray, angle: float, centre) -> np.ndarray:
@@ -181,12 +181,12 @@ def train_run_in(
 ) -> Animation:
     """The train's run-in under braking: each car's place along the train and the coupler forces.
 
-    :func:`raildyn.train.simulate` runs the train for ``duration`` seconds from ``initial_speed``,
-    its couplers starting at ``initial_extension``. Each frame draws the cars as boxes along the
-    train, each shifted by how far it has closed up on the front vehicle since the start (times
-    the factor the picture states, so that millimetres of slack show on a train of a kilometre and
-    more) and coloured by the force in the coupler behind it; below, the coupler forces against the
-    distance behind the front at that instant.
+    :func:`raildyn.train.longitudinal.simulate` runs the train for ``duration`` seconds from
+    ``initial_speed``, its couplers starting at ``initial_extension``. Each frame draws the cars as
+    boxes along the train, each shifted by how far it has closed up on the front vehicle since the
+    start (times the factor the picture states, so that millimetres of slack show on a train of a
+    kilometre and more) and coloured by the force in the coupler behind it; below, the coupler
+    forces against the distance behind the front at that instant.
 
     Parameters
     ----------
@@ -197,7 +197,7 @@ def train_run_in(
     initial_speed : float
         m/s, in [0, 200].
     initial_extension : float
-        As for :func:`raildyn.train.simulate`.
+        As for :func:`raildyn.train.longitudinal.simulate`.
     frames : int
         In [2, 400].
 
@@ -233,7 +233,7 @@ def train_run_in(
     from raildyn import plots
 
     fig, (ax, ax_force) = _frames.figure(heights=(0.8, 2.0), size=(6.4, 3.0))
-    cmap = matplotlib.colormaps["coolwarm"]
+    cmap = matplotlib.colormaps["RdBu_r"]  # as the run's own wave plot (TrainRun.plot_wave)
     with matplotlib.rc_context(plots.STYLE):
         cars = PolyCollection([], edgecolors="0.3", linewidths=0.3, cmap=cmap)
         cars.set_clim(-biggest, biggest)
@@ -272,7 +272,7 @@ def train_run_in(
         line.set_ydata(force[:, k])
 
     labels = [f"t = {run.t[k]:.1f} s, front at {run.speed[0, k]:.1f} m/s" for k in pick]
-    return record(fig, draw, labels, title="the train's run-in under braking")
+    return record(fig, draw, labels, title="the train's run-in under braking", moving=[cars, line])
 
 
 def bridge_crossing(
@@ -284,8 +284,8 @@ def bridge_crossing(
 ) -> Animation:
     """The car crossing the bridge: the beam bent as the coupled run finds it, the load moving on it.
 
-    :func:`raildyn.bridge.crossing` runs the load over the beam, coupled; each frame bends the beam
-    of :class:`~raildyn.diagrams.BeamLoad` to the run's deflection w(x, t) = Σ φᵢ(x) bᵢ(t) from its
+    :func:`raildyn.bridge.coupled.crossing` runs the load over the beam, coupled; each frame bends the beam
+    of :class:`~raildyn.diagrams.structures.BeamLoad` to the run's deflection w(x, t) = Σ φᵢ(x) bᵢ(t) from its
     modal coordinates (times the factor the picture states) and puts the load (its leading axle) at
     x = vt; below, the midspan deflection over the run. The frames run from the leading axle's
     arrival until the last axle leaves.
@@ -335,4 +335,5 @@ def bridge_crossing(
         cursor.set_xdata([run.time[k]])
 
     labels = [f"t = {run.time[k]:.3f} s, x = {v * run.time[k]:.1f} m, v = {v:.1f} m/s" for k in pick]
-    return record(fig, draw, labels, title=f"a load crossing a {beam.span:g} m span at {v:.1f} m/s")
+    title = f"a load crossing a {beam.span:g} m span at {v:.1f} m/s"
+    return record(fig, draw, labels, title=title, moving=_frames.artists(drawn.artists, cursor))
