@@ -12,11 +12,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from raildyn import _checks, diagrams, train
+from raildyn import _checks, diagrams, plots, train
 from raildyn.animations import _frames
 from raildyn.animations.player import Animation, record
 from raildyn.bridge import AxleSequence, MovingLoad, SimplySupportedBeam, crossing, sprung_mass
 from raildyn.vehicles import RockingFreightCar, rocking_run
+
+# Imported where used, to keep this module's import cheap: matplotlib
 
 __all__ = ["bridge_crossing", "rocking_car", "train_run_in"]
 
@@ -55,6 +57,8 @@ def rocking_car(
     -------
     Animation
     """
+    import matplotlib
+
     car = (
         RockingFreightCar()
         if car is None
@@ -73,17 +77,24 @@ def rocking_car(
     top = 2 * car.cg_height_above_rail - plate  # a body whose centre of gravity is at mid-height
     nests = 1.0  # m: the spring nests either side, under the side frames
     fig, (ax, ax_run) = _frames.figure(heights=(2.4, 1.0))
-    import matplotlib
-
-    from raildyn import plots
-
     with matplotlib.rc_context({**plots.STYLE, "axes.grid": False}):
         for side in (-1.0, 1.0):
             ax.plot([side * a - 0.04, side * a + 0.04], [0.0, 0.0], color="0.3", lw=3)
         ax.plot([-2.2, 2.2], [-0.05, -0.05], color="0.5", lw=0.8)
         (body,) = ax.fill([], [], facecolor="0.88", edgecolor="black", lw=0.9, zorder=2)
         springs = [ax.plot([], [], color="black", lw=0.9)[0] for _ in range(2)]
-        wheels = [ax.fill([], [], facecolor="0.7", edgecolor="black", lw=0.8, zorder=3)[0] for _ in range(2)]
+        # the wheels seen from behind, left (the left rail's, j = 0) of the picture first
+        wheels = [
+            ax.fill(
+                [side * a - 0.07, side * a + 0.07, side * a + 0.07, side * a - 0.07],
+                [0.0, 0.0, 2 * r, 2 * r],
+                facecolor="0.7",
+                edgecolor="black",
+                lw=0.8,
+                zorder=3,
+            )[0]
+            for side in (-1.0, 1.0)
+        ]
         ax.plot([-a, a], [r, r], color="black", lw=2.0, zorder=2.5)  # the axle
         bars = [ax.bar([s * (a + 0.35)], [0.0], width=0.16, bottom=0.0, color="0.5")[0] for s in (-1.0, 1.0)]
         for s in (-1.0, 1.0):
@@ -127,18 +138,7 @@ def rocking_car(
             head = _turn(np.array([(side * nests, plate)]), angle, (0.0, plate))[0]
             spring.set_data(*_zigzag(foot, head).T)
         for j, (wheel, bar, note) in enumerate(zip(wheels, bars, lifted, strict=True)):
-            side = -1.0 if j == 0 else 1.0  # left of the picture is the left rail (seen from behind)
             off = loads[k, j] <= 0.0
-            wheel.set_xy(
-                np.array(
-                    [
-                        (side * a - 0.07, 0.0),
-                        (side * a + 0.07, 0.0),
-                        (side * a + 0.07, 2 * r),
-                        (side * a - 0.07, 2 * r),
-                    ]
-                )
-            )
             wheel.set_facecolor(plots.COLORS[1] if off else "0.7")
             bar.set_height(0.5 * loads[k, j])
             note.set_text("lifted" if off else "")
@@ -153,10 +153,12 @@ def rocking_car(
 
 
 def _turn(points: np.ndarray, angle: float, centre) -> np.ndarray:
-    """Points turned by ``angle`` (rad, anticlockwise: left side up, seen from behind) about ``centre``."""
+    """Points turned by ``angle`` (rad) about ``centre``, clockwise as drawn: seen from behind, the
+    left side (left of the picture) rises, as a positive roll of the run lifts it."""
     c, s = np.cos(angle), np.sin(angle)
     centre = np.asarray(centre, float)
-    return (points - centre) @ np.array([[c, s], [-s, c]]) + centre
+    # the row vectors' form of the rotation by −angle: x' = x c + y s, y' = −x s + y c
+    return (points - centre) @ np.array([[c, -s], [s, c]]) + centre
 
 
 def _zigzag(p0, p1, coils: int = 4, width: float = 0.12) -> np.ndarray:
@@ -229,8 +231,6 @@ def train_run_in(
     biggest = max(np.abs(force).max(), 1.0)
     import matplotlib
     from matplotlib.collections import PolyCollection
-
-    from raildyn import plots
 
     fig, (ax, ax_force) = _frames.figure(heights=(0.8, 2.0), size=(6.4, 3.0))
     cmap = matplotlib.colormaps["RdBu_r"]  # as the run's own wave plot (TrainRun.plot_wave)
