@@ -225,10 +225,13 @@ def bogie_curve_entry(
     offset, attack = run.offset[order], run.angle_of_attack[order]
     s = run.distance
     pick = _frames.picks(s, s[0], s[-1], n)
-    a = bogie.wheelset.half_gauge
+    a, b = bogie.wheelset.half_gauge, bogie.semi_wheelbase
+    # The frame is drawn on the chord through the wheelsets' centres: its yaw is their offsets' difference
+    # over the wheelbase, which the exaggeration must keep within the plan too.
+    chord = (offset[0] - offset[1]) / (2 * b)
     factor = min(
         _frames.exaggeration(np.abs(offset).max(), 0.9 * 0.25 * a),
-        _frames.exaggeration(np.abs(attack).max(), 0.9 * np.pi / 12),
+        _frames.exaggeration(max(np.abs(attack).max(), np.abs(chord).max()), 0.9 * np.pi / 12),
     )
     fig, (ax_plan, ax_run) = _frames.figure(heights=(2.4, 1.0))
     plan = diagrams.BogiePlan(bogie, exaggerate=factor, ax=ax_plan)
@@ -256,9 +259,7 @@ def bogie_curve_entry(
         # The model's coordinates are to the left; the run's offset and attack are towards the outer
         # rail, which the picture puts up the page, as y to the left.
         ws = np.stack([offset[:, k], attack[:, k]], axis=1)
-        plan.update(
-            ws.mean(axis=0) * (1.0, 0.0) + (0.0, (ws[0, 0] - ws[1, 0]) / (2 * bogie.semi_wheelbase)), ws
-        )
+        plan.update((offset[:, k].mean(), chord[k]), ws)
         cursor.set_xdata([s[k]])
 
     labels = [f"s = {s[k]:.1f} m, curvature {1e3 * curve.curvature(s[k]):.3f} 1/km" for k in pick]

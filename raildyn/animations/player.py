@@ -99,7 +99,7 @@ class Animation:
             raise ValueError(f"frames must hold 2 to {_MAX_FRAMES} frames, got {len(frames)}")
         if not all(f.startswith(b"\x89PNG\r\n\x1a\n") for f in frames):
             raise ValueError("frames must be PNG files: one does not start with the PNG signature")
-        labels = _checks.strings("labels", list(labels) if isinstance(labels, tuple) else labels)
+        labels = _checks.strings("labels", labels)
         if len(labels) != len(frames):
             raise ValueError(f"labels must give one label per frame ({len(frames)}), got {len(labels)}")
         if not isinstance(title, str) or not title:
