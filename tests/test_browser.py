@@ -431,6 +431,71 @@ def _swap_every_frame(page) -> None:
             assert block.evaluate("b => b.querySelector('img').naturalWidth") > 0
 
 
+# The chapters whose pages show an animation of raildyn.animations (its player: .raildyn-animation).
+ANIMATED = [nb for nb in NOTEBOOKS if nb.stem[:2] in {"05", "06", "07", "08", "09", "10"}]
+
+
+@pytest.mark.parametrize("notebook", ANIMATED, ids=lambda p: p.stem)
+def test_animations_play_without_a_kernel(chapter_pages, notebook):
+    with chapter_page(chapter_pages, notebook) as page:
+        players = page.locator(".raildyn-animation")
+        assert players.count() >= 1, f"{notebook.name}: no animation on the page"
+        for k in range(players.count()):
+            _play(players.nth(k), f"{notebook.name}, animation {k}")
+
+
+def test_an_animation_plays_offline_in_its_own_page(browser, tmp_path):
+    # The player on its own (Animation.save), served from this machine: what the book's pages embed,
+    # checked without building the book.
+    from raildyn import animations
+
+    animations.bridge_crossing(frames=8).save(tmp_path / "crossing.html")
+    server = http.server.ThreadingHTTPServer(
+        ("127.0.0.1", 0), functools.partial(_QuietHandler, directory=tmp_path)
+    )
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    try:
+        page = browser.new_page(viewport={"width": 1000, "height": 800})
+        log = PageLog(page)
+        page.goto(f"http://127.0.0.1:{server.server_address[1]}/crossing.html", timeout=60_000)
+        page.wait_for_load_state("networkidle", timeout=60_000)
+        _play(page.locator(".raildyn-animation").first, "crossing.html")
+        page.close()
+    finally:
+        server.shutdown()
+        server.server_close()
+    assert not log.errors, f"console errors {log.errors}"
+    assert log.hosts <= {"127.0.0.1"} and not log.off_machine(), (
+        f"requests off this machine {log.off_machine()}"
+    )
+
+
+def _play(player, name: str) -> None:
+    """Press play and watch the picture change at least twice on its own; pause; step with the slider."""
+    img = player.locator("img[data-frame]")
+    seen = [img.get_attribute("src")]
+    player.locator("button[data-action=play]").click()
+    deadline = time.monotonic() + 10.0
+    while len(set(seen)) < 3 and time.monotonic() < deadline:
+        time.sleep(0.05)
+        seen.append(img.get_attribute("src"))
+    assert len(set(seen)) >= 3, f"{name}: playing, the picture changed {len(set(seen)) - 1} times in 10 s"
+    assert player.locator("button[data-action=play]").get_attribute("aria-pressed") == "true"
+    player.locator("button[data-action=play]").click()  # pause
+    paused, label = img.get_attribute("src"), player.locator("output[data-label]").text_content()
+    time.sleep(0.5)
+    assert img.get_attribute("src") == paused, f"{name}: the picture moved on after pause"
+    slider = player.locator("input[data-control=frame]")
+    frame = int(slider.input_value())
+    slider.focus()
+    slider.press("ArrowLeft" if frame == int(slider.get_attribute("max")) else "ArrowRight")
+    assert img.get_attribute("src") != paused, f"{name}: the slider did not change the picture"
+    assert player.evaluate("p => p.querySelector('img').naturalWidth") > 0
+    assert player.locator("output[data-label]").text_content() not in ("", label), (
+        f"{name}: the label stood still"
+    )
+
+
 @pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
 def test_self_checks_answer_in_the_static_book(chapter_pages, notebook):
     # Each question that checks itself answers in the page's JavaScript, with no kernel: a right number

@@ -1,7 +1,7 @@
 """raildyn.diagrams: every schematic draws on given axes and on new ones, returns its artists, leaves
 matplotlib's defaults alone, carries the notation's symbols, scales with its model's lengths, refuses bad
-input by name; the moving schematics (the hunting wheelset in plan, the beam's moving load) move the
-artists they drew.
+input by name; the moving schematics (the hunting wheelset and the bogie in plan, the beam's moving load)
+move the artists they drew.
 
 Geometry is measured from the returned artists' data (polygon vertices, line data), so a test that
 doubles a length and finds the picture doubled tests the drawing, not the code that wrote it.
@@ -19,6 +19,7 @@ import pytest
 from raildyn.bridge import SimplySupportedBeam
 from raildyn.diagrams import (
     BeamLoad,
+    BogiePlan,
     WheelsetPlan,
     beam_load,
     bogie_plan,
@@ -385,3 +386,35 @@ def test_chapter_six_truck_labels_stand_clear():
         assert not _label_clashes(ax), _label_clashes(ax)
     finally:
         plt.close(fig)
+
+
+def test_bogie_plan_moves_frame_and_wheelsets_in_place():
+    # Each wheelset's centre moves by its y times the exaggeration, the frame's pivot by the frame's; the
+    # springs follow; the artists are the same objects.
+    bogie = Bogie()
+    plan = BogiePlan(bogie, exaggerate=10.0)
+    before = {id(a) for a in plan.artists["lateral_springs"] + plan.artists["frame"]}
+    springs = [line.get_xydata().copy() for line in plan.artists["lateral_springs"]]
+    moved = plan.update((0.002, 0.0), ((0.004, 0.0), (-0.003, 0.0)))
+    assert moved is plan.artists
+    assert {id(a) for a in moved["lateral_springs"] + moved["frame"]} == before
+    front, rear = (_centre(ws[0]) for ws in moved["wheelsets"])
+    assert front == pytest.approx((bogie.semi_wheelbase, 0.04))
+    assert rear == pytest.approx((-bogie.semi_wheelbase, -0.03))
+    assert _centre(moved["frame"][-1])[1] == pytest.approx(0.02, abs=1e-3)  # the pivot's circle
+    assert any(
+        not np.allclose(a, line.get_xydata())
+        for a, line in zip(springs, moved["lateral_springs"], strict=True)
+    )
+    with pytest.raises(ValueError, match="wheelsets"):
+        plan.update((0.0, 0.0), ((0.1, 0.0), (0.0, 0.0)))  # 1 m drawn: beyond a quarter of the gauge
+
+
+def test_beam_load_draws_the_deflection_it_is_given():
+    beam = SimplySupportedBeam()
+    drawn = beam_load(beam, 5.0)
+    shape = 0.3 * np.sin(np.pi * drawn.points / beam.span)
+    x, w = drawn.update(5.0, shape)["beam"].get_data()
+    np.testing.assert_allclose(w, -shape)  # drawn downwards
+    with pytest.raises(ValueError, match="deflection"):
+        drawn.update(5.0, shape[:-1])

@@ -15,18 +15,21 @@ dashpots, coordinates in blue, forces and the direction of travel in red, equal 
 * :mod:`~raildyn.diagrams.structures` — the coupler chain of a consist, the simply supported beam
   under its moving load (moving).
 
-Two schematics move: :func:`~raildyn.diagrams.rolling.wheelset_plan` returns a ``WheelsetPlan`` and
-:func:`~raildyn.diagrams.structures.beam_load` a ``BeamLoad``, whose ``update`` moves the drawn
-artists in place (no new artist, no new figure), for a widget.
+Three schematics move: :func:`~raildyn.diagrams.rolling.wheelset_plan` returns a ``WheelsetPlan``,
+:func:`~raildyn.diagrams.structures.beam_load` a ``BeamLoad``, and
+:class:`~raildyn.diagrams.vehicles.BogiePlan` draws the bogie of
+:func:`~raildyn.diagrams.vehicles.bogie_plan`; each one's ``update`` moves the drawn artists in place
+(no new artist, no new figure), for a widget or an animation (:mod:`raildyn.animations`).
 """
 
 from raildyn.diagrams.dynamics import oscillator_model, rigid_body_freedoms
 from raildyn.diagrams.rolling import WheelsetPlan, wheelset_plan, wheelset_section
 from raildyn.diagrams.structures import BeamLoad, beam_load, coupler_chain
-from raildyn.diagrams.vehicles import bogie_plan, car_plan, car_side, truck_schematic
+from raildyn.diagrams.vehicles import BogiePlan, bogie_plan, car_plan, car_side, truck_schematic
 
 __all__ = [
     "BeamLoad",
+    "BogiePlan",
     "WheelsetPlan",
     "beam_load",
     "bogie_plan",

@@ -225,9 +225,14 @@ class BeamLoad:
     def _position(self, position) -> float:
         return _checks.scalar("position", position, low=0.0, high=self._beam.span)
 
-    def _place(self, at: float) -> None:
+    @property
+    def points(self) -> np.ndarray:
+        """x of the drawn beam's 101 points, m, from 0 to L: where :meth:`update` takes a deflection."""
+        return self._x.copy()
+
+    def _place(self, at: float, drawn: np.ndarray | None = None) -> None:
         art, u, span = self.artists, self._unit, self._beam.span
-        w = -self._sag * _static_shape(self._x, span, at)
+        w = -self._sag * _static_shape(self._x, span, at) if drawn is None else -drawn
         art["beam"].set_data(self._x, w)
         top = float(np.interp(at, self._x, w))  # where the load meets the bent beam
         texts = art["texts"]
@@ -250,20 +255,32 @@ class BeamLoad:
         art["x"].set_visible(at > 0.0)
         texts["x"].set_position((at / 2, marker + 0.35 * u))
 
-    def update(self, position: float) -> dict:
+    def update(self, position: float, deflection=None) -> dict:
         """Move the load to ``position`` and bend the beam under it: the same artists, moved.
 
         Parameters
         ----------
         position : float
             Where the load stands, x = Vt, m, in [0, L].
+        deflection : array_like, (101,), optional
+            The beam's deflection as drawn at :attr:`points`, m, downwards (a model's deflection
+            times the exaggeration its picture states), each within L/4. None: the static shape
+            under the load, scaled so that a load at midspan sags L/14.
 
         Returns
         -------
         dict
             The artists (``artists``), moved.
         """
-        self._place(self._position(position))
+        at = self._position(position)
+        if deflection is not None:
+            deflection = _checks.array("deflection", deflection, shape=self._x.shape)
+            if np.abs(deflection).max() > self._beam.span / 4:
+                raise ValueError(
+                    f"deflection must be drawn within L/4 = {self._beam.span / 4:.4g} m, "
+                    f"got a largest |w| of {np.abs(deflection).max():.4g} m"
+                )
+        self._place(at, deflection)
         return self.artists
 
 

@@ -21,7 +21,9 @@ from raildyn import _checks
 from raildyn.diagrams import _draw as d
 from raildyn.vehicles import Bogie, LateralCar, ThreePieceTruck, VerticalCar
 
-__all__ = ["bogie_plan", "car_plan", "car_side", "truck_schematic"]
+__all__ = ["BogiePlan", "bogie_plan", "car_plan", "car_side", "truck_schematic"]
+
+_MAX_EXAGGERATION = 1.0e4
 
 WHEEL_RADIUS = 0.46
 """Radius (m) of the wheels in :func:`car_side`, whose model (a vertical car) holds none."""
@@ -46,6 +48,154 @@ def _wheelset_plan(ax, centre, a: float, r0: float, yaw: float = 0.0) -> list:
     return parts
 
 
+class BogiePlan:
+    """A two-axle bogie drawn in plan on its track, which :meth:`update` moves in place.
+
+    :func:`bogie_plan` documents the drawing and draws it at rest. The frame and each wheelset move
+    with their own lateral displacement y and yaw ψ (the coordinates of the bogie's lateral model,
+    :class:`raildyn.vehicles.Bogie`), and the springs between them stretch to follow: an animation of
+    the hunting bogie calls :meth:`update` with each new state, and the same artists move.
+
+    Parameters
+    ----------
+    bogie : raildyn.vehicles.Bogie
+        The bogie: ``semi_wheelbase`` b (m) and its ``wheelset`` (a, r₀ in m).
+    exaggerate : float
+        Factor in [1, 10⁴] on the drawn displacements and yaws, which the picture states.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; new axes if None.
+
+    Attributes
+    ----------
+    ax : matplotlib.axes.Axes
+    artists : dict
+        As :func:`bogie_plan` returns them.
+
+    Examples
+    --------
+    >>> from raildyn.vehicles import Bogie
+    >>> plan = BogiePlan(Bogie(), exaggerate=10.0)
+    >>> plan.update((0.001, 0.0), ((0.004, 0.002), (-0.002, 0.001))) is plan.artists
+    True
+    """
+
+    def __init__(self, bogie: Bogie, *, exaggerate: float = 1.0, ax=None):
+        self._bogie = _checks.instance("bogie", bogie, Bogie, "raildyn.vehicles.Bogie")
+        self._exaggerate = _checks.scalar("exaggerate", exaggerate, low=1.0, high=_MAX_EXAGGERATION)
+        ws = bogie.wheelset
+        a, r0, b = ws.half_gauge, ws.rolling_radius, bogie.semi_wheelbase
+        self._box = box = a + 0.2  # the axle boxes, just outside the wheels
+        self._side = side = box + 0.3  # the frame's side members
+        reach = b + r0 + 0.9
+        self.ax = ax = d.start(ax)
+        with d.style():
+            art = {"rails": _rails(ax, -reach, reach, a)}
+            art["wheelsets"] = [_wheelset_plan(ax, (x, 0.0), a, r0) for x in (b, -b)]
+            frame = [d.block(ax, np.zeros((4, 2)), fill="0.8", z=1) for _ in range(4)]
+            frame.append(d.block(ax, np.zeros((4, 2)), fill="white", z=1.2))
+            art["frame"] = frame
+            art["boxes"] = [d.block(ax, np.zeros((4, 2)), fill="0.7", z=2.5) for _ in range(4)]
+            art["brackets"] = [ax.plot([], [], **d.LINE)[0] for _ in range(4)]
+            art["lateral_springs"] = [ax.plot([], [], **d.LINE)[0] for _ in range(4)]
+            art["longitudinal_springs"] = [ax.plot([], [], **d.LINE)[0] for _ in range(4)]
+            gap = (box + 0.08 + side - 0.07) / 2  # between the axle box and the frame's side member
+            texts = [
+                d.label(ax, (b + 0.14, gap), "$k_y$", ha="left", size=7),
+                d.label(ax, (b - 0.33, gap), r"$k_\psi$", size=7),
+            ]
+            _, t = d.dimension(ax, (0.0, -side - 0.35), (b, -side - 0.35), "$b$", side=-1.0)
+            texts.append(t)
+            _, t = d.dimension(ax, (-b, -side - 0.35), (0.0, -side - 0.35), "$b$", side=-1.0)
+            texts.append(t)
+            _, t = d.dimension(ax, (-reach + 0.25, 0.0), (-reach + 0.25, a), "$a$")
+            texts.append(t)
+            d.arrow(ax, (reach - 0.6, side + 0.35), (reach, side + 0.35), color=d.FORCE)
+            texts.append(d.label(ax, (reach - 0.65, side + 0.35), "$V$", color=d.FORCE, ha="right"))
+            if self._exaggerate != 1.0:
+                texts.append(
+                    d.label(
+                        ax,
+                        (0.0, side + 0.35),
+                        f"$y$ and $\\psi$ drawn × {self._exaggerate:g}",
+                        size=7,
+                        color=d.DIMENSION,
+                    )
+                )
+            art["texts"] = texts
+            self.artists = art
+            self._place(np.zeros(2), np.zeros((2, 2)))
+            d.finish(ax)
+
+    def _drawn(self, frame, wheelsets) -> tuple[np.ndarray, np.ndarray]:
+        """The drawn (y, ψ) of the frame and of the two wheelsets, checked and exaggerated."""
+        frame = _checks.array("frame", frame, shape=(2,))
+        wheelsets = _checks.array("wheelsets", wheelsets, shape=(2, 2))
+        limit_y, limit_psi = 0.25 * self._bogie.wheelset.half_gauge, np.pi / 12
+        for name, value in (("frame", frame), ("wheelsets", wheelsets)):
+            drawn = np.reshape(value, (-1, 2)) * self._exaggerate
+            if np.abs(drawn[:, 0]).max() > limit_y or np.abs(drawn[:, 1]).max() > limit_psi:
+                raise ValueError(
+                    f"{name} must be drawn within |y| × exaggerate ≤ {limit_y:.4g} m and "
+                    f"|ψ| × exaggerate ≤ {limit_psi:.4g} rad, got {value.tolist()} with "
+                    f"exaggerate = {self._exaggerate!r}"
+                )
+        return frame * self._exaggerate, wheelsets * self._exaggerate
+
+    def _place(self, frame: np.ndarray, wheelsets: np.ndarray) -> None:
+        art, b = self.artists, self._bogie.semi_wheelbase
+        ws = self._bogie.wheelset
+        a, r0, box, side = ws.half_gauge, ws.rolling_radius, self._box, self._side
+
+        def on_frame(points):  # frame coordinates → track: turned by ψ about the centre, shifted by y
+            return d.rotate(points, frame[1]) + (0.0, frame[0])
+
+        shapes = [d.rectangle_xy((0.0, s * side), 2 * b + 0.9, 0.14) for s in (-1.0, 1.0)]
+        shapes += [d.rectangle_xy((x, 0.0), 0.16, 2 * side) for x in (-0.3, 0.3)]
+        shapes.append(d.arc_xy((0.0, 0.0), 0.2, 0.0, 2 * np.pi))
+        for patch, shape in zip(art["frame"], shapes, strict=True):
+            patch.set_xy(on_frame(shape))
+        k = 0
+        for x, (y_w, psi_w), parts in zip((b, -b), wheelsets, art["wheelsets"], strict=True):
+            centre = np.array([x, y_w])
+
+            def on_wheelset(points, centre=centre, psi_w=psi_w):
+                return d.rotate(np.asarray(points, float) + (0.0, centre[1]), psi_w, centre)
+
+            parts[0].set_xy(on_wheelset(d.rectangle_xy((x, 0.0), 0.14, 2 * a + 0.4)))
+            for s, wheel in zip((-1.0, 1.0), parts[1:], strict=True):
+                wheel.set_xy(on_wheelset(d.rectangle_xy((x, s * a), 2 * r0, 0.13)))
+            for s in (-1.0, 1.0):
+                art["boxes"][k].set_xy(on_wheelset(d.rectangle_xy((x, s * box), 0.2, 0.16)))
+                bracket = x - np.sign(x) * 0.55
+                ends = on_frame([(bracket, s * box), (bracket, s * (side - 0.07))])
+                art["brackets"][k].set_data(ends[:, 0], ends[:, 1])
+                p0 = on_wheelset([(x, s * (box + 0.08))])[0]
+                p1 = on_frame([(x, s * (side - 0.07))])[0]
+                art["lateral_springs"][k].set_data(*d.spring_xy(p0, p1, 0.1, 3).T)
+                p0 = on_wheelset([(x - np.sign(x) * 0.1, s * box)])[0]
+                art["longitudinal_springs"][k].set_data(*d.spring_xy(p0, ends[0], 0.1, 3).T)
+                k += 1
+
+    def update(self, frame, wheelsets) -> dict:
+        """Move the drawn frame and wheelsets: the same artists, moved (no new artist, no new figure).
+
+        Parameters
+        ----------
+        frame : array_like, (2,)
+            The frame's lateral displacement y (m, positive to the left) and yaw ψ (rad, positive
+            turning to the left); as drawn, times ``exaggerate``, within a/4 and π/12.
+        wheelsets : array_like, (2, 2)
+            (y, ψ) of the wheelset at x = +b, then of the one at x = −b, as ``frame``.
+
+        Returns
+        -------
+        dict
+            The artists (``artists``), moved.
+        """
+        self._place(*self._drawn(frame, wheelsets))
+        return self.artists
+
+
 def bogie_plan(bogie: Bogie, *, ax=None) -> dict:
     """Draw a two-axle bogie from above: wheelsets at ±b in a frame, the primary springs, to scale.
 
@@ -54,7 +204,8 @@ def bogie_plan(bogie: Bogie, *, ax=None) -> dict:
     spring tie the wheelset to the frame. The longitudinal springs, either side of the centre line,
     resist the wheelset's yaw relative to the frame as a couple: the yaw stiffness k_ψ (the
     :class:`~raildyn.wheelset.Wheelset`'s ``yaw_stiffness``). The body rests on the centre pivot;
-    the red arrow is the direction of travel.
+    the red arrow is the direction of travel. The bogie stands centred; :class:`BogiePlan` draws
+    the same picture and moves it.
 
     Parameters
     ----------
@@ -66,8 +217,9 @@ def bogie_plan(bogie: Bogie, *, ax=None) -> dict:
     Returns
     -------
     dict
-        ``wheelsets`` (two lists of Polygons, x = +b first), ``frame`` (list of Polygons),
-        ``lateral_springs``, ``longitudinal_springs`` (lists of Line2D), ``texts`` (list of Text).
+        ``wheelsets`` (two lists of Polygons, x = +b first), ``frame`` and ``boxes`` (lists of
+        Polygons), ``lateral_springs``, ``longitudinal_springs``, ``brackets`` (lists of Line2D),
+        ``texts`` (list of Text), ``rails``.
 
     Examples
     --------
@@ -76,50 +228,7 @@ def bogie_plan(bogie: Bogie, *, ax=None) -> dict:
     >>> len(art["lateral_springs"]), len(art["longitudinal_springs"])
     (4, 4)
     """
-    _checks.instance("bogie", bogie, Bogie, "raildyn.vehicles.Bogie")
-    ws = bogie.wheelset
-    a, r0, b = ws.half_gauge, ws.rolling_radius, bogie.semi_wheelbase
-    box = a + 0.2  # the axle boxes, just outside the wheels
-    side = box + 0.3  # the frame's side members
-    reach = b + r0 + 0.9
-    ax = d.start(ax)
-    with d.style():
-        art = {"rails": _rails(ax, -reach, reach, a)}
-        art["wheelsets"] = [_wheelset_plan(ax, (x, 0.0), a, r0) for x in (b, -b)]
-        frame = [
-            d.block(ax, d.rectangle_xy((0.0, s * side), 2 * b + 0.9, 0.14), fill="0.8", z=1)
-            for s in (-1.0, 1.0)
-        ]
-        frame += [d.block(ax, d.rectangle_xy((x, 0.0), 0.16, 2 * side), fill="0.8", z=1) for x in (-0.3, 0.3)]
-        frame.append(d.block(ax, d.arc_xy((0.0, 0.0), 0.2, 0.0, 2 * np.pi), fill="white", z=1.2))
-        art["frame"] = frame
-        lateral, longitudinal = [], []
-        for x in (b, -b):
-            for s in (-1.0, 1.0):
-                d.block(ax, d.rectangle_xy((x, s * box), 0.2, 0.16), fill="0.7", z=2.5)
-                lateral.append(d.spring(ax, (x, s * (box + 0.08)), (x, s * (side - 0.07)), 0.1, coils=3))
-                bracket = x - np.sign(x) * 0.55
-                ax.plot([bracket, bracket], [s * box, s * (side - 0.07)], **d.LINE)
-                longitudinal.append(
-                    d.spring(ax, (x - np.sign(x) * 0.1, s * box), (bracket, s * box), 0.1, coils=3)
-                )
-        art["lateral_springs"], art["longitudinal_springs"] = lateral, longitudinal
-        gap = (box + 0.08 + side - 0.07) / 2  # between the axle box and the frame's side member
-        texts = [
-            d.label(ax, (b + 0.14, gap), "$k_y$", ha="left", size=7),
-            d.label(ax, (b - 0.33, gap), r"$k_\psi$", size=7),
-        ]
-        _, t = d.dimension(ax, (0.0, -side - 0.35), (b, -side - 0.35), "$b$", side=-1.0)
-        texts.append(t)
-        _, t = d.dimension(ax, (-b, -side - 0.35), (0.0, -side - 0.35), "$b$", side=-1.0)
-        texts.append(t)
-        _, t = d.dimension(ax, (-reach + 0.25, 0.0), (-reach + 0.25, a), "$a$")
-        texts.append(t)
-        d.arrow(ax, (reach - 0.6, side + 0.35), (reach, side + 0.35), color=d.FORCE)
-        texts.append(d.label(ax, (reach - 0.65, side + 0.35), "$V$", color=d.FORCE, ha="right"))
-        art["texts"] = texts
-        d.finish(ax)
-    return art
+    return BogiePlan(bogie, ax=ax).artists
 
 
 def car_side(car: VerticalCar, *, ax=None) -> dict:

@@ -186,7 +186,7 @@ def _png(rgba: np.ndarray) -> bytes:
     Pillow chooses a filter for every row by trying each one, which took as long as the compression
     itself (about 4 ms of a 800 × 300 frame's 8); a line plot compresses nearly as well unfiltered
     (the frame comes out about 5 % larger, in half the time). The static frames are recompressed
-    (``_static.compact_png``). Format: PNG specification (ISO/IEC 15948), 8-bit RGBA, filter type 0.
+    (:func:`raildyn.plots.compact_png`). Format: PNG specification (ISO/IEC 15948), 8-bit RGBA, filter type 0.
     """
     height, width, _ = rgba.shape
     rows = np.empty((height, 4 * width + 1), np.uint8)

@@ -3,7 +3,7 @@
 The frames are drawn at build time by the widget's own model and plot code over
 a small grid of the main control values, then shown with a native HTML range
 input and a few lines of JavaScript that swap the pictures. No extra library:
-the frames are palette PNGs (Pillow, which matplotlib already requires) inlined
+the frames are palette PNGs (:func:`raildyn.plots.compact_png`) inlined
 as data URIs, so the page works offline.
 """
 
@@ -11,16 +11,12 @@ from __future__ import annotations
 
 import base64
 import html
-import io
 import itertools
 import json
 import uuid
 from collections.abc import Callable, Mapping, Sequence
 
-from PIL import Image
-
-# 64 colours are plenty for line plots and cut a frame to about a third of its RGBA size.
-_PALETTE_COLOURS = 64
+from raildyn.plots import compact_png
 
 _SCRIPT = """
 (function () {
@@ -43,21 +39,6 @@ _SCRIPT = """
   show();
 })();
 """
-
-
-def compact_png(png: bytes) -> bytes:
-    """Re-encode a PNG frame with a small palette to keep the page light.
-
-    Pillow's fast octree quantizer and zlib's level 6 give a frame of the same size as median cut
-    and level 9 with ``optimize`` (24.8 kB for chapter 6's ride frame, both ways), in a sixth of the
-    time (7 ms against 39 ms): median cut spends 12 ms choosing colours and level 9 25 ms squeezing
-    out the last tenth, on every one of the book's frames and every build.
-    """
-    image = Image.open(io.BytesIO(png)).convert("RGB")
-    small = image.quantize(colors=_PALETTE_COLOURS, method=Image.Quantize.FASTOCTREE)
-    out = io.BytesIO()
-    small.save(out, format="PNG", compress_level=6)
-    return out.getvalue()
 
 
 def frames_html(

@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
+import numpy as np
 from fuzzing import call, fuzz, on
 
 from raildyn.bridge import SimplySupportedBeam
-from raildyn.diagrams import beam_load, wheelset_plan
+from raildyn.diagrams import BogiePlan, beam_load, wheelset_plan
 from raildyn.train import DraftGear, make_consist
 from raildyn.vehicles import Bogie, LateralCar, ThreePieceTruck, VerticalCar
 from raildyn.vibration import SDOF
@@ -48,6 +49,12 @@ ENTRIES = [
         accepts={"y": SIGNED, "psi": SIGNED},
     ),
     fuzz("raildyn.diagrams.bogie_plan", lambda: call(Bogie())),
+    fuzz("raildyn.diagrams.BogiePlan", lambda: call(Bogie(), exaggerate=20.0)),
+    fuzz(
+        "raildyn.diagrams.BogiePlan.update",
+        lambda: on(BogiePlan(Bogie(), exaggerate=10.0), [0.001, 0.0005], [[0.002, 0.001], [-0.001, 0.0]]),
+        accepts={"frame": SIGNED, "wheelsets": SIGNED},
+    ),
     fuzz("raildyn.diagrams.car_side", lambda: call(VerticalCar())),
     fuzz(
         "raildyn.diagrams.car_plan",
@@ -68,5 +75,10 @@ ENTRIES = [
         accepts={"position": "zero"},
     ),
     fuzz("raildyn.diagrams.BeamLoad", lambda: call(SimplySupportedBeam(), 6.0), accepts={"position": "zero"}),
-    fuzz("raildyn.diagrams.BeamLoad.update", lambda: on(_beam(), 12.0), accepts={"position": "zero"}),
+    # a deflection is signed (a beam may rise as it swings back) and may be zero (at rest)
+    fuzz(
+        "raildyn.diagrams.BeamLoad.update",
+        lambda: on(_beam(), 12.0, deflection=0.01 * np.sin(np.pi * _beam().points / 20.0)),
+        accepts={"position": "zero", "deflection": SIGNED + " none"},  # None: the static shape
+    ),
 ]
