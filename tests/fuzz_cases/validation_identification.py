@@ -3,6 +3,8 @@ raildyn.validation.measured)."""
 
 from __future__ import annotations
 
+from functools import cache
+
 import numpy as np
 from fuzzing import call, fuzz, on
 
@@ -29,8 +31,19 @@ def _strain():
 
 
 EPS = _strain()
-FIT = free_decay(T, X)
-COAST = coast_down(T, V, 1.0e5)
+
+
+# The fits are made when an entry first asks for them, not when the registry is collected.
+@cache
+def _fit():
+    return free_decay(T, X)
+
+
+@cache
+def _coast():
+    return coast_down(T, V, 1.0e5)
+
+
 FIELDS = dict(
     names=("a", "b"),
     estimate=np.array([1.0, 2.0]),
@@ -86,9 +99,9 @@ ENTRIES = [
         lambda: call(**FIELDS),
         accepts={"residual_rms": "big mm", "*": RESULT},
     ),
-    fuzz("raildyn.validation.identification.ParameterFit.value", lambda: on(FIT, "damping_ratio")),
-    fuzz("raildyn.validation.identification.ParameterFit.bounds", lambda: on(FIT, "frequency_hz")),
-    fuzz("raildyn.validation.identification.ParameterFit.plot", lambda: on(FIT, None)),
+    fuzz("raildyn.validation.identification.ParameterFit.value", lambda: on(_fit(), "damping_ratio")),
+    fuzz("raildyn.validation.identification.ParameterFit.bounds", lambda: on(_fit(), "frequency_hz")),
+    fuzz("raildyn.validation.identification.ParameterFit.plot", lambda: on(_fit(), None)),
     fuzz(
         "raildyn.validation.identification.FreeDecayFit",
         lambda: call(**FIELDS, log_decrement=0.2, decrement_damping_ratio=0.03),
@@ -111,7 +124,7 @@ ENTRIES = [
     ),
     fuzz(
         "raildyn.validation.identification.CoastDownFit.resistance",
-        lambda: on(COAST, [5.0, 20.0]),
+        lambda: on(_coast(), [5.0, 20.0]),
         accepts={"speed": "zero negative list shape"},  # R(v) is a polynomial: any v, any shape, evaluates
     ),
 ]
