@@ -1,4 +1,5 @@
-"""The frame machinery of raildyn.widgets._core: its PNG encoder, scatters drawn without hidden markers."""
+"""The frame machinery of the widgets (raildyn.plots.Blitter): its PNG encoder, scatters drawn without hidden
+markers."""
 
 import io
 
@@ -6,8 +7,9 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from raildyn.widgets import _core
-from raildyn.widgets._core import LiveFigure, _png
+from raildyn import plots
+from raildyn.plots import _png
+from raildyn.widgets._core import LiveFigure
 
 
 def _pixels(png: bytes) -> np.ndarray:
@@ -54,7 +56,7 @@ def test_a_scatter_draws_the_same_pixels_without_its_hidden_markers(style, thinn
     frame = live.render()
     assert (drawn[-1] < len(xy)) == thinned, f"{drawn[-1]} of {len(xy)} points drawn"
     np.testing.assert_array_equal(points.get_offsets(), xy, "the artist keeps all its points")
-    monkeypatch.setattr(_core, "_draw_points_in_view", lambda figure, artist: figure.draw_artist(artist))
+    monkeypatch.setattr(plots, "_draw_points_in_view", lambda figure, artist: figure.draw_artist(artist))
     live.invalidate()
     whole = live.render()
     assert drawn[-1] == len(xy)

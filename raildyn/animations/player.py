@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import base64
 import html
-import io
 import json
 import uuid
 from collections.abc import Callable, Sequence
@@ -20,7 +19,7 @@ from pathlib import Path
 
 from raildyn import _checks
 from raildyn._progress import progress_bar
-from raildyn.plots import compact_png
+from raildyn.plots import Blitter, compact_png
 
 # Imported where used, to keep this module's import cheap: matplotlib, PIL, numpy
 
@@ -189,12 +188,12 @@ def record(
     """Draw one frame per label of one figure, moved in place by ``draw``, as an :class:`Animation`.
 
     Every frame is the same figure: ``draw(i)`` moves its artists for frame i (``set_data``,
-    ``set_xy``; no new figure) and returns None; the figure is rendered (Agg) and the frame
-    compacted to a palette PNG. The figure's layout engine lays it out for the first frame and is
-    then switched off, so that the picture stands still as it plays. Given the artists that move,
-    the rest of the figure (axes, ticks, traces, rails) is drawn once and only they are drawn again
-    on it for each frame, in a third of the time. A progress bar shows the frames
-    (``RAILDYN_PROGRESS=0`` hides it).
+    ``set_xy``; no new figure) and returns None; the figure is rendered by a
+    :class:`raildyn.plots.Blitter`, as a widget's frames are, and the frame compacted to a palette
+    PNG. The figure keeps the layout of its first frame, so that the picture stands still as it
+    plays. Given the artists that move, the rest of the figure (axes, ticks, traces, rails) is drawn
+    once and only they are drawn again on it for each frame, in a third of the time. A progress bar
+    shows the frames (``RAILDYN_PROGRESS=0`` hides it).
 
     Parameters
     ----------
@@ -218,9 +217,7 @@ def record(
     Animation
     """
     from matplotlib.artist import Artist
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
-    from PIL import Image
 
     _checks.instance("figure", figure, Figure, "matplotlib.figure.Figure")
     _checks.function("draw", draw)
@@ -232,34 +229,12 @@ def record(
             raise TypeError(f"moving must be a list or tuple of the figure's artists, got {moving!r:.60}")
         if not all(isinstance(a, Artist) and a.get_figure(root=True) is figure for a in moving):
             raise ValueError("moving must hold only artists drawn on figure")
-        moving = sorted(moving, key=lambda a: a.get_zorder())
-    canvas = FigureCanvasAgg(figure)
-    pictures, background = [], None
+        moving = sorted(moving, key=lambda a: a.get_zorder())  # drawn in their order, as the figure would
+    frames = Blitter(figure, moving or ())
+    pictures = []
     for i in progress_bar(range(len(labels)), desc=title):
         moved = draw(i)
         if moved is not None:
             raise TypeError(f"draw must move the figure's artists and return None, got {moved!r:.60}")
-        if i == 0:
-            canvas.draw()
-            # The layout stays where the first frame put it: a layout engine would lay the figure out
-            # again at every frame (half of a frame's time), and the picture must not shift as it plays.
-            figure.set_layout_engine("none")
-            if moving:
-                # What does not move is drawn once, without the moving artists, and kept.
-                for artist in moving:
-                    artist.set_animated(True)
-                canvas.draw()
-                background = canvas.copy_from_bbox(figure.bbox)
-        if background is not None:
-            canvas.restore_region(background)
-            for artist in moving:
-                figure.draw_artist(artist)
-        elif i > 0:
-            canvas.draw()
-        # Pillow's level 1 is enough here: compact_png quantizes and compresses the frame again.
-        png = io.BytesIO()
-        Image.frombuffer("RGBA", canvas.get_width_height(), canvas.buffer_rgba()).save(
-            png, format="PNG", compress_level=1
-        )
-        pictures.append(compact_png(png.getvalue(), colours=_COLOURS))
+        pictures.append(compact_png(frames.frame(), colours=_COLOURS))
     return Animation(pictures, labels, title=title, interval=interval)

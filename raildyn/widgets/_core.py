@@ -10,21 +10,16 @@ button. The redraw function updates the existing artists (``set_data``,
 from __future__ import annotations
 
 import base64
-import struct
-import zlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 import ipywidgets as widgets
 import matplotlib
-import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.collections import PathCollection
 from matplotlib.figure import Figure
 
 from raildyn import _checks
 from raildyn._progress import in_the_app
-from raildyn.plots import STYLE
+from raildyn.plots import STYLE, Blitter
 
 # A widget's figure: at most 10 × 10 panels, at most 40 in a side and 600 dpi (a frame of at most
 # 24,000 pixels a side, already far beyond a screen; the frames are encoded after every change).
@@ -65,142 +60,29 @@ class LiveFigure:
         self.dpi = dpi
         with matplotlib.rc_context(STYLE):
             self.figure = Figure(figsize=figsize, dpi=dpi, layout="constrained")
-            self.canvas = FigureCanvasAgg(self.figure)
+            self._frames = Blitter(self.figure)
             self.axes = self.figure.subplots(nrows, ncols, squeeze=False, **subplot_kw)
         self.image = widgets.Image(format="png", layout=widgets.Layout(width=f"{figsize[0] * dpi:.0f}px"))
-        self._moving: list = []
-        self._background = None
-        self._view = None
 
     def animate(self, *artists):
         """Register artists that change on every update; return the first, for chaining."""
-        for artist in artists:
-            artist.set_animated(True)
-            self._moving.append(artist)
+        self._frames.animate(*artists)
         return artists[0] if artists else None
 
     def invalidate(self) -> None:
         """Draw the fixed parts again on the next render (after a change that is not a limit)."""
-        self._background = None
-
-    def _current_view(self) -> tuple:
-        return tuple(ax.get_xlim() + ax.get_ylim() for ax in self.figure.axes)
+        self._frames.invalidate()
 
     def render(self) -> bytes:
         """Draw what changed and return the frame as PNG bytes."""
         with matplotlib.rc_context(STYLE):
-            view = self._current_view()
-            if self._background is None or view != self._view:
-                self.canvas.draw()  # animated artists are left out of this bitmap
-                if self.figure.get_layout_engine() is not None:
-                    # The constrained layout is solved on the first draw and then kept:
-                    # solving it on every slider move would cost more than the plot.
-                    self.figure.set_layout_engine("none")
-                self._background = self.canvas.copy_from_bbox(self.figure.bbox)
-                self._view = self._current_view()
-            else:
-                self.canvas.restore_region(self._background)
-            for artist in self._moving:
-                if isinstance(artist, PathCollection):
-                    _draw_points_in_view(self.figure, artist)
-                else:
-                    self.figure.draw_artist(artist)
-        return _png(np.asarray(self.canvas.buffer_rgba()))
+            return self._frames.frame()
 
     def refresh(self) -> bytes:
         """Render and show the new frame in the image widget; return its PNG bytes."""
         frame = self.render()
         self.image.value = frame
         return frame
-
-
-def _draw_points_in_view(figure: Figure, points: PathCollection) -> None:
-    """Draw a scatter without the markers that its clip box would hide whole: the same pixels, less work.
-
-    Agg transforms and clips every marker one by one, the hidden ones too: the roots chart of the
-    car (``ModeSweep.plot``) has 900 roots, about 260 of them in its window, and drew in 10 ms
-    instead of 3. The points are left out only for the drawing (the artist keeps all its data),
-    and only when nothing else varies point by point: one size, one line width, the colours one
-    or mapped from values by a norm whose limits are already set (a subset would otherwise move
-    them). Anything else is drawn as it is.
-    """
-    offsets = np.asarray(points.get_offsets())
-    values = points.get_array()
-    box = points.get_clip_box()
-    simple = (
-        points.get_clip_on()
-        and box is not None
-        and len(points.get_sizes()) <= 1
-        and len(points.get_linewidths()) <= 1
-        and offsets.ndim == 2
-        and len(offsets) > 1
-        and (
-            (values is None and len(points.get_facecolors()) <= 1 and len(points.get_edgecolors()) <= 1)
-            or (
-                values is not None
-                and np.ndim(values) == 1
-                and len(values) == len(offsets)
-                and points.norm.scaled()
-            )
-        )
-    )
-    if not simple:
-        figure.draw_artist(points)
-        return
-    xy = points.get_offset_transform().transform(offsets)
-    # A marker's reach, px: its whole width (sqrt of the area in pt²) and line width, and a pixel of
-    # antialiasing on each side; generous, since a kept marker costs little.
-    size = np.sqrt(points.get_sizes().max(initial=1.0)) + points.get_linewidths().max(initial=0.0)
-    reach = size * figure.dpi / 72.0 + 2.0
-    keep = (
-        (xy[:, 0] >= box.x0 - reach)
-        & (xy[:, 0] <= box.x1 + reach)
-        & (xy[:, 1] >= box.y0 - reach)
-        & (xy[:, 1] <= box.y1 + reach)
-    )
-    if keep.all():
-        figure.draw_artist(points)
-        return
-    points.set_offsets(offsets[keep])
-    if values is not None:
-        points.set_array(values[keep])
-    try:
-        figure.draw_artist(points)
-    finally:
-        points.set_offsets(offsets)
-        if values is not None:
-            points.set_array(values)
-
-
-_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
-
-
-def _png_chunk(kind: bytes, data: bytes) -> bytes:
-    """One PNG chunk: length, type, data and the CRC-32 of type and data (PNG specification, sec. 5.3)."""
-    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-
-
-def _png(rgba: np.ndarray) -> bytes:
-    """A frame's pixels (height, width, 4 bytes of RGBA) as a PNG file, without row filters, zlib level 1.
-
-    Pillow chooses a filter for every row by trying each one, which took as long as the compression
-    itself (about 4 ms of a 800 × 300 frame's 8); a line plot compresses nearly as well unfiltered
-    (the frame comes out about 5 % larger, in half the time). The static frames are recompressed
-    (:func:`raildyn.plots.compact_png`). Format: PNG specification (ISO/IEC 15948), 8-bit RGBA, filter type 0.
-    """
-    height, width, _ = rgba.shape
-    rows = np.empty((height, 4 * width + 1), np.uint8)
-    rows[:, 0] = 0  # filter type 0 (none) at the start of every row
-    rows[:, 1:] = rgba.reshape(height, 4 * width)
-    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)  # 8-bit RGBA, no interlace
-    return b"".join(
-        (
-            _PNG_SIGNATURE,
-            _png_chunk(b"IHDR", header),
-            _png_chunk(b"IDAT", zlib.compress(rows, 1)),
-            _png_chunk(b"IEND", b""),
-        )
-    )
 
 
 class LiveBox(widgets.VBox):

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from fuzzing import call, fuzz, on
 
-from raildyn import animations
+from raildyn import animations, plots
 from raildyn.bridge import SimplySupportedBeam, moving_mass
 from raildyn.track import Curve
 from raildyn.train import braking_model
@@ -47,8 +47,17 @@ def _movie():
     return animations.Animation([_png(), _png()], ["a", "b"], title="two frames")
 
 
+def _blitter():
+    fig = _figure()
+    return plots.Blitter(fig, fig.axes[0].lines[:])
+
+
 ENTRIES = [
     fuzz("raildyn.plots.compact_png", lambda: call(_png(), colours=32)),
+    fuzz("raildyn.plots.Blitter", lambda: (lambda fig: call(fig, fig.axes[0].lines[:]))(_figure())),
+    fuzz("raildyn.plots.Blitter.animate", lambda: (lambda b: on(b, b.figure.axes[0].lines[0]))(_blitter())),
+    fuzz("raildyn.plots.Blitter.frame", lambda: on(_blitter())),
+    fuzz("raildyn.plots.Blitter.invalidate", lambda: on(_blitter())),
     fuzz("raildyn.animations.Animation", lambda: call([_png(), _png()], ["a", "b"], title="x", interval=0.1)),
     fuzz("raildyn.animations.Animation.html", lambda: on(_movie())),
     fuzz(
