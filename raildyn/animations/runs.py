@@ -22,7 +22,7 @@ from raildyn.vehicles import RockingFreightCar, rocking_run
 
 __all__ = ["bridge_crossing", "rocking_car", "train_run_in"]
 
-_BODY_WIDTH = 3.05  # m: the car body's width in section (a North American freight car's, AAR plate C)
+_BODY_WIDTH = 3.05  # m: the width the body is drawn at in section, a drawing size (the run does not use it)
 
 
 def rocking_car(
