@@ -37,8 +37,10 @@ $(STAMP): requirements.txt pyproject.toml constraints.txt
 
 install: $(STAMP)
 
-## constraints: pin the installed versions (within pyproject.toml's ranges) as the tested set, after an upgrade
-constraints: $(STAMP)
+## constraints: pin what .venv holds as the tested set, after an upgrade there (.venv/bin/pip install -U NAME,
+## within pyproject.toml's ranges); tests/test_packaging.py checks the pins against the ranges
+constraints:
+	@test -x $(PY) || { echo "no $(VENV): make install first"; exit 1; }
 	{ echo "# The tested set: make install pins these; make constraints writes them from the venv."; \
 	  $(PY) -m pip list --format=freeze --exclude-editable | grep -v -i -E '^(pip|raildyn)=='; } > constraints.txt
 
