@@ -133,7 +133,7 @@ class Blitter:
         Parameters
         ----------
         *artists : matplotlib.artist.Artist
-            Artists of :attr:`figure` that the next frames move.
+            Artists of the blitter's figure that the next frames move.
         """
         from matplotlib.artist import Artist
 
