@@ -98,8 +98,13 @@ def main(jobs: Path, job: str) -> None:
             scripts = ROOT / "scripts"
             if Path("/usr/bin/chromium").exists():
                 pdf = jobs / "pdf" / "raildyn.pdf"
+                # printed, then its text read for tests/test_pdf.py (tests/pdf_text.py)
                 running.append(
-                    start(jobs, "pdf", [sys.executable, str(scripts / "book_pdf.py"), str(html), str(pdf)])
+                    start(
+                        jobs,
+                        "pdf",
+                        [sys.executable, str(ROOT / "tests" / "pdf_text.py"), str(html), str(pdf)],
+                    )
                 )
             else:
                 skip(jobs, "pdf", "chromium is not installed: the book was not printed")

@@ -24,6 +24,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "scripts"))
 
 import book_pdf  # noqa: E402
+import pdf_text  # noqa: E402  (tests/pdf_text.py: the printed book's text, read by its job)
 
 pytestmark = [
     pytest.mark.slow,
@@ -41,12 +42,7 @@ class Printed:
     html: Path
     pages: list[str]  # the HTML paths, in the PDF's order
     ranges: dict  # HTML path -> range of its PDF pages (0-based)
-    # Per PDF page: [(text, x, y, kind)] as pypdf's visitor reports them, in pt from the bottom left. The
-    # kind is "text"; "math" for MathJax's fonts (Type 3), whose reported position can be a few pt off its
-    # baseline; or "stretched" for the middle of a tall delimiter (a matrix's bracket): one glyph drawn
-    # through a scaled matrix, which chromium paints after the text of the page (as it paints any
-    # transformed box) and whose characters ("⎢") are no part of the reading.
-    runs: list
+    runs: list  # per PDF page: [(text, x, y, kind)] (pdf_text.read_runs)
     numbers: dict  # a page object's number -> its index
 
     def text(self, path: str) -> str:
@@ -94,19 +90,8 @@ def book(printed_book, built_book) -> Printed:
     starts = [reader.get_destination_page_number(item) for item in _chapters(reader)]
     assert len(starts) == len(pages) and starts == sorted(starts), starts
     ends = starts[1:] + [len(reader.pages)]
-    runs = []
-    for page in reader.pages:  # one pass over the text (most of this module's time)
-        found = []
-
-        def visit(text, cm, tm, font, size, found=found):
-            x, y = tm[4] * cm[0] + tm[5] * cm[2] + cm[4], tm[4] * cm[1] + tm[5] * cm[3] + cm[5]
-            kind = "text"
-            if (font or {}).get("/Subtype") == "/Type3":
-                kind = "math" if abs(abs(cm[3]) - abs(cm[0])) <= 1e-3 * abs(cm[0]) else "stretched"
-            found.append((text, x, y, kind))
-
-        page.extract_text(visitor_text=visit)
-        runs.append(found)
+    runs = pdf_text.load_runs(out)  # read by the background job as soon as the PDF was printed
+    assert len(runs) == len(reader.pages)
     ranges = {p: range(a, b) for p, a, b in zip(pages, starts, ends, strict=True)}
     numbers = {page.indirect_reference.idnum: i for i, page in enumerate(reader.pages)}
     return Printed(reader, log, built_book[1], pages, ranges, runs, numbers)

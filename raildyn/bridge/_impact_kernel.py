@@ -174,8 +174,9 @@ def march(mass, damping, stiffness, factor, columns, column_of, dofs, weights, s
                 xn += block_inverse[:, contact_dofs[w]] * force[w]
             an_b = a0 * (xn - x) - 4.0 / dt * xd - xdd
             xd += 0.5 * dt * (xdd + an_b)
-            xdd[:] = an_b
-            x[:] = xn
+            for i in range(xn.size):  # element by element: ARCHITECTURE.md, compiled kernels
+                xdd[i] = an_b[i]
+                x[i] = xn[i]
         # Power fed in by the rolling (the rail's slope and the irregularity passing under each wheel),
         # and the dampers' loss, integrated by the trapezoidal rule as Newmark's rule integrates them.
         power = 0.0

@@ -58,9 +58,11 @@ def _assemble(
         A[i, i] = Mb[i]
         B[i, i] = Cb[i]
         Z[i, i] = Kb[i]
-    A[n:, n:] = M
-    B[n:, n:] = C
-    Z[n:, n:] = K
+    for i in range(M.shape[0]):  # element by element: ARCHITECTURE.md, compiled kernels
+        for j in range(M.shape[1]):
+            A[n + i, n + j] = M[i, j]
+            B[n + i, n + j] = C[i, j]
+            Z[n + i, n + j] = K[i, j]
     on = np.empty(a, dtype=np.int64)  # the axles on the beam: only they load it
     count = 0
     for j in range(a):
@@ -142,17 +144,20 @@ def march(
         if s == 0:  # from rest: the acceleration that balances the loads at t = 0
             if not np.all(np.isfinite(f)):
                 return 0
-            Acc[0, :] = np.linalg.solve(A, f)
+            acc = np.linalg.inv(A) @ f  # not np.linalg.solve: ARCHITECTURE.md, compiled kernels
+            for i in range(N):
+                Acc[0, i] = acc[i]
         else:
             xp = X[s - 1] + h * V[s - 1] + 0.25 * h * h * Acc[s - 1]
             vp = V[s - 1] + 0.5 * h * Acc[s - 1]
             rhs = f - B @ vp - Z @ xp
             if not np.all(np.isfinite(rhs)):
                 return s
-            acc = np.linalg.solve(A + 0.5 * h * B + 0.25 * h * h * Z, rhs)
-            X[s] = xp + 0.25 * h * h * acc
-            V[s] = vp + 0.5 * h * acc
-            Acc[s] = acc
+            acc = np.linalg.inv(A + 0.5 * h * B + 0.25 * h * h * Z) @ rhs
+            for i in range(N):
+                X[s, i] = xp[i] + 0.25 * h * h * acc[i]
+                V[s, i] = vp[i] + 0.5 * h * acc[i]
+                Acc[s, i] = acc[i]
             if not np.all(np.isfinite(X[s])):
                 return s
         _contact(v, n, p, X[s], V[s], Acc[s], W, m, GK, GC, KW, CW, r[s], S, F[s])

@@ -150,7 +150,8 @@ def advance(
             t_new = min(t + h_abs, t1)
             h = t_new - t
             h_abs = h
-            K[0, :] = f
+            for i in range(n):  # element by element: ARCHITECTURE.md, compiled kernels
+                K[0, i] = f[i]
             for s in range(1, 6):
                 for i in range(n):
                     acc = 0.0
@@ -200,8 +201,9 @@ def advance(
         counts[3] += 1
         steps += 1
         t = t_new
-        y[:] = y_new
-        f[:] = K[6]
+        for i in range(n):
+            y[i] = y_new[i]
+            f[i] = K[6, i]
     return DONE, t, h_abs
 
 

@@ -196,8 +196,9 @@ def march(
     """
     n = q0.size
     q, v = np.zeros(n + 1), np.zeros(n + 1)
-    q[:n] = q0
-    v[:n] = v0
+    for i in range(n):  # element by element: ARCHITECTURE.md, compiled kernels
+        q[i] = q0[i]
+        v[i] = v0[i]
     nw = watched.size
     rail_z, rail_v = np.zeros(2 * behind.size + 1), np.zeros(2 * behind.size + 1)
     forces, deflections, gen = np.zeros(ei.shape[0]), np.zeros(ei.shape[0]), np.zeros(n + 1)
@@ -248,7 +249,8 @@ def march(
         if step == steps:
             break
         # RK4 on (q, v): k_q = v, k_v = a(t, q, v); stages 2-4 from the one before, at ½, ½ and 1 step.
-        kq[0, :] = v
+        for i in range(n):
+            kq[0, i] = v[i]
         for stage in range(1, 4):
             c = 0.5 if stage < 3 else 1.0
             for i in range(n):
@@ -256,7 +258,8 @@ def march(
                 vs[i] = v[i] + c * dt * kv[stage - 1, i]
             _acceleration(t + c * dt, qs, vs, mass, dofs, ei, ef, eps, speed, behind, rail_length, spacing,
                           table, rail_z, rail_v, forces, deflections, gen, kv[stage])  # fmt: skip
-            kq[stage, :] = vs
+            for i in range(n):
+                kq[stage, i] = vs[i]
         for i in range(n):
             q[i] += dt / 6.0 * (kq[0, i] + 2.0 * kq[1, i] + 2.0 * kq[2, i] + kq[3, i])
             v[i] += dt / 6.0 * (kv[0, i] + 2.0 * kv[1, i] + 2.0 * kv[2, i] + kv[3, i])
