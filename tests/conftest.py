@@ -134,7 +134,8 @@ def _assert_built(built_book) -> None:
 
 @pytest.fixture(scope="session")
 def printed_book(built_book):
-    """The book printed by ``scripts/book_pdf.py`` in the background: (its outcome, its log, the PDF)."""
+    """The book printed by ``scripts/book_pdf.py`` in the background, its text then read by
+    ``tests/pdf_text.py``: (its outcome, its log, the PDF)."""
     _assert_built(built_book)
     job = _Job("pdf")
     proc = job.result()
