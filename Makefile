@@ -22,7 +22,7 @@ ONE_BLAS_THREAD := OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1
 # A fresh virtual environment with the pinned ranges, raildyn installed editable
 # so that the notebooks import the working tree; then its numba kernels compiled once into numba's
 # cache (the __pycache__ folders beside the sources, which every later kernel, book build and Voilà loads),
-# one process a core (25 s on 2 cores, 38 s in one). pip does not byte-compile what it installs
+# one process a core (24 s on 2 cores, 33 s in one). pip does not byte-compile what it installs
 # (--no-compile): Python compiles a module when it is first imported and keeps it, so only the modules
 # in use are compiled (the install from pip's cache: 39 s with pip's compiling, 19 s without; the first
 # imports of a test session then compile for some 6 s once).
