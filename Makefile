@@ -17,7 +17,7 @@ unexport PYTHONDONTWRITEBYTECODE
 # in 32 s beside two busy loops, 12 s on one thread; alone, 11 s either way).
 ONE_BLAS_THREAD := OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1
 
-.PHONY: book book-student pdf pdf-student test test-fast lab app bench figures lint clean chromium fe-libs install constraints
+.PHONY: book book-student pdf pdf-student test test-fast lab app bench figures lint clean chromium fe-libs debian install constraints
 
 # A fresh virtual environment with the pinned ranges, raildyn installed editable
 # so that the notebooks import the working tree; then its numba kernels compiled once into numba's
@@ -26,13 +26,18 @@ ONE_BLAS_THREAD := OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1
 # (--no-compile): Python compiles a module when it is first imported and keeps it, so only the modules
 # in use are compiled (the install from pip's cache: 39 s with pip's compiling, 19 s without; the first
 # imports of a test session then compile for some 6 s once).
-# requirements.txt installs raildyn editable with its "dev" extra (the ranges live in pyproject.toml), at the
-# versions constraints.txt pins, so that every machine tests the same set.
+# What requirements.txt installs (raildyn editable with its "dev" extra; the ranges live in pyproject.toml),
+# at the versions constraints.txt pins, so that every machine tests the same set, in two steps: raildyn with
+# what it imports, then the extra's tools (scripts/extras.py lists them) while the kernels compile, which
+# need only the first (pip unpacks on one core, the compilation takes both).
 $(STAMP): requirements.txt pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet --no-compile -c constraints.txt -r requirements.txt
-	$(PY) -m raildyn compile --jobs $(shell nproc)
+	$(PY) -m pip install --quiet --no-compile -c constraints.txt -e .
+	$(PY) scripts/extras.py dev > $(VENV)/extras.txt
+	$(PY) -m raildyn compile --jobs $(shell nproc) & compiling=$$!; \
+	  $(PY) -m pip install --quiet --no-compile -c constraints.txt -r $(VENV)/extras.txt; installed=$$?; \
+	  wait $$compiling && test $$installed = 0
 	touch $@
 
 install: $(STAMP)
@@ -75,8 +80,15 @@ pdf-student: book-student chromium
 # (tests/conftest.py).
 JOBS ?= $(shell nproc)
 PYTEST := $(PY) -m pytest --dist loadscope --no-loadscope-reorder
-test: $(STAMP) chromium fe-libs
+test:
+	@$(MAKE) --no-print-directory -j2 $(STAMP) debian
 	$(ONE_BLAS_THREAD) $(PYTEST) -n $(JOBS)
+
+# Debian's packages of the suite, installed beside the Python environment (make test), one apt-get after
+# the other: they share dpkg's lock.
+debian:
+	@$(MAKE) --no-print-directory chromium
+	@$(MAKE) --no-print-directory fe-libs
 
 # Debian's chromium for the browser tests; Playwright drives it, nothing is downloaded.
 chromium:

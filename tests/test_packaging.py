@@ -60,6 +60,24 @@ def test_requirements_txt_writes_no_range_of_its_own():
     ), "the dev extra gathers every other extra"
 
 
+def test_the_install_in_two_steps_installs_what_requirements_txt_names():
+    # make install: raildyn (`-e .`) with its dependencies, then scripts/extras.py's list of the dev
+    # extra while the kernels compile; together, what `-e .[dev]` installs.
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import extras
+
+    listed = extras.requirements("dev")
+    assert len(listed) == len(set(listed))
+    assert set(listed) == {
+        r for name, rs in PYPROJECT["optional-dependencies"].items() if name != "dev" for r in rs
+    }
+    assert not any(canonicalize_name(Requirement(r).name) == "raildyn" for r in listed)
+    with pytest.raises(
+        ValueError, match=r"extra must be one of \['app', 'book', 'dev', 'tables', 'test'\], got 'docs'"
+    ):
+        extras.requirements("docs")
+
+
 def test_every_range_is_pinned_inside_it():
     pins = _pins()
     for name, requirements in _ranges().items():
