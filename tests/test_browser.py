@@ -66,30 +66,13 @@ def wait_for_http(url: str, timeout: float) -> None:
     raise TimeoutError(f"{url} did not answer within {timeout} s")
 
 
-class Browser:
-    """Chromium with one context for every page the module opens: the pages share its cache, so that the
-    book's and the app's scripts and fonts are fetched and compiled once, not once a page (six chapter
-    pages cost chromium 14 CPU s in one context, 19 s in a context each)."""
-
-    def __init__(self, context):
-        self.context = context
-
-    def new_page(self, viewport: dict):
-        """A new page of ``viewport`` size (a dict of width and height, px)."""
-        page = self.context.new_page()
-        page.set_viewport_size(viewport)
-        return page
-
-
 @pytest.fixture(scope="module")
 def browser():
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as p:
         b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS, headless=True)
-        context = b.new_context()
-        yield Browser(context)
-        context.close()
+        yield b
         b.close()
 
 
