@@ -194,6 +194,30 @@ def test_the_curve_model_on_tangent_track_is_the_tangent_model():
     )
 
 
+def test_a_runs_samples_relative_to_the_track_at_once_are_each_samples_own():
+    # The bogie's two wheelsets (x = ±b) at 30 m/s over the clothoid, the arc and the track beyond,
+    # read at once (one time per column) and one sample at a time: the same numbers, to rounding.
+    curve = Curve(radius=800.0, transition_length=40.0, arc_length=30.0, straight=0.0)
+    model = Bogie().nonlinear().replace(curve=curve, start=-5.0)
+    t = np.linspace(0.0, 4.0, 9)
+    states = np.random.default_rng(2).normal(scale=1e-3, size=(model.state_size, t.size))
+    offset, yaw = model.relative_to_track(t, states, 30.0)
+    for j, tj in enumerate(t):
+        one = model.relative_to_track(tj, states[:, j], 30.0)
+        np.testing.assert_allclose(offset[:, j], one[0], rtol=1e-14, atol=1e-18)
+        np.testing.assert_allclose(yaw[:, j], one[1], rtol=1e-14, atol=1e-18)
+    # On the arc (from s = 40 m to 70 m) y_t = x²/(2R) and ψ_t = x/R, whatever the time.
+    b = model.system.wheelset_positions
+    on_arc = model.relative_to_track(t[4], np.zeros(model.state_size), 30.0)  # s_c = 55 m
+    assert 40.0 < 55.0 - abs(b).max() and 55.0 + abs(b).max() < 70.0
+    np.testing.assert_allclose(on_arc[0], -b * b / 1600.0, rtol=1e-12)
+    np.testing.assert_allclose(on_arc[1], -b / 800.0, rtol=1e-12)
+    with pytest.raises(ValueError, match="t must be a number"):
+        model.relative_to_track(t[:1], states[:, 0], 30.0)
+    with pytest.raises(ValueError, match="t must have shape"):
+        model.relative_to_track(t[:3], states, 30.0)
+
+
 def test_the_profile_contact_holds_chapter_4s_geometry_and_finds_the_flange():
     # The tables are contact_geometry's at their samples (rounding) and between them within the linear
     # interpolation's error over 0.25 mm; the clearance is the last shift before a contact steeper than

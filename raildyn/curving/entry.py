@@ -171,10 +171,7 @@ def curve_entry(model, speed, curve, *, max_step: float = 0.01, rtol: float = 1e
             f"curve must be run within 120 s at speed {V:g} m/s, got {end - start:.4g} m ({duration:.4g} s)"
         )
     run = simulate(on_curve, V, np.zeros(on_curve.state_size), duration, max_step=max_step, rtol=rtol)
-    offset = np.empty((len(x), run.t.size))
-    yaw = np.empty_like(offset)
-    for j, t in enumerate(run.t):
-        offset[:, j], yaw[:, j] = on_curve.relative_to_track(t, run.states[:, j], V)
+    offset, yaw = on_curve.relative_to_track(run.t, run.states, V)
     flange = np.empty_like(offset)
     for i, (_, _, ws) in enumerate(on_curve.system.wheelsets):
         forces = wheel_forces(ws, model.contact, offset[i], 0.0, 0.0, 0.0, V)

@@ -326,8 +326,9 @@ class NonlinearLateral:
 
         Parameters
         ----------
-        t : float
-            s, finite.
+        t : float or ndarray, (k,)
+            s, finite: one time for every column of ``state``, or each column's own time
+            (a run's samples at once).
         state : ndarray, (2n,) or (2n, k)
             [q; q̇], finite.
         speed : float
@@ -341,19 +342,23 @@ class NonlinearLateral:
         yaw : ndarray, like ``offset``
             rad, anticlockwise.
         """
-        t = scalar("t", t)
         V = _speed(speed)
         n = self.system.size
         q = _state(state, 2 * n)[:n]
+        if np.ndim(t) == 0:
+            t = scalar("t", t)
+        elif q.ndim == 1:
+            raise ValueError(f"t must be a number for a state of shape ({2 * n},), got shape {np.shape(t)}")
+        else:
+            t = _checks.array("t", t, shape=(q.shape[1],))
         iy = np.array([w[0] for w in self.system.wheelsets])
         ipsi = np.array([w[1] for w in self.system.wheelsets])
         if self.curve is None:
             return q[iy].copy(), q[ipsi].copy()
-        x = self.system.wheelset_positions
+        x = self.system.wheelset_positions.reshape((-1,) + (1,) * (q.ndim - 1))  # a column against (2n, k)
         s_c = self.start + V * t
-        column = (slice(None),) + (None,) * (q.ndim - 1)
-        y_t = (0.5 * x * x * self.curve.curvature(s_c + x / 3.0))[column]
-        psi_t = (x * self.curve.curvature(s_c + x / 2.0))[column]
+        y_t = 0.5 * x * x * self.curve.curvature(s_c + x / 3.0)
+        psi_t = x * self.curve.curvature(s_c + x / 2.0)
         return q[iy] - y_t, q[ipsi] - psi_t
 
     def arc_forces(self, q, speed, curvature, unbalanced_acceleration) -> np.ndarray:
