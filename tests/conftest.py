@@ -8,6 +8,7 @@ matplotlib.use("Agg")
 
 import atexit  # noqa: E402
 import contextlib  # noqa: E402
+import gc  # noqa: E402
 import json  # noqa: E402
 import os  # noqa: E402
 import signal  # noqa: E402
@@ -302,6 +303,18 @@ def pytest_collection_modifyitems(config, items):
         draft = path.with_name(f"{os.environ['PYTEST_XDIST_WORKER']}.json")
         draft.write_text(json.dumps({item.nodeid: _group(item) for item in items}))
         draft.replace(path)
+
+
+def pytest_collection_finish(session):
+    # Collection imported every module of raildyn and its dependencies: over a million objects that
+    # live to the end. Python's cycle collector would scan them all again at each full collection;
+    # frozen, they are left out of its scans. The tests' own long-lived objects (caches, hypothesis's
+    # examples) still grow by hundreds of thousands: a full collection every hundred middle ones
+    # (Python's default is ten) scans them a tenth as often. Measured in a worker of
+    # `make test-fast`: 5.5 s of full collections before, 2.3-3.3 s after.
+    gc.collect()
+    gc.freeze()
+    gc.set_threshold(700, 10, 100)
 
 
 @pytest.hookimpl(trylast=True)  # after pytest's own set-up of its temporary folders

@@ -345,12 +345,9 @@ class NonlinearLateral:
         V = _speed(speed)
         n = self.system.size
         q = _state(state, 2 * n)[:n]
-        if np.ndim(t) == 0:
-            t = scalar("t", t)
-        elif q.ndim == 1:
+        if np.ndim(t) and q.ndim == 1:
             raise ValueError(f"t must be a number for a state of shape ({2 * n},), got shape {np.shape(t)}")
-        else:
-            t = _checks.array("t", t, shape=(q.shape[1],))
+        t = scalar("t", t) if np.ndim(t) == 0 else _checks.array("t", t, shape=(q.shape[1],))
         iy = np.array([w[0] for w in self.system.wheelsets])
         ipsi = np.array([w[1] for w in self.system.wheelsets])
         if self.curve is None:

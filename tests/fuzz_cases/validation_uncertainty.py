@@ -3,7 +3,8 @@
 The valid calls run on one in-process cluster (threads: it starts in well under a second),
 started at the first call and closed when the interpreter exits; they draw quasi-random
 samples (Halton's for the bands, Sobol' points for the indices, 16 = 2^4 of them). The change ``client: none``
-starts the default LocalCluster of two processes, hence the longer limit of those entries.
+starts the default LocalCluster, hence the longer limit of those entries: of one process, the valid
+call's ``workers`` (a process costs a few seconds to start; the default of one a core is the same path).
 """
 
 from __future__ import annotations
@@ -51,12 +52,19 @@ ENTRIES = [
     fuzz(
         "raildyn.validation.uncertainty.monte_carlo",
         lambda: call(
-            lambda k, m: np.sqrt(k / m), DISTRIBUTIONS, 20, rng=1, sampling="halton", client=_client()
+            lambda k, m: np.sqrt(k / m),
+            DISTRIBUTIONS,
+            20,
+            rng=1,
+            sampling="halton",
+            client=_client(),
+            workers=1,
         ),
         accepts={
             "model_fn": "returns-negative returns-shape",  # any finite output of one fixed shape
             "rng": "zero none",  # seed 0; None: fresh entropy
-            "client": "none",  # the default: a LocalCluster of two processes for the call
+            "client": "none",  # the default: a LocalCluster of `workers` processes for the call
+            "workers": "none",  # one a core
             "batch": "huge",  # one batch of everything
         },
         limit=30.0,
@@ -70,6 +78,7 @@ ENTRIES = [
             rng=1,
             sampling="sobol",
             client=_client(),
+            workers=1,
             bootstrap=20,
             confidence=0.9,
         ),
@@ -78,6 +87,7 @@ ENTRIES = [
             "model_fn": "returns-negative",
             "rng": "zero none",
             "client": "none",
+            "workers": "none",
             "batch": "huge",
         },
         limit=30.0,
