@@ -48,6 +48,12 @@ def array(
     with no entries (an empty grid would give an empty, silent answer).
     """
     arr = _numbers(name, value, dtype)
+    if arr.ndim == 0 and ndim is None and shape is None and arr.dtype.kind == "f":
+        # One number, as laws inside a model's loop take their parameters: checked as a float,
+        # a tenth of the cost of the array checks below (which word the message when it fails).
+        x = float(arr)
+        if math.isfinite(x) and (low is None or (x > low if low_open else x >= low)):
+            return arr
     if not allow_empty and arr.size == 0:
         raise ValueError(f"{name} must not be empty, got an array of shape {arr.shape}")
     if ndim is not None and arr.ndim != ndim:
@@ -392,6 +398,10 @@ def strings(name: str, value, n=None, *, unique: bool = False) -> tuple:
 
 def broadcast(**arrays) -> tuple:
     """The common shape of arguments that must broadcast together; a ValueError names the first misfit."""
+    shapes = [np.shape(value) for value in arrays.values()]
+    widest = max(shapes, key=len)
+    if all(s == widest or s == () for s in shapes):  # the usual case: one shape, and numbers
+        return widest
     shape: tuple = ()
     seen: list[str] = []
     for name, value in arrays.items():
@@ -556,6 +566,8 @@ MIN_SMOOTHING_SPEED = 1.0e-6
 def smoothing_speed(name: str, value) -> np.ndarray:
     """A non-empty array of smoothing speeds v_ε of a friction law, m/s, each in [1e-6, 1]."""
     arr = array(name, value, low=0.0, low_open=True, allow_empty=False)
+    if arr.ndim == 0 and MIN_SMOOTHING_SPEED <= float(arr) <= MAX_SMOOTHING_SPEED:
+        return arr
     bad = (arr < MIN_SMOOTHING_SPEED) | (arr > MAX_SMOOTHING_SPEED)
     if bad.any():
         raise ValueError(
