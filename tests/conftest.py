@@ -2,13 +2,20 @@
 and the record of every model checked against its independent reference, from which the book's validation
 page is generated (``book/_generated/validation.json``, read by ``book/_ext/raildyn_book.py``)."""
 
+import gc
+
 import matplotlib
 
 matplotlib.use("Agg")
 
+# Collecting imports every module of raildyn and its dependencies, over a million objects that all
+# live to the end: the cycle collector would scan the growing heap again and again for garbage there
+# is none of (a grammar built at import, jsonschema's, took 5 s instead of 1 s in a worker). It runs
+# again once the tests are collected (pytest_collection_finish).
+gc.disable()
+
 import atexit  # noqa: E402
 import contextlib  # noqa: E402
-import gc  # noqa: E402
 import json  # noqa: E402
 import os  # noqa: E402
 import signal  # noqa: E402
@@ -306,15 +313,15 @@ def pytest_collection_modifyitems(config, items):
 
 
 def pytest_collection_finish(session):
-    # Collection imported every module of raildyn and its dependencies: over a million objects that
-    # live to the end. Python's cycle collector would scan them all again at each full collection;
-    # frozen, they are left out of its scans. The tests' own long-lived objects (caches, hypothesis's
-    # examples) still grow by hundreds of thousands: a full collection every hundred middle ones
-    # (Python's default is ten) scans them a tenth as often. Measured in a worker of
-    # `make test-fast`: 5.5 s of full collections before, 2.3-3.3 s after.
+    # The objects of the collected modules, frozen, are left out of the cycle collector's scans. The
+    # tests' own long-lived objects (caches, hypothesis's examples) still grow by hundreds of
+    # thousands: a full collection every hundred middle ones (Python's default is ten) scans them a
+    # tenth as often. Measured in a worker of `make test-fast`: 5.4-5.9 s of full collections before,
+    # 2.3-3.3 s after.
     gc.collect()
     gc.freeze()
     gc.set_threshold(700, 10, 100)
+    gc.enable()
 
 
 @pytest.hookimpl(trylast=True)  # after pytest's own set-up of its temporary folders
