@@ -1,7 +1,7 @@
 """The live bifurcation diagram of chapter 7 (raildyn.widgets.chapter07.bifurcation).
 
 Its frames are the model's answers: the diagram it draws is the one bifurcation_diagram gives for the
-same car, whether it came from the batch of the kernel-free grid or from a single run off the grid.
+same car, whether it came from the batch of the kernel-free grid or from a single run.
 """
 
 import numpy as np
@@ -19,6 +19,7 @@ def _car(conicity, yaw_stiffness):
 
 
 def test_the_grids_batch_is_each_cars_own_diagram():
+    assert chapter07.BIFURCATION.prepare is chapter07._bifurcation_family  # the kernel-free copy's batch
     family = chapter07._bifurcation_family()
     grid = chapter07._BIFURCATION_GRID
     assert len(family) == len(grid["conicity"]) * len(grid["yaw_stiffness"])

@@ -73,7 +73,7 @@ MOVES = {
     chapter07.car_roots: dict(conicity=0.3, yaw_stiffness=20.0),
     chapter07.critical_curve: dict(yaw_stiffness=20.0, secondary_yaw_stiffness=1.0),
     chapter07.vehicle_comparison: dict(vehicle="locomotive", conicity=0.3),
-    chapter07.bifurcation: dict(conicity=0.3, yaw_stiffness=2.0 * chapter07._K_PSI),  # on the grid: no run
+    chapter07.bifurcation: dict(conicity=0.3, yaw_stiffness=2.0 * chapter07._K_PSI),  # a diagram a move
     chapter08.curving_plan: dict(radius=900.0, speed_kmh=100.0, cant_mm=50.0),
     chapter08.nadal_chart: dict(flange_angle=65.0, friction=0.2, radius=500.0, speed_kmh=90.0),
     chapter08.curve_entry_speed: dict(speed_kmh=120.0, quantity="offset"),

@@ -54,6 +54,35 @@ def test_the_app_draws_no_kernel_free_frames(monkeypatch):
     assert container._repr_mimebundle_()["text/html"] == "<div></div>" and drawn == [1]
 
 
+def test_only_the_kernel_free_copy_runs_the_recipes_preparation():
+    # Work for the whole grid (chapter 7's bifurcation diagrams, as one batch) is done for the frames
+    # without a kernel, once and before them; the live widget draws one value at a time without it.
+    from raildyn.widgets import Recipe
+    from raildyn.widgets._core import slider
+
+    calls = []
+
+    def setup(live, status):
+        (line,) = live.axes[0, 0].plot([0.0, 1.0], [0.0, 0.0])
+        live.animate(line)
+
+        def redraw(values):
+            calls.append(values["a"])
+            line.set_ydata([0.0, values["a"]])
+
+        return redraw
+
+    recipe = Recipe(lambda: {"a": slider("a", 0.5, 0.0, 1.0, 0.5)}, setup, {"figsize": (2.0, 1.5), "dpi": 40},
+                    static={"a": [0.0, 0.5, 1.0]}, prepare=lambda: calls.append("prepare"))  # fmt: skip
+    recipe.build()
+    assert calls and "prepare" not in calls
+    calls.clear()
+    recipe.static_html()
+    assert calls[0] == "prepare" and calls.count("prepare") == 1 and {0.0, 0.5, 1.0} <= set(calls)
+    with pytest.raises(TypeError, match="prepare"):
+        Recipe(lambda: {}, setup, prepare="batch")
+
+
 def test_static_grid_must_name_one_or_two_controls():
     from raildyn.widgets._static import frames_html
 

@@ -258,6 +258,11 @@ class Recipe:
         two controls, each with at least one value).
     title : str, optional
         What the figure shows (the alternative text of the page without a kernel).
+    prepare : callable, optional
+        ``prepare()``, run by :meth:`static_html` before its frames: work for the whole grid that
+        is cheaper done at once than frame by frame (chapter 7's bifurcation diagrams of the grid
+        as one batch of the compiled engine), which the live widget, drawing one value at a time,
+        does not need.
     """
 
     controls: Callable[[], dict]
@@ -266,10 +271,13 @@ class Recipe:
     static: dict = field(default_factory=dict)
     """Control name to the values precomputed for the page without a kernel (one or two controls)."""
     title: str = "interactive figure"
+    prepare: Callable[[], object] | None = None
 
     def __post_init__(self):
         _checks.function("controls", self.controls)
         _checks.function("setup", self.setup)
+        if self.prepare is not None:
+            _checks.function("prepare", self.prepare)
         _checks.instance("figure", self.figure, dict, "dict of LiveFigure keyword arguments")
         _checks.instance("static", self.static, dict, "dict of control name to values")
         if len(self.static) > 2 or not all(
@@ -325,6 +333,8 @@ class Recipe:
                 )
         labels = {name: controls[name].description for name in self.static}
         start = {name: _nearest(values, controls[name].value) for name, values in self.static.items()}
+        if self.prepare is not None:
+            self.prepare()
         live = LiveFigure(**self.figure)
         _, update = assemble(controls, live, self._setup(live, widgets.HTML()))
         return frames_html(update, self.static, labels, alt=self.title, start=start)

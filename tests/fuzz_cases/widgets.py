@@ -58,6 +58,10 @@ def _redraw(values):
     return None
 
 
+def _prepare():
+    return None
+
+
 @functools.lru_cache(maxsize=1)
 def _ride():
     return chapter06.ride_run("FRA class 4", 200.0, 1)
@@ -102,10 +106,16 @@ ENTRIES = [
     fuzz("raildyn.widgets.LiveFigure.refresh", lambda: on(_live())),
     fuzz(
         "raildyn.widgets.Recipe",
-        lambda: call(_controls, _setup, {"figsize": (2.0, 1.5), "dpi": 40}, static={"a": [0.0, 0.5, 1.0]}),
+        lambda: call(
+            _controls,
+            _setup,
+            {"figsize": (2.0, 1.5), "dpi": 40},
+            static={"a": [0.0, 0.5, 1.0]},
+            prepare=_prepare,
+        ),
         # controls and setup are stored, and called by build, static_html and defaults, which check
-        # what they return
-        accepts={"controls": _STORED, "setup": _STORED},
+        # what they return; what prepare returns is not used
+        accepts={"controls": _STORED, "setup": _STORED, "prepare": _STORED + " none"},
     ),
     fuzz("raildyn.widgets.Recipe.build", lambda: on(_recipe())),
     fuzz("raildyn.widgets.Recipe.defaults", lambda: on(_recipe())),
