@@ -11,7 +11,8 @@ matplotlib.use("Agg")
 # Collecting imports every module of raildyn and its dependencies, over a million objects that all
 # live to the end: the cycle collector would scan the growing heap again and again for garbage there
 # is none of (a grammar built at import, jsonschema's, took 5 s instead of 1 s in a worker). It runs
-# again once the tests are collected (pytest_collection_finish).
+# again once the tests are collected (pytest_collection_finish), and at once in the controller of
+# `pytest -n`, which collects none (pytest_configure).
 gc.disable()
 
 import atexit  # noqa: E402
@@ -334,6 +335,7 @@ def pytest_configure(config):
         atexit.register(_end_at_once)
         return
     if getattr(config.option, "numprocesses", None):
+        gc.enable()  # the controller of `pytest -n` collects no tests: no pytest_collection_finish here
         os.environ[GROUPS] = str(Path(tempfile.mkdtemp(prefix="raildyn-groups-")) / "groups.json")
     # The jobs' folders in the session's temporary folder, which pytest clears a few sessions later.
     factory = getattr(config, "_tmp_path_factory", None)
