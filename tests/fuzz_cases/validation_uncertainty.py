@@ -3,8 +3,8 @@
 The valid calls run on one in-process cluster (threads: it starts in well under a second),
 started at the first call and closed when the interpreter exits; they draw quasi-random
 samples (Halton's for the bands, Sobol' points for the indices, 16 = 2^4 of them). The change ``client: none``
-starts the default LocalCluster, hence the longer limit of those entries: of one process, the valid
-call's ``workers`` (a process costs a few seconds to start; the default of one a core is the same path).
+starts the default LocalCluster (hence the longer limit of those entries) of the valid call's ``workers``,
+one process: a process takes seconds to start, and the default of one a core runs the same path.
 """
 
 from __future__ import annotations
