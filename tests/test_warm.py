@@ -13,6 +13,7 @@ warm first calls are timed by ``benchmarks/bench_cold.py``.
 from __future__ import annotations
 
 import ast
+import functools
 import json
 from pathlib import Path
 
@@ -21,20 +22,28 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 
 
+@functools.cache
+def _functions() -> tuple[tuple[Path, ast.FunctionDef], ...]:
+    """Every function of raildyn's sources: (module file relative to raildyn/, its node), parsed once."""
+    return tuple(
+        (path.relative_to(ROOT / "raildyn"), node)
+        for path in sorted((ROOT / "raildyn").rglob("*.py"))
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8")))
+        if isinstance(node, ast.FunctionDef)
+    )
+
+
 def _cached_functions() -> dict[Path, list[str]]:
     """Module file (relative to raildyn/) -> its functions decorated with ``numba.njit(..., cache=True)``."""
     found: dict[Path, list[str]] = {}
-    for path in sorted((ROOT / "raildyn").rglob("*.py")):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if not isinstance(node, ast.FunctionDef):
-                continue
-            for dec in node.decorator_list:
-                if (
-                    isinstance(dec, ast.Call)
-                    and ast.unparse(dec.func) in ("numba.njit", "njit", "numba.jit")
-                    and any(k.arg == "cache" and ast.unparse(k.value) == "True" for k in dec.keywords)
-                ):
-                    found.setdefault(path.relative_to(ROOT / "raildyn"), []).append(node.name)
+    for module, node in _functions():
+        for dec in node.decorator_list:
+            if (
+                isinstance(dec, ast.Call)
+                and ast.unparse(dec.func) in ("numba.njit", "njit", "numba.jit")
+                and any(k.arg == "cache" and ast.unparse(k.value) == "True" for k in dec.keywords)
+            ):
+                found.setdefault(module, []).append(node.name)
     return found
 
 
@@ -49,14 +58,12 @@ def test_the_sources_declare_cached_kernels_where_the_warm_up_looks():
 
 def _kernel_bodies():
     """Every numba function of raildyn, cached or not: (module file relative to raildyn/, its node)."""
-    for path in sorted((ROOT / "raildyn").rglob("*.py")):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if isinstance(node, ast.FunctionDef) and any(
-                ast.unparse(dec.func if isinstance(dec, ast.Call) else dec)
-                in ("numba.njit", "njit", "numba.jit")
-                for dec in node.decorator_list
-            ):
-                yield path.relative_to(ROOT / "raildyn"), node
+    for module, node in _functions():
+        if any(
+            ast.unparse(dec.func if isinstance(dec, ast.Call) else dec) in ("numba.njit", "njit", "numba.jit")
+            for dec in node.decorator_list
+        ):
+            yield module, node
 
 
 def _scalar(value: ast.expr) -> bool:
