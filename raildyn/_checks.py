@@ -72,7 +72,7 @@ def array(
         bad = arr <= low if low_open else arr < low
         if bad.any():
             op = ">" if low_open else ">="
-            first = arr[bad].flat[0]
+            first = arr[bad].flat[0].item()  # a Python number: its repr is the number alone
             raise ValueError(f"{name} must be {op} {low} everywhere, got {first!r} in {_show(value)}")
     return arr
 
@@ -399,7 +399,7 @@ def strings(name: str, value, n=None, *, unique: bool = False) -> tuple:
 def broadcast(**arrays) -> tuple:
     """The common shape of arguments that must broadcast together; a ValueError names the first misfit."""
     shapes = [np.shape(value) for value in arrays.values()]
-    widest = max(shapes, key=len)
+    widest = max(shapes, key=len, default=())
     if all(s == widest or s == () for s in shapes):  # the usual case: one shape, and numbers
         return widest
     shape: tuple = ()

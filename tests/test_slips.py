@@ -149,6 +149,25 @@ def test_complex_values_are_refused_not_cast():
         _checks.scalar("x", np.array(1.0 + 0j))
 
 
+def test_one_number_is_checked_as_cheaply_and_as_strictly_as_an_array():
+    # The short path for one number (a law's parameter inside a model's loop) accepts what the array
+    # checks accept and leaves every refusal, with its message, to them.
+    assert float(_checks.array("x", 2.0, low=0.0)) == 2.0 and _checks.array("x", 0.0, low=0.0).ndim == 0
+    with pytest.raises(ValueError, match=r"x must be >= 0.0 everywhere, got -1.0"):
+        _checks.array("x", -1.0, low=0.0)
+    with pytest.raises(ValueError, match=r"x must be > 0.0 everywhere, got 0.0"):
+        _checks.array("x", 0.0, low=0.0, low_open=True)
+    with pytest.raises(ValueError, match="x must contain only finite numbers"):
+        _checks.array("x", np.inf)
+    assert float(_checks.smoothing_speed("v", 1.0e-3)) == 1.0e-3
+    with pytest.raises(ValueError, match=r"v must be in \[1e-06, 1\] m/s"):
+        _checks.smoothing_speed("v", 2.0)
+    assert _checks.broadcast() == () and _checks.broadcast(a=np.zeros(3), b=1.0, c=np.ones(3)) == (3,)
+    assert _checks.broadcast(a=np.zeros((2, 3)), b=np.zeros(3)) == (2, 3)
+    with pytest.raises(ValueError, match=r"b has shape \(4,\), which does not broadcast against a"):
+        _checks.broadcast(a=np.zeros(3), b=np.zeros(4))
+
+
 def test_booleans_are_not_numbers():
     with pytest.raises(TypeError, match="amplitude must hold numbers, not booleans"):
         sperling_harmonic(amplitude=True, frequency=2.0)
